@@ -275,3 +275,52 @@ fn every_method_and_struct_the_examples_use_shows_an_example() {
         "no example in the docs of: {missing:#?}"
     );
 }
+
+/// Each rule in an item's docs carries its VUID, its text and a mark that agrees with
+/// the coverage report (`validation.json`): *yours* for a rule left to the caller,
+/// *checked* for a dynamic check, *by the types* for a static one.
+#[test]
+fn the_docs_mark_each_rule_as_the_report_settles_it() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let report: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(root.join("generated/validation.json")).unwrap(),
+    )
+    .unwrap();
+    let status: std::collections::BTreeMap<&str, &str> = report["rules"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| (r["vuid"].as_str().unwrap(), r["status"].as_str().unwrap()))
+        .collect();
+    let mut seen = 0;
+    for file in sources(&root.join("generated/src/generated")) {
+        let text = std::fs::read_to_string(&file).unwrap();
+        for line in text.lines() {
+            let Some(rest) = line.strip_prefix("- `VUID-") else {
+                continue;
+            };
+            let Some((vuid, after)) = rest.split_once("` (*") else {
+                continue;
+            };
+            let vuid = format!("VUID-{vuid}");
+            let (mark, text) = after
+                .split_once("): ")
+                .expect("a rule's text after its mark");
+            let mark = mark.split('*').next().unwrap();
+            let expected = match status.get(vuid.as_str()) {
+                Some(&"user") => "yours",
+                Some(&"dynamic") => "checked",
+                Some(&"static") => "by the types",
+                other => panic!("{vuid} is in the docs but the report has {other:?}"),
+            };
+            assert_eq!(mark, expected, "{vuid} in {}", file.display());
+            assert!(
+                text.split_whitespace().count() >= 3,
+                "{vuid}: no text in {}",
+                file.display()
+            );
+            seen += 1;
+        }
+    }
+    assert!(seen > 5000, "{seen} rules in the docs");
+}

@@ -37,51 +37,51 @@ pub struct Emission {
     pub files: Vec<OutputFile>,
 }
 
-/// The rules of an item as a doc section: a link to the specification's reference
-/// page, each rule the wrappers settle with how, and a count of those left to the
-/// caller by reason (`validation.json` lists them one by one).
+/// The rules of an item as a doc section, after the rest of its docs: a link to the
+/// specification's reference page, then each rule with its VUID, whether the
+/// wrappers settle it and its text on one line, the caller's first (how each is
+/// settled is in `VALIDATION.md` and `validation.json`).
 pub(crate) fn doc_rules(plans: &Plans, item: &str) -> String {
     let Some(rules) = plans.by_item.get(item) else {
         return String::new();
     };
     let mut s = format!(
-        "\n\n# Valid usage\n\nThe rules are on [`{item}`'s reference page]({REFERENCE_PAGES}{item}.html)."
+        "\n\n# Valid usage\n\nThe rules of `{item}` that apply to this crate's API ([reference page]({REFERENCE_PAGES}{item}.html)), \
+         each marked *yours* (the caller upholds it), *checked* (a run-time check returns \
+         `Error::Validation` naming it) or *by the types* (no \
+         program that compiles breaks it); how each is settled is in the crate's \
+         `validation.json`:\n"
     );
-    let settled: Vec<_> = rules
-        .iter()
-        .filter(|(_, r)| !matches!(r, Settlement::User(_)))
-        .collect();
-    if !settled.is_empty() {
-        s.push_str(" Settled by the wrappers:\n");
-        for (vuid, settlement) in settled {
-            s.push_str(&format!(
-                "\n- `{vuid}`: {} ({})",
-                settlement.status(),
-                doc_escape(settlement.mechanism())
-            ));
-        }
-    }
-    let mut left: BTreeMap<&str, usize> = BTreeMap::new();
-    for (_, r) in rules {
-        if let Settlement::User(why) = r {
-            *left.entry(why.as_str()).or_default() += 1;
-        }
-    }
-    let total: usize = left.values().sum();
-    match left.len() {
-        0 => {}
-        1 => s.push_str(&format!(
-            "\n\nLeft to the caller (listed one by one in the crate's `validation.json`): {total} ({}).",
-            doc_escape(left.keys().next().copied().unwrap_or_default())
-        )),
-        _ => {
-            s.push_str(&format!(
-                "\n\nLeft to the caller (listed one by one in the crate's `validation.json`): {total}.\n"
-            ));
-            for (why, n) in left {
-                s.push_str(&format!("\n- {n}: {}", doc_escape(why)));
+    let rank = |r: &Settlement| match r {
+        Settlement::User(_) => 0,
+        Settlement::Dynamic(_) => 1,
+        Settlement::Static(_) => 2,
+    };
+    let mut ordered: Vec<_> = rules.iter().collect();
+    ordered.sort_by_key(|(_, r)| rank(r));
+    for (vuid, settlement) in ordered {
+        // A rule left to the caller says why in a few words: the reason up to its
+        // first explanation ("explicit rule", "checked by the safe methods in every
+        // build" where no test breaks it yet).
+        let mark = match settlement {
+            Settlement::User(why) => {
+                let short = why
+                    .split([':', '(', ';'])
+                    .next()
+                    .unwrap_or_default()
+                    .trim_end_matches([' ', ','])
+                    .to_owned();
+                format!("*yours*; {short}")
             }
-        }
+            Settlement::Dynamic(_) => "*checked*".to_owned(),
+            Settlement::Static(_) => "*by the types*".to_owned(),
+        };
+        let text = plans.texts.get(vuid).map_or("", String::as_str);
+        s.push_str(&format!(
+            "\n- `{vuid}` ({}): {}",
+            doc_escape(&mark),
+            doc_escape(text)
+        ));
     }
     s
 }

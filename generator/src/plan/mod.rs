@@ -160,6 +160,8 @@ pub struct Plans<'c, 'm> {
     pub enabling: safety::Enabling,
     /// The same records by the item (command or struct) each rule belongs to.
     pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
+    /// Each rule's text on one line, code in backticks, for the docs.
+    pub texts: BTreeMap<String, String>,
 }
 
 impl<'c, 'm> Plans<'c, 'm> {
@@ -191,6 +193,18 @@ impl<'c, 'm> Plans<'c, 'm> {
                     .push((r.vuid.clone(), r.settlement.clone()));
             }
         }
+        let texts = cx
+            .validity
+            .rules
+            .iter()
+            .filter(|r| item_of.contains_key(r.vuid.as_str()))
+            .map(|r| {
+                (
+                    r.vuid.clone(),
+                    one_line(&crate::validity::explicit::plain(&r.text)),
+                )
+            })
+            .collect();
         Plans {
             cx,
             commands,
@@ -201,6 +215,7 @@ impl<'c, 'm> Plans<'c, 'm> {
             safety,
             enabling,
             by_item,
+            texts,
         }
     }
 
@@ -208,6 +223,30 @@ impl<'c, 'm> Plans<'c, 'm> {
     pub fn ok(&self) -> Vec<&commands::Plan> {
         planned(&self.commands)
     }
+}
+
+/// A rule's text cut to about one line of docs, at a word, with a code span it
+/// cuts through closed.
+fn one_line(text: &str) -> String {
+    const MAX: usize = 200;
+    if text.chars().count() <= MAX {
+        return text.to_owned();
+    }
+    let mut out = String::new();
+    for word in text.split(' ') {
+        if out.chars().count() + word.chars().count() + 1 > MAX {
+            break;
+        }
+        if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(word);
+    }
+    if out.matches('`').count() % 2 == 1 {
+        out.push('`');
+    }
+    out.push_str(" …");
+    out
 }
 
 /// The commands of `commands` that have a plan.

@@ -15,20 +15,32 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdWriteBufferMarkerAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteBufferMarkerAMD.html). Settled by the wrappers:
+The rules of `vkCmdWriteBufferMarkerAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteBufferMarkerAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdWriteBufferMarkerAMD-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdWriteBufferMarkerAMD-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 17.
-
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 11: explicit rule; the wrappers do not check it*/
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04074` (*yours*; explicit rule): `pipelineStage` must be a valid stage for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04075` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `geometryShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04076` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01798` (*yours*; explicit rule): `dstOffset` must be less than or equal to the size of `dstBuffer` minus `4`
+- `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01799` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag
+- `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01800` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01801` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `dstOffset` must be a multiple of `4`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04077` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04078` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04079` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04080` (*yours*; explicit rule): If the `meshShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-07077` (*yours*; explicit rule): If the `taskShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04081` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
+- `VUID-vkCmdWriteBufferMarkerAMD-shadingRateImage-07314` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-vkCmdWriteBufferMarkerAMD-fragmentShadingRate-07315` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-vkCmdWriteBufferMarkerAMD-synchronization2-06489` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `synchronization2` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-06490` (*yours*; explicit rule): `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE`
+- `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-parameter` (*checked*): If `pipelineStage` is not `0`, `pipelineStage` must be a valid VkPipelineStageFlagBits value
+- `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, or compute operations
+- `VUID-vkCmdWriteBufferMarkerAMD-commonparent` (*checked*): Both of `commandBuffer`, and `dstBuffer` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-parameter` (*by the types*): `dstBuffer` must be a valid VkBuffer handle
+- `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdWriteBufferMarkerAMD-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteBufferMarkerAMD")]
     #[inline]
     pub unsafe fn write_buffer_marker_amd(

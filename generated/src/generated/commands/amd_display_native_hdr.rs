@@ -8,13 +8,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkSetLocalDimmingAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetLocalDimmingAMD.html). Settled by the wrappers:
+The rules of `vkSetLocalDimmingAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetLocalDimmingAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetLocalDimmingAMD-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetLocalDimmingAMD-swapChain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetLocalDimmingAMD-swapChain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkSetLocalDimmingAMD-localDimmingSupport-04618` (*yours*; explicit rule): VkDisplayNativeHdrSurfaceCapabilitiesAMD::`localDimmingSupport` must be supported
+- `VUID-vkSetLocalDimmingAMD-swapChain-parent` (*checked*): `swapChain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkSetLocalDimmingAMD-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetLocalDimmingAMD-swapChain-parameter` (*by the types*): `swapChain` must be a valid VkSwapchainKHR handle*/
     #[doc(alias = "vkSetLocalDimmingAMD")]
     #[inline]
     pub fn set_local_dimming_amd(

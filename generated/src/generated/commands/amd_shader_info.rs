@@ -8,15 +8,15 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetShaderInfoAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetShaderInfoAMD.html). Settled by the wrappers:
+The rules of `vkGetShaderInfoAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetShaderInfoAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetShaderInfoAMD-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetShaderInfoAMD-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetShaderInfoAMD-shaderStage-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetShaderInfoAMD-infoType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetShaderInfoAMD-pInfoSize-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetShaderInfoAMD-pInfo-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetShaderInfoAMD-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetShaderInfoAMD-shaderStage-parameter` (*checked*): `shaderStage` must be a valid VkShaderStageFlagBits value
+- `VUID-vkGetShaderInfoAMD-infoType-parameter` (*checked*): `infoType` must be a valid VkShaderInfoTypeAMD value
+- `VUID-vkGetShaderInfoAMD-pipeline-parent` (*checked*): `pipeline` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetShaderInfoAMD-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetShaderInfoAMD-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle
+- `VUID-vkGetShaderInfoAMD-pInfoSize-parameter` (*by the types*): `pInfoSize` must be a valid pointer to a `size_t` value
+- `VUID-vkGetShaderInfoAMD-pInfo-parameter` (*by the types*): If the value referenced by `pInfoSize` is not `0`, and `pInfo` is not `NULL`, `pInfo` must be a valid pointer to an array of `pInfoSize` bytes*/
     #[doc(alias = "vkGetShaderInfoAMD")]
     #[inline]
     pub fn get_shader_info_amd(

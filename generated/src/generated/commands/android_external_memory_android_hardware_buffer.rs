@@ -12,15 +12,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetAndroidHardwareBufferPropertiesANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAndroidHardwareBufferPropertiesANDROID.html). Settled by the wrappers:
+The rules of `vkGetAndroidHardwareBufferPropertiesANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAndroidHardwareBufferPropertiesANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetAndroidHardwareBufferPropertiesANDROID-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetAndroidHardwareBufferPropertiesANDROID-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetAndroidHardwareBufferPropertiesANDROID-buffer-01884` (*yours*; explicit rule): `buffer` must be a valid Android hardware buffer object with at least one of the `AHARDWAREBUFFER_USAGE_GPU_*` flags in its `AHardwareBuffer_Desc::usage`
+- `VUID-vkGetAndroidHardwareBufferPropertiesANDROID-buffer-parameter` (*yours*; passed as ash's raw type): `buffer` must be a valid pointer to a valid AHardwareBuffer value
+- `VUID-vkGetAndroidHardwareBufferPropertiesANDROID-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetAndroidHardwareBufferPropertiesANDROID-pProperties-parameter` (*by the types*): `pProperties` must be a valid pointer to a VkAndroidHardwareBufferPropertiesANDROID structure*/
     #[doc(alias = "vkGetAndroidHardwareBufferPropertiesANDROID")]
     #[inline]
     pub unsafe fn get_android_hardware_buffer_properties_android<'a>(
@@ -84,12 +81,11 @@ The caller upholds the rules that [`Self::get_android_hardware_buffer_properties
 
 # Valid usage
 
-The rules are on [`vkGetMemoryAndroidHardwareBufferANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryAndroidHardwareBufferANDROID.html). Settled by the wrappers:
+The rules of `vkGetMemoryAndroidHardwareBufferANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryAndroidHardwareBufferANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pBuffer-parameter` (*yours*; passed as ash's raw type): `pBuffer` must be a valid pointer to a valid pointer to an AHardwareBuffer value
+- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkMemoryGetAndroidHardwareBufferInfoANDROID structure*/
     #[doc(alias = "vkGetMemoryAndroidHardwareBufferANDROID")]
     #[inline]
     pub unsafe fn get_memory_android_hardware_buffer_android<'a>(

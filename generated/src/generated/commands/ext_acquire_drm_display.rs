@@ -14,12 +14,11 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkAcquireDrmDisplayEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireDrmDisplayEXT.html). Settled by the wrappers:
+The rules of `vkAcquireDrmDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireDrmDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireDrmDisplayEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquireDrmDisplayEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+- `VUID-vkAcquireDrmDisplayEXT-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
+- `VUID-vkAcquireDrmDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkAcquireDrmDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
     #[doc(alias = "vkAcquireDrmDisplayEXT")]
     #[inline]
     pub unsafe fn acquire_drm_display_ext(
@@ -45,10 +44,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (`par
 
 # Valid usage
 
-The rules are on [`vkGetDrmDisplayEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDrmDisplayEXT.html). Settled by the wrappers:
+The rules of `vkGetDrmDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDrmDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDrmDisplayEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDrmDisplayEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetDrmDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetDrmDisplayEXT-display-parameter` (*by the types*): `display` must be a valid pointer to a VkDisplayKHR handle*/
     #[doc(alias = "vkGetDrmDisplayEXT")]
     #[inline]
     pub fn get_drm_display_ext(

@@ -17,15 +17,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkAcquireXlibDisplayEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireXlibDisplayEXT.html). Settled by the wrappers:
+The rules of `vkAcquireXlibDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireXlibDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireXlibDisplayEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquireXlibDisplayEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: `parent` rules are not checked yet
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkAcquireXlibDisplayEXT-dpy-parameter` (*yours*; passed as ash's raw type): `dpy` must be a valid pointer to a `Display` value
+- `VUID-vkAcquireXlibDisplayEXT-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
+- `VUID-vkAcquireXlibDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkAcquireXlibDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
     #[doc(alias = "vkAcquireXlibDisplayEXT")]
     #[inline]
     pub unsafe fn acquire_xlib_display_ext(
@@ -59,12 +56,11 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkGetRandROutputDisplayEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRandROutputDisplayEXT.html). Settled by the wrappers:
+The rules of `vkGetRandROutputDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRandROutputDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetRandROutputDisplayEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetRandROutputDisplayEXT-pDisplay-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetRandROutputDisplayEXT-dpy-parameter` (*yours*; passed as ash's raw type): `dpy` must be a valid pointer to a `Display` value
+- `VUID-vkGetRandROutputDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetRandROutputDisplayEXT-pDisplay-parameter` (*by the types*): `pDisplay` must be a valid pointer to a VkDisplayKHR handle*/
     #[doc(alias = "vkGetRandROutputDisplayEXT")]
     #[inline]
     pub unsafe fn get_rand_r_output_display_ext(

@@ -17,14 +17,13 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetCalibratedTimestampsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetCalibratedTimestampsEXT.html). Settled by the wrappers:
+The rules of `vkGetCalibratedTimestampsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetCalibratedTimestampsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetCalibratedTimestampsEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetCalibratedTimestampsEXT-pTimestampInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetCalibratedTimestampsEXT-pMaxDeviation-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetCalibratedTimestampsEXT-pTimestamps-parameter` (*yours*; passed as ash's raw type): `pTimestamps` must be a valid pointer to an array of `timestampCount` `uint64_t` values
+- `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength` (*checked*): `timestampCount` must be greater than `0`
+- `VUID-vkGetCalibratedTimestampsEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetCalibratedTimestampsEXT-pTimestampInfos-parameter` (*by the types*): `pTimestampInfos` must be a valid pointer to an array of `timestampCount` valid VkCalibratedTimestampInfoEXT structures
+- `VUID-vkGetCalibratedTimestampsEXT-pMaxDeviation-parameter` (*by the types*): `pMaxDeviation` must be a valid pointer to a `uint64_t` value*/
     #[doc(alias = "vkGetCalibratedTimestampsEXT")]
     #[inline]
     pub unsafe fn get_calibrated_timestamps_ext<'a>(
@@ -82,11 +81,11 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceCalibrateableTimeDomainsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceCalibrateableTimeDomainsEXT.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceCalibrateableTimeDomainsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceCalibrateableTimeDomainsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-pTimeDomainCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-pTimeDomains-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-pTimeDomainCount-parameter` (*by the types*): `pTimeDomainCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceCalibrateableTimeDomainsEXT-pTimeDomains-parameter` (*by the types*): If the value referenced by `pTimeDomainCount` is not `0`, and `pTimeDomains` is not `NULL`, `pTimeDomains` must be a valid pointer to an array of `pTimeDomainCount` VkTimeDomainEXT values*/
     #[doc(alias = "vkGetPhysicalDeviceCalibrateableTimeDomainsEXT")]
     #[inline]
     pub fn get_calibrateable_time_domains_ext(&self) -> Result<Vec<vk::TimeDomainEXT>> {

@@ -8,16 +8,16 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetColorWriteEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorWriteEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetColorWriteEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorWriteEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetColorWriteEnableEXT-pColorWriteEnables-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetColorWriteEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetColorWriteEnableEXT-None-04803` (*yours*; explicit rule): The `colorWriteEnable` feature must be enabled
+- `VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-06656` (*yours*; explicit rule): `attachmentCount` must be less than or equal to the `maxColorAttachments` member of `VkPhysicalDeviceLimits`
+- `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength` (*checked*): `attachmentCount` must be greater than `0`
+- `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetColorWriteEnableEXT-pColorWriteEnables-parameter` (*by the types*): `pColorWriteEnables` must be a valid pointer to an array of `attachmentCount` VkBool32 values
+- `VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetColorWriteEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetColorWriteEnableEXT")]
     #[inline]
     pub fn set_color_write_enable_ext(

@@ -8,15 +8,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdBeginConditionalRenderingEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginConditionalRenderingEXT.html). Settled by the wrappers:
+The rules of `vkCmdBeginConditionalRenderingEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginConditionalRenderingEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBeginConditionalRenderingEXT-pConditionalRenderingBegin-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBeginConditionalRenderingEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBeginConditionalRenderingEXT-None-01980` (*yours*; explicit rule): Conditional rendering must not already be active
+- `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBeginConditionalRenderingEXT-pConditionalRenderingBegin-parameter` (*by the types*): `pConditionalRenderingBegin` must be a valid pointer to a valid VkConditionalRenderingBeginInfoEXT structure
+- `VUID-vkCmdBeginConditionalRenderingEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBeginConditionalRenderingEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBeginConditionalRenderingEXT")]
     #[inline]
     pub fn begin_conditional_rendering_ext<'a>(
@@ -86,14 +85,15 @@ The caller upholds the rules that [`Self::begin_conditional_rendering_ext`] chec
 
 # Valid usage
 
-The rules are on [`vkCmdEndConditionalRenderingEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndConditionalRenderingEXT.html). Settled by the wrappers:
+The rules of `vkCmdEndConditionalRenderingEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndConditionalRenderingEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndConditionalRenderingEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdEndConditionalRenderingEXT-None-01985` (*yours*; explicit rule): Conditional rendering must be active
+- `VUID-vkCmdEndConditionalRenderingEXT-None-01986` (*yours*; explicit rule): If conditional rendering was made active outside of a render pass instance, it must not be ended inside a render pass instance
+- `VUID-vkCmdEndConditionalRenderingEXT-None-01987` (*yours*; explicit rule): If conditional rendering was made active within a subpass it must be ended in the same subpass
+- `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdEndConditionalRenderingEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdEndConditionalRenderingEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdEndConditionalRenderingEXT")]
     #[inline]
     pub fn end_conditional_rendering_ext(&mut self) -> Result<()> {

@@ -8,13 +8,13 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdDebugMarkerBeginEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDebugMarkerBeginEXT.html). Settled by the wrappers:
+The rules of `vkCmdDebugMarkerBeginEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDebugMarkerBeginEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDebugMarkerBeginEXT-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDebugMarkerBeginEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdDebugMarkerBeginEXT-pMarkerInfo-parameter` (*by the types*): `pMarkerInfo` must be a valid pointer to a valid VkDebugMarkerMarkerInfoEXT structure
+- `VUID-vkCmdDebugMarkerBeginEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdDebugMarkerBeginEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdDebugMarkerBeginEXT")]
     #[inline]
     pub fn debug_marker_begin_ext<'a>(
@@ -69,14 +69,14 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdDebugMarkerEndEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDebugMarkerEndEXT.html). Settled by the wrappers:
+The rules of `vkCmdDebugMarkerEndEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDebugMarkerEndEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDebugMarkerEndEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-01239` (*yours*; explicit rule): There must be an outstanding vkCmdDebugMarkerBeginEXT command prior to the `vkCmdDebugMarkerEndEXT` on the queue that `commandBuffer` is submitted to
+- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-01240` (*yours*; explicit rule): If `commandBuffer` is a secondary command buffer, there must be an outstanding vkCmdDebugMarkerBeginEXT command recorded to `commandBuffer` that has not previously been ended by a call to …
+- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdDebugMarkerEndEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdDebugMarkerEndEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdDebugMarkerEndEXT")]
     #[inline]
     pub unsafe fn debug_marker_end_ext(&mut self) -> Result<()> {
@@ -113,13 +113,13 @@ The caller upholds the rules that [`Self::debug_marker_end_ext`] checks at run t
 
 # Valid usage
 
-The rules are on [`vkCmdDebugMarkerInsertEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDebugMarkerInsertEXT.html). Settled by the wrappers:
+The rules of `vkCmdDebugMarkerInsertEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDebugMarkerInsertEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDebugMarkerInsertEXT-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDebugMarkerInsertEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdDebugMarkerInsertEXT-pMarkerInfo-parameter` (*by the types*): `pMarkerInfo` must be a valid pointer to a valid VkDebugMarkerMarkerInfoEXT structure
+- `VUID-vkCmdDebugMarkerInsertEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdDebugMarkerInsertEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdDebugMarkerInsertEXT")]
     #[inline]
     pub fn debug_marker_insert_ext<'a>(
@@ -178,10 +178,10 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkDebugMarkerSetObjectNameEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugMarkerSetObjectNameEXT.html). Settled by the wrappers:
+The rules of `vkDebugMarkerSetObjectNameEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugMarkerSetObjectNameEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkDebugMarkerSetObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkDebugMarkerSetObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkDebugMarkerSetObjectNameEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkDebugMarkerSetObjectNameEXT-pNameInfo-parameter` (*by the types*): `pNameInfo` must be a valid pointer to a valid VkDebugMarkerObjectNameInfoEXT structure*/
     #[doc(alias = "vkDebugMarkerSetObjectNameEXT")]
     #[inline]
     pub unsafe fn debug_marker_set_object_name_ext<'a>(
@@ -236,10 +236,10 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkDebugMarkerSetObjectTagEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugMarkerSetObjectTagEXT.html). Settled by the wrappers:
+The rules of `vkDebugMarkerSetObjectTagEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugMarkerSetObjectTagEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkDebugMarkerSetObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkDebugMarkerSetObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkDebugMarkerSetObjectTagEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkDebugMarkerSetObjectTagEXT-pTagInfo-parameter` (*by the types*): `pTagInfo` must be a valid pointer to a valid VkDebugMarkerObjectTagInfoEXT structure*/
     #[doc(alias = "vkDebugMarkerSetObjectTagEXT")]
     #[inline]
     pub unsafe fn debug_marker_set_object_tag_ext<'a>(

@@ -8,12 +8,12 @@ impl Instance {
 
 # Valid usage
 
-The rules are on [`vkCreateDebugReportCallbackEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDebugReportCallbackEXT.html). Settled by the wrappers:
+The rules of `vkCreateDebugReportCallbackEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDebugReportCallbackEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDebugReportCallbackEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDebugReportCallbackEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDebugReportCallbackEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDebugReportCallbackEXT-pCallback-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDebugReportCallbackEXT-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateDebugReportCallbackEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDebugReportCallbackCreateInfoEXT structure
+- `VUID-vkCreateDebugReportCallbackEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDebugReportCallbackEXT-pCallback-parameter` (*by the types*): `pCallback` must be a valid pointer to a VkDebugReportCallbackEXT handle*/
     #[doc(alias = "vkCreateDebugReportCallbackEXT")]
     #[inline]
     pub fn create_debug_report_callback_ext<'a>(
@@ -63,16 +63,16 @@ The caller upholds the rules that [`Self::create_debug_report_callback_ext`] che
 
 # Valid usage
 
-The rules are on [`vkDebugReportMessageEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugReportMessageEXT.html). Settled by the wrappers:
+The rules of `vkDebugReportMessageEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDebugReportMessageEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkDebugReportMessageEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkDebugReportMessageEXT-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkDebugReportMessageEXT-flags-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkDebugReportMessageEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkDebugReportMessageEXT-pLayerPrefix-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
-- `VUID-vkDebugReportMessageEXT-pMessage-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkDebugReportMessageEXT-object-01241` (*yours*; explicit rule): `object` must be a Vulkan object or VK_NULL_HANDLE
+- `VUID-vkDebugReportMessageEXT-objectType-01498` (*yours*; explicit rule): If `objectType` is not `VK_DEBUG_REPORT_OBJECT_TYPE_UNKNOWN_EXT` and `object` is not VK_NULL_HANDLE, `object` must be a Vulkan object of the corresponding type associated with `objectType` as defined …
+- `VUID-vkDebugReportMessageEXT-flags-parameter` (*checked*): `flags` must be a valid combination of VkDebugReportFlagBitsEXT values
+- `VUID-vkDebugReportMessageEXT-flags-requiredbitmask` (*checked*): `flags` must not be `0`
+- `VUID-vkDebugReportMessageEXT-objectType-parameter` (*checked*): `objectType` must be a valid VkDebugReportObjectTypeEXT value
+- `VUID-vkDebugReportMessageEXT-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkDebugReportMessageEXT-pLayerPrefix-parameter` (*by the types*): `pLayerPrefix` must be a null-terminated UTF-8 string
+- `VUID-vkDebugReportMessageEXT-pMessage-parameter` (*by the types*): `pMessage` must be a null-terminated UTF-8 string*/
     #[doc(alias = "vkDebugReportMessageEXT")]
     #[inline]
     pub fn debug_report_message_ext(

@@ -8,13 +8,13 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdBeginDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules of `vkCmdBeginDebugUtilsLabelEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginDebugUtilsLabelEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-pLabelInfo-parameter` (*by the types*): `pLabelInfo` must be a valid pointer to a valid VkDebugUtilsLabelEXT structure
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBeginDebugUtilsLabelEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBeginDebugUtilsLabelEXT")]
     #[inline]
     pub fn begin_debug_utils_label_ext<'a>(
@@ -66,14 +66,14 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules of `vkCmdEndDebugUtilsLabelEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndDebugUtilsLabelEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01912` (*yours*; explicit rule): There must be an outstanding `vkCmdBeginDebugUtilsLabelEXT` command prior to the `vkCmdEndDebugUtilsLabelEXT` on the queue that `commandBuffer` is submitted to
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-01913` (*yours*; explicit rule): If `commandBuffer` is a secondary command buffer, there must be an outstanding `vkCmdBeginDebugUtilsLabelEXT` command recorded to `commandBuffer` that has not previously been ended by a call to …
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdEndDebugUtilsLabelEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdEndDebugUtilsLabelEXT")]
     #[inline]
     pub unsafe fn end_debug_utils_label_ext(&mut self) -> Result<()> {
@@ -110,13 +110,13 @@ The caller upholds the rules that [`Self::end_debug_utils_label_ext`] checks at 
 
 # Valid usage
 
-The rules are on [`vkCmdInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules of `vkCmdInsertDebugUtilsLabelEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdInsertDebugUtilsLabelEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-pLabelInfo-parameter` (*by the types*): `pLabelInfo` must be a valid pointer to a valid VkDebugUtilsLabelEXT structure
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdInsertDebugUtilsLabelEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdInsertDebugUtilsLabelEXT")]
     #[inline]
     pub fn insert_debug_utils_label_ext<'a>(
@@ -175,12 +175,12 @@ let _messenger = args
 
 # Valid usage
 
-The rules are on [`vkCreateDebugUtilsMessengerEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDebugUtilsMessengerEXT.html). Settled by the wrappers:
+The rules of `vkCreateDebugUtilsMessengerEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDebugUtilsMessengerEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDebugUtilsMessengerEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDebugUtilsMessengerEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDebugUtilsMessengerEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDebugUtilsMessengerEXT-pMessenger-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDebugUtilsMessengerEXT-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateDebugUtilsMessengerEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDebugUtilsMessengerCreateInfoEXT structure
+- `VUID-vkCreateDebugUtilsMessengerEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDebugUtilsMessengerEXT-pMessenger-parameter` (*by the types*): `pMessenger` must be a valid pointer to a VkDebugUtilsMessengerEXT handle*/
     #[doc(alias = "vkCreateDebugUtilsMessengerEXT")]
     #[inline]
     pub fn create_debug_utils_messenger_ext<'a>(
@@ -236,15 +236,14 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkSubmitDebugUtilsMessageEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSubmitDebugUtilsMessageEXT.html). Settled by the wrappers:
+The rules of `vkSubmitDebugUtilsMessageEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSubmitDebugUtilsMessageEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkSubmitDebugUtilsMessageEXT-objectType-02591` (*yours*; explicit rule): The `objectType` member of each element of `pCallbackData->pObjects` must not be `VK_OBJECT_TYPE_UNKNOWN`
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageSeverity-parameter` (*checked*): `messageSeverity` must be a valid VkDebugUtilsMessageSeverityFlagBitsEXT value
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter` (*checked*): `messageTypes` must be a valid combination of VkDebugUtilsMessageTypeFlagBitsEXT values
+- `VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask` (*checked*): `messageTypes` must not be `0`
+- `VUID-vkSubmitDebugUtilsMessageEXT-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkSubmitDebugUtilsMessageEXT-pCallbackData-parameter` (*by the types*): `pCallbackData` must be a valid pointer to a valid VkDebugUtilsMessengerCallbackDataEXT structure*/
     #[doc(alias = "vkSubmitDebugUtilsMessageEXT")]
     #[inline]
     pub unsafe fn submit_debug_utils_message_ext<'a>(
@@ -311,10 +310,10 @@ impl Queue {
 
 # Valid usage
 
-The rules are on [`vkQueueBeginDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueBeginDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules of `vkQueueBeginDebugUtilsLabelEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueBeginDebugUtilsLabelEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueBeginDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueBeginDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkQueueBeginDebugUtilsLabelEXT-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkQueueBeginDebugUtilsLabelEXT-pLabelInfo-parameter` (*by the types*): `pLabelInfo` must be a valid pointer to a valid VkDebugUtilsLabelEXT structure*/
     #[doc(alias = "vkQueueBeginDebugUtilsLabelEXT")]
     #[inline]
     pub fn begin_debug_utils_label_ext<'a>(
@@ -346,11 +345,10 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkQueueEndDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueEndDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules of `vkQueueEndDebugUtilsLabelEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueEndDebugUtilsLabelEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkQueueEndDebugUtilsLabelEXT-None-01911` (*yours*; explicit rule): There must be an outstanding `vkQueueBeginDebugUtilsLabelEXT` command prior to the `vkQueueEndDebugUtilsLabelEXT` on the queue
+- `VUID-vkQueueEndDebugUtilsLabelEXT-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle*/
     #[doc(alias = "vkQueueEndDebugUtilsLabelEXT")]
     #[inline]
     pub unsafe fn end_debug_utils_label_ext(&self) -> Result<()> {
@@ -371,10 +369,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Valid usage
 
-The rules are on [`vkQueueInsertDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueInsertDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules of `vkQueueInsertDebugUtilsLabelEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueInsertDebugUtilsLabelEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkQueueInsertDebugUtilsLabelEXT-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkQueueInsertDebugUtilsLabelEXT-pLabelInfo-parameter` (*by the types*): `pLabelInfo` must be a valid pointer to a valid VkDebugUtilsLabelEXT structure*/
     #[doc(alias = "vkQueueInsertDebugUtilsLabelEXT")]
     #[inline]
     pub fn insert_debug_utils_label_ext<'a>(
@@ -410,12 +408,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkSetDebugUtilsObjectNameEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDebugUtilsObjectNameEXT.html). Settled by the wrappers:
+The rules of `vkSetDebugUtilsObjectNameEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDebugUtilsObjectNameEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetDebugUtilsObjectNameEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02587` (*yours*; explicit rule): `pNameInfo->objectType` must not be `VK_OBJECT_TYPE_UNKNOWN`
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-02588` (*yours*; explicit rule): `pNameInfo->objectHandle` must not be VK_NULL_HANDLE
+- `VUID-vkSetDebugUtilsObjectNameEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetDebugUtilsObjectNameEXT-pNameInfo-parameter` (*by the types*): `pNameInfo` must be a valid pointer to a valid VkDebugUtilsObjectNameInfoEXT structure*/
     #[doc(alias = "vkSetDebugUtilsObjectNameEXT")]
     #[inline]
     pub unsafe fn set_debug_utils_object_name_ext<'a>(
@@ -490,10 +488,10 @@ The caller upholds the rules that [`Self::set_debug_utils_object_name_ext`] chec
 
 # Valid usage
 
-The rules are on [`vkSetDebugUtilsObjectTagEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDebugUtilsObjectTagEXT.html). Settled by the wrappers:
+The rules of `vkSetDebugUtilsObjectTagEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDebugUtilsObjectTagEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetDebugUtilsObjectTagEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetDebugUtilsObjectTagEXT-pTagInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSetDebugUtilsObjectTagEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetDebugUtilsObjectTagEXT-pTagInfo-parameter` (*by the types*): `pTagInfo` must be a valid pointer to a valid VkDebugUtilsObjectTagInfoEXT structure*/
     #[doc(alias = "vkSetDebugUtilsObjectTagEXT")]
     #[inline]
     pub fn set_debug_utils_object_tag_ext<'a>(

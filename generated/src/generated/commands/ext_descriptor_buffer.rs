@@ -9,17 +9,19 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdBindDescriptorBufferEmbeddedSamplersEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorBufferEmbeddedSamplersEXT.html). Settled by the wrappers:
+The rules of `vkCmdBindDescriptorBufferEmbeddedSamplersEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorBufferEmbeddedSamplersEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-None-08068` (*yours*; explicit rule): The `descriptorBuffer` feature must be enabled
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-pipelineBindPoint-08069` (*yours*; explicit rule): `pipelineBindPoint` must be supported by the `commandBuffer`&#8217;s parent `VkCommandPool`&#8217;s queue family
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-set-08070` (*yours*; explicit rule): The VkDescriptorSetLayout at index `set` when `layout` was created must have been created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_EMBEDDED_IMMUTABLE_SAMPLERS_BIT_EXT` bit set
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-set-08071` (*yours*; explicit rule): `set` must be less than or equal to VkPipelineLayoutCreateInfo::`setLayoutCount` provided when `layout` was created
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent` (*checked*): Both of `commandBuffer`, and `layout` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindDescriptorBufferEmbeddedSamplersEXT")]
     #[inline]
     pub fn bind_descriptor_buffer_embedded_samplers_ext(
@@ -77,16 +79,23 @@ The caller upholds the rules that [`Self::bind_descriptor_buffer_embedded_sample
 
 # Valid usage
 
-The rules are on [`vkCmdBindDescriptorBuffersEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorBuffersEXT.html). Settled by the wrappers:
+The rules of `vkCmdBindDescriptorBuffersEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindDescriptorBuffersEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBindDescriptorBuffersEXT-pBindingInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBindDescriptorBuffersEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBindDescriptorBuffersEXT-None-08047` (*yours*; explicit rule): The `descriptorBuffer` feature must be enabled
+- `VUID-vkCmdBindDescriptorBuffersEXT-maxSamplerDescriptorBufferBindings-08048` (*yours*; explicit rule): There must be no more than VkPhysicalDeviceDescriptorBufferPropertiesEXT::`maxSamplerDescriptorBufferBindings` descriptor buffers containing sampler descriptor data bound
+- `VUID-vkCmdBindDescriptorBuffersEXT-maxResourceDescriptorBufferBindings-08049` (*yours*; explicit rule): There must be no more than VkPhysicalDeviceDescriptorBufferPropertiesEXT::`maxResourceDescriptorBufferBindings` descriptor buffers containing resource descriptor data bound
+- `VUID-vkCmdBindDescriptorBuffersEXT-None-08050` (*yours*; explicit rule): There must be no more than `1` descriptor buffer bound that was created with the `VK_BUFFER_USAGE_PUSH_DESCRIPTORS_DESCRIPTOR_BUFFER_BIT_EXT` bit set
+- `VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-08051` (*yours*; explicit rule): `bufferCount` must be less than or equal to VkPhysicalDeviceDescriptorBufferPropertiesEXT::`maxDescriptorBufferBindings`
+- `VUID-vkCmdBindDescriptorBuffersEXT-pBindingInfos-08052` (*yours*; explicit rule): For any element of `pBindingInfos`, if the buffer from which `address` was queried is non-sparse then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdBindDescriptorBuffersEXT-pBindingInfos-08053` (*yours*; explicit rule): For any element of `pBindingInfos`, the buffer from which `address` was queried must have been created with the `VK_BUFFER_USAGE_SAMPLER_DESCRIPTOR_BUFFER_BIT_EXT` bit set if it contains sampler …
+- `VUID-vkCmdBindDescriptorBuffersEXT-pBindingInfos-08054` (*yours*; explicit rule): For any element of `pBindingInfos`, the buffer from which `address` was queried must have been created with the `VK_BUFFER_USAGE_RESOURCE_DESCRIPTOR_BUFFER_BIT_EXT` bit set if it contains resource …
+- `VUID-vkCmdBindDescriptorBuffersEXT-pBindingInfos-08055` (*yours*; explicit rule): For any element of `pBindingInfos`, `usage` must match the buffer from which `address` was queried
+- `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength` (*checked*): `bufferCount` must be greater than `0`
+- `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBindDescriptorBuffersEXT-pBindingInfos-parameter` (*by the types*): `pBindingInfos` must be a valid pointer to an array of `bufferCount` valid VkDescriptorBufferBindingInfoEXT structures
+- `VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBindDescriptorBuffersEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindDescriptorBuffersEXT")]
     #[inline]
     pub fn bind_descriptor_buffers_ext<'a>(
@@ -149,20 +158,28 @@ The caller upholds the rules that [`Self::bind_descriptor_buffers_ext`] checks a
 
 # Valid usage
 
-The rules are on [`vkCmdSetDescriptorBufferOffsetsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDescriptorBufferOffsetsEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetDescriptorBufferOffsetsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDescriptorBufferOffsetsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pBufferIndices-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-parameter`: dynamic (checks, in every build, that the slice is as long as `buffer_indices`)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-None-08060` (*yours*; explicit rule): The `descriptorBuffer` feature must be enabled
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-08061` (*yours*; explicit rule): The offsets in `pOffsets` must be aligned to VkPhysicalDeviceDescriptorBufferPropertiesEXT::`descriptorBufferOffsetAlignment`
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-08126` (*yours*; explicit rule): The offsets in `pOffsets` must be small enough such that any location accessed by a shader as a sampler descriptor must be within …
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-08127` (*yours*; explicit rule): The offsets in `pOffsets` must be small enough such that any location accessed by a shader as a resource descriptor must be within …
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pBufferIndices-08064` (*yours*; explicit rule): Each element of `pBufferIndices` must be less than VkPhysicalDeviceDescriptorBufferPropertiesEXT::`maxDescriptorBufferBindings`
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pBufferIndices-08065` (*yours*; explicit rule): Each element of `pBufferIndices` must reference a valid descriptor buffer binding set by a previous call to vkCmdBindDescriptorBuffersEXT in `commandBuffer`
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-firstSet-08066` (*yours*; explicit rule): The sum of `firstSet` and `setCount` must be less than or equal to VkPipelineLayoutCreateInfo::`setLayoutCount` provided when `layout` was created
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pipelineBindPoint-08067` (*yours*; explicit rule): `pipelineBindPoint` must be supported by the `commandBuffer`&#8217;s parent `VkCommandPool`&#8217;s queue family
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-08062` (*yours*; explicit rule): The offsets in `pOffsets` must be small enough such that any descriptor binding referenced by `layout` computes a valid address inside the underlying VkBuffer
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-08063` (*yours*; explicit rule): The offsets in `pOffsets` must be small enough such that any descriptor binding referenced by `layout` without the `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT` flag computes a valid address …
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-parameter` (*checked*): `pOffsets` must be a valid pointer to an array of `setCount` VkDeviceSize values
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength` (*checked*): `setCount` must be greater than `0`
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent` (*checked*): Both of `commandBuffer`, and `layout` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pBufferIndices-parameter` (*by the types*): `pBufferIndices` must be a valid pointer to an array of `setCount` `uint32_t` values
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetDescriptorBufferOffsetsEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetDescriptorBufferOffsetsEXT")]
     #[inline]
     pub fn set_descriptor_buffer_offsets_ext(
@@ -258,15 +275,14 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT.html). Settled by the wrappers:
+The rules of `vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 3: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-None-08088` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`accelerationStructureCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-device-08090` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkAccelerationStructureCaptureDescriptorDataInfoEXT structure*/
     #[doc(alias = "vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_acceleration_structure_opaque_capture_descriptor_data_ext<'a>(
@@ -334,15 +350,14 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetBufferOpaqueCaptureDescriptorDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureDescriptorDataEXT.html). Settled by the wrappers:
+The rules of `vkGetBufferOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 3: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-None-08072` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-08073` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`bufferCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-device-08074` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferCaptureDescriptorDataInfoEXT structure*/
     #[doc(alias = "vkGetBufferOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_buffer_opaque_capture_descriptor_data_ext<'a>(
@@ -373,14 +388,16 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 # Valid usage
 
-The rules are on [`vkGetDescriptorEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorEXT.html). Settled by the wrappers:
+The rules of `vkGetDescriptorEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDescriptorEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDescriptorEXT-pDescriptorInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDescriptorEXT-pDescriptor-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDescriptorEXT-dataSize-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDescriptorEXT-None-08015` (*yours*; explicit rule): The `descriptorBuffer` feature must be enabled
+- `VUID-vkGetDescriptorEXT-pDescriptor-08016` (*yours*; explicit rule): `pDescriptor` must be a valid pointer to an array of at least `dataSize` bytes
+- `VUID-vkGetDescriptorEXT-dataSize-08120` (*yours*; explicit rule): `dataSize` must equal the size of a descriptor of type VkDescriptorGetInfoEXT::`type` determined by the value in VkPhysicalDeviceDescriptorBufferPropertiesEXT
+- `VUID-vkGetDescriptorEXT-dataSize-08125` (*yours*; explicit rule): `dataSize` must equal the size of a descriptor of type VkDescriptorGetInfoEXT::`type` determined by the value in VkPhysicalDeviceDescriptorBufferPropertiesEXT, or …
+- `VUID-vkGetDescriptorEXT-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-vkGetDescriptorEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDescriptorEXT-pDescriptorInfo-parameter` (*by the types*): `pDescriptorInfo` must be a valid pointer to a valid VkDescriptorGetInfoEXT structure
+- `VUID-vkGetDescriptorEXT-pDescriptor-parameter` (*by the types*): `pDescriptor` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkGetDescriptorEXT")]
     #[inline]
     pub fn get_descriptor_ext<'a>(
@@ -430,14 +447,14 @@ The caller upholds the rules that [`Self::get_descriptor_ext`] checks at run tim
 
 # Valid usage
 
-The rules are on [`vkGetDescriptorSetLayoutBindingOffsetEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutBindingOffsetEXT.html). Settled by the wrappers:
+The rules of `vkGetDescriptorSetLayoutBindingOffsetEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutBindingOffsetEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-pOffset-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-None-08013` (*yours*; explicit rule): The `descriptorBuffer` feature must be enabled
+- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-08014` (*yours*; explicit rule): `layout` must have been created with the VK_DESCRIPTOR_SET_LAYOUT_CREATE_DESCRIPTOR_BUFFER_BIT_EXT flag set
+- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-parent` (*checked*): `layout` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-parameter` (*by the types*): `layout` must be a valid VkDescriptorSetLayout handle
+- `VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-pOffset-parameter` (*by the types*): `pOffset` must be a valid pointer to a VkDeviceSize value*/
     #[doc(alias = "vkGetDescriptorSetLayoutBindingOffsetEXT")]
     #[inline]
     pub fn get_descriptor_set_layout_binding_offset_ext(
@@ -483,14 +500,14 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_binding_offs
 
 # Valid usage
 
-The rules are on [`vkGetDescriptorSetLayoutSizeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSizeEXT.html). Settled by the wrappers:
+The rules of `vkGetDescriptorSetLayoutSizeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSizeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDescriptorSetLayoutSizeEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDescriptorSetLayoutSizeEXT-pLayoutSizeInBytes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDescriptorSetLayoutSizeEXT-None-08011` (*yours*; explicit rule): The `descriptorBuffer` feature must be enabled
+- `VUID-vkGetDescriptorSetLayoutSizeEXT-layout-08012` (*yours*; explicit rule): `layout` must have been created with the VK_DESCRIPTOR_SET_LAYOUT_CREATE_DESCRIPTOR_BUFFER_BIT_EXT flag set
+- `VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parent` (*checked*): `layout` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetDescriptorSetLayoutSizeEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parameter` (*by the types*): `layout` must be a valid VkDescriptorSetLayout handle
+- `VUID-vkGetDescriptorSetLayoutSizeEXT-pLayoutSizeInBytes-parameter` (*by the types*): `pLayoutSizeInBytes` must be a valid pointer to a VkDeviceSize value*/
     #[doc(alias = "vkGetDescriptorSetLayoutSizeEXT")]
     #[inline]
     pub fn get_descriptor_set_layout_size_ext(
@@ -536,15 +553,14 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_size_ext`] c
 
 # Valid usage
 
-The rules are on [`vkGetImageOpaqueCaptureDescriptorDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageOpaqueCaptureDescriptorDataEXT.html). Settled by the wrappers:
+The rules of `vkGetImageOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 3: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-None-08076` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-08077` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`imageCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-device-08078` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageCaptureDescriptorDataInfoEXT structure*/
     #[doc(alias = "vkGetImageOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_image_opaque_capture_descriptor_data_ext<'a>(
@@ -579,15 +595,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 # Valid usage
 
-The rules are on [`vkGetImageViewOpaqueCaptureDescriptorDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageViewOpaqueCaptureDescriptorDataEXT.html). Settled by the wrappers:
+The rules of `vkGetImageViewOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageViewOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 3: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-None-08080` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-08081` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`imageViewCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-device-08082` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageViewCaptureDescriptorDataInfoEXT structure*/
     #[doc(alias = "vkGetImageViewOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_image_view_opaque_capture_descriptor_data_ext<'a>(
@@ -622,15 +637,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4.
 
 # Valid usage
 
-The rules are on [`vkGetSamplerOpaqueCaptureDescriptorDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSamplerOpaqueCaptureDescriptorDataEXT.html). Settled by the wrappers:
+The rules of `vkGetSamplerOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSamplerOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 3: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-None-08084` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-08085` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`samplerCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-device-08086` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkSamplerCaptureDescriptorDataInfoEXT structure*/
     #[doc(alias = "vkGetSamplerOpaqueCaptureDescriptorDataEXT")]
     #[inline]
     pub unsafe fn get_sampler_opaque_capture_descriptor_data_ext<'a>(

@@ -14,12 +14,11 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkReleaseDisplayEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseDisplayEXT.html). Settled by the wrappers:
+The rules of `vkReleaseDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkReleaseDisplayEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkReleaseDisplayEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+- `VUID-vkReleaseDisplayEXT-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
+- `VUID-vkReleaseDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkReleaseDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
     #[doc(alias = "vkReleaseDisplayEXT")]
     #[inline]
     pub unsafe fn release_display_ext(&self, display: &DisplayKHR) -> Result<()> {

@@ -15,12 +15,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateDirectFBSurfaceEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDirectFBSurfaceEXT.html). Settled by the wrappers:
+The rules of `vkCreateDirectFBSurfaceEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDirectFBSurfaceEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDirectFBSurfaceEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDirectFBSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDirectFBSurfaceEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDirectFBSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDirectFBSurfaceEXT-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateDirectFBSurfaceEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDirectFBSurfaceCreateInfoEXT structure
+- `VUID-vkCreateDirectFBSurfaceEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDirectFBSurfaceEXT-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateDirectFBSurfaceEXT")]
     #[inline]
     pub unsafe fn create_direct_fb_surface_ext<'a>(
@@ -82,14 +82,11 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceDirectFBPresentationSupportEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDirectFBPresentationSupportEXT.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceDirectFBPresentationSupportEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDirectFBPresentationSupportEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceDirectFBPresentationSupportEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetPhysicalDeviceDirectFBPresentationSupportEXT-queueFamilyIndex-04119` (*yours*; explicit rule): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceDirectFBPresentationSupportEXT-dfb-parameter` (*yours*; passed as ash's raw type): `dfb` must be a valid pointer to an `IDirectFB` value
+- `VUID-vkGetPhysicalDeviceDirectFBPresentationSupportEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle*/
     #[doc(alias = "vkGetPhysicalDeviceDirectFBPresentationSupportEXT")]
     #[inline]
     pub unsafe fn get_direct_fb_presentation_support_ext(

@@ -8,16 +8,19 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetDiscardRectangleEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDiscardRectangleEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetDiscardRectangleEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDiscardRectangleEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDiscardRectangleEXT-pDiscardRectangles-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDiscardRectangleEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetDiscardRectangleEXT-firstDiscardRectangle-00585` (*yours*; explicit rule): The sum of `firstDiscardRectangle` and `discardRectangleCount` must be less than or equal to VkPhysicalDeviceDiscardRectanglePropertiesEXT::`maxDiscardRectangles`
+- `VUID-vkCmdSetDiscardRectangleEXT-x-00587` (*yours*; explicit rule): The `x` and `y` member of `offset` in each VkRect2D element of `pDiscardRectangles` must be greater than or equal to `0`
+- `VUID-vkCmdSetDiscardRectangleEXT-offset-00588` (*yours*; explicit rule): Evaluation of (`offset.x` + `extent.width`) in each VkRect2D element of `pDiscardRectangles` must not cause a signed integer addition overflow
+- `VUID-vkCmdSetDiscardRectangleEXT-offset-00589` (*yours*; explicit rule): Evaluation of (`offset.y` + `extent.height`) in each VkRect2D element of `pDiscardRectangles` must not cause a signed integer addition overflow
+- `VUID-vkCmdSetDiscardRectangleEXT-viewportScissor2D-04788` (*yours*; explicit rule): If this command is recorded in a secondary command buffer with VkCommandBufferInheritanceViewportScissorInfoNV::`viewportScissor2D` enabled, then this function must not be called
+- `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength` (*checked*): `discardRectangleCount` must be greater than `0`
+- `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetDiscardRectangleEXT-pDiscardRectangles-parameter` (*by the types*): `pDiscardRectangles` must be a valid pointer to an array of `discardRectangleCount` VkRect2D structures
+- `VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetDiscardRectangleEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetDiscardRectangleEXT")]
     #[inline]
     pub fn set_discard_rectangle_ext(

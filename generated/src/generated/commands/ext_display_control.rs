@@ -8,13 +8,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkDisplayPowerControlEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDisplayPowerControlEXT.html). Settled by the wrappers:
+The rules of `vkDisplayPowerControlEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDisplayPowerControlEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkDisplayPowerControlEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkDisplayPowerControlEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkDisplayPowerControlEXT-pDisplayPowerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`commonparent` rules are not checked yet).*/
+- `VUID-vkDisplayPowerControlEXT-commonparent` (*yours*; `commonparent` rules are not checked yet): Both of `device`, and `display` must have been created, allocated, or retrieved from the same VkPhysicalDevice
+- `VUID-vkDisplayPowerControlEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkDisplayPowerControlEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkDisplayPowerControlEXT-pDisplayPowerInfo-parameter` (*by the types*): `pDisplayPowerInfo` must be a valid pointer to a valid VkDisplayPowerInfoEXT structure*/
     #[doc(alias = "vkDisplayPowerControlEXT")]
     #[inline]
     pub fn display_power_control_ext<'a>(
@@ -64,15 +63,14 @@ The caller upholds the rules that [`Self::display_power_control_ext`] checks at 
 
 # Valid usage
 
-The rules are on [`vkGetSwapchainCounterEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainCounterEXT.html). Settled by the wrappers:
+The rules of `vkGetSwapchainCounterEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainCounterEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSwapchainCounterEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSwapchainCounterEXT-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetSwapchainCounterEXT-counter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetSwapchainCounterEXT-pCounterValue-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSwapchainCounterEXT-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetSwapchainCounterEXT-swapchain-01245` (*yours*; explicit rule): One or more present commands on `swapchain` must have been processed by the presentation engine
+- `VUID-vkGetSwapchainCounterEXT-counter-parameter` (*checked*): `counter` must be a valid VkSurfaceCounterFlagBitsEXT value
+- `VUID-vkGetSwapchainCounterEXT-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetSwapchainCounterEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSwapchainCounterEXT-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-vkGetSwapchainCounterEXT-pCounterValue-parameter` (*by the types*): `pCounterValue` must be a valid pointer to a `uint64_t` value*/
     #[doc(alias = "vkGetSwapchainCounterEXT")]
     #[inline]
     pub fn get_swapchain_counter_ext(
@@ -117,12 +115,12 @@ The caller upholds the rules that [`Self::get_swapchain_counter_ext`] checks at 
 
 # Valid usage
 
-The rules are on [`vkRegisterDeviceEventEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkRegisterDeviceEventEXT.html). Settled by the wrappers:
+The rules of `vkRegisterDeviceEventEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkRegisterDeviceEventEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkRegisterDeviceEventEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkRegisterDeviceEventEXT-pDeviceEventInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkRegisterDeviceEventEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkRegisterDeviceEventEXT-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkRegisterDeviceEventEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkRegisterDeviceEventEXT-pDeviceEventInfo-parameter` (*by the types*): `pDeviceEventInfo` must be a valid pointer to a valid VkDeviceEventInfoEXT structure
+- `VUID-vkRegisterDeviceEventEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkRegisterDeviceEventEXT-pFence-parameter` (*by the types*): `pFence` must be a valid pointer to a VkFence handle*/
     #[doc(alias = "vkRegisterDeviceEventEXT")]
     #[inline]
     pub fn register_event_ext<'a>(
@@ -172,15 +170,14 @@ The caller upholds the rules that [`Self::register_event_ext`] checks at run tim
 
 # Valid usage
 
-The rules are on [`vkRegisterDisplayEventEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkRegisterDisplayEventEXT.html). Settled by the wrappers:
+The rules of `vkRegisterDisplayEventEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkRegisterDisplayEventEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkRegisterDisplayEventEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkRegisterDisplayEventEXT-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkRegisterDisplayEventEXT-pDisplayEventInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkRegisterDisplayEventEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkRegisterDisplayEventEXT-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`commonparent` rules are not checked yet).*/
+- `VUID-vkRegisterDisplayEventEXT-commonparent` (*yours*; `commonparent` rules are not checked yet): Both of `device`, and `display` must have been created, allocated, or retrieved from the same VkPhysicalDevice
+- `VUID-vkRegisterDisplayEventEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkRegisterDisplayEventEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkRegisterDisplayEventEXT-pDisplayEventInfo-parameter` (*by the types*): `pDisplayEventInfo` must be a valid pointer to a valid VkDisplayEventInfoEXT structure
+- `VUID-vkRegisterDisplayEventEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkRegisterDisplayEventEXT-pFence-parameter` (*by the types*): `pFence` must be a valid pointer to a VkFence handle*/
     #[doc(alias = "vkRegisterDisplayEventEXT")]
     #[inline]
     pub fn register_display_event_ext<'a>(

@@ -15,15 +15,14 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfaceCapabilities2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilities2EXT.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfaceCapabilities2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilities2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-surface-06523`: static (the method takes the handle as a wrapper reference, never null and live while borrowed)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-pSurfaceCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-surface-06211` (*yours*; explicit rule): `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-commonparent` (*checked*): Both of `physicalDevice`, and `surface` must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-surface-06523` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-surface-parameter` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-pSurfaceCapabilities-parameter` (*by the types*): `pSurfaceCapabilities` must be a valid pointer to a VkSurfaceCapabilities2EXT structure*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilities2EXT")]
     #[inline]
     pub unsafe fn get_surface_capabilities2_ext<'a>(

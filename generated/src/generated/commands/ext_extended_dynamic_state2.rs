@@ -8,15 +8,14 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetLogicOpEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLogicOpEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetLogicOpEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLogicOpEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetLogicOpEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetLogicOpEXT-logicOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetLogicOpEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetLogicOpEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetLogicOpEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetLogicOpEXT-None-04867` (*yours*; explicit rule): The `extendedDynamicState2LogicOp` feature must be enabled
+- `VUID-vkCmdSetLogicOpEXT-logicOp-parameter` (*checked*): `logicOp` must be a valid VkLogicOp value
+- `VUID-vkCmdSetLogicOpEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetLogicOpEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetLogicOpEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetLogicOpEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetLogicOpEXT")]
     #[inline]
     pub fn set_logic_op_ext(&mut self, logic_op: vk::LogicOp) -> Result<()> {
@@ -56,14 +55,14 @@ The caller upholds the rules that [`Self::set_logic_op_ext`] checks at run time:
 
 # Valid usage
 
-The rules are on [`vkCmdSetPatchControlPointsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPatchControlPointsEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetPatchControlPointsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPatchControlPointsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPatchControlPointsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetPatchControlPointsEXT-None-04873` (*yours*; explicit rule): The `extendedDynamicState2PatchControlPoints` feature must be enabled
+- `VUID-vkCmdSetPatchControlPointsEXT-patchControlPoints-04874` (*yours*; explicit rule): `patchControlPoints` must be greater than zero and less than or equal to `VkPhysicalDeviceLimits::maxTessellationPatchSize`
+- `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetPatchControlPointsEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetPatchControlPointsEXT")]
     #[inline]
     pub fn set_patch_control_points_ext(

@@ -8,14 +8,13 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetAlphaToCoverageEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetAlphaToCoverageEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetAlphaToCoverageEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetAlphaToCoverageEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetAlphaToCoverageEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetAlphaToCoverageEnableEXT-extendedDynamicState3AlphaToCoverageEnable-07343` (*yours*; explicit rule): The `extendedDynamicState3AlphaToCoverageEnable` feature must be enabled
+- `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetAlphaToCoverageEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetAlphaToCoverageEnableEXT")]
     #[inline]
     pub fn set_alpha_to_coverage_enable_ext(
@@ -61,14 +60,14 @@ The caller upholds the rules that [`Self::set_alpha_to_coverage_enable_ext`] che
 
 # Valid usage
 
-The rules are on [`vkCmdSetAlphaToOneEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetAlphaToOneEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetAlphaToOneEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetAlphaToOneEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetAlphaToOneEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetAlphaToOneEnableEXT-extendedDynamicState3AlphaToOneEnable-07345` (*yours*; explicit rule): The `extendedDynamicState3AlphaToOneEnable` feature must be enabled
+- `VUID-vkCmdSetAlphaToOneEnableEXT-alphaToOne-07607` (*yours*; explicit rule): If the `alphaToOne` feature is not enabled, `alphaToOneEnable` must be `VK_FALSE`
+- `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetAlphaToOneEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetAlphaToOneEnableEXT")]
     #[inline]
     pub fn set_alpha_to_one_enable_ext(
@@ -112,16 +111,15 @@ The caller upholds the rules that [`Self::set_alpha_to_one_enable_ext`] checks a
 
 # Valid usage
 
-The rules are on [`vkCmdSetColorBlendAdvancedEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorBlendAdvancedEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetColorBlendAdvancedEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorBlendAdvancedEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetColorBlendAdvancedEXT-pColorBlendAdvanced-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetColorBlendAdvancedEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetColorBlendAdvancedEXT-extendedDynamicState3ColorBlendAdvanced-07504` (*yours*; explicit rule): The `extendedDynamicState3ColorBlendAdvanced` feature must be enabled
+- `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength` (*checked*): `attachmentCount` must be greater than `0`
+- `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetColorBlendAdvancedEXT-pColorBlendAdvanced-parameter` (*by the types*): `pColorBlendAdvanced` must be a valid pointer to an array of `attachmentCount` valid VkColorBlendAdvancedEXT structures
+- `VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetColorBlendAdvancedEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetColorBlendAdvancedEXT")]
     #[inline]
     pub fn set_color_blend_advanced_ext(
@@ -178,16 +176,15 @@ The caller upholds the rules that [`Self::set_color_blend_advanced_ext`] checks 
 
 # Valid usage
 
-The rules are on [`vkCmdSetColorBlendEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorBlendEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetColorBlendEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorBlendEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetColorBlendEnableEXT-pColorBlendEnables-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetColorBlendEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetColorBlendEnableEXT-extendedDynamicState3ColorBlendEnable-07355` (*yours*; explicit rule): The `extendedDynamicState3ColorBlendEnable` feature must be enabled
+- `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength` (*checked*): `attachmentCount` must be greater than `0`
+- `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetColorBlendEnableEXT-pColorBlendEnables-parameter` (*by the types*): `pColorBlendEnables` must be a valid pointer to an array of `attachmentCount` VkBool32 values
+- `VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetColorBlendEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetColorBlendEnableEXT")]
     #[inline]
     pub fn set_color_blend_enable_ext(
@@ -244,16 +241,15 @@ The caller upholds the rules that [`Self::set_color_blend_enable_ext`] checks at
 
 # Valid usage
 
-The rules are on [`vkCmdSetColorBlendEquationEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorBlendEquationEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetColorBlendEquationEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorBlendEquationEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetColorBlendEquationEXT-pColorBlendEquations-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetColorBlendEquationEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetColorBlendEquationEXT-extendedDynamicState3ColorBlendEquation-07356` (*yours*; explicit rule): The `extendedDynamicState3ColorBlendEquation` feature must be enabled
+- `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength` (*checked*): `attachmentCount` must be greater than `0`
+- `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetColorBlendEquationEXT-pColorBlendEquations-parameter` (*by the types*): `pColorBlendEquations` must be a valid pointer to an array of `attachmentCount` valid VkColorBlendEquationEXT structures
+- `VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetColorBlendEquationEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetColorBlendEquationEXT")]
     #[inline]
     pub fn set_color_blend_equation_ext(
@@ -310,16 +306,15 @@ The caller upholds the rules that [`Self::set_color_blend_equation_ext`] checks 
 
 # Valid usage
 
-The rules are on [`vkCmdSetColorWriteMaskEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorWriteMaskEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetColorWriteMaskEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetColorWriteMaskEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetColorWriteMaskEXT-pColorWriteMasks-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetColorWriteMaskEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetColorWriteMaskEXT-extendedDynamicState3ColorWriteMask-07364` (*yours*; explicit rule): The `extendedDynamicState3ColorWriteMask` feature must be enabled
+- `VUID-vkCmdSetColorWriteMaskEXT-pColorWriteMasks-parameter` (*checked*): `pColorWriteMasks` must be a valid pointer to an array of `attachmentCount` valid combinations of VkColorComponentFlagBits values
+- `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength` (*checked*): `attachmentCount` must be greater than `0`
+- `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetColorWriteMaskEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetColorWriteMaskEXT")]
     #[inline]
     pub fn set_color_write_mask_ext(
@@ -373,15 +368,14 @@ The caller upholds the rules that [`Self::set_color_write_mask_ext`] checks at r
 
 # Valid usage
 
-The rules are on [`vkCmdSetConservativeRasterizationModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetConservativeRasterizationModeEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetConservativeRasterizationModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetConservativeRasterizationModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetConservativeRasterizationModeEXT-conservativeRasterizationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetConservativeRasterizationModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetConservativeRasterizationModeEXT-extendedDynamicState3ConservativeRasterizationMode-07426` (*yours*; explicit rule): The `extendedDynamicState3ConservativeRasterizationMode` feature must be enabled
+- `VUID-vkCmdSetConservativeRasterizationModeEXT-conservativeRasterizationMode-parameter` (*checked*): `conservativeRasterizationMode` must be a valid VkConservativeRasterizationModeEXT value
+- `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetConservativeRasterizationModeEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetConservativeRasterizationModeEXT")]
     #[inline]
     pub fn set_conservative_rasterization_mode_ext(
@@ -431,15 +425,14 @@ The caller upholds the rules that [`Self::set_conservative_rasterization_mode_ex
 
 # Valid usage
 
-The rules are on [`vkCmdSetCoverageModulationModeNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageModulationModeNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCoverageModulationModeNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageModulationModeNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCoverageModulationModeNV-coverageModulationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCoverageModulationModeNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetCoverageModulationModeNV-extendedDynamicState3CoverageModulationMode-07350` (*yours*; explicit rule): The `extendedDynamicState3CoverageModulationMode` feature must be enabled
+- `VUID-vkCmdSetCoverageModulationModeNV-coverageModulationMode-parameter` (*checked*): `coverageModulationMode` must be a valid VkCoverageModulationModeNV value
+- `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCoverageModulationModeNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCoverageModulationModeNV")]
     #[inline]
     pub fn set_coverage_modulation_mode_nv(
@@ -485,14 +478,13 @@ The caller upholds the rules that [`Self::set_coverage_modulation_mode_nv`] chec
 
 # Valid usage
 
-The rules are on [`vkCmdSetCoverageModulationTableEnableNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageModulationTableEnableNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCoverageModulationTableEnableNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageModulationTableEnableNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCoverageModulationTableEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetCoverageModulationTableEnableNV-extendedDynamicState3CoverageModulationTableEnable-07351` (*yours*; explicit rule): The `extendedDynamicState3CoverageModulationTableEnable` feature must be enabled
+- `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCoverageModulationTableEnableNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCoverageModulationTableEnableNV")]
     #[inline]
     pub fn set_coverage_modulation_table_enable_nv(
@@ -542,16 +534,15 @@ The caller upholds the rules that [`Self::set_coverage_modulation_table_enable_n
 
 # Valid usage
 
-The rules are on [`vkCmdSetCoverageModulationTableNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageModulationTableNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCoverageModulationTableNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageModulationTableNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCoverageModulationTableNV-pCoverageModulationTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCoverageModulationTableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetCoverageModulationTableNV-extendedDynamicState3CoverageModulationTable-07352` (*yours*; explicit rule): The `extendedDynamicState3CoverageModulationTable` feature must be enabled
+- `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength` (*checked*): `coverageModulationTableCount` must be greater than `0`
+- `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCoverageModulationTableNV-pCoverageModulationTable-parameter` (*by the types*): `pCoverageModulationTable` must be a valid pointer to an array of `coverageModulationTableCount` `float` values
+- `VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCoverageModulationTableNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCoverageModulationTableNV")]
     #[inline]
     pub fn set_coverage_modulation_table_nv(
@@ -603,15 +594,14 @@ The caller upholds the rules that [`Self::set_coverage_modulation_table_nv`] che
 
 # Valid usage
 
-The rules are on [`vkCmdSetCoverageReductionModeNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageReductionModeNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCoverageReductionModeNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageReductionModeNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCoverageReductionModeNV-coverageReductionMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCoverageReductionModeNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetCoverageReductionModeNV-extendedDynamicState3CoverageReductionMode-07349` (*yours*; explicit rule): The `extendedDynamicState3CoverageReductionMode` feature must be enabled
+- `VUID-vkCmdSetCoverageReductionModeNV-coverageReductionMode-parameter` (*checked*): `coverageReductionMode` must be a valid VkCoverageReductionModeNV value
+- `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCoverageReductionModeNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCoverageReductionModeNV")]
     #[inline]
     pub fn set_coverage_reduction_mode_nv(
@@ -655,14 +645,13 @@ The caller upholds the rules that [`Self::set_coverage_reduction_mode_nv`] check
 
 # Valid usage
 
-The rules are on [`vkCmdSetCoverageToColorEnableNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageToColorEnableNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCoverageToColorEnableNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageToColorEnableNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCoverageToColorEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetCoverageToColorEnableNV-extendedDynamicState3CoverageToColorEnable-07347` (*yours*; explicit rule): The `extendedDynamicState3CoverageToColorEnable` feature must be enabled
+- `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCoverageToColorEnableNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCoverageToColorEnableNV")]
     #[inline]
     pub fn set_coverage_to_color_enable_nv(
@@ -708,14 +697,13 @@ The caller upholds the rules that [`Self::set_coverage_to_color_enable_nv`] chec
 
 # Valid usage
 
-The rules are on [`vkCmdSetCoverageToColorLocationNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageToColorLocationNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCoverageToColorLocationNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoverageToColorLocationNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCoverageToColorLocationNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetCoverageToColorLocationNV-extendedDynamicState3CoverageToColorLocation-07348` (*yours*; explicit rule): The `extendedDynamicState3CoverageToColorLocation` feature must be enabled
+- `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCoverageToColorLocationNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCoverageToColorLocationNV")]
     #[inline]
     pub fn set_coverage_to_color_location_nv(
@@ -760,14 +748,14 @@ The caller upholds the rules that [`Self::set_coverage_to_color_location_nv`] ch
 
 # Valid usage
 
-The rules are on [`vkCmdSetDepthClampEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthClampEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetDepthClampEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthClampEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthClampEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetDepthClampEnableEXT-extendedDynamicState3DepthClampEnable-07448` (*yours*; explicit rule): The `extendedDynamicState3DepthClampEnable` feature must be enabled
+- `VUID-vkCmdSetDepthClampEnableEXT-depthClamp-07449` (*yours*; explicit rule): If the `depthClamp` feature is not enabled, `depthClampEnable` must be `VK_FALSE`
+- `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetDepthClampEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetDepthClampEnableEXT")]
     #[inline]
     pub fn set_depth_clamp_enable_ext(
@@ -811,14 +799,14 @@ The caller upholds the rules that [`Self::set_depth_clamp_enable_ext`] checks at
 
 # Valid usage
 
-The rules are on [`vkCmdSetDepthClipEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthClipEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetDepthClipEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthClipEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthClipEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetDepthClipEnableEXT-extendedDynamicState3DepthClipEnable-07450` (*yours*; explicit rule): The `extendedDynamicState3DepthClipEnable` feature must be enabled
+- `VUID-vkCmdSetDepthClipEnableEXT-depthClipEnable-07451` (*yours*; explicit rule): The `depthClipEnable` feature must be enabled
+- `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetDepthClipEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetDepthClipEnableEXT")]
     #[inline]
     pub fn set_depth_clip_enable_ext(&mut self, depth_clip_enable: bool) -> Result<()> {
@@ -859,14 +847,14 @@ The caller upholds the rules that [`Self::set_depth_clip_enable_ext`] checks at 
 
 # Valid usage
 
-The rules are on [`vkCmdSetDepthClipNegativeOneToOneEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthClipNegativeOneToOneEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetDepthClipNegativeOneToOneEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDepthClipNegativeOneToOneEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-extendedDynamicState3DepthClipNegativeOneToOne-07452` (*yours*; explicit rule): The `extendedDynamicState3DepthClipNegativeOneToOne` feature must be enabled
+- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-depthClipControl-07453` (*yours*; explicit rule): The `depthClipControl` feature must be enabled
+- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetDepthClipNegativeOneToOneEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetDepthClipNegativeOneToOneEXT")]
     #[inline]
     pub fn set_depth_clip_negative_one_to_one_ext(
@@ -912,14 +900,14 @@ The caller upholds the rules that [`Self::set_depth_clip_negative_one_to_one_ext
 
 # Valid usage
 
-The rules are on [`vkCmdSetExtraPrimitiveOverestimationSizeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetExtraPrimitiveOverestimationSizeEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetExtraPrimitiveOverestimationSizeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetExtraPrimitiveOverestimationSizeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-extendedDynamicState3ExtraPrimitiveOverestimationSize-07427` (*yours*; explicit rule): The `extendedDynamicState3ExtraPrimitiveOverestimationSize` feature must be enabled
+- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-extraPrimitiveOverestimationSize-07428` (*yours*; explicit rule): `extraPrimitiveOverestimationSize` must be in the range of `0.0` to `VkPhysicalDeviceConservativeRasterizationPropertiesEXT::maxExtraPrimitiveOverestimationSize` inclusive
+- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetExtraPrimitiveOverestimationSizeEXT")]
     #[inline]
     pub fn set_extra_primitive_overestimation_size_ext(
@@ -966,15 +954,17 @@ The caller upholds the rules that [`Self::set_extra_primitive_overestimation_siz
 
 # Valid usage
 
-The rules are on [`vkCmdSetLineRasterizationModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLineRasterizationModeEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetLineRasterizationModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLineRasterizationModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetLineRasterizationModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetLineRasterizationModeEXT-extendedDynamicState3LineRasterizationMode-07417` (*yours*; explicit rule): The `extendedDynamicState3LineRasterizationMode` feature must be enabled
+- `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-07418` (*yours*; explicit rule): If `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT`, then the `rectangularLines` feature must be enabled
+- `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-07419` (*yours*; explicit rule): If `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT`, then the `bresenhamLines` feature must be enabled
+- `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-07420` (*yours*; explicit rule): If `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_RECTANGULAR_SMOOTH_EXT`, then the `smoothLines` feature must be enabled
+- `VUID-vkCmdSetLineRasterizationModeEXT-lineRasterizationMode-parameter` (*checked*): `lineRasterizationMode` must be a valid VkLineRasterizationModeEXT value
+- `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetLineRasterizationModeEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetLineRasterizationModeEXT")]
     #[inline]
     pub fn set_line_rasterization_mode_ext(
@@ -1020,14 +1010,13 @@ The caller upholds the rules that [`Self::set_line_rasterization_mode_ext`] chec
 
 # Valid usage
 
-The rules are on [`vkCmdSetLineStippleEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLineStippleEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetLineStippleEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLineStippleEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetLineStippleEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetLineStippleEnableEXT-extendedDynamicState3LineStippleEnable-07421` (*yours*; explicit rule): The `extendedDynamicState3LineStippleEnable` feature must be enabled
+- `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetLineStippleEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetLineStippleEnableEXT")]
     #[inline]
     pub fn set_line_stipple_enable_ext(
@@ -1071,14 +1060,14 @@ The caller upholds the rules that [`Self::set_line_stipple_enable_ext`] checks a
 
 # Valid usage
 
-The rules are on [`vkCmdSetLogicOpEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLogicOpEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetLogicOpEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetLogicOpEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetLogicOpEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetLogicOpEnableEXT-extendedDynamicState3LogicOpEnable-07365` (*yours*; explicit rule): The `extendedDynamicState3LogicOpEnable` feature must be enabled
+- `VUID-vkCmdSetLogicOpEnableEXT-logicOp-07366` (*yours*; explicit rule): If the `logicOp` feature is not enabled, `logicOpEnable` must be `VK_FALSE`
+- `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetLogicOpEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetLogicOpEnableEXT")]
     #[inline]
     pub fn set_logic_op_enable_ext(&mut self, logic_op_enable: bool) -> Result<()> {
@@ -1119,15 +1108,17 @@ The caller upholds the rules that [`Self::set_logic_op_enable_ext`] checks at ru
 
 # Valid usage
 
-The rules are on [`vkCmdSetPolygonModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPolygonModeEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetPolygonModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPolygonModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetPolygonModeEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPolygonModeEXT-polygonMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetPolygonModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPolygonModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPolygonModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetPolygonModeEXT-extendedDynamicState3PolygonMode-07422` (*yours*; explicit rule): The `extendedDynamicState3PolygonMode` feature must be enabled
+- `VUID-vkCmdSetPolygonModeEXT-fillModeNonSolid-07423` (*yours*; explicit rule): If the `fillModeNonSolid` feature is not enabled, `polygonMode` must be `VK_POLYGON_MODE_FILL`
+- `VUID-vkCmdSetPolygonModeEXT-fillModeNonSolid-07424` (*yours*; explicit rule): If the `fillModeNonSolid` feature is not enabled, `polygonMode` must be `VK_POLYGON_MODE_FILL` or `VK_POLYGON_MODE_FILL_RECTANGLE_NV`
+- `VUID-vkCmdSetPolygonModeEXT-polygonMode-07425` (*yours*; explicit rule): If the VK_NV_fill_rectangle extension is not enabled, `polygonMode` must not be `VK_POLYGON_MODE_FILL_RECTANGLE_NV`
+- `VUID-vkCmdSetPolygonModeEXT-polygonMode-parameter` (*checked*): `polygonMode` must be a valid VkPolygonMode value
+- `VUID-vkCmdSetPolygonModeEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetPolygonModeEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetPolygonModeEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetPolygonModeEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetPolygonModeEXT")]
     #[inline]
     pub fn set_polygon_mode_ext(&mut self, polygon_mode: vk::PolygonMode) -> Result<()> {
@@ -1167,15 +1158,15 @@ The caller upholds the rules that [`Self::set_polygon_mode_ext`] checks at run t
 
 # Valid usage
 
-The rules are on [`vkCmdSetProvokingVertexModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetProvokingVertexModeEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetProvokingVertexModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetProvokingVertexModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetProvokingVertexModeEXT-provokingVertexMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetProvokingVertexModeEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetProvokingVertexModeEXT-extendedDynamicState3ProvokingVertexMode-07446` (*yours*; explicit rule): The `extendedDynamicState3ProvokingVertexMode` feature must be enabled
+- `VUID-vkCmdSetProvokingVertexModeEXT-provokingVertexMode-07447` (*yours*; explicit rule): If `provokingVertexMode` is `VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT`, then the `provokingVertexLast` feature must be enabled
+- `VUID-vkCmdSetProvokingVertexModeEXT-provokingVertexMode-parameter` (*checked*): `provokingVertexMode` must be a valid VkProvokingVertexModeEXT value
+- `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetProvokingVertexModeEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetProvokingVertexModeEXT")]
     #[inline]
     pub fn set_provoking_vertex_mode_ext(
@@ -1218,15 +1209,14 @@ The caller upholds the rules that [`Self::set_provoking_vertex_mode_ext`] checks
 
 # Valid usage
 
-The rules are on [`vkCmdSetRasterizationSamplesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRasterizationSamplesEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetRasterizationSamplesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRasterizationSamplesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetRasterizationSamplesEXT-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetRasterizationSamplesEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetRasterizationSamplesEXT-extendedDynamicState3RasterizationSamples-07414` (*yours*; explicit rule): The `extendedDynamicState3RasterizationSamples` feature must be enabled
+- `VUID-vkCmdSetRasterizationSamplesEXT-rasterizationSamples-parameter` (*checked*): `rasterizationSamples` must be a valid VkSampleCountFlagBits value
+- `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetRasterizationSamplesEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetRasterizationSamplesEXT")]
     #[inline]
     pub fn set_rasterization_samples_ext(
@@ -1269,14 +1259,16 @@ The caller upholds the rules that [`Self::set_rasterization_samples_ext`] checks
 
 # Valid usage
 
-The rules are on [`vkCmdSetRasterizationStreamEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRasterizationStreamEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetRasterizationStreamEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRasterizationStreamEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetRasterizationStreamEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetRasterizationStreamEXT-extendedDynamicState3RasterizationStream-07410` (*yours*; explicit rule): The `extendedDynamicState3RasterizationStream` feature must be enabled
+- `VUID-vkCmdSetRasterizationStreamEXT-transformFeedback-07411` (*yours*; explicit rule): The `transformFeedback` feature must be enabled
+- `VUID-vkCmdSetRasterizationStreamEXT-rasterizationStream-07412` (*yours*; explicit rule): `rasterizationStream` must be less than VkPhysicalDeviceTransformFeedbackPropertiesEXT::`maxTransformFeedbackStreams`
+- `VUID-vkCmdSetRasterizationStreamEXT-rasterizationStream-07413` (*yours*; explicit rule): `rasterizationStream` must be zero if `VkPhysicalDeviceTransformFeedbackPropertiesEXT::transformFeedbackRasterizationStreamSelect` is `VK_FALSE`
+- `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetRasterizationStreamEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetRasterizationStreamEXT")]
     #[inline]
     pub fn set_rasterization_stream_ext(
@@ -1319,14 +1311,13 @@ The caller upholds the rules that [`Self::set_rasterization_stream_ext`] checks 
 
 # Valid usage
 
-The rules are on [`vkCmdSetRepresentativeFragmentTestEnableNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRepresentativeFragmentTestEnableNV.html). Settled by the wrappers:
+The rules of `vkCmdSetRepresentativeFragmentTestEnableNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRepresentativeFragmentTestEnableNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-extendedDynamicState3RepresentativeFragmentTestEnable-07346` (*yours*; explicit rule): The `extendedDynamicState3RepresentativeFragmentTestEnable` feature must be enabled
+- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetRepresentativeFragmentTestEnableNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetRepresentativeFragmentTestEnableNV")]
     #[inline]
     pub fn set_representative_fragment_test_enable_nv(
@@ -1376,14 +1367,13 @@ The caller upholds the rules that [`Self::set_representative_fragment_test_enabl
 
 # Valid usage
 
-The rules are on [`vkCmdSetSampleLocationsEnableEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetSampleLocationsEnableEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetSampleLocationsEnableEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetSampleLocationsEnableEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetSampleLocationsEnableEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetSampleLocationsEnableEXT-extendedDynamicState3SampleLocationsEnable-07415` (*yours*; explicit rule): The `extendedDynamicState3SampleLocationsEnable` feature must be enabled
+- `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetSampleLocationsEnableEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetSampleLocationsEnableEXT")]
     #[inline]
     pub fn set_sample_locations_enable_ext(
@@ -1433,18 +1423,15 @@ The caller upholds the rules that [`Self::set_sample_locations_enable_ext`] chec
 
 # Valid usage
 
-The rules are on [`vkCmdSetSampleMaskEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetSampleMaskEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetSampleMaskEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetSampleMaskEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetSampleMaskEXT-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetSampleMaskEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkCmdSetSampleMaskEXT-extendedDynamicState3SampleMask-07342` (*yours*; explicit rule): The `extendedDynamicState3SampleMask` feature must be enabled
+- `VUID-vkCmdSetSampleMaskEXT-pSampleMask-parameter` (*yours*; passed as ash's raw type): `pSampleMask` must be a valid pointer to an array of \(\lceil{\mathit{samples} \over 32}\rceil\) VkSampleMask values
+- `VUID-vkCmdSetSampleMaskEXT-samples-parameter` (*checked*): `samples` must be a valid VkSampleCountFlagBits value
+- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetSampleMaskEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetSampleMaskEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetSampleMaskEXT")]
     #[inline]
     pub unsafe fn set_sample_mask_ext(
@@ -1489,14 +1476,13 @@ The caller upholds the rules that [`Self::set_sample_mask_ext`] checks at run ti
 
 # Valid usage
 
-The rules are on [`vkCmdSetShadingRateImageEnableNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetShadingRateImageEnableNV.html). Settled by the wrappers:
+The rules of `vkCmdSetShadingRateImageEnableNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetShadingRateImageEnableNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetShadingRateImageEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetShadingRateImageEnableNV-extendedDynamicState3ShadingRateImageEnable-07416` (*yours*; explicit rule): The `extendedDynamicState3ShadingRateImageEnable` feature must be enabled
+- `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetShadingRateImageEnableNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetShadingRateImageEnableNV")]
     #[inline]
     pub fn set_shading_rate_image_enable_nv(
@@ -1542,15 +1528,14 @@ The caller upholds the rules that [`Self::set_shading_rate_image_enable_nv`] che
 
 # Valid usage
 
-The rules are on [`vkCmdSetTessellationDomainOriginEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetTessellationDomainOriginEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetTessellationDomainOriginEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetTessellationDomainOriginEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetTessellationDomainOriginEXT-domainOrigin-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetTessellationDomainOriginEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetTessellationDomainOriginEXT-extendedDynamicState3TessellationDomainOrigin-07444` (*yours*; explicit rule): The `extendedDynamicState3TessellationDomainOrigin` feature must be enabled
+- `VUID-vkCmdSetTessellationDomainOriginEXT-domainOrigin-parameter` (*checked*): `domainOrigin` must be a valid VkTessellationDomainOrigin value
+- `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetTessellationDomainOriginEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetTessellationDomainOriginEXT")]
     #[inline]
     pub fn set_tessellation_domain_origin_ext(
@@ -1593,16 +1578,15 @@ The caller upholds the rules that [`Self::set_tessellation_domain_origin_ext`] c
 
 # Valid usage
 
-The rules are on [`vkCmdSetViewportSwizzleNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportSwizzleNV.html). Settled by the wrappers:
+The rules of `vkCmdSetViewportSwizzleNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportSwizzleNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetViewportSwizzleNV-pViewportSwizzles-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetViewportSwizzleNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetViewportSwizzleNV-extendedDynamicState3ViewportSwizzle-07445` (*yours*; explicit rule): The `extendedDynamicState3ViewportSwizzle` feature must be enabled
+- `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength` (*checked*): `viewportCount` must be greater than `0`
+- `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetViewportSwizzleNV-pViewportSwizzles-parameter` (*by the types*): `pViewportSwizzles` must be a valid pointer to an array of `viewportCount` valid VkViewportSwizzleNV structures
+- `VUID-vkCmdSetViewportSwizzleNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetViewportSwizzleNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetViewportSwizzleNV")]
     #[inline]
     pub fn set_viewport_swizzle_nv(
@@ -1656,14 +1640,13 @@ The caller upholds the rules that [`Self::set_viewport_swizzle_nv`] checks at ru
 
 # Valid usage
 
-The rules are on [`vkCmdSetViewportWScalingEnableNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWScalingEnableNV.html). Settled by the wrappers:
+The rules of `vkCmdSetViewportWScalingEnableNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWScalingEnableNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetViewportWScalingEnableNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetViewportWScalingEnableNV-extendedDynamicState3ViewportWScalingEnable-07580` (*yours*; explicit rule): The `extendedDynamicState3ViewportWScalingEnable` feature must be enabled
+- `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetViewportWScalingEnableNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetViewportWScalingEnableNV")]
     #[inline]
     pub fn set_viewport_w_scaling_enable_nv(

@@ -12,13 +12,15 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetMemoryHostPointerPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryHostPointerPropertiesEXT.html). Settled by the wrappers:
+The rules of `vkGetMemoryHostPointerPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryHostPointerPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryHostPointerPropertiesEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryHostPointerPropertiesEXT-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetMemoryHostPointerPropertiesEXT-pMemoryHostPointerProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetMemoryHostPointerPropertiesEXT-handleType-01752` (*yours*; explicit rule): `handleType` must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT` or `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_MAPPED_FOREIGN_MEMORY_BIT_EXT`
+- `VUID-vkGetMemoryHostPointerPropertiesEXT-pHostPointer-01753` (*yours*; explicit rule): `pHostPointer` must be a pointer aligned to an integer multiple of `VkPhysicalDeviceExternalMemoryHostPropertiesEXT::minImportedHostPointerAlignment`
+- `VUID-vkGetMemoryHostPointerPropertiesEXT-handleType-01754` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT`, `pHostPointer` must be a pointer to host memory
+- `VUID-vkGetMemoryHostPointerPropertiesEXT-handleType-01755` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_MAPPED_FOREIGN_MEMORY_BIT_EXT`, `pHostPointer` must be a pointer to host mapped foreign memory
+- `VUID-vkGetMemoryHostPointerPropertiesEXT-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-vkGetMemoryHostPointerPropertiesEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryHostPointerPropertiesEXT-pMemoryHostPointerProperties-parameter` (*by the types*): `pMemoryHostPointerProperties` must be a valid pointer to a VkMemoryHostPointerPropertiesEXT structure*/
     #[doc(alias = "vkGetMemoryHostPointerPropertiesEXT")]
     #[inline]
     pub unsafe fn get_memory_host_pointer_properties_ext<'a>(

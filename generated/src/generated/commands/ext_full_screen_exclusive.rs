@@ -8,13 +8,14 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkAcquireFullScreenExclusiveModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireFullScreenExclusiveModeEXT.html). Settled by the wrappers:
+The rules of `vkAcquireFullScreenExclusiveModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireFullScreenExclusiveModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireFullScreenExclusiveModeEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-02674` (*yours*; explicit rule): `swapchain` must not be in the retired state
+- `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-02675` (*yours*; explicit rule): `swapchain` must be a swapchain created with a VkSurfaceFullScreenExclusiveInfoEXT structure, with `fullScreenExclusive` set to `VK_FULL_SCREEN_EXCLUSIVE_APPLICATION_CONTROLLED_EXT`
+- `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-02676` (*yours*; explicit rule): `swapchain` must not currently have exclusive full-screen access
+- `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkAcquireFullScreenExclusiveModeEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle*/
     #[doc(alias = "vkAcquireFullScreenExclusiveModeEXT")]
     #[inline]
     pub fn acquire_full_screen_exclusive_mode_ext(
@@ -56,13 +57,12 @@ The caller upholds the rules that [`Self::acquire_full_screen_exclusive_mode_ext
 
 # Valid usage
 
-The rules are on [`vkGetDeviceGroupSurfacePresentModes2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModes2EXT.html). Settled by the wrappers:
+The rules of `vkGetDeviceGroupSurfacePresentModes2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModes2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-pSurfaceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-pModes-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-pSurfaceInfo-06213` (*yours*; explicit rule): `pSurfaceInfo->surface` must be supported by all physical devices associated with `device`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-pSurfaceInfo-parameter` (*by the types*): `pSurfaceInfo` must be a valid pointer to a valid VkPhysicalDeviceSurfaceInfo2KHR structure
+- `VUID-vkGetDeviceGroupSurfacePresentModes2EXT-pModes-parameter` (*by the types*): `pModes` must be a valid pointer to a VkDeviceGroupPresentModeFlagsKHR value*/
     #[doc(alias = "vkGetDeviceGroupSurfacePresentModes2EXT")]
     #[inline]
     pub fn get_group_surface_present_modes2_ext<'a>(
@@ -111,13 +111,13 @@ The caller upholds the rules that [`Self::get_group_surface_present_modes2_ext`]
 
 # Valid usage
 
-The rules are on [`vkReleaseFullScreenExclusiveModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseFullScreenExclusiveModeEXT.html). Settled by the wrappers:
+The rules of `vkReleaseFullScreenExclusiveModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseFullScreenExclusiveModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkReleaseFullScreenExclusiveModeEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-02677` (*yours*; explicit rule): `swapchain` must not be in the retired state
+- `VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-02678` (*yours*; explicit rule): `swapchain` must be a swapchain created with a VkSurfaceFullScreenExclusiveInfoEXT structure, with `fullScreenExclusive` set to `VK_FULL_SCREEN_EXCLUSIVE_APPLICATION_CONTROLLED_EXT`
+- `VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-parent` (*checked*): `swapchain` must have been created, allocated or retrieved from `device`
+- `VUID-vkReleaseFullScreenExclusiveModeEXT-device-parameter` (*by the types*): `device` must be a valid `VkDevice` handle
+- `VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-parameter` (*by the types*): `swapchain` must be a valid `VkSwapchainKHR` handle*/
     #[doc(alias = "vkReleaseFullScreenExclusiveModeEXT")]
     #[inline]
     pub fn release_full_screen_exclusive_mode_ext(
@@ -162,14 +162,16 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfacePresentModes2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfacePresentModes2EXT.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfacePresentModes2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfacePresentModes2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pSurfaceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pPresentModeCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pPresentModes-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pSurfaceInfo-06521` (*yours*; explicit rule): If the VK_GOOGLE_surfaceless_query extension is not enabled, `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pSurfaceInfo-06522` (*yours*; explicit rule): If `pSurfaceInfo->surface` is not VK_NULL_HANDLE, it must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pSurfaceInfo-06520` (*yours*; explicit rule): `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pSurfaceInfo-06210` (*yours*; explicit rule): `pSurfaceInfo->surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pSurfaceInfo-parameter` (*by the types*): `pSurfaceInfo` must be a valid pointer to a valid VkPhysicalDeviceSurfaceInfo2KHR structure
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pPresentModeCount-parameter` (*by the types*): `pPresentModeCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceSurfacePresentModes2EXT-pPresentModes-parameter` (*by the types*): If the value referenced by `pPresentModeCount` is not `0`, and `pPresentModes` is not `NULL`, `pPresentModes` must be a valid pointer to an array of `pPresentModeCount` VkPresentModeKHR values*/
     #[doc(alias = "vkGetPhysicalDeviceSurfacePresentModes2EXT")]
     #[inline]
     pub fn get_surface_present_modes2_ext<'a>(

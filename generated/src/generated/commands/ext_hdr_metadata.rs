@@ -8,13 +8,13 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkSetHdrMetadataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetHdrMetadataEXT.html). Settled by the wrappers:
+The rules of `vkSetHdrMetadataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetHdrMetadataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetHdrMetadataEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetHdrMetadataEXT-pSwapchains-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetHdrMetadataEXT-pMetadata-parameter`: dynamic (checks, in every build, that the slice is as long as `swapchains`)
-- `VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkSetHdrMetadataEXT-pSwapchains-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkSetHdrMetadataEXT-pMetadata-parameter` (*checked*): `pMetadata` must be a valid pointer to an array of `swapchainCount` valid VkHdrMetadataEXT structures
+- `VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-vkSetHdrMetadataEXT-pSwapchains-parent` (*checked*): Each element of `pSwapchains` must have been created, allocated, or retrieved from `device`
+- `VUID-vkSetHdrMetadataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetHdrMetadataEXT-pSwapchains-parameter` (*by the types*): `pSwapchains` must be a valid pointer to an array of `swapchainCount` valid VkSwapchainKHR handles*/
     #[doc(alias = "vkSetHdrMetadataEXT")]
     #[inline]
     pub fn set_hdr_metadata_ext<'a>(

@@ -8,12 +8,12 @@ impl Instance {
 
 # Valid usage
 
-The rules are on [`vkCreateHeadlessSurfaceEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateHeadlessSurfaceEXT.html). Settled by the wrappers:
+The rules of `vkCreateHeadlessSurfaceEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateHeadlessSurfaceEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateHeadlessSurfaceEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateHeadlessSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateHeadlessSurfaceEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateHeadlessSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateHeadlessSurfaceEXT-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateHeadlessSurfaceEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkHeadlessSurfaceCreateInfoEXT structure
+- `VUID-vkCreateHeadlessSurfaceEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateHeadlessSurfaceEXT-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateHeadlessSurfaceEXT")]
     #[inline]
     pub fn create_headless_surface_ext<'a>(

@@ -8,15 +8,24 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetImageSubresourceLayout2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout2EXT.html). Settled by the wrappers:
+The rules of `vkGetImageSubresourceLayout2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageSubresourceLayout2EXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageSubresourceLayout2EXT-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageSubresourceLayout2EXT-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageSubresourceLayout2EXT-pLayout-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageSubresourceLayout2EXT-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetImageSubresourceLayout2EXT-aspectMask-00997` (*yours*; explicit rule): The `aspectMask` member of `pSubresource` must only have a single bit set
+- `VUID-vkGetImageSubresourceLayout2EXT-mipLevel-01716` (*yours*; explicit rule): The `mipLevel` member of `pSubresource` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout2EXT-arrayLayer-01717` (*yours*; explicit rule): The `arrayLayer` member of `pSubresource` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout2EXT-format-04461` (*yours*; explicit rule): If `format` is a color format, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-vkGetImageSubresourceLayout2EXT-format-04462` (*yours*; explicit rule): If `format` has a depth component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_DEPTH_BIT`
+- `VUID-vkGetImageSubresourceLayout2EXT-format-04463` (*yours*; explicit rule): If `format` has a stencil component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkGetImageSubresourceLayout2EXT-format-04464` (*yours*; explicit rule): If `format` does not contain a stencil or depth component, the `aspectMask` member of `pSubresource` must not contain `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkGetImageSubresourceLayout2EXT-format-01581` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with two planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or …
+- `VUID-vkGetImageSubresourceLayout2EXT-format-01582` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with three planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, …
+- `VUID-vkGetImageSubresourceLayout2EXT-image-01895` (*yours*; explicit rule): If `image` was created with the `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` external memory handle type, then `image` must be bound to memory
+- `VUID-vkGetImageSubresourceLayout2EXT-tiling-02271` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`, then the `aspectMask` member of `pSubresource` must be VK_IMAGE_ASPECT_MEMORY_PLANE{ibit}BIT_EXT and the index i must be …
+- `VUID-vkGetImageSubresourceLayout2EXT-image-parent` (*checked*): `image` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetImageSubresourceLayout2EXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageSubresourceLayout2EXT-image-parameter` (*by the types*): `image` must be a valid VkImage handle
+- `VUID-vkGetImageSubresourceLayout2EXT-pSubresource-parameter` (*by the types*): `pSubresource` must be a valid pointer to a valid VkImageSubresource2EXT structure
+- `VUID-vkGetImageSubresourceLayout2EXT-pLayout-parameter` (*by the types*): `pLayout` must be a valid pointer to a VkSubresourceLayout2EXT structure*/
     #[doc(alias = "vkGetImageSubresourceLayout2EXT")]
     #[inline]
     pub fn get_image_subresource_layout2_ext<'a>(

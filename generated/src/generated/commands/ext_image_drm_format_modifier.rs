@@ -8,14 +8,13 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetImageDrmFormatModifierPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageDrmFormatModifierPropertiesEXT.html). Settled by the wrappers:
+The rules of `vkGetImageDrmFormatModifierPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageDrmFormatModifierPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-02272` (*yours*; explicit rule): `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`
+- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-parent` (*checked*): `image` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-parameter` (*by the types*): `image` must be a valid VkImage handle
+- `VUID-vkGetImageDrmFormatModifierPropertiesEXT-pProperties-parameter` (*by the types*): `pProperties` must be a valid pointer to a VkImageDrmFormatModifierPropertiesEXT structure*/
     #[doc(alias = "vkGetImageDrmFormatModifierPropertiesEXT")]
     #[inline]
     pub fn get_image_drm_format_modifier_properties_ext<'a>(

@@ -8,10 +8,10 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkExportMetalObjectsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkExportMetalObjectsEXT.html). Settled by the wrappers:
+The rules of `vkExportMetalObjectsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkExportMetalObjectsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkExportMetalObjectsEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkExportMetalObjectsEXT-pMetalObjectsInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkExportMetalObjectsEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkExportMetalObjectsEXT-pMetalObjectsInfo-parameter` (*by the types*): `pMetalObjectsInfo` must be a valid pointer to a VkExportMetalObjectsInfoEXT structure*/
     #[doc(alias = "vkExportMetalObjectsEXT")]
     #[inline]
     pub fn export_metal_objects_ext<'a>(

@@ -8,12 +8,12 @@ impl Instance {
 
 # Valid usage
 
-The rules are on [`vkCreateMetalSurfaceEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateMetalSurfaceEXT.html). Settled by the wrappers:
+The rules of `vkCreateMetalSurfaceEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateMetalSurfaceEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateMetalSurfaceEXT-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateMetalSurfaceEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateMetalSurfaceEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateMetalSurfaceEXT-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateMetalSurfaceEXT-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateMetalSurfaceEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkMetalSurfaceCreateInfoEXT structure
+- `VUID-vkCreateMetalSurfaceEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateMetalSurfaceEXT-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateMetalSurfaceEXT")]
     #[inline]
     pub fn create_metal_surface_ext<'a>(

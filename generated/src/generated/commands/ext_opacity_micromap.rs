@@ -32,15 +32,26 @@ The caller upholds these 19 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkBuildMicromapsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBuildMicromapsEXT.html). Settled by the wrappers:
+The rules of `vkBuildMicromapsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBuildMicromapsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBuildMicromapsEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBuildMicromapsEXT-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBuildMicromapsEXT-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBuildMicromapsEXT-infoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkBuildMicromapsEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkBuildMicromapsEXT-pInfos-07461` (*yours*; explicit rule): For each `pInfos`\[i\], `dstMicromap` must have been created with a value of VkMicromapCreateInfoEXT::`size` greater than or equal to the memory size required by the build operation, as returned by …
+- `VUID-vkBuildMicromapsEXT-mode-07462` (*yours*; explicit rule): The `mode` member of each element of `pInfos` must be a valid VkBuildMicromapModeEXT value
+- `VUID-vkBuildMicromapsEXT-dstMicromap-07463` (*yours*; explicit rule): The `dstMicromap` member of any element of `pInfos` must be a valid VkMicromapEXT handle
+- `VUID-vkBuildMicromapsEXT-pInfos-07464` (*yours*; explicit rule): For each element of `pInfos` its `type` member must match the value of VkMicromapCreateInfoEXT::`type` when its `dstMicromap` was created
+- `VUID-vkBuildMicromapsEXT-dstMicromap-07465` (*yours*; explicit rule): The range of memory backing the `dstMicromap` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `dstMicromap` member of any other element of …
+- `VUID-vkBuildMicromapsEXT-dstMicromap-07466` (*yours*; explicit rule): The range of memory backing the `dstMicromap` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any element of `pInfos` …
+- `VUID-vkBuildMicromapsEXT-scratchData-07467` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any other element of …
+- `VUID-vkBuildMicromapsEXT-pInfos-07552` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstMicromap` member must be bound to host-visible device memory
+- `VUID-vkBuildMicromapsEXT-pInfos-07553` (*yours*; explicit rule): For each element of `pInfos`, all referenced addresses of `pInfos`\[i\].`data.hostAddress` must be valid host memory
+- `VUID-vkBuildMicromapsEXT-pInfos-07554` (*yours*; explicit rule): For each element of `pInfos`, all referenced addresses of `pInfos`\[i\].`triangleArray.hostAddress` must be valid host memory
+- `VUID-vkBuildMicromapsEXT-micromapHostCommands-07555` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
+- `VUID-vkBuildMicromapsEXT-pInfos-07556` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_MICROMAP_MODE_BUILD_EXT`, all addresses between `pInfos`\[i\].`scratchData.hostAddress` and `pInfos`\[i\].`scratchData.hostAddress` + N - 1 must be valid host memory, …
+- `VUID-vkBuildMicromapsEXT-pInfos-07557` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstMicromap` member must be bound to memory that was not allocated with multiple instances
+- `VUID-vkBuildMicromapsEXT-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
+- `VUID-vkBuildMicromapsEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkBuildMicromapsEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBuildMicromapsEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkBuildMicromapsEXT-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkMicromapBuildInfoEXT structures*/
     #[doc(alias = "vkBuildMicromapsEXT")]
     #[inline]
     pub unsafe fn build_micromaps_ext<'a>(
@@ -107,14 +118,19 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCopyMemoryToMicromapEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToMicromapEXT.html). Settled by the wrappers:
+The rules of `vkCopyMemoryToMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMemoryToMicromapEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyMemoryToMicromapEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkCopyMemoryToMicromapEXT-pInfo-07563` (*yours*; explicit rule): `pInfo->src.hostAddress` must be a valid host pointer
+- `VUID-vkCopyMemoryToMicromapEXT-pInfo-07564` (*yours*; explicit rule): `pInfo->src.hostAddress` must be aligned to 16 bytes
+- `VUID-vkCopyMemoryToMicromapEXT-buffer-07565` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
+- `VUID-vkCopyMemoryToMicromapEXT-micromapHostCommands-07566` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
+- `VUID-vkCopyMemoryToMicromapEXT-buffer-07567` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMemoryToMicromapEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkCopyMemoryToMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToMicromapInfoEXT structure*/
     #[doc(alias = "vkCopyMemoryToMicromapEXT")]
     #[inline]
     pub unsafe fn copy_memory_to_micromap_ext<'a>(
@@ -181,14 +197,19 @@ The caller upholds these 11 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCopyMicromapEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMicromapEXT.html). Settled by the wrappers:
+The rules of `vkCopyMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMicromapEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyMicromapEXT-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyMicromapEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyMicromapEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCopyMicromapEXT-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMicromapEXT-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkCopyMicromapEXT-buffer-07558` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
+- `VUID-vkCopyMicromapEXT-buffer-07559` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
+- `VUID-vkCopyMicromapEXT-micromapHostCommands-07560` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
+- `VUID-vkCopyMicromapEXT-buffer-07561` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyMicromapEXT-buffer-07562` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyMicromapEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMicromapEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCopyMicromapEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkCopyMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapInfoEXT structure*/
     #[doc(alias = "vkCopyMicromapEXT")]
     #[inline]
     pub unsafe fn copy_micromap_ext<'a>(
@@ -253,14 +274,19 @@ The caller upholds these 9 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCopyMicromapToMemoryEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMicromapToMemoryEXT.html). Settled by the wrappers:
+The rules of `vkCopyMicromapToMemoryEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMicromapToMemoryEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMicromapToMemoryEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyMicromapToMemoryEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkCopyMicromapToMemoryEXT-buffer-07568` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
+- `VUID-vkCopyMicromapToMemoryEXT-pInfo-07569` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be a valid host pointer
+- `VUID-vkCopyMicromapToMemoryEXT-pInfo-07570` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be aligned to 16 bytes
+- `VUID-vkCopyMicromapToMemoryEXT-micromapHostCommands-07571` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
+- `VUID-vkCopyMicromapToMemoryEXT-buffer-07572` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMicromapToMemoryEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkCopyMicromapToMemoryEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapToMemoryInfoEXT structure*/
     #[doc(alias = "vkCopyMicromapToMemoryEXT")]
     #[inline]
     pub unsafe fn copy_micromap_to_memory_ext<'a>(
@@ -324,14 +350,15 @@ The caller upholds these 8 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateMicromapEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateMicromapEXT.html). Settled by the wrappers:
+The rules of `vkCreateMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateMicromapEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateMicromapEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateMicromapEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateMicromapEXT-pMicromap-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateMicromapEXT-micromap-07430` (*yours*; explicit rule): The `micromap` feature must be enabled
+- `VUID-vkCreateMicromapEXT-deviceAddress-07431` (*yours*; explicit rule): If VkMicromapCreateInfoEXT::`deviceAddress` is not zero, the `micromapCaptureReplay` feature must be enabled
+- `VUID-vkCreateMicromapEXT-device-07432` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkCreateMicromapEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateMicromapEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkMicromapCreateInfoEXT structure
+- `VUID-vkCreateMicromapEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateMicromapEXT-pMicromap-parameter` (*by the types*): `pMicromap` must be a valid pointer to a VkMicromapEXT handle*/
     #[doc(alias = "vkCreateMicromapEXT")]
     #[inline]
     pub unsafe fn create_micromap_ext<'a>(
@@ -409,13 +436,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetDeviceMicromapCompatibilityEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMicromapCompatibilityEXT.html). Settled by the wrappers:
+The rules of `vkGetDeviceMicromapCompatibilityEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMicromapCompatibilityEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceMicromapCompatibilityEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceMicromapCompatibilityEXT-pVersionInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceMicromapCompatibilityEXT-pCompatibility-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDeviceMicromapCompatibilityEXT-micromap-07551` (*yours*; explicit rule): The `micromap` feature must be enabled
+- `VUID-vkGetDeviceMicromapCompatibilityEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceMicromapCompatibilityEXT-pVersionInfo-parameter` (*by the types*): `pVersionInfo` must be a valid pointer to a valid VkMicromapVersionInfoEXT structure
+- `VUID-vkGetDeviceMicromapCompatibilityEXT-pCompatibility-parameter` (*by the types*): `pCompatibility` must be a valid pointer to a VkAccelerationStructureCompatibilityKHR value*/
     #[doc(alias = "vkGetDeviceMicromapCompatibilityEXT")]
     #[inline]
     pub unsafe fn get_micromap_compatibility_ext<'a>(
@@ -458,14 +484,14 @@ The caller upholds these 8 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetMicromapBuildSizesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMicromapBuildSizesEXT.html). Settled by the wrappers:
+The rules of `vkGetMicromapBuildSizesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMicromapBuildSizesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMicromapBuildSizesEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMicromapBuildSizesEXT-buildType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetMicromapBuildSizesEXT-pBuildInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetMicromapBuildSizesEXT-pSizeInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetMicromapBuildSizesEXT-micromap-07439` (*yours*; explicit rule): The `micromap` feature must be enabled
+- `VUID-vkGetMicromapBuildSizesEXT-device-07440` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetMicromapBuildSizesEXT-buildType-parameter` (*checked*): `buildType` must be a valid VkAccelerationStructureBuildTypeKHR value
+- `VUID-vkGetMicromapBuildSizesEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMicromapBuildSizesEXT-pBuildInfo-parameter` (*by the types*): `pBuildInfo` must be a valid pointer to a valid VkMicromapBuildInfoEXT structure
+- `VUID-vkGetMicromapBuildSizesEXT-pSizeInfo-parameter` (*by the types*): `pSizeInfo` must be a valid pointer to a VkMicromapBuildSizesInfoEXT structure*/
     #[doc(alias = "vkGetMicromapBuildSizesEXT")]
     #[inline]
     pub unsafe fn get_micromap_build_sizes_ext<'a>(
@@ -537,20 +563,25 @@ The caller upholds these 9 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkWriteMicromapsPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWriteMicromapsPropertiesEXT.html). Settled by the wrappers:
+The rules of `vkWriteMicromapsPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWriteMicromapsPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkWriteMicromapsPropertiesEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkWriteMicromapsPropertiesEXT-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkWriteMicromapsPropertiesEXT-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkWriteMicromapsPropertiesEXT-micromapCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 9: explicit rule; the wrappers do not check it*/
+- `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-07501` (*yours*; explicit rule): All micromaps in `pMicromaps` must have been constructed prior to the execution of this command
+- `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-07502` (*yours*; explicit rule): All micromaps in `pMicromaps` must have been constructed with `VK_BUILD_MICROMAP_ALLOW_COMPACTION_BIT_EXT` if `queryType` is `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT`
+- `VUID-vkWriteMicromapsPropertiesEXT-queryType-07503` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `queryType` must be `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT` or `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT`
+- `VUID-vkWriteMicromapsPropertiesEXT-queryType-07573` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT`, then `stride` must be a multiple of the size of VkDeviceSize
+- `VUID-vkWriteMicromapsPropertiesEXT-queryType-07574` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT`, then `pData` must point to a VkDeviceSize
+- `VUID-vkWriteMicromapsPropertiesEXT-queryType-07575` (*yours*; explicit rule): If `queryType` is
+- `VUID-vkWriteMicromapsPropertiesEXT-dataSize-07576` (*yours*; explicit rule): `dataSize` must be greater than or equal to `micromapCount`*`stride`
+- `VUID-vkWriteMicromapsPropertiesEXT-buffer-07577` (*yours*; explicit rule): The `buffer` used to create each micromap in `pMicromaps` must be bound to host-visible device memory
+- `VUID-vkWriteMicromapsPropertiesEXT-micromapHostCommands-07578` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
+- `VUID-vkWriteMicromapsPropertiesEXT-buffer-07579` (*yours*; explicit rule): The `buffer` used to create each micromap in `pMicromaps` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkWriteMicromapsPropertiesEXT-queryType-parameter` (*checked*): `queryType` must be a valid VkQueryType value
+- `VUID-vkWriteMicromapsPropertiesEXT-micromapCount-arraylength` (*checked*): `micromapCount` must be greater than `0`
+- `VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent` (*checked*): Each element of `pMicromaps` must have been created, allocated, or retrieved from `device`
+- `VUID-vkWriteMicromapsPropertiesEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parameter` (*by the types*): `pMicromaps` must be a valid pointer to an array of `micromapCount` valid VkMicromapEXT handles
+- `VUID-vkWriteMicromapsPropertiesEXT-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkWriteMicromapsPropertiesEXT")]
     #[inline]
     pub unsafe fn write_micromaps_properties_ext(
@@ -649,17 +680,30 @@ The caller upholds these 21 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCmdBuildMicromapsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildMicromapsEXT.html). Settled by the wrappers:
+The rules of `vkCmdBuildMicromapsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildMicromapsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBuildMicromapsEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBuildMicromapsEXT-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBuildMicromapsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBuildMicromapsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBuildMicromapsEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBuildMicromapsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07461` (*yours*; explicit rule): For each `pInfos`\[i\], `dstMicromap` must have been created with a value of VkMicromapCreateInfoEXT::`size` greater than or equal to the memory size required by the build operation, as returned by …
+- `VUID-vkCmdBuildMicromapsEXT-mode-07462` (*yours*; explicit rule): The `mode` member of each element of `pInfos` must be a valid VkBuildMicromapModeEXT value
+- `VUID-vkCmdBuildMicromapsEXT-dstMicromap-07463` (*yours*; explicit rule): The `dstMicromap` member of any element of `pInfos` must be a valid VkMicromapEXT handle
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07464` (*yours*; explicit rule): For each element of `pInfos` its `type` member must match the value of VkMicromapCreateInfoEXT::`type` when its `dstMicromap` was created
+- `VUID-vkCmdBuildMicromapsEXT-dstMicromap-07465` (*yours*; explicit rule): The range of memory backing the `dstMicromap` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `dstMicromap` member of any other element of …
+- `VUID-vkCmdBuildMicromapsEXT-dstMicromap-07466` (*yours*; explicit rule): The range of memory backing the `dstMicromap` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any element of `pInfos` …
+- `VUID-vkCmdBuildMicromapsEXT-scratchData-07467` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any other element of …
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07508` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstMicromap` member must be bound to device memory
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07509` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_MICROMAP_MODE_BUILD_EXT`, all addresses between `pInfos`\[i\].`scratchData.deviceAddress` and `pInfos`\[i\].`scratchData.deviceAddress` + N - 1 must be in the buffer …
+- `VUID-vkCmdBuildMicromapsEXT-data-07510` (*yours*; explicit rule): The buffers from which the buffer device addresses for all of the `data` and `triangleArray` members of all `pInfos`\[i\] are queried must have been created with the …
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07511` (*yours*; explicit rule): For each element of `pInfos`\[i\] the buffer from which the buffer device address `pInfos`\[i\].`scratchData.deviceAddress` is queried must have been created with `VK_BUFFER_USAGE_STORAGE_BUFFER_BIT` …
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07512` (*yours*; explicit rule): For each element of `pInfos`, its `scratchData.deviceAddress`, `data.deviceAddress`, and `triangleArray.deviceAddress` members must be valid device addresses obtained from vkGetBufferDeviceAddress
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07513` (*yours*; explicit rule): For each element of `pInfos`, if `scratchData.deviceAddress`, `data.deviceAddress`, or `triangleArray.deviceAddress` is the address of a non-sparse buffer then it must be bound completely and …
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07514` (*yours*; explicit rule): For each element of `pInfos`, its `scratchData.deviceAddress` member must be a multiple of VkPhysicalDeviceAccelerationStructurePropertiesKHR::`minAccelerationStructureScratchOffsetAlignment`
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-07515` (*yours*; explicit rule): For each element of `pInfos`, its `triangleArray.deviceAddress` and `data.deviceAddress` members must be a multiple of `256`
+- `VUID-vkCmdBuildMicromapsEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
+- `VUID-vkCmdBuildMicromapsEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBuildMicromapsEXT-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkMicromapBuildInfoEXT structures
+- `VUID-vkCmdBuildMicromapsEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBuildMicromapsEXT-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdBuildMicromapsEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBuildMicromapsEXT")]
     #[inline]
     pub unsafe fn build_micromaps_ext<'a>(
@@ -732,16 +776,18 @@ The caller upholds these 7 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdCopyMemoryToMicromapEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryToMicromapEXT.html). Settled by the wrappers:
+The rules of `vkCmdCopyMemoryToMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryToMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyMemoryToMicromapEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyMemoryToMicromapEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyMemoryToMicromapEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyMemoryToMicromapEXT-pInfo-07543` (*yours*; explicit rule): `pInfo->src.deviceAddress` must be a valid device address for a buffer bound to device memory
+- `VUID-vkCmdCopyMemoryToMicromapEXT-pInfo-07544` (*yours*; explicit rule): `pInfo->src.deviceAddress` must be aligned to `256` bytes
+- `VUID-vkCmdCopyMemoryToMicromapEXT-pInfo-07545` (*yours*; explicit rule): If the buffer pointed to by `pInfo->src.deviceAddress` is non-sparse then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdCopyMemoryToMicromapEXT-buffer-07546` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to device memory
+- `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyMemoryToMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToMicromapInfoEXT structure
+- `VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyMemoryToMicromapEXT-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyMemoryToMicromapEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyMemoryToMicromapEXT")]
     #[inline]
     pub unsafe fn copy_memory_to_micromap_ext<'a>(
@@ -818,16 +864,16 @@ The caller upholds these 6 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdCopyMicromapEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMicromapEXT.html). Settled by the wrappers:
+The rules of `vkCmdCopyMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyMicromapEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyMicromapEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyMicromapEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyMicromapEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyMicromapEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyMicromapEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyMicromapEXT-buffer-07529` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to device memory
+- `VUID-vkCmdCopyMicromapEXT-buffer-07530` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to device memory
+- `VUID-vkCmdCopyMicromapEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdCopyMicromapEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapInfoEXT structure
+- `VUID-vkCmdCopyMicromapEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyMicromapEXT-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyMicromapEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyMicromapEXT")]
     #[inline]
     pub unsafe fn copy_micromap_ext<'a>(
@@ -897,16 +943,18 @@ The caller upholds these 6 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdCopyMicromapToMemoryEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMicromapToMemoryEXT.html). Settled by the wrappers:
+The rules of `vkCmdCopyMicromapToMemoryEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMicromapToMemoryEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyMicromapToMemoryEXT-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyMicromapToMemoryEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyMicromapToMemoryEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyMicromapToMemoryEXT-pInfo-07536` (*yours*; explicit rule): `pInfo->dst.deviceAddress` must be a valid device address for a buffer bound to device memory
+- `VUID-vkCmdCopyMicromapToMemoryEXT-pInfo-07537` (*yours*; explicit rule): `pInfo->dst.deviceAddress` must be aligned to `256` bytes
+- `VUID-vkCmdCopyMicromapToMemoryEXT-pInfo-07538` (*yours*; explicit rule): If the buffer pointed to by `pInfo->dst.deviceAddress` is non-sparse then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdCopyMicromapToMemoryEXT-buffer-07539` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to device memory
+- `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyMicromapToMemoryEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapToMemoryInfoEXT structure
+- `VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyMicromapToMemoryEXT-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyMicromapToMemoryEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyMicromapToMemoryEXT")]
     #[inline]
     pub unsafe fn copy_micromap_to_memory_ext<'a>(
@@ -983,23 +1031,25 @@ The caller upholds these 6 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdWriteMicromapsPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteMicromapsPropertiesEXT.html). Settled by the wrappers:
+The rules of `vkCmdWriteMicromapsPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteMicromapsPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-pMicromaps-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 6: explicit rule; the wrappers do not check it*/
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-queryPool-07525` (*yours*; explicit rule): `queryPool` must have been created with a `queryType` matching `queryType`
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-queryPool-07526` (*yours*; explicit rule): The queries identified by `queryPool` and `firstQuery` must be unavailable
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-buffer-07527` (*yours*; explicit rule): The `buffer` used to create each micromap in `pMicrmaps` must be bound to device memory
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-query-07528` (*yours*; explicit rule): The sum of `query` plus `micromapCount` must be less than or equal to the number of queries in `queryPool`
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-pMicromaps-07501` (*yours*; explicit rule): All micromaps in `pMicromaps` must have been constructed prior to the execution of this command
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-pMicromaps-07502` (*yours*; explicit rule): All micromaps in `pMicromaps` must have been constructed with `VK_BUILD_MICROMAP_ALLOW_COMPACTION_BIT_EXT` if `queryType` is `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT`
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `queryType` must be `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT` or `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT`
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-parameter` (*checked*): `queryType` must be a valid VkQueryType value
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength` (*checked*): `micromapCount` must be greater than `0`
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent` (*checked*): Each of `commandBuffer`, `queryPool`, and the elements of `pMicromaps` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-pMicromaps-parameter` (*by the types*): `pMicromaps` must be a valid pointer to an array of `micromapCount` valid VkMicromapEXT handles
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdWriteMicromapsPropertiesEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteMicromapsPropertiesEXT")]
     #[inline]
     pub unsafe fn write_micromaps_properties_ext(

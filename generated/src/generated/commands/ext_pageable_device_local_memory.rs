@@ -8,13 +8,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkSetDeviceMemoryPriorityEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDeviceMemoryPriorityEXT.html). Settled by the wrappers:
+The rules of `vkSetDeviceMemoryPriorityEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetDeviceMemoryPriorityEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetDeviceMemoryPriorityEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetDeviceMemoryPriorityEXT-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetDeviceMemoryPriorityEXT-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-vkSetDeviceMemoryPriorityEXT-priority-06258` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `priority` must be between `0` and `1`, inclusive
+- `VUID-vkSetDeviceMemoryPriorityEXT-memory-parent` (*checked*): `memory` must have been created, allocated, or retrieved from `device`
+- `VUID-vkSetDeviceMemoryPriorityEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetDeviceMemoryPriorityEXT-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
     #[doc(alias = "vkSetDeviceMemoryPriorityEXT")]
     #[inline]
     pub fn set_device_memory_priority_ext(

@@ -16,12 +16,13 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetPipelinePropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelinePropertiesEXT.html). Settled by the wrappers:
+The rules of `vkGetPipelinePropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelinePropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPipelinePropertiesEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPipelinePropertiesEXT-pPipelineInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPipelinePropertiesEXT-pipeline-06738` (*yours*; explicit rule): The `pipeline` member of `pPipelineInfo` must have been created with `device`
+- `VUID-vkGetPipelinePropertiesEXT-pPipelineProperties-06739` (*yours*; explicit rule): `pPipelineProperties` must be a valid pointer to a VkPipelinePropertiesIdentifierEXT structure
+- `VUID-vkGetPipelinePropertiesEXT-None-06766` (*yours*; explicit rule): The `pipelinePropertiesIdentifier` feature must be enabled
+- `VUID-vkGetPipelinePropertiesEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPipelinePropertiesEXT-pPipelineInfo-parameter` (*by the types*): `pPipelineInfo` must be a valid pointer to a valid VkPipelineInfoEXT structure*/
     #[doc(alias = "vkGetPipelinePropertiesEXT")]
     #[inline]
     pub unsafe fn get_pipeline_properties_ext<'a>(

@@ -8,15 +8,15 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetSampleLocationsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetSampleLocationsEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetSampleLocationsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetSampleLocationsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetSampleLocationsEXT-pSampleLocationsInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetSampleLocationsEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetSampleLocationsEXT-sampleLocationsPerPixel-01529` (*yours*; explicit rule): The `sampleLocationsPerPixel` member of `pSampleLocationsInfo` must equal the `rasterizationSamples` member of the VkPipelineMultisampleStateCreateInfo structure the bound graphics pipeline has been …
+- `VUID-vkCmdSetSampleLocationsEXT-variableSampleLocations-01530` (*yours*; explicit rule): If VkPhysicalDeviceSampleLocationsPropertiesEXT::`variableSampleLocations` is `VK_FALSE` then the current render pass must have been begun by specifying a VkRenderPassSampleLocationsBeginInfoEXT …
+- `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetSampleLocationsEXT-pSampleLocationsInfo-parameter` (*by the types*): `pSampleLocationsInfo` must be a valid pointer to a valid VkSampleLocationsInfoEXT structure
+- `VUID-vkCmdSetSampleLocationsEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetSampleLocationsEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetSampleLocationsEXT")]
     #[inline]
     pub fn set_sample_locations_ext<'a>(
@@ -68,11 +68,11 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceMultisamplePropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMultisamplePropertiesEXT.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceMultisamplePropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMultisamplePropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-pMultisampleProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-samples-parameter` (*checked*): `samples` must be a valid VkSampleCountFlagBits value
+- `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceMultisamplePropertiesEXT-pMultisampleProperties-parameter` (*by the types*): `pMultisampleProperties` must be a valid pointer to a VkMultisamplePropertiesEXT structure*/
     #[doc(alias = "vkGetPhysicalDeviceMultisamplePropertiesEXT")]
     #[inline]
     pub fn get_multisample_properties_ext<'a>(

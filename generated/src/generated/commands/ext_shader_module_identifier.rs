@@ -25,13 +25,12 @@ The caller upholds these 12 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkGetShaderModuleCreateInfoIdentifierEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetShaderModuleCreateInfoIdentifierEXT.html). Settled by the wrappers:
+The rules of `vkGetShaderModuleCreateInfoIdentifierEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetShaderModuleCreateInfoIdentifierEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-pIdentifier-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-shaderModuleIdentifier-06885` (*yours*; explicit rule): `shaderModuleIdentifier` feature must be enabled
+- `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkShaderModuleCreateInfo structure
+- `VUID-vkGetShaderModuleCreateInfoIdentifierEXT-pIdentifier-parameter` (*by the types*): `pIdentifier` must be a valid pointer to a VkShaderModuleIdentifierEXT structure*/
     #[doc(alias = "vkGetShaderModuleCreateInfoIdentifierEXT")]
     #[inline]
     pub unsafe fn get_shader_module_create_info_identifier_ext<'a>(
@@ -86,14 +85,13 @@ The caller upholds the rules that [`Self::get_shader_module_create_info_identifi
 
 # Valid usage
 
-The rules are on [`vkGetShaderModuleIdentifierEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetShaderModuleIdentifierEXT.html). Settled by the wrappers:
+The rules of `vkGetShaderModuleIdentifierEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetShaderModuleIdentifierEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetShaderModuleIdentifierEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetShaderModuleIdentifierEXT-shaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetShaderModuleIdentifierEXT-pIdentifier-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetShaderModuleIdentifierEXT-shaderModule-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetShaderModuleIdentifierEXT-shaderModuleIdentifier-06884` (*yours*; explicit rule): `shaderModuleIdentifier` feature must be enabled
+- `VUID-vkGetShaderModuleIdentifierEXT-shaderModule-parent` (*checked*): `shaderModule` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetShaderModuleIdentifierEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetShaderModuleIdentifierEXT-shaderModule-parameter` (*by the types*): `shaderModule` must be a valid VkShaderModule handle
+- `VUID-vkGetShaderModuleIdentifierEXT-pIdentifier-parameter` (*by the types*): `pIdentifier` must be a valid pointer to a VkShaderModuleIdentifierEXT structure*/
     #[doc(alias = "vkGetShaderModuleIdentifierEXT")]
     #[inline]
     pub fn get_shader_module_identifier_ext<'a>(

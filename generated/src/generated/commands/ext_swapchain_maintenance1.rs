@@ -8,10 +8,10 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkReleaseSwapchainImagesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseSwapchainImagesEXT.html). Settled by the wrappers:
+The rules of `vkReleaseSwapchainImagesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseSwapchainImagesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkReleaseSwapchainImagesEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkReleaseSwapchainImagesEXT-pReleaseInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkReleaseSwapchainImagesEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkReleaseSwapchainImagesEXT-pReleaseInfo-parameter` (*by the types*): `pReleaseInfo` must be a valid pointer to a valid VkReleaseSwapchainImagesInfoEXT structure*/
     #[doc(alias = "vkReleaseSwapchainImagesEXT")]
     #[inline]
     pub fn release_swapchain_images_ext<'a>(

@@ -15,12 +15,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateValidationCacheEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateValidationCacheEXT.html). Settled by the wrappers:
+The rules of `vkCreateValidationCacheEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateValidationCacheEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateValidationCacheEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateValidationCacheEXT-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateValidationCacheEXT-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateValidationCacheEXT-pValidationCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateValidationCacheEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateValidationCacheEXT-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkValidationCacheCreateInfoEXT structure
+- `VUID-vkCreateValidationCacheEXT-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateValidationCacheEXT-pValidationCache-parameter` (*by the types*): `pValidationCache` must be a valid pointer to a VkValidationCacheEXT handle*/
     #[doc(alias = "vkCreateValidationCacheEXT")]
     #[inline]
     pub unsafe fn create_validation_cache_ext<'a>(
@@ -70,13 +70,13 @@ The caller upholds the rules that [`Self::create_validation_cache_ext`] checks a
 
 # Valid usage
 
-The rules are on [`vkGetValidationCacheDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetValidationCacheDataEXT.html). Settled by the wrappers:
+The rules of `vkGetValidationCacheDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetValidationCacheDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetValidationCacheDataEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetValidationCacheDataEXT-validationCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetValidationCacheDataEXT-pDataSize-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetValidationCacheDataEXT-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetValidationCacheDataEXT-validationCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetValidationCacheDataEXT-validationCache-parent` (*checked*): `validationCache` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetValidationCacheDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetValidationCacheDataEXT-validationCache-parameter` (*by the types*): `validationCache` must be a valid VkValidationCacheEXT handle
+- `VUID-vkGetValidationCacheDataEXT-pDataSize-parameter` (*by the types*): `pDataSize` must be a valid pointer to a `size_t` value
+- `VUID-vkGetValidationCacheDataEXT-pData-parameter` (*by the types*): If the value referenced by `pDataSize` is not `0`, and `pData` is not `NULL`, `pData` must be a valid pointer to an array of `pDataSize` bytes*/
     #[doc(alias = "vkGetValidationCacheDataEXT")]
     #[inline]
     pub fn get_validation_cache_data_ext(
@@ -128,16 +128,15 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkMergeValidationCachesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergeValidationCachesEXT.html). Settled by the wrappers:
+The rules of `vkMergeValidationCachesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergeValidationCachesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkMergeValidationCachesEXT-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkMergeValidationCachesEXT-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkMergeValidationCachesEXT-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkMergeValidationCachesEXT-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkMergeValidationCachesEXT-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkMergeValidationCachesEXT-dstCache-01536` (*yours*; explicit rule): `dstCache` must not appear in the list of source caches
+- `VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength` (*checked*): `srcCacheCount` must be greater than `0`
+- `VUID-vkMergeValidationCachesEXT-dstCache-parent` (*checked*): `dstCache` must have been created, allocated, or retrieved from `device`
+- `VUID-vkMergeValidationCachesEXT-pSrcCaches-parent` (*checked*): Each element of `pSrcCaches` must have been created, allocated, or retrieved from `device`
+- `VUID-vkMergeValidationCachesEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkMergeValidationCachesEXT-dstCache-parameter` (*by the types*): `dstCache` must be a valid VkValidationCacheEXT handle
+- `VUID-vkMergeValidationCachesEXT-pSrcCaches-parameter` (*by the types*): `pSrcCaches` must be a valid pointer to an array of `srcCacheCount` valid VkValidationCacheEXT handles*/
     #[doc(alias = "vkMergeValidationCachesEXT")]
     #[inline]
     pub unsafe fn merge_validation_caches_ext(

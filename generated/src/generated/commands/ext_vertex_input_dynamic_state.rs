@@ -8,16 +8,20 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetVertexInputEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetVertexInputEXT.html). Settled by the wrappers:
+The rules of `vkCmdSetVertexInputEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetVertexInputEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetVertexInputEXT-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetVertexInputEXT-pVertexBindingDescriptions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetVertexInputEXT-pVertexAttributeDescriptions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetVertexInputEXT-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetVertexInputEXT-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetVertexInputEXT-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetVertexInputEXT-None-04790` (*yours*; explicit rule): The `vertexInputDynamicState` feature must be enabled
+- `VUID-vkCmdSetVertexInputEXT-vertexBindingDescriptionCount-04791` (*yours*; explicit rule): `vertexBindingDescriptionCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings`
+- `VUID-vkCmdSetVertexInputEXT-vertexAttributeDescriptionCount-04792` (*yours*; explicit rule): `vertexAttributeDescriptionCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputAttributes`
+- `VUID-vkCmdSetVertexInputEXT-binding-04793` (*yours*; explicit rule): For every `binding` specified by each element of `pVertexAttributeDescriptions`, a `VkVertexInputBindingDescription2EXT` must exist in `pVertexBindingDescriptions` with the same value of `binding`
+- `VUID-vkCmdSetVertexInputEXT-pVertexBindingDescriptions-04794` (*yours*; explicit rule): All elements of `pVertexBindingDescriptions` must describe distinct binding numbers
+- `VUID-vkCmdSetVertexInputEXT-pVertexAttributeDescriptions-04795` (*yours*; explicit rule): All elements of `pVertexAttributeDescriptions` must describe distinct attribute locations
+- `VUID-vkCmdSetVertexInputEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetVertexInputEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetVertexInputEXT-pVertexBindingDescriptions-parameter` (*by the types*): If `vertexBindingDescriptionCount` is not `0`, `pVertexBindingDescriptions` must be a valid pointer to an array of `vertexBindingDescriptionCount` valid VkVertexInputBindingDescription2EXT structures
+- `VUID-vkCmdSetVertexInputEXT-pVertexAttributeDescriptions-parameter` (*by the types*): If `vertexAttributeDescriptionCount` is not `0`, `pVertexAttributeDescriptions` must be a valid pointer to an array of `vertexAttributeDescriptionCount` valid VkVertexInputAttributeDescription2EXT …
+- `VUID-vkCmdSetVertexInputEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetVertexInputEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetVertexInputEXT")]
     #[inline]
     pub fn set_vertex_input_ext<'a>(

@@ -8,12 +8,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkCreateBufferCollectionFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferCollectionFUCHSIA.html). Settled by the wrappers:
+The rules of `vkCreateBufferCollectionFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferCollectionFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateBufferCollectionFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateBufferCollectionFUCHSIA-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateBufferCollectionFUCHSIA-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateBufferCollectionFUCHSIA-pCollection-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateBufferCollectionFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateBufferCollectionFUCHSIA-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkBufferCollectionCreateInfoFUCHSIA structure
+- `VUID-vkCreateBufferCollectionFUCHSIA-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateBufferCollectionFUCHSIA-pCollection-parameter` (*by the types*): `pCollection` must be a valid pointer to a VkBufferCollectionFUCHSIA handle*/
     #[doc(alias = "vkCreateBufferCollectionFUCHSIA")]
     #[inline]
     pub fn create_buffer_collection_fuchsia<'a>(
@@ -45,14 +45,13 @@ The rules are on [`vkCreateBufferCollectionFUCHSIA`'s reference page](https://re
 
 # Valid usage
 
-The rules are on [`vkGetBufferCollectionPropertiesFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferCollectionPropertiesFUCHSIA.html). Settled by the wrappers:
+The rules of `vkGetBufferCollectionPropertiesFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferCollectionPropertiesFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-collection-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-collection-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-None-06405` (*yours*; explicit rule): Prior to calling vkGetBufferCollectionPropertiesFUCHSIA, the constraints on the buffer collection must have been set by either vkSetBufferCollectionImageConstraintsFUCHSIA or …
+- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-collection-parent` (*checked*): `collection` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle
+- `VUID-vkGetBufferCollectionPropertiesFUCHSIA-pProperties-parameter` (*by the types*): `pProperties` must be a valid pointer to a VkBufferCollectionPropertiesFUCHSIA structure*/
     #[doc(alias = "vkGetBufferCollectionPropertiesFUCHSIA")]
     #[inline]
     pub fn get_buffer_collection_properties_fuchsia<'a>(
@@ -111,14 +110,13 @@ The caller upholds the rules that [`Self::get_buffer_collection_properties_fuchs
 
 # Valid usage
 
-The rules are on [`vkSetBufferCollectionBufferConstraintsFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetBufferCollectionBufferConstraintsFUCHSIA.html). Settled by the wrappers:
+The rules of `vkSetBufferCollectionBufferConstraintsFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetBufferCollectionBufferConstraintsFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-pBufferConstraintsInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-06403` (*yours*; explicit rule): `vkSetBufferCollectionImageConstraintsFUCHSIA` or `vkSetBufferCollectionBufferConstraintsFUCHSIA` must not have already been called on `collection`
+- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-parent` (*checked*): `collection` must have been created, allocated, or retrieved from `device`
+- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle
+- `VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-pBufferConstraintsInfo-parameter` (*by the types*): `pBufferConstraintsInfo` must be a valid pointer to a valid VkBufferConstraintsInfoFUCHSIA structure*/
     #[doc(alias = "vkSetBufferCollectionBufferConstraintsFUCHSIA")]
     #[inline]
     pub fn set_buffer_collection_buffer_constraints_fuchsia<'a>(
@@ -178,14 +176,13 @@ The caller upholds the rules that [`Self::set_buffer_collection_buffer_constrain
 
 # Valid usage
 
-The rules are on [`vkSetBufferCollectionImageConstraintsFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetBufferCollectionImageConstraintsFUCHSIA.html). Settled by the wrappers:
+The rules of `vkSetBufferCollectionImageConstraintsFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetBufferCollectionImageConstraintsFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-pImageConstraintsInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-06394` (*yours*; explicit rule): `vkSetBufferCollectionImageConstraintsFUCHSIA` or `vkSetBufferCollectionBufferConstraintsFUCHSIA` must not have already been called on `collection`
+- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parent` (*checked*): `collection` must have been created, allocated, or retrieved from `device`
+- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle
+- `VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-pImageConstraintsInfo-parameter` (*by the types*): `pImageConstraintsInfo` must be a valid pointer to a valid VkImageConstraintsInfoFUCHSIA structure*/
     #[doc(alias = "vkSetBufferCollectionImageConstraintsFUCHSIA")]
     #[inline]
     pub fn set_buffer_collection_image_constraints_fuchsia<'a>(

@@ -12,12 +12,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetMemoryZirconHandleFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryZirconHandleFUCHSIA.html). Settled by the wrappers:
+The rules of `vkGetMemoryZirconHandleFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryZirconHandleFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryZirconHandleFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetMemoryZirconHandleFUCHSIA-pZirconHandle-parameter` (*yours*; passed as ash's raw type): `pZirconHandle` must be a valid pointer to a `zx_handle_t` value
+- `VUID-vkGetMemoryZirconHandleFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter` (*by the types*): `pGetZirconHandleInfo` must be a valid pointer to a valid VkMemoryGetZirconHandleInfoFUCHSIA structure*/
     #[doc(alias = "vkGetMemoryZirconHandleFUCHSIA")]
     #[inline]
     pub unsafe fn get_memory_zircon_handle_fuchsia<'a>(
@@ -78,13 +77,13 @@ The caller upholds the rules that [`Self::get_memory_zircon_handle_fuchsia`] che
 
 # Valid usage
 
-The rules are on [`vkGetMemoryZirconHandlePropertiesFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryZirconHandlePropertiesFUCHSIA.html). Settled by the wrappers:
+The rules of `vkGetMemoryZirconHandlePropertiesFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryZirconHandlePropertiesFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-pMemoryZirconHandleProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-handleType-04773` (*yours*; explicit rule): `handleType` must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`
+- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-zirconHandle-04774` (*yours*; explicit rule): `zirconHandle` must reference a valid VMO
+- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryZirconHandlePropertiesFUCHSIA-pMemoryZirconHandleProperties-parameter` (*by the types*): `pMemoryZirconHandleProperties` must be a valid pointer to a VkMemoryZirconHandlePropertiesFUCHSIA structure*/
     #[doc(alias = "vkGetMemoryZirconHandlePropertiesFUCHSIA")]
     #[inline]
     pub unsafe fn get_memory_zircon_handle_properties_fuchsia<'a>(

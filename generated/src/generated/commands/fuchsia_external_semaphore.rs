@@ -22,12 +22,11 @@ The caller upholds these 7 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetSemaphoreZirconHandleFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreZirconHandleFUCHSIA.html). Settled by the wrappers:
+The rules of `vkGetSemaphoreZirconHandleFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreZirconHandleFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pZirconHandle-parameter` (*yours*; passed as ash's raw type): `pZirconHandle` must be a valid pointer to a `zx_handle_t` value
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter` (*by the types*): `pGetZirconHandleInfo` must be a valid pointer to a valid VkSemaphoreGetZirconHandleInfoFUCHSIA structure*/
     #[doc(alias = "vkGetSemaphoreZirconHandleFUCHSIA")]
     #[inline]
     pub unsafe fn get_semaphore_zircon_handle_fuchsia<'a>(
@@ -94,12 +93,11 @@ The caller upholds these 5 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkImportSemaphoreZirconHandleFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportSemaphoreZirconHandleFUCHSIA.html). Settled by the wrappers:
+The rules of `vkImportSemaphoreZirconHandleFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportSemaphoreZirconHandleFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkImportSemaphoreZirconHandleFUCHSIA-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkImportSemaphoreZirconHandleFUCHSIA-pImportSemaphoreZirconHandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkImportSemaphoreZirconHandleFUCHSIA-semaphore-04764` (*yours*; explicit rule): `semaphore` must not be associated with any queue command that has not yet completed execution on that queue
+- `VUID-vkImportSemaphoreZirconHandleFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkImportSemaphoreZirconHandleFUCHSIA-pImportSemaphoreZirconHandleInfo-parameter` (*by the types*): `pImportSemaphoreZirconHandleInfo` must be a valid pointer to a valid VkImportSemaphoreZirconHandleInfoFUCHSIA structure*/
     #[doc(alias = "vkImportSemaphoreZirconHandleFUCHSIA")]
     #[inline]
     pub unsafe fn import_semaphore_zircon_handle_fuchsia<'a>(

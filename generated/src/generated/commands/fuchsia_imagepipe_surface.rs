@@ -14,12 +14,12 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkCreateImagePipeSurfaceFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImagePipeSurfaceFUCHSIA.html). Settled by the wrappers:
+The rules of `vkCreateImagePipeSurfaceFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImagePipeSurfaceFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateImagePipeSurfaceFUCHSIA-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateImagePipeSurfaceFUCHSIA-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateImagePipeSurfaceFUCHSIA-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateImagePipeSurfaceFUCHSIA-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateImagePipeSurfaceFUCHSIA-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateImagePipeSurfaceFUCHSIA-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkImagePipeSurfaceCreateInfoFUCHSIA structure
+- `VUID-vkCreateImagePipeSurfaceFUCHSIA-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateImagePipeSurfaceFUCHSIA-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateImagePipeSurfaceFUCHSIA")]
     #[inline]
     pub unsafe fn create_image_pipe_surface_fuchsia<'a>(

@@ -8,13 +8,13 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetPastPresentationTimingGOOGLE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPastPresentationTimingGOOGLE.html). Settled by the wrappers:
+The rules of `vkGetPastPresentationTimingGOOGLE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPastPresentationTimingGOOGLE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPastPresentationTimingGOOGLE-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPastPresentationTimingGOOGLE-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPastPresentationTimingGOOGLE-pPresentationTimingCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPastPresentationTimingGOOGLE-pPresentationTimings-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPastPresentationTimingGOOGLE-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetPastPresentationTimingGOOGLE-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetPastPresentationTimingGOOGLE-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPastPresentationTimingGOOGLE-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-vkGetPastPresentationTimingGOOGLE-pPresentationTimingCount-parameter` (*by the types*): `pPresentationTimingCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPastPresentationTimingGOOGLE-pPresentationTimings-parameter` (*by the types*): If the value referenced by `pPresentationTimingCount` is not `0`, and `pPresentationTimings` is not `NULL`, `pPresentationTimings` must be a valid pointer to an array of `pPresentationTimingCount` …*/
     #[doc(alias = "vkGetPastPresentationTimingGOOGLE")]
     #[inline]
     pub fn get_past_presentation_timing_google(
@@ -70,12 +70,12 @@ The caller upholds the rules that [`Self::get_past_presentation_timing_google`] 
 
 # Valid usage
 
-The rules are on [`vkGetRefreshCycleDurationGOOGLE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRefreshCycleDurationGOOGLE.html). Settled by the wrappers:
+The rules of `vkGetRefreshCycleDurationGOOGLE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRefreshCycleDurationGOOGLE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetRefreshCycleDurationGOOGLE-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetRefreshCycleDurationGOOGLE-pDisplayTimingProperties-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetRefreshCycleDurationGOOGLE-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-vkGetRefreshCycleDurationGOOGLE-pDisplayTimingProperties-parameter` (*by the types*): `pDisplayTimingProperties` must be a valid pointer to a VkRefreshCycleDurationGOOGLE structure*/
     #[doc(alias = "vkGetRefreshCycleDurationGOOGLE")]
     #[inline]
     pub fn get_refresh_cycle_duration_google(

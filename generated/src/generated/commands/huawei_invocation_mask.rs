@@ -8,18 +8,24 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-The rules are on [`vkCmdBindInvocationMaskHUAWEI`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindInvocationMaskHUAWEI.html). Settled by the wrappers:
+The rules of `vkCmdBindInvocationMaskHUAWEI` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindInvocationMaskHUAWEI.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBindInvocationMaskHUAWEI-imageView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBindInvocationMaskHUAWEI-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBindInvocationMaskHUAWEI-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBindInvocationMaskHUAWEI-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBindInvocationMaskHUAWEI-None-04976` (*yours*; explicit rule): The `invocationMask` feature must be enabled
+- `VUID-vkCmdBindInvocationMaskHUAWEI-imageView-04977` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must be a valid VkImageView handle of type `VK_IMAGE_VIEW_TYPE_2D`
+- `VUID-vkCmdBindInvocationMaskHUAWEI-imageView-04978` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have a format of `VK_FORMAT_R8_UINT`
+- `VUID-vkCmdBindInvocationMaskHUAWEI-imageView-04979` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have been created with `VK_IMAGE_USAGE_INVOCATION_MASK_BIT_HUAWEI` set
+- `VUID-vkCmdBindInvocationMaskHUAWEI-imageView-04980` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `imageLayout` must be `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-vkCmdBindInvocationMaskHUAWEI-width-04981` (*yours*; explicit rule): Thread mask image resolution must match the `width` and `height` in vkCmdTraceRaysKHR
+- `VUID-vkCmdBindInvocationMaskHUAWEI-None-04982` (*yours*; explicit rule): Each element in the invocation mask image must have the value `0` or `1`. The value 1 means the invocation is active
+- `VUID-vkCmdBindInvocationMaskHUAWEI-width-04983` (*yours*; explicit rule): `width` in vkCmdTraceRaysKHR should be 1
+- `VUID-vkCmdBindInvocationMaskHUAWEI-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
+- `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent` (*checked*): Both of `commandBuffer`, and `imageView` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBindInvocationMaskHUAWEI-imageView-parameter` (*by the types*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
+- `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBindInvocationMaskHUAWEI-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdBindInvocationMaskHUAWEI-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindInvocationMaskHUAWEI")]
     #[inline]
     pub fn bind_invocation_mask_huawei(

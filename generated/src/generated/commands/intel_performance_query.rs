@@ -8,11 +8,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkAcquirePerformanceConfigurationINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquirePerformanceConfigurationINTEL.html). Settled by the wrappers:
+The rules of `vkAcquirePerformanceConfigurationINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquirePerformanceConfigurationINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquirePerformanceConfigurationINTEL-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquirePerformanceConfigurationINTEL-pAcquireInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkAcquirePerformanceConfigurationINTEL-pConfiguration-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkAcquirePerformanceConfigurationINTEL-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAcquirePerformanceConfigurationINTEL-pAcquireInfo-parameter` (*by the types*): `pAcquireInfo` must be a valid pointer to a valid VkPerformanceConfigurationAcquireInfoINTEL structure
+- `VUID-vkAcquirePerformanceConfigurationINTEL-pConfiguration-parameter` (*by the types*): `pConfiguration` must be a valid pointer to a VkPerformanceConfigurationINTEL handle*/
     #[doc(alias = "vkAcquirePerformanceConfigurationINTEL")]
     #[inline]
     pub fn acquire_performance_configuration_intel<'a>(
@@ -69,11 +69,11 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetPerformanceParameterINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPerformanceParameterINTEL.html). Settled by the wrappers:
+The rules of `vkGetPerformanceParameterINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPerformanceParameterINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPerformanceParameterINTEL-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPerformanceParameterINTEL-parameter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPerformanceParameterINTEL-pValue-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPerformanceParameterINTEL-parameter-parameter` (*checked*): `parameter` must be a valid VkPerformanceParameterTypeINTEL value
+- `VUID-vkGetPerformanceParameterINTEL-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPerformanceParameterINTEL-pValue-parameter` (*by the types*): `pValue` must be a valid pointer to a VkPerformanceValueINTEL structure*/
     #[doc(alias = "vkGetPerformanceParameterINTEL")]
     #[inline]
     pub unsafe fn get_performance_parameter_intel(
@@ -116,10 +116,10 @@ The caller upholds the rules that [`Self::get_performance_parameter_intel`] chec
 
 # Valid usage
 
-The rules are on [`vkInitializePerformanceApiINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInitializePerformanceApiINTEL.html). Settled by the wrappers:
+The rules of `vkInitializePerformanceApiINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInitializePerformanceApiINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkInitializePerformanceApiINTEL-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkInitializePerformanceApiINTEL-pInitializeInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkInitializePerformanceApiINTEL-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkInitializePerformanceApiINTEL-pInitializeInfo-parameter` (*by the types*): `pInitializeInfo` must be a valid pointer to a valid VkInitializePerformanceApiInfoINTEL structure*/
     #[doc(alias = "vkInitializePerformanceApiINTEL")]
     #[inline]
     pub fn initialize_performance_api_intel<'a>(
@@ -155,13 +155,12 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkReleasePerformanceConfigurationINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleasePerformanceConfigurationINTEL.html). Settled by the wrappers:
+The rules of `vkReleasePerformanceConfigurationINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleasePerformanceConfigurationINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkReleasePerformanceConfigurationINTEL-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkReleasePerformanceConfigurationINTEL-configuration-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkReleasePerformanceConfigurationINTEL-configuration-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkReleasePerformanceConfigurationINTEL-configuration-02737` (*yours*; explicit rule): `configuration` must not be released before all command buffers submitted while the configuration was set are in pending state
+- `VUID-vkReleasePerformanceConfigurationINTEL-configuration-parent` (*checked*): If `configuration` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkReleasePerformanceConfigurationINTEL-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkReleasePerformanceConfigurationINTEL-configuration-parameter` (*by the types*): If `configuration` is not VK_NULL_HANDLE, `configuration` must be a valid VkPerformanceConfigurationINTEL handle*/
     #[doc(alias = "vkReleasePerformanceConfigurationINTEL")]
     #[inline]
     pub unsafe fn release_performance_configuration_intel(
@@ -225,9 +224,9 @@ The caller upholds the rules that [`Self::release_performance_configuration_inte
 
 # Valid usage
 
-The rules are on [`vkUninitializePerformanceApiINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUninitializePerformanceApiINTEL.html). Settled by the wrappers:
+The rules of `vkUninitializePerformanceApiINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUninitializePerformanceApiINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkUninitializePerformanceApiINTEL-device-parameter`: static (`self` is a live wrapper)*/
+- `VUID-vkUninitializePerformanceApiINTEL-device-parameter` (*by the types*): `device` must be a valid VkDevice handle*/
     #[doc(alias = "vkUninitializePerformanceApiINTEL")]
     #[inline]
     pub fn uninitialize_performance_api_intel(&self) -> Result<()> {
@@ -250,13 +249,13 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetPerformanceMarkerINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPerformanceMarkerINTEL.html). Settled by the wrappers:
+The rules of `vkCmdSetPerformanceMarkerINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPerformanceMarkerINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPerformanceMarkerINTEL-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPerformanceMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, or transfer operations
+- `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetPerformanceMarkerINTEL-pMarkerInfo-parameter` (*by the types*): `pMarkerInfo` must be a valid pointer to a valid VkPerformanceMarkerInfoINTEL structure
+- `VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetPerformanceMarkerINTEL-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetPerformanceMarkerINTEL")]
     #[inline]
     pub fn set_performance_marker_intel<'a>(
@@ -311,15 +310,14 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkCmdSetPerformanceOverrideINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPerformanceOverrideINTEL.html). Settled by the wrappers:
+The rules of `vkCmdSetPerformanceOverrideINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPerformanceOverrideINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPerformanceOverrideINTEL-pOverrideInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPerformanceOverrideINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetPerformanceOverrideINTEL-pOverrideInfo-02736` (*yours*; explicit rule): `pOverrideInfo` must not be used with a VkPerformanceOverrideTypeINTEL that is not reported available by `vkGetPerformanceParameterINTEL`
+- `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, or transfer operations
+- `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetPerformanceOverrideINTEL-pOverrideInfo-parameter` (*by the types*): `pOverrideInfo` must be a valid pointer to a valid VkPerformanceOverrideInfoINTEL structure
+- `VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetPerformanceOverrideINTEL-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetPerformanceOverrideINTEL")]
     #[inline]
     pub unsafe fn set_performance_override_intel<'a>(
@@ -374,13 +372,13 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkCmdSetPerformanceStreamMarkerINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPerformanceStreamMarkerINTEL.html). Settled by the wrappers:
+The rules of `vkCmdSetPerformanceStreamMarkerINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetPerformanceStreamMarkerINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-pMarkerInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, or transfer operations
+- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-pMarkerInfo-parameter` (*by the types*): `pMarkerInfo` must be a valid pointer to a valid VkPerformanceStreamMarkerInfoINTEL structure
+- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetPerformanceStreamMarkerINTEL-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetPerformanceStreamMarkerINTEL")]
     #[inline]
     pub unsafe fn set_performance_stream_marker_intel<'a>(
@@ -432,11 +430,11 @@ impl Queue {
 
 # Valid usage
 
-The rules are on [`vkQueueSetPerformanceConfigurationINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSetPerformanceConfigurationINTEL.html). Settled by the wrappers:
+The rules of `vkQueueSetPerformanceConfigurationINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSetPerformanceConfigurationINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueSetPerformanceConfigurationINTEL-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueSetPerformanceConfigurationINTEL-configuration-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent` (*checked*): Both of `configuration`, and `queue` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkQueueSetPerformanceConfigurationINTEL-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkQueueSetPerformanceConfigurationINTEL-configuration-parameter` (*by the types*): `configuration` must be a valid VkPerformanceConfigurationINTEL handle*/
     #[doc(alias = "vkQueueSetPerformanceConfigurationINTEL")]
     #[inline]
     pub fn set_performance_configuration_intel(

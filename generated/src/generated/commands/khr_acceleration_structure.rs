@@ -12,18 +12,67 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkBuildAccelerationStructuresKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBuildAccelerationStructuresKHR.html). Settled by the wrappers:
+The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBuildAccelerationStructuresKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBuildAccelerationStructuresKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBuildAccelerationStructuresKHR-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 54.
-
-- 53: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkBuildAccelerationStructuresKHR-mode-04628` (*yours*; explicit rule): The `mode` member of each element of `pInfos` must be a valid VkBuildAccelerationStructureModeKHR value
+- `VUID-vkBuildAccelerationStructuresKHR-srcAccelerationStructure-04629` (*yours*; explicit rule): If the `srcAccelerationStructure` member of any element of `pInfos` is not VK_NULL_HANDLE, the `srcAccelerationStructure` member must be a valid VkAccelerationStructureKHR handle
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-04630` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` member must not be VK_NULL_HANDLE
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03403` (*yours*; explicit rule): The `srcAccelerationStructure` member of any element of `pInfos` must not be the same acceleration structure as the `dstAccelerationStructure` member of any other element of `pInfos`
+- `VUID-vkBuildAccelerationStructuresKHR-dstAccelerationStructure-03698` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must not be the same acceleration structure as the `dstAccelerationStructure` member of any other element of `pInfos`
+- `VUID-vkBuildAccelerationStructuresKHR-dstAccelerationStructure-03800` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must be a valid VkAccelerationStructureKHR handle
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03699` (*yours*; explicit rule): For each element of `pInfos`, if its `type` member is `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`, its `dstAccelerationStructure` member must have been created with a value of …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03700` (*yours*; explicit rule): For each element of `pInfos`, if its `type` member is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR`, its `dstAccelerationStructure` member must have been created with a value of …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03663` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, inactive primitives in its `srcAccelerationStructure` member must not be made active
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03664` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, active primitives in its `srcAccelerationStructure` member must not be made inactive
+- `VUID-vkBuildAccelerationStructuresKHR-None-03407` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must not be referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a `geometryType` …
+- `VUID-vkBuildAccelerationStructuresKHR-dstAccelerationStructure-03701` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `srcAccelerationStructure` member …
+- `VUID-vkBuildAccelerationStructuresKHR-dstAccelerationStructure-03702` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `dstAccelerationStructure` member …
+- `VUID-vkBuildAccelerationStructuresKHR-dstAccelerationStructure-03703` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any …
+- `VUID-vkBuildAccelerationStructuresKHR-scratchData-03704` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any other element of …
+- `VUID-vkBuildAccelerationStructuresKHR-scratchData-03705` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `srcAccelerationStructure` member of any …
+- `VUID-vkBuildAccelerationStructuresKHR-dstAccelerationStructure-03706` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing any acceleration structure referenced …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03667` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` member must have previously been constructed with …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03668` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` and `dstAccelerationStructure` members must either be the same …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03758` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `geometryCount` member must have the same value which was specified when …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03759` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `flags` member must have the same value which was specified when `srcAccelerationStructure` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03760` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `type` member must have the same value which was specified when `srcAccelerationStructure` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03761` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03762` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03763` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03764` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03765` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03766` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03767` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03768` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkBuildAccelerationStructuresKHR-primitiveCount-03769` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, its `primitiveCount` member must have the same value which was specified when `srcAccelerationStructure` was last built
+- `VUID-vkBuildAccelerationStructuresKHR-firstVertex-03770` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, if the corresponding geometry uses indices, its `firstVertex` member must have the same value which was specified when …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03801` (*yours*; explicit rule): For each element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the corresponding `ppBuildRangeInfos`\[i\]\[j\].`primitiveCount` must …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03675` (*yours*; explicit rule): For each `pInfos`\[i\], `dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build …
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; explicit rule): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03722` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to host-visible device memory
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03723` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to host-visible …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03724` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
+- `VUID-vkBuildAccelerationStructuresKHR-accelerationStructureHostCommands-03581` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03725` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR`, all addresses between `pInfos`\[i\].`scratchData.hostAddress` and `pInfos`\[i\].`scratchData.hostAddress` + N - 1 must be valid …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03726` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, all addresses between `pInfos`\[i\].`scratchData.hostAddress` and `pInfos`\[i\].`scratchData.hostAddress` + N - 1 must be valid …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03771` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, `geometry.triangles.vertexData.hostAddress` must be a valid host …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03772` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.indexType` is not `VK_INDEX_TYPE_NONE_KHR`, …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03773` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.transformData.hostAddress` is not `0`, it …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03774` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.hostAddress` must be a valid host address
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03778` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, `geometry.instances.data.hostAddress` must be a valid host address
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03779` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each …
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*yours*; passed as ash's raw type): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03775` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to memory that was not allocated with multiple instances
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03776` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to memory that …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-03777` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-04930` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR` with `VK_BUILD_ACCELERATION_STRUCTURE_MOTION_BIT_NV` set, each …
+- `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkBuildAccelerationStructuresKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkAccelerationStructureBuildGeometryInfoKHR structures*/
     #[doc(alias = "vkBuildAccelerationStructuresKHR")]
     #[inline]
     pub unsafe fn build_acceleration_structures_khr<'a>(
@@ -85,14 +134,19 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
 
 # Valid usage
 
-The rules are on [`vkCopyAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureKHR.html). Settled by the wrappers:
+The rules of `vkCopyAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkCopyAccelerationStructureKHR-buffer-03727` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
+- `VUID-vkCopyAccelerationStructureKHR-buffer-03728` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
+- `VUID-vkCopyAccelerationStructureKHR-accelerationStructureHostCommands-03582` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
+- `VUID-vkCopyAccelerationStructureKHR-buffer-03780` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyAccelerationStructureKHR-buffer-03781` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyAccelerationStructureKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkCopyAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureInfoKHR structure*/
     #[doc(alias = "vkCopyAccelerationStructureKHR")]
     #[inline]
     pub fn copy_acceleration_structure_khr<'a>(
@@ -146,14 +200,19 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
 
 # Valid usage
 
-The rules are on [`vkCopyAccelerationStructureToMemoryKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureToMemoryKHR.html). Settled by the wrappers:
+The rules of `vkCopyAccelerationStructureToMemoryKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureToMemoryKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-buffer-03731` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-03732` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be a valid host pointer
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-03751` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be aligned to 16 bytes
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-accelerationStructureHostCommands-03584` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-buffer-03783` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureToMemoryInfoKHR structure*/
     #[doc(alias = "vkCopyAccelerationStructureToMemoryKHR")]
     #[inline]
     pub fn copy_acceleration_structure_to_memory_khr<'a>(
@@ -213,14 +272,19 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
 
 # Valid usage
 
-The rules are on [`vkCopyMemoryToAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToAccelerationStructureKHR.html). Settled by the wrappers:
+The rules of `vkCopyMemoryToAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-03729` (*yours*; explicit rule): `pInfo->src.hostAddress` must be a valid host pointer
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-03750` (*yours*; explicit rule): `pInfo->src.hostAddress` must be aligned to 16 bytes
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-buffer-03730` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-accelerationStructureHostCommands-03583` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-buffer-03782` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToAccelerationStructureInfoKHR structure*/
     #[doc(alias = "vkCopyMemoryToAccelerationStructureKHR")]
     #[inline]
     pub fn copy_memory_to_acceleration_structure_khr<'a>(
@@ -280,14 +344,15 @@ The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_
 
 # Valid usage
 
-The rules are on [`vkCreateAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAccelerationStructureKHR.html). Settled by the wrappers:
+The rules of `vkCreateAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateAccelerationStructureKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateAccelerationStructureKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateAccelerationStructureKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateAccelerationStructureKHR-pAccelerationStructure-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateAccelerationStructureKHR-accelerationStructure-03611` (*yours*; explicit rule): The `accelerationStructure` feature must be enabled
+- `VUID-vkCreateAccelerationStructureKHR-deviceAddress-03488` (*yours*; explicit rule): If VkAccelerationStructureCreateInfoKHR::`deviceAddress` is not zero, the `accelerationStructureCaptureReplay` feature must be enabled
+- `VUID-vkCreateAccelerationStructureKHR-device-03489` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkCreateAccelerationStructureKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateAccelerationStructureKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkAccelerationStructureCreateInfoKHR structure
+- `VUID-vkCreateAccelerationStructureKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateAccelerationStructureKHR-pAccelerationStructure-parameter` (*by the types*): `pAccelerationStructure` must be a valid pointer to a VkAccelerationStructureKHR handle*/
     #[doc(alias = "vkCreateAccelerationStructureKHR")]
     #[inline]
     pub fn create_acceleration_structure_khr<'a>(
@@ -362,17 +427,17 @@ The caller upholds the rules that [`Self::create_acceleration_structure_khr`] ch
 
 # Valid usage
 
-The rules are on [`vkGetAccelerationStructureBuildSizesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureBuildSizesKHR.html). Settled by the wrappers:
+The rules of `vkGetAccelerationStructureBuildSizesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureBuildSizesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetAccelerationStructureBuildSizesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetAccelerationStructureBuildSizesKHR-buildType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetAccelerationStructureBuildSizesKHR-pBuildInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetAccelerationStructureBuildSizesKHR-pSizeInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 4: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-rayTracingPipeline-03617` (*yours*; explicit rule): The `rayTracingPipeline` or `rayQuery` feature must be enabled
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-device-03618` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-pBuildInfo-03619` (*yours*; explicit rule): If `pBuildInfo->geometryCount` is not `0`, `pMaxPrimitiveCounts` must be a valid pointer to an array of `pBuildInfo->geometryCount` `uint32_t` values
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-pBuildInfo-03785` (*yours*; explicit rule): If `pBuildInfo->pGeometries` or `pBuildInfo->ppGeometries` has a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each `pMaxPrimitiveCounts`\[i\] must be less than or equal to …
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-pMaxPrimitiveCounts-parameter` (*yours*; passed as ash's raw type): If `pMaxPrimitiveCounts` is not `NULL`, `pMaxPrimitiveCounts` must be a valid pointer to an array of `pBuildInfo->geometryCount` `uint32_t` values
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-buildType-parameter` (*checked*): `buildType` must be a valid VkAccelerationStructureBuildTypeKHR value
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-pBuildInfo-parameter` (*by the types*): `pBuildInfo` must be a valid pointer to a valid VkAccelerationStructureBuildGeometryInfoKHR structure
+- `VUID-vkGetAccelerationStructureBuildSizesKHR-pSizeInfo-parameter` (*by the types*): `pSizeInfo` must be a valid pointer to a VkAccelerationStructureBuildSizesInfoKHR structure*/
     #[doc(alias = "vkGetAccelerationStructureBuildSizesKHR")]
     #[inline]
     pub unsafe fn get_acceleration_structure_build_sizes_khr<'a>(
@@ -440,12 +505,11 @@ The caller upholds the rules that [`Self::get_acceleration_structure_build_sizes
 
 # Valid usage
 
-The rules are on [`vkGetAccelerationStructureDeviceAddressKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureDeviceAddressKHR.html). Settled by the wrappers:
+The rules of `vkGetAccelerationStructureDeviceAddressKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureDeviceAddressKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetAccelerationStructureDeviceAddressKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetAccelerationStructureDeviceAddressKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetAccelerationStructureDeviceAddressKHR-device-03504` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetAccelerationStructureDeviceAddressKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetAccelerationStructureDeviceAddressKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkAccelerationStructureDeviceAddressInfoKHR structure*/
     #[doc(alias = "vkGetAccelerationStructureDeviceAddressKHR")]
     #[inline]
     pub fn get_acceleration_structure_device_address_khr<'a>(
@@ -473,13 +537,12 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Valid usage
 
-The rules are on [`vkGetDeviceAccelerationStructureCompatibilityKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceAccelerationStructureCompatibilityKHR.html). Settled by the wrappers:
+The rules of `vkGetDeviceAccelerationStructureCompatibilityKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceAccelerationStructureCompatibilityKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pVersionInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pCompatibility-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-rayTracingPipeline-03661` (*yours*; explicit rule): The `rayTracingPipeline` or `rayQuery` feature must be enabled
+- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pVersionInfo-parameter` (*by the types*): `pVersionInfo` must be a valid pointer to a valid VkAccelerationStructureVersionInfoKHR structure
+- `VUID-vkGetDeviceAccelerationStructureCompatibilityKHR-pCompatibility-parameter` (*by the types*): `pCompatibility` must be a valid pointer to a VkAccelerationStructureCompatibilityKHR value*/
     #[doc(alias = "vkGetDeviceAccelerationStructureCompatibilityKHR")]
     #[inline]
     pub fn get_acceleration_structure_compatibility_khr<'a>(
@@ -510,17 +573,31 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Valid usage
 
-The rules are on [`vkWriteAccelerationStructuresPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWriteAccelerationStructuresPropertiesKHR.html). Settled by the wrappers:
+The rules of `vkWriteAccelerationStructuresPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWriteAccelerationStructuresPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-04964` (*yours*; explicit rule): All acceleration structures in `pAccelerationStructures` must have been built prior to the execution of this command
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructures-03431` (*yours*; explicit rule): All acceleration structures in `pAccelerationStructures` must have been built with `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR` if `queryType` is …
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-03448` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR`, then `stride` must be a multiple of the size of VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-03449` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR`, then `pData` must point to a VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-03450` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR`, then `stride` must be a multiple of the size of VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-03451` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR`, then `pData` must point to a VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-03452` (*yours*; explicit rule): `dataSize` must be greater than or equal to `accelerationStructureCount`*`stride`
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-buffer-03733` (*yours*; explicit rule): The `buffer` used to create each acceleration structure in `pAccelerationStructures` must be bound to host-visible device memory
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureHostCommands-03585` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-06742` (*yours*; explicit rule): `queryType` must be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR`, `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR`, …
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-06731` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR`, then `stride` must be a multiple of the size of VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-06732` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR`, then `pData` must point to a VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-06733` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR`, then `stride` must be a multiple of the size of VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-06734` (*yours*; explicit rule): If `queryType` is `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR`, then `pData` must point to a VkDeviceSize
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-03432` (*yours*; explicit rule): `queryType` must be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR` or `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR`
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-buffer-03784` (*yours*; explicit rule): The `buffer` used to create each acceleration structure in `pAccelerationStructures` must be bound to memory that was not allocated with multiple instances
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter` (*checked*): `queryType` must be a valid VkQueryType value
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength` (*checked*): `accelerationStructureCount` must be greater than `0`
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent` (*checked*): Each element of `pAccelerationStructures` must have been created, allocated, or retrieved from `device`
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parameter` (*by the types*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid VkAccelerationStructureKHR handles
+- `VUID-vkWriteAccelerationStructuresPropertiesKHR-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkWriteAccelerationStructuresPropertiesKHR")]
     #[inline]
     pub fn write_acceleration_structures_properties_khr(
@@ -600,22 +677,89 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-The rules are on [`vkCmdBuildAccelerationStructuresIndirectKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructuresIndirectKHR.html). Settled by the wrappers:
+The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructuresIndirectKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter`: dynamic (checks, in every build, that the slice is as long as `infos`)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter`: dynamic (checks, in every build, that the slice is as long as `infos`)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 72.
-
-- 71: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-mode-04628` (*yours*; explicit rule): The `mode` member of each element of `pInfos` must be a valid VkBuildAccelerationStructureModeKHR value
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-srcAccelerationStructure-04629` (*yours*; explicit rule): If the `srcAccelerationStructure` member of any element of `pInfos` is not VK_NULL_HANDLE, the `srcAccelerationStructure` member must be a valid VkAccelerationStructureKHR handle
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-04630` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` member must not be VK_NULL_HANDLE
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03403` (*yours*; explicit rule): The `srcAccelerationStructure` member of any element of `pInfos` must not be the same acceleration structure as the `dstAccelerationStructure` member of any other element of `pInfos`
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-dstAccelerationStructure-03698` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must not be the same acceleration structure as the `dstAccelerationStructure` member of any other element of `pInfos`
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-dstAccelerationStructure-03800` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must be a valid VkAccelerationStructureKHR handle
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03699` (*yours*; explicit rule): For each element of `pInfos`, if its `type` member is `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`, its `dstAccelerationStructure` member must have been created with a value of …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03700` (*yours*; explicit rule): For each element of `pInfos`, if its `type` member is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR`, its `dstAccelerationStructure` member must have been created with a value of …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03663` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, inactive primitives in its `srcAccelerationStructure` member must not be made active
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03664` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, active primitives in its `srcAccelerationStructure` member must not be made inactive
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-None-03407` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must not be referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a `geometryType` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-dstAccelerationStructure-03701` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `srcAccelerationStructure` member …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-dstAccelerationStructure-03702` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `dstAccelerationStructure` member …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-dstAccelerationStructure-03703` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-scratchData-03704` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any other element of …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-scratchData-03705` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `srcAccelerationStructure` member of any …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-dstAccelerationStructure-03706` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing any acceleration structure referenced …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03667` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` member must have previously been constructed with …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03668` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` and `dstAccelerationStructure` members must either be the same …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03758` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `geometryCount` member must have the same value which was specified when …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03759` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `flags` member must have the same value which was specified when `srcAccelerationStructure` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03760` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `type` member must have the same value which was specified when `srcAccelerationStructure` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03761` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03762` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03763` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03764` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03765` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03766` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03767` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03768` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-primitiveCount-03769` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, its `primitiveCount` member must have the same value which was specified when `srcAccelerationStructure` was last built
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-firstVertex-03770` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, if the corresponding geometry uses indices, its `firstVertex` member must have the same value which was specified when …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03801` (*yours*; explicit rule): For each element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the corresponding `ppMaxPrimitiveCounts`\[i\]\[j\] must be less than …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03707` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to device memory
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03708` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to device memory
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03709` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03671` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR`, all addresses between `pInfos`\[i\].`scratchData.deviceAddress` and `pInfos`\[i\].`scratchData.deviceAddress` + N - 1 must be in …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03672` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, all addresses between `pInfos`\[i\].`scratchData.deviceAddress` and `pInfos`\[i\].`scratchData.deviceAddress` + N - 1 must be in …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-geometry-03673` (*yours*; explicit rule): The buffers from which the buffer device addresses for all of the `geometry.triangles.vertexData`, `geometry.triangles.indexData`, `geometry.triangles.transformData`, `geometry.aabbs.data`, and …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03674` (*yours*; explicit rule): The buffer from which the buffer device address `pInfos`\[i\].`scratchData.deviceAddress` is queried must have been created with `VK_BUFFER_USAGE_STORAGE_BUFFER_BIT` usage flag
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03802` (*yours*; explicit rule): For each element of `pInfos`, its `scratchData.deviceAddress` member must be a valid device address obtained from vkGetBufferDeviceAddress
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03803` (*yours*; explicit rule): For each element of `pInfos`, if `scratchData.deviceAddress` is the address of a non-sparse buffer then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03710` (*yours*; explicit rule): For each element of `pInfos`, its `scratchData.deviceAddress` member must be a multiple of VkPhysicalDeviceAccelerationStructurePropertiesKHR::`minAccelerationStructureScratchOffsetAlignment`
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03804` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, `geometry.triangles.vertexData.deviceAddress` must be a valid …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03805` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.vertexData.deviceAddress` is the address of …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03711` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, `geometry.triangles.vertexData.deviceAddress` must be aligned to …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03806` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.indexType` is not `VK_INDEX_TYPE_NONE_KHR`, …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03807` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.indexType` is not `VK_INDEX_TYPE_NONE_KHR`, …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03712` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, and with `geometry.triangles.indexType` not equal to …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03808` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.transformData.deviceAddress` is not `0`, it …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03809` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.transformData.deviceAddress` is the address …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03810` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.transformData.deviceAddress` is not `0`, it …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03811` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.deviceAddress` must be a valid device address …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03812` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, if `geometry.aabbs.data.deviceAddress` is the address of a non-sparse …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03714` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.deviceAddress` must be aligned to `8` bytes
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03715` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.arrayOfPointers` is `VK_FALSE`, …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03716` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.arrayOfPointers` is `VK_TRUE`, …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03717` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.arrayOfPointers` is `VK_TRUE`, each element of …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03813` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, `geometry.instances.data.deviceAddress` must be a valid device …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03814` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.instances.data.deviceAddress` is the address of a …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-06707` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-03645` (*yours*; explicit rule): For any element of `pIndirectDeviceAddresses`, if the buffer from which it was queried is non-sparse then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-03646` (*yours*; explicit rule): For any element of `pIndirectDeviceAddresses`\[i\], all device addresses between `pIndirectDeviceAddresses`\[i\] and `pIndirectDeviceAddresses`\[i\] + (`pInfos`\[i\].`geometryCount` {times} …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-03647` (*yours*; explicit rule): For any element of `pIndirectDeviceAddresses`, the buffer from which it was queried must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-03648` (*yours*; explicit rule): Each element of `pIndirectDeviceAddresses` must be a multiple of `4`
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-03787` (*yours*; explicit rule): Each element of `pIndirectStrides` must be a multiple of `4`
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-03649` (*yours*; explicit rule): `commandBuffer` must not be a protected command buffer
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-accelerationStructureIndirectBuild-03650` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureIndirectBuild` feature must be enabled
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-03651` (*yours*; explicit rule): Each VkAccelerationStructureBuildRangeInfoKHR structure referenced by any element of `pIndirectDeviceAddresses` must be a valid VkAccelerationStructureBuildRangeInfoKHR structure
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03652` (*yours*; explicit rule): `pInfos`\[i\].`dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build operation, as …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-ppMaxPrimitiveCounts-03653` (*yours*; explicit rule): Each `ppMaxPrimitiveCounts`\[i\]\[j\] must be greater than or equal to the the `primitiveCount` value specified by the VkAccelerationStructureBuildRangeInfoKHR structure located at …
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-ppMaxPrimitiveCounts-parameter` (*yours*; passed as ash's raw type): `ppMaxPrimitiveCounts` must be a valid pointer to an array of `infoCount` `uint32_t` values
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter` (*checked*): `pIndirectDeviceAddresses` must be a valid pointer to an array of `infoCount` VkDeviceAddress values
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter` (*checked*): `pIndirectStrides` must be a valid pointer to an array of `infoCount` `uint32_t` values
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkAccelerationStructureBuildGeometryInfoKHR structures
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBuildAccelerationStructuresIndirectKHR")]
     #[inline]
     pub unsafe fn build_acceleration_structures_indirect_khr<'a>(
@@ -720,20 +864,79 @@ The caller upholds the rules that [`Self::build_acceleration_structures_indirect
 
 # Valid usage
 
-The rules are on [`vkCmdBuildAccelerationStructuresKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructuresKHR.html). Settled by the wrappers:
+The rules of `vkCmdBuildAccelerationStructuresKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructuresKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBuildAccelerationStructuresKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBuildAccelerationStructuresKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 64.
-
-- 63: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkCmdBuildAccelerationStructuresKHR-mode-04628` (*yours*; explicit rule): The `mode` member of each element of `pInfos` must be a valid VkBuildAccelerationStructureModeKHR value
+- `VUID-vkCmdBuildAccelerationStructuresKHR-srcAccelerationStructure-04629` (*yours*; explicit rule): If the `srcAccelerationStructure` member of any element of `pInfos` is not VK_NULL_HANDLE, the `srcAccelerationStructure` member must be a valid VkAccelerationStructureKHR handle
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-04630` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` member must not be VK_NULL_HANDLE
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03403` (*yours*; explicit rule): The `srcAccelerationStructure` member of any element of `pInfos` must not be the same acceleration structure as the `dstAccelerationStructure` member of any other element of `pInfos`
+- `VUID-vkCmdBuildAccelerationStructuresKHR-dstAccelerationStructure-03698` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must not be the same acceleration structure as the `dstAccelerationStructure` member of any other element of `pInfos`
+- `VUID-vkCmdBuildAccelerationStructuresKHR-dstAccelerationStructure-03800` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must be a valid VkAccelerationStructureKHR handle
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03699` (*yours*; explicit rule): For each element of `pInfos`, if its `type` member is `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`, its `dstAccelerationStructure` member must have been created with a value of …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03700` (*yours*; explicit rule): For each element of `pInfos`, if its `type` member is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR`, its `dstAccelerationStructure` member must have been created with a value of …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03663` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, inactive primitives in its `srcAccelerationStructure` member must not be made active
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03664` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, active primitives in its `srcAccelerationStructure` member must not be made inactive
+- `VUID-vkCmdBuildAccelerationStructuresKHR-None-03407` (*yours*; explicit rule): The `dstAccelerationStructure` member of any element of `pInfos` must not be referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a `geometryType` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-dstAccelerationStructure-03701` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `srcAccelerationStructure` member …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-dstAccelerationStructure-03702` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `dstAccelerationStructure` member …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-dstAccelerationStructure-03703` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-scratchData-03704` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `scratchData` member of any other element of …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-scratchData-03705` (*yours*; explicit rule): The range of memory backing the `scratchData` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing the `srcAccelerationStructure` member of any …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-dstAccelerationStructure-03706` (*yours*; explicit rule): The range of memory backing the `dstAccelerationStructure` member of any element of `pInfos` that is accessed by this command must not overlap the memory backing any acceleration structure referenced …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03667` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` member must have previously been constructed with …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03668` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `srcAccelerationStructure` and `dstAccelerationStructure` members must either be the same …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03758` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `geometryCount` member must have the same value which was specified when …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03759` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `flags` member must have the same value which was specified when `srcAccelerationStructure` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03760` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, its `type` member must have the same value which was specified when `srcAccelerationStructure` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03761` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03762` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03763` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03764` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03765` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03766` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03767` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03768` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, then for each `VkAccelerationStructureGeometryKHR` structure referred to by its `pGeometries` …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-primitiveCount-03769` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, its `primitiveCount` member must have the same value which was specified when `srcAccelerationStructure` was last built
+- `VUID-vkCmdBuildAccelerationStructuresKHR-firstVertex-03770` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, if the corresponding geometry uses indices, its `firstVertex` member must have the same value which was specified when …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03801` (*yours*; explicit rule): For each element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the corresponding `ppBuildRangeInfos`\[i\]\[j\].`primitiveCount` must …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03707` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to device memory
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03708` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to device memory
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03709` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03671` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR`, all addresses between `pInfos`\[i\].`scratchData.deviceAddress` and `pInfos`\[i\].`scratchData.deviceAddress` + N - 1 must be in …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03672` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR`, all addresses between `pInfos`\[i\].`scratchData.deviceAddress` and `pInfos`\[i\].`scratchData.deviceAddress` + N - 1 must be in …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-geometry-03673` (*yours*; explicit rule): The buffers from which the buffer device addresses for all of the `geometry.triangles.vertexData`, `geometry.triangles.indexData`, `geometry.triangles.transformData`, `geometry.aabbs.data`, and …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03674` (*yours*; explicit rule): The buffer from which the buffer device address `pInfos`\[i\].`scratchData.deviceAddress` is queried must have been created with `VK_BUFFER_USAGE_STORAGE_BUFFER_BIT` usage flag
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03802` (*yours*; explicit rule): For each element of `pInfos`, its `scratchData.deviceAddress` member must be a valid device address obtained from vkGetBufferDeviceAddress
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03803` (*yours*; explicit rule): For each element of `pInfos`, if `scratchData.deviceAddress` is the address of a non-sparse buffer then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03710` (*yours*; explicit rule): For each element of `pInfos`, its `scratchData.deviceAddress` member must be a multiple of VkPhysicalDeviceAccelerationStructurePropertiesKHR::`minAccelerationStructureScratchOffsetAlignment`
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03804` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, `geometry.triangles.vertexData.deviceAddress` must be a valid …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03805` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.vertexData.deviceAddress` is the address of …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03711` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, `geometry.triangles.vertexData.deviceAddress` must be aligned to …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03806` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.indexType` is not `VK_INDEX_TYPE_NONE_KHR`, …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03807` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.indexType` is not `VK_INDEX_TYPE_NONE_KHR`, …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03712` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, and with `geometry.triangles.indexType` not equal to …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03808` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.transformData.deviceAddress` is not `0`, it …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03809` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.transformData.deviceAddress` is the address …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03810` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, if `geometry.triangles.transformData.deviceAddress` is not `0`, it …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03811` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.deviceAddress` must be a valid device address …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03812` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, if `geometry.aabbs.data.deviceAddress` is the address of a non-sparse …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03714` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.deviceAddress` must be aligned to `8` bytes
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03715` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.arrayOfPointers` is `VK_FALSE`, …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03716` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.arrayOfPointers` is `VK_TRUE`, …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03717` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.arrayOfPointers` is `VK_TRUE`, each element of …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03813` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, `geometry.instances.data.deviceAddress` must be a valid device …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03814` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.instances.data.deviceAddress` is the address of a …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-06707` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03675` (*yours*; explicit rule): For each `pInfos`\[i\], `dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build …
+- `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; explicit rule): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
+- `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*yours*; passed as ash's raw type): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
+- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
+- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkAccelerationStructureBuildGeometryInfoKHR structures
+- `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBuildAccelerationStructuresKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdBuildAccelerationStructuresKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBuildAccelerationStructuresKHR")]
     #[inline]
     pub unsafe fn build_acceleration_structures_khr<'a>(
@@ -805,16 +1008,16 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
 
 # Valid usage
 
-The rules are on [`vkCmdCopyAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyAccelerationStructureKHR.html). Settled by the wrappers:
+The rules of `vkCmdCopyAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyAccelerationStructureKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyAccelerationStructureKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyAccelerationStructureKHR-buffer-03737` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to device memory
+- `VUID-vkCmdCopyAccelerationStructureKHR-buffer-03738` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to device memory
+- `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureInfoKHR structure
+- `VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyAccelerationStructureKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyAccelerationStructureKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyAccelerationStructureKHR")]
     #[inline]
     pub fn copy_acceleration_structure_khr<'a>(
@@ -880,16 +1083,18 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
 
 # Valid usage
 
-The rules are on [`vkCmdCopyAccelerationStructureToMemoryKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyAccelerationStructureToMemoryKHR.html). Settled by the wrappers:
+The rules of `vkCmdCopyAccelerationStructureToMemoryKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyAccelerationStructureToMemoryKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-pInfo-03739` (*yours*; explicit rule): `pInfo->dst.deviceAddress` must be a valid device address for a buffer bound to device memory
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-pInfo-03740` (*yours*; explicit rule): `pInfo->dst.deviceAddress` must be aligned to `256` bytes
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-pInfo-03741` (*yours*; explicit rule): If the buffer pointed to by `pInfo->dst.deviceAddress` is non-sparse then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-None-03559` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to device memory
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureToMemoryInfoKHR structure
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyAccelerationStructureToMemoryKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyAccelerationStructureToMemoryKHR")]
     #[inline]
     pub fn copy_acceleration_structure_to_memory_khr<'a>(
@@ -956,16 +1161,18 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
 
 # Valid usage
 
-The rules are on [`vkCmdCopyMemoryToAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryToAccelerationStructureKHR.html). Settled by the wrappers:
+The rules of `vkCmdCopyMemoryToAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryToAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-pInfo-03742` (*yours*; explicit rule): `pInfo->src.deviceAddress` must be a valid device address for a buffer bound to device memory
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-pInfo-03743` (*yours*; explicit rule): `pInfo->src.deviceAddress` must be aligned to `256` bytes
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-pInfo-03744` (*yours*; explicit rule): If the buffer pointed to by `pInfo->src.deviceAddress` is non-sparse then it must be bound completely and contiguously to a single VkDeviceMemory object
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-buffer-03745` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to device memory
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToAccelerationStructureInfoKHR structure
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyMemoryToAccelerationStructureKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyMemoryToAccelerationStructureKHR")]
     #[inline]
     pub fn copy_memory_to_acceleration_structure_khr<'a>(
@@ -1032,20 +1239,26 @@ The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_
 
 # Valid usage
 
-The rules are on [`vkCmdWriteAccelerationStructuresPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteAccelerationStructuresPropertiesKHR.html). Settled by the wrappers:
+The rules of `vkCmdWriteAccelerationStructuresPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteAccelerationStructuresPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryPool-02493` (*yours*; explicit rule): `queryPool` must have been created with a `queryType` matching `queryType`
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryPool-02494` (*yours*; explicit rule): The queries identified by `queryPool` and `firstQuery` must be unavailable
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-buffer-03736` (*yours*; explicit rule): The `buffer` used to create each acceleration structure in `pAccelerationStructures` must be bound to device memory
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-query-04880` (*yours*; explicit rule): The sum of `query` plus `accelerationStructureCount` must be less than or equal to the number of queries in `queryPool`
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-04964` (*yours*; explicit rule): All acceleration structures in `pAccelerationStructures` must have been built prior to the execution of this command
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructures-03431` (*yours*; explicit rule): All acceleration structures in `pAccelerationStructures` must have been built with `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR` if `queryType` is …
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-06742` (*yours*; explicit rule): `queryType` must be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR`, `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR`, …
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-03432` (*yours*; explicit rule): `queryType` must be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR` or `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR`
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-parameter` (*checked*): `queryType` must be a valid VkQueryType value
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength` (*checked*): `accelerationStructureCount` must be greater than `0`
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent` (*checked*): Each of `commandBuffer`, `queryPool`, and the elements of `pAccelerationStructures` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parameter` (*by the types*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid VkAccelerationStructureKHR handles
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesKHR")]
     #[inline]
     pub fn write_acceleration_structures_properties_khr(

@@ -14,12 +14,12 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkCreateAndroidSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAndroidSurfaceKHR.html). Settled by the wrappers:
+The rules of `vkCreateAndroidSurfaceKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAndroidSurfaceKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateAndroidSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateAndroidSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateAndroidSurfaceKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateAndroidSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateAndroidSurfaceKHR-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateAndroidSurfaceKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkAndroidSurfaceCreateInfoKHR structure
+- `VUID-vkCreateAndroidSurfaceKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateAndroidSurfaceKHR-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateAndroidSurfaceKHR")]
     #[inline]
     pub unsafe fn create_android_surface_khr<'a>(

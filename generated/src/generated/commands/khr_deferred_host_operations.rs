@@ -8,11 +8,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkCreateDeferredOperationKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDeferredOperationKHR.html). Settled by the wrappers:
+The rules of `vkCreateDeferredOperationKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDeferredOperationKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDeferredOperationKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDeferredOperationKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDeferredOperationKHR-pDeferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDeferredOperationKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateDeferredOperationKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDeferredOperationKHR-pDeferredOperation-parameter` (*by the types*): `pDeferredOperation` must be a valid pointer to a VkDeferredOperationKHR handle*/
     #[doc(alias = "vkCreateDeferredOperationKHR")]
     #[inline]
     pub fn create_deferred_operation_khr(&self) -> Result<DeferredOperationKHR> {
@@ -34,11 +34,11 @@ The rules are on [`vkCreateDeferredOperationKHR`'s reference page](https://regis
 
 # Valid usage
 
-The rules are on [`vkDeferredOperationJoinKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeferredOperationJoinKHR.html). Settled by the wrappers:
+The rules of `vkDeferredOperationJoinKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeferredOperationJoinKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkDeferredOperationJoinKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkDeferredOperationJoinKHR-operation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkDeferredOperationJoinKHR-operation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkDeferredOperationJoinKHR-operation-parent` (*checked*): `operation` must have been created, allocated, or retrieved from `device`
+- `VUID-vkDeferredOperationJoinKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkDeferredOperationJoinKHR-operation-parameter` (*by the types*): `operation` must be a valid VkDeferredOperationKHR handle*/
     #[doc(alias = "vkDeferredOperationJoinKHR")]
     #[inline]
     pub fn deferred_operation_join_khr(
@@ -80,11 +80,11 @@ The caller upholds the rules that [`Self::deferred_operation_join_khr`] checks a
 
 # Valid usage
 
-The rules are on [`vkGetDeferredOperationMaxConcurrencyKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeferredOperationMaxConcurrencyKHR.html). Settled by the wrappers:
+The rules of `vkGetDeferredOperationMaxConcurrencyKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeferredOperationMaxConcurrencyKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeferredOperationMaxConcurrencyKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parent` (*checked*): `operation` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetDeferredOperationMaxConcurrencyKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parameter` (*by the types*): `operation` must be a valid VkDeferredOperationKHR handle*/
     #[doc(alias = "vkGetDeferredOperationMaxConcurrencyKHR")]
     #[inline]
     pub fn get_deferred_operation_max_concurrency_khr(
@@ -124,11 +124,11 @@ The caller upholds the rules that [`Self::get_deferred_operation_max_concurrency
 
 # Valid usage
 
-The rules are on [`vkGetDeferredOperationResultKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeferredOperationResultKHR.html). Settled by the wrappers:
+The rules of `vkGetDeferredOperationResultKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeferredOperationResultKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeferredOperationResultKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeferredOperationResultKHR-operation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDeferredOperationResultKHR-operation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetDeferredOperationResultKHR-operation-parent` (*checked*): `operation` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetDeferredOperationResultKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeferredOperationResultKHR-operation-parameter` (*by the types*): `operation` must be a valid VkDeferredOperationKHR handle*/
     #[doc(alias = "vkGetDeferredOperationResultKHR")]
     #[inline]
     pub fn get_deferred_operation_result_khr(

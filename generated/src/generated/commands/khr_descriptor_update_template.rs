@@ -12,17 +12,19 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdPushDescriptorSetWithTemplateKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPushDescriptorSetWithTemplateKHR.html). Settled by the wrappers:
+The rules of `vkCmdPushDescriptorSetWithTemplateKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPushDescriptorSetWithTemplateKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-descriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-00366` (*yours*; explicit rule): The `pipelineBindPoint` specified during the creation of the descriptor update template must be supported by the `commandBuffer`&#8217;s parent `VkCommandPool`&#8217;s queue family
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-pData-01686` (*yours*; explicit rule): `pData` must be a valid pointer to a memory containing one or more valid instances of VkDescriptorImageInfo, VkDescriptorBufferInfo, or VkBufferView in a layout defined by `descriptorUpdateTemplate` …
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-set-07304` (*yours*; explicit rule): `set` must be less than VkPipelineLayoutCreateInfo::`setLayoutCount` provided when `layout` was created
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-set-07305` (*yours*; explicit rule): `set` must be the unique set number in the pipeline layout that uses a descriptor set layout that was created with `VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR`
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent` (*checked*): Each of `commandBuffer`, `descriptorUpdateTemplate`, and `layout` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-descriptorUpdateTemplate-parameter` (*by the types*): `descriptorUpdateTemplate` must be a valid VkDescriptorUpdateTemplate handle
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdPushDescriptorSetWithTemplateKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdPushDescriptorSetWithTemplateKHR")]
     #[inline]
     pub unsafe fn push_descriptor_set_with_template_khr(

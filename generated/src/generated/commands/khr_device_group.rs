@@ -17,13 +17,12 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkAcquireNextImage2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImage2KHR.html). Settled by the wrappers:
+The rules of `vkAcquireNextImage2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImage2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireNextImage2KHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquireNextImage2KHR-pAcquireInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkAcquireNextImage2KHR-surface-07784` (*yours*; explicit rule): If forward progress cannot be guaranteed for the `surface` used to create `swapchain`, the `timeout` member of `pAcquireInfo` must not be `UINT64_MAX`
+- `VUID-vkAcquireNextImage2KHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAcquireNextImage2KHR-pAcquireInfo-parameter` (*by the types*): `pAcquireInfo` must be a valid pointer to a valid VkAcquireNextImageInfoKHR structure
+- `VUID-vkAcquireNextImage2KHR-pImageIndex-parameter` (*by the types*): `pImageIndex` must be a valid pointer to a `uint32_t` value*/
     #[doc(alias = "vkAcquireNextImage2KHR")]
     #[inline]
     pub unsafe fn acquire_next_image2_khr<'a>(
@@ -84,10 +83,10 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPresentCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `vkGetDeviceGroupPresentCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPresentCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceGroupPresentCapabilitiesKHR-pDeviceGroupPresentCapabilities-parameter` (*by the types*): `pDeviceGroupPresentCapabilities` must be a valid pointer to a VkDeviceGroupPresentCapabilitiesKHR structure*/
     #[doc(alias = "vkGetDeviceGroupPresentCapabilitiesKHR")]
     #[inline]
     pub fn get_group_present_capabilities_khr<'a>(
@@ -117,14 +116,13 @@ The rules are on [`vkGetDeviceGroupPresentCapabilitiesKHR`'s reference page](htt
 
 # Valid usage
 
-The rules are on [`vkGetDeviceGroupSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModesKHR.html). Settled by the wrappers:
+The rules of `vkGetDeviceGroupSurfacePresentModesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupSurfacePresentModesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212` (*yours*; checked by the safe methods in every build): `surface` must be supported by all physical devices associated with `device`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent` (*checked*): Both of `device`, and `surface` must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-parameter` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetDeviceGroupSurfacePresentModesKHR-pModes-parameter` (*by the types*): `pModes` must be a valid pointer to a VkDeviceGroupPresentModeFlagsKHR value*/
     #[doc(alias = "vkGetDeviceGroupSurfacePresentModesKHR")]
     #[inline]
     pub fn get_group_surface_present_modes_khr(
@@ -192,16 +190,15 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDevicePresentRectanglesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDevicePresentRectanglesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDevicePresentRectanglesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDevicePresentRectanglesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRectCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211` (*yours*; checked by the safe methods in every build): `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06523` (*checked*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent` (*checked*): Both of `physicalDevice`, and `surface` must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-parameter` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRectCount-parameter` (*by the types*): `pRectCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDevicePresentRectanglesKHR-pRects-parameter` (*by the types*): If the value referenced by `pRectCount` is not `0`, and `pRects` is not `NULL`, `pRects` must be a valid pointer to an array of `pRectCount` VkRect2D structures*/
     #[doc(alias = "vkGetPhysicalDevicePresentRectanglesKHR")]
     #[inline]
     pub fn get_present_rectangles_khr(

@@ -16,15 +16,14 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateDisplayModeKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDisplayModeKHR.html). Settled by the wrappers:
+The rules of `vkCreateDisplayModeKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDisplayModeKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDisplayModeKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDisplayModeKHR-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateDisplayModeKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDisplayModeKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDisplayModeKHR-pMode-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+- `VUID-vkCreateDisplayModeKHR-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
+- `VUID-vkCreateDisplayModeKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkCreateDisplayModeKHR-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkCreateDisplayModeKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDisplayModeCreateInfoKHR structure
+- `VUID-vkCreateDisplayModeKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDisplayModeKHR-pMode-parameter` (*by the types*): `pMode` must be a valid pointer to a VkDisplayModeKHR handle*/
     #[doc(alias = "vkCreateDisplayModeKHR")]
     #[inline]
     pub unsafe fn create_display_mode_khr<'a>(
@@ -98,14 +97,13 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetDisplayModePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayModePropertiesKHR.html). Settled by the wrappers:
+The rules of `vkGetDisplayModePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayModePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDisplayModePropertiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDisplayModePropertiesKHR-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDisplayModePropertiesKHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDisplayModePropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+- `VUID-vkGetDisplayModePropertiesKHR-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
+- `VUID-vkGetDisplayModePropertiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetDisplayModePropertiesKHR-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkGetDisplayModePropertiesKHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetDisplayModePropertiesKHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayModePropertiesKHR structures*/
     #[doc(alias = "vkGetDisplayModePropertiesKHR")]
     #[inline]
     pub unsafe fn get_display_mode_properties_khr(
@@ -132,11 +130,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (`par
 
 # Valid usage
 
-The rules are on [`vkGetDisplayPlaneCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayPlaneCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `vkGetDisplayPlaneCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayPlaneCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDisplayPlaneCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDisplayPlaneCapabilitiesKHR-mode-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDisplayPlaneCapabilitiesKHR-pCapabilities-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetDisplayPlaneCapabilitiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetDisplayPlaneCapabilitiesKHR-mode-parameter` (*by the types*): `mode` must be a valid VkDisplayModeKHR handle
+- `VUID-vkGetDisplayPlaneCapabilitiesKHR-pCapabilities-parameter` (*by the types*): `pCapabilities` must be a valid pointer to a VkDisplayPlaneCapabilitiesKHR structure*/
     #[doc(alias = "vkGetDisplayPlaneCapabilitiesKHR")]
     #[inline]
     pub fn get_display_plane_capabilities_khr(
@@ -175,13 +173,12 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkGetDisplayPlaneSupportedDisplaysKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayPlaneSupportedDisplaysKHR.html). Settled by the wrappers:
+The rules of `vkGetDisplayPlaneSupportedDisplaysKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayPlaneSupportedDisplaysKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-pDisplayCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-pDisplays-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-planeIndex-01249` (*yours*; explicit rule): `planeIndex` must be less than the number of display planes supported by the device as determined by calling `vkGetPhysicalDeviceDisplayPlanePropertiesKHR`
+- `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-pDisplayCount-parameter` (*by the types*): `pDisplayCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetDisplayPlaneSupportedDisplaysKHR-pDisplays-parameter` (*by the types*): If the value referenced by `pDisplayCount` is not `0`, and `pDisplays` is not `NULL`, `pDisplays` must be a valid pointer to an array of `pDisplayCount` VkDisplayKHR handles*/
     #[doc(alias = "vkGetDisplayPlaneSupportedDisplaysKHR")]
     #[inline]
     pub unsafe fn get_display_plane_supported_displays_khr(
@@ -216,11 +213,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (expl
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceDisplayPlanePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayPlanePropertiesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceDisplayPlanePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayPlanePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceDisplayPlanePropertiesKHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayPlanePropertiesKHR structures*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayPlanePropertiesKHR")]
     #[inline]
     pub fn get_display_plane_properties_khr(
@@ -246,11 +243,11 @@ The rules are on [`vkGetPhysicalDeviceDisplayPlanePropertiesKHR`'s reference pag
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceDisplayPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayPropertiesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceDisplayPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceDisplayPropertiesKHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayPropertiesKHR structures*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayPropertiesKHR")]
     #[inline]
     pub fn get_display_properties_khr(
@@ -289,12 +286,12 @@ The caller upholds these 5 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateDisplayPlaneSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDisplayPlaneSurfaceKHR.html). Settled by the wrappers:
+The rules of `vkCreateDisplayPlaneSurfaceKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDisplayPlaneSurfaceKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDisplaySurfaceCreateInfoKHR structure
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateDisplayPlaneSurfaceKHR")]
     #[inline]
     pub unsafe fn create_display_plane_surface_khr<'a>(

@@ -12,13 +12,13 @@ The wrappers cannot lock `pCreateInfos[].surface`, `pCreateInfos[].oldSwapchain`
 
 # Valid usage
 
-The rules are on [`vkCreateSharedSwapchainsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSharedSwapchainsKHR.html). Settled by the wrappers:
+The rules of `vkCreateSharedSwapchainsKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSharedSwapchainsKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateSharedSwapchainsKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSharedSwapchainsKHR-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSharedSwapchainsKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSharedSwapchainsKHR-pSwapchains-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateSharedSwapchainsKHR-swapchainCount-arraylength`: dynamic (checks the slice is not empty)*/
+- `VUID-vkCreateSharedSwapchainsKHR-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-vkCreateSharedSwapchainsKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateSharedSwapchainsKHR-pCreateInfos-parameter` (*by the types*): `pCreateInfos` must be a valid pointer to an array of `swapchainCount` valid VkSwapchainCreateInfoKHR structures
+- `VUID-vkCreateSharedSwapchainsKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateSharedSwapchainsKHR-pSwapchains-parameter` (*by the types*): `pSwapchains` must be a valid pointer to an array of `swapchainCount` VkSwapchainKHR handles*/
     #[doc(alias = "vkCreateSharedSwapchainsKHR")]
     #[inline]
     pub unsafe fn create_shared_swapchains_khr<'a>(

@@ -17,11 +17,11 @@ The caller upholds these 4 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetFenceFdKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceFdKHR.html). Settled by the wrappers:
+The rules of `vkGetFenceFdKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceFdKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetFenceFdKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetFenceFdKHR-pGetFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetFenceFdKHR-pFd-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetFenceFdKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetFenceFdKHR-pGetFdInfo-parameter` (*by the types*): `pGetFdInfo` must be a valid pointer to a valid VkFenceGetFdInfoKHR structure
+- `VUID-vkGetFenceFdKHR-pFd-parameter` (*by the types*): `pFd` must be a valid pointer to an `int` value*/
     #[doc(alias = "vkGetFenceFdKHR")]
     #[inline]
     pub unsafe fn get_fence_fd_khr<'a>(
@@ -79,12 +79,11 @@ The caller upholds these 4 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkImportFenceFdKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportFenceFdKHR.html). Settled by the wrappers:
+The rules of `vkImportFenceFdKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportFenceFdKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkImportFenceFdKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkImportFenceFdKHR-pImportFenceFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkImportFenceFdKHR-fence-01463` (*yours*; explicit rule): `fence` must not be associated with any queue command that has not yet completed execution on that queue
+- `VUID-vkImportFenceFdKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkImportFenceFdKHR-pImportFenceFdInfo-parameter` (*by the types*): `pImportFenceFdInfo` must be a valid pointer to a valid VkImportFenceFdInfoKHR structure*/
     #[doc(alias = "vkImportFenceFdKHR")]
     #[inline]
     pub unsafe fn import_fence_fd_khr<'a>(

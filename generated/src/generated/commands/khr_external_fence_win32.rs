@@ -12,12 +12,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetFenceWin32HandleKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceWin32HandleKHR.html). Settled by the wrappers:
+The rules of `vkGetFenceWin32HandleKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceWin32HandleKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetFenceWin32HandleKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetFenceWin32HandleKHR-pGetWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetFenceWin32HandleKHR-pHandle-parameter` (*yours*; passed as ash's raw type): `pHandle` must be a valid pointer to a `HANDLE` value
+- `VUID-vkGetFenceWin32HandleKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetFenceWin32HandleKHR-pGetWin32HandleInfo-parameter` (*by the types*): `pGetWin32HandleInfo` must be a valid pointer to a valid VkFenceGetWin32HandleInfoKHR structure*/
     #[doc(alias = "vkGetFenceWin32HandleKHR")]
     #[inline]
     pub unsafe fn get_fence_win32_handle_khr<'a>(
@@ -70,12 +69,11 @@ The caller upholds the rules that [`Self::get_fence_win32_handle_khr`] checks at
 
 # Valid usage
 
-The rules are on [`vkImportFenceWin32HandleKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportFenceWin32HandleKHR.html). Settled by the wrappers:
+The rules of `vkImportFenceWin32HandleKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportFenceWin32HandleKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkImportFenceWin32HandleKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkImportFenceWin32HandleKHR-pImportFenceWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkImportFenceWin32HandleKHR-fence-04448` (*yours*; explicit rule): `fence` must not be associated with any queue command that has not yet completed execution on that queue
+- `VUID-vkImportFenceWin32HandleKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkImportFenceWin32HandleKHR-pImportFenceWin32HandleInfo-parameter` (*by the types*): `pImportFenceWin32HandleInfo` must be a valid pointer to a valid VkImportFenceWin32HandleInfoKHR structure*/
     #[doc(alias = "vkImportFenceWin32HandleKHR")]
     #[inline]
     pub fn import_fence_win32_handle_khr<'a>(

@@ -8,11 +8,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetMemoryFdKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryFdKHR.html). Settled by the wrappers:
+The rules of `vkGetMemoryFdKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryFdKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryFdKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryFdKHR-pGetFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetMemoryFdKHR-pFd-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetMemoryFdKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryFdKHR-pGetFdInfo-parameter` (*by the types*): `pGetFdInfo` must be a valid pointer to a valid VkMemoryGetFdInfoKHR structure
+- `VUID-vkGetMemoryFdKHR-pFd-parameter` (*by the types*): `pFd` must be a valid pointer to an `int` value*/
     #[doc(alias = "vkGetMemoryFdKHR")]
     #[inline]
     pub fn get_memory_fd_khr<'a>(
@@ -61,13 +61,13 @@ The caller upholds the rules that [`Self::get_memory_fd_khr`] checks at run time
 
 # Valid usage
 
-The rules are on [`vkGetMemoryFdPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryFdPropertiesKHR.html). Settled by the wrappers:
+The rules of `vkGetMemoryFdPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryFdPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryFdPropertiesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryFdPropertiesKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetMemoryFdPropertiesKHR-pMemoryFdProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetMemoryFdPropertiesKHR-fd-00673` (*yours*; explicit rule): `fd` must be an external memory handle created outside of the Vulkan API
+- `VUID-vkGetMemoryFdPropertiesKHR-handleType-00674` (*yours*; explicit rule): `handleType` must not be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT`
+- `VUID-vkGetMemoryFdPropertiesKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-vkGetMemoryFdPropertiesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryFdPropertiesKHR-pMemoryFdProperties-parameter` (*by the types*): `pMemoryFdProperties` must be a valid pointer to a VkMemoryFdPropertiesKHR structure*/
     #[doc(alias = "vkGetMemoryFdPropertiesKHR")]
     #[inline]
     pub fn get_memory_fd_properties_khr<'a>(

@@ -12,12 +12,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetMemoryWin32HandleKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandleKHR.html). Settled by the wrappers:
+The rules of `vkGetMemoryWin32HandleKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandleKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryWin32HandleKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryWin32HandleKHR-pGetWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetMemoryWin32HandleKHR-pHandle-parameter` (*yours*; passed as ash's raw type): `pHandle` must be a valid pointer to a `HANDLE` value
+- `VUID-vkGetMemoryWin32HandleKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryWin32HandleKHR-pGetWin32HandleInfo-parameter` (*by the types*): `pGetWin32HandleInfo` must be a valid pointer to a valid VkMemoryGetWin32HandleInfoKHR structure*/
     #[doc(alias = "vkGetMemoryWin32HandleKHR")]
     #[inline]
     pub unsafe fn get_memory_win32_handle_khr<'a>(
@@ -74,13 +73,13 @@ The caller upholds the rules that [`Self::get_memory_win32_handle_khr`] checks a
 
 # Valid usage
 
-The rules are on [`vkGetMemoryWin32HandlePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandlePropertiesKHR.html). Settled by the wrappers:
+The rules of `vkGetMemoryWin32HandlePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandlePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryWin32HandlePropertiesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryWin32HandlePropertiesKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetMemoryWin32HandlePropertiesKHR-pMemoryWin32HandleProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetMemoryWin32HandlePropertiesKHR-handle-00665` (*yours*; explicit rule): `handle` must be an external memory handle created outside of the Vulkan API
+- `VUID-vkGetMemoryWin32HandlePropertiesKHR-handleType-00666` (*yours*; explicit rule): `handleType` must not be one of the handle types defined as opaque
+- `VUID-vkGetMemoryWin32HandlePropertiesKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-vkGetMemoryWin32HandlePropertiesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryWin32HandlePropertiesKHR-pMemoryWin32HandleProperties-parameter` (*by the types*): `pMemoryWin32HandleProperties` must be a valid pointer to a VkMemoryWin32HandlePropertiesKHR structure*/
     #[doc(alias = "vkGetMemoryWin32HandlePropertiesKHR")]
     #[inline]
     pub unsafe fn get_memory_win32_handle_properties_khr<'a>(

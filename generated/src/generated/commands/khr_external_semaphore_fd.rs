@@ -20,11 +20,11 @@ The caller upholds these 7 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetSemaphoreFdKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreFdKHR.html). Settled by the wrappers:
+The rules of `vkGetSemaphoreFdKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreFdKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSemaphoreFdKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSemaphoreFdKHR-pGetFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetSemaphoreFdKHR-pFd-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetSemaphoreFdKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSemaphoreFdKHR-pGetFdInfo-parameter` (*by the types*): `pGetFdInfo` must be a valid pointer to a valid VkSemaphoreGetFdInfoKHR structure
+- `VUID-vkGetSemaphoreFdKHR-pFd-parameter` (*by the types*): `pFd` must be a valid pointer to an `int` value*/
     #[doc(alias = "vkGetSemaphoreFdKHR")]
     #[inline]
     pub unsafe fn get_semaphore_fd_khr<'a>(
@@ -85,12 +85,11 @@ The caller upholds these 7 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkImportSemaphoreFdKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportSemaphoreFdKHR.html). Settled by the wrappers:
+The rules of `vkImportSemaphoreFdKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportSemaphoreFdKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkImportSemaphoreFdKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkImportSemaphoreFdKHR-pImportSemaphoreFdInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkImportSemaphoreFdKHR-semaphore-01142` (*yours*; explicit rule): `semaphore` must not be associated with any queue command that has not yet completed execution on that queue
+- `VUID-vkImportSemaphoreFdKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkImportSemaphoreFdKHR-pImportSemaphoreFdInfo-parameter` (*by the types*): `pImportSemaphoreFdInfo` must be a valid pointer to a valid VkImportSemaphoreFdInfoKHR structure*/
     #[doc(alias = "vkImportSemaphoreFdKHR")]
     #[inline]
     pub unsafe fn import_semaphore_fd_khr<'a>(

@@ -12,12 +12,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetSemaphoreWin32HandleKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreWin32HandleKHR.html). Settled by the wrappers:
+The rules of `vkGetSemaphoreWin32HandleKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreWin32HandleKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSemaphoreWin32HandleKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSemaphoreWin32HandleKHR-pGetWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetSemaphoreWin32HandleKHR-pHandle-parameter` (*yours*; passed as ash's raw type): `pHandle` must be a valid pointer to a `HANDLE` value
+- `VUID-vkGetSemaphoreWin32HandleKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSemaphoreWin32HandleKHR-pGetWin32HandleInfo-parameter` (*by the types*): `pGetWin32HandleInfo` must be a valid pointer to a valid VkSemaphoreGetWin32HandleInfoKHR structure*/
     #[doc(alias = "vkGetSemaphoreWin32HandleKHR")]
     #[inline]
     pub unsafe fn get_semaphore_win32_handle_khr<'a>(
@@ -70,10 +69,10 @@ The caller upholds the rules that [`Self::get_semaphore_win32_handle_khr`] check
 
 # Valid usage
 
-The rules are on [`vkImportSemaphoreWin32HandleKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportSemaphoreWin32HandleKHR.html). Settled by the wrappers:
+The rules of `vkImportSemaphoreWin32HandleKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkImportSemaphoreWin32HandleKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkImportSemaphoreWin32HandleKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkImportSemaphoreWin32HandleKHR-pImportSemaphoreWin32HandleInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkImportSemaphoreWin32HandleKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkImportSemaphoreWin32HandleKHR-pImportSemaphoreWin32HandleInfo-parameter` (*by the types*): `pImportSemaphoreWin32HandleInfo` must be a valid pointer to a valid VkImportSemaphoreWin32HandleInfoKHR structure*/
     #[doc(alias = "vkImportSemaphoreWin32HandleKHR")]
     #[inline]
     pub fn import_semaphore_win32_handle_khr<'a>(

@@ -8,16 +8,26 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetFragmentShadingRateKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetFragmentShadingRateKHR.html). Settled by the wrappers:
+The rules of `vkCmdSetFragmentShadingRateKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetFragmentShadingRateKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetFragmentShadingRateKHR-combinerOps-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetFragmentShadingRateKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetFragmentShadingRateKHR-pipelineFragmentShadingRate-04507` (*yours*; explicit rule): If `pipelineFragmentShadingRate` is not enabled, `pFragmentSize->width` must be `1`
+- `VUID-vkCmdSetFragmentShadingRateKHR-pipelineFragmentShadingRate-04508` (*yours*; explicit rule): If `pipelineFragmentShadingRate` is not enabled, `pFragmentSize->height` must be `1`
+- `VUID-vkCmdSetFragmentShadingRateKHR-pipelineFragmentShadingRate-04509` (*yours*; explicit rule): One of `pipelineFragmentShadingRate`, `primitiveFragmentShadingRate`, or `attachmentFragmentShadingRate` must be enabled
+- `VUID-vkCmdSetFragmentShadingRateKHR-primitiveFragmentShadingRate-04510` (*yours*; explicit rule): If the `primitiveFragmentShadingRate` feature is not enabled, `combinerOps`\[0\] must be `VK_FRAGMENT_SHADING_RATE_COMBINER_OP_KEEP_KHR`
+- `VUID-vkCmdSetFragmentShadingRateKHR-attachmentFragmentShadingRate-04511` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `combinerOps`\[1\] must be `VK_FRAGMENT_SHADING_RATE_COMBINER_OP_KEEP_KHR`
+- `VUID-vkCmdSetFragmentShadingRateKHR-fragmentSizeNonTrivialCombinerOps-04512` (*yours*; explicit rule): If the `fragmentSizeNonTrivialCombinerOps` limit is not supported, elements of `combinerOps` must be either `VK_FRAGMENT_SHADING_RATE_COMBINER_OP_KEEP_KHR` or …
+- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-04513` (*yours*; explicit rule): `pFragmentSize->width` must be greater than or equal to `1`
+- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-04514` (*yours*; explicit rule): `pFragmentSize->height` must be greater than or equal to `1`
+- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-04515` (*yours*; explicit rule): `pFragmentSize->width` must be a power-of-two value
+- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-04516` (*yours*; explicit rule): `pFragmentSize->height` must be a power-of-two value
+- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-04517` (*yours*; explicit rule): `pFragmentSize->width` must be less than or equal to `4`
+- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-04518` (*yours*; explicit rule): `pFragmentSize->height` must be less than or equal to `4`
+- `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetFragmentShadingRateKHR-pFragmentSize-parameter` (*by the types*): `pFragmentSize` must be a valid pointer to a valid VkExtent2D structure
+- `VUID-vkCmdSetFragmentShadingRateKHR-combinerOps-parameter` (*by the types*): Any given element of `combinerOps` must be a valid VkFragmentShadingRateCombinerOpKHR value
+- `VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetFragmentShadingRateKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetFragmentShadingRateKHR")]
     #[inline]
     pub fn set_fragment_shading_rate_khr(
@@ -73,11 +83,11 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceFragmentShadingRatesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFragmentShadingRatesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceFragmentShadingRatesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFragmentShadingRatesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-pFragmentShadingRateCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-pFragmentShadingRates-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-pFragmentShadingRateCount-parameter` (*by the types*): `pFragmentShadingRateCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceFragmentShadingRatesKHR-pFragmentShadingRates-parameter` (*by the types*): If the value referenced by `pFragmentShadingRateCount` is not `0`, and `pFragmentShadingRates` is not `NULL`, `pFragmentShadingRates` must be a valid pointer to an array of `pFragmentShadingRateCount` …*/
     #[doc(alias = "vkGetPhysicalDeviceFragmentShadingRatesKHR")]
     #[inline]
     pub fn get_fragment_shading_rates_khr(

@@ -16,14 +16,13 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetDisplayModeProperties2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayModeProperties2KHR.html). Settled by the wrappers:
+The rules of `vkGetDisplayModeProperties2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayModeProperties2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDisplayModeProperties2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDisplayModeProperties2KHR-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDisplayModeProperties2KHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDisplayModeProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+- `VUID-vkGetDisplayModeProperties2KHR-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
+- `VUID-vkGetDisplayModeProperties2KHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetDisplayModeProperties2KHR-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkGetDisplayModeProperties2KHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetDisplayModeProperties2KHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayModeProperties2KHR structures*/
     #[doc(alias = "vkGetDisplayModeProperties2KHR")]
     #[inline]
     pub unsafe fn get_display_mode_properties2_khr(
@@ -50,11 +49,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (`par
 
 # Valid usage
 
-The rules are on [`vkGetDisplayPlaneCapabilities2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayPlaneCapabilities2KHR.html). Settled by the wrappers:
+The rules of `vkGetDisplayPlaneCapabilities2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayPlaneCapabilities2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDisplayPlaneCapabilities2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDisplayPlaneCapabilities2KHR-pDisplayPlaneInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDisplayPlaneCapabilities2KHR-pCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDisplayPlaneCapabilities2KHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetDisplayPlaneCapabilities2KHR-pDisplayPlaneInfo-parameter` (*by the types*): `pDisplayPlaneInfo` must be a valid pointer to a valid VkDisplayPlaneInfo2KHR structure
+- `VUID-vkGetDisplayPlaneCapabilities2KHR-pCapabilities-parameter` (*by the types*): `pCapabilities` must be a valid pointer to a VkDisplayPlaneCapabilities2KHR structure*/
     #[doc(alias = "vkGetDisplayPlaneCapabilities2KHR")]
     #[inline]
     pub fn get_display_plane_capabilities2_khr<'a>(
@@ -86,11 +85,11 @@ The rules are on [`vkGetDisplayPlaneCapabilities2KHR`'s reference page](https://
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceDisplayPlaneProperties2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayPlaneProperties2KHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceDisplayPlaneProperties2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayPlaneProperties2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceDisplayPlaneProperties2KHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayPlaneProperties2KHR structures*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayPlaneProperties2KHR")]
     #[inline]
     pub fn get_display_plane_properties2_khr(
@@ -116,11 +115,11 @@ The rules are on [`vkGetPhysicalDeviceDisplayPlaneProperties2KHR`'s reference pa
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceDisplayProperties2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayProperties2KHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceDisplayProperties2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceDisplayProperties2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceDisplayProperties2KHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayProperties2KHR structures*/
     #[doc(alias = "vkGetPhysicalDeviceDisplayProperties2KHR")]
     #[inline]
     pub fn get_display_properties2_khr(

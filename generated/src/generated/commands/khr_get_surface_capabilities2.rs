@@ -8,13 +8,20 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfaceCapabilities2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilities2KHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfaceCapabilities2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilities2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceInfo-06521` (*yours*; explicit rule): If the VK_GOOGLE_surfaceless_query extension is not enabled, `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceInfo-06522` (*yours*; explicit rule): If `pSurfaceInfo->surface` is not VK_NULL_HANDLE, it must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceInfo-06520` (*yours*; explicit rule): `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceInfo-06210` (*yours*; explicit rule): `pSurfaceInfo->surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pNext-02671` (*yours*; explicit rule): If a VkSurfaceCapabilitiesFullScreenExclusiveEXT structure is included in the `pNext` chain of `pSurfaceCapabilities`, a VkSurfaceFullScreenExclusiveWin32InfoEXT structure must be included in the …
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pNext-07776` (*yours*; explicit rule): If a VkSurfacePresentModeCompatibilityEXT structure is included in the `pNext` chain of `pSurfaceCapabilities`, a VkSurfacePresentModeEXT structure must be included in the `pNext` chain of …
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pNext-07777` (*yours*; explicit rule): If a VkSurfacePresentScalingCapabilitiesEXT structure is included in the `pNext` chain of `pSurfaceCapabilities`, a VkSurfacePresentModeEXT structure must be included in the `pNext` chain of …
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pNext-07778` (*yours*; explicit rule): If a VkSurfacePresentModeCompatibilityEXT structure is included in the `pNext` chain of `pSurfaceCapabilities`, `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pNext-07779` (*yours*; explicit rule): If a VkSurfacePresentScalingCapabilitiesEXT structure is included in the `pNext` chain of `pSurfaceCapabilities`, `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceInfo-parameter` (*by the types*): `pSurfaceInfo` must be a valid pointer to a valid VkPhysicalDeviceSurfaceInfo2KHR structure
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilities2KHR-pSurfaceCapabilities-parameter` (*by the types*): `pSurfaceCapabilities` must be a valid pointer to a VkSurfaceCapabilities2KHR structure*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilities2KHR")]
     #[inline]
     pub fn get_surface_capabilities2_khr<'a>(
@@ -74,14 +81,16 @@ The caller upholds the rules that [`Self::get_surface_capabilities2_khr`] checks
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfaceFormats2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormats2KHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfaceFormats2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormats2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceFormatCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceInfo-06521` (*yours*; explicit rule): If the VK_GOOGLE_surfaceless_query extension is not enabled, `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceInfo-06522` (*yours*; explicit rule): If `pSurfaceInfo->surface` is not VK_NULL_HANDLE, it must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceInfo-06520` (*yours*; explicit rule): `pSurfaceInfo->surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceInfo-06210` (*yours*; explicit rule): `pSurfaceInfo->surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceInfo-parameter` (*by the types*): `pSurfaceInfo` must be a valid pointer to a valid VkPhysicalDeviceSurfaceInfo2KHR structure
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceFormatCount-parameter` (*by the types*): `pSurfaceFormatCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceSurfaceFormats2KHR-pSurfaceFormats-parameter` (*by the types*): If the value referenced by `pSurfaceFormatCount` is not `0`, and `pSurfaceFormats` is not `NULL`, `pSurfaceFormats` must be a valid pointer to an array of `pSurfaceFormatCount` VkSurfaceFormat2KHR …*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceFormats2KHR")]
     #[inline]
     pub fn get_surface_formats2_khr<'a>(

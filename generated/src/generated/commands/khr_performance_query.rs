@@ -8,10 +8,10 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkAcquireProfilingLockKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireProfilingLockKHR.html). Settled by the wrappers:
+The rules of `vkAcquireProfilingLockKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireProfilingLockKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireProfilingLockKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquireProfilingLockKHR-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkAcquireProfilingLockKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAcquireProfilingLockKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkAcquireProfilingLockInfoKHR structure*/
     #[doc(alias = "vkAcquireProfilingLockKHR")]
     #[inline]
     pub fn acquire_profiling_lock_khr<'a>(
@@ -55,11 +55,10 @@ The caller upholds the rules that [`Self::acquire_profiling_lock_khr`] checks at
 
 # Valid usage
 
-The rules are on [`vkReleaseProfilingLockKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseProfilingLockKHR.html). Settled by the wrappers:
+The rules of `vkReleaseProfilingLockKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseProfilingLockKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkReleaseProfilingLockKHR-device-parameter`: static (`self` is a live wrapper)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkReleaseProfilingLockKHR-device-03235` (*yours*; explicit rule): The profiling lock of `device` must have been held via a previous successful call to vkAcquireProfilingLockKHR
+- `VUID-vkReleaseProfilingLockKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle*/
     #[doc(alias = "vkReleaseProfilingLockKHR")]
     #[inline]
     pub fn release_profiling_lock_khr(&self) -> Result<()> {
@@ -82,11 +81,11 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-pPerformanceQueryCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-pNumPasses-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-pPerformanceQueryCreateInfo-parameter` (*by the types*): `pPerformanceQueryCreateInfo` must be a valid pointer to a valid VkQueryPoolPerformanceCreateInfoKHR structure
+- `VUID-vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR-pNumPasses-parameter` (*by the types*): `pNumPasses` must be a valid pointer to a `uint32_t` value*/
     #[doc(alias = "vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR")]
     #[inline]
     pub fn get_queue_family_performance_query_passes_khr<'a>(

@@ -8,14 +8,15 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetPipelineExecutableInternalRepresentationsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineExecutableInternalRepresentationsKHR.html). Settled by the wrappers:
+The rules of `vkGetPipelineExecutableInternalRepresentationsKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineExecutableInternalRepresentationsKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pExecutableInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pInternalRepresentationCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pInternalRepresentations-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pipelineExecutableInfo-03276` (*yours*; explicit rule): The `pipelineExecutableInfo` feature must be enabled
+- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pipeline-03277` (*yours*; explicit rule): The `pipeline` member of `pExecutableInfo` must have been created with `device`
+- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pipeline-03278` (*yours*; explicit rule): The `pipeline` member of `pExecutableInfo` must have been created with `VK_PIPELINE_CREATE_CAPTURE_INTERNAL_REPRESENTATIONS_BIT_KHR`
+- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pExecutableInfo-parameter` (*by the types*): `pExecutableInfo` must be a valid pointer to a valid VkPipelineExecutableInfoKHR structure
+- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pInternalRepresentationCount-parameter` (*by the types*): `pInternalRepresentationCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPipelineExecutableInternalRepresentationsKHR-pInternalRepresentations-parameter` (*by the types*): If the value referenced by `pInternalRepresentationCount` is not `0`, and `pInternalRepresentations` is not `NULL`, `pInternalRepresentations` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetPipelineExecutableInternalRepresentationsKHR")]
     #[inline]
     pub fn get_pipeline_executable_internal_representations_khr<'a>(
@@ -46,14 +47,14 @@ Left to the caller (listed one by one in the crate's `validation.json`): 3 (expl
 
 # Valid usage
 
-The rules are on [`vkGetPipelineExecutablePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineExecutablePropertiesKHR.html). Settled by the wrappers:
+The rules of `vkGetPipelineExecutablePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineExecutablePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPipelineExecutablePropertiesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPipelineExecutablePropertiesKHR-pPipelineInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPipelineExecutablePropertiesKHR-pExecutableCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineExecutablePropertiesKHR-pProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPipelineExecutablePropertiesKHR-pipelineExecutableInfo-03270` (*yours*; explicit rule): The `pipelineExecutableInfo` feature must be enabled
+- `VUID-vkGetPipelineExecutablePropertiesKHR-pipeline-03271` (*yours*; explicit rule): The `pipeline` member of `pPipelineInfo` must have been created with `device`
+- `VUID-vkGetPipelineExecutablePropertiesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPipelineExecutablePropertiesKHR-pPipelineInfo-parameter` (*by the types*): `pPipelineInfo` must be a valid pointer to a valid VkPipelineInfoKHR structure
+- `VUID-vkGetPipelineExecutablePropertiesKHR-pExecutableCount-parameter` (*by the types*): `pExecutableCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPipelineExecutablePropertiesKHR-pProperties-parameter` (*by the types*): If the value referenced by `pExecutableCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pExecutableCount` VkPipelineExecutablePropertiesKHR …*/
     #[doc(alias = "vkGetPipelineExecutablePropertiesKHR")]
     #[inline]
     pub fn get_pipeline_executable_properties_khr<'a>(
@@ -84,14 +85,15 @@ Left to the caller (listed one by one in the crate's `validation.json`): 2 (expl
 
 # Valid usage
 
-The rules are on [`vkGetPipelineExecutableStatisticsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineExecutableStatisticsKHR.html). Settled by the wrappers:
+The rules of `vkGetPipelineExecutableStatisticsKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineExecutableStatisticsKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPipelineExecutableStatisticsKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPipelineExecutableStatisticsKHR-pExecutableInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPipelineExecutableStatisticsKHR-pStatisticCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineExecutableStatisticsKHR-pStatistics-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPipelineExecutableStatisticsKHR-pipelineExecutableInfo-03272` (*yours*; explicit rule): The `pipelineExecutableInfo` feature must be enabled
+- `VUID-vkGetPipelineExecutableStatisticsKHR-pipeline-03273` (*yours*; explicit rule): The `pipeline` member of `pExecutableInfo` must have been created with `device`
+- `VUID-vkGetPipelineExecutableStatisticsKHR-pipeline-03274` (*yours*; explicit rule): The `pipeline` member of `pExecutableInfo` must have been created with `VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR`
+- `VUID-vkGetPipelineExecutableStatisticsKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPipelineExecutableStatisticsKHR-pExecutableInfo-parameter` (*by the types*): `pExecutableInfo` must be a valid pointer to a valid VkPipelineExecutableInfoKHR structure
+- `VUID-vkGetPipelineExecutableStatisticsKHR-pStatisticCount-parameter` (*by the types*): `pStatisticCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPipelineExecutableStatisticsKHR-pStatistics-parameter` (*by the types*): If the value referenced by `pStatisticCount` is not `0`, and `pStatistics` is not `NULL`, `pStatistics` must be a valid pointer to an array of `pStatisticCount` VkPipelineExecutableStatisticKHR …*/
     #[doc(alias = "vkGetPipelineExecutableStatisticsKHR")]
     #[inline]
     pub fn get_pipeline_executable_statistics_khr<'a>(

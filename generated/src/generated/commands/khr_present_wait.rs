@@ -8,13 +8,13 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkWaitForPresentKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitForPresentKHR.html). Settled by the wrappers:
+The rules of `vkWaitForPresentKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitForPresentKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkWaitForPresentKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWaitForPresentKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkWaitForPresentKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkWaitForPresentKHR-swapchain-04997` (*yours*; explicit rule): `swapchain` must not be in the retired state
+- `VUID-vkWaitForPresentKHR-presentWait-06234` (*yours*; explicit rule): The `presentWait` feature must be enabled
+- `VUID-vkWaitForPresentKHR-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkWaitForPresentKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkWaitForPresentKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle*/
     #[doc(alias = "vkWaitForPresentKHR")]
     #[inline]
     pub fn wait_for_present_khr(

@@ -8,19 +8,21 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdPushDescriptorSetKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPushDescriptorSetKHR.html). Settled by the wrappers:
+The rules of `vkCmdPushDescriptorSetKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPushDescriptorSetKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdPushDescriptorSetKHR-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdPushDescriptorSetKHR-layout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdPushDescriptorSetKHR-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdPushDescriptorSetKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdPushDescriptorSetKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdPushDescriptorSetKHR-pipelineBindPoint-00363` (*yours*; explicit rule): `pipelineBindPoint` must be supported by the `commandBuffer`&#8217;s parent `VkCommandPool`&#8217;s queue family
+- `VUID-vkCmdPushDescriptorSetKHR-set-00364` (*yours*; explicit rule): `set` must be less than VkPipelineLayoutCreateInfo::`setLayoutCount` provided when `layout` was created
+- `VUID-vkCmdPushDescriptorSetKHR-set-00365` (*yours*; explicit rule): `set` must be the unique set number in the pipeline layout that uses a descriptor set layout that was created with `VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR`
+- `VUID-vkCmdPushDescriptorSetKHR-pDescriptorWrites-06494` (*yours*; explicit rule): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, or `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, …
+- `VUID-vkCmdPushDescriptorSetKHR-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength` (*checked*): `descriptorWriteCount` must be greater than `0`
+- `VUID-vkCmdPushDescriptorSetKHR-commonparent` (*checked*): Both of `commandBuffer`, and `layout` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdPushDescriptorSetKHR-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle
+- `VUID-vkCmdPushDescriptorSetKHR-pDescriptorWrites-parameter` (*by the types*): `pDescriptorWrites` must be a valid pointer to an array of `descriptorWriteCount` valid VkWriteDescriptorSet structures
+- `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdPushDescriptorSetKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdPushDescriptorSetKHR")]
     #[inline]
     pub fn push_descriptor_set_khr<'a>(

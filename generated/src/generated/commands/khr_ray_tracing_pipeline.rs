@@ -9,15 +9,14 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetRayTracingPipelineStackSizeKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRayTracingPipelineStackSizeKHR.html). Settled by the wrappers:
+The rules of `vkCmdSetRayTracingPipelineStackSizeKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetRayTracingPipelineStackSizeKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-pipelineStackSize-03610` (*yours*; explicit rule): `pipelineStackSize` must be large enough for any dynamic execution through the shaders in the ray tracing pipeline used by a subsequent trace call
+- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdSetRayTracingPipelineStackSizeKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetRayTracingPipelineStackSizeKHR")]
     #[inline]
     pub fn set_ray_tracing_pipeline_stack_size_khr(
@@ -62,19 +61,108 @@ The caller upholds the rules that [`Self::set_ray_tracing_pipeline_stack_size_kh
 
 # Valid usage
 
-The rules are on [`vkCmdTraceRaysIndirectKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdTraceRaysIndirectKHR.html). Settled by the wrappers:
+The rules of `vkCmdTraceRaysIndirectKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdTraceRaysIndirectKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdTraceRaysIndirectKHR-pRaygenShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysIndirectKHR-pMissShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysIndirectKHR-pHitShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysIndirectKHR-pCallableShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdTraceRaysIndirectKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdTraceRaysIndirectKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 91 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdTraceRaysIndirectKHR-magFilter-04553` (*yours*; explicit rule): If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image …
+- `VUID-vkCmdTraceRaysIndirectKHR-mipmapMode-04770` (*yours*; explicit rule): If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02691` (*yours*; explicit rule): If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02697` (*yours*; explicit rule): For each set n that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a descriptor set must have been bound to n at the same pipeline bind point, with a …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02700` (*yours*; explicit rule): A valid pipeline must be bound to the pipeline bind point used by this command
+- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-02701` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02859` (*yours*; explicit rule): There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02702` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02703` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02704` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V …
+- `VUID-vkCmdTraceRaysIndirectKHR-viewType-07752` (*yours*; explicit rule): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View …
+- `VUID-vkCmdTraceRaysIndirectKHR-format-07753` (*yours*; explicit rule): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-04115` (*yours*; explicit rule): If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageWrite-04469` (*yours*; explicit rule): If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-07288` (*yours*; explicit rule): Any shader invocation executed by this command must terminate
+- `VUID-vkCmdTraceRaysIndirectKHR-None-03429` (*yours*; explicit rule): Any shader group handle referenced by this call must have been queried from the currently bound ray tracing pipeline
+- `VUID-vkCmdTraceRaysIndirectKHR-maxPipelineRayRecursionDepth-03679` (*yours*; explicit rule): This command must not cause a shader call instruction to be executed from a shader invocation with a recursion depth greater than the value of `maxPipelineRayRecursionDepth` used to create the bound …
+- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-03635` (*yours*; explicit rule): `commandBuffer` must not be a protected command buffer
+- `VUID-vkCmdTraceRaysIndirectKHR-size-04023` (*yours*; explicit rule): The `size` member of `pRayGenShaderBindingTable` must be equal to its `stride` member
+- `VUID-vkCmdTraceRaysIndirectKHR-pRayGenShaderBindingTable-03680` (*yours*; explicit rule): If the buffer from which `pRayGenShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysIndirectKHR-pRayGenShaderBindingTable-03681` (*yours*; explicit rule): The buffer from which the `pRayGenShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysIndirectKHR-pRayGenShaderBindingTable-03682` (*yours*; explicit rule): `pRayGenShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysIndirectKHR-pMissShaderBindingTable-03683` (*yours*; explicit rule): If the buffer from which `pMissShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysIndirectKHR-pMissShaderBindingTable-03684` (*yours*; explicit rule): The buffer from which the `pMissShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysIndirectKHR-pMissShaderBindingTable-03685` (*yours*; explicit rule): `pMissShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysIndirectKHR-stride-03686` (*yours*; explicit rule): `pMissShaderBindingTable`-&gt;stride must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupHandleAlignment`
+- `VUID-vkCmdTraceRaysIndirectKHR-stride-04029` (*yours*; explicit rule): `pMissShaderBindingTable`-&gt;stride must be less than or equal to `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysIndirectKHR-pHitShaderBindingTable-03687` (*yours*; explicit rule): If the buffer from which `pHitShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysIndirectKHR-pHitShaderBindingTable-03688` (*yours*; explicit rule): The buffer from which the `pHitShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysIndirectKHR-pHitShaderBindingTable-03689` (*yours*; explicit rule): `pHitShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysIndirectKHR-stride-03690` (*yours*; explicit rule): `pHitShaderBindingTable`-&gt;stride must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupHandleAlignment`
+- `VUID-vkCmdTraceRaysIndirectKHR-stride-04035` (*yours*; explicit rule): `pHitShaderBindingTable`-&gt;stride must be less than or equal to `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysIndirectKHR-pCallableShaderBindingTable-03691` (*yours*; explicit rule): If the buffer from which `pCallableShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysIndirectKHR-pCallableShaderBindingTable-03692` (*yours*; explicit rule): The buffer from which the `pCallableShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysIndirectKHR-pCallableShaderBindingTable-03693` (*yours*; explicit rule): `pCallableShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysIndirectKHR-stride-03694` (*yours*; explicit rule): `pCallableShaderBindingTable`-&gt;stride must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupHandleAlignment`
+- `VUID-vkCmdTraceRaysIndirectKHR-stride-04041` (*yours*; explicit rule): `pCallableShaderBindingTable`-&gt;stride must be less than or equal to `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysIndirectKHR-flags-03696` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_CLOSEST_HIT_SHADERS_BIT_KHR`, `pHitShaderBindingTable`-&gt;deviceAddress must …
+- `VUID-vkCmdTraceRaysIndirectKHR-flags-03697` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_INTERSECTION_SHADERS_BIT_KHR`, `pHitShaderBindingTable`-&gt;deviceAddress must …
+- `VUID-vkCmdTraceRaysIndirectKHR-flags-03511` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_MISS_SHADERS_BIT_KHR`, the shader group handle identified by …
+- `VUID-vkCmdTraceRaysIndirectKHR-flags-03512` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_ANY_HIT_SHADERS_BIT_KHR`, entries in the table identified by …
+- `VUID-vkCmdTraceRaysIndirectKHR-flags-03513` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_CLOSEST_HIT_SHADERS_BIT_KHR`, entries in the table identified by …
+- `VUID-vkCmdTraceRaysIndirectKHR-flags-03514` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_INTERSECTION_SHADERS_BIT_KHR`, entries in the table identified by …
+- `VUID-vkCmdTraceRaysIndirectKHR-pHitShaderBindingTable-04735` (*yours*; explicit rule): Any non-zero hit shader group entries in the table identified by `pHitShaderBindingTable`-&gt;deviceAddress accessed by this call from a geometry with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR` …
+- `VUID-vkCmdTraceRaysIndirectKHR-pHitShaderBindingTable-04736` (*yours*; explicit rule): Any non-zero hit shader group entries in the table identified by `pHitShaderBindingTable`-&gt;deviceAddress accessed by this call from a geometry with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR` …
+- `VUID-vkCmdTraceRaysIndirectKHR-indirectDeviceAddress-03632` (*yours*; explicit rule): If the buffer from which `indirectDeviceAddress` was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysIndirectKHR-indirectDeviceAddress-03633` (*yours*; explicit rule): The buffer from which `indirectDeviceAddress` was queried must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
+- `VUID-vkCmdTraceRaysIndirectKHR-indirectDeviceAddress-03634` (*yours*; explicit rule): `indirectDeviceAddress` must be a multiple of `4`
+- `VUID-vkCmdTraceRaysIndirectKHR-indirectDeviceAddress-03636` (*yours*; explicit rule): All device addresses between `indirectDeviceAddress` and `indirectDeviceAddress` + `sizeof`(sname:VkTraceRaysIndirectCommandKHR) - 1 must be in the buffer device address range of the same buffer
+- `VUID-vkCmdTraceRaysIndirectKHR-rayTracingPipelineTraceRaysIndirect-03637` (*yours*; explicit rule): The `rayTracingPipelineTraceRaysIndirect` feature must be enabled
+- `VUID-vkCmdTraceRaysIndirectKHR-aspectMask-06478` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view must have been created with an `aspectMask` that contains `VK_IMAGE_ASPECT_DEPTH_BIT`
+- `VUID-vkCmdTraceRaysIndirectKHR-None-06479` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
+- `VUID-vkCmdTraceRaysIndirectKHR-OpTypeImage-07027` (*yours*; explicit rule): For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpTypeImage-07028` (*yours*; explicit rule): For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpTypeImage-07029` (*yours*; explicit rule): For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpTypeImage-07030` (*yours*; explicit rule): Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02692` (*yours*; explicit rule): If a `VkImageView` is sampled with `VK_FILTER_CUBIC_EXT` as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_CUBIC_BIT_EXT`
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02693` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` as a result of this command must not have a VkImageViewType of `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, or …
+- `VUID-vkCmdTraceRaysIndirectKHR-filterCubic-02694` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` as a result of this command must have a VkImageViewType and format that supports cubic filtering, as specified by …
+- `VUID-vkCmdTraceRaysIndirectKHR-filterCubicMinmax-02695` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` with a reduction mode of either `VK_SAMPLER_REDUCTION_MODE_MIN` or `VK_SAMPLER_REDUCTION_MODE_MAX` as a result of this command must have a …
+- `VUID-vkCmdTraceRaysIndirectKHR-flags-02696` (*yours*; explicit rule): Any VkImage created with a VkImageCreateInfo::`flags` containing `VK_IMAGE_CREATE_CORNER_SAMPLED_BIT_NV` sampled as a result of this command must only be sampled using a VkSamplerAddressMode of …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02698` (*yours*; explicit rule): For each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, …
+- `VUID-vkCmdTraceRaysIndirectKHR-maintenance4-06425` (*yours*; explicit rule): If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02699` (*yours*; explicit rule): Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid as described by descriptor validity if they are statically used by the `VkPipeline` bound to the …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-08114` (*yours*; explicit rule): Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid if they are statically used by the `VkPipeline` bound to the pipeline bind point used by this command …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-08115` (*yours*; explicit rule): If the descriptors used by the `VkPipeline` bound to the pipeline bind point were specified via `vkCmdBindDescriptorSets`, the bound `VkPipeline` must have been created without …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-08116` (*yours*; explicit rule): Descriptors in bound descriptor buffers, specified via `vkCmdSetDescriptorBufferOffsetsEXT`, must be valid if they are dynamically used by the `VkPipeline` bound to the pipeline bind point used by …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-08117` (*yours*; explicit rule): If the descriptors used by the `VkPipeline` bound to the pipeline bind point were specified via `vkCmdSetDescriptorBufferOffsetsEXT`, the bound `VkPipeline` must have been created with …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-08119` (*yours*; explicit rule): If a descriptor is dynamically used with a `VkPipeline` created with `VK_PIPELINE_CREATE_DESCRIPTOR_BUFFER_BIT_EXT`, the descriptor memory must be resident
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02705` (*yours*; explicit rule): If the `robustBufferAccess` feature is not enabled, and if the `VkPipeline` object bound to the pipeline bind point used by this command accesses a uniform buffer, it must not access values outside of …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-02706` (*yours*; explicit rule): If the `robustBufferAccess` feature is not enabled, and if the `VkPipeline` object bound to the pipeline bind point used by this command accesses a storage buffer, it must not access values outside of …
+- `VUID-vkCmdTraceRaysIndirectKHR-uniformBuffers-06935` (*yours*; explicit rule): If any stage of the `VkPipeline` object bound to the pipeline bind point used by this command accesses a uniform buffer, and that stage was created without enabling either …
+- `VUID-vkCmdTraceRaysIndirectKHR-storageBuffers-06936` (*yours*; explicit rule): If any stage of the `VkPipeline` object bound to the pipeline bind point used by this command accesses a storage buffer, and that stage was created without enabling either …
+- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-02707` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must …
+- `VUID-vkCmdTraceRaysIndirectKHR-None-06550` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used …
+- `VUID-vkCmdTraceRaysIndirectKHR-ConstOffset-06551` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the …
+- `VUID-vkCmdTraceRaysIndirectKHR-SampledType-04470` (*yours*; explicit rule): If a VkImageView with a VkFormat that has a 64-bit component width is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a `Width` of 64
+- `VUID-vkCmdTraceRaysIndirectKHR-SampledType-04471` (*yours*; explicit rule): If a VkImageView with a VkFormat that has a component width less than 64-bit is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a …
+- `VUID-vkCmdTraceRaysIndirectKHR-SampledType-04472` (*yours*; explicit rule): If a VkBufferView with a VkFormat that has a 64-bit component width is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a `Width` of …
+- `VUID-vkCmdTraceRaysIndirectKHR-SampledType-04473` (*yours*; explicit rule): If a VkBufferView with a VkFormat that has a component width less than 64-bit is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a …
+- `VUID-vkCmdTraceRaysIndirectKHR-sparseImageInt64Atomics-04474` (*yours*; explicit rule): If the `sparseImageInt64Atomics` feature is not enabled, VkImage objects created with the `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` flag must not be accessed by atomic instructions through an …
+- `VUID-vkCmdTraceRaysIndirectKHR-sparseImageInt64Atomics-04475` (*yours*; explicit rule): If the `sparseImageInt64Atomics` feature is not enabled, VkBuffer objects created with the `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` flag must not be accessed by atomic instructions through an …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageWeightedSampleQCOM-06971` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_WEIGHT_SAMPLED_IMAGE_BIT_QCOM`
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageWeightedSampleQCOM-06972` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM` uses a VkImageView as a sample weight image as a result of this command, then the image view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageBoxFilterQCOM-06973` (*yours*; explicit rule): If `OpImageBoxFilterQCOM` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BOX_FILTER_SAMPLED_BIT_QCOM`
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageBlockMatchSSDQCOM-06974` (*yours*; explicit rule): If `OpImageBlockMatchSSDQCOM` is used to read from an VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BLOCK_MATCHING_BIT_QCOM`
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageBlockMatchSADQCOM-06975` (*yours*; explicit rule): If `OpImageBlockMatchSADQCOM` is used to read from an VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BLOCK_MATCHING_BIT_QCOM`
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageBlockMatchSADQCOM-06976` (*yours*; explicit rule): If `OpImageBlockMatchSADQCOM` or OpImageBlockMatchSSDQCOM is used to read from a reference image as result of this command, then the specified reference coordinates must not fail integer texel …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageWeightedSampleQCOM-06977` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM`, `OpImageBoxFilterQCOM`, `OpImageBlockMatchSSDQCOM`, or `OpImageBlockMatchSADQCOM` uses a VkSampler as a result of this command, then the sampler must have been created …
+- `VUID-vkCmdTraceRaysIndirectKHR-OpImageWeightedSampleQCOM-06978` (*yours*; explicit rule): If any command other than `OpImageWeightedSampleQCOM`, `OpImageBoxFilterQCOM`, `OpImageBlockMatchSSDQCOM`, or `OpImageBlockMatchSADQCOM` uses a VkSampler as a result of this command, then the sampler …
+- `VUID-vkCmdTraceRaysIndirectKHR-rayTracingMotionBlurPipelineTraceRaysIndirect-04951` (*yours*; explicit rule): If the bound ray tracing pipeline was created with `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV` `VkPhysicalDeviceRayTracingMotionBlurFeaturesNV::rayTracingMotionBlurPipelineTraceRaysIndirect` …
+- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdTraceRaysIndirectKHR-pRaygenShaderBindingTable-parameter` (*by the types*): `pRaygenShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysIndirectKHR-pMissShaderBindingTable-parameter` (*by the types*): `pMissShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysIndirectKHR-pHitShaderBindingTable-parameter` (*by the types*): `pHitShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysIndirectKHR-pCallableShaderBindingTable-parameter` (*by the types*): `pCallableShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdTraceRaysIndirectKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdTraceRaysIndirectKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdTraceRaysIndirectKHR")]
     #[inline]
     pub fn trace_rays_indirect_khr(
@@ -146,19 +234,106 @@ The caller upholds the rules that [`Self::trace_rays_indirect_khr`] checks at ru
 
 # Valid usage
 
-The rules are on [`vkCmdTraceRaysKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdTraceRaysKHR.html). Settled by the wrappers:
+The rules of `vkCmdTraceRaysKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdTraceRaysKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdTraceRaysKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdTraceRaysKHR-pRaygenShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysKHR-pMissShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysKHR-pHitShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysKHR-pCallableShaderBindingTable-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdTraceRaysKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdTraceRaysKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdTraceRaysKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdTraceRaysKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 89 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdTraceRaysKHR-magFilter-04553` (*yours*; explicit rule): If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image …
+- `VUID-vkCmdTraceRaysKHR-mipmapMode-04770` (*yours*; explicit rule): If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image …
+- `VUID-vkCmdTraceRaysKHR-None-02691` (*yours*; explicit rule): If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
+- `VUID-vkCmdTraceRaysKHR-None-02697` (*yours*; explicit rule): For each set n that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a descriptor set must have been bound to n at the same pipeline bind point, with a …
+- `VUID-vkCmdTraceRaysKHR-None-02700` (*yours*; explicit rule): A valid pipeline must be bound to the pipeline bind point used by this command
+- `VUID-vkCmdTraceRaysKHR-commandBuffer-02701` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor …
+- `VUID-vkCmdTraceRaysKHR-None-02859` (*yours*; explicit rule): There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that …
+- `VUID-vkCmdTraceRaysKHR-None-02702` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any …
+- `VUID-vkCmdTraceRaysKHR-None-02703` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V …
+- `VUID-vkCmdTraceRaysKHR-None-02704` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V …
+- `VUID-vkCmdTraceRaysKHR-viewType-07752` (*yours*; explicit rule): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View …
+- `VUID-vkCmdTraceRaysKHR-format-07753` (*yours*; explicit rule): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the …
+- `VUID-vkCmdTraceRaysKHR-None-04115` (*yours*; explicit rule): If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image …
+- `VUID-vkCmdTraceRaysKHR-OpImageWrite-04469` (*yours*; explicit rule): If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer …
+- `VUID-vkCmdTraceRaysKHR-None-07288` (*yours*; explicit rule): Any shader invocation executed by this command must terminate
+- `VUID-vkCmdTraceRaysKHR-None-03429` (*yours*; explicit rule): Any shader group handle referenced by this call must have been queried from the currently bound ray tracing pipeline
+- `VUID-vkCmdTraceRaysKHR-maxPipelineRayRecursionDepth-03679` (*yours*; explicit rule): This command must not cause a shader call instruction to be executed from a shader invocation with a recursion depth greater than the value of `maxPipelineRayRecursionDepth` used to create the bound …
+- `VUID-vkCmdTraceRaysKHR-commandBuffer-03635` (*yours*; explicit rule): `commandBuffer` must not be a protected command buffer
+- `VUID-vkCmdTraceRaysKHR-size-04023` (*yours*; explicit rule): The `size` member of `pRayGenShaderBindingTable` must be equal to its `stride` member
+- `VUID-vkCmdTraceRaysKHR-pRayGenShaderBindingTable-03680` (*yours*; explicit rule): If the buffer from which `pRayGenShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysKHR-pRayGenShaderBindingTable-03681` (*yours*; explicit rule): The buffer from which the `pRayGenShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysKHR-pRayGenShaderBindingTable-03682` (*yours*; explicit rule): `pRayGenShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysKHR-pMissShaderBindingTable-03683` (*yours*; explicit rule): If the buffer from which `pMissShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysKHR-pMissShaderBindingTable-03684` (*yours*; explicit rule): The buffer from which the `pMissShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysKHR-pMissShaderBindingTable-03685` (*yours*; explicit rule): `pMissShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysKHR-stride-03686` (*yours*; explicit rule): `pMissShaderBindingTable`-&gt;stride must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupHandleAlignment`
+- `VUID-vkCmdTraceRaysKHR-stride-04029` (*yours*; explicit rule): `pMissShaderBindingTable`-&gt;stride must be less than or equal to `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysKHR-pHitShaderBindingTable-03687` (*yours*; explicit rule): If the buffer from which `pHitShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysKHR-pHitShaderBindingTable-03688` (*yours*; explicit rule): The buffer from which the `pHitShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysKHR-pHitShaderBindingTable-03689` (*yours*; explicit rule): `pHitShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysKHR-stride-03690` (*yours*; explicit rule): `pHitShaderBindingTable`-&gt;stride must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupHandleAlignment`
+- `VUID-vkCmdTraceRaysKHR-stride-04035` (*yours*; explicit rule): `pHitShaderBindingTable`-&gt;stride must be less than or equal to `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysKHR-pCallableShaderBindingTable-03691` (*yours*; explicit rule): If the buffer from which `pCallableShaderBindingTable`-&gt;deviceAddress was queried is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysKHR-pCallableShaderBindingTable-03692` (*yours*; explicit rule): The buffer from which the `pCallableShaderBindingTable`-&gt;deviceAddress is queried must have been created with the `VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR` usage flag
+- `VUID-vkCmdTraceRaysKHR-pCallableShaderBindingTable-03693` (*yours*; explicit rule): `pCallableShaderBindingTable`-&gt;deviceAddress must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysKHR-stride-03694` (*yours*; explicit rule): `pCallableShaderBindingTable`-&gt;stride must be a multiple of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::shaderGroupHandleAlignment`
+- `VUID-vkCmdTraceRaysKHR-stride-04041` (*yours*; explicit rule): `pCallableShaderBindingTable`-&gt;stride must be less than or equal to `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysKHR-flags-03696` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_CLOSEST_HIT_SHADERS_BIT_KHR`, `pHitShaderBindingTable`-&gt;deviceAddress must …
+- `VUID-vkCmdTraceRaysKHR-flags-03697` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_INTERSECTION_SHADERS_BIT_KHR`, `pHitShaderBindingTable`-&gt;deviceAddress must …
+- `VUID-vkCmdTraceRaysKHR-flags-03511` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_MISS_SHADERS_BIT_KHR`, the shader group handle identified by …
+- `VUID-vkCmdTraceRaysKHR-flags-03512` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_ANY_HIT_SHADERS_BIT_KHR`, entries in the table identified by …
+- `VUID-vkCmdTraceRaysKHR-flags-03513` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_CLOSEST_HIT_SHADERS_BIT_KHR`, entries in the table identified by …
+- `VUID-vkCmdTraceRaysKHR-flags-03514` (*yours*; explicit rule): If the currently bound ray tracing pipeline was created with `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_INTERSECTION_SHADERS_BIT_KHR`, entries in the table identified by …
+- `VUID-vkCmdTraceRaysKHR-pHitShaderBindingTable-04735` (*yours*; explicit rule): Any non-zero hit shader group entries in the table identified by `pHitShaderBindingTable`-&gt;deviceAddress accessed by this call from a geometry with a `geometryType` of `VK_GEOMETRY_TYPE_TRIANGLES_KHR` …
+- `VUID-vkCmdTraceRaysKHR-pHitShaderBindingTable-04736` (*yours*; explicit rule): Any non-zero hit shader group entries in the table identified by `pHitShaderBindingTable`-&gt;deviceAddress accessed by this call from a geometry with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR` …
+- `VUID-vkCmdTraceRaysKHR-width-03638` (*yours*; explicit rule): `width` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\] {times} `VkPhysicalDeviceLimits::maxComputeWorkGroupSize`\[0\]
+- `VUID-vkCmdTraceRaysKHR-height-03639` (*yours*; explicit rule): `height` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\] {times} `VkPhysicalDeviceLimits::maxComputeWorkGroupSize`\[1\]
+- `VUID-vkCmdTraceRaysKHR-depth-03640` (*yours*; explicit rule): `depth` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\] {times} `VkPhysicalDeviceLimits::maxComputeWorkGroupSize`\[2\]
+- `VUID-vkCmdTraceRaysKHR-width-03641` (*yours*; explicit rule): `width` {times} `height` {times} `depth` must be less than or equal to `VkPhysicalDeviceRayTracingPipelinePropertiesKHR::maxRayDispatchInvocationCount`
+- `VUID-vkCmdTraceRaysKHR-aspectMask-06478` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view must have been created with an `aspectMask` that contains `VK_IMAGE_ASPECT_DEPTH_BIT`
+- `VUID-vkCmdTraceRaysKHR-None-06479` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
+- `VUID-vkCmdTraceRaysKHR-OpTypeImage-07027` (*yours*; explicit rule): For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysKHR-OpTypeImage-07028` (*yours*; explicit rule): For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysKHR-OpTypeImage-07029` (*yours*; explicit rule): For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain …
+- `VUID-vkCmdTraceRaysKHR-OpTypeImage-07030` (*yours*; explicit rule): Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain …
+- `VUID-vkCmdTraceRaysKHR-None-02692` (*yours*; explicit rule): If a `VkImageView` is sampled with `VK_FILTER_CUBIC_EXT` as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_CUBIC_BIT_EXT`
+- `VUID-vkCmdTraceRaysKHR-None-02693` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` as a result of this command must not have a VkImageViewType of `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, or …
+- `VUID-vkCmdTraceRaysKHR-filterCubic-02694` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` as a result of this command must have a VkImageViewType and format that supports cubic filtering, as specified by …
+- `VUID-vkCmdTraceRaysKHR-filterCubicMinmax-02695` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` with a reduction mode of either `VK_SAMPLER_REDUCTION_MODE_MIN` or `VK_SAMPLER_REDUCTION_MODE_MAX` as a result of this command must have a …
+- `VUID-vkCmdTraceRaysKHR-flags-02696` (*yours*; explicit rule): Any VkImage created with a VkImageCreateInfo::`flags` containing `VK_IMAGE_CREATE_CORNER_SAMPLED_BIT_NV` sampled as a result of this command must only be sampled using a VkSamplerAddressMode of …
+- `VUID-vkCmdTraceRaysKHR-None-02698` (*yours*; explicit rule): For each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, …
+- `VUID-vkCmdTraceRaysKHR-maintenance4-06425` (*yours*; explicit rule): If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must …
+- `VUID-vkCmdTraceRaysKHR-None-02699` (*yours*; explicit rule): Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid as described by descriptor validity if they are statically used by the `VkPipeline` bound to the …
+- `VUID-vkCmdTraceRaysKHR-None-08114` (*yours*; explicit rule): Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid if they are statically used by the `VkPipeline` bound to the pipeline bind point used by this command …
+- `VUID-vkCmdTraceRaysKHR-None-08115` (*yours*; explicit rule): If the descriptors used by the `VkPipeline` bound to the pipeline bind point were specified via `vkCmdBindDescriptorSets`, the bound `VkPipeline` must have been created without …
+- `VUID-vkCmdTraceRaysKHR-None-08116` (*yours*; explicit rule): Descriptors in bound descriptor buffers, specified via `vkCmdSetDescriptorBufferOffsetsEXT`, must be valid if they are dynamically used by the `VkPipeline` bound to the pipeline bind point used by …
+- `VUID-vkCmdTraceRaysKHR-None-08117` (*yours*; explicit rule): If the descriptors used by the `VkPipeline` bound to the pipeline bind point were specified via `vkCmdSetDescriptorBufferOffsetsEXT`, the bound `VkPipeline` must have been created with …
+- `VUID-vkCmdTraceRaysKHR-None-08119` (*yours*; explicit rule): If a descriptor is dynamically used with a `VkPipeline` created with `VK_PIPELINE_CREATE_DESCRIPTOR_BUFFER_BIT_EXT`, the descriptor memory must be resident
+- `VUID-vkCmdTraceRaysKHR-None-02705` (*yours*; explicit rule): If the `robustBufferAccess` feature is not enabled, and if the `VkPipeline` object bound to the pipeline bind point used by this command accesses a uniform buffer, it must not access values outside of …
+- `VUID-vkCmdTraceRaysKHR-None-02706` (*yours*; explicit rule): If the `robustBufferAccess` feature is not enabled, and if the `VkPipeline` object bound to the pipeline bind point used by this command accesses a storage buffer, it must not access values outside of …
+- `VUID-vkCmdTraceRaysKHR-uniformBuffers-06935` (*yours*; explicit rule): If any stage of the `VkPipeline` object bound to the pipeline bind point used by this command accesses a uniform buffer, and that stage was created without enabling either …
+- `VUID-vkCmdTraceRaysKHR-storageBuffers-06936` (*yours*; explicit rule): If any stage of the `VkPipeline` object bound to the pipeline bind point used by this command accesses a storage buffer, and that stage was created without enabling either …
+- `VUID-vkCmdTraceRaysKHR-commandBuffer-02707` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must …
+- `VUID-vkCmdTraceRaysKHR-None-06550` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used …
+- `VUID-vkCmdTraceRaysKHR-ConstOffset-06551` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the …
+- `VUID-vkCmdTraceRaysKHR-SampledType-04470` (*yours*; explicit rule): If a VkImageView with a VkFormat that has a 64-bit component width is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a `Width` of 64
+- `VUID-vkCmdTraceRaysKHR-SampledType-04471` (*yours*; explicit rule): If a VkImageView with a VkFormat that has a component width less than 64-bit is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a …
+- `VUID-vkCmdTraceRaysKHR-SampledType-04472` (*yours*; explicit rule): If a VkBufferView with a VkFormat that has a 64-bit component width is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a `Width` of …
+- `VUID-vkCmdTraceRaysKHR-SampledType-04473` (*yours*; explicit rule): If a VkBufferView with a VkFormat that has a component width less than 64-bit is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a …
+- `VUID-vkCmdTraceRaysKHR-sparseImageInt64Atomics-04474` (*yours*; explicit rule): If the `sparseImageInt64Atomics` feature is not enabled, VkImage objects created with the `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` flag must not be accessed by atomic instructions through an …
+- `VUID-vkCmdTraceRaysKHR-sparseImageInt64Atomics-04475` (*yours*; explicit rule): If the `sparseImageInt64Atomics` feature is not enabled, VkBuffer objects created with the `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` flag must not be accessed by atomic instructions through an …
+- `VUID-vkCmdTraceRaysKHR-OpImageWeightedSampleQCOM-06971` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_WEIGHT_SAMPLED_IMAGE_BIT_QCOM`
+- `VUID-vkCmdTraceRaysKHR-OpImageWeightedSampleQCOM-06972` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM` uses a VkImageView as a sample weight image as a result of this command, then the image view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysKHR-OpImageBoxFilterQCOM-06973` (*yours*; explicit rule): If `OpImageBoxFilterQCOM` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BOX_FILTER_SAMPLED_BIT_QCOM`
+- `VUID-vkCmdTraceRaysKHR-OpImageBlockMatchSSDQCOM-06974` (*yours*; explicit rule): If `OpImageBlockMatchSSDQCOM` is used to read from an VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BLOCK_MATCHING_BIT_QCOM`
+- `VUID-vkCmdTraceRaysKHR-OpImageBlockMatchSADQCOM-06975` (*yours*; explicit rule): If `OpImageBlockMatchSADQCOM` is used to read from an VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BLOCK_MATCHING_BIT_QCOM`
+- `VUID-vkCmdTraceRaysKHR-OpImageBlockMatchSADQCOM-06976` (*yours*; explicit rule): If `OpImageBlockMatchSADQCOM` or OpImageBlockMatchSSDQCOM is used to read from a reference image as result of this command, then the specified reference coordinates must not fail integer texel …
+- `VUID-vkCmdTraceRaysKHR-OpImageWeightedSampleQCOM-06977` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM`, `OpImageBoxFilterQCOM`, `OpImageBlockMatchSSDQCOM`, or `OpImageBlockMatchSADQCOM` uses a VkSampler as a result of this command, then the sampler must have been created …
+- `VUID-vkCmdTraceRaysKHR-OpImageWeightedSampleQCOM-06978` (*yours*; explicit rule): If any command other than `OpImageWeightedSampleQCOM`, `OpImageBoxFilterQCOM`, `OpImageBlockMatchSSDQCOM`, or `OpImageBlockMatchSADQCOM` uses a VkSampler as a result of this command, then the sampler …
+- `VUID-vkCmdTraceRaysKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdTraceRaysKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdTraceRaysKHR-pRaygenShaderBindingTable-parameter` (*by the types*): `pRaygenShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysKHR-pMissShaderBindingTable-parameter` (*by the types*): `pMissShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysKHR-pHitShaderBindingTable-parameter` (*by the types*): `pHitShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysKHR-pCallableShaderBindingTable-parameter` (*by the types*): `pCallableShaderBindingTable` must be a valid pointer to a valid VkStridedDeviceAddressRegionKHR structure
+- `VUID-vkCmdTraceRaysKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdTraceRaysKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdTraceRaysKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdTraceRaysKHR")]
     #[inline]
     pub fn trace_rays_khr(
@@ -241,19 +416,25 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkCreateRayTracingPipelinesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRayTracingPipelinesKHR.html). Settled by the wrappers:
+The rules of `vkCreateRayTracingPipelinesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRayTracingPipelinesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateRayTracingPipelinesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateRayTracingPipelinesKHR-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateRayTracingPipelinesKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateRayTracingPipelinesKHR-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateRayTracingPipelinesKHR-flags-03415` (*yours*; explicit rule): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` …
+- `VUID-vkCreateRayTracingPipelinesKHR-flags-03416` (*yours*; explicit rule): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the …
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
+- `VUID-vkCreateRayTracingPipelinesKHR-rayTracingPipeline-03586` (*yours*; explicit rule): The `rayTracingPipeline` feature must be enabled
+- `VUID-vkCreateRayTracingPipelinesKHR-flags-03816` (*yours*; explicit rule): `flags` must not contain the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
+- `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-02903` (*yours*; explicit rule): If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03587` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, the `flags` member of elements of `pCreateInfos` must not include `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT`
+- `VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength` (*checked*): `createInfoCount` must be greater than `0`
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent` (*checked*): If `pipelineCache` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCreateRayTracingPipelinesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
+- `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parameter` (*by the types*): If `pipelineCache` is not VK_NULL_HANDLE, `pipelineCache` must be a valid VkPipelineCache handle
+- `VUID-vkCreateRayTracingPipelinesKHR-pCreateInfos-parameter` (*by the types*): `pCreateInfos` must be a valid pointer to an array of `createInfoCount` valid VkRayTracingPipelineCreateInfoKHR structures
+- `VUID-vkCreateRayTracingPipelinesKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateRayTracingPipelinesKHR-pPipelines-parameter` (*by the types*): `pPipelines` must be a valid pointer to an array of `createInfoCount` VkPipeline handles*/
     #[doc(alias = "vkCreateRayTracingPipelinesKHR")]
     #[inline]
     pub fn create_ray_tracing_pipelines_khr<'a>(
@@ -363,15 +544,20 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] che
 
 # Valid usage
 
-The rules are on [`vkGetRayTracingCaptureReplayShaderGroupHandlesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingCaptureReplayShaderGroupHandlesKHR.html). Settled by the wrappers:
+The rules of `vkGetRayTracingCaptureReplayShaderGroupHandlesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingCaptureReplayShaderGroupHandlesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-04620` (*yours*; explicit rule): `pipeline` must be a ray tracing pipeline
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-firstGroup-04051` (*yours*; explicit rule): `firstGroup` must be less than the number of shader groups in `pipeline`
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-firstGroup-03483` (*yours*; explicit rule): The sum of `firstGroup` and `groupCount` must be less than or equal to the number of shader groups in `pipeline`
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-03484` (*yours*; explicit rule): `dataSize` must be at least VkPhysicalDeviceRayTracingPipelinePropertiesKHR::`shaderGroupHandleCaptureReplaySize` {times} `groupCount`
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-rayTracingPipelineShaderGroupHandleCaptureReplay-03606` (*yours*; explicit rule): `VkPhysicalDeviceRayTracingPipelineFeaturesKHR::rayTracingPipelineShaderGroupHandleCaptureReplay` must be enabled to call this function
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-03607` (*yours*; explicit rule): `pipeline` must have been created with a `flags` that included `VK_PIPELINE_CREATE_RAY_TRACING_SHADER_GROUP_HANDLE_CAPTURE_REPLAY_BIT_KHR`
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-06720` (*yours*; explicit rule): `pipeline` must not have been created with `VK_PIPELINE_CREATE_LIBRARY_BIT_KHR`
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent` (*checked*): `pipeline` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle
+- `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkGetRayTracingCaptureReplayShaderGroupHandlesKHR")]
     #[inline]
     pub fn get_ray_tracing_capture_replay_shader_group_handles_khr(
@@ -439,14 +625,15 @@ The caller upholds the rules that [`Self::get_ray_tracing_capture_replay_shader_
 
 # Valid usage
 
-The rules are on [`vkGetRayTracingShaderGroupStackSizeKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingShaderGroupStackSizeKHR.html). Settled by the wrappers:
+The rules of `vkGetRayTracingShaderGroupStackSizeKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingShaderGroupStackSizeKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-04622` (*yours*; explicit rule): `pipeline` must be a ray tracing pipeline
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-group-03608` (*yours*; explicit rule): The value of `group` must be less than the number of shader groups in `pipeline`
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-03609` (*yours*; explicit rule): The shader identified by `groupShader` in `group` must not be `VK_SHADER_UNUSED_KHR`
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter` (*checked*): `groupShader` must be a valid VkShaderGroupShaderKHR value
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent` (*checked*): `pipeline` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
     #[doc(alias = "vkGetRayTracingShaderGroupStackSizeKHR")]
     #[inline]
     pub fn get_ray_tracing_shader_group_stack_size_khr(
@@ -503,15 +690,18 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetRayTracingShaderGroupHandlesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingShaderGroupHandlesKHR.html). Settled by the wrappers:
+The rules of `vkGetRayTracingShaderGroupHandlesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingShaderGroupHandlesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetRayTracingShaderGroupHandlesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-04619` (*yours*; explicit rule): `pipeline` must be a ray tracing pipeline
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-firstGroup-04050` (*yours*; explicit rule): `firstGroup` must be less than the number of shader groups in `pipeline`
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-firstGroup-02419` (*yours*; explicit rule): The sum of `firstGroup` and `groupCount` must be less than or equal to the number of shader groups in `pipeline`
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-02420` (*yours*; explicit rule): `dataSize` must be at least VkPhysicalDeviceRayTracingPipelinePropertiesKHR::`shaderGroupHandleSize` {times} `groupCount`
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-03482` (*yours*; explicit rule): `pipeline` must not have been created with `VK_PIPELINE_CREATE_LIBRARY_BIT_KHR`
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent` (*checked*): `pipeline` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle
+- `VUID-vkGetRayTracingShaderGroupHandlesKHR-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkGetRayTracingShaderGroupHandlesKHR")]
     #[inline]
     pub fn get_ray_tracing_shader_group_handles_khr(

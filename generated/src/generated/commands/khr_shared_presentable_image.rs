@@ -8,11 +8,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetSwapchainStatusKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainStatusKHR.html). Settled by the wrappers:
+The rules of `vkGetSwapchainStatusKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainStatusKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSwapchainStatusKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSwapchainStatusKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetSwapchainStatusKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetSwapchainStatusKHR-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetSwapchainStatusKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSwapchainStatusKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle*/
     #[doc(alias = "vkGetSwapchainStatusKHR")]
     #[inline]
     pub fn get_swapchain_status_khr(

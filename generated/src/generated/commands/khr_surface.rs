@@ -16,15 +16,14 @@ let caps = gpu.physical.get_surface_capabilities_khr(&self.surface)?;
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfaceCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface).*/
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211` (*yours*; checked by the safe methods in every build): `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06523` (*checked*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent` (*checked*): Both of `physicalDevice`, and `surface` must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-parameter` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-pSurfaceCapabilities-parameter` (*by the types*): `pSurfaceCapabilities` must be a valid pointer to a VkSurfaceCapabilitiesKHR structure*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceCapabilitiesKHR")]
     #[inline]
     pub fn get_surface_capabilities_khr(
@@ -82,19 +81,17 @@ let formats = gpu.physical.get_surface_formats_khr(Some(&surface))?;
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfaceFormatsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormatsKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfaceFormatsKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceFormatsKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormatCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface
-- 2: explicit rule; the wrappers do not check it*/
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06524` (*yours*; explicit rule): If the VK_GOOGLE_surfaceless_query extension is not enabled, `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06525` (*yours*; explicit rule): If `surface` is not VK_NULL_HANDLE, it must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211` (*yours*; checked by the safe methods in every build): `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06523` (*checked*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent` (*checked*): Both of `physicalDevice`, and `surface` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-parameter` (*by the types*): If `surface` is not VK_NULL_HANDLE, `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormatCount-parameter` (*by the types*): `pSurfaceFormatCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-pSurfaceFormats-parameter` (*by the types*): If the value referenced by `pSurfaceFormatCount` is not `0`, and `pSurfaceFormats` is not `NULL`, `pSurfaceFormats` must be a valid pointer to an array of `pSurfaceFormatCount` VkSurfaceFormatKHR …*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceFormatsKHR")]
     #[inline]
     pub fn get_surface_formats_khr(
@@ -150,19 +147,17 @@ The caller upholds the rules that [`Self::get_surface_formats_khr`] checks at ru
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfacePresentModesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfacePresentModesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfacePresentModesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfacePresentModesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523`: dynamic (refuses a query without a surface (only VK_GOOGLE_surfaceless_query, which tuff does not emit, allows one))
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModeCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: checked by the safe methods in every build (a query of each queue family's support), but no test breaks it: every lavapipe queue family presents to every X11 surface
-- 2: explicit rule; the wrappers do not check it*/
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06524` (*yours*; explicit rule): If the VK_GOOGLE_surfaceless_query extension is not enabled, `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06525` (*yours*; explicit rule): If `surface` is not VK_NULL_HANDLE, it must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211` (*yours*; checked by the safe methods in every build): `surface` must be supported by `physicalDevice`, as reported by vkGetPhysicalDeviceSurfaceSupportKHR or an equivalent platform-specific mechanism
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06523` (*checked*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent` (*checked*): Both of `physicalDevice`, and `surface` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-parameter` (*by the types*): If `surface` is not VK_NULL_HANDLE, `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModeCount-parameter` (*by the types*): `pPresentModeCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-pPresentModes-parameter` (*by the types*): If the value referenced by `pPresentModeCount` is not `0`, and `pPresentModes` is not `NULL`, `pPresentModes` must be a valid pointer to an array of `pPresentModeCount` VkPresentModeKHR values*/
     #[doc(alias = "vkGetPhysicalDeviceSurfacePresentModesKHR")]
     #[inline]
     pub fn get_surface_present_modes_khr(
@@ -228,13 +223,13 @@ if !gpu.physical.get_surface_support_khr(gpu.family, &surface)? {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSurfaceSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceSupportKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSurfaceSupportKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSurfaceSupportKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269`: dynamic (checks the family against the physical device's queue family count)
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269` (*checked*): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent` (*checked*): Both of `physicalDevice`, and `surface` must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-surface-parameter` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-vkGetPhysicalDeviceSurfaceSupportKHR-pSupported-parameter` (*by the types*): `pSupported` must be a valid pointer to a VkBool32 value*/
     #[doc(alias = "vkGetPhysicalDeviceSurfaceSupportKHR")]
     #[inline]
     pub fn get_surface_support_khr(

@@ -22,23 +22,23 @@ let index =
 
 # Valid usage
 
-The rules are on [`vkAcquireNextImageKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImageKHR.html). Settled by the wrappers:
+The rules of `vkAcquireNextImageKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireNextImageKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireNextImageKHR-swapchain-01285`: dynamic (checks the swapchain was not retired: the device records a swapchain as retired when a creation names it as oldSwapchain)
-- `VUID-vkAcquireNextImageKHR-semaphore-01286`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
-- `VUID-vkAcquireNextImageKHR-semaphore-01779`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
-- `VUID-vkAcquireNextImageKHR-fence-01287`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkAcquireNextImageKHR-semaphore-01780`: dynamic (checks the acquire has a semaphore or a fence to signal)
-- `VUID-vkAcquireNextImageKHR-surface-07783`: dynamic (checks an infinite timeout against the swapchain's acquired images (the device records each acquire and presentation), its image count and the surface's minImageCount)
-- `VUID-vkAcquireNextImageKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquireNextImageKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAcquireNextImageKHR-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAcquireNextImageKHR-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAcquireNextImageKHR-pImageIndex-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkAcquireNextImageKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkAcquireNextImageKHR-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkAcquireNextImageKHR-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkAcquireNextImageKHR-semaphore-03265`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)*/
+- `VUID-vkAcquireNextImageKHR-swapchain-01285` (*checked*): `swapchain` must not be in the retired state
+- `VUID-vkAcquireNextImageKHR-semaphore-01286` (*checked*): If `semaphore` is not VK_NULL_HANDLE it must be unsignaled
+- `VUID-vkAcquireNextImageKHR-semaphore-01779` (*checked*): If `semaphore` is not VK_NULL_HANDLE it must not have any uncompleted signal or wait operations pending
+- `VUID-vkAcquireNextImageKHR-fence-01287` (*checked*): If `fence` is not VK_NULL_HANDLE it must be unsignaled and must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-vkAcquireNextImageKHR-semaphore-01780` (*checked*): `semaphore` and `fence` must not both be equal to VK_NULL_HANDLE
+- `VUID-vkAcquireNextImageKHR-surface-07783` (*checked*): If forward progress cannot be guaranteed for the `surface` used to create the `swapchain` member of `pAcquireInfo`, the `timeout` member of `pAcquireInfo` must not be `UINT64_MAX`
+- `VUID-vkAcquireNextImageKHR-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkAcquireNextImageKHR-semaphore-parent` (*checked*): If `semaphore` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkAcquireNextImageKHR-fence-parent` (*checked*): If `fence` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkAcquireNextImageKHR-semaphore-03265` (*checked*): `semaphore` must have a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+- `VUID-vkAcquireNextImageKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAcquireNextImageKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-vkAcquireNextImageKHR-semaphore-parameter` (*by the types*): If `semaphore` is not VK_NULL_HANDLE, `semaphore` must be a valid VkSemaphore handle
+- `VUID-vkAcquireNextImageKHR-fence-parameter` (*by the types*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle
+- `VUID-vkAcquireNextImageKHR-pImageIndex-parameter` (*by the types*): `pImageIndex` must be a valid pointer to a `uint32_t` value*/
     #[doc(alias = "vkAcquireNextImageKHR")]
     #[inline]
     pub fn acquire_next_image_khr(
@@ -147,12 +147,12 @@ None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
 
 # Valid usage
 
-The rules are on [`vkCreateSwapchainKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html). Settled by the wrappers:
+The rules of `vkCreateSwapchainKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSwapchainKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateSwapchainKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSwapchainKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSwapchainKHR-pSwapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSwapchainKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateSwapchainKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkSwapchainCreateInfoKHR structure
+- `VUID-vkCreateSwapchainKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateSwapchainKHR-pSwapchain-parameter` (*by the types*): `pSwapchain` must be a valid pointer to a VkSwapchainKHR handle*/
     #[doc(alias = "vkCreateSwapchainKHR")]
     #[inline]
     pub fn create_swapchain_khr<'a>(
@@ -249,13 +249,13 @@ self.images = gpu.device.get_swapchain_images_khr(&swapchain)?;
 
 # Valid usage
 
-The rules are on [`vkGetSwapchainImagesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainImagesKHR.html). Settled by the wrappers:
+The rules of `vkGetSwapchainImagesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSwapchainImagesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSwapchainImagesKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSwapchainImagesKHR-swapchain-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSwapchainImagesKHR-swapchain-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetSwapchainImagesKHR-swapchain-parent` (*checked*): `swapchain` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetSwapchainImagesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSwapchainImagesKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-vkGetSwapchainImagesKHR-pSwapchainImageCount-parameter` (*by the types*): `pSwapchainImageCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetSwapchainImagesKHR-pSwapchainImages-parameter` (*by the types*): If the value referenced by `pSwapchainImageCount` is not `0`, and `pSwapchainImages` is not `NULL`, `pSwapchainImages` must be a valid pointer to an array of `pSwapchainImageCount` VkImage handles*/
     #[doc(alias = "vkGetSwapchainImagesKHR")]
     #[inline]
     pub fn get_swapchain_images_khr(
@@ -333,19 +333,16 @@ match gpu.queue.present_khr(
 
 # Valid usage
 
-The rules are on [`vkQueuePresentKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueuePresentKHR.html). Settled by the wrappers:
+The rules of `vkQueuePresentKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueuePresentKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueuePresentKHR-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueuePresentKHR-pPresentInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-03267`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
-- `VUID-vkQueuePresentKHR-pWaitSemaphores-03268`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: checked by the safe methods in every build (vkGetPhysicalDeviceSurfaceSupportKHR, asked once per swapchain and queue family), but no test breaks it: lavapipe's only queue family presents to every surface
-- 1: checked by the safe methods in every build, by the check of VUID-vkQueuePresentKHR-pWaitSemaphores-03268, whose condition it shares and whose VUID the error names (a presentation waits only on binary semaphores: 03267)
-- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-vkQueuePresentKHR-pSwapchains-01292` (*yours*; checked by the safe methods in every build): Each element of `pSwapchains` member of `pPresentInfo` must be a swapchain that is created for a surface for which presentation is supported from `queue` as determined using a call to …
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-01294` (*yours*; checked by the safe methods in every build): When a semaphore wait operation referring to a binary semaphore defined by the elements of the `pWaitSemaphores` member of `pPresentInfo` executes on `queue`, there must be no other queues waiting on …
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-01295` (*yours*; checked by the safe methods in every build, by the check of VUID-vkQueuePresentKHR-pWaitSemaphores-03268, whose condition it shares and whose VUID the error names): All elements of the `pWaitSemaphores` member of `pPresentInfo` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
+- `VUID-vkQueuePresentKHR-pSwapchains-01293` (*yours*; explicit rule): If more than one member of `pSwapchains` was created from a display surface, all display surfaces referenced that refer to the same display must use the same display mode
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-03267` (*checked*): All elements of the `pWaitSemaphores` member of `pPresentInfo` must be created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+- `VUID-vkQueuePresentKHR-pWaitSemaphores-03268` (*checked*): All elements of the `pWaitSemaphores` member of `pPresentInfo` must reference a semaphore signal operation that has been submitted for execution and any semaphore signal operations on which it depends …
+- `VUID-vkQueuePresentKHR-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkQueuePresentKHR-pPresentInfo-parameter` (*by the types*): `pPresentInfo` must be a valid pointer to a valid VkPresentInfoKHR structure*/
     #[doc(alias = "vkQueuePresentKHR")]
     #[inline]
     pub fn present_khr<'a>(

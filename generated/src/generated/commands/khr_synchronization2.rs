@@ -17,20 +17,34 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdWriteBufferMarker2AMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteBufferMarker2AMD.html). Settled by the wrappers:
+The rules of `vkCmdWriteBufferMarker2AMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteBufferMarker2AMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdWriteBufferMarker2AMD-stage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdWriteBufferMarker2AMD-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdWriteBufferMarker2AMD-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 19.
-
-- 6: checked by the safe methods in every build, but no oracle case breaks it yet
-- 13: explicit rule; the wrappers do not check it*/
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03929` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03930` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-vkCmdWriteBufferMarker2AMD-synchronization2-03893` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `synchronization2` feature must be enabled
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03894` (*yours*; explicit rule): `stage` must include only a single pipeline stage
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03895` (*yours*; explicit rule): `stage` must include only stages that are valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03896` (*yours*; explicit rule): `dstOffset` must be less than or equal to the size of `dstBuffer` minus `4`
+- `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03897` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `dstBuffer` must have been created with the `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag
+- `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03898` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03899` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `dstOffset` must be a multiple of `4`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03931` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_CONDITIONAL_RENDERING_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03932` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03933` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03934` (*yours*; explicit rule): If the `meshShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-03935` (*yours*; explicit rule): If the `taskShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TASK_SHADER_BIT_EXT`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-04956` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_SHADING_RATE_IMAGE_BIT_NV`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-07316` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-07317` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-04957` (*yours*; explicit rule): If the `subpassShading` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-04995` (*yours*; explicit rule): If the `invocationMask` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_INVOCATION_MASK_BIT_HUAWEI`
+- `VUID-vkCmdWriteBufferMarker2AMD-stage-parameter` (*checked*): `stage` must be a valid combination of VkPipelineStageFlagBits2 values
+- `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, or compute operations
+- `VUID-vkCmdWriteBufferMarker2AMD-commonparent` (*checked*): Both of `commandBuffer`, and `dstBuffer` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-parameter` (*by the types*): `dstBuffer` must be a valid VkBuffer handle
+- `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdWriteBufferMarker2AMD-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteBufferMarker2AMD")]
     #[inline]
     pub unsafe fn write_buffer_marker2_amd(
@@ -99,13 +113,12 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkGetQueueCheckpointData2NV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueueCheckpointData2NV.html). Settled by the wrappers:
+The rules of `vkGetQueueCheckpointData2NV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueueCheckpointData2NV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetQueueCheckpointData2NV-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetQueueCheckpointData2NV-pCheckpointDataCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetQueueCheckpointData2NV-pCheckpointData-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetQueueCheckpointData2NV-queue-03892` (*yours*; explicit rule): The device that `queue` belongs to must be in the lost state
+- `VUID-vkGetQueueCheckpointData2NV-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkGetQueueCheckpointData2NV-pCheckpointDataCount-parameter` (*by the types*): `pCheckpointDataCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetQueueCheckpointData2NV-pCheckpointData-parameter` (*by the types*): If the value referenced by `pCheckpointDataCount` is not `0`, and `pCheckpointData` is not `NULL`, `pCheckpointData` must be a valid pointer to an array of `pCheckpointDataCount` VkCheckpointData2NV …*/
     #[doc(alias = "vkGetQueueCheckpointData2NV")]
     #[inline]
     pub unsafe fn get_checkpoint_data2_nv(

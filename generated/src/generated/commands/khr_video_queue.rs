@@ -8,15 +8,19 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkBindVideoSessionMemoryKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindVideoSessionMemoryKHR.html). Settled by the wrappers:
+The rules of `vkBindVideoSessionMemoryKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindVideoSessionMemoryKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindVideoSessionMemoryKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBindVideoSessionMemoryKHR-videoSession-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindVideoSessionMemoryKHR-pBindSessionMemoryInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkBindVideoSessionMemoryKHR-videoSession-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkBindVideoSessionMemoryKHR-videoSession-07195` (*yours*; explicit rule): The memory binding of `videoSession` identified by the `memoryBindIndex` member of any element of `pBindSessionMemoryInfos` must not already be backed by a memory object
+- `VUID-vkBindVideoSessionMemoryKHR-memoryBindIndex-07196` (*yours*; explicit rule): The `memoryBindIndex` member of each element of `pBindSessionMemoryInfos` must be unique within `pBindSessionMemoryInfos`
+- `VUID-vkBindVideoSessionMemoryKHR-pBindSessionMemoryInfos-07197` (*yours*; explicit rule): Each element of `pBindSessionMemoryInfos` must have a corresponding VkMemoryRequirements structure
+- `VUID-vkBindVideoSessionMemoryKHR-pBindSessionMemoryInfos-07198` (*yours*; explicit rule): If an element of `pBindSessionMemoryInfos` has a corresponding VkMemoryRequirements structure, then the `memory` member of that element of `pBindSessionMemoryInfos` must have been allocated using one …
+- `VUID-vkBindVideoSessionMemoryKHR-pBindSessionMemoryInfos-07199` (*yours*; explicit rule): If an element of `pBindSessionMemoryInfos` has a corresponding VkMemoryRequirements structure, then the `memoryOffset` member of that element of `pBindSessionMemoryInfos` must be an integer multiple …
+- `VUID-vkBindVideoSessionMemoryKHR-pBindSessionMemoryInfos-07200` (*yours*; explicit rule): If an element of `pBindSessionMemoryInfos` has a corresponding VkMemoryRequirements structure, then the `memorySize` member of that element of `pBindSessionMemoryInfos` must equal the `size` member of …
+- `VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength` (*checked*): `bindSessionMemoryInfoCount` must be greater than `0`
+- `VUID-vkBindVideoSessionMemoryKHR-videoSession-parent` (*checked*): `videoSession` must have been created, allocated, or retrieved from `device`
+- `VUID-vkBindVideoSessionMemoryKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBindVideoSessionMemoryKHR-videoSession-parameter` (*by the types*): `videoSession` must be a valid VkVideoSessionKHR handle
+- `VUID-vkBindVideoSessionMemoryKHR-pBindSessionMemoryInfos-parameter` (*by the types*): `pBindSessionMemoryInfos` must be a valid pointer to an array of `bindSessionMemoryInfoCount` valid VkBindVideoSessionMemoryInfoKHR structures*/
     #[doc(alias = "vkBindVideoSessionMemoryKHR")]
     #[inline]
     pub fn bind_video_session_memory_khr<'a>(
@@ -88,12 +92,12 @@ The caller upholds the rules that [`Self::bind_video_session_memory_khr`] checks
 
 # Valid usage
 
-The rules are on [`vkCreateVideoSessionKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateVideoSessionKHR.html). Settled by the wrappers:
+The rules of `vkCreateVideoSessionKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateVideoSessionKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateVideoSessionKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateVideoSessionKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateVideoSessionKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateVideoSessionKHR-pVideoSession-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateVideoSessionKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateVideoSessionKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkVideoSessionCreateInfoKHR structure
+- `VUID-vkCreateVideoSessionKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateVideoSessionKHR-pVideoSession-parameter` (*by the types*): `pVideoSession` must be a valid pointer to a VkVideoSessionKHR handle*/
     #[doc(alias = "vkCreateVideoSessionKHR")]
     #[inline]
     pub fn create_video_session_khr<'a>(
@@ -143,12 +147,12 @@ The caller upholds the rules that [`Self::create_video_session_khr`] checks at r
 
 # Valid usage
 
-The rules are on [`vkCreateVideoSessionParametersKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateVideoSessionParametersKHR.html). Settled by the wrappers:
+The rules of `vkCreateVideoSessionParametersKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateVideoSessionParametersKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateVideoSessionParametersKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateVideoSessionParametersKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateVideoSessionParametersKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateVideoSessionParametersKHR-pVideoSessionParameters-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateVideoSessionParametersKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateVideoSessionParametersKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkVideoSessionParametersCreateInfoKHR structure
+- `VUID-vkCreateVideoSessionParametersKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateVideoSessionParametersKHR-pVideoSessionParameters-parameter` (*by the types*): `pVideoSessionParameters` must be a valid pointer to a VkVideoSessionParametersKHR handle*/
     #[doc(alias = "vkCreateVideoSessionParametersKHR")]
     #[inline]
     pub fn create_video_session_parameters_khr<'a>(
@@ -218,13 +222,13 @@ The caller upholds the rules that [`Self::create_video_session_parameters_khr`] 
 
 # Valid usage
 
-The rules are on [`vkGetVideoSessionMemoryRequirementsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetVideoSessionMemoryRequirementsKHR.html). Settled by the wrappers:
+The rules of `vkGetVideoSessionMemoryRequirementsKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetVideoSessionMemoryRequirementsKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetVideoSessionMemoryRequirementsKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetVideoSessionMemoryRequirementsKHR-videoSession-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetVideoSessionMemoryRequirementsKHR-pMemoryRequirementsCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetVideoSessionMemoryRequirementsKHR-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetVideoSessionMemoryRequirementsKHR-videoSession-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetVideoSessionMemoryRequirementsKHR-videoSession-parent` (*checked*): `videoSession` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetVideoSessionMemoryRequirementsKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetVideoSessionMemoryRequirementsKHR-videoSession-parameter` (*by the types*): `videoSession` must be a valid VkVideoSessionKHR handle
+- `VUID-vkGetVideoSessionMemoryRequirementsKHR-pMemoryRequirementsCount-parameter` (*by the types*): `pMemoryRequirementsCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetVideoSessionMemoryRequirementsKHR-pMemoryRequirements-parameter` (*by the types*): If the value referenced by `pMemoryRequirementsCount` is not `0`, and `pMemoryRequirements` is not `NULL`, `pMemoryRequirements` must be a valid pointer to an array of `pMemoryRequirementsCount` …*/
     #[doc(alias = "vkGetVideoSessionMemoryRequirementsKHR")]
     #[inline]
     pub fn get_video_session_memory_requirements_khr(
@@ -271,13 +275,27 @@ The caller upholds the rules that [`Self::get_video_session_memory_requirements_
 
 # Valid usage
 
-The rules are on [`vkUpdateVideoSessionParametersKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateVideoSessionParametersKHR.html). Settled by the wrappers:
+The rules of `vkUpdateVideoSessionParametersKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateVideoSessionParametersKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkUpdateVideoSessionParametersKHR-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkUpdateVideoSessionParametersKHR-pUpdateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkUpdateVideoSessionParametersKHR-pUpdateInfo-07215` (*yours*; explicit rule): `pUpdateInfo->updateSequenceCount` must equal the current update sequence counter of `videoSessionParameters` plus one
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07216` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07217` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then the number of `StdVideoH264SequenceParameterSet` entries already stored in …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07218` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07219` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then the number of `StdVideoH264PictureParameterSet` entries already stored in it …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07220` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07221` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the number of `StdVideoH265VideoParameterSet` entries already stored in it …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07222` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07223` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the number of `StdVideoH265SequenceParameterSet` entries already stored in …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07224` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07225` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the number of `StdVideoH265PictureParameterSet` entries already stored in it …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07226` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07227` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07228` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07229` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-07230` (*yours*; explicit rule): If `videoSessionParameters` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT` and the `pNext` chain of `pUpdateInfo` includes a …
+- `VUID-vkUpdateVideoSessionParametersKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkUpdateVideoSessionParametersKHR-videoSessionParameters-parameter` (*by the types*): `videoSessionParameters` must be a valid VkVideoSessionParametersKHR handle
+- `VUID-vkUpdateVideoSessionParametersKHR-pUpdateInfo-parameter` (*by the types*): `pUpdateInfo` must be a valid pointer to a valid VkVideoSessionParametersUpdateInfoKHR structure*/
     #[doc(alias = "vkUpdateVideoSessionParametersKHR")]
     #[inline]
     pub fn update_video_session_parameters_khr<'a>(
@@ -335,17 +353,23 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-The rules are on [`vkCmdBeginVideoCodingKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginVideoCodingKHR.html). Settled by the wrappers:
+The rules of `vkCmdBeginVideoCodingKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginVideoCodingKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBeginVideoCodingKHR-pBeginInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBeginVideoCodingKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBeginVideoCodingKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBeginVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-07231` (*yours*; explicit rule): The `VkCommandPool` that `commandBuffer` was allocated from must support the video codec operation `pBeginInfo->videoSession` was created with, as returned by vkGetPhysicalDeviceQueueFamilyProperties2 …
+- `VUID-vkCmdBeginVideoCodingKHR-None-07232` (*yours*; explicit rule): There must be no active queries
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-07233` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, then `pBeginInfo->videoSession` must not have been created with …
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-07234` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, then `pBeginInfo->videoSession` must have been created with …
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-07235` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer, `protectedNoFault` is not supported, and the `pPictureResource` member of any element of `pBeginInfo->pReferenceSlots` is not `NULL`, then …
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-07236` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer `protectedNoFault` is not supported, and the `pPictureResource` member of any element of `pBeginInfo->pReferenceSlots` is not `NULL`, then …
+- `VUID-vkCmdBeginVideoCodingKHR-slotIndex-07239` (*yours*; explicit rule): If the `slotIndex` member of any element of `pBeginInfo->pReferenceSlots` is not negative, then it must specify the index of a DPB slot that is in the active state in `pBeginInfo->videoSession` at the …
+- `VUID-vkCmdBeginVideoCodingKHR-pPictureResource-07265` (*yours*; explicit rule): Each video picture resource specified by any non-`NULL` `pPictureResource` member specified in the elements of `pBeginInfo->pReferenceSlots` for which `slotIndex` is not negative must match one of the …
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support decode, or encode operations
+- `VUID-vkCmdBeginVideoCodingKHR-bufferlevel` (*checked*): `commandBuffer` must be a primary `VkCommandBuffer`
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBeginVideoCodingKHR-pBeginInfo-parameter` (*by the types*): `pBeginInfo` must be a valid pointer to a valid VkVideoBeginCodingInfoKHR structure
+- `VUID-vkCmdBeginVideoCodingKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBeginVideoCodingKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdBeginVideoCodingKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBeginVideoCodingKHR")]
     #[inline]
     pub fn begin_video_coding_khr<'a>(
@@ -411,17 +435,16 @@ impl<'c> Recorder<'c, InVideoCoding> {
 
 # Valid usage
 
-The rules are on [`vkCmdControlVideoCodingKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdControlVideoCodingKHR.html). Settled by the wrappers:
+The rules of `vkCmdControlVideoCodingKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdControlVideoCodingKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdControlVideoCodingKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdControlVideoCodingKHR-pCodingControlInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdControlVideoCodingKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdControlVideoCodingKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdControlVideoCodingKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdControlVideoCodingKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdControlVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdControlVideoCodingKHR-flags-07017` (*yours*; explicit rule): If `pCodingControlInfo->flags` does not include `VK_VIDEO_CODING_CONTROL_RESET_BIT_KHR`, then the bound video session must not be in uninitialized state at the time the command is executed on the …
+- `VUID-vkCmdControlVideoCodingKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support decode, or encode operations
+- `VUID-vkCmdControlVideoCodingKHR-bufferlevel` (*checked*): `commandBuffer` must be a primary `VkCommandBuffer`
+- `VUID-vkCmdControlVideoCodingKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdControlVideoCodingKHR-pCodingControlInfo-parameter` (*by the types*): `pCodingControlInfo` must be a valid pointer to a valid VkVideoCodingControlInfoKHR structure
+- `VUID-vkCmdControlVideoCodingKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdControlVideoCodingKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdControlVideoCodingKHR-videocoding` (*by the types*): This command must only be called inside of a video coding scope*/
     #[doc(alias = "vkCmdControlVideoCodingKHR")]
     #[inline]
     pub fn control_video_coding_khr<'a>(
@@ -470,17 +493,16 @@ The caller upholds the rules that [`Self::control_video_coding_khr`] checks at r
 
 # Valid usage
 
-The rules are on [`vkCmdEndVideoCodingKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndVideoCodingKHR.html). Settled by the wrappers:
+The rules of `vkCmdEndVideoCodingKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndVideoCodingKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdEndVideoCodingKHR-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdEndVideoCodingKHR-pEndCodingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdEndVideoCodingKHR-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdEndVideoCodingKHR-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdEndVideoCodingKHR-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdEndVideoCodingKHR-bufferlevel`: dynamic (checks the level the command buffer was allocated with)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdEndVideoCodingKHR-None-07251` (*yours*; explicit rule): There must be no active queries
+- `VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support decode, or encode operations
+- `VUID-vkCmdEndVideoCodingKHR-bufferlevel` (*checked*): `commandBuffer` must be a primary `VkCommandBuffer`
+- `VUID-vkCmdEndVideoCodingKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdEndVideoCodingKHR-pEndCodingInfo-parameter` (*by the types*): `pEndCodingInfo` must be a valid pointer to a valid VkVideoEndCodingInfoKHR structure
+- `VUID-vkCmdEndVideoCodingKHR-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdEndVideoCodingKHR-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdEndVideoCodingKHR-videocoding` (*by the types*): This command must only be called inside of a video coding scope*/
     #[doc(alias = "vkCmdEndVideoCodingKHR")]
     #[inline]
     pub fn end_video_coding_khr<'a>(
@@ -529,13 +551,17 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceVideoCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceVideoCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceVideoCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceVideoCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pCapabilities-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-07183` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` specifies a decode operation, then the `pNext` chain of `pCapabilities` must include a VkVideoDecodeCapabilitiesKHR structure
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-07184` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then the `pNext` chain of `pCapabilities` must include a VkVideoDecodeH264CapabilitiesKHR structure
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-07185` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the `pNext` chain of `pCapabilities` must include a VkVideoDecodeH265CapabilitiesKHR structure
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-07186` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` specifies an encode operation, then the `pNext` chain of `pCapabilities` must include a VkVideoEncodeCapabilitiesKHR structure
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-07187` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT`, then the `pNext` chain of `pCapabilities` must include a VkVideoEncodeH264CapabilitiesEXT structure
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-07188` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT`, then the `pNext` chain of `pCapabilities` must include a VkVideoEncodeH265CapabilitiesEXT structure
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pVideoProfile-parameter` (*by the types*): `pVideoProfile` must be a valid pointer to a valid VkVideoProfileInfoKHR structure
+- `VUID-vkGetPhysicalDeviceVideoCapabilitiesKHR-pCapabilities-parameter` (*by the types*): `pCapabilities` must be a valid pointer to a VkVideoCapabilitiesKHR structure*/
     #[doc(alias = "vkGetPhysicalDeviceVideoCapabilitiesKHR")]
     #[inline]
     pub fn get_video_capabilities_khr<'a>(
@@ -587,14 +613,13 @@ The caller upholds the rules that [`Self::get_video_capabilities_khr`] checks at
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceVideoFormatPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceVideoFormatPropertiesKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceVideoFormatPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceVideoFormatPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pVideoFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pVideoFormatPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pVideoFormatProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pNext-06812` (*yours*; explicit rule): The `pNext` chain of `pVideoFormatInfo` must include a VkVideoProfileListInfoKHR structure with `profileCount` greater than `0`
+- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pVideoFormatInfo-parameter` (*by the types*): `pVideoFormatInfo` must be a valid pointer to a valid VkPhysicalDeviceVideoFormatInfoKHR structure
+- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pVideoFormatPropertyCount-parameter` (*by the types*): `pVideoFormatPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceVideoFormatPropertiesKHR-pVideoFormatProperties-parameter` (*by the types*): If the value referenced by `pVideoFormatPropertyCount` is not `0`, and `pVideoFormatProperties` is not `NULL`, `pVideoFormatProperties` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetPhysicalDeviceVideoFormatPropertiesKHR")]
     #[inline]
     pub fn get_video_format_properties_khr<'a>(

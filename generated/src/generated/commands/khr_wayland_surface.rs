@@ -15,12 +15,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateWaylandSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateWaylandSurfaceKHR.html). Settled by the wrappers:
+The rules of `vkCreateWaylandSurfaceKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateWaylandSurfaceKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateWaylandSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateWaylandSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateWaylandSurfaceKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateWaylandSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateWaylandSurfaceKHR-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateWaylandSurfaceKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkWaylandSurfaceCreateInfoKHR structure
+- `VUID-vkCreateWaylandSurfaceKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateWaylandSurfaceKHR-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateWaylandSurfaceKHR")]
     #[inline]
     pub unsafe fn create_wayland_surface_khr<'a>(
@@ -82,14 +82,11 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceWaylandPresentationSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceWaylandPresentationSupportKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceWaylandPresentationSupportKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceWaylandPresentationSupportKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306` (*yours*; explicit rule): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter` (*yours*; passed as ash's raw type): `display` must be a valid pointer to a `wl_display` value
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle*/
     #[doc(alias = "vkGetPhysicalDeviceWaylandPresentationSupportKHR")]
     #[inline]
     pub unsafe fn get_wayland_presentation_support_khr(

@@ -15,12 +15,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateXlibSurfaceKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateXlibSurfaceKHR.html). Settled by the wrappers:
+The rules of `vkCreateXlibSurfaceKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateXlibSurfaceKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateXlibSurfaceKHR-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateXlibSurfaceKHR-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateXlibSurfaceKHR-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateXlibSurfaceKHR-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateXlibSurfaceKHR-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateXlibSurfaceKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkXlibSurfaceCreateInfoKHR structure
+- `VUID-vkCreateXlibSurfaceKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateXlibSurfaceKHR-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateXlibSurfaceKHR")]
     #[inline]
     pub unsafe fn create_xlib_surface_khr<'a>(
@@ -82,14 +82,11 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceXlibPresentationSupportKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceXlibPresentationSupportKHR.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceXlibPresentationSupportKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceXlibPresentationSupportKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-physicalDevice-parameter`: static (`self` is a live wrapper)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315` (*yours*; explicit rule): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-dpy-parameter` (*yours*; passed as ash's raw type): `dpy` must be a valid pointer to a `Display` value
+- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle*/
     #[doc(alias = "vkGetPhysicalDeviceXlibPresentationSupportKHR")]
     #[inline]
     pub unsafe fn get_xlib_presentation_support_khr(

@@ -21,12 +21,14 @@ mod v1_0_recording;
 mod v1_0_recording_part2;
 mod v1_0_recording_part3;
 mod v1_0_recording_part4;
+mod v1_0_recording_part5;
 mod v1_1;
 mod v1_1_recording;
 mod v1_2;
 mod v1_2_recording;
 mod v1_3;
 mod v1_3_recording;
+mod v1_3_recording_part2;
 #[cfg(feature = "amd_buffer_marker")]
 mod amd_buffer_marker;
 #[cfg(feature = "amd_display_native_hdr")]

@@ -15,12 +15,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateIOSSurfaceMVK`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateIOSSurfaceMVK.html). Settled by the wrappers:
+The rules of `vkCreateIOSSurfaceMVK` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateIOSSurfaceMVK.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateIOSSurfaceMVK-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateIOSSurfaceMVK-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateIOSSurfaceMVK-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateIOSSurfaceMVK-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateIOSSurfaceMVK-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateIOSSurfaceMVK-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkIOSSurfaceCreateInfoMVK structure
+- `VUID-vkCreateIOSSurfaceMVK-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateIOSSurfaceMVK-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateIOSSurfaceMVK")]
     #[inline]
     pub unsafe fn create_ios_surface_mvk<'a>(

@@ -15,12 +15,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateMacOSSurfaceMVK`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateMacOSSurfaceMVK.html). Settled by the wrappers:
+The rules of `vkCreateMacOSSurfaceMVK` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateMacOSSurfaceMVK.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateMacOSSurfaceMVK-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateMacOSSurfaceMVK-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateMacOSSurfaceMVK-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateMacOSSurfaceMVK-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateMacOSSurfaceMVK-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateMacOSSurfaceMVK-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkMacOSSurfaceCreateInfoMVK structure
+- `VUID-vkCreateMacOSSurfaceMVK-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateMacOSSurfaceMVK-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateMacOSSurfaceMVK")]
     #[inline]
     pub unsafe fn create_mac_os_surface_mvk<'a>(

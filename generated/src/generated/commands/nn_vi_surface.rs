@@ -14,12 +14,12 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkCreateViSurfaceNN`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateViSurfaceNN.html). Settled by the wrappers:
+The rules of `vkCreateViSurfaceNN` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateViSurfaceNN.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateViSurfaceNN-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateViSurfaceNN-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateViSurfaceNN-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateViSurfaceNN-pSurface-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateViSurfaceNN-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateViSurfaceNN-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkViSurfaceCreateInfoNN structure
+- `VUID-vkCreateViSurfaceNN-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateViSurfaceNN-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
     #[doc(alias = "vkCreateViSurfaceNN")]
     #[inline]
     pub unsafe fn create_vi_surface_nn<'a>(

@@ -14,12 +14,11 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkAcquireWinrtDisplayNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireWinrtDisplayNV.html). Settled by the wrappers:
+The rules of `vkAcquireWinrtDisplayNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireWinrtDisplayNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireWinrtDisplayNV-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAcquireWinrtDisplayNV-display-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (`parent` rules are not checked yet).*/
+- `VUID-vkAcquireWinrtDisplayNV-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
+- `VUID-vkAcquireWinrtDisplayNV-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkAcquireWinrtDisplayNV-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
     #[doc(alias = "vkAcquireWinrtDisplayNV")]
     #[inline]
     pub unsafe fn acquire_winrt_display_nv(&self, display: &DisplayKHR) -> Result<()> {
@@ -41,10 +40,10 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (`par
 
 # Valid usage
 
-The rules are on [`vkGetWinrtDisplayNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetWinrtDisplayNV.html). Settled by the wrappers:
+The rules of `vkGetWinrtDisplayNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetWinrtDisplayNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetWinrtDisplayNV-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetWinrtDisplayNV-pDisplay-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetWinrtDisplayNV-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetWinrtDisplayNV-pDisplay-parameter` (*by the types*): `pDisplay` must be a valid pointer to a VkDisplayKHR handle*/
     #[doc(alias = "vkGetWinrtDisplayNV")]
     #[inline]
     pub fn get_winrt_display_nv(&self, device_relative_id: u32) -> Result<DisplayKHR> {

@@ -8,16 +8,15 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetViewportWScalingNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWScalingNV.html). Settled by the wrappers:
+The rules of `vkCmdSetViewportWScalingNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportWScalingNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetViewportWScalingNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetViewportWScalingNV-pViewportWScalings-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetViewportWScalingNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetViewportWScalingNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetViewportWScalingNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetViewportWScalingNV-firstViewport-01324` (*yours*; explicit rule): The sum of `firstViewport` and `viewportCount` must be between `1` and VkPhysicalDeviceLimits::`maxViewports`, inclusive
+- `VUID-vkCmdSetViewportWScalingNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength` (*checked*): `viewportCount` must be greater than `0`
+- `VUID-vkCmdSetViewportWScalingNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetViewportWScalingNV-pViewportWScalings-parameter` (*by the types*): `pViewportWScalings` must be a valid pointer to an array of `viewportCount` VkViewportWScalingNV structures
+- `VUID-vkCmdSetViewportWScalingNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetViewportWScalingNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetViewportWScalingNV")]
     #[inline]
     pub fn set_viewport_w_scaling_nv(

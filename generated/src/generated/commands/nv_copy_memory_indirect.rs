@@ -17,15 +17,17 @@ The caller upholds these 4 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdCopyMemoryIndirectNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryIndirectNV.html). Settled by the wrappers:
+The rules of `vkCmdCopyMemoryIndirectNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryIndirectNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyMemoryIndirectNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyMemoryIndirectNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyMemoryIndirectNV-None-07653` (*yours*; explicit rule): The `indirectCopy` feature must be enabled
+- `VUID-vkCmdCopyMemoryIndirectNV-copyBufferAddress-07654` (*yours*; explicit rule): `copyBufferAddress` must be 4 byte aligned
+- `VUID-vkCmdCopyMemoryIndirectNV-stride-07655` (*yours*; explicit rule): `stride` must be a multiple of `4` and must be greater than or equal to sizeof(`VkCopyMemoryIndirectCommandNV`)
+- `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-07656` (*yours*; explicit rule): The VkCommandPool that `commandBuffer` was allocated from must support at least one of the VkPhysicalDeviceCopyMemoryIndirectPropertiesNV::`supportedQueues`
+- `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, or compute operations
+- `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyMemoryIndirectNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyMemoryIndirectNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyMemoryIndirectNV")]
     #[inline]
     pub unsafe fn copy_memory_indirect_nv(
@@ -96,23 +98,36 @@ The caller upholds these 13 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCmdCopyMemoryToImageIndirectNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryToImageIndirectNV.html). Settled by the wrappers:
+The rules of `vkCmdCopyMemoryToImageIndirectNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyMemoryToImageIndirectNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-pImageSubresources-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 18.
-
-- 3: checked by the safe methods in every build, but no oracle case breaks it yet
-- 15: explicit rule; the wrappers do not check it*/
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-None-07660` (*yours*; explicit rule): The `indirectCopy` feature must be enabled
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07661` (*yours*; explicit rule): `dstImage` must not be a protected image
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-aspectMask-07662` (*yours*; explicit rule): The `aspectMask` member for every subresource in `pImageSubresources` must only have a single bit set
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07663` (*yours*; explicit rule): The image region specified by each element in `copyBufferAddress` must be a region that is contained within `dstImage`
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07664` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07665` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07666` (*yours*; explicit rule): `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07667` (*yours*; explicit rule): `dstImageLayout` must specify the layout of the image subresources of `dstImage` at the time this command is executed on a `VkDevice`
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-mipLevel-07670` (*yours*; explicit rule): The specified `mipLevel` of each region must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-baseArrayLayer-07671` (*yours*; explicit rule): The specified `baseArrayLayer` + `layerCount` of each region must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-imageOffset-07672` (*yours*; explicit rule): The `imageOffset` and `imageExtent` members of each region must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in …
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-07674` (*yours*; explicit rule): If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT`, for each region, the `aspectMask` member of `pImageSubresources` …
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-imageOffset-07675` (*yours*; explicit rule): For each region in `copyBufferAddress`, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified …
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-offset-07676` (*yours*; explicit rule): `offset` must be 4 byte aligned
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-stride-07677` (*yours*; explicit rule): `stride` must be a multiple of `4` and must be greater than or equal to sizeof(`VkCopyMemoryToImageIndirectCommandNV`)
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07668` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07669` (*yours*; explicit rule): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, `VK_IMAGE_LAYOUT_GENERAL`, or `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07673` (*yours*; explicit rule): `dstImage` must not have been created with `flags` containing `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-parameter` (*checked*): `dstImageLayout` must be a valid VkImageLayout value
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, or compute operations
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength` (*checked*): `copyCount` must be greater than `0`
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent` (*checked*): Both of `commandBuffer`, and `dstImage` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-parameter` (*by the types*): `dstImage` must be a valid VkImage handle
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-pImageSubresources-parameter` (*by the types*): `pImageSubresources` must be a valid pointer to an array of `copyCount` valid VkImageSubresourceLayers structures
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyMemoryToImageIndirectNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyMemoryToImageIndirectNV")]
     #[inline]
     pub unsafe fn copy_memory_to_image_indirect_nv(

@@ -12,12 +12,12 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetCheckpointNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCheckpointNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCheckpointNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCheckpointNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCheckpointNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCheckpointNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCheckpointNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, or transfer operations
+- `VUID-vkCmdSetCheckpointNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCheckpointNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCheckpointNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCheckpointNV")]
     #[inline]
     pub unsafe fn set_checkpoint_nv(
@@ -69,13 +69,12 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkGetQueueCheckpointDataNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueueCheckpointDataNV.html). Settled by the wrappers:
+The rules of `vkGetQueueCheckpointDataNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueueCheckpointDataNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetQueueCheckpointDataNV-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetQueueCheckpointDataNV-pCheckpointDataCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetQueueCheckpointDataNV-pCheckpointData-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetQueueCheckpointDataNV-queue-02025` (*yours*; explicit rule): The device that `queue` belongs to must be in the lost state
+- `VUID-vkGetQueueCheckpointDataNV-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkGetQueueCheckpointDataNV-pCheckpointDataCount-parameter` (*by the types*): `pCheckpointDataCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetQueueCheckpointDataNV-pCheckpointData-parameter` (*by the types*): If the value referenced by `pCheckpointDataCount` is not `0`, and `pCheckpointData` is not `NULL`, `pCheckpointData` must be a valid pointer to an array of `pCheckpointDataCount` VkCheckpointDataNV …*/
     #[doc(alias = "vkGetQueueCheckpointDataNV")]
     #[inline]
     pub unsafe fn get_checkpoint_data_nv(

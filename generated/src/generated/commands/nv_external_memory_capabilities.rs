@@ -8,19 +8,18 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceExternalImageFormatPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalImageFormatPropertiesNV.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceExternalImageFormatPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalImageFormatPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-externalHandleType-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-pExternalImageFormatProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-externalHandleType-07721` (*yours*; explicit rule): `externalHandleType` must not have more than one bit set
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-type-parameter` (*checked*): `type` must be a valid VkImageType value
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-tiling-parameter` (*checked*): `tiling` must be a valid VkImageTiling value
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-parameter` (*checked*): `usage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkImageCreateFlagBits values
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-externalHandleType-parameter` (*checked*): `externalHandleType` must be a valid combination of VkExternalMemoryHandleTypeFlagBitsNV values
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-pExternalImageFormatProperties-parameter` (*by the types*): `pExternalImageFormatProperties` must be a valid pointer to a VkExternalImageFormatPropertiesNV structure*/
     #[doc(alias = "vkGetPhysicalDeviceExternalImageFormatPropertiesNV")]
     #[inline]
     pub fn get_external_image_format_properties_nv(

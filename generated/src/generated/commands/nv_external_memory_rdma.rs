@@ -14,11 +14,11 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkGetMemoryRemoteAddressNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryRemoteAddressNV.html). Settled by the wrappers:
+The rules of `vkGetMemoryRemoteAddressNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryRemoteAddressNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryRemoteAddressNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryRemoteAddressNV-pMemoryGetRemoteAddressInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetMemoryRemoteAddressNV-pAddress-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetMemoryRemoteAddressNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryRemoteAddressNV-pMemoryGetRemoteAddressInfo-parameter` (*by the types*): `pMemoryGetRemoteAddressInfo` must be a valid pointer to a valid VkMemoryGetRemoteAddressInfoNV structure
+- `VUID-vkGetMemoryRemoteAddressNV-pAddress-parameter` (*by the types*): `pAddress` must be a valid pointer to a VkRemoteAddressNV value*/
     #[doc(alias = "vkGetMemoryRemoteAddressNV")]
     #[inline]
     pub unsafe fn get_memory_remote_address_nv<'a>(

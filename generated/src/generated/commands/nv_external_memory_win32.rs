@@ -12,18 +12,15 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetMemoryWin32HandleNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandleNV.html). Settled by the wrappers:
+The rules of `vkGetMemoryWin32HandleNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandleNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryWin32HandleNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetMemoryWin32HandleNV-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetMemoryWin32HandleNV-handleType-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkGetMemoryWin32HandleNV-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: explicit rule; the wrappers do not check it
-- 1: passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method*/
+- `VUID-vkGetMemoryWin32HandleNV-handleType-01326` (*yours*; explicit rule): `handleType` must be a flag specified in VkExportMemoryAllocateInfoNV::`handleTypes` when allocating `memory`
+- `VUID-vkGetMemoryWin32HandleNV-pHandle-parameter` (*yours*; passed as ash's raw type): `pHandle` must be a valid pointer to a `HANDLE` value
+- `VUID-vkGetMemoryWin32HandleNV-handleType-parameter` (*checked*): `handleType` must be a valid combination of VkExternalMemoryHandleTypeFlagBitsNV values
+- `VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask` (*checked*): `handleType` must not be `0`
+- `VUID-vkGetMemoryWin32HandleNV-memory-parent` (*checked*): `memory` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetMemoryWin32HandleNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetMemoryWin32HandleNV-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
     #[doc(alias = "vkGetMemoryWin32HandleNV")]
     #[inline]
     pub unsafe fn get_memory_win32_handle_nv(

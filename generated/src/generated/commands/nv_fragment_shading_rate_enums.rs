@@ -8,16 +8,22 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetFragmentShadingRateEnumNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetFragmentShadingRateEnumNV.html). Settled by the wrappers:
+The rules of `vkCmdSetFragmentShadingRateEnumNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetFragmentShadingRateEnumNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetFragmentShadingRateEnumNV-shadingRate-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetFragmentShadingRateEnumNV-combinerOps-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetFragmentShadingRateEnumNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-pipelineFragmentShadingRate-04576` (*yours*; explicit rule): If `pipelineFragmentShadingRate` is not enabled, `shadingRate` must be `VK_FRAGMENT_SHADING_RATE_1_INVOCATION_PER_PIXEL_NV`
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-supersampleFragmentShadingRates-04577` (*yours*; explicit rule): If `supersampleFragmentShadingRates` is not enabled, `shadingRate` must not be `VK_FRAGMENT_SHADING_RATE_2_INVOCATIONS_PER_PIXEL_NV`, `VK_FRAGMENT_SHADING_RATE_4_INVOCATIONS_PER_PIXEL_NV`, …
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-noInvocationFragmentShadingRates-04578` (*yours*; explicit rule): If `noInvocationFragmentShadingRates` is not enabled, `shadingRate` must not be `VK_FRAGMENT_SHADING_RATE_NO_INVOCATIONS_NV`
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-fragmentShadingRateEnums-04579` (*yours*; explicit rule): The `fragmentShadingRateEnums` feature must be enabled
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-pipelineFragmentShadingRate-04580` (*yours*; explicit rule): One of the `pipelineFragmentShadingRate`, `primitiveFragmentShadingRate`, or `attachmentFragmentShadingRate` features must be enabled
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-primitiveFragmentShadingRate-04581` (*yours*; explicit rule): If the `primitiveFragmentShadingRate` feature is not enabled, `combinerOps`\[0\] must be `VK_FRAGMENT_SHADING_RATE_COMBINER_OP_KEEP_KHR`
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-attachmentFragmentShadingRate-04582` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `combinerOps`\[1\] must be `VK_FRAGMENT_SHADING_RATE_COMBINER_OP_KEEP_KHR`
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-fragmentSizeNonTrivialCombinerOps-04583` (*yours*; explicit rule): If the `fragmentSizeNonTrivialCombinerOps` limit is not supported, elements of `combinerOps` must be either `VK_FRAGMENT_SHADING_RATE_COMBINER_OP_KEEP_KHR` or …
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-shadingRate-parameter` (*checked*): `shadingRate` must be a valid VkFragmentShadingRateNV value
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-combinerOps-parameter` (*by the types*): Any given element of `combinerOps` must be a valid VkFragmentShadingRateCombinerOpKHR value
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetFragmentShadingRateEnumNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetFragmentShadingRateEnumNV")]
     #[inline]
     pub fn set_fragment_shading_rate_enum_nv(

@@ -24,15 +24,24 @@ The caller upholds these 11 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCmdDecompressMemoryIndirectCountNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDecompressMemoryIndirectCountNV.html). Settled by the wrappers:
+The rules of `vkCmdDecompressMemoryIndirectCountNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDecompressMemoryIndirectCountNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDecompressMemoryIndirectCountNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDecompressMemoryIndirectCountNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-None-07692` (*yours*; explicit rule): The `memoryDecompression` feature must be enabled
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsAddress-07693` (*yours*; explicit rule): If `indirectCommandsAddress` comes from a non-sparse buffer then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsAddress-07694` (*yours*; explicit rule): The VkBuffer that `indirectCommandsAddress` comes from must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-offset-07695` (*yours*; explicit rule): `offset` must be a multiple of `4`
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsCountAddress-07696` (*yours*; explicit rule): If `indirectCommandsCountAddress` comes from a non-sparse buffer then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsCountAddress-07697` (*yours*; explicit rule): The VkBuffer that `indirectCommandsCountAddress` comes from must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsCountAddress-07698` (*yours*; explicit rule): `indirectCommandsCountAddress` must be a multiple of `4`
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsCountAddress-07699` (*yours*; explicit rule): The count stored in `indirectCommandsCountAddress` must be less than or equal to `VkPhysicalDeviceMemoryDecompressionPropertiesNV::maxDecompressionIndirectCount`
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-stride-07700` (*yours*; explicit rule): `stride` must be a multiple of `4` and must be greater than or equal to sizeof(`VkDecompressMemoryRegionNV`)
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsCountAddress-07701` (*yours*; explicit rule): If the count stored in `indirectCommandsCountAddress` is equal to `1`, (`offset` + sizeof(`VkDecompressMemoryRegionNV`)) must be less than or equal to the size of the VkBuffer that …
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-indirectCommandsCountAddress-07702` (*yours*; explicit rule): If the count stored in `indirectCommandsCountAddress` is greater than `1`, `indirectCommandsAddress` + sizeof(`VkDecompressMemoryRegionNV`) + (`stride` {times} (count stored in `countBuffer` - 1)) …
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdDecompressMemoryIndirectCountNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdDecompressMemoryIndirectCountNV")]
     #[inline]
     pub unsafe fn decompress_memory_indirect_count_nv(
@@ -105,17 +114,16 @@ The caller upholds these 8 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCmdDecompressMemoryNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDecompressMemoryNV.html). Settled by the wrappers:
+The rules of `vkCmdDecompressMemoryNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDecompressMemoryNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdDecompressMemoryNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdDecompressMemoryNV-pDecompressMemoryRegions-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdDecompressMemoryNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdDecompressMemoryNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdDecompressMemoryNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdDecompressMemoryNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdDecompressMemoryNV-None-07684` (*yours*; explicit rule): The `memoryDecompression` feature must be enabled
+- `VUID-vkCmdDecompressMemoryNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength` (*checked*): `decompressRegionCount` must be greater than `0`
+- `VUID-vkCmdDecompressMemoryNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdDecompressMemoryNV-pDecompressMemoryRegions-parameter` (*by the types*): `pDecompressMemoryRegions` must be a valid pointer to an array of `decompressRegionCount` valid VkDecompressMemoryRegionNV structures
+- `VUID-vkCmdDecompressMemoryNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdDecompressMemoryNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdDecompressMemoryNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdDecompressMemoryNV")]
     #[inline]
     pub unsafe fn decompress_memory_nv(

@@ -8,15 +8,15 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkBindOpticalFlowSessionImageNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindOpticalFlowSessionImageNV.html). Settled by the wrappers:
+The rules of `vkBindOpticalFlowSessionImageNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindOpticalFlowSessionImageNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindOpticalFlowSessionImageNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBindOpticalFlowSessionImageNV-session-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindOpticalFlowSessionImageNV-bindingPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkBindOpticalFlowSessionImageNV-view-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindOpticalFlowSessionImageNV-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkBindOpticalFlowSessionImageNV-session-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkBindOpticalFlowSessionImageNV-view-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkBindOpticalFlowSessionImageNV-bindingPoint-parameter` (*checked*): `bindingPoint` must be a valid VkOpticalFlowSessionBindingPointNV value
+- `VUID-vkBindOpticalFlowSessionImageNV-layout-parameter` (*checked*): `layout` must be a valid VkImageLayout value
+- `VUID-vkBindOpticalFlowSessionImageNV-session-parent` (*checked*): `session` must have been created, allocated, or retrieved from `device`
+- `VUID-vkBindOpticalFlowSessionImageNV-view-parent` (*checked*): If `view` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkBindOpticalFlowSessionImageNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBindOpticalFlowSessionImageNV-session-parameter` (*by the types*): `session` must be a valid VkOpticalFlowSessionNV handle
+- `VUID-vkBindOpticalFlowSessionImageNV-view-parameter` (*by the types*): If `view` is not VK_NULL_HANDLE, `view` must be a valid VkImageView handle*/
     #[doc(alias = "vkBindOpticalFlowSessionImageNV")]
     #[inline]
     pub fn bind_optical_flow_session_image_nv(
@@ -103,12 +103,12 @@ The caller upholds these 13 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCreateOpticalFlowSessionNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateOpticalFlowSessionNV.html). Settled by the wrappers:
+The rules of `vkCreateOpticalFlowSessionNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateOpticalFlowSessionNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateOpticalFlowSessionNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateOpticalFlowSessionNV-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateOpticalFlowSessionNV-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateOpticalFlowSessionNV-pSession-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateOpticalFlowSessionNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateOpticalFlowSessionNV-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkOpticalFlowSessionCreateInfoNV structure
+- `VUID-vkCreateOpticalFlowSessionNV-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateOpticalFlowSessionNV-pSession-parameter` (*by the types*): `pSession` must be a valid pointer to a VkOpticalFlowSessionNV handle*/
     #[doc(alias = "vkCreateOpticalFlowSessionNV")]
     #[inline]
     pub unsafe fn create_optical_flow_session_nv<'a>(
@@ -167,16 +167,16 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkCmdOpticalFlowExecuteNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdOpticalFlowExecuteNV.html). Settled by the wrappers:
+The rules of `vkCmdOpticalFlowExecuteNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdOpticalFlowExecuteNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdOpticalFlowExecuteNV-session-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdOpticalFlowExecuteNV-pExecuteInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdOpticalFlowExecuteNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdOpticalFlowExecuteNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdOpticalFlowExecuteNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)*/
+- `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support opticalflow operations
+- `VUID-vkCmdOpticalFlowExecuteNV-commonparent` (*checked*): Both of `commandBuffer`, and `session` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdOpticalFlowExecuteNV-session-parameter` (*by the types*): `session` must be a valid VkOpticalFlowSessionNV handle
+- `VUID-vkCmdOpticalFlowExecuteNV-pExecuteInfo-parameter` (*by the types*): `pExecuteInfo` must be a valid pointer to a valid VkOpticalFlowExecuteInfoNV structure
+- `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdOpticalFlowExecuteNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdOpticalFlowExecuteNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdOpticalFlowExecuteNV")]
     #[inline]
     pub unsafe fn optical_flow_execute_nv<'a>(
@@ -231,12 +231,12 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceOpticalFlowImageFormatsNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceOpticalFlowImageFormatsNV.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceOpticalFlowImageFormatsNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceOpticalFlowImageFormatsNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pOpticalFlowImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pFormatCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pOpticalFlowImageFormatInfo-parameter` (*by the types*): `pOpticalFlowImageFormatInfo` must be a valid pointer to a valid VkOpticalFlowImageFormatInfoNV structure
+- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pFormatCount-parameter` (*by the types*): `pFormatCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceOpticalFlowImageFormatsNV-pImageFormatProperties-parameter` (*by the types*): If the value referenced by `pFormatCount` is not `0`, and `pImageFormatProperties` is not `NULL`, `pImageFormatProperties` must be a valid pointer to an array of `pFormatCount` …*/
     #[doc(alias = "vkGetPhysicalDeviceOpticalFlowImageFormatsNV")]
     #[inline]
     pub fn get_optical_flow_image_formats_nv<'a>(

@@ -8,11 +8,11 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkBindAccelerationStructureMemoryNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindAccelerationStructureMemoryNV.html). Settled by the wrappers:
+The rules of `vkBindAccelerationStructureMemoryNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindAccelerationStructureMemoryNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindAccelerationStructureMemoryNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBindAccelerationStructureMemoryNV-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBindAccelerationStructureMemoryNV-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
+- `VUID-vkBindAccelerationStructureMemoryNV-bindInfoCount-arraylength` (*checked*): `bindInfoCount` must be greater than `0`
+- `VUID-vkBindAccelerationStructureMemoryNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBindAccelerationStructureMemoryNV-pBindInfos-parameter` (*by the types*): `pBindInfos` must be a valid pointer to an array of `bindInfoCount` valid VkBindAccelerationStructureMemoryInfoNV structures*/
     #[doc(alias = "vkBindAccelerationStructureMemoryNV")]
     #[inline]
     pub fn bind_acceleration_structure_memory_nv<'a>(
@@ -56,13 +56,14 @@ The caller upholds the rules that [`Self::bind_acceleration_structure_memory_nv`
 
 # Valid usage
 
-The rules are on [`vkCompileDeferredNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCompileDeferredNV.html). Settled by the wrappers:
+The rules of `vkCompileDeferredNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCompileDeferredNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCompileDeferredNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCompileDeferredNV-pipeline-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCompileDeferredNV-pipeline-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCompileDeferredNV-pipeline-04621` (*yours*; explicit rule): `pipeline` must be a ray tracing pipeline
+- `VUID-vkCompileDeferredNV-pipeline-02237` (*yours*; explicit rule): `pipeline` must have been created with `VK_PIPELINE_CREATE_DEFER_COMPILE_BIT_NV`
+- `VUID-vkCompileDeferredNV-shader-02238` (*yours*; explicit rule): `shader` must not have been called as a deferred compile before
+- `VUID-vkCompileDeferredNV-pipeline-parent` (*checked*): `pipeline` must have been created, allocated, or retrieved from `device`
+- `VUID-vkCompileDeferredNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCompileDeferredNV-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
     #[doc(alias = "vkCompileDeferredNV")]
     #[inline]
     pub fn compile_deferred_nv(&self, pipeline: &Pipeline, shader: u32) -> Result<()> {
@@ -102,12 +103,12 @@ The caller upholds the rules that [`Self::compile_deferred_nv`] checks at run ti
 
 # Valid usage
 
-The rules are on [`vkCreateAccelerationStructureNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAccelerationStructureNV.html). Settled by the wrappers:
+The rules of `vkCreateAccelerationStructureNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateAccelerationStructureNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateAccelerationStructureNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateAccelerationStructureNV-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateAccelerationStructureNV-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateAccelerationStructureNV-pAccelerationStructure-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateAccelerationStructureNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateAccelerationStructureNV-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkAccelerationStructureCreateInfoNV structure
+- `VUID-vkCreateAccelerationStructureNV-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateAccelerationStructureNV-pAccelerationStructure-parameter` (*by the types*): `pAccelerationStructure` must be a valid pointer to a VkAccelerationStructureNV handle*/
     #[doc(alias = "vkCreateAccelerationStructureNV")]
     #[inline]
     pub fn create_acceleration_structure_nv<'a>(
@@ -178,17 +179,19 @@ The caller upholds the rules that [`Self::create_acceleration_structure_nv`] che
 
 # Valid usage
 
-The rules are on [`vkCreateRayTracingPipelinesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRayTracingPipelinesNV.html). Settled by the wrappers:
+The rules of `vkCreateRayTracingPipelinesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRayTracingPipelinesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateRayTracingPipelinesNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateRayTracingPipelinesNV-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateRayTracingPipelinesNV-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateRayTracingPipelinesNV-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateRayTracingPipelinesNV-flags-03415` (*yours*; explicit rule): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` …
+- `VUID-vkCreateRayTracingPipelinesNV-flags-03416` (*yours*; explicit rule): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the …
+- `VUID-vkCreateRayTracingPipelinesNV-flags-03816` (*yours*; explicit rule): `flags` must not contain the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
+- `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-02903` (*yours*; explicit rule): If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
+- `VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength` (*checked*): `createInfoCount` must be greater than `0`
+- `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parent` (*checked*): If `pipelineCache` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCreateRayTracingPipelinesNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parameter` (*by the types*): If `pipelineCache` is not VK_NULL_HANDLE, `pipelineCache` must be a valid VkPipelineCache handle
+- `VUID-vkCreateRayTracingPipelinesNV-pCreateInfos-parameter` (*by the types*): `pCreateInfos` must be a valid pointer to an array of `createInfoCount` valid VkRayTracingPipelineCreateInfoNV structures
+- `VUID-vkCreateRayTracingPipelinesNV-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateRayTracingPipelinesNV-pPipelines-parameter` (*by the types*): `pPipelines` must be a valid pointer to an array of `createInfoCount` VkPipeline handles*/
     #[doc(alias = "vkCreateRayTracingPipelinesNV")]
     #[inline]
     pub fn create_ray_tracing_pipelines_nv<'a>(
@@ -275,15 +278,15 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_nv`] chec
 
 # Valid usage
 
-The rules are on [`vkGetAccelerationStructureHandleNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureHandleNV.html). Settled by the wrappers:
+The rules of `vkGetAccelerationStructureHandleNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureHandleNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetAccelerationStructureHandleNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetAccelerationStructureHandleNV-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetAccelerationStructureHandleNV-dataSize-02240` (*yours*; explicit rule): `dataSize` must be large enough to contain the result of the query, as described above
+- `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-02787` (*yours*; explicit rule): `accelerationStructure` must be bound completely and contiguously to a single `VkDeviceMemory` object via vkBindAccelerationStructureMemoryNV
+- `VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent` (*checked*): `accelerationStructure` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetAccelerationStructureHandleNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parameter` (*by the types*): `accelerationStructure` must be a valid VkAccelerationStructureNV handle
+- `VUID-vkGetAccelerationStructureHandleNV-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkGetAccelerationStructureHandleNV")]
     #[inline]
     pub fn get_acceleration_structure_handle_nv(
@@ -343,11 +346,11 @@ The caller upholds the rules that [`Self::get_acceleration_structure_handle_nv`]
 
 # Valid usage
 
-The rules are on [`vkGetAccelerationStructureMemoryRequirementsNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureMemoryRequirementsNV.html). Settled by the wrappers:
+The rules of `vkGetAccelerationStructureMemoryRequirementsNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureMemoryRequirementsNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetAccelerationStructureMemoryRequirementsNV-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetAccelerationStructureMemoryRequirementsNV-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetAccelerationStructureMemoryRequirementsNV-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetAccelerationStructureMemoryRequirementsNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetAccelerationStructureMemoryRequirementsNV-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkAccelerationStructureMemoryRequirementsInfoNV structure
+- `VUID-vkGetAccelerationStructureMemoryRequirementsNV-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements2KHR structure*/
     #[doc(alias = "vkGetAccelerationStructureMemoryRequirementsNV")]
     #[inline]
     pub fn get_acceleration_structure_memory_requirements_nv<'a>(
@@ -400,21 +403,32 @@ impl<'c> Recorder<'c, Outside> {
 
 # Valid usage
 
-The rules are on [`vkCmdBuildAccelerationStructureNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructureNV.html). Settled by the wrappers:
+The rules of `vkCmdBuildAccelerationStructureNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructureNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBuildAccelerationStructureNV-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdBuildAccelerationStructureNV-instanceData-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBuildAccelerationStructureNV-dst-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBuildAccelerationStructureNV-src-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBuildAccelerationStructureNV-scratch-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBuildAccelerationStructureNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdBuildAccelerationStructureNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBuildAccelerationStructureNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBuildAccelerationStructureNV-geometryCount-02241` (*yours*; explicit rule): `geometryCount` must be less than or equal to VkPhysicalDeviceRayTracingPropertiesNV::`maxGeometryCount`
+- `VUID-vkCmdBuildAccelerationStructureNV-dst-02488` (*yours*; explicit rule): `dst` must have been created with compatible VkAccelerationStructureInfoNV where VkAccelerationStructureInfoNV::`type` and VkAccelerationStructureInfoNV::`flags` are identical, …
+- `VUID-vkCmdBuildAccelerationStructureNV-update-02489` (*yours*; explicit rule): If `update` is `VK_TRUE`, `src` must not be VK_NULL_HANDLE
+- `VUID-vkCmdBuildAccelerationStructureNV-update-02490` (*yours*; explicit rule): If `update` is `VK_TRUE`, `src` must have previously been constructed with `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_NV` set in VkAccelerationStructureInfoNV::`flags` in the original build
+- `VUID-vkCmdBuildAccelerationStructureNV-update-02491` (*yours*; explicit rule): If `update` is `VK_FALSE`, the `size` member of the VkMemoryRequirements structure returned from a call to vkGetAccelerationStructureMemoryRequirementsNV with …
+- `VUID-vkCmdBuildAccelerationStructureNV-update-02492` (*yours*; explicit rule): If `update` is `VK_TRUE`, the `size` member of the VkMemoryRequirements structure returned from a call to vkGetAccelerationStructureMemoryRequirementsNV with …
+- `VUID-vkCmdBuildAccelerationStructureNV-scratch-03522` (*yours*; explicit rule): `scratch` must have been created with `VK_BUFFER_USAGE_RAY_TRACING_BIT_NV` usage flag
+- `VUID-vkCmdBuildAccelerationStructureNV-instanceData-03523` (*yours*; explicit rule): If `instanceData` is not VK_NULL_HANDLE, `instanceData` must have been created with `VK_BUFFER_USAGE_RAY_TRACING_BIT_NV` usage flag
+- `VUID-vkCmdBuildAccelerationStructureNV-accelerationStructureReference-03786` (*yours*; explicit rule): Each VkAccelerationStructureInstanceKHR::`accelerationStructureReference` value in `instanceData` must be a valid device address containing a value obtained from vkGetAccelerationStructureHandleNV
+- `VUID-vkCmdBuildAccelerationStructureNV-update-03524` (*yours*; explicit rule): If `update` is `VK_TRUE`, then objects that were previously active must not be made inactive as per Inactive Primitives and Instances
+- `VUID-vkCmdBuildAccelerationStructureNV-update-03525` (*yours*; explicit rule): If `update` is `VK_TRUE`, then objects that were previously inactive must not be made active as per Inactive Primitives and Instances
+- `VUID-vkCmdBuildAccelerationStructureNV-update-03526` (*yours*; explicit rule): If `update` is `VK_TRUE`, the `src` and `dst` objects must either be the same object or not have any memory aliasing
+- `VUID-vkCmdBuildAccelerationStructureNV-dst-07787` (*yours*; explicit rule): `dst` must be bound completely and contiguously to a single `VkDeviceMemory` object via vkBindAccelerationStructureMemoryNV
+- `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdBuildAccelerationStructureNV-commonparent` (*checked*): Each of `commandBuffer`, `dst`, `instanceData`, `scratch`, and `src` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBuildAccelerationStructureNV-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkAccelerationStructureInfoNV structure
+- `VUID-vkCmdBuildAccelerationStructureNV-instanceData-parameter` (*by the types*): If `instanceData` is not VK_NULL_HANDLE, `instanceData` must be a valid VkBuffer handle
+- `VUID-vkCmdBuildAccelerationStructureNV-dst-parameter` (*by the types*): `dst` must be a valid VkAccelerationStructureNV handle
+- `VUID-vkCmdBuildAccelerationStructureNV-src-parameter` (*by the types*): If `src` is not VK_NULL_HANDLE, `src` must be a valid VkAccelerationStructureNV handle
+- `VUID-vkCmdBuildAccelerationStructureNV-scratch-parameter` (*by the types*): `scratch` must be a valid VkBuffer handle
+- `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBuildAccelerationStructureNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdBuildAccelerationStructureNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBuildAccelerationStructureNV")]
     #[inline]
     pub fn build_acceleration_structure_nv<'a>(
@@ -528,19 +542,24 @@ The caller upholds the rules that [`Self::build_acceleration_structure_nv`] chec
 
 # Valid usage
 
-The rules are on [`vkCmdCopyAccelerationStructureNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyAccelerationStructureNV.html). Settled by the wrappers:
+The rules of `vkCmdCopyAccelerationStructureNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyAccelerationStructureNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCopyAccelerationStructureNV-dst-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyAccelerationStructureNV-src-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdCopyAccelerationStructureNV-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCopyAccelerationStructureNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdCopyAccelerationStructureNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdCopyAccelerationStructureNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdCopyAccelerationStructureNV-mode-03410` (*yours*; explicit rule): `mode` must be `VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR` or `VK_COPY_ACCELERATION_STRUCTURE_MODE_CLONE_KHR`
+- `VUID-vkCmdCopyAccelerationStructureNV-src-04963` (*yours*; explicit rule): The source acceleration structure `src` must have been constructed prior to the execution of this command
+- `VUID-vkCmdCopyAccelerationStructureNV-src-03411` (*yours*; explicit rule): If `mode` is `VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR`, `src` must have been constructed with `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR` in the build
+- `VUID-vkCmdCopyAccelerationStructureNV-buffer-03718` (*yours*; explicit rule): The `buffer` used to create `src` must be bound to device memory
+- `VUID-vkCmdCopyAccelerationStructureNV-buffer-03719` (*yours*; explicit rule): The `buffer` used to create `dst` must be bound to device memory
+- `VUID-vkCmdCopyAccelerationStructureNV-dst-07791` (*yours*; explicit rule): The range of memory backing `dst` that is accessed by this command must not overlap the memory backing `src` that is accessed by this command
+- `VUID-vkCmdCopyAccelerationStructureNV-dst-07792` (*yours*; explicit rule): `dst` must be bound completely and contiguously to a single `VkDeviceMemory` object via vkBindAccelerationStructureMemoryNV
+- `VUID-vkCmdCopyAccelerationStructureNV-mode-parameter` (*checked*): `mode` must be a valid VkCopyAccelerationStructureModeKHR value
+- `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdCopyAccelerationStructureNV-commonparent` (*checked*): Each of `commandBuffer`, `dst`, and `src` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCopyAccelerationStructureNV-dst-parameter` (*by the types*): `dst` must be a valid VkAccelerationStructureNV handle
+- `VUID-vkCmdCopyAccelerationStructureNV-src-parameter` (*by the types*): `src` must be a valid VkAccelerationStructureNV handle
+- `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCopyAccelerationStructureNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdCopyAccelerationStructureNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyAccelerationStructureNV")]
     #[inline]
     pub fn copy_acceleration_structure_nv(
@@ -589,20 +608,97 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_nv`] check
 
 # Valid usage
 
-The rules are on [`vkCmdTraceRaysNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdTraceRaysNV.html). Settled by the wrappers:
+The rules of `vkCmdTraceRaysNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdTraceRaysNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdTraceRaysNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdTraceRaysNV-raygenShaderBindingTableBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdTraceRaysNV-missShaderBindingTableBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdTraceRaysNV-hitShaderBindingTableBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdTraceRaysNV-callableShaderBindingTableBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdTraceRaysNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdTraceRaysNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdTraceRaysNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdTraceRaysNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 79 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdTraceRaysNV-magFilter-04553` (*yours*; explicit rule): If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image …
+- `VUID-vkCmdTraceRaysNV-mipmapMode-04770` (*yours*; explicit rule): If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image …
+- `VUID-vkCmdTraceRaysNV-None-02691` (*yours*; explicit rule): If a `VkImageView` is accessed using atomic operations as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_ATOMIC_BIT`
+- `VUID-vkCmdTraceRaysNV-None-02697` (*yours*; explicit rule): For each set n that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a descriptor set must have been bound to n at the same pipeline bind point, with a …
+- `VUID-vkCmdTraceRaysNV-None-02700` (*yours*; explicit rule): A valid pipeline must be bound to the pipeline bind point used by this command
+- `VUID-vkCmdTraceRaysNV-commandBuffer-02701` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command requires any dynamic state, that state must have been set or inherited (if the VK_NV_inherited_viewport_scissor …
+- `VUID-vkCmdTraceRaysNV-None-02859` (*yours*; explicit rule): There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that …
+- `VUID-vkCmdTraceRaysNV-None-02702` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used to sample from any …
+- `VUID-vkCmdTraceRaysNV-None-02703` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V …
+- `VUID-vkCmdTraceRaysNV-None-02704` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` object that uses unnormalized coordinates, that sampler must not be used with any of the SPIR-V …
+- `VUID-vkCmdTraceRaysNV-viewType-07752` (*yours*; explicit rule): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View …
+- `VUID-vkCmdTraceRaysNV-format-07753` (*yours*; explicit rule): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the …
+- `VUID-vkCmdTraceRaysNV-None-04115` (*yours*; explicit rule): If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image …
+- `VUID-vkCmdTraceRaysNV-OpImageWrite-04469` (*yours*; explicit rule): If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer …
+- `VUID-vkCmdTraceRaysNV-None-07288` (*yours*; explicit rule): Any shader invocation executed by this command must terminate
+- `VUID-vkCmdTraceRaysNV-None-03429` (*yours*; explicit rule): Any shader group handle referenced by this call must have been queried from the currently bound ray tracing pipeline
+- `VUID-vkCmdTraceRaysNV-commandBuffer-04624` (*yours*; explicit rule): `commandBuffer` must not be a protected command buffer
+- `VUID-vkCmdTraceRaysNV-maxRecursionDepth-03625` (*yours*; explicit rule): This command must not cause a pipeline trace ray instruction to be executed from a shader invocation with a recursion depth greater than the value of `maxRecursionDepth` used to create the bound ray …
+- `VUID-vkCmdTraceRaysNV-raygenShaderBindingTableBuffer-04042` (*yours*; explicit rule): If `raygenShaderBindingTableBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysNV-raygenShaderBindingOffset-02455` (*yours*; explicit rule): `raygenShaderBindingOffset` must be less than the size of `raygenShaderBindingTableBuffer`
+- `VUID-vkCmdTraceRaysNV-raygenShaderBindingOffset-02456` (*yours*; explicit rule): `raygenShaderBindingOffset` must be a multiple of `VkPhysicalDeviceRayTracingPropertiesNV::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysNV-missShaderBindingTableBuffer-04043` (*yours*; explicit rule): If `missShaderBindingTableBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysNV-missShaderBindingOffset-02457` (*yours*; explicit rule): `missShaderBindingOffset` must be less than the size of `missShaderBindingTableBuffer`
+- `VUID-vkCmdTraceRaysNV-missShaderBindingOffset-02458` (*yours*; explicit rule): `missShaderBindingOffset` must be a multiple of `VkPhysicalDeviceRayTracingPropertiesNV::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysNV-hitShaderBindingTableBuffer-04044` (*yours*; explicit rule): If `hitShaderBindingTableBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysNV-hitShaderBindingOffset-02459` (*yours*; explicit rule): `hitShaderBindingOffset` must be less than the size of `hitShaderBindingTableBuffer`
+- `VUID-vkCmdTraceRaysNV-hitShaderBindingOffset-02460` (*yours*; explicit rule): `hitShaderBindingOffset` must be a multiple of `VkPhysicalDeviceRayTracingPropertiesNV::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysNV-callableShaderBindingTableBuffer-04045` (*yours*; explicit rule): If `callableShaderBindingTableBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdTraceRaysNV-callableShaderBindingOffset-02461` (*yours*; explicit rule): `callableShaderBindingOffset` must be less than the size of `callableShaderBindingTableBuffer`
+- `VUID-vkCmdTraceRaysNV-callableShaderBindingOffset-02462` (*yours*; explicit rule): `callableShaderBindingOffset` must be a multiple of `VkPhysicalDeviceRayTracingPropertiesNV::shaderGroupBaseAlignment`
+- `VUID-vkCmdTraceRaysNV-missShaderBindingStride-02463` (*yours*; explicit rule): `missShaderBindingStride` must be a multiple of `VkPhysicalDeviceRayTracingPropertiesNV::shaderGroupHandleSize`
+- `VUID-vkCmdTraceRaysNV-hitShaderBindingStride-02464` (*yours*; explicit rule): `hitShaderBindingStride` must be a multiple of `VkPhysicalDeviceRayTracingPropertiesNV::shaderGroupHandleSize`
+- `VUID-vkCmdTraceRaysNV-callableShaderBindingStride-02465` (*yours*; explicit rule): `callableShaderBindingStride` must be a multiple of `VkPhysicalDeviceRayTracingPropertiesNV::shaderGroupHandleSize`
+- `VUID-vkCmdTraceRaysNV-missShaderBindingStride-02466` (*yours*; explicit rule): `missShaderBindingStride` must be less than or equal to `VkPhysicalDeviceRayTracingPropertiesNV::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysNV-hitShaderBindingStride-02467` (*yours*; explicit rule): `hitShaderBindingStride` must be less than or equal to `VkPhysicalDeviceRayTracingPropertiesNV::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysNV-callableShaderBindingStride-02468` (*yours*; explicit rule): `callableShaderBindingStride` must be less than or equal to `VkPhysicalDeviceRayTracingPropertiesNV::maxShaderGroupStride`
+- `VUID-vkCmdTraceRaysNV-width-02469` (*yours*; explicit rule): `width` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\]
+- `VUID-vkCmdTraceRaysNV-height-02470` (*yours*; explicit rule): `height` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\]
+- `VUID-vkCmdTraceRaysNV-depth-02471` (*yours*; explicit rule): `depth` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\]
+- `VUID-vkCmdTraceRaysNV-aspectMask-06478` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view must have been created with an `aspectMask` that contains `VK_IMAGE_ASPECT_DEPTH_BIT`
+- `VUID-vkCmdTraceRaysNV-None-06479` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
+- `VUID-vkCmdTraceRaysNV-OpTypeImage-07027` (*yours*; explicit rule): For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysNV-OpTypeImage-07028` (*yours*; explicit rule): For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysNV-OpTypeImage-07029` (*yours*; explicit rule): For any VkBufferView being written as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s buffer features must contain …
+- `VUID-vkCmdTraceRaysNV-OpTypeImage-07030` (*yours*; explicit rule): Any VkBufferView being read as a storage texel buffer where the image format field of the `OpTypeImage` is `Unknown` then the view&#8217;s buffer features must contain …
+- `VUID-vkCmdTraceRaysNV-None-02692` (*yours*; explicit rule): If a `VkImageView` is sampled with `VK_FILTER_CUBIC_EXT` as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_CUBIC_BIT_EXT`
+- `VUID-vkCmdTraceRaysNV-None-02693` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` as a result of this command must not have a VkImageViewType of `VK_IMAGE_VIEW_TYPE_3D`, `VK_IMAGE_VIEW_TYPE_CUBE`, or …
+- `VUID-vkCmdTraceRaysNV-filterCubic-02694` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` as a result of this command must have a VkImageViewType and format that supports cubic filtering, as specified by …
+- `VUID-vkCmdTraceRaysNV-filterCubicMinmax-02695` (*yours*; explicit rule): Any VkImageView being sampled with `VK_FILTER_CUBIC_EXT` with a reduction mode of either `VK_SAMPLER_REDUCTION_MODE_MIN` or `VK_SAMPLER_REDUCTION_MODE_MAX` as a result of this command must have a …
+- `VUID-vkCmdTraceRaysNV-flags-02696` (*yours*; explicit rule): Any VkImage created with a VkImageCreateInfo::`flags` containing `VK_IMAGE_CREATE_CORNER_SAMPLED_BIT_NV` sampled as a result of this command must only be sampled using a VkSamplerAddressMode of …
+- `VUID-vkCmdTraceRaysNV-None-02698` (*yours*; explicit rule): For each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must have been set for the same pipeline bind point, …
+- `VUID-vkCmdTraceRaysNV-maintenance4-06425` (*yours*; explicit rule): If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must …
+- `VUID-vkCmdTraceRaysNV-None-02699` (*yours*; explicit rule): Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid as described by descriptor validity if they are statically used by the `VkPipeline` bound to the …
+- `VUID-vkCmdTraceRaysNV-None-08114` (*yours*; explicit rule): Descriptors in each bound descriptor set, specified via `vkCmdBindDescriptorSets`, must be valid if they are statically used by the `VkPipeline` bound to the pipeline bind point used by this command …
+- `VUID-vkCmdTraceRaysNV-None-08115` (*yours*; explicit rule): If the descriptors used by the `VkPipeline` bound to the pipeline bind point were specified via `vkCmdBindDescriptorSets`, the bound `VkPipeline` must have been created without …
+- `VUID-vkCmdTraceRaysNV-None-08116` (*yours*; explicit rule): Descriptors in bound descriptor buffers, specified via `vkCmdSetDescriptorBufferOffsetsEXT`, must be valid if they are dynamically used by the `VkPipeline` bound to the pipeline bind point used by …
+- `VUID-vkCmdTraceRaysNV-None-08117` (*yours*; explicit rule): If the descriptors used by the `VkPipeline` bound to the pipeline bind point were specified via `vkCmdSetDescriptorBufferOffsetsEXT`, the bound `VkPipeline` must have been created with …
+- `VUID-vkCmdTraceRaysNV-None-08119` (*yours*; explicit rule): If a descriptor is dynamically used with a `VkPipeline` created with `VK_PIPELINE_CREATE_DESCRIPTOR_BUFFER_BIT_EXT`, the descriptor memory must be resident
+- `VUID-vkCmdTraceRaysNV-None-02705` (*yours*; explicit rule): If the `robustBufferAccess` feature is not enabled, and if the `VkPipeline` object bound to the pipeline bind point used by this command accesses a uniform buffer, it must not access values outside of …
+- `VUID-vkCmdTraceRaysNV-None-02706` (*yours*; explicit rule): If the `robustBufferAccess` feature is not enabled, and if the `VkPipeline` object bound to the pipeline bind point used by this command accesses a storage buffer, it must not access values outside of …
+- `VUID-vkCmdTraceRaysNV-uniformBuffers-06935` (*yours*; explicit rule): If any stage of the `VkPipeline` object bound to the pipeline bind point used by this command accesses a uniform buffer, and that stage was created without enabling either …
+- `VUID-vkCmdTraceRaysNV-storageBuffers-06936` (*yours*; explicit rule): If any stage of the `VkPipeline` object bound to the pipeline bind point used by this command accesses a storage buffer, and that stage was created without enabling either …
+- `VUID-vkCmdTraceRaysNV-commandBuffer-02707` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, any resource accessed by the VkPipeline object bound to the pipeline bind point used by this command must …
+- `VUID-vkCmdTraceRaysNV-None-06550` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must only be used …
+- `VUID-vkCmdTraceRaysNV-ConstOffset-06551` (*yours*; explicit rule): If the `VkPipeline` object bound to the pipeline bind point used by this command accesses a `VkSampler` or `VkImageView` object that enables sampler {YCbCr} conversion, that object must not use the …
+- `VUID-vkCmdTraceRaysNV-SampledType-04470` (*yours*; explicit rule): If a VkImageView with a VkFormat that has a 64-bit component width is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a `Width` of 64
+- `VUID-vkCmdTraceRaysNV-SampledType-04471` (*yours*; explicit rule): If a VkImageView with a VkFormat that has a component width less than 64-bit is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a …
+- `VUID-vkCmdTraceRaysNV-SampledType-04472` (*yours*; explicit rule): If a VkBufferView with a VkFormat that has a 64-bit component width is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a `Width` of …
+- `VUID-vkCmdTraceRaysNV-SampledType-04473` (*yours*; explicit rule): If a VkBufferView with a VkFormat that has a component width less than 64-bit is accessed as a result of this command, the `SampledType` of the `OpTypeImage` operand of that instruction must have a …
+- `VUID-vkCmdTraceRaysNV-sparseImageInt64Atomics-04474` (*yours*; explicit rule): If the `sparseImageInt64Atomics` feature is not enabled, VkImage objects created with the `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` flag must not be accessed by atomic instructions through an …
+- `VUID-vkCmdTraceRaysNV-sparseImageInt64Atomics-04475` (*yours*; explicit rule): If the `sparseImageInt64Atomics` feature is not enabled, VkBuffer objects created with the `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` flag must not be accessed by atomic instructions through an …
+- `VUID-vkCmdTraceRaysNV-OpImageWeightedSampleQCOM-06971` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_WEIGHT_SAMPLED_IMAGE_BIT_QCOM`
+- `VUID-vkCmdTraceRaysNV-OpImageWeightedSampleQCOM-06972` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM` uses a VkImageView as a sample weight image as a result of this command, then the image view&#8217;s format features must contain …
+- `VUID-vkCmdTraceRaysNV-OpImageBoxFilterQCOM-06973` (*yours*; explicit rule): If `OpImageBoxFilterQCOM` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BOX_FILTER_SAMPLED_BIT_QCOM`
+- `VUID-vkCmdTraceRaysNV-OpImageBlockMatchSSDQCOM-06974` (*yours*; explicit rule): If `OpImageBlockMatchSSDQCOM` is used to read from an VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BLOCK_MATCHING_BIT_QCOM`
+- `VUID-vkCmdTraceRaysNV-OpImageBlockMatchSADQCOM-06975` (*yours*; explicit rule): If `OpImageBlockMatchSADQCOM` is used to read from an VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_BLOCK_MATCHING_BIT_QCOM`
+- `VUID-vkCmdTraceRaysNV-OpImageBlockMatchSADQCOM-06976` (*yours*; explicit rule): If `OpImageBlockMatchSADQCOM` or OpImageBlockMatchSSDQCOM is used to read from a reference image as result of this command, then the specified reference coordinates must not fail integer texel …
+- `VUID-vkCmdTraceRaysNV-OpImageWeightedSampleQCOM-06977` (*yours*; explicit rule): If `OpImageWeightedSampleQCOM`, `OpImageBoxFilterQCOM`, `OpImageBlockMatchSSDQCOM`, or `OpImageBlockMatchSADQCOM` uses a VkSampler as a result of this command, then the sampler must have been created …
+- `VUID-vkCmdTraceRaysNV-OpImageWeightedSampleQCOM-06978` (*yours*; explicit rule): If any command other than `OpImageWeightedSampleQCOM`, `OpImageBoxFilterQCOM`, `OpImageBlockMatchSSDQCOM`, or `OpImageBlockMatchSADQCOM` uses a VkSampler as a result of this command, then the sampler …
+- `VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdTraceRaysNV-commonparent` (*checked*): Each of `callableShaderBindingTableBuffer`, `commandBuffer`, `hitShaderBindingTableBuffer`, `missShaderBindingTableBuffer`, and `raygenShaderBindingTableBuffer` that are valid handles of non-ignored …
+- `VUID-vkCmdTraceRaysNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdTraceRaysNV-raygenShaderBindingTableBuffer-parameter` (*by the types*): `raygenShaderBindingTableBuffer` must be a valid VkBuffer handle
+- `VUID-vkCmdTraceRaysNV-missShaderBindingTableBuffer-parameter` (*by the types*): If `missShaderBindingTableBuffer` is not VK_NULL_HANDLE, `missShaderBindingTableBuffer` must be a valid VkBuffer handle
+- `VUID-vkCmdTraceRaysNV-hitShaderBindingTableBuffer-parameter` (*by the types*): If `hitShaderBindingTableBuffer` is not VK_NULL_HANDLE, `hitShaderBindingTableBuffer` must be a valid VkBuffer handle
+- `VUID-vkCmdTraceRaysNV-callableShaderBindingTableBuffer-parameter` (*by the types*): If `callableShaderBindingTableBuffer` is not VK_NULL_HANDLE, `callableShaderBindingTableBuffer` must be a valid VkBuffer handle
+- `VUID-vkCmdTraceRaysNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdTraceRaysNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdTraceRaysNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdTraceRaysNV")]
     #[inline]
     pub fn trace_rays_nv(
@@ -728,20 +824,24 @@ The caller upholds the rules that [`Self::trace_rays_nv`] checks at run time: `V
 
 # Valid usage
 
-The rules are on [`vkCmdWriteAccelerationStructuresPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteAccelerationStructuresPropertiesNV.html). Settled by the wrappers:
+The rules of `vkCmdWriteAccelerationStructuresPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteAccelerationStructuresPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-pAccelerationStructures-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-renderpass`: static (the method exists only on a `Recorder` in the render-pass state the command needs)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryPool-03755` (*yours*; explicit rule): `queryPool` must have been created with a `queryType` matching `queryType`
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryPool-03756` (*yours*; explicit rule): The queries identified by `queryPool` and `firstQuery` must be unavailable
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructure-03757` (*yours*; explicit rule): `accelerationStructure` must be bound completely and contiguously to a single `VkDeviceMemory` object via vkBindAccelerationStructureMemoryNV
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-pAccelerationStructures-04958` (*yours*; explicit rule): All acceleration structures in `pAccelerationStructures` must have been built prior to the execution of this command
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-pAccelerationStructures-06215` (*yours*; explicit rule): All acceleration structures in `pAccelerationStructures` must have been built with `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR` if `queryType` is …
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-06216` (*yours*; explicit rule): `queryType` must be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_NV`
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-parameter` (*checked*): `queryType` must be a valid VkQueryType value
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength` (*checked*): `accelerationStructureCount` must be greater than `0`
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent` (*checked*): Each of `commandBuffer`, `queryPool`, and the elements of `pAccelerationStructures` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-pAccelerationStructures-parameter` (*by the types*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid VkAccelerationStructureNV handles
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-renderpass` (*by the types*): This command must only be called outside of a render pass instance
+- `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesNV")]
     #[inline]
     pub fn write_acceleration_structures_properties_nv(

@@ -8,16 +8,21 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdSetExclusiveScissorNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetExclusiveScissorNV.html). Settled by the wrappers:
+The rules of `vkCmdSetExclusiveScissorNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetExclusiveScissorNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetExclusiveScissorNV-pExclusiveScissors-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetExclusiveScissorNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetExclusiveScissorNV-None-02031` (*yours*; explicit rule): The `exclusiveScissor` feature must be enabled
+- `VUID-vkCmdSetExclusiveScissorNV-firstExclusiveScissor-02034` (*yours*; explicit rule): The sum of `firstExclusiveScissor` and `exclusiveScissorCount` must be between `1` and `VkPhysicalDeviceLimits::maxViewports`, inclusive
+- `VUID-vkCmdSetExclusiveScissorNV-firstExclusiveScissor-02035` (*yours*; explicit rule): If the `multiViewport` feature is not enabled, `firstExclusiveScissor` must be `0`
+- `VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-02036` (*yours*; explicit rule): If the `multiViewport` feature is not enabled, `exclusiveScissorCount` must be `1`
+- `VUID-vkCmdSetExclusiveScissorNV-x-02037` (*yours*; explicit rule): The `x` and `y` members of `offset` in each member of `pExclusiveScissors` must be greater than or equal to `0`
+- `VUID-vkCmdSetExclusiveScissorNV-offset-02038` (*yours*; explicit rule): Evaluation of (`offset.x` + `extent.width`) for each member of `pExclusiveScissors` must not cause a signed integer addition overflow
+- `VUID-vkCmdSetExclusiveScissorNV-offset-02039` (*yours*; explicit rule): Evaluation of (`offset.y` + `extent.height`) for each member of `pExclusiveScissors` must not cause a signed integer addition overflow
+- `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength` (*checked*): `exclusiveScissorCount` must be greater than `0`
+- `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetExclusiveScissorNV-pExclusiveScissors-parameter` (*by the types*): `pExclusiveScissors` must be a valid pointer to an array of `exclusiveScissorCount` VkRect2D structures
+- `VUID-vkCmdSetExclusiveScissorNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetExclusiveScissorNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetExclusiveScissorNV")]
     #[inline]
     pub fn set_exclusive_scissor_nv(

@@ -8,17 +8,21 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdBindShadingRateImageNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindShadingRateImageNV.html). Settled by the wrappers:
+The rules of `vkCmdBindShadingRateImageNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindShadingRateImageNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBindShadingRateImageNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdBindShadingRateImageNV-imageView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCmdBindShadingRateImageNV-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdBindShadingRateImageNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdBindShadingRateImageNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdBindShadingRateImageNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdBindShadingRateImageNV-None-02058` (*yours*; explicit rule): The `shadingRateImage` feature must be enabled
+- `VUID-vkCmdBindShadingRateImageNV-imageView-02059` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must be a valid VkImageView handle of type `VK_IMAGE_VIEW_TYPE_2D` or `VK_IMAGE_VIEW_TYPE_2D_ARRAY`
+- `VUID-vkCmdBindShadingRateImageNV-imageView-02060` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have a format of `VK_FORMAT_R8_UINT`
+- `VUID-vkCmdBindShadingRateImageNV-imageView-02061` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have been created with a `usage` value including `VK_IMAGE_USAGE_SHADING_RATE_IMAGE_BIT_NV`
+- `VUID-vkCmdBindShadingRateImageNV-imageView-02062` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `imageLayout` must match the actual VkImageLayout of each subresource accessible from `imageView` at the time the subresource is accessed
+- `VUID-vkCmdBindShadingRateImageNV-imageLayout-02063` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `imageLayout` must be `VK_IMAGE_LAYOUT_SHADING_RATE_OPTIMAL_NV` or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-vkCmdBindShadingRateImageNV-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
+- `VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdBindShadingRateImageNV-commonparent` (*checked*): Both of `commandBuffer`, and `imageView` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdBindShadingRateImageNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdBindShadingRateImageNV-imageView-parameter` (*by the types*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
+- `VUID-vkCmdBindShadingRateImageNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdBindShadingRateImageNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindShadingRateImageNV")]
     #[inline]
     pub fn bind_shading_rate_image_nv(
@@ -72,16 +76,16 @@ The caller upholds the rules that [`Self::bind_shading_rate_image_nv`] checks at
 
 # Valid usage
 
-The rules are on [`vkCmdSetCoarseSampleOrderNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoarseSampleOrderNV.html). Settled by the wrappers:
+The rules of `vkCmdSetCoarseSampleOrderNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetCoarseSampleOrderNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetCoarseSampleOrderNV-sampleOrderType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkCmdSetCoarseSampleOrderNV-pCustomSampleOrders-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetCoarseSampleOrderNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetCoarseSampleOrderNV-sampleOrderType-02081` (*yours*; explicit rule): If `sampleOrderType` is not `VK_COARSE_SAMPLE_ORDER_TYPE_CUSTOM_NV`, `customSamplerOrderCount` must be `0`
+- `VUID-vkCmdSetCoarseSampleOrderNV-pCustomSampleOrders-02235` (*yours*; explicit rule): The array `pCustomSampleOrders` must not contain two structures with matching values for both the `shadingRate` and `sampleCount` members
+- `VUID-vkCmdSetCoarseSampleOrderNV-sampleOrderType-parameter` (*checked*): `sampleOrderType` must be a valid VkCoarseSampleOrderTypeNV value
+- `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetCoarseSampleOrderNV-pCustomSampleOrders-parameter` (*by the types*): If `customSampleOrderCount` is not `0`, `pCustomSampleOrders` must be a valid pointer to an array of `customSampleOrderCount` valid VkCoarseSampleOrderCustomNV structures
+- `VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetCoarseSampleOrderNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetCoarseSampleOrderNV")]
     #[inline]
     pub fn set_coarse_sample_order_nv<'a>(
@@ -142,16 +146,18 @@ The caller upholds the rules that [`Self::set_coarse_sample_order_nv`] checks at
 
 # Valid usage
 
-The rules are on [`vkCmdSetViewportShadingRatePaletteNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportShadingRatePaletteNV.html). Settled by the wrappers:
+The rules of `vkCmdSetViewportShadingRatePaletteNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetViewportShadingRatePaletteNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdSetViewportShadingRatePaletteNV-pShadingRatePalettes-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdSetViewportShadingRatePaletteNV-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)
-- `VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-None-02064` (*yours*; explicit rule): The `shadingRateImage` feature must be enabled
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-firstViewport-02067` (*yours*; explicit rule): The sum of `firstViewport` and `viewportCount` must be between `1` and `VkPhysicalDeviceLimits::maxViewports`, inclusive
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-firstViewport-02068` (*yours*; explicit rule): If the `multiViewport` feature is not enabled, `firstViewport` must be `0`
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-02069` (*yours*; explicit rule): If the `multiViewport` feature is not enabled, `viewportCount` must be `1`
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength` (*checked*): `viewportCount` must be greater than `0`
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-pShadingRatePalettes-parameter` (*by the types*): `pShadingRatePalettes` must be a valid pointer to an array of `viewportCount` valid VkShadingRatePaletteNV structures
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdSetViewportShadingRatePaletteNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdSetViewportShadingRatePaletteNV")]
     #[inline]
     pub fn set_viewport_shading_rate_palette_nv<'a>(

@@ -8,13 +8,13 @@ impl<'c, S: State> Recorder<'c, S> {
 
 # Valid usage
 
-The rules are on [`vkCmdCuLaunchKernelNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCuLaunchKernelNVX.html). Settled by the wrappers:
+The rules of `vkCmdCuLaunchKernelNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCuLaunchKernelNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCmdCuLaunchKernelNVX-pLaunchInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-recording`: static (the method exists only on a `Recorder`, which only `CommandBuffer::begin` makes)
-- `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-cmdpool`: dynamic (checks the queue flags of the pool's family, recorded when the pool was created)
-- `VUID-vkCmdCuLaunchKernelNVX-videocoding`: static (the method exists only on a `Recorder` in the video-coding state the command needs)*/
+- `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
+- `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdCuLaunchKernelNVX-pLaunchInfo-parameter` (*by the types*): `pLaunchInfo` must be a valid pointer to a valid VkCuLaunchInfoNVX structure
+- `VUID-vkCmdCuLaunchKernelNVX-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
+- `VUID-vkCmdCuLaunchKernelNVX-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCuLaunchKernelNVX")]
     #[inline]
     pub fn cu_launch_kernel_nvx<'a>(
@@ -76,12 +76,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkCreateCuFunctionNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCuFunctionNVX.html). Settled by the wrappers:
+The rules of `vkCreateCuFunctionNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCuFunctionNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateCuFunctionNVX-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateCuFunctionNVX-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateCuFunctionNVX-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateCuFunctionNVX-pFunction-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateCuFunctionNVX-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateCuFunctionNVX-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkCuFunctionCreateInfoNVX structure
+- `VUID-vkCreateCuFunctionNVX-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateCuFunctionNVX-pFunction-parameter` (*by the types*): `pFunction` must be a valid pointer to a VkCuFunctionNVX handle*/
     #[doc(alias = "vkCreateCuFunctionNVX")]
     #[inline]
     pub fn create_cu_function_nvx<'a>(
@@ -134,12 +134,12 @@ The rules are on [`vkCreateCuFunctionNVX`'s reference page](https://registry.khr
 
 # Valid usage
 
-The rules are on [`vkCreateCuModuleNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCuModuleNVX.html). Settled by the wrappers:
+The rules of `vkCreateCuModuleNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCuModuleNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateCuModuleNVX-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateCuModuleNVX-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateCuModuleNVX-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateCuModuleNVX-pModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateCuModuleNVX-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateCuModuleNVX-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkCuModuleCreateInfoNVX structure
+- `VUID-vkCreateCuModuleNVX-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateCuModuleNVX-pModule-parameter` (*by the types*): `pModule` must be a valid pointer to a VkCuModuleNVX handle*/
     #[doc(alias = "vkCreateCuModuleNVX")]
     #[inline]
     pub fn create_cu_module_nvx<'a>(

@@ -8,12 +8,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkGetImageViewAddressNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageViewAddressNVX.html). Settled by the wrappers:
+The rules of `vkGetImageViewAddressNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageViewAddressNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageViewAddressNVX-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageViewAddressNVX-imageView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageViewAddressNVX-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageViewAddressNVX-imageView-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetImageViewAddressNVX-imageView-parent` (*checked*): `imageView` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetImageViewAddressNVX-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageViewAddressNVX-imageView-parameter` (*by the types*): `imageView` must be a valid VkImageView handle
+- `VUID-vkGetImageViewAddressNVX-pProperties-parameter` (*by the types*): `pProperties` must be a valid pointer to a VkImageViewAddressPropertiesNVX structure*/
     #[doc(alias = "vkGetImageViewAddressNVX")]
     #[inline]
     pub fn get_image_view_address_nvx<'a>(
@@ -71,10 +71,10 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetImageViewHandleNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageViewHandleNVX.html). Settled by the wrappers:
+The rules of `vkGetImageViewHandleNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageViewHandleNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageViewHandleNVX-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageViewHandleNVX-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetImageViewHandleNVX-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageViewHandleNVX-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageViewHandleInfoNVX structure*/
     #[doc(alias = "vkGetImageViewHandleNVX")]
     #[inline]
     pub unsafe fn get_image_view_handle_nvx<'a>(

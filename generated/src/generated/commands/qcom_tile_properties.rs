@@ -63,11 +63,11 @@ The caller upholds these 50 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkGetDynamicRenderingTilePropertiesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDynamicRenderingTilePropertiesQCOM.html). Settled by the wrappers:
+The rules of `vkGetDynamicRenderingTilePropertiesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDynamicRenderingTilePropertiesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDynamicRenderingTilePropertiesQCOM-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDynamicRenderingTilePropertiesQCOM-pRenderingInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDynamicRenderingTilePropertiesQCOM-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDynamicRenderingTilePropertiesQCOM-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDynamicRenderingTilePropertiesQCOM-pRenderingInfo-parameter` (*by the types*): `pRenderingInfo` must be a valid pointer to a valid VkRenderingInfo structure
+- `VUID-vkGetDynamicRenderingTilePropertiesQCOM-pProperties-parameter` (*by the types*): `pProperties` must be a valid pointer to a VkTilePropertiesQCOM structure*/
     #[doc(alias = "vkGetDynamicRenderingTilePropertiesQCOM")]
     #[inline]
     pub unsafe fn get_dynamic_rendering_tile_properties_qcom<'a>(
@@ -123,13 +123,13 @@ The caller upholds the rules that [`Self::get_dynamic_rendering_tile_properties_
 
 # Valid usage
 
-The rules are on [`vkGetFramebufferTilePropertiesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFramebufferTilePropertiesQCOM.html). Settled by the wrappers:
+The rules of `vkGetFramebufferTilePropertiesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFramebufferTilePropertiesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetFramebufferTilePropertiesQCOM-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetFramebufferTilePropertiesQCOM-framebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetFramebufferTilePropertiesQCOM-pPropertiesCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetFramebufferTilePropertiesQCOM-pProperties-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetFramebufferTilePropertiesQCOM-framebuffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetFramebufferTilePropertiesQCOM-framebuffer-parent` (*checked*): `framebuffer` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetFramebufferTilePropertiesQCOM-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetFramebufferTilePropertiesQCOM-framebuffer-parameter` (*by the types*): `framebuffer` must be a valid VkFramebuffer handle
+- `VUID-vkGetFramebufferTilePropertiesQCOM-pPropertiesCount-parameter` (*by the types*): `pPropertiesCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetFramebufferTilePropertiesQCOM-pProperties-parameter` (*by the types*): If the value referenced by `pPropertiesCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertiesCount` VkTilePropertiesQCOM structures*/
     #[doc(alias = "vkGetFramebufferTilePropertiesQCOM")]
     #[inline]
     pub fn get_framebuffer_tile_properties_qcom(

@@ -7,12 +7,12 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkAllocateCommandBuffers`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateCommandBuffers.html). Settled by the wrappers:
+The rules of `vkAllocateCommandBuffers` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateCommandBuffers.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAllocateCommandBuffers-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAllocateCommandBuffers-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkAllocateCommandBuffers-pCommandBuffers-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength` (*checked*): `pAllocateInfo->commandBufferCount` must be greater than `0`
+- `VUID-vkAllocateCommandBuffers-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAllocateCommandBuffers-pAllocateInfo-parameter` (*by the types*): `pAllocateInfo` must be a valid pointer to a valid VkCommandBufferAllocateInfo structure
+- `VUID-vkAllocateCommandBuffers-pCommandBuffers-parameter` (*by the types*): `pCommandBuffers` must be a valid pointer to an array of `pAllocateInfo->commandBufferCount` VkCommandBuffer handles*/
     #[doc(alias = "vkAllocateCommandBuffers")]
     #[inline]
     pub fn allocate_command_buffers<'a>(
@@ -91,12 +91,12 @@ let sets = d.allocate_descriptor_sets(
 
 # Valid usage
 
-The rules are on [`vkAllocateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateDescriptorSets.html). Settled by the wrappers:
+The rules of `vkAllocateDescriptorSets` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateDescriptorSets.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAllocateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAllocateDescriptorSets-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength` (*checked*): `pAllocateInfo->descriptorSetCount` must be greater than `0`
+- `VUID-vkAllocateDescriptorSets-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAllocateDescriptorSets-pAllocateInfo-parameter` (*by the types*): `pAllocateInfo` must be a valid pointer to a valid VkDescriptorSetAllocateInfo structure
+- `VUID-vkAllocateDescriptorSets-pDescriptorSets-parameter` (*by the types*): `pDescriptorSets` must be a valid pointer to an array of `pAllocateInfo->descriptorSetCount` VkDescriptorSet handles*/
     #[doc(alias = "vkAllocateDescriptorSets")]
     #[inline]
     pub fn allocate_descriptor_sets<'a>(
@@ -172,19 +172,16 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
 
 # Valid usage
 
-The rules are on [`vkAllocateMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateMemory.html). Settled by the wrappers:
+The rules of `vkAllocateMemory` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAllocateMemory.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAllocateMemory-pAllocateInfo-01713`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
-- `VUID-vkAllocateMemory-pAllocateInfo-01714`: dynamic (checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features)
-- `VUID-vkAllocateMemory-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkAllocateMemory-pAllocateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkAllocateMemory-pAllocator-parameter`: static (always NULL)
-- `VUID-vkAllocateMemory-pMemory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build (the live allocations the device lists against maxMemoryAllocationCount, under a lock held until the new memory is listed), but no test breaks it: lavapipe allows 4,294,967,295 allocations
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-vkAllocateMemory-maxMemoryAllocationCount-04101` (*yours*; checked by the safe methods in every build): There must be less than `VkPhysicalDeviceLimits::maxMemoryAllocationCount` device memory allocations currently allocated on the device
+- `VUID-vkAllocateMemory-deviceCoherentMemory-02790` (*yours*; explicit rule): If the `deviceCoherentMemory` feature is not enabled, `pAllocateInfo->memoryTypeIndex` must not identify a memory type supporting `VK_MEMORY_PROPERTY_DEVICE_COHERENT_BIT_AMD`
+- `VUID-vkAllocateMemory-pAllocateInfo-01713` (*checked*): `pAllocateInfo->allocationSize` must be less than or equal to VkPhysicalDeviceMemoryProperties::`memoryHeaps`\[`memindex`\].`size` where `memindex` = …
+- `VUID-vkAllocateMemory-pAllocateInfo-01714` (*checked*): `pAllocateInfo->memoryTypeIndex` must be less than VkPhysicalDeviceMemoryProperties::`memoryTypeCount` as returned by vkGetPhysicalDeviceMemoryProperties for the VkPhysicalDevice that `device` was …
+- `VUID-vkAllocateMemory-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkAllocateMemory-pAllocateInfo-parameter` (*by the types*): `pAllocateInfo` must be a valid pointer to a valid VkMemoryAllocateInfo structure
+- `VUID-vkAllocateMemory-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkAllocateMemory-pMemory-parameter` (*by the types*): `pMemory` must be a valid pointer to a VkDeviceMemory handle*/
     #[doc(alias = "vkAllocateMemory")]
     #[inline]
     pub fn allocate_memory<'a>(
@@ -238,28 +235,32 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time: 
 
 # Valid usage
 
-The rules are on [`vkBindBufferMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory.html). Settled by the wrappers:
+The rules of `vkBindBufferMemory` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindBufferMemory-buffer-07459`: dynamic (refuses an object the device recorded as bound (and one an earlier info of the same call binds))
-- `VUID-vkBindBufferMemory-memoryOffset-01031`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-vkBindBufferMemory-memoryOffset-01036`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-vkBindBufferMemory-size-01037`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-vkBindBufferMemory-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBindBufferMemory-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindBufferMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindBufferMemory-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkBindBufferMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkBindBufferMemory-memory-01508`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
-- `VUID-vkBindBufferMemory-memory-02726`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
-- `VUID-vkBindBufferMemory-memory-02727`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
-- `VUID-vkBindBufferMemory-bufferDeviceAddress-03339`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 11.
-
-- 1: checked by the safe methods in every build (VkMemoryDedicatedRequirements, queried at the bind, against the allocation's dedicated object), but no test breaks it: lavapipe requires no dedicated allocation
-- 2: checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory
-- 2: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 6: explicit rule; the wrappers do not check it*/
+- `VUID-vkBindBufferMemory-buffer-01030` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `buffer` must not have been created with any sparse memory binding flags
+- `VUID-vkBindBufferMemory-memory-01035` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` …
+- `VUID-vkBindBufferMemory-buffer-01444` (*yours*; checked by the safe methods in every build): If `buffer` requires a dedicated allocation (as reported by vkGetBufferMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `buffer`), `memory` must have been …
+- `VUID-vkBindBufferMemory-None-01898` (*yours*; checked by the safe methods in every build): If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit set, the buffer must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-vkBindBufferMemory-None-01899` (*yours*; checked by the safe methods in every build): If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit not set, the buffer must not be bound to a memory object allocated with a memory type that reports …
+- `VUID-vkBindBufferMemory-buffer-01038` (*yours*; explicit rule): If `buffer` was created with VkDedicatedAllocationBufferCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must have been allocated with …
+- `VUID-vkBindBufferMemory-buffer-01039` (*yours*; explicit rule): If `buffer` was not created with VkDedicatedAllocationBufferCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must not have been allocated dedicated for a specific buffer or image
+- `VUID-vkBindBufferMemory-memory-02985` (*yours*; explicit rule): If `memory` was allocated by a memory import operation, that is not VkImportAndroidHardwareBufferInfoANDROID with a non-`NULL` `buffer` value, the external handle type of the imported memory must also …
+- `VUID-vkBindBufferMemory-memory-02986` (*yours*; explicit rule): If `memory` was allocated with the VkImportAndroidHardwareBufferInfoANDROID memory import operation with a non-`NULL` `buffer` value, …
+- `VUID-vkBindBufferMemory-buffer-06408` (*yours*; explicit rule): If `buffer` was created with VkBufferCollectionBufferCreateInfoFUCHSIA chained to VkBufferCreateInfo::`pNext`, `memory` must be allocated with a VkImportMemoryBufferCollectionFUCHSIA chained to …
+- `VUID-vkBindBufferMemory-descriptorBufferCaptureReplay-08112` (*yours*; explicit rule): If the VkPhysicalDeviceDescriptorBufferFeaturesEXT ::`descriptorBufferCaptureReplay` feature is enabled and `buffer` was created with the `VK_BUFFER_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` …
+- `VUID-vkBindBufferMemory-buffer-07459` (*checked*): `buffer` must not have been bound to a memory object
+- `VUID-vkBindBufferMemory-memoryOffset-01031` (*checked*): `memoryOffset` must be less than the size of `memory`
+- `VUID-vkBindBufferMemory-memoryOffset-01036` (*checked*): `memoryOffset` must be an integer multiple of the `alignment` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` with `buffer`
+- `VUID-vkBindBufferMemory-size-01037` (*checked*): The `size` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` with `buffer` must be less than or equal to the size of `memory` minus `memoryOffset`
+- `VUID-vkBindBufferMemory-buffer-parent` (*checked*): `buffer` must have been created, allocated, or retrieved from `device`
+- `VUID-vkBindBufferMemory-memory-parent` (*checked*): `memory` must have been created, allocated, or retrieved from `device`
+- `VUID-vkBindBufferMemory-memory-01508` (*checked*): If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`buffer` was not …
+- `VUID-vkBindBufferMemory-memory-02726` (*checked*): If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryBufferCreateInfo::`handleTypes` when …
+- `VUID-vkBindBufferMemory-bufferDeviceAddress-03339` (*checked*): If the VkPhysicalDeviceBufferDeviceAddressFeatures::`bufferDeviceAddress` feature is enabled and `buffer` was created with the `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT` bit set, `memory` must have …
+- `VUID-vkBindBufferMemory-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBindBufferMemory-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle
+- `VUID-vkBindBufferMemory-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle
+- `VUID-vkBindBufferMemory-memory-02727` (*by the types*): If `memory` was allocated by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was …*/
     #[doc(alias = "vkBindBufferMemory")]
     #[inline]
     pub fn bind_buffer_memory(
@@ -314,27 +315,34 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
 
 # Valid usage
 
-The rules are on [`vkBindImageMemory`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory.html). Settled by the wrappers:
+The rules of `vkBindImageMemory` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindImageMemory-image-07460`: dynamic (refuses an object the device recorded as bound (and one an earlier info of the same call binds))
-- `VUID-vkBindImageMemory-memoryOffset-01046`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-vkBindImageMemory-memoryOffset-01048`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-vkBindImageMemory-size-01049`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-vkBindImageMemory-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBindImageMemory-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindImageMemory-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkBindImageMemory-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkBindImageMemory-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkBindImageMemory-memory-01509`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
-- `VUID-vkBindImageMemory-memory-02728`: dynamic (checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to)
-- `VUID-vkBindImageMemory-memory-02729`: static (memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 14.
-
-- 1: checked by the safe methods in every build (VkMemoryDedicatedRequirements, queried at the bind, against the allocation's dedicated object), but no test breaks it: lavapipe requires no dedicated allocation
-- 2: checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory
-- 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 8: explicit rule; the wrappers do not check it*/
+- `VUID-vkBindImageMemory-image-01045` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `image` must not have been created with any sparse memory binding flags
+- `VUID-vkBindImageMemory-memory-01047` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the `VkMemoryRequirements` structure returned from a call to vkGetImageMemoryRequirements with …
+- `VUID-vkBindImageMemory-image-01445` (*yours*; checked by the safe methods in every build): If `image` requires a dedicated allocation (as reported by vkGetImageMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `image`), `memory` must have been created …
+- `VUID-vkBindImageMemory-memory-02628` (*yours*; explicit rule): If the `dedicatedAllocationImageAliasing` feature is not enabled, and the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` …
+- `VUID-vkBindImageMemory-memory-02629` (*yours*; explicit rule): If the `dedicatedAllocationImageAliasing` feature is enabled, and the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` …
+- `VUID-vkBindImageMemory-None-01901` (*yours*; checked by the safe methods in every build): If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit set, the image must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-vkBindImageMemory-None-01902` (*yours*; checked by the safe methods in every build): If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit not set, the image must not be bound to a memory object created with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-vkBindImageMemory-image-01050` (*yours*; explicit rule): If `image` was created with VkDedicatedAllocationImageCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must have been created with VkDedicatedAllocationMemoryAllocateInfoNV::`image` …
+- `VUID-vkBindImageMemory-image-01051` (*yours*; explicit rule): If `image` was not created with VkDedicatedAllocationImageCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must not have been allocated dedicated for a specific buffer or image
+- `VUID-vkBindImageMemory-memory-02989` (*yours*; explicit rule): If `memory` was created by a memory import operation, that is not VkImportAndroidHardwareBufferInfoANDROID with a non-`NULL` `buffer` value, the external handle type of the imported memory must also …
+- `VUID-vkBindImageMemory-memory-02990` (*yours*; explicit rule): If `memory` was created with the VkImportAndroidHardwareBufferInfoANDROID memory import operation with a non-`NULL` `buffer` value, `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` …
+- `VUID-vkBindImageMemory-descriptorBufferCaptureReplay-08113` (*yours*; explicit rule): If the VkPhysicalDeviceDescriptorBufferFeaturesEXT ::`descriptorBufferCaptureReplay` feature is enabled and `image` was created with the `VK_IMAGE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` bit …
+- `VUID-vkBindImageMemory-image-01608` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `image` must not have been created with the `VK_IMAGE_CREATE_DISJOINT_BIT` set
+- `VUID-vkBindImageMemory-image-06392` (*yours*; explicit rule): If `image` was created with VkBufferCollectionImageCreateInfoFUCHSIA chained to VkImageCreateInfo::`pNext`, `memory` must be allocated with a VkImportMemoryBufferCollectionFUCHSIA chained to …
+- `VUID-vkBindImageMemory-image-07460` (*checked*): `image` must not have been bound to a memory object
+- `VUID-vkBindImageMemory-memoryOffset-01046` (*checked*): `memoryOffset` must be less than the size of `memory`
+- `VUID-vkBindImageMemory-memoryOffset-01048` (*checked*): `memoryOffset` must be an integer multiple of the `alignment` member of the `VkMemoryRequirements` structure returned from a call to vkGetImageMemoryRequirements with `image`
+- `VUID-vkBindImageMemory-size-01049` (*checked*): The difference of the size of `memory` and `memoryOffset` must be greater than or equal to the `size` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements …
+- `VUID-vkBindImageMemory-image-parent` (*checked*): `image` must have been created, allocated, or retrieved from `device`
+- `VUID-vkBindImageMemory-memory-parent` (*checked*): `memory` must have been created, allocated, or retrieved from `device`
+- `VUID-vkBindImageMemory-memory-01509` (*checked*): If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`image` was not …
+- `VUID-vkBindImageMemory-memory-02728` (*checked*): If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryImageCreateInfo::`handleTypes` when …
+- `VUID-vkBindImageMemory-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBindImageMemory-image-parameter` (*by the types*): `image` must be a valid VkImage handle
+- `VUID-vkBindImageMemory-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle
+- `VUID-vkBindImageMemory-memory-02729` (*by the types*): If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created*/
     #[doc(alias = "vkBindImageMemory")]
     #[inline]
     pub fn bind_image_memory(
@@ -389,17 +397,14 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
 
 # Valid usage
 
-The rules are on [`vkCreateBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBuffer.html). Settled by the wrappers:
+The rules of `vkCreateBuffer` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBuffer.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateBuffer-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateBuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateBuffer-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateBuffer-pBuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build (the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new buffer is listed), but no test breaks it: lavapipe has no sparse resources, so any sparse flag is refused for that first
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-vkCreateBuffer-flags-00911` (*yours*; checked by the safe methods in every build): If the `flags` member of `pCreateInfo` includes `VK_BUFFER_CREATE_SPARSE_BINDING_BIT`, creating this `VkBuffer` must not cause the total required sparse memory for all currently valid sparse resources …
+- `VUID-vkCreateBuffer-pNext-06387` (*yours*; explicit rule): If using the VkBuffer for an import operation from a VkBufferCollectionFUCHSIA where a VkBufferCollectionBufferCreateInfoFUCHSIA has been chained to `pNext`, `pCreateInfo` must match the …
+- `VUID-vkCreateBuffer-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateBuffer-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkBufferCreateInfo structure
+- `VUID-vkCreateBuffer-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateBuffer-pBuffer-parameter` (*by the types*): `pBuffer` must be a valid pointer to a VkBuffer handle*/
     #[doc(alias = "vkCreateBuffer")]
     #[inline]
     pub fn create_buffer<'a>(
@@ -487,12 +492,12 @@ The caller upholds these 9 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateBufferView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferView.html). Settled by the wrappers:
+The rules of `vkCreateBufferView` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferView.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateBufferView-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateBufferView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateBufferView-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateBufferView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateBufferView-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateBufferView-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkBufferViewCreateInfo structure
+- `VUID-vkCreateBufferView-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateBufferView-pView-parameter` (*by the types*): `pView` must be a valid pointer to a VkBufferView handle*/
     #[doc(alias = "vkCreateBufferView")]
     #[inline]
     pub unsafe fn create_buffer_view<'a>(
@@ -564,13 +569,13 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
 
 # Valid usage
 
-The rules are on [`vkCreateCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCommandPool.html). Settled by the wrappers:
+The rules of `vkCreateCommandPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateCommandPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateCommandPool-queueFamilyIndex-01937`: dynamic (checks the family against the queue create infos the device recorded at its creation)
-- `VUID-vkCreateCommandPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateCommandPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateCommandPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateCommandPool-pCommandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateCommandPool-queueFamilyIndex-01937` (*checked*): `pCreateInfo->queueFamilyIndex` must be the index of a queue family available in the logical device `device`
+- `VUID-vkCreateCommandPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateCommandPool-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkCommandPoolCreateInfo structure
+- `VUID-vkCreateCommandPool-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateCommandPool-pCommandPool-parameter` (*by the types*): `pCommandPool` must be a valid pointer to a VkCommandPool handle*/
     #[doc(alias = "vkCreateCommandPool")]
     #[inline]
     pub fn create_command_pool<'a>(
@@ -622,18 +627,18 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
 
 # Valid usage
 
-The rules are on [`vkCreateComputePipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateComputePipelines.html). Settled by the wrappers:
+The rules of `vkCreateComputePipelines` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateComputePipelines.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateComputePipelines-flags-00695`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags); the 1.3.239 layer names none of the derivative rules but 00698 and 00699 for compute pipelines, so the error alone proves the others)
-- `VUID-vkCreateComputePipelines-flags-00696`: dynamic (checks the stage is a compute stage and a derivative names its base one way (by handle, or by the index of an earlier create info), and one that allows derivatives (a pipeline by handle, as the device recorded its flags); the 1.3.239 layer names none of the derivative rules but 00698 and 00699 for compute pipelines, so the error alone proves the others)
-- `VUID-vkCreateComputePipelines-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateComputePipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateComputePipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateComputePipelines-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateComputePipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateComputePipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCreateComputePipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkCreateComputePipelines-pipelineCache-02873`: static (the checked method holds the pipeline cache's lock for the call (with `multi_thread`; without it the cache cannot reach another thread), so no two pipeline creations use one cache at once)*/
+- `VUID-vkCreateComputePipelines-flags-00695` (*checked*): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` …
+- `VUID-vkCreateComputePipelines-flags-00696` (*checked*): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the …
+- `VUID-vkCreateComputePipelines-createInfoCount-arraylength` (*checked*): `createInfoCount` must be greater than `0`
+- `VUID-vkCreateComputePipelines-pipelineCache-parent` (*checked*): If `pipelineCache` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCreateComputePipelines-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateComputePipelines-pipelineCache-parameter` (*by the types*): If `pipelineCache` is not VK_NULL_HANDLE, `pipelineCache` must be a valid VkPipelineCache handle
+- `VUID-vkCreateComputePipelines-pCreateInfos-parameter` (*by the types*): `pCreateInfos` must be a valid pointer to an array of `createInfoCount` valid VkComputePipelineCreateInfo structures
+- `VUID-vkCreateComputePipelines-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateComputePipelines-pPipelines-parameter` (*by the types*): `pPipelines` must be a valid pointer to an array of `createInfoCount` VkPipeline handles
+- `VUID-vkCreateComputePipelines-pipelineCache-02873` (*by the types*): If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized*/
     #[doc(alias = "vkCreateComputePipelines")]
     #[inline]
     pub fn create_compute_pipelines<'a>(
@@ -734,12 +739,12 @@ let pool = device.create_descriptor_pool(
 
 # Valid usage
 
-The rules are on [`vkCreateDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html). Settled by the wrappers:
+The rules of `vkCreateDescriptorPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDescriptorPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDescriptorPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDescriptorPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDescriptorPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateDescriptorPool-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDescriptorPoolCreateInfo structure
+- `VUID-vkCreateDescriptorPool-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDescriptorPool-pDescriptorPool-parameter` (*by the types*): `pDescriptorPool` must be a valid pointer to a VkDescriptorPool handle*/
     #[doc(alias = "vkCreateDescriptorPool")]
     #[inline]
     pub fn create_descriptor_pool<'a>(
@@ -799,12 +804,12 @@ let set_layout = device.create_descriptor_set_layout(
 
 # Valid usage
 
-The rules are on [`vkCreateDescriptorSetLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html). Settled by the wrappers:
+The rules of `vkCreateDescriptorSetLayout` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorSetLayout.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDescriptorSetLayout-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDescriptorSetLayout-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateDescriptorSetLayout-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDescriptorSetLayoutCreateInfo structure
+- `VUID-vkCreateDescriptorSetLayout-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDescriptorSetLayout-pSetLayout-parameter` (*by the types*): `pSetLayout` must be a valid pointer to a VkDescriptorSetLayout handle*/
     #[doc(alias = "vkCreateDescriptorSetLayout")]
     #[inline]
     pub fn create_descriptor_set_layout<'a>(
@@ -877,14 +882,13 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
 
 # Valid usage
 
-The rules are on [`vkCreateEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateEvent.html). Settled by the wrappers:
+The rules of `vkCreateEvent` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateEvent.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateEvent-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateEvent-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateEvent-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateEvent-pEvent-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateEvent-events-04468` (*yours*; explicit rule): If the VK_KHR_portability_subset extension is enabled, and VkPhysicalDevicePortabilitySubsetFeaturesKHR::`events` is `VK_FALSE`, then the implementation does not support events, and vkCreateEvent must …
+- `VUID-vkCreateEvent-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateEvent-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkEventCreateInfo structure
+- `VUID-vkCreateEvent-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateEvent-pEvent-parameter` (*by the types*): `pEvent` must be a valid pointer to a VkEvent handle*/
     #[doc(alias = "vkCreateEvent")]
     #[inline]
     pub fn create_event<'a>(&self, create_info: &EventCreateInfo<'a>) -> Result<Event> {
@@ -932,12 +936,12 @@ The caller upholds the rules that [`Self::create_event`] checks at run time (tho
 
 # Valid usage
 
-The rules are on [`vkCreateFence`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFence.html). Settled by the wrappers:
+The rules of `vkCreateFence` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFence.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateFence-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateFence-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateFence-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateFence-pFence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateFence-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateFence-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkFenceCreateInfo structure
+- `VUID-vkCreateFence-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateFence-pFence-parameter` (*by the types*): `pFence` must be a valid pointer to a VkFence handle*/
     #[doc(alias = "vkCreateFence")]
     #[inline]
     pub fn create_fence<'a>(&self, create_info: &FenceCreateInfo<'a>) -> Result<Fence> {
@@ -994,14 +998,13 @@ Ok(gpu.device.create_framebuffer(
 
 # Valid usage
 
-The rules are on [`vkCreateFramebuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html). Settled by the wrappers:
+The rules of `vkCreateFramebuffer` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateFramebuffer.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateFramebuffer-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateFramebuffer-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateFramebuffer-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateFramebuffer-pFramebuffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (each view must be one the device recorded), but no test breaks it: a view of another device is refused by the common-parent check first).*/
+- `VUID-vkCreateFramebuffer-pCreateInfo-02777` (*yours*; checked by the safe methods in every build): If `pCreateInfo->flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, and `attachmentCount` is not `0`, each element of `pCreateInfo->pAttachments` must have been created on `device`
+- `VUID-vkCreateFramebuffer-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateFramebuffer-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkFramebufferCreateInfo structure
+- `VUID-vkCreateFramebuffer-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateFramebuffer-pFramebuffer-parameter` (*by the types*): `pFramebuffer` must be a valid pointer to a VkFramebuffer handle*/
     #[doc(alias = "vkCreateFramebuffer")]
     #[inline]
     pub fn create_framebuffer<'a>(
@@ -1082,18 +1085,18 @@ let (mut pipelines, _) = gpu.device.create_graphics_pipelines(None, &[info])?;
 
 # Valid usage
 
-The rules are on [`vkCreateGraphicsPipelines`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateGraphicsPipelines.html). Settled by the wrappers:
+The rules of `vkCreateGraphicsPipelines` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateGraphicsPipelines.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateGraphicsPipelines-flags-00720`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
-- `VUID-vkCreateGraphicsPipelines-flags-00721`: dynamic (checks the pipeline's state as a whole (every pipeline is complete, as tuff emits no pipeline library): derivatives, the set of stages and the topology they need, the state structs it must have, its subpass's attachments (kept from the render pass's creation) or its rendering formats and their format features, and fixed-function values against the features the device recorded)
-- `VUID-vkCreateGraphicsPipelines-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateGraphicsPipelines-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateGraphicsPipelines-pPipelines-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`: static (the checked method holds the pipeline cache's lock for the call (with `multi_thread`; without it the cache cannot reach another thread), so no two pipeline creations use one cache at once)*/
+- `VUID-vkCreateGraphicsPipelines-flags-00720` (*checked*): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` …
+- `VUID-vkCreateGraphicsPipelines-flags-00721` (*checked*): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the …
+- `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength` (*checked*): `createInfoCount` must be greater than `0`
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-parent` (*checked*): If `pipelineCache` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCreateGraphicsPipelines-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-parameter` (*by the types*): If `pipelineCache` is not VK_NULL_HANDLE, `pipelineCache` must be a valid VkPipelineCache handle
+- `VUID-vkCreateGraphicsPipelines-pCreateInfos-parameter` (*by the types*): `pCreateInfos` must be a valid pointer to an array of `createInfoCount` valid VkGraphicsPipelineCreateInfo structures
+- `VUID-vkCreateGraphicsPipelines-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateGraphicsPipelines-pPipelines-parameter` (*by the types*): `pPipelines` must be a valid pointer to an array of `createInfoCount` VkPipeline handles
+- `VUID-vkCreateGraphicsPipelines-pipelineCache-02876` (*by the types*): If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized*/
     #[doc(alias = "vkCreateGraphicsPipelines")]
     #[inline]
     pub fn create_graphics_pipelines<'a>(
@@ -1180,17 +1183,14 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
 
 # Valid usage
 
-The rules are on [`vkCreateImage`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImage.html). Settled by the wrappers:
+The rules of `vkCreateImage` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImage.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateImage-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateImage-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateImage-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateImage-pImage-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build (flags against each other, and the memory of every live sparse buffer and image against sparseAddressSpaceSize, under a lock held until the new image is listed), but no test breaks it: lavapipe 22.3 has no sparseBinding, so a sparse image is refused for the missing feature first
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-vkCreateImage-flags-00939` (*yours*; checked by the safe methods in every build): If the `flags` member of `pCreateInfo` includes `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, creating this `VkImage` must not cause the total required sparse memory for all currently valid sparse resources …
+- `VUID-vkCreateImage-pNext-06389` (*yours*; explicit rule): If a VkBufferCollectionImageCreateInfoFUCHSIA has been chained to `pNext`, `pCreateInfo` must match the Sysmem chosen `VkImageCreateInfo` excepting members VkImageCreateInfo::`extent` and …
+- `VUID-vkCreateImage-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateImage-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkImageCreateInfo structure
+- `VUID-vkCreateImage-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateImage-pImage-parameter` (*by the types*): `pImage` must be a valid pointer to a VkImage handle*/
     #[doc(alias = "vkCreateImage")]
     #[inline]
     pub fn create_image<'a>(&self, create_info: &ImageCreateInfo<'a>) -> Result<Image> {
@@ -1274,12 +1274,12 @@ Ok(self.device.create_image_view(
 
 # Valid usage
 
-The rules are on [`vkCreateImageView`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html). Settled by the wrappers:
+The rules of `vkCreateImageView` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateImageView.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateImageView-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateImageView-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateImageView-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateImageView-pView-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateImageView-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateImageView-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkImageViewCreateInfo structure
+- `VUID-vkCreateImageView-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateImageView-pView-parameter` (*by the types*): `pView` must be a valid pointer to a VkImageView handle*/
     #[doc(alias = "vkCreateImageView")]
     #[inline]
     pub fn create_image_view<'a>(
@@ -1359,12 +1359,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreatePipelineCache`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineCache.html). Settled by the wrappers:
+The rules of `vkCreatePipelineCache` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineCache.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreatePipelineCache-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreatePipelineCache-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreatePipelineCache-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePipelineCache-pPipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreatePipelineCache-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreatePipelineCache-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkPipelineCacheCreateInfo structure
+- `VUID-vkCreatePipelineCache-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreatePipelineCache-pPipelineCache-parameter` (*by the types*): `pPipelineCache` must be a valid pointer to a VkPipelineCache handle*/
     #[doc(alias = "vkCreatePipelineCache")]
     #[inline]
     pub unsafe fn create_pipeline_cache<'a>(
@@ -1421,12 +1421,12 @@ let layout = device.create_pipeline_layout(
 
 # Valid usage
 
-The rules are on [`vkCreatePipelineLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html). Settled by the wrappers:
+The rules of `vkCreatePipelineLayout` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineLayout.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreatePipelineLayout-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreatePipelineLayout-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreatePipelineLayout-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreatePipelineLayout-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreatePipelineLayout-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkPipelineLayoutCreateInfo structure
+- `VUID-vkCreatePipelineLayout-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreatePipelineLayout-pPipelineLayout-parameter` (*by the types*): `pPipelineLayout` must be a valid pointer to a VkPipelineLayout handle*/
     #[doc(alias = "vkCreatePipelineLayout")]
     #[inline]
     pub fn create_pipeline_layout<'a>(
@@ -1499,12 +1499,12 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
 
 # Valid usage
 
-The rules are on [`vkCreateQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateQueryPool.html). Settled by the wrappers:
+The rules of `vkCreateQueryPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateQueryPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateQueryPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateQueryPool-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateQueryPool-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateQueryPool-pQueryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateQueryPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateQueryPool-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkQueryPoolCreateInfo structure
+- `VUID-vkCreateQueryPool-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateQueryPool-pQueryPool-parameter` (*by the types*): `pQueryPool` must be a valid pointer to a VkQueryPool handle*/
     #[doc(alias = "vkCreateQueryPool")]
     #[inline]
     pub fn create_query_pool<'a>(
@@ -1569,12 +1569,12 @@ Ok(gpu.device.create_render_pass(
 
 # Valid usage
 
-The rules are on [`vkCreateRenderPass`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass.html). Settled by the wrappers:
+The rules of `vkCreateRenderPass` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateRenderPass-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateRenderPass-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateRenderPass-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateRenderPass-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateRenderPass-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateRenderPass-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkRenderPassCreateInfo structure
+- `VUID-vkCreateRenderPass-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateRenderPass-pRenderPass-parameter` (*by the types*): `pRenderPass` must be a valid pointer to a VkRenderPass handle*/
     #[doc(alias = "vkCreateRenderPass")]
     #[inline]
     pub fn create_render_pass<'a>(
@@ -1653,14 +1653,13 @@ let sampler = unsafe { d.create_sampler(&info) }?;
 
 # Valid usage
 
-The rules are on [`vkCreateSampler`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html). Settled by the wrappers:
+The rules of `vkCreateSampler` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateSampler-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSampler-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSampler-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSampler-pSampler-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateSampler-maxSamplerAllocationCount-04110` (*yours*; explicit rule): There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
+- `VUID-vkCreateSampler-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateSampler-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkSamplerCreateInfo structure
+- `VUID-vkCreateSampler-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateSampler-pSampler-parameter` (*by the types*): `pSampler` must be a valid pointer to a VkSampler handle*/
     #[doc(alias = "vkCreateSampler")]
     #[inline]
     pub unsafe fn create_sampler<'a>(
@@ -1742,12 +1741,12 @@ gpu.device
 
 # Valid usage
 
-The rules are on [`vkCreateSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSemaphore.html). Settled by the wrappers:
+The rules of `vkCreateSemaphore` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSemaphore.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateSemaphore-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSemaphore-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSemaphore-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSemaphore-pSemaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateSemaphore-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateSemaphore-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkSemaphoreCreateInfo structure
+- `VUID-vkCreateSemaphore-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateSemaphore-pSemaphore-parameter` (*by the types*): `pSemaphore` must be a valid pointer to a VkSemaphore handle*/
     #[doc(alias = "vkCreateSemaphore")]
     #[inline]
     pub fn create_semaphore<'a>(
@@ -1820,14 +1819,14 @@ The caller upholds these 14 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCreateShaderModule`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateShaderModule.html). Settled by the wrappers:
+The rules of `vkCreateShaderModule` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateShaderModule.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateShaderModule-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateShaderModule-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateShaderModule-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateShaderModule-pShaderModule-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkCreateShaderModule-pCreateInfo-06904` (*yours*; explicit rule): If `pCreateInfo` is not `NULL`, `pCreateInfo->pNext` must be `NULL` or a pointer to a VkShaderModuleValidationCacheCreateInfoEXT structure
+- `VUID-vkCreateShaderModule-pCreateInfo-06905` (*yours*; explicit rule): If `pCreateInfo` is not `NULL`, `pCreateInfo->pNext` must be `NULL`
+- `VUID-vkCreateShaderModule-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateShaderModule-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkShaderModuleCreateInfo structure
+- `VUID-vkCreateShaderModule-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateShaderModule-pShaderModule-parameter` (*by the types*): `pShaderModule` must be a valid pointer to a VkShaderModule handle*/
     #[doc(alias = "vkCreateShaderModule")]
     #[inline]
     pub unsafe fn create_shader_module<'a>(
@@ -1909,9 +1908,9 @@ gpu.device.wait_idle()?;
 
 # Valid usage
 
-The rules are on [`vkDeviceWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeviceWaitIdle.html). Settled by the wrappers:
+The rules of `vkDeviceWaitIdle` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDeviceWaitIdle.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkDeviceWaitIdle-device-parameter`: static (`self` is a live wrapper)*/
+- `VUID-vkDeviceWaitIdle-device-parameter` (*by the types*): `device` must be a valid VkDevice handle*/
     #[doc(alias = "vkDeviceWaitIdle")]
     #[inline]
     pub fn wait_idle(&self) -> Result<()> {
@@ -1945,11 +1944,11 @@ The caller upholds these 6 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkFlushMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkFlushMappedMemoryRanges.html). Settled by the wrappers:
+The rules of `vkFlushMappedMemoryRanges` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkFlushMappedMemoryRanges.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkFlushMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
+- `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength` (*checked*): `memoryRangeCount` must be greater than `0`
+- `VUID-vkFlushMappedMemoryRanges-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter` (*by the types*): `pMemoryRanges` must be a valid pointer to an array of `memoryRangeCount` valid VkMappedMemoryRange structures*/
     #[doc(alias = "vkFlushMappedMemoryRanges")]
     #[inline]
     pub unsafe fn flush_mapped_memory_ranges<'a>(
@@ -1988,12 +1987,12 @@ The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at
 
 # Valid usage
 
-The rules are on [`vkGetBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements.html). Settled by the wrappers:
+The rules of `vkGetBufferMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferMemoryRequirements-buffer-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetBufferMemoryRequirements-buffer-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetBufferMemoryRequirements-buffer-parent` (*checked*): `buffer` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetBufferMemoryRequirements-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetBufferMemoryRequirements-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle
+- `VUID-vkGetBufferMemoryRequirements-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements structure*/
     #[doc(alias = "vkGetBufferMemoryRequirements")]
     #[inline]
     pub fn get_buffer_memory_requirements(
@@ -2028,13 +2027,13 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements`] check
 
 # Valid usage
 
-The rules are on [`vkGetDeviceMemoryCommitment`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryCommitment.html). Settled by the wrappers:
+The rules of `vkGetDeviceMemoryCommitment` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryCommitment.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceMemoryCommitment-memory-00690`: dynamic (checks the memory's type, kept from its allocation, is lazily allocated)
-- `VUID-vkGetDeviceMemoryCommitment-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceMemoryCommitment-memory-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceMemoryCommitment-memory-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetDeviceMemoryCommitment-memory-00690` (*checked*): `memory` must have been created with a memory type that reports `VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT`
+- `VUID-vkGetDeviceMemoryCommitment-memory-parent` (*checked*): `memory` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetDeviceMemoryCommitment-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceMemoryCommitment-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle
+- `VUID-vkGetDeviceMemoryCommitment-pCommittedMemoryInBytes-parameter` (*by the types*): `pCommittedMemoryInBytes` must be a valid pointer to a VkDeviceSize value*/
     #[doc(alias = "vkGetDeviceMemoryCommitment")]
     #[inline]
     pub fn get_device_memory_commitment(
@@ -2078,13 +2077,13 @@ let queue = device.get_queue(family, 0)?;
 
 # Valid usage
 
-The rules are on [`vkGetDeviceQueue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue.html). Settled by the wrappers:
+The rules of `vkGetDeviceQueue` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceQueue-queueFamilyIndex-00384`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
-- `VUID-vkGetDeviceQueue-queueIndex-00385`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
-- `VUID-vkGetDeviceQueue-flags-01841`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
-- `VUID-vkGetDeviceQueue-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceQueue-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceQueue-queueFamilyIndex-00384` (*checked*): `queueFamilyIndex` must be one of the queue family indices specified when `device` was created, via the VkDeviceQueueCreateInfo structure
+- `VUID-vkGetDeviceQueue-queueIndex-00385` (*checked*): `queueIndex` must be less than the value of VkDeviceQueueCreateInfo::`queueCount` for the queue family indicated by `queueFamilyIndex` when `device` was created
+- `VUID-vkGetDeviceQueue-flags-01841` (*checked*): VkDeviceQueueCreateInfo::`flags` must have been set to zero when `device` was created
+- `VUID-vkGetDeviceQueue-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceQueue-pQueue-parameter` (*by the types*): `pQueue` must be a valid pointer to a VkQueue handle*/
     #[doc(alias = "vkGetDeviceQueue")]
     #[inline]
     pub fn get_queue(&self, queue_family_index: u32, queue_index: u32) -> Result<Queue> {
@@ -2118,12 +2117,12 @@ The caller upholds the rules that [`Self::get_queue`] checks at run time: `VUID-
 
 # Valid usage
 
-The rules are on [`vkGetEventStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetEventStatus.html). Settled by the wrappers:
+The rules of `vkGetEventStatus` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetEventStatus.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetEventStatus-event-03940`: dynamic (checks the event was not created device-only, which the device records at its creation)
-- `VUID-vkGetEventStatus-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetEventStatus-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetEventStatus-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetEventStatus-event-03940` (*checked*): `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
+- `VUID-vkGetEventStatus-event-parent` (*checked*): `event` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetEventStatus-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetEventStatus-event-parameter` (*by the types*): `event` must be a valid VkEvent handle*/
     #[doc(alias = "vkGetEventStatus")]
     #[inline]
     pub fn get_event_status(
@@ -2161,11 +2160,11 @@ The caller upholds the rules that [`Self::get_event_status`] checks at run time:
 
 # Valid usage
 
-The rules are on [`vkGetFenceStatus`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceStatus.html). Settled by the wrappers:
+The rules of `vkGetFenceStatus` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetFenceStatus.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetFenceStatus-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetFenceStatus-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetFenceStatus-fence-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetFenceStatus-fence-parent` (*checked*): `fence` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetFenceStatus-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetFenceStatus-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
     #[doc(alias = "vkGetFenceStatus")]
     #[inline]
     pub fn get_fence_status(
@@ -2203,17 +2202,14 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
 
 # Valid usage
 
-The rules are on [`vkGetImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements.html). Settled by the wrappers:
+The rules of `vkGetImageMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build (the image's create flags are kept from its creation), but no test breaks it yet: lavapipe has no format that supports disjoint planes
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-vkGetImageMemoryRequirements-image-01588` (*yours*; checked by the safe methods in every build): `image` must not have been created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag set
+- `VUID-vkGetImageMemoryRequirements-image-04004` (*yours*; explicit rule): If `image` was created with the `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` external memory handle type, then `image` must be bound to memory
+- `VUID-vkGetImageMemoryRequirements-image-parent` (*checked*): `image` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetImageMemoryRequirements-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageMemoryRequirements-image-parameter` (*by the types*): `image` must be a valid VkImage handle
+- `VUID-vkGetImageMemoryRequirements-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements structure*/
     #[doc(alias = "vkGetImageMemoryRequirements")]
     #[inline]
     pub fn get_image_memory_requirements(
@@ -2249,13 +2245,13 @@ The caller upholds the rules that [`Self::get_image_memory_requirements`] checks
 
 # Valid usage
 
-The rules are on [`vkGetImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements.html). Settled by the wrappers:
+The rules of `vkGetImageSparseMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageSparseMemoryRequirements-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetImageSparseMemoryRequirements-image-parent` (*checked*): `image` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetImageSparseMemoryRequirements-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageSparseMemoryRequirements-image-parameter` (*by the types*): `image` must be a valid VkImage handle
+- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter` (*by the types*): `pSparseMemoryRequirementCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter` (*by the types*): If the value referenced by `pSparseMemoryRequirementCount` is not `0`, and `pSparseMemoryRequirements` is not `NULL`, `pSparseMemoryRequirements` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetImageSparseMemoryRequirements")]
     #[inline]
     pub fn get_image_sparse_memory_requirements(
@@ -2312,15 +2308,26 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkGetImageSubresourceLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout.html). Settled by the wrappers:
+The rules of `vkGetImageSubresourceLayout` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageSubresourceLayout-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageSubresourceLayout-image-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetImageSubresourceLayout-pSubresource-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageSubresourceLayout-pLayout-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSubresourceLayout-image-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 13 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetImageSubresourceLayout-image-07789` (*yours*; explicit rule): `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_LINEAR`
+- `VUID-vkGetImageSubresourceLayout-image-07790` (*yours*; explicit rule): `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`
+- `VUID-vkGetImageSubresourceLayout-tiling-02271` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`, then the `aspectMask` member of `pSubresource` must be VK_IMAGE_ASPECT_MEMORY_PLANE{ibit}BIT_EXT and the index i must be …
+- `VUID-vkGetImageSubresourceLayout-aspectMask-00997` (*yours*; explicit rule): The `aspectMask` member of `pSubresource` must only have a single bit set
+- `VUID-vkGetImageSubresourceLayout-mipLevel-01716` (*yours*; explicit rule): The `mipLevel` member of `pSubresource` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout-arrayLayer-01717` (*yours*; explicit rule): The `arrayLayer` member of `pSubresource` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout-format-04461` (*yours*; explicit rule): If `format` is a color format, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04462` (*yours*; explicit rule): If `format` has a depth component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_DEPTH_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04463` (*yours*; explicit rule): If `format` has a stencil component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04464` (*yours*; explicit rule): If `format` does not contain a stencil or depth component, the `aspectMask` member of `pSubresource` must not contain `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-01581` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with two planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or …
+- `VUID-vkGetImageSubresourceLayout-format-01582` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with three planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, …
+- `VUID-vkGetImageSubresourceLayout-image-01895` (*yours*; explicit rule): If `image` was created with the `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` external memory handle type, then `image` must be bound to memory
+- `VUID-vkGetImageSubresourceLayout-image-parent` (*checked*): `image` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetImageSubresourceLayout-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageSubresourceLayout-image-parameter` (*by the types*): `image` must be a valid VkImage handle
+- `VUID-vkGetImageSubresourceLayout-pSubresource-parameter` (*by the types*): `pSubresource` must be a valid pointer to a valid VkImageSubresource structure
+- `VUID-vkGetImageSubresourceLayout-pLayout-parameter` (*by the types*): `pLayout` must be a valid pointer to a VkSubresourceLayout structure*/
     #[doc(alias = "vkGetImageSubresourceLayout")]
     #[inline]
     pub unsafe fn get_image_subresource_layout(
@@ -2364,13 +2371,13 @@ The caller upholds the rules that [`Self::get_image_subresource_layout`] checks 
 
 # Valid usage
 
-The rules are on [`vkGetPipelineCacheData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineCacheData.html). Settled by the wrappers:
+The rules of `vkGetPipelineCacheData` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPipelineCacheData.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPipelineCacheData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPipelineCacheData-pipelineCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPipelineCacheData-pDataSize-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineCacheData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPipelineCacheData-pipelineCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetPipelineCacheData-pipelineCache-parent` (*checked*): `pipelineCache` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetPipelineCacheData-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPipelineCacheData-pipelineCache-parameter` (*by the types*): `pipelineCache` must be a valid VkPipelineCache handle
+- `VUID-vkGetPipelineCacheData-pDataSize-parameter` (*by the types*): `pDataSize` must be a valid pointer to a `size_t` value
+- `VUID-vkGetPipelineCacheData-pData-parameter` (*by the types*): If the value referenced by `pDataSize` is not `0`, and `pData` is not `NULL`, `pData` must be a valid pointer to an array of `pDataSize` bytes*/
     #[doc(alias = "vkGetPipelineCacheData")]
     #[inline]
     pub fn get_pipeline_cache_data(
@@ -2411,22 +2418,27 @@ The caller upholds the rules that [`Self::get_pipeline_cache_data`] checks at ru
 
 # Valid usage
 
-The rules are on [`vkGetQueryPoolResults`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueryPoolResults.html). Settled by the wrappers:
+The rules of `vkGetQueryPoolResults` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetQueryPoolResults.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetQueryPoolResults-firstQuery-00813`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
-- `VUID-vkGetQueryPoolResults-flags-00815`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
-- `VUID-vkGetQueryPoolResults-firstQuery-00816`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
-- `VUID-vkGetQueryPoolResults-dataSize-00817`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
-- `VUID-vkGetQueryPoolResults-queryType-00818`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
-- `VUID-vkGetQueryPoolResults-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetQueryPoolResults-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetQueryPoolResults-pData-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetQueryPoolResults-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetQueryPoolResults-dataSize-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkGetQueryPoolResults-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkGetQueryPoolResults-flags-02827`: dynamic (checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetQueryPoolResults-flags-02828` (*yours*; explicit rule): If `VK_QUERY_RESULT_64_BIT` is not set in `flags` and the `queryType` used to create `queryPool` was not `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, then `pData` and `stride` must be multiples of `4`
+- `VUID-vkGetQueryPoolResults-queryType-03229` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, then `pData` and `stride` must be multiples of the size of VkPerformanceCounterResultKHR
+- `VUID-vkGetQueryPoolResults-queryType-04519` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, then `stride` must be large enough to contain `VkQueryPoolPerformanceCreateInfoKHR::counterIndexCount` used to …
+- `VUID-vkGetQueryPoolResults-queryType-03230` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, `flags` must not contain `VK_QUERY_RESULT_WITH_AVAILABILITY_BIT`, `VK_QUERY_RESULT_PARTIAL_BIT` or …
+- `VUID-vkGetQueryPoolResults-queryType-03231` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, the `queryPool` must have been recorded once for each pass as retrieved via a call to …
+- `VUID-vkGetQueryPoolResults-queryType-04810` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_RESULT_STATUS_ONLY_KHR`, then `flags` must include `VK_QUERY_RESULT_WITH_STATUS_BIT_KHR`
+- `VUID-vkGetQueryPoolResults-flags-04811` (*yours*; explicit rule): If `flags` includes `VK_QUERY_RESULT_WITH_STATUS_BIT_KHR`, then it must not include `VK_QUERY_RESULT_WITH_AVAILABILITY_BIT`
+- `VUID-vkGetQueryPoolResults-firstQuery-00813` (*checked*): `firstQuery` must be less than the number of queries in `queryPool`
+- `VUID-vkGetQueryPoolResults-flags-00815` (*checked*): If `VK_QUERY_RESULT_64_BIT` is set in `flags` then `pData` and `stride` must be multiples of `8`
+- `VUID-vkGetQueryPoolResults-firstQuery-00816` (*checked*): The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
+- `VUID-vkGetQueryPoolResults-dataSize-00817` (*checked*): `dataSize` must be large enough to contain the result of each query, as described here
+- `VUID-vkGetQueryPoolResults-queryType-00818` (*checked*): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_TIMESTAMP`, `flags` must not contain `VK_QUERY_RESULT_PARTIAL_BIT`
+- `VUID-vkGetQueryPoolResults-flags-parameter` (*checked*): `flags` must be a valid combination of VkQueryResultFlagBits values
+- `VUID-vkGetQueryPoolResults-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-vkGetQueryPoolResults-queryPool-parent` (*checked*): `queryPool` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetQueryPoolResults-flags-02827` (*checked*): If `VK_QUERY_RESULT_64_BIT` is not set in `flags`, then `pData` and `stride` must be multiples of `4`
+- `VUID-vkGetQueryPoolResults-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetQueryPoolResults-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle
+- `VUID-vkGetQueryPoolResults-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkGetQueryPoolResults")]
     #[inline]
     pub fn get_query_pool_results(
@@ -2502,12 +2514,12 @@ The caller upholds the rules that [`Self::get_query_pool_results`] checks at run
 
 # Valid usage
 
-The rules are on [`vkGetRenderAreaGranularity`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRenderAreaGranularity.html). Settled by the wrappers:
+The rules of `vkGetRenderAreaGranularity` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRenderAreaGranularity.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetRenderAreaGranularity-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetRenderAreaGranularity-renderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetRenderAreaGranularity-pGranularity-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetRenderAreaGranularity-renderPass-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetRenderAreaGranularity-renderPass-parent` (*checked*): `renderPass` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetRenderAreaGranularity-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetRenderAreaGranularity-renderPass-parameter` (*by the types*): `renderPass` must be a valid VkRenderPass handle
+- `VUID-vkGetRenderAreaGranularity-pGranularity-parameter` (*by the types*): `pGranularity` must be a valid pointer to a VkExtent2D structure*/
     #[doc(alias = "vkGetRenderAreaGranularity")]
     #[inline]
     pub fn get_render_area_granularity(
@@ -2553,11 +2565,11 @@ The caller upholds these 6 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkInvalidateMappedMemoryRanges`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInvalidateMappedMemoryRanges.html). Settled by the wrappers:
+The rules of `vkInvalidateMappedMemoryRanges` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInvalidateMappedMemoryRanges.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkInvalidateMappedMemoryRanges-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength`: dynamic (checks the slice is not empty)*/
+- `VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength` (*checked*): `memoryRangeCount` must be greater than `0`
+- `VUID-vkInvalidateMappedMemoryRanges-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter` (*by the types*): `pMemoryRanges` must be a valid pointer to an array of `memoryRangeCount` valid VkMappedMemoryRange structures*/
     #[doc(alias = "vkInvalidateMappedMemoryRanges")]
     #[inline]
     pub unsafe fn invalidate_mapped_memory_ranges<'a>(
@@ -2596,15 +2608,15 @@ The caller upholds the rules that [`Self::invalidate_mapped_memory_ranges`] chec
 
 # Valid usage
 
-The rules are on [`vkMergePipelineCaches`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergePipelineCaches.html). Settled by the wrappers:
+The rules of `vkMergePipelineCaches` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkMergePipelineCaches.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkMergePipelineCaches-dstCache-00770`: dynamic (checks the destination cache is none of the sources)
-- `VUID-vkMergePipelineCaches-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkMergePipelineCaches-dstCache-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkMergePipelineCaches-pSrcCaches-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkMergePipelineCaches-dstCache-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkMergePipelineCaches-pSrcCaches-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkMergePipelineCaches-dstCache-00770` (*checked*): `dstCache` must not appear in the list of source caches
+- `VUID-vkMergePipelineCaches-srcCacheCount-arraylength` (*checked*): `srcCacheCount` must be greater than `0`
+- `VUID-vkMergePipelineCaches-dstCache-parent` (*checked*): `dstCache` must have been created, allocated, or retrieved from `device`
+- `VUID-vkMergePipelineCaches-pSrcCaches-parent` (*checked*): Each element of `pSrcCaches` must have been created, allocated, or retrieved from `device`
+- `VUID-vkMergePipelineCaches-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkMergePipelineCaches-dstCache-parameter` (*by the types*): `dstCache` must be a valid VkPipelineCache handle
+- `VUID-vkMergePipelineCaches-pSrcCaches-parameter` (*by the types*): `pSrcCaches` must be a valid pointer to an array of `srcCacheCount` valid VkPipelineCache handles*/
     #[doc(alias = "vkMergePipelineCaches")]
     #[inline]
     pub fn merge_pipeline_caches(
@@ -2667,13 +2679,13 @@ The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run 
 
 # Valid usage
 
-The rules are on [`vkResetCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandPool.html). Settled by the wrappers:
+The rules of `vkResetCommandPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetCommandPool-commandPool-00040`: dynamic (refuses a pool one of whose buffers a submission may still be executing)
-- `VUID-vkResetCommandPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetCommandPool-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkResetCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkResetCommandPool-commandPool-00040` (*checked*): All `VkCommandBuffer` objects allocated from `commandPool` must not be in the pending state
+- `VUID-vkResetCommandPool-flags-parameter` (*checked*): `flags` must be a valid combination of VkCommandPoolResetFlagBits values
+- `VUID-vkResetCommandPool-commandPool-parent` (*checked*): `commandPool` must have been created, allocated, or retrieved from `device`
+- `VUID-vkResetCommandPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkResetCommandPool-commandPool-parameter` (*by the types*): `commandPool` must be a valid VkCommandPool handle*/
     #[doc(alias = "vkResetCommandPool")]
     #[inline]
     pub fn reset_command_pool(
@@ -2726,13 +2738,13 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
 
 # Valid usage
 
-The rules are on [`vkResetDescriptorPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetDescriptorPool.html). Settled by the wrappers:
+The rules of `vkResetDescriptorPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetDescriptorPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetDescriptorPool-descriptorPool-00313`: dynamic (refuses a pool whose sets are still alive (held by the program, a command buffer or a submission))
-- `VUID-vkResetDescriptorPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetDescriptorPool-descriptorPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetDescriptorPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-vkResetDescriptorPool-descriptorPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkResetDescriptorPool-descriptorPool-00313` (*checked*): All uses of `descriptorPool` (via any allocated descriptor sets) must have completed execution
+- `VUID-vkResetDescriptorPool-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-vkResetDescriptorPool-descriptorPool-parent` (*checked*): `descriptorPool` must have been created, allocated, or retrieved from `device`
+- `VUID-vkResetDescriptorPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkResetDescriptorPool-descriptorPool-parameter` (*by the types*): `descriptorPool` must be a valid VkDescriptorPool handle*/
     #[doc(alias = "vkResetDescriptorPool")]
     #[inline]
     pub fn reset_descriptor_pool(
@@ -2792,14 +2804,14 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkResetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetEvent.html). Settled by the wrappers:
+The rules of `vkResetEvent` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetEvent.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetEvent-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-- `VUID-vkResetEvent-event-03823`: dynamic (checks the event was not created device-only, which the device records at its creation)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkResetEvent-event-03821` (*yours*; explicit rule): There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
+- `VUID-vkResetEvent-event-03822` (*yours*; explicit rule): There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
+- `VUID-vkResetEvent-event-parent` (*checked*): `event` must have been created, allocated, or retrieved from `device`
+- `VUID-vkResetEvent-event-03823` (*checked*): `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
+- `VUID-vkResetEvent-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkResetEvent-event-parameter` (*by the types*): `event` must be a valid VkEvent handle*/
     #[doc(alias = "vkResetEvent")]
     #[inline]
     pub unsafe fn reset_event(&self, event: &Event) -> Result<()> {
@@ -2843,13 +2855,13 @@ The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUI
 
 # Valid usage
 
-The rules are on [`vkResetFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetFences.html). Settled by the wrappers:
+The rules of `vkResetFences` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetFences.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetFences-pFences-01123`: dynamic (refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled))
-- `VUID-vkResetFences-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkResetFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkResetFences-pFences-01123` (*checked*): Each element of `pFences` must not be currently associated with any queue command that has not yet completed execution on that queue
+- `VUID-vkResetFences-fenceCount-arraylength` (*checked*): `fenceCount` must be greater than `0`
+- `VUID-vkResetFences-pFences-parent` (*checked*): Each element of `pFences` must have been created, allocated, or retrieved from `device`
+- `VUID-vkResetFences-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkResetFences-pFences-parameter` (*by the types*): `pFences` must be a valid pointer to an array of `fenceCount` valid VkFence handles*/
     #[doc(alias = "vkResetFences")]
     #[inline]
     pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
@@ -2901,12 +2913,12 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
 
 # Valid usage
 
-The rules are on [`vkSetEvent`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetEvent.html). Settled by the wrappers:
+The rules of `vkSetEvent` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetEvent.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetEvent-event-03941`: dynamic (checks the event was not created device-only, which the device records at its creation)
-- `VUID-vkSetEvent-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetEvent-event-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetEvent-event-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkSetEvent-event-03941` (*checked*): `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
+- `VUID-vkSetEvent-event-parent` (*checked*): `event` must have been created, allocated, or retrieved from `device`
+- `VUID-vkSetEvent-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetEvent-event-parameter` (*by the types*): `event` must be a valid VkEvent handle*/
     #[doc(alias = "vkSetEvent")]
     #[inline]
     pub fn set_event(&self, event: &Event) -> Result<()> {
@@ -2958,20 +2970,24 @@ device.update_descriptor_sets(&writes, &[])?;
 
 # Valid usage
 
-The rules are on [`vkUpdateDescriptorSets`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html). Settled by the wrappers:
+The rules of `vkUpdateDescriptorSets` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSets.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236`: dynamic (checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks))
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237`: dynamic (checks each buffer a descriptor names is one the device recorded (the 1.3.239 layer crashes looking up a buffer of another device: proven by the error alone))
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238`: dynamic (checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks))
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239`: dynamic (checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks))
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493`: dynamic (refuses a write whose descriptor type selects an array that is not set)
-- `VUID-vkUpdateDescriptorSets-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkUpdateDescriptorSets-None-03047`: dynamic (checks the submissions of the command buffers that bound each set the update writes (recorded at each submission, dropped once known complete) when it rewrites a binding without UPDATE_AFTER_BIND or UPDATE_UNUSED_WHILE_PENDING, or one of image descriptors (whose layouts the submission checked); an update also leaves the command buffers that bound the set invalid, and what it replaces stays alive until those submissions complete)
-- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993`: static (every descriptor update and every submission holds the device's descriptor gate, so no two of them touch a set at once)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06240` (*yours*; explicit rule): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR`, elements of the `pAccelerationStructures` member of a …
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06241` (*yours*; explicit rule): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_NV`, elements of the `pAccelerationStructures` member of a …
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06940` (*yours*; explicit rule): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLE_WEIGHT_IMAGE_QCOM` or `VK_DESCRIPTOR_TYPE_BLOCK_MATCH_IMAGE_QCOM`, the `imageView` member of any element …
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06941` (*yours*; explicit rule): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLE_WEIGHT_IMAGE_QCOM` or `VK_DESCRIPTOR_TYPE_BLOCK_MATCH_IMAGE_QCOM`, `pDescriptorWrites`\[i\].`pImageInfo` …
+- `VUID-vkUpdateDescriptorSets-dstSet-00314` (*yours*; explicit rule): The `dstSet` member of each element of `pDescriptorWrites` or `pDescriptorCopies` must not be used by any command that was recorded to a command buffer which is in the pending state
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06992` (*yours*; explicit rule): Host access to `pDescriptorWrites`\[i\].`dstSet` and `pDescriptorCopies`\[i\].`dstSet` must be externally synchronized
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236` (*checked*): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` or `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, elements of the `pTexelBufferView` member of …
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06237` (*checked*): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or …
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238` (*checked*): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `dstSet` was not allocated with a layout that …
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06239` (*checked*): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, or …
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493` (*checked*): For each element i where `pDescriptorWrites`\[i\].`descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER`, `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, …
+- `VUID-vkUpdateDescriptorSets-None-03047` (*checked*): Descriptor bindings updated by this command which were created without the `VK_DESCRIPTOR_BINDING_UPDATE_AFTER_BIND_BIT` or `VK_DESCRIPTOR_BINDING_UPDATE_UNUSED_WHILE_PENDING_BIT` bits set must not be …
+- `VUID-vkUpdateDescriptorSets-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-parameter` (*by the types*): If `descriptorWriteCount` is not `0`, `pDescriptorWrites` must be a valid pointer to an array of `descriptorWriteCount` valid VkWriteDescriptorSet structures
+- `VUID-vkUpdateDescriptorSets-pDescriptorCopies-parameter` (*by the types*): If `descriptorCopyCount` is not `0`, `pDescriptorCopies` must be a valid pointer to an array of `descriptorCopyCount` valid VkCopyDescriptorSet structures
+- `VUID-vkUpdateDescriptorSets-pDescriptorWrites-06993` (*by the types*): Host access to `pDescriptorWrites`\[i\].`dstSet` and `pDescriptorCopies`\[i\].`dstSet` must be externally synchronized unless explicitly denoted otherwise for specific flags*/
     #[doc(alias = "vkUpdateDescriptorSets")]
     #[inline]
     pub fn update_descriptor_sets<'a>(
@@ -3033,12 +3049,12 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
 
 # Valid usage
 
-The rules are on [`vkWaitForFences`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitForFences.html). Settled by the wrappers:
+The rules of `vkWaitForFences` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitForFences.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkWaitForFences-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWaitForFences-pFences-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkWaitForFences-fenceCount-arraylength`: dynamic (checks the slice is not empty)
-- `VUID-vkWaitForFences-pFences-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkWaitForFences-fenceCount-arraylength` (*checked*): `fenceCount` must be greater than `0`
+- `VUID-vkWaitForFences-pFences-parent` (*checked*): Each element of `pFences` must have been created, allocated, or retrieved from `device`
+- `VUID-vkWaitForFences-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkWaitForFences-pFences-parameter` (*by the types*): `pFences` must be a valid pointer to an array of `fenceCount` valid VkFence handles*/
     #[doc(alias = "vkWaitForFences")]
     #[inline]
     pub fn wait_for_fences(

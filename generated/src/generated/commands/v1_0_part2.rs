@@ -16,13 +16,13 @@ let device =
 
 # Valid usage
 
-The rules are on [`vkCreateDevice`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDevice.html). Settled by the wrappers:
+The rules of `vkCreateDevice` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDevice.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDevice-ppEnabledExtensionNames-01387`: dynamic (checks each enabled extension's dependencies (vk.xml's `depends`) against the extensions of the device and its instance and the API version)
-- `VUID-vkCreateDevice-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDevice-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDevice-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDevice-pDevice-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDevice-ppEnabledExtensionNames-01387` (*checked*): All required device extensions for each extension in the VkDeviceCreateInfo::`ppEnabledExtensionNames` list must also be present in that list
+- `VUID-vkCreateDevice-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkCreateDevice-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDeviceCreateInfo structure
+- `VUID-vkCreateDevice-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDevice-pDevice-parameter` (*by the types*): `pDevice` must be a valid pointer to a VkDevice handle*/
     #[doc(alias = "vkCreateDevice")]
     #[inline]
     pub fn create_device<'a>(
@@ -69,12 +69,12 @@ The caller upholds the rules that [`Self::create_device`] checks at run time: `V
 
 # Valid usage
 
-The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceExtensionProperties.html). Settled by the wrappers:
+The rules of `vkEnumerateDeviceExtensionProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceExtensionProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkEnumerateDeviceExtensionProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkEnumerateDeviceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
-- `VUID-vkEnumerateDeviceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateDeviceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateDeviceExtensionProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkEnumerateDeviceExtensionProperties-pLayerName-parameter` (*by the types*): If `pLayerName` is not `NULL`, `pLayerName` must be a null-terminated UTF-8 string
+- `VUID-vkEnumerateDeviceExtensionProperties-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkEnumerateDeviceExtensionProperties-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkExtensionProperties structures*/
     #[doc(alias = "vkEnumerateDeviceExtensionProperties")]
     #[inline]
     pub fn enumerate_device_extension_properties(
@@ -100,11 +100,11 @@ The rules are on [`vkEnumerateDeviceExtensionProperties`'s reference page](https
 
 # Valid usage
 
-The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceLayerProperties.html). Settled by the wrappers:
+The rules of `vkEnumerateDeviceLayerProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateDeviceLayerProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateDeviceLayerProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkEnumerateDeviceLayerProperties-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkEnumerateDeviceLayerProperties-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkLayerProperties structures*/
     #[doc(alias = "vkEnumerateDeviceLayerProperties")]
     #[inline]
     pub fn enumerate_device_layer_properties(&self) -> Result<Vec<vk::LayerProperties>> {
@@ -122,10 +122,10 @@ The rules are on [`vkEnumerateDeviceLayerProperties`'s reference page](https://r
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceFeatures-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceFeatures-pFeatures-parameter` (*by the types*): `pFeatures` must be a valid pointer to a VkPhysicalDeviceFeatures structure*/
     #[doc(alias = "vkGetPhysicalDeviceFeatures")]
     #[inline]
     pub fn get_features(&self) -> vk::PhysicalDeviceFeatures {
@@ -139,11 +139,11 @@ The rules are on [`vkGetPhysicalDeviceFeatures`'s reference page](https://regist
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceFormatProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceFormatProperties-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-vkGetPhysicalDeviceFormatProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceFormatProperties-pFormatProperties-parameter` (*by the types*): `pFormatProperties` must be a valid pointer to a VkFormatProperties structure*/
     #[doc(alias = "vkGetPhysicalDeviceFormatProperties")]
     #[inline]
     pub fn get_format_properties(
@@ -178,18 +178,17 @@ The caller upholds the rules that [`Self::get_format_properties`] checks at run 
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceImageFormatProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-02248` (*yours*; explicit rule): `tiling` must not be `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`. (Use vkGetPhysicalDeviceImageFormatProperties2 instead)
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-type-parameter` (*checked*): `type` must be a valid VkImageType value
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-tiling-parameter` (*checked*): `tiling` must be a valid VkImageTiling value
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter` (*checked*): `usage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-flags-parameter` (*checked*): `flags` must be a valid combination of VkImageCreateFlagBits values
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceImageFormatProperties-pImageFormatProperties-parameter` (*by the types*): `pImageFormatProperties` must be a valid pointer to a VkImageFormatProperties structure*/
     #[doc(alias = "vkGetPhysicalDeviceImageFormatProperties")]
     #[inline]
     pub fn get_image_format_properties(
@@ -242,10 +241,10 @@ The caller upholds the rules that [`Self::get_image_format_properties`] checks a
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceMemoryProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceMemoryProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceMemoryProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceMemoryProperties-pMemoryProperties-parameter` (*by the types*): `pMemoryProperties` must be a valid pointer to a VkPhysicalDeviceMemoryProperties structure*/
     #[doc(alias = "vkGetPhysicalDeviceMemoryProperties")]
     #[inline]
     pub fn get_memory_properties(&self) -> vk::PhysicalDeviceMemoryProperties {
@@ -271,10 +270,10 @@ let rank = |p: &tuff::PhysicalDevice| match p.get_properties().device_type {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceProperties-pProperties-parameter` (*by the types*): `pProperties` must be a valid pointer to a VkPhysicalDeviceProperties structure*/
     #[doc(alias = "vkGetPhysicalDeviceProperties")]
     #[inline]
     pub fn get_properties(&self) -> vk::PhysicalDeviceProperties {
@@ -288,11 +287,11 @@ The rules are on [`vkGetPhysicalDeviceProperties`'s reference page](https://regi
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceQueueFamilyProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyPropertyCount-parameter` (*by the types*): `pQueueFamilyPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties-pQueueFamilyProperties-parameter` (*by the types*): If the value referenced by `pQueueFamilyPropertyCount` is not `0`, and `pQueueFamilyProperties` is not `NULL`, `pQueueFamilyProperties` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetPhysicalDeviceQueueFamilyProperties")]
     #[inline]
     pub fn get_queue_family_properties(&self) -> Result<Vec<vk::QueueFamilyProperties>> {
@@ -317,18 +316,18 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties`'s reference page](h
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSparseImageFormatProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094`: dynamic (checks the sample count against the format's sample counts for the type, usage and tiling, queried from the physical device (the 1.3.239 layer does not check it: proven by the error alone))
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094` (*checked*): `samples` must be a bit value that is set in `VkImageFormatProperties::sampleCounts` returned by `vkGetPhysicalDeviceImageFormatProperties` with `format`, `type`, `tiling`, and `usage` equal to those …
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-type-parameter` (*checked*): `type` must be a valid VkImageType value
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-parameter` (*checked*): `samples` must be a valid VkSampleCountFlagBits value
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter` (*checked*): `usage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-tiling-parameter` (*checked*): `tiling` must be a valid VkImageTiling value
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkSparseImageFormatProperties structures*/
     #[doc(alias = "vkGetPhysicalDeviceSparseImageFormatProperties")]
     #[inline]
     pub fn get_sparse_image_format_properties(
@@ -431,12 +430,12 @@ let instance = entry.create_instance(&info).with_context(|| {
 
 # Valid usage
 
-The rules are on [`vkCreateInstance`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateInstance.html). Settled by the wrappers:
+The rules of `vkCreateInstance` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateInstance.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateInstance-ppEnabledExtensionNames-01388`: dynamic (checks each enabled extension's dependencies (vk.xml's `depends`, emitted as a table) against the enabled extensions and API version)
-- `VUID-vkCreateInstance-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateInstance-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateInstance-pInstance-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateInstance-ppEnabledExtensionNames-01388` (*checked*): All required extensions for each extension in the VkInstanceCreateInfo::`ppEnabledExtensionNames` list must also be present in that list
+- `VUID-vkCreateInstance-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkInstanceCreateInfo structure
+- `VUID-vkCreateInstance-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateInstance-pInstance-parameter` (*by the types*): `pInstance` must be a valid pointer to a VkInstance handle*/
     #[doc(alias = "vkCreateInstance")]
     #[inline]
     pub fn create_instance<'a>(
@@ -481,11 +480,11 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time: 
 
 # Valid usage
 
-The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceExtensionProperties.html). Settled by the wrappers:
+The rules of `vkEnumerateInstanceExtensionProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceExtensionProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkEnumerateInstanceExtensionProperties-pLayerName-parameter`: static (taken as a `CStr`: a valid NUL-terminated string)
-- `VUID-vkEnumerateInstanceExtensionProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateInstanceExtensionProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateInstanceExtensionProperties-pLayerName-parameter` (*by the types*): If `pLayerName` is not `NULL`, `pLayerName` must be a null-terminated UTF-8 string
+- `VUID-vkEnumerateInstanceExtensionProperties-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkEnumerateInstanceExtensionProperties-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkExtensionProperties structures*/
     #[doc(alias = "vkEnumerateInstanceExtensionProperties")]
     #[inline]
     pub fn enumerate_instance_extension_properties(
@@ -510,10 +509,10 @@ The rules are on [`vkEnumerateInstanceExtensionProperties`'s reference page](htt
 
 # Valid usage
 
-The rules are on [`vkEnumerateInstanceLayerProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceLayerProperties.html). Settled by the wrappers:
+The rules of `vkEnumerateInstanceLayerProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceLayerProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateInstanceLayerProperties-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkEnumerateInstanceLayerProperties-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkLayerProperties structures*/
     #[doc(alias = "vkEnumerateInstanceLayerProperties")]
     #[inline]
     pub fn enumerate_instance_layer_properties(
@@ -543,11 +542,11 @@ let physicals = instance.enumerate_physical_devices()?;
 
 # Valid usage
 
-The rules are on [`vkEnumeratePhysicalDevices`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDevices.html). Settled by the wrappers:
+The rules of `vkEnumeratePhysicalDevices` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDevices.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkEnumeratePhysicalDevices-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkEnumeratePhysicalDevices-pPhysicalDeviceCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumeratePhysicalDevices-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkEnumeratePhysicalDevices-pPhysicalDeviceCount-parameter` (*by the types*): `pPhysicalDeviceCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkEnumeratePhysicalDevices-pPhysicalDevices-parameter` (*by the types*): If the value referenced by `pPhysicalDeviceCount` is not `0`, and `pPhysicalDevices` is not `NULL`, `pPhysicalDevices` must be a valid pointer to an array of `pPhysicalDeviceCount` VkPhysicalDevice …*/
     #[doc(alias = "vkEnumeratePhysicalDevices")]
     #[inline]
     pub fn enumerate_physical_devices(&self) -> Result<Vec<PhysicalDevice>> {
@@ -604,20 +603,19 @@ The caller upholds these 26 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkQueueBindSparse`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueBindSparse.html). Settled by the wrappers:
+The rules of `vkQueueBindSparse` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueBindSparse.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueBindSparse-fence-01113`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueBindSparse-fence-01114`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueBindSparse-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueBindSparse-pBindInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkQueueBindSparse-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueBindSparse-queuetype`: dynamic (checks the queue flags of the queue's family, recorded when the queue was retrieved)
-- `VUID-vkQueueBindSparse-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
-- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names*/
+- `VUID-vkQueueBindSparse-pSignalSemaphores-01115` (*yours*; checked by the safe methods in every build): Each element of the `pSignalSemaphores` member of each element of `pBindInfo` must be unsignaled when the semaphore signal operation it defines is executed on the device
+- `VUID-vkQueueBindSparse-pWaitSemaphores-01116` (*yours*; checked by the safe methods in every build): When a semaphore wait operation referring to a binary semaphore defined by any element of the `pWaitSemaphores` member of any element of `pBindInfo` executes on `queue`, there must be no other queues …
+- `VUID-vkQueueBindSparse-pWaitSemaphores-01117` (*yours*; checked by the safe methods in every build): All elements of the `pWaitSemaphores` member of all elements of the `pBindInfo` parameter referring to a binary semaphore must be semaphores that are signaled, or have semaphore signal operations …
+- `VUID-vkQueueBindSparse-pWaitSemaphores-03245` (*yours*; checked by the safe methods in every build): All elements of the `pWaitSemaphores` member of all elements of `pBindInfo` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY` must reference a semaphore signal operation that has been …
+- `VUID-vkQueueBindSparse-fence-01113` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must be unsignaled
+- `VUID-vkQueueBindSparse-fence-01114` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-vkQueueBindSparse-queuetype` (*checked*): The `queue` must support sparse binding operations
+- `VUID-vkQueueBindSparse-commonparent` (*checked*): Both of `fence`, and `queue` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkQueueBindSparse-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkQueueBindSparse-pBindInfo-parameter` (*by the types*): If `bindInfoCount` is not `0`, `pBindInfo` must be a valid pointer to an array of `bindInfoCount` valid VkBindSparseInfo structures
+- `VUID-vkQueueBindSparse-fence-parameter` (*by the types*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle*/
     #[doc(alias = "vkQueueBindSparse")]
     #[inline]
     pub unsafe fn bind_sparse<'a>(
@@ -680,30 +678,30 @@ The caller upholds the rules that [`Self::bind_sparse`] checks at run time: `VUI
 
 # Valid usage
 
-The rules are on [`vkQueueSubmit`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit.html). Settled by the wrappers:
+The rules of `vkQueueSubmit` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueSubmit-fence-00063`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit-fence-00064`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit-pSignalSemaphores-00067`: dynamic (checks the binary semaphore's state, as for a wait: a signal needs it unsignaled, or waited on earlier on the same queue (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-QueueForwardProgress, "signaled ... but has not since been waited on"))
-- `VUID-vkQueueSubmit-pCommandBuffers-00070`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit-pCommandBuffers-00071`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit-pCommandBuffers-00072`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueSubmit-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkQueueSubmit-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueSubmit-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-- `VUID-vkQueueSubmit-pWaitSemaphores-03238`: dynamic (checks the binary semaphore's state, which the device follows through every command that signals or waits on one (queue submissions, sparse binds, acquires, presentations): a wait needs a signal submitted and not waited on since, a signal needs it unsignaled, or waited on earlier on the same queue, and a wait is pending until the operation that waits is known complete)
-- `VUID-vkQueueSubmit-queue-06448`: dynamic (checks a protected batch's queue was got with VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT, which the device records)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10.
-
-- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state, and the layer warns at that execution already
-- 1: checked by the safe methods in every build (each stage against the queue family's flags and the specification's table of supported stages), but no test breaks it: lavapipe's only queue family supports every stage
-- 1: checked by the safe methods in every build (the events each recording's set, reset and wait commands name, against those of the submissions to other queues not known complete), but no test breaks it: lavapipe's queue family has one queue
-- 1: checked by the safe methods in every build (the pool's queue family, recorded at its creation and read at each begin, against the queue's), but no test breaks it: lavapipe has one queue family
-- 1: checked by the safe methods in every build, by the check of VUID-vkQueueSubmit-pWaitSemaphores-03238, whose condition it shares for binary semaphores and whose VUID the error names (a timeline semaphore may be waited on before its signal is submitted, as the timeline rules allow)
-- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
-- 4: explicit rule; the wrappers do not check it*/
+- `VUID-vkQueueSubmit-pCommandBuffers-00065` (*yours*; checked by the safe methods in every build): Any calls to vkCmdSetEvent, vkCmdResetEvent or vkCmdWaitEvents that have been recorded into any of the command buffer elements of the `pCommandBuffers` member of any element of `pSubmits`, must not …
+- `VUID-vkQueueSubmit-pWaitDstStageMask-00066` (*yours*; checked by the safe methods in every build): Any stage flag included in any element of the `pWaitDstStageMask` member of any element of `pSubmits` must be a pipeline stage supported by one of the capabilities of `queue`, as specified in the …
+- `VUID-vkQueueSubmit-pWaitSemaphores-00068` (*yours*; checked by the safe methods in every build): When a semaphore wait operation referring to a binary semaphore defined by any element of the `pWaitSemaphores` member of any element of `pSubmits` executes on `queue`, there must be no other queues …
+- `VUID-vkQueueSubmit-pCommandBuffers-00073` (*yours*; checked by the safe methods in every build): If any secondary command buffers recorded into any element of the `pCommandBuffers` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it …
+- `VUID-vkQueueSubmit-pCommandBuffers-00074` (*yours*; checked by the safe methods in every build): Each element of the `pCommandBuffers` member of each element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
+- `VUID-vkQueueSubmit-pSubmits-02207` (*yours*; explicit rule): If any element of `pSubmits->pCommandBuffers` includes a Queue Family Transfer Acquire Operation, there must exist a previously submitted Queue Family Transfer Release Operation on a queue in the …
+- `VUID-vkQueueSubmit-pSubmits-02808` (*yours*; explicit rule): Any resource created with `VK_SHARING_MODE_EXCLUSIVE` that is read by an operation specified by `pSubmits` must not be owned by any queue family other than the one which `queue` belongs to, at the …
+- `VUID-vkQueueSubmit-pSubmits-04626` (*yours*; explicit rule): Any resource created with `VK_SHARING_MODE_CONCURRENT` that is accessed by an operation specified by `pSubmits` must have included the queue family of `queue` at resource creation time
+- `VUID-vkQueueSubmit-pWaitSemaphores-00069` (*yours*; checked by the safe methods in every build, by the check of VUID-vkQueueSubmit-pWaitSemaphores-03238, whose condition it shares for binary semaphores and whose VUID the error names): All elements of the `pWaitSemaphores` member of all elements of `pSubmits` must be semaphores that are signaled, or have semaphore signal operations previously submitted for execution
+- `VUID-vkQueueSubmit-pCommandBuffers-03220` (*yours*; explicit rule): If a command recorded into any element of `pCommandBuffers` was a vkCmdBeginQuery whose `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, the profiling lock must …
+- `VUID-vkQueueSubmit-fence-00063` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must be unsignaled
+- `VUID-vkQueueSubmit-fence-00064` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-vkQueueSubmit-pSignalSemaphores-00067` (*checked*): Each binary semaphore element of the `pSignalSemaphores` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed on the device
+- `VUID-vkQueueSubmit-pCommandBuffers-00070` (*checked*): Each element of the `pCommandBuffers` member of each element of `pSubmits` must be in the pending or executable state
+- `VUID-vkQueueSubmit-pCommandBuffers-00071` (*checked*): If any element of the `pCommandBuffers` member of any element of `pSubmits` was not recorded with the `VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT`, it must not be in the pending state
+- `VUID-vkQueueSubmit-pCommandBuffers-00072` (*checked*): Any secondary command buffers recorded into any element of the `pCommandBuffers` member of any element of `pSubmits` must be in the pending or executable state
+- `VUID-vkQueueSubmit-commonparent` (*checked*): Both of `fence`, and `queue` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkQueueSubmit-pWaitSemaphores-03238` (*checked*): All elements of the `pWaitSemaphores` member of all elements of `pSubmits` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY` must reference a semaphore signal operation that has been …
+- `VUID-vkQueueSubmit-queue-06448` (*checked*): If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, there must be no element of `pSubmits` that includes an VkProtectedSubmitInfo structure in its `pNext` chain with …
+- `VUID-vkQueueSubmit-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkQueueSubmit-pSubmits-parameter` (*by the types*): If `submitCount` is not `0`, `pSubmits` must be a valid pointer to an array of `submitCount` valid VkSubmitInfo structures
+- `VUID-vkQueueSubmit-fence-parameter` (*by the types*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle*/
     #[doc(alias = "vkQueueSubmit")]
     #[inline]
     pub fn submit<'a>(
@@ -770,9 +768,9 @@ The caller upholds the rules that [`Self::submit`] checks at run time: `VUID-vkQ
 
 # Valid usage
 
-The rules are on [`vkQueueWaitIdle`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueWaitIdle.html). Settled by the wrappers:
+The rules of `vkQueueWaitIdle` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueWaitIdle.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueWaitIdle-queue-parameter`: static (`self` is a live wrapper)*/
+- `VUID-vkQueueWaitIdle-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle*/
     #[doc(alias = "vkQueueWaitIdle")]
     #[inline]
     pub fn wait_idle(&self) -> Result<()> {
@@ -797,12 +795,12 @@ impl CommandBuffer {
 
 # Valid usage
 
-The rules are on [`vkResetCommandBuffer`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandBuffer.html). Settled by the wrappers:
+The rules of `vkResetCommandBuffer` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetCommandBuffer.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetCommandBuffer-commandBuffer-00045`: dynamic (refuses a buffer that a submission may still be executing)
-- `VUID-vkResetCommandBuffer-commandBuffer-00046`: dynamic (refuses a buffer whose pool was created without RESET_COMMAND_BUFFER)
-- `VUID-vkResetCommandBuffer-commandBuffer-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetCommandBuffer-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-vkResetCommandBuffer-commandBuffer-00045` (*checked*): `commandBuffer` must not be in the pending state
+- `VUID-vkResetCommandBuffer-commandBuffer-00046` (*checked*): `commandBuffer` must have been allocated from a pool that was created with the `VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT`
+- `VUID-vkResetCommandBuffer-flags-parameter` (*checked*): `flags` must be a valid combination of VkCommandBufferResetFlagBits values
+- `VUID-vkResetCommandBuffer-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle*/
     #[doc(alias = "vkResetCommandBuffer")]
     #[inline]
     pub fn reset(&mut self, flags: vk::CommandBufferResetFlags) -> Result<()> {

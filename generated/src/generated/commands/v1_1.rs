@@ -22,11 +22,11 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkBindBufferMemory2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory2.html). Settled by the wrappers:
+The rules of `vkBindBufferMemory2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindBufferMemory2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBindBufferMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)*/
+- `VUID-vkBindBufferMemory2-bindInfoCount-arraylength` (*checked*): `bindInfoCount` must be greater than `0`
+- `VUID-vkBindBufferMemory2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBindBufferMemory2-pBindInfos-parameter` (*by the types*): `pBindInfos` must be a valid pointer to an array of `bindInfoCount` valid VkBindBufferMemoryInfo structures*/
     #[doc(alias = "vkBindBufferMemory2")]
     #[inline]
     pub unsafe fn bind_buffer_memory2<'a>(
@@ -102,13 +102,13 @@ The caller upholds these 30 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkBindImageMemory2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory2.html). Settled by the wrappers:
+The rules of `vkBindImageMemory2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindImageMemory2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkBindImageMemory2-pBindInfos-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkBindImageMemory2-bindInfoCount-arraylength`: dynamic (checks the slice is not empty)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkBindImageMemory2-pBindInfos-02858` (*yours*; explicit rule): If any VkBindImageMemoryInfo::`image` was created with `VK_IMAGE_CREATE_DISJOINT_BIT` then all planes of VkBindImageMemoryInfo::`image` must be bound individually in separate `pBindInfos`
+- `VUID-vkBindImageMemory2-pBindInfos-04006` (*yours*; explicit rule): `pBindInfos` must not refer to the same image subresource more than once
+- `VUID-vkBindImageMemory2-bindInfoCount-arraylength` (*checked*): `bindInfoCount` must be greater than `0`
+- `VUID-vkBindImageMemory2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkBindImageMemory2-pBindInfos-parameter` (*by the types*): `pBindInfos` must be a valid pointer to an array of `bindInfoCount` valid VkBindImageMemoryInfo structures*/
     #[doc(alias = "vkBindImageMemory2")]
     #[inline]
     pub unsafe fn bind_image_memory2<'a>(
@@ -159,12 +159,12 @@ The caller upholds these 5 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkCreateDescriptorUpdateTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorUpdateTemplate.html). Settled by the wrappers:
+The rules of `vkCreateDescriptorUpdateTemplate` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorUpdateTemplate.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDescriptorUpdateTemplate-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateDescriptorUpdateTemplate-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateDescriptorUpdateTemplate-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDescriptorUpdateTemplateCreateInfo structure
+- `VUID-vkCreateDescriptorUpdateTemplate-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter` (*by the types*): `pDescriptorUpdateTemplate` must be a valid pointer to a VkDescriptorUpdateTemplate handle*/
     #[doc(alias = "vkCreateDescriptorUpdateTemplate")]
     #[inline]
     pub unsafe fn create_descriptor_update_template<'a>(
@@ -253,14 +253,13 @@ The caller upholds these 13 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCreateSamplerYcbcrConversion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSamplerYcbcrConversion.html). Settled by the wrappers:
+The rules of `vkCreateSamplerYcbcrConversion` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSamplerYcbcrConversion.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateSamplerYcbcrConversion-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateSamplerYcbcrConversion-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-vkCreateSamplerYcbcrConversion-None-01648` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `samplerYcbcrConversion` feature must be enabled
+- `VUID-vkCreateSamplerYcbcrConversion-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateSamplerYcbcrConversion-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkSamplerYcbcrConversionCreateInfo structure
+- `VUID-vkCreateSamplerYcbcrConversion-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter` (*by the types*): `pYcbcrConversion` must be a valid pointer to a VkSamplerYcbcrConversion handle*/
     #[doc(alias = "vkCreateSamplerYcbcrConversion")]
     #[inline]
     pub unsafe fn create_sampler_ycbcr_conversion<'a>(
@@ -311,11 +310,11 @@ The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] chec
 
 # Valid usage
 
-The rules are on [`vkGetBufferMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements2.html). Settled by the wrappers:
+The rules of `vkGetBufferMemoryRequirements2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferMemoryRequirements2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetBufferMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetBufferMemoryRequirements2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetBufferMemoryRequirements2-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferMemoryRequirementsInfo2 structure
+- `VUID-vkGetBufferMemoryRequirements2-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements2 structure*/
     #[doc(alias = "vkGetBufferMemoryRequirements2")]
     #[inline]
     pub fn get_buffer_memory_requirements2<'a>(
@@ -359,11 +358,11 @@ The caller upholds the rules that [`Self::get_buffer_memory_requirements2`] chec
 
 # Valid usage
 
-The rules are on [`vkGetDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSupport.html). Settled by the wrappers:
+The rules of `vkGetDescriptorSetLayoutSupport` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutSupport.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDescriptorSetLayoutSupport-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDescriptorSetLayoutSupport-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDescriptorSetLayoutSupport-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDescriptorSetLayoutCreateInfo structure
+- `VUID-vkGetDescriptorSetLayoutSupport-pSupport-parameter` (*by the types*): `pSupport` must be a valid pointer to a VkDescriptorSetLayoutSupport structure*/
     #[doc(alias = "vkGetDescriptorSetLayoutSupport")]
     #[inline]
     pub fn get_descriptor_set_layout_support<'a>(
@@ -417,12 +416,14 @@ The caller upholds these 4 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetDeviceGroupPeerMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPeerMemoryFeatures.html). Settled by the wrappers:
+The rules of `vkGetDeviceGroupPeerMemoryFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPeerMemoryFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter`: static (written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691` (*yours*; explicit rule): `heapIndex` must be less than `memoryHeapCount`
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692` (*yours*; explicit rule): `localDeviceIndex` must be a valid device index
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693` (*yours*; explicit rule): `remoteDeviceIndex` must be a valid device index
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694` (*yours*; explicit rule): `localDeviceIndex` must not equal `remoteDeviceIndex`
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter` (*by the types*): `pPeerMemoryFeatures` must be a valid pointer to a VkPeerMemoryFeatureFlags value*/
     #[doc(alias = "vkGetDeviceGroupPeerMemoryFeatures")]
     #[inline]
     pub unsafe fn get_group_peer_memory_features(
@@ -443,11 +444,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 4 (expl
 
 # Valid usage
 
-The rules are on [`vkGetDeviceQueue2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue2.html). Settled by the wrappers:
+The rules of `vkGetDeviceQueue2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceQueue2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceQueue2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceQueue2-pQueueInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceQueue2-pQueue-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceQueue2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceQueue2-pQueueInfo-parameter` (*by the types*): `pQueueInfo` must be a valid pointer to a valid VkDeviceQueueInfo2 structure
+- `VUID-vkGetDeviceQueue2-pQueue-parameter` (*by the types*): `pQueue` must be a valid pointer to a VkQueue handle*/
     #[doc(alias = "vkGetDeviceQueue2")]
     #[inline]
     pub fn get_queue2<'a>(&self, queue_info: &DeviceQueueInfo2<'a>) -> Result<Queue> {
@@ -490,11 +491,11 @@ The caller upholds the rules that [`Self::get_queue2`] checks at run time: `VUID
 
 # Valid usage
 
-The rules are on [`vkGetImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements2.html). Settled by the wrappers:
+The rules of `vkGetImageMemoryRequirements2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageMemoryRequirements2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetImageMemoryRequirements2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageMemoryRequirements2-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageMemoryRequirementsInfo2 structure
+- `VUID-vkGetImageMemoryRequirements2-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements2 structure*/
     #[doc(alias = "vkGetImageMemoryRequirements2")]
     #[inline]
     pub fn get_image_memory_requirements2<'a>(
@@ -540,12 +541,12 @@ The caller upholds the rules that [`Self::get_image_memory_requirements2`] check
 
 # Valid usage
 
-The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements2.html). Settled by the wrappers:
+The rules of `vkGetImageSparseMemoryRequirements2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSparseMemoryRequirements2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageSparseMemoryRequirements2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetImageSparseMemoryRequirements2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetImageSparseMemoryRequirements2-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageSparseMemoryRequirementsInfo2 structure
+- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirementCount-parameter` (*by the types*): `pSparseMemoryRequirementCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetImageSparseMemoryRequirements2-pSparseMemoryRequirements-parameter` (*by the types*): If the value referenced by `pSparseMemoryRequirementCount` is not `0`, and `pSparseMemoryRequirements` is not `NULL`, `pSparseMemoryRequirements` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetImageSparseMemoryRequirements2")]
     #[inline]
     pub fn get_image_sparse_memory_requirements2<'a>(
@@ -574,12 +575,12 @@ The rules are on [`vkGetImageSparseMemoryRequirements2`'s reference page](https:
 
 # Valid usage
 
-The rules are on [`vkTrimCommandPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkTrimCommandPool.html). Settled by the wrappers:
+The rules of `vkTrimCommandPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkTrimCommandPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkTrimCommandPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkTrimCommandPool-commandPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkTrimCommandPool-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-vkTrimCommandPool-commandPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkTrimCommandPool-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-vkTrimCommandPool-commandPool-parent` (*checked*): `commandPool` must have been created, allocated, or retrieved from `device`
+- `VUID-vkTrimCommandPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkTrimCommandPool-commandPool-parameter` (*by the types*): `commandPool` must be a valid VkCommandPool handle*/
     #[doc(alias = "vkTrimCommandPool")]
     #[inline]
     pub fn trim_command_pool(
@@ -636,14 +637,15 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkUpdateDescriptorSetWithTemplate`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSetWithTemplate.html). Settled by the wrappers:
+The rules of `vkUpdateDescriptorSetWithTemplate` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkUpdateDescriptorSetWithTemplate.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkUpdateDescriptorSetWithTemplate-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkUpdateDescriptorSetWithTemplate-pData-01685` (*yours*; explicit rule): `pData` must be a valid pointer to a memory containing one or more valid instances of VkDescriptorImageInfo, VkDescriptorBufferInfo, or VkBufferView in a layout defined by `descriptorUpdateTemplate` …
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-06994` (*yours*; explicit rule): Host access to `descriptorSet` must be externally synchronized
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-06995` (*yours*; explicit rule): Host access to `descriptorSet` must be externally synchronized unless explicitly denoted otherwise for specific flags
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent` (*checked*): `descriptorUpdateTemplate` must have been created, allocated, or retrieved from `device`
+- `VUID-vkUpdateDescriptorSetWithTemplate-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorSet-parameter` (*by the types*): `descriptorSet` must be a valid VkDescriptorSet handle
+- `VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parameter` (*by the types*): `descriptorUpdateTemplate` must be a valid VkDescriptorUpdateTemplate handle*/
     #[doc(alias = "vkUpdateDescriptorSetWithTemplate")]
     #[inline]
     pub unsafe fn update_descriptor_set_with_template(
@@ -704,9 +706,9 @@ impl Entry {
 
 # Valid usage
 
-The rules are on [`vkEnumerateInstanceVersion`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceVersion.html). Settled by the wrappers:
+The rules of `vkEnumerateInstanceVersion` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumerateInstanceVersion.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumerateInstanceVersion-pApiVersion-parameter` (*by the types*): `pApiVersion` must be a valid pointer to a `uint32_t` value*/
     #[doc(alias = "vkEnumerateInstanceVersion")]
     #[inline]
     pub fn enumerate_instance_version(&self) -> Result<u32> {
@@ -725,11 +727,11 @@ impl Instance {
 
 # Valid usage
 
-The rules are on [`vkEnumeratePhysicalDeviceGroups`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDeviceGroups.html). Settled by the wrappers:
+The rules of `vkEnumeratePhysicalDeviceGroups` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDeviceGroups.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkEnumeratePhysicalDeviceGroups-instance-parameter`: static (`self` is a live wrapper)
-- `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkEnumeratePhysicalDeviceGroups-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupCount-parameter` (*by the types*): `pPhysicalDeviceGroupCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkEnumeratePhysicalDeviceGroups-pPhysicalDeviceGroupProperties-parameter` (*by the types*): If the value referenced by `pPhysicalDeviceGroupCount` is not `0`, and `pPhysicalDeviceGroupProperties` is not `NULL`, `pPhysicalDeviceGroupProperties` must be a valid pointer to an array of …*/
     #[doc(alias = "vkEnumeratePhysicalDeviceGroups")]
     #[inline]
     pub fn enumerate_physical_device_groups(
@@ -751,11 +753,11 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceExternalBufferProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalBufferProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceExternalBufferProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalBufferProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferInfo-parameter` (*by the types*): `pExternalBufferInfo` must be a valid pointer to a valid VkPhysicalDeviceExternalBufferInfo structure
+- `VUID-vkGetPhysicalDeviceExternalBufferProperties-pExternalBufferProperties-parameter` (*by the types*): `pExternalBufferProperties` must be a valid pointer to a VkExternalBufferProperties structure*/
     #[doc(alias = "vkGetPhysicalDeviceExternalBufferProperties")]
     #[inline]
     pub fn get_external_buffer_properties<'a>(
@@ -807,11 +809,11 @@ The caller upholds the rules that [`Self::get_external_buffer_properties`] check
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceExternalFenceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalFenceProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceExternalFenceProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalFenceProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceInfo-parameter` (*by the types*): `pExternalFenceInfo` must be a valid pointer to a valid VkPhysicalDeviceExternalFenceInfo structure
+- `VUID-vkGetPhysicalDeviceExternalFenceProperties-pExternalFenceProperties-parameter` (*by the types*): `pExternalFenceProperties` must be a valid pointer to a VkExternalFenceProperties structure*/
     #[doc(alias = "vkGetPhysicalDeviceExternalFenceProperties")]
     #[inline]
     pub fn get_external_fence_properties<'a>(
@@ -863,11 +865,11 @@ The caller upholds the rules that [`Self::get_external_fence_properties`] checks
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceExternalSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalSemaphoreProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceExternalSemaphoreProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceExternalSemaphoreProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreInfo-parameter` (*by the types*): `pExternalSemaphoreInfo` must be a valid pointer to a valid VkPhysicalDeviceExternalSemaphoreInfo structure
+- `VUID-vkGetPhysicalDeviceExternalSemaphoreProperties-pExternalSemaphoreProperties-parameter` (*by the types*): `pExternalSemaphoreProperties` must be a valid pointer to a VkExternalSemaphoreProperties structure*/
     #[doc(alias = "vkGetPhysicalDeviceExternalSemaphoreProperties")]
     #[inline]
     pub fn get_external_semaphore_properties<'a>(
@@ -921,10 +923,10 @@ The caller upholds the rules that [`Self::get_external_semaphore_properties`] ch
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures2.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceFeatures2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFeatures2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceFeatures2-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceFeatures2-pFeatures-parameter` (*by the types*): `pFeatures` must be a valid pointer to a VkPhysicalDeviceFeatures2 structure*/
     #[doc(alias = "vkGetPhysicalDeviceFeatures2")]
     #[inline]
     pub fn get_features2<'a>(&self, features: &mut PhysicalDeviceFeatures2<'a>) {
@@ -938,11 +940,11 @@ The rules are on [`vkGetPhysicalDeviceFeatures2`'s reference page](https://regis
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties2.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceFormatProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceFormatProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceFormatProperties2-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-vkGetPhysicalDeviceFormatProperties2-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceFormatProperties2-pFormatProperties-parameter` (*by the types*): `pFormatProperties` must be a valid pointer to a VkFormatProperties2 structure*/
     #[doc(alias = "vkGetPhysicalDeviceFormatProperties2")]
     #[inline]
     pub fn get_format_properties2<'a>(
@@ -984,13 +986,12 @@ The caller upholds the rules that [`Self::get_format_properties2`] checks at run
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties2.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceImageFormatProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceImageFormatProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pNext-01868` (*yours*; explicit rule): If the `pNext` chain of `pImageFormatProperties` includes a VkAndroidHardwareBufferUsageANDROID structure, the `pNext` chain of `pImageFormatInfo` must include a …
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatInfo-parameter` (*by the types*): `pImageFormatInfo` must be a valid pointer to a valid VkPhysicalDeviceImageFormatInfo2 structure
+- `VUID-vkGetPhysicalDeviceImageFormatProperties2-pImageFormatProperties-parameter` (*by the types*): `pImageFormatProperties` must be a valid pointer to a VkImageFormatProperties2 structure*/
     #[doc(alias = "vkGetPhysicalDeviceImageFormatProperties2")]
     #[inline]
     pub fn get_image_format_properties2<'a>(
@@ -1049,10 +1050,10 @@ The caller upholds the rules that [`Self::get_image_format_properties2`] checks 
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceMemoryProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties2.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceMemoryProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceMemoryProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceMemoryProperties2-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceMemoryProperties2-pMemoryProperties-parameter` (*by the types*): `pMemoryProperties` must be a valid pointer to a VkPhysicalDeviceMemoryProperties2 structure*/
     #[doc(alias = "vkGetPhysicalDeviceMemoryProperties2")]
     #[inline]
     pub fn get_memory_properties2<'a>(
@@ -1091,10 +1092,10 @@ The caller upholds the rules that [`Self::get_memory_properties2`] checks at run
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties2.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetPhysicalDeviceProperties2-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceProperties2-pProperties-parameter` (*by the types*): `pProperties` must be a valid pointer to a VkPhysicalDeviceProperties2 structure*/
     #[doc(alias = "vkGetPhysicalDeviceProperties2")]
     #[inline]
     pub fn get_properties2<'a>(
@@ -1130,11 +1131,11 @@ The caller upholds the rules that [`Self::get_properties2`] checks at run time (
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties2.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceQueueFamilyProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceQueueFamilyProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyPropertyCount-parameter` (*by the types*): `pQueueFamilyPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceQueueFamilyProperties2-pQueueFamilyProperties-parameter` (*by the types*): If the value referenced by `pQueueFamilyPropertyCount` is not `0`, and `pQueueFamilyProperties` is not `NULL`, `pQueueFamilyProperties` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetPhysicalDeviceQueueFamilyProperties2")]
     #[inline]
     pub fn get_queue_family_properties2(
@@ -1161,12 +1162,12 @@ The rules are on [`vkGetPhysicalDeviceQueueFamilyProperties2`'s reference page](
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties2.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceSparseImageFormatProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceSparseImageFormatProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pFormatInfo-parameter` (*by the types*): `pFormatInfo` must be a valid pointer to a valid VkPhysicalDeviceSparseImageFormatInfo2 structure
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceSparseImageFormatProperties2-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkSparseImageFormatProperties2 structures*/
     #[doc(alias = "vkGetPhysicalDeviceSparseImageFormatProperties2")]
     #[inline]
     pub fn get_sparse_image_format_properties2<'a>(

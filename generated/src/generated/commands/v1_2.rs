@@ -61,12 +61,12 @@ The caller upholds these 49 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkCreateRenderPass2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass2.html). Settled by the wrappers:
+The rules of `vkCreateRenderPass2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRenderPass2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateRenderPass2-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreateRenderPass2-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreateRenderPass2-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreateRenderPass2-pRenderPass-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreateRenderPass2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreateRenderPass2-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkRenderPassCreateInfo2 structure
+- `VUID-vkCreateRenderPass2-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateRenderPass2-pRenderPass-parameter` (*by the types*): `pRenderPass` must be a valid pointer to a VkRenderPass handle*/
     #[doc(alias = "vkCreateRenderPass2")]
     #[inline]
     pub unsafe fn create_render_pass2<'a>(
@@ -127,15 +127,14 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetBufferDeviceAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferDeviceAddress.html). Settled by the wrappers:
+The rules of `vkGetBufferDeviceAddress` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferDeviceAddress.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetBufferDeviceAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferDeviceAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+- `VUID-vkGetBufferDeviceAddress-bufferDeviceAddress-03324` (*yours*; explicit rule): The `bufferDeviceAddress` or `VkPhysicalDeviceBufferDeviceAddressFeaturesEXT::bufferDeviceAddress` feature must be enabled
+- `VUID-vkGetBufferDeviceAddress-device-03325` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` or `VkPhysicalDeviceBufferDeviceAddressFeaturesEXT::bufferDeviceAddressMultiDevice` feature must be …
+- `VUID-vkGetBufferDeviceAddress-None-06542` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `bufferDeviceAddress` feature must be enabled
+- `VUID-vkGetBufferDeviceAddress-device-06543` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetBufferDeviceAddress-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetBufferDeviceAddress-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferDeviceAddressInfo structure*/
     #[doc(alias = "vkGetBufferDeviceAddress")]
     #[inline]
     pub unsafe fn get_buffer_device_address<'a>(
@@ -176,15 +175,12 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetBufferOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureAddress.html). Settled by the wrappers:
+The rules of `vkGetBufferOpaqueCaptureAddress` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureAddress.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-vkGetBufferOpaqueCaptureAddress-None-03326` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `bufferDeviceAddress` feature must be enabled
+- `VUID-vkGetBufferOpaqueCaptureAddress-device-03327` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferDeviceAddressInfo structure*/
     #[doc(alias = "vkGetBufferOpaqueCaptureAddress")]
     #[inline]
     pub unsafe fn get_buffer_opaque_capture_address<'a>(
@@ -224,15 +220,12 @@ The caller upholds these 2 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetDeviceMemoryOpaqueCaptureAddress`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryOpaqueCaptureAddress.html). Settled by the wrappers:
+The rules of `vkGetDeviceMemoryOpaqueCaptureAddress` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryOpaqueCaptureAddress.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `bufferDeviceAddress` feature must be enabled
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkDeviceMemoryOpaqueCaptureAddressInfo structure*/
     #[doc(alias = "vkGetDeviceMemoryOpaqueCaptureAddress")]
     #[inline]
     pub unsafe fn get_device_memory_opaque_capture_address<'a>(
@@ -270,13 +263,13 @@ The caller upholds the rules that [`Self::get_device_memory_opaque_capture_addre
 
 # Valid usage
 
-The rules are on [`vkGetSemaphoreCounterValue`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreCounterValue.html). Settled by the wrappers:
+The rules of `vkGetSemaphoreCounterValue` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreCounterValue.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSemaphoreCounterValue-semaphore-03255`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
-- `VUID-vkGetSemaphoreCounterValue-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetSemaphoreCounterValue-semaphore-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetSemaphoreCounterValue-pValue-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetSemaphoreCounterValue-semaphore-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetSemaphoreCounterValue-semaphore-03255` (*checked*): `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parent` (*checked*): `semaphore` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetSemaphoreCounterValue-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetSemaphoreCounterValue-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle
+- `VUID-vkGetSemaphoreCounterValue-pValue-parameter` (*by the types*): `pValue` must be a valid pointer to a `uint64_t` value*/
     #[doc(alias = "vkGetSemaphoreCounterValue")]
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
@@ -322,14 +315,16 @@ The caller upholds these 4 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkResetQueryPool`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html). Settled by the wrappers:
+The rules of `vkResetQueryPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetQueryPool-None-02665`: dynamic (checks the rule as written (recogniser: feature must be enabled))
-- `VUID-vkResetQueryPool-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkResetQueryPool-queryPool-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkResetQueryPool-queryPool-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-vkResetQueryPool-firstQuery-02666` (*yours*; explicit rule): `firstQuery` must be less than the number of queries in `queryPool`
+- `VUID-vkResetQueryPool-firstQuery-02667` (*yours*; explicit rule): The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
+- `VUID-vkResetQueryPool-firstQuery-02741` (*yours*; explicit rule): Submitted commands that refer to the range specified by `firstQuery` and `queryCount` in `queryPool` must have completed execution
+- `VUID-vkResetQueryPool-firstQuery-02742` (*yours*; explicit rule): The range of queries specified by `firstQuery` and `queryCount` in `queryPool` must not be in use by calls to vkGetQueryPoolResults or `vkResetQueryPool` in other threads
+- `VUID-vkResetQueryPool-None-02665` (*checked*): The `hostQueryReset` feature must be enabled
+- `VUID-vkResetQueryPool-queryPool-parent` (*checked*): `queryPool` must have been created, allocated, or retrieved from `device`
+- `VUID-vkResetQueryPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkResetQueryPool-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle*/
     #[doc(alias = "vkResetQueryPool")]
     #[inline]
     pub unsafe fn reset_query_pool(
@@ -375,10 +370,10 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkSignalSemaphore`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSignalSemaphore.html). Settled by the wrappers:
+The rules of `vkSignalSemaphore` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSignalSemaphore.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSignalSemaphore-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSignalSemaphore-pSignalInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkSignalSemaphore-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSignalSemaphore-pSignalInfo-parameter` (*by the types*): `pSignalInfo` must be a valid pointer to a valid VkSemaphoreSignalInfo structure*/
     #[doc(alias = "vkSignalSemaphore")]
     #[inline]
     pub unsafe fn signal_semaphore<'a>(
@@ -429,10 +424,10 @@ match gpu.queue.present_khr(
 
 # Valid usage
 
-The rules are on [`vkWaitSemaphores`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitSemaphores.html). Settled by the wrappers:
+The rules of `vkWaitSemaphores` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkWaitSemaphores.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkWaitSemaphores-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkWaitSemaphores-pWaitInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkWaitSemaphores-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkWaitSemaphores-pWaitInfo-parameter` (*by the types*): `pWaitInfo` must be a valid pointer to a valid VkSemaphoreWaitInfo structure*/
     #[doc(alias = "vkWaitSemaphores")]
     #[inline]
     pub fn wait_semaphores<'a>(

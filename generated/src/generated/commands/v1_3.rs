@@ -7,13 +7,13 @@ impl Device {
 
 # Valid usage
 
-The rules are on [`vkCreatePrivateDataSlot`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html). Settled by the wrappers:
+The rules of `vkCreatePrivateDataSlot` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePrivateDataSlot.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreatePrivateDataSlot-privateData-04564`: dynamic (checks the rule as written (recogniser: feature must be enabled))
-- `VUID-vkCreatePrivateDataSlot-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkCreatePrivateDataSlot-pAllocator-parameter`: static (always NULL)
-- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)*/
+- `VUID-vkCreatePrivateDataSlot-privateData-04564` (*checked*): The `privateData` feature must be enabled
+- `VUID-vkCreatePrivateDataSlot-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkCreatePrivateDataSlot-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkPrivateDataSlotCreateInfo structure
+- `VUID-vkCreatePrivateDataSlot-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreatePrivateDataSlot-pPrivateDataSlot-parameter` (*by the types*): `pPrivateDataSlot` must be a valid pointer to a VkPrivateDataSlot handle*/
     #[doc(alias = "vkCreatePrivateDataSlot")]
     #[inline]
     pub fn create_private_data_slot<'a>(
@@ -58,11 +58,11 @@ The caller upholds the rules that [`Self::create_private_data_slot`] checks at r
 
 # Valid usage
 
-The rules are on [`vkGetDeviceBufferMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceBufferMemoryRequirements.html). Settled by the wrappers:
+The rules of `vkGetDeviceBufferMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceBufferMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceBufferMemoryRequirements-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceBufferMemoryRequirements-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkDeviceBufferMemoryRequirements structure
+- `VUID-vkGetDeviceBufferMemoryRequirements-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements2 structure*/
     #[doc(alias = "vkGetDeviceBufferMemoryRequirements")]
     #[inline]
     pub fn get_device_buffer_memory_requirements<'a>(
@@ -121,11 +121,11 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetDeviceImageMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageMemoryRequirements.html). Settled by the wrappers:
+The rules of `vkGetDeviceImageMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceImageMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDeviceImageMemoryRequirements-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceImageMemoryRequirements-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkDeviceImageMemoryRequirements structure
+- `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements2 structure*/
     #[doc(alias = "vkGetDeviceImageMemoryRequirements")]
     #[inline]
     pub unsafe fn get_device_image_memory_requirements<'a>(
@@ -184,12 +184,12 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 # Valid usage
 
-The rules are on [`vkGetDeviceImageSparseMemoryRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageSparseMemoryRequirements.html). Settled by the wrappers:
+The rules of `vkGetDeviceImageSparseMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageSparseMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkDeviceImageMemoryRequirements structure
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirementCount-parameter` (*by the types*): `pSparseMemoryRequirementCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter` (*by the types*): If the value referenced by `pSparseMemoryRequirementCount` is not `0`, and `pSparseMemoryRequirements` is not `NULL`, `pSparseMemoryRequirements` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetDeviceImageSparseMemoryRequirements")]
     #[inline]
     pub unsafe fn get_device_image_sparse_memory_requirements<'a>(
@@ -236,14 +236,14 @@ The caller upholds the rules that [`Self::get_device_image_sparse_memory_require
 
 # Valid usage
 
-The rules are on [`vkGetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPrivateData.html). Settled by the wrappers:
+The rules of `vkGetPrivateData` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPrivateData.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPrivateData-objectType-04018`: dynamic (refuses an object type of the instance level (the 1.3.239 layer does not check it, and lavapipe crashes on it: proven by the error alone))
-- `VUID-vkGetPrivateData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkGetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkGetPrivateData-pData-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkGetPrivateData-objectType-04018` (*checked*): `objectType` must be `VK_OBJECT_TYPE_DEVICE`, or an object type whose parent is VkDevice
+- `VUID-vkGetPrivateData-objectType-parameter` (*checked*): `objectType` must be a valid VkObjectType value
+- `VUID-vkGetPrivateData-privateDataSlot-parent` (*checked*): `privateDataSlot` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetPrivateData-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetPrivateData-privateDataSlot-parameter` (*by the types*): `privateDataSlot` must be a valid VkPrivateDataSlot handle
+- `VUID-vkGetPrivateData-pData-parameter` (*by the types*): `pData` must be a valid pointer to a `uint64_t` value*/
     #[doc(alias = "vkGetPrivateData")]
     #[inline]
     pub fn get_private_data(
@@ -291,14 +291,14 @@ The caller upholds the rules that [`Self::get_private_data`] checks at run time:
 
 # Valid usage
 
-The rules are on [`vkSetPrivateData`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetPrivateData.html). Settled by the wrappers:
+The rules of `vkSetPrivateData` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSetPrivateData.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkSetPrivateData-objectHandle-04016`: dynamic (checks the handle is the device or a live object of it of that type, which the device lists)
-- `VUID-vkSetPrivateData-objectHandle-04017`: dynamic (checks the handle is the device or a live object of it of that type, which the device lists)
-- `VUID-vkSetPrivateData-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkSetPrivateData-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-vkSetPrivateData-privateDataSlot-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkSetPrivateData-privateDataSlot-parent`: dynamic (checks the handle was created, allocated or retrieved from the object the method is called on)*/
+- `VUID-vkSetPrivateData-objectHandle-04016` (*checked*): `objectHandle` must be `device` or a child of `device`
+- `VUID-vkSetPrivateData-objectHandle-04017` (*checked*): `objectHandle` must be a valid handle to an object of type `objectType`
+- `VUID-vkSetPrivateData-objectType-parameter` (*checked*): `objectType` must be a valid VkObjectType value
+- `VUID-vkSetPrivateData-privateDataSlot-parent` (*checked*): `privateDataSlot` must have been created, allocated, or retrieved from `device`
+- `VUID-vkSetPrivateData-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkSetPrivateData-privateDataSlot-parameter` (*by the types*): `privateDataSlot` must be a valid VkPrivateDataSlot handle*/
     #[doc(alias = "vkSetPrivateData")]
     #[inline]
     pub fn set_private_data(
@@ -353,11 +353,11 @@ impl PhysicalDevice {
 
 # Valid usage
 
-The rules are on [`vkGetPhysicalDeviceToolProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceToolProperties.html). Settled by the wrappers:
+The rules of `vkGetPhysicalDeviceToolProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceToolProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter`: static (written into storage the wrapper provides)
-- `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter`: static (written into storage the wrapper provides)*/
+- `VUID-vkGetPhysicalDeviceToolProperties-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceToolProperties-pToolCount-parameter` (*by the types*): `pToolCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkGetPhysicalDeviceToolProperties-pToolProperties-parameter` (*by the types*): If the value referenced by `pToolCount` is not `0`, and `pToolProperties` is not `NULL`, `pToolProperties` must be a valid pointer to an array of `pToolCount` VkPhysicalDeviceToolProperties structures*/
     #[doc(alias = "vkGetPhysicalDeviceToolProperties")]
     #[inline]
     pub fn get_tool_properties(
@@ -398,25 +398,30 @@ The caller upholds these 14 rules that no check of this method enforces (its com
 
 # Valid usage
 
-The rules are on [`vkQueueSubmit2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit2.html). Settled by the wrappers:
+The rules of `vkQueueSubmit2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueSubmit2-fence-04894`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit2-fence-04895`: dynamic (checks the fence is unsignalled and not in use by a queue operation that may still be executing)
-- `VUID-vkQueueSubmit2-synchronization2-03866`: dynamic (checks the rule as written (recogniser: feature must be enabled))
-- `VUID-vkQueueSubmit2-commandBuffer-03874`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit2-commandBuffer-03875`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit2-commandBuffer-03876`: dynamic (checks each command buffer's lifecycle state, kept by the wrapper from its allocation, begin, end and submissions)
-- `VUID-vkQueueSubmit2-queue-parameter`: static (`self` is a live wrapper)
-- `VUID-vkQueueSubmit2-pSubmits-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkQueueSubmit2-fence-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-- `VUID-vkQueueSubmit2-commonparent`: dynamic (checks each handle was created from the device (or instance) the method is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12.
-
-- 1: checked by the safe methods in every build (a secondary without SIMULTANEOUS_USE that is pending is refused), but no test breaks it yet: recording a pending secondary into another primary is refused (VUID-vkCmdExecuteCommands-pCommandBuffers-00091), so only a second submission of a SIMULTANEOUS_USE primary that executes it reaches the state, and the layer warns at that execution already
-- 3: checked by the safe methods in every build (the binary semaphore's state, as for vkQueueSubmit), but no test breaks it through this command
-- 1: checked by the safe methods in every build: a wait leaves the semaphore waited on, so a second wait before another signal is refused as a wait on an unsignaled semaphore, which is the rule the error names
-- 7: explicit rule; the wrappers do not check it*/
+- `VUID-vkQueueSubmit2-commandBuffer-03867` (*yours*; explicit rule): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a …
+- `VUID-vkQueueSubmit2-semaphore-03868` (*yours*; checked by the safe methods in every build): The `semaphore` member of any binary semaphore element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed …
+- `VUID-vkQueueSubmit2-stageMask-03869` (*yours*; explicit rule): The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs …
+- `VUID-vkQueueSubmit2-stageMask-03870` (*yours*; explicit rule): The `stageMask` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
+- `VUID-vkQueueSubmit2-semaphore-03871` (*yours*; checked by the safe methods in every build): When a semaphore wait operation for a binary semaphore is executed, as defined by the `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits`, there must be …
+- `VUID-vkQueueSubmit2-semaphore-03872` (*yours*; checked by the safe methods in every build): The `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must be semaphores that are signaled, or have semaphore signal operations previously submitted …
+- `VUID-vkQueueSubmit2-commandBuffer-03877` (*yours*; checked by the safe methods in every build): If any secondary command buffers recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was not recorded with the …
+- `VUID-vkQueueSubmit2-commandBuffer-03878` (*yours*; explicit rule): The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family …
+- `VUID-vkQueueSubmit2-commandBuffer-03879` (*yours*; explicit rule): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` includes a Queue Family Transfer Acquire Operation, there must …
+- `VUID-vkQueueSubmit2-semaphore-03873` (*yours*; checked by the safe methods in every build): Any `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` that was created with a VkSemaphoreTypeKHR of `VK_SEMAPHORE_TYPE_BINARY_KHR` must reference a …
+- `VUID-vkQueueSubmit2-commandBuffer-03880` (*yours*; explicit rule): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was a vkCmdBeginQuery whose `queryPool` was created with a …
+- `VUID-vkQueueSubmit2-queue-06447` (*yours*; explicit rule): If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, the `flags` member of any element of `pSubmits` must not include `VK_SUBMIT_PROTECTED_BIT_KHR`
+- `VUID-vkQueueSubmit2-fence-04894` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must be unsignaled
+- `VUID-vkQueueSubmit2-fence-04895` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-vkQueueSubmit2-synchronization2-03866` (*checked*): The `synchronization2` feature must be enabled
+- `VUID-vkQueueSubmit2-commandBuffer-03874` (*checked*): The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must be in the pending or executable state
+- `VUID-vkQueueSubmit2-commandBuffer-03875` (*checked*): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was not recorded with the …
+- `VUID-vkQueueSubmit2-commandBuffer-03876` (*checked*): Any secondary command buffers recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must be in the pending or executable state
+- `VUID-vkQueueSubmit2-commonparent` (*checked*): Both of `fence`, and `queue` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkQueueSubmit2-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
+- `VUID-vkQueueSubmit2-pSubmits-parameter` (*by the types*): If `submitCount` is not `0`, `pSubmits` must be a valid pointer to an array of `submitCount` valid VkSubmitInfo2 structures
+- `VUID-vkQueueSubmit2-fence-parameter` (*by the types*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle*/
     #[doc(alias = "vkQueueSubmit2")]
     #[inline]
     pub unsafe fn submit2<'a>(

@@ -16,12 +16,11 @@ The caller upholds the rule that no check of this method enforces (its command's
 
 # Valid usage
 
-The rules are on [`vkGetDescriptorSetHostMappingVALVE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetHostMappingVALVE.html). Settled by the wrappers:
+The rules of `vkGetDescriptorSetHostMappingVALVE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetHostMappingVALVE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDescriptorSetHostMappingVALVE-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDescriptorSetHostMappingVALVE-descriptorSet-parameter`: static (taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (passed as ash's raw type (a window-system object, a pointer to pointers or an array of a length the registry gives as an expression); the caller vouches for it through an `unsafe` method).*/
+- `VUID-vkGetDescriptorSetHostMappingVALVE-ppData-parameter` (*yours*; passed as ash's raw type): `ppData` must be a valid pointer to a pointer value
+- `VUID-vkGetDescriptorSetHostMappingVALVE-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDescriptorSetHostMappingVALVE-descriptorSet-parameter` (*by the types*): `descriptorSet` must be a valid VkDescriptorSet handle*/
     #[doc(alias = "vkGetDescriptorSetHostMappingVALVE")]
     #[inline]
     pub unsafe fn get_descriptor_set_host_mapping_valve(
@@ -45,11 +44,11 @@ Left to the caller (listed one by one in the crate's `validation.json`): 1 (pass
 
 # Valid usage
 
-The rules are on [`vkGetDescriptorSetLayoutHostMappingInfoVALVE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutHostMappingInfoVALVE.html). Settled by the wrappers:
+The rules of `vkGetDescriptorSetLayoutHostMappingInfoVALVE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetLayoutHostMappingInfoVALVE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-device-parameter`: static (`self` is a live wrapper)
-- `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-pBindingReference-parameter`: static (taken as a reference or slice: a valid pointer with its length)
-- `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-pHostMapping-parameter`: static (taken as a reference or slice: a valid pointer with its length)*/
+- `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-pBindingReference-parameter` (*by the types*): `pBindingReference` must be a valid pointer to a valid VkDescriptorSetBindingReferenceVALVE structure
+- `VUID-vkGetDescriptorSetLayoutHostMappingInfoVALVE-pHostMapping-parameter` (*by the types*): `pHostMapping` must be a valid pointer to a VkDescriptorSetLayoutHostMappingInfoVALVE structure*/
     #[doc(alias = "vkGetDescriptorSetLayoutHostMappingInfoVALVE")]
     #[inline]
     pub fn get_descriptor_set_layout_host_mapping_info_valve<'a>(

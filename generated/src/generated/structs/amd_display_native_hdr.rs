@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDisplayNativeHdrSurfaceCapabilitiesAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayNativeHdrSurfaceCapabilitiesAMD.html). Settled by the wrappers:
+The rules of `VkDisplayNativeHdrSurfaceCapabilitiesAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayNativeHdrSurfaceCapabilitiesAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayNativeHdrSurfaceCapabilitiesAMD-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkDisplayNativeHdrSurfaceCapabilitiesAMD-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_NATIVE_HDR_SURFACE_CAPABILITIES_AMD`*/
 #[cfg(feature = "amd_display_native_hdr")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -28,11 +28,10 @@ for DisplayNativeHdrSurfaceCapabilitiesAMD<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSwapchainDisplayNativeHdrCreateInfoAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainDisplayNativeHdrCreateInfoAMD.html). Settled by the wrappers:
+The rules of `VkSwapchainDisplayNativeHdrCreateInfoAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainDisplayNativeHdrCreateInfoAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainDisplayNativeHdrCreateInfoAMD-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSwapchainDisplayNativeHdrCreateInfoAMD-localDimmingEnable-04449` (*yours*; explicit rule): It is only valid to set `localDimmingEnable` to `VK_TRUE` if VkDisplayNativeHdrSurfaceCapabilitiesAMD::`localDimmingSupport` is supported
+- `VUID-VkSwapchainDisplayNativeHdrCreateInfoAMD-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_DISPLAY_NATIVE_HDR_CREATE_INFO_AMD`*/
 #[cfg(feature = "amd_display_native_hdr")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDeviceMemoryOverallocationCreateInfoAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryOverallocationCreateInfoAMD.html). Settled by the wrappers:
+The rules of `VkDeviceMemoryOverallocationCreateInfoAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryOverallocationCreateInfoAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceMemoryOverallocationCreateInfoAMD-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceMemoryOverallocationCreateInfoAMD-overallocationBehavior-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceMemoryOverallocationCreateInfoAMD-overallocationBehavior-parameter` (*checked*): `overallocationBehavior` must be a valid VkMemoryOverallocationBehaviorAMD value
+- `VUID-VkDeviceMemoryOverallocationCreateInfoAMD-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_MEMORY_OVERALLOCATION_CREATE_INFO_AMD`*/
 #[cfg(feature = "amd_memory_overallocation_behavior")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPipelineCompilerControlCreateInfoAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCompilerControlCreateInfoAMD.html). Settled by the wrappers:
+The rules of `VkPipelineCompilerControlCreateInfoAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCompilerControlCreateInfoAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineCompilerControlCreateInfoAMD-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineCompilerControlCreateInfoAMD-compilerControlFlags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkPipelineCompilerControlCreateInfoAMD-compilerControlFlags-zerobitmask` (*checked*): `compilerControlFlags` must be `0`
+- `VUID-VkPipelineCompilerControlCreateInfoAMD-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_COMPILER_CONTROL_CREATE_INFO_AMD`*/
 #[cfg(feature = "amd_pipeline_compiler_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPipelineRasterizationStateRasterizationOrderAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationStateRasterizationOrderAMD.html). Settled by the wrappers:
+The rules of `VkPipelineRasterizationStateRasterizationOrderAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationStateRasterizationOrderAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineRasterizationStateRasterizationOrderAMD-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineRasterizationStateRasterizationOrderAMD-rasterizationOrder-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPipelineRasterizationStateRasterizationOrderAMD-rasterizationOrder-parameter` (*checked*): `rasterizationOrder` must be a valid VkRasterizationOrderAMD value
+- `VUID-VkPipelineRasterizationStateRasterizationOrderAMD-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_RASTERIZATION_ORDER_AMD`*/
 #[cfg(feature = "amd_rasterization_order")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

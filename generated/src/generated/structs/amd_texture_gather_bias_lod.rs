@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkTextureLODGatherFormatPropertiesAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkTextureLODGatherFormatPropertiesAMD.html). Settled by the wrappers:
+The rules of `VkTextureLODGatherFormatPropertiesAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkTextureLODGatherFormatPropertiesAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkTextureLODGatherFormatPropertiesAMD-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkTextureLODGatherFormatPropertiesAMD-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_TEXTURE_LOD_GATHER_FORMAT_PROPERTIES_AMD`*/
 #[cfg(feature = "amd_texture_gather_bias_lod")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

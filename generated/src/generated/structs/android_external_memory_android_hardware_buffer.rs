@@ -7,9 +7,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAndroidHardwareBufferFormatProperties2ANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferFormatProperties2ANDROID.html). Settled by the wrappers:
+The rules of `VkAndroidHardwareBufferFormatProperties2ANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferFormatProperties2ANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAndroidHardwareBufferFormatProperties2ANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkAndroidHardwareBufferFormatProperties2ANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ANDROID_HARDWARE_BUFFER_FORMAT_PROPERTIES_2_ANDROID`*/
 #[cfg(
     all(
         feature = "android_external_memory_android_hardware_buffer",
@@ -40,9 +40,9 @@ for AndroidHardwareBufferFormatProperties2ANDROID<'a> {}
 
 # Valid usage
 
-The rules are on [`VkAndroidHardwareBufferFormatPropertiesANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferFormatPropertiesANDROID.html). Settled by the wrappers:
+The rules of `VkAndroidHardwareBufferFormatPropertiesANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferFormatPropertiesANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAndroidHardwareBufferFormatPropertiesANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkAndroidHardwareBufferFormatPropertiesANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ANDROID_HARDWARE_BUFFER_FORMAT_PROPERTIES_ANDROID`*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -62,11 +62,11 @@ for AndroidHardwareBufferFormatPropertiesANDROID<'a> {}
 
 # Valid usage
 
-The rules are on [`VkAndroidHardwareBufferPropertiesANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferPropertiesANDROID.html). Settled by the wrappers:
+The rules of `VkAndroidHardwareBufferPropertiesANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferPropertiesANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAndroidHardwareBufferPropertiesANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAndroidHardwareBufferPropertiesANDROID-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkAndroidHardwareBufferPropertiesANDROID-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkAndroidHardwareBufferPropertiesANDROID-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkAndroidHardwareBufferPropertiesANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ANDROID_HARDWARE_BUFFER_PROPERTIES_ANDROID`
+- `VUID-VkAndroidHardwareBufferPropertiesANDROID-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAndroidHardwareBufferFormatProperties2ANDROID or …*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -82,9 +82,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkAndroidHardwareBufferUsageANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferUsageANDROID.html). Settled by the wrappers:
+The rules of `VkAndroidHardwareBufferUsageANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAndroidHardwareBufferUsageANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAndroidHardwareBufferUsageANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkAndroidHardwareBufferUsageANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ANDROID_HARDWARE_BUFFER_USAGE_ANDROID`*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -103,11 +103,10 @@ for AndroidHardwareBufferUsageANDROID<'a> {}
 
 # Valid usage
 
-The rules are on [`VkExternalFormatANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalFormatANDROID.html). Settled by the wrappers:
+The rules of `VkExternalFormatANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalFormatANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalFormatANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkExternalFormatANDROID-externalFormat-01894` (*yours*; explicit rule): `externalFormat` must be `0` or a value returned in the `externalFormat` member of VkAndroidHardwareBufferFormatPropertiesANDROID by an earlier call to vkGetAndroidHardwareBufferPropertiesANDROID
+- `VUID-VkExternalFormatANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_FORMAT_ANDROID`*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -137,14 +136,12 @@ for ExternalFormatANDROID<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImportAndroidHardwareBufferInfoANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportAndroidHardwareBufferInfoANDROID.html). Settled by the wrappers:
+The rules of `VkImportAndroidHardwareBufferInfoANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportAndroidHardwareBufferInfoANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportAndroidHardwareBufferInfoANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 2: explicit rule; the wrappers do not check it
-- 1: not settable safely (a pointer Vulkan writes through)*/
+- `VUID-VkImportAndroidHardwareBufferInfoANDROID-buffer-01880` (*yours*; explicit rule): If `buffer` is not `NULL`, Android hardware buffers must be supported for import, as reported by VkExternalImageFormatProperties or VkExternalBufferProperties
+- `VUID-VkImportAndroidHardwareBufferInfoANDROID-buffer-01881` (*yours*; explicit rule): If `buffer` is not `NULL`, it must be a valid Android hardware buffer object with `AHardwareBuffer_Desc::usage` compatible with Vulkan as described in Android Hardware Buffers
+- `VUID-VkImportAndroidHardwareBufferInfoANDROID-buffer-parameter` (*yours*; not settable safely): `buffer` must be a valid pointer to an AHardwareBuffer value
+- `VUID-VkImportAndroidHardwareBufferInfoANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_ANDROID_HARDWARE_BUFFER_INFO_ANDROID`*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -163,13 +160,13 @@ for ImportAndroidHardwareBufferInfoANDROID<'a> {}
 
 # Valid usage
 
-The rules are on [`VkMemoryGetAndroidHardwareBufferInfoANDROID`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetAndroidHardwareBufferInfoANDROID.html). Settled by the wrappers:
+The rules of `VkMemoryGetAndroidHardwareBufferInfoANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetAndroidHardwareBufferInfoANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-memory-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-handleTypes-01882` (*yours*; explicit rule): `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
+- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-pNext-01883` (*yours*; explicit rule): If the `pNext` chain of the VkMemoryAllocateInfo used to allocate `memory` included a VkMemoryDedicatedAllocateInfo with non-`NULL` `image` member, then that `image` must already be bound to `memory`
+- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_ANDROID_HARDWARE_BUFFER_INFO_ANDROID`
+- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

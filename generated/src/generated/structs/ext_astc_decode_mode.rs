@@ -6,12 +6,14 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImageViewASTCDecodeModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewASTCDecodeModeEXT.html). Settled by the wrappers:
+The rules of `VkImageViewASTCDecodeModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewASTCDecodeModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageViewASTCDecodeModeEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageViewASTCDecodeModeEXT-decodeMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageViewASTCDecodeModeEXT-decodeMode-02230` (*yours*; explicit rule): `decodeMode` must be one of `VK_FORMAT_R16G16B16A16_SFLOAT`, `VK_FORMAT_R8G8B8A8_UNORM`, or `VK_FORMAT_E5B9G9R9_UFLOAT_PACK32`
+- `VUID-VkImageViewASTCDecodeModeEXT-decodeMode-02231` (*yours*; explicit rule): If the `decodeModeSharedExponent` feature is not enabled, `decodeMode` must not be `VK_FORMAT_E5B9G9R9_UFLOAT_PACK32`
+- `VUID-VkImageViewASTCDecodeModeEXT-decodeMode-02232` (*yours*; explicit rule): If `decodeMode` is `VK_FORMAT_R8G8B8A8_UNORM` the image view must not include blocks using any of the ASTC HDR modes
+- `VUID-VkImageViewASTCDecodeModeEXT-format-04084` (*yours*; explicit rule): `format` of the image view must be one of the ASTC Compressed Image Formats
+- `VUID-VkImageViewASTCDecodeModeEXT-decodeMode-parameter` (*checked*): `decodeMode` must be a valid VkFormat value
+- `VUID-VkImageViewASTCDecodeModeEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_ASTC_DECODE_MODE_EXT`*/
 #[cfg(feature = "ext_astc_decode_mode")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -38,9 +40,9 @@ unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for ImageViewASTCDecodeModeEXT<
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceASTCDecodeFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceASTCDecodeFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceASTCDecodeFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceASTCDecodeFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceASTCDecodeFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceASTCDecodeFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ASTC_DECODE_FEATURES_EXT`*/
 #[cfg(feature = "ext_astc_decode_mode")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

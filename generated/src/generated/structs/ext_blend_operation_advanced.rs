@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceBlendOperationAdvancedFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBlendOperationAdvancedFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceBlendOperationAdvancedFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBlendOperationAdvancedFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceBlendOperationAdvancedFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceBlendOperationAdvancedFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BLEND_OPERATION_ADVANCED_FEATURES_EXT`*/
 #[cfg(feature = "ext_blend_operation_advanced")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,9 +39,9 @@ for PhysicalDeviceBlendOperationAdvancedFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceBlendOperationAdvancedPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBlendOperationAdvancedPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceBlendOperationAdvancedPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBlendOperationAdvancedPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceBlendOperationAdvancedPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceBlendOperationAdvancedPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BLEND_OPERATION_ADVANCED_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_blend_operation_advanced")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -60,12 +60,13 @@ for PhysicalDeviceBlendOperationAdvancedPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineColorBlendAdvancedStateCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineColorBlendAdvancedStateCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineColorBlendAdvancedStateCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineColorBlendAdvancedStateCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineColorBlendAdvancedStateCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineColorBlendAdvancedStateCreateInfoEXT-blendOverlap-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineColorBlendAdvancedStateCreateInfoEXT-srcPremultiplied-01424` (*yours*; explicit rule): If the non-premultiplied source color property is not supported, `srcPremultiplied` must be `VK_TRUE`
+- `VUID-VkPipelineColorBlendAdvancedStateCreateInfoEXT-dstPremultiplied-01425` (*yours*; explicit rule): If the non-premultiplied destination color property is not supported, `dstPremultiplied` must be `VK_TRUE`
+- `VUID-VkPipelineColorBlendAdvancedStateCreateInfoEXT-blendOverlap-01426` (*yours*; explicit rule): If the correlated overlap property is not supported, `blendOverlap` must be `VK_BLEND_OVERLAP_UNCORRELATED_EXT`
+- `VUID-VkPipelineColorBlendAdvancedStateCreateInfoEXT-blendOverlap-parameter` (*checked*): `blendOverlap` must be a valid VkBlendOverlapEXT value
+- `VUID-VkPipelineColorBlendAdvancedStateCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_ADVANCED_STATE_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_blend_operation_advanced")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

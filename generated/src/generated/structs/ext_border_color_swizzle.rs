@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceBorderColorSwizzleFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBorderColorSwizzleFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceBorderColorSwizzleFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBorderColorSwizzleFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceBorderColorSwizzleFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceBorderColorSwizzleFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BORDER_COLOR_SWIZZLE_FEATURES_EXT`*/
 #[cfg(feature = "ext_border_color_swizzle")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -45,12 +45,11 @@ for PhysicalDeviceBorderColorSwizzleFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSamplerBorderColorComponentMappingCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerBorderColorComponentMappingCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkSamplerBorderColorComponentMappingCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerBorderColorComponentMappingCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerBorderColorComponentMappingCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerBorderColorComponentMappingCreateInfoEXT-components-parameter`: dynamic (checks the struct's own rules)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSamplerBorderColorComponentMappingCreateInfoEXT-borderColorSwizzle-06437` (*yours*; explicit rule): The `borderColorSwizzle` feature must be enabled
+- `VUID-VkSamplerBorderColorComponentMappingCreateInfoEXT-components-parameter` (*checked*): `components` must be a valid VkComponentMapping structure
+- `VUID-VkSamplerBorderColorComponentMappingCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_BORDER_COLOR_COMPONENT_MAPPING_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_border_color_swizzle")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

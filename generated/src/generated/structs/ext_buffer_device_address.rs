@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkBufferDeviceAddressCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferDeviceAddressCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkBufferDeviceAddressCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferDeviceAddressCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferDeviceAddressCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkBufferDeviceAddressCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_buffer_device_address")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -35,9 +35,9 @@ unsafe impl<'a> Extends<BufferCreateInfo<'a>> for BufferDeviceAddressCreateInfoE
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceBufferDeviceAddressFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBufferDeviceAddressFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceBufferDeviceAddressFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBufferDeviceAddressFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceBufferDeviceAddressFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceBufferDeviceAddressFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BUFFER_DEVICE_ADDRESS_FEATURES_EXT`*/
 #[cfg(feature = "ext_buffer_device_address")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

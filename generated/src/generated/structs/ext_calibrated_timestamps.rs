@@ -6,13 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCalibratedTimestampInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCalibratedTimestampInfoEXT.html). Settled by the wrappers:
+The rules of `VkCalibratedTimestampInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCalibratedTimestampInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCalibratedTimestampInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCalibratedTimestampInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCalibratedTimestampInfoEXT-timeDomain-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCalibratedTimestampInfoEXT-timeDomain-02354` (*yours*; explicit rule): `timeDomain` must be one of the VkTimeDomainEXT values returned by vkGetPhysicalDeviceCalibrateableTimeDomainsEXT
+- `VUID-VkCalibratedTimestampInfoEXT-timeDomain-parameter` (*checked*): `timeDomain` must be a valid VkTimeDomainEXT value
+- `VUID-VkCalibratedTimestampInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CALIBRATED_TIMESTAMP_INFO_EXT`
+- `VUID-VkCalibratedTimestampInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_calibrated_timestamps")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

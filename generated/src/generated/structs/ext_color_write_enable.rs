@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceColorWriteEnableFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceColorWriteEnableFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceColorWriteEnableFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceColorWriteEnableFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceColorWriteEnableFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceColorWriteEnableFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_COLOR_WRITE_ENABLE_FEATURES_EXT`*/
 #[cfg(feature = "ext_color_write_enable")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,12 +39,14 @@ for PhysicalDeviceColorWriteEnableFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineColorWriteCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineColorWriteCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineColorWriteCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineColorWriteCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineColorWriteCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineColorWriteCreateInfoEXT-pColorWriteEnables-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineColorWriteCreateInfoEXT-pAttachments-04801` (*yours*; explicit rule): If the `colorWriteEnable` feature is not enabled, all elements of `pColorWriteEnables` must be `VK_TRUE`
+- `VUID-VkPipelineColorWriteCreateInfoEXT-attachmentCount-06655` (*yours*; explicit rule): `attachmentCount` must be less than or equal to the `maxColorAttachments` member of `VkPhysicalDeviceLimits`
+- `VUID-VkPipelineColorWriteCreateInfoEXT-attachmentCount-07608` (*yours*; explicit rule): If the pipeline is being created with `VK_DYNAMIC_STATE_COLOR_BLEND_ENABLE_EXT`, `VK_DYNAMIC_STATE_COLOR_BLEND_EQUATION_EXT`, or `VK_DYNAMIC_STATE_COLOR_WRITE_MASK_EXT` dynamic states not set, …
+- `VUID-VkPipelineColorWriteCreateInfoEXT-attachmentCount-04802` (*yours*; explicit rule): `attachmentCount` must be equal to the `attachmentCount` member of the `VkPipelineColorBlendStateCreateInfo` structure specified during pipeline creation
+- `VUID-VkPipelineColorWriteCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_COLOR_WRITE_CREATE_INFO_EXT`
+- `VUID-VkPipelineColorWriteCreateInfoEXT-pColorWriteEnables-parameter` (*by the types*): If `attachmentCount` is not `0`, `pColorWriteEnables` must be a valid pointer to an array of `attachmentCount` VkBool32 values*/
 #[cfg(feature = "ext_color_write_enable")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCommandBufferInheritanceConditionalRenderingInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceConditionalRenderingInfoEXT.html). Settled by the wrappers:
+The rules of `VkCommandBufferInheritanceConditionalRenderingInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceConditionalRenderingInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCommandBufferInheritanceConditionalRenderingInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCommandBufferInheritanceConditionalRenderingInfoEXT-conditionalRenderingEnable-01977` (*yours*; explicit rule): If the `inheritedConditionalRendering` feature is not enabled, `conditionalRenderingEnable` must be `VK_FALSE`
+- `VUID-VkCommandBufferInheritanceConditionalRenderingInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_CONDITIONAL_RENDERING_INFO_EXT`*/
 #[cfg(feature = "ext_conditional_rendering")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -38,14 +37,16 @@ for CommandBufferInheritanceConditionalRenderingInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkConditionalRenderingBeginInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkConditionalRenderingBeginInfoEXT.html). Settled by the wrappers:
+The rules of `VkConditionalRenderingBeginInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkConditionalRenderingBeginInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkConditionalRenderingBeginInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkConditionalRenderingBeginInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkConditionalRenderingBeginInfoEXT-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkConditionalRenderingBeginInfoEXT-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkConditionalRenderingBeginInfoEXT-buffer-01981` (*yours*; explicit rule): If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkConditionalRenderingBeginInfoEXT-buffer-01982` (*yours*; explicit rule): `buffer` must have been created with the `VK_BUFFER_USAGE_CONDITIONAL_RENDERING_BIT_EXT` bit set
+- `VUID-VkConditionalRenderingBeginInfoEXT-offset-01983` (*yours*; explicit rule): `offset` must be less than the size of `buffer` by at least 32 bits
+- `VUID-VkConditionalRenderingBeginInfoEXT-offset-01984` (*yours*; explicit rule): `offset` must be a multiple of 4
+- `VUID-VkConditionalRenderingBeginInfoEXT-flags-parameter` (*checked*): `flags` must be a valid combination of VkConditionalRenderingFlagBitsEXT values
+- `VUID-VkConditionalRenderingBeginInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CONDITIONAL_RENDERING_BEGIN_INFO_EXT`
+- `VUID-VkConditionalRenderingBeginInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkConditionalRenderingBeginInfoEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "ext_conditional_rendering")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -94,9 +95,9 @@ impl<'a> ConditionalRenderingBeginInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceConditionalRenderingFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceConditionalRenderingFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceConditionalRenderingFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceConditionalRenderingFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceConditionalRenderingFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceConditionalRenderingFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CONDITIONAL_RENDERING_FEATURES_EXT`*/
 #[cfg(feature = "ext_conditional_rendering")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

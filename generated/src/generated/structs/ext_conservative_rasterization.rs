@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceConservativeRasterizationPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceConservativeRasterizationPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceConservativeRasterizationPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceConservativeRasterizationPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceConservativeRasterizationPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceConservativeRasterizationPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CONSERVATIVE_RASTERIZATION_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_conservative_rasterization")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -27,13 +27,12 @@ for PhysicalDeviceConservativeRasterizationPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineRasterizationConservativeStateCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationConservativeStateCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineRasterizationConservativeStateCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationConservativeStateCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-conservativeRasterizationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-extraPrimitiveOverestimationSize-01769` (*yours*; explicit rule): `extraPrimitiveOverestimationSize` must be in the range of `0.0` to `VkPhysicalDeviceConservativeRasterizationPropertiesEXT::maxExtraPrimitiveOverestimationSize` inclusive
+- `VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-conservativeRasterizationMode-parameter` (*checked*): `conservativeRasterizationMode` must be a valid VkConservativeRasterizationModeEXT value
+- `VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_CONSERVATIVE_STATE_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_conservative_rasterization")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceCustomBorderColorFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCustomBorderColorFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceCustomBorderColorFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCustomBorderColorFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceCustomBorderColorFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceCustomBorderColorFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_FEATURES_EXT`*/
 #[cfg(feature = "ext_custom_border_color")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -45,9 +45,9 @@ for PhysicalDeviceCustomBorderColorFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceCustomBorderColorPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCustomBorderColorPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceCustomBorderColorPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCustomBorderColorPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceCustomBorderColorPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceCustomBorderColorPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_CUSTOM_BORDER_COLOR_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_custom_border_color")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -66,12 +66,13 @@ for PhysicalDeviceCustomBorderColorPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSamplerCustomBorderColorCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCustomBorderColorCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkSamplerCustomBorderColorCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCustomBorderColorCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerCustomBorderColorCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerCustomBorderColorCreateInfoEXT-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSamplerCustomBorderColorCreateInfoEXT-format-07605` (*yours*; explicit rule): If `format` is not `VK_FORMAT_UNDEFINED` and `format` is not a combined depth stencil format then the VkSamplerCreateInfo::`borderColor` type must match the sampled type of the provided `format`, as …
+- `VUID-VkSamplerCustomBorderColorCreateInfoEXT-format-04014` (*yours*; explicit rule): If the `customBorderColorWithoutFormat` feature is not enabled then `format` must not be `VK_FORMAT_UNDEFINED`
+- `VUID-VkSamplerCustomBorderColorCreateInfoEXT-format-04015` (*yours*; explicit rule): If the sampler is used to sample an image view of `VK_FORMAT_B4G4R4A4_UNORM_PACK16`, `VK_FORMAT_B5G6R5_UNORM_PACK16`, or `VK_FORMAT_B5G5R5A1_UNORM_PACK16` format then `format` must not be …
+- `VUID-VkSamplerCustomBorderColorCreateInfoEXT-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-VkSamplerCustomBorderColorCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_CUSTOM_BORDER_COLOR_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_custom_border_color")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

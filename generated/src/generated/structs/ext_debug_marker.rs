@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDebugMarkerMarkerInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugMarkerMarkerInfoEXT.html). Settled by the wrappers:
+The rules of `VkDebugMarkerMarkerInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugMarkerMarkerInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugMarkerMarkerInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugMarkerMarkerInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDebugMarkerMarkerInfoEXT-pMarkerName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDebugMarkerMarkerInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_MARKER_MARKER_INFO_EXT`
+- `VUID-VkDebugMarkerMarkerInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDebugMarkerMarkerInfoEXT-pMarkerName-parameter` (*by the types*): `pMarkerName` must be a null-terminated UTF-8 string*/
 #[cfg(feature = "ext_debug_marker")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -50,17 +50,15 @@ impl<'a> DebugMarkerMarkerInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDebugMarkerObjectNameInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugMarkerObjectNameInfoEXT.html). Settled by the wrappers:
+The rules of `VkDebugMarkerObjectNameInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugMarkerObjectNameInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugMarkerObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugMarkerObjectNameInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDebugMarkerObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugMarkerObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkDebugMarkerObjectNameInfoEXT-objectType-01490` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `objectType` must not be `VK_DEBUG_REPORT_OBJECT_TYPE_UNKNOWN_EXT`
+- `VUID-VkDebugMarkerObjectNameInfoEXT-object-01491` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `object` must not be VK_NULL_HANDLE
+- `VUID-VkDebugMarkerObjectNameInfoEXT-object-01492` (*yours*; explicit rule): `object` must be a Vulkan object of the type associated with `objectType` as defined in `VkDebugReportObjectTypeEXT` and Vulkan Handle Relationship
+- `VUID-VkDebugMarkerObjectNameInfoEXT-objectType-parameter` (*checked*): `objectType` must be a valid VkDebugReportObjectTypeEXT value
+- `VUID-VkDebugMarkerObjectNameInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_MARKER_OBJECT_NAME_INFO_EXT`
+- `VUID-VkDebugMarkerObjectNameInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDebugMarkerObjectNameInfoEXT-pObjectName-parameter` (*by the types*): `pObjectName` must be a null-terminated UTF-8 string*/
 #[cfg(feature = "ext_debug_marker")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -108,18 +106,16 @@ impl<'a> DebugMarkerObjectNameInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDebugMarkerObjectTagInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugMarkerObjectTagInfoEXT.html). Settled by the wrappers:
+The rules of `VkDebugMarkerObjectTagInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugMarkerObjectTagInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugMarkerObjectTagInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugMarkerObjectTagInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDebugMarkerObjectTagInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugMarkerObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugMarkerObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkDebugMarkerObjectTagInfoEXT-objectType-01493` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `objectType` must not be `VK_DEBUG_REPORT_OBJECT_TYPE_UNKNOWN_EXT`
+- `VUID-VkDebugMarkerObjectTagInfoEXT-object-01494` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `object` must not be VK_NULL_HANDLE
+- `VUID-VkDebugMarkerObjectTagInfoEXT-object-01495` (*yours*; explicit rule): `object` must be a Vulkan object of the type associated with `objectType` as defined in `VkDebugReportObjectTypeEXT` and Vulkan Handle Relationship
+- `VUID-VkDebugMarkerObjectTagInfoEXT-objectType-parameter` (*checked*): `objectType` must be a valid VkDebugReportObjectTypeEXT value
+- `VUID-VkDebugMarkerObjectTagInfoEXT-tagSize-arraylength` (*checked*): `tagSize` must be greater than `0`
+- `VUID-VkDebugMarkerObjectTagInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_MARKER_OBJECT_TAG_INFO_EXT`
+- `VUID-VkDebugMarkerObjectTagInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDebugMarkerObjectTagInfoEXT-pTag-parameter` (*by the types*): `pTag` must be a valid pointer to an array of `tagSize` bytes*/
 #[cfg(feature = "ext_debug_marker")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

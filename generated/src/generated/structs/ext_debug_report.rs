@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDebugReportCallbackCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugReportCallbackCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkDebugReportCallbackCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugReportCallbackCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugReportCallbackCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugReportCallbackCreateInfoEXT-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugReportCallbackCreateInfoEXT-pfnCallback-parameter`: dynamic (checks the function pointer is set)*/
+- `VUID-VkDebugReportCallbackCreateInfoEXT-flags-parameter` (*checked*): `flags` must be a valid combination of VkDebugReportFlagBitsEXT values
+- `VUID-VkDebugReportCallbackCreateInfoEXT-pfnCallback-parameter` (*checked*): `pfnCallback` must be a valid PFN_vkDebugReportCallbackEXT value
+- `VUID-VkDebugReportCallbackCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_REPORT_CALLBACK_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_debug_report")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

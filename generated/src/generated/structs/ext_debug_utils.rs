@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDebugUtilsLabelEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsLabelEXT.html). Settled by the wrappers:
+The rules of `VkDebugUtilsLabelEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsLabelEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugUtilsLabelEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsLabelEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDebugUtilsLabelEXT-pLabelName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDebugUtilsLabelEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT`
+- `VUID-VkDebugUtilsLabelEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDebugUtilsLabelEXT-pLabelName-parameter` (*by the types*): `pLabelName` must be a null-terminated UTF-8 string*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -50,17 +50,17 @@ impl<'a> DebugUtilsLabelEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDebugUtilsMessengerCallbackDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCallbackDataEXT.html). Settled by the wrappers:
+The rules of `VkDebugUtilsMessengerCallbackDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCallbackDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pMessageIdName-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pMessage-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pQueueLabels-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pCmdBufLabels-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pObjects-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CALLBACK_DATA_EXT`
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkDeviceAddressBindingCallbackDataEXT
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pMessageIdName-parameter` (*by the types*): If `pMessageIdName` is not `NULL`, `pMessageIdName` must be a null-terminated UTF-8 string
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pMessage-parameter` (*by the types*): `pMessage` must be a null-terminated UTF-8 string
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pQueueLabels-parameter` (*by the types*): If `queueLabelCount` is not `0`, `pQueueLabels` must be a valid pointer to an array of `queueLabelCount` valid VkDebugUtilsLabelEXT structures
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pCmdBufLabels-parameter` (*by the types*): If `cmdBufLabelCount` is not `0`, `pCmdBufLabels` must be a valid pointer to an array of `cmdBufLabelCount` valid VkDebugUtilsLabelEXT structures
+- `VUID-VkDebugUtilsMessengerCallbackDataEXT-pObjects-parameter` (*by the types*): If `objectCount` is not `0`, `pObjects` must be a valid pointer to an array of `objectCount` valid VkDebugUtilsObjectNameInfoEXT structures*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -135,16 +135,16 @@ impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDebugUtilsMessengerCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkDebugUtilsMessengerCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsMessengerCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-01914`: static (the setter takes a Rust function pointer of the callback's type, valid for the whole program; a missing one is refused by the member's implicit check)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)*/
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-parameter` (*checked*): `messageSeverity` must be a valid combination of VkDebugUtilsMessageSeverityFlagBitsEXT values
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask` (*checked*): `messageSeverity` must not be `0`
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter` (*checked*): `messageType` must be a valid combination of VkDebugUtilsMessageTypeFlagBitsEXT values
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask` (*checked*): `messageType` must not be `0`
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter` (*checked*): `pfnUserCallback` must be a valid PFN_vkDebugUtilsMessengerCallbackEXT value
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-01914` (*by the types*): `pfnUserCallback` must be a valid PFN_vkDebugUtilsMessengerCallbackEXT
+- `VUID-VkDebugUtilsMessengerCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -202,13 +202,13 @@ for DebugUtilsMessengerCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDebugUtilsObjectNameInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectNameInfoEXT.html). Settled by the wrappers:
+The rules of `VkDebugUtilsObjectNameInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectNameInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590`: dynamic (checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone))
-- `VUID-VkDebugUtilsObjectNameInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589` (*checked*): If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02590` (*checked*): If `objectType` is not `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must be VK_NULL_HANDLE or a valid Vulkan handle of the type associated with `objectType` as defined in the `VkObjectType` and Vulkan …
+- `VUID-VkDebugUtilsObjectNameInfoEXT-objectType-parameter` (*checked*): `objectType` must be a valid VkObjectType value
+- `VUID-VkDebugUtilsObjectNameInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT`
+- `VUID-VkDebugUtilsObjectNameInfoEXT-pObjectName-parameter` (*by the types*): If `pObjectName` is not `NULL`, `pObjectName` must be a null-terminated UTF-8 string*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -247,16 +247,15 @@ for DebugUtilsObjectNameInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDebugUtilsObjectTagInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectTagInfoEXT.html). Settled by the wrappers:
+The rules of `VkDebugUtilsObjectTagInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDebugUtilsObjectTagInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910`: dynamic (checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone))
-- `VUID-VkDebugUtilsObjectTagInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-01908` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `objectType` must not be `VK_OBJECT_TYPE_UNKNOWN`
+- `VUID-VkDebugUtilsObjectTagInfoEXT-objectHandle-01910` (*checked*): `objectHandle` must be a valid Vulkan handle of the type associated with `objectType` as defined in the `VkObjectType` and Vulkan Handle Relationship table
+- `VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter` (*checked*): `objectType` must be a valid VkObjectType value
+- `VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength` (*checked*): `tagSize` must be greater than `0`
+- `VUID-VkDebugUtilsObjectTagInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_TAG_INFO_EXT`
+- `VUID-VkDebugUtilsObjectTagInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDebugUtilsObjectTagInfoEXT-pTag-parameter` (*by the types*): `pTag` must be a valid pointer to an array of `tagSize` bytes*/
 #[cfg(feature = "ext_debug_utils")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

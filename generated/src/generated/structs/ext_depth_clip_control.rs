@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDepthClipControlFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDepthClipControlFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDepthClipControlFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDepthClipControlFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDepthClipControlFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDepthClipControlFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_CONTROL_FEATURES_EXT`*/
 #[cfg(feature = "ext_depth_clip_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,11 +39,10 @@ for PhysicalDeviceDepthClipControlFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineViewportDepthClipControlCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportDepthClipControlCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineViewportDepthClipControlCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportDepthClipControlCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineViewportDepthClipControlCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineViewportDepthClipControlCreateInfoEXT-negativeOneToOne-06470` (*yours*; explicit rule): If `depthClipControl` is not enabled, `negativeOneToOne` must be `VK_FALSE`
+- `VUID-VkPipelineViewportDepthClipControlCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_DEPTH_CLIP_CONTROL_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_depth_clip_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDepthClipEnableFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDepthClipEnableFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDepthClipEnableFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDepthClipEnableFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDepthClipEnableFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDepthClipEnableFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_CLIP_ENABLE_FEATURES_EXT`*/
 #[cfg(feature = "ext_depth_clip_enable")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,10 +39,10 @@ for PhysicalDeviceDepthClipEnableFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineRasterizationDepthClipStateCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationDepthClipStateCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineRasterizationDepthClipStateCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationDepthClipStateCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineRasterizationDepthClipStateCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineRasterizationDepthClipStateCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkPipelineRasterizationDepthClipStateCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineRasterizationDepthClipStateCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_DEPTH_CLIP_STATE_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_depth_clip_enable")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -7,15 +7,17 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureCaptureDescriptorDataInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureCaptureDescriptorDataInfoEXT.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-08091` (*yours*; explicit rule): If `accelerationStructure` is not VK_NULL_HANDLE then `accelerationStructure` must have been created with `VK_ACCELERATION_STRUCTURE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in …
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-08092` (*yours*; explicit rule): If `accelerationStructureNV` is not VK_NULL_HANDLE then `accelerationStructureNV` must have been created with `VK_ACCELERATION_STRUCTURE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in …
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-08093` (*yours*; explicit rule): If `accelerationStructure` is not VK_NULL_HANDLE then `accelerationStructureNV` must be VK_NULL_HANDLE
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-08094` (*yours*; explicit rule): If `accelerationStructureNV` is not VK_NULL_HANDLE then `accelerationStructure` must be VK_NULL_HANDLE
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent` (*checked*): Both of `accelerationStructure`, and `accelerationStructureNV` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-parameter` (*by the types*): If `accelerationStructure` is not VK_NULL_HANDLE, `accelerationStructure` must be a valid VkAccelerationStructureKHR handle
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-parameter` (*by the types*): If `accelerationStructureNV` is not VK_NULL_HANDLE, `accelerationStructureNV` must be a valid VkAccelerationStructureNV handle*/
 #[cfg(
     any(
         all(feature = "ext_descriptor_buffer", feature = "khr_acceleration_structure"),
@@ -66,13 +68,12 @@ impl<'a> AccelerationStructureCaptureDescriptorDataInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkBufferCaptureDescriptorDataInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCaptureDescriptorDataInfoEXT.html). Settled by the wrappers:
+The rules of `VkBufferCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferCaptureDescriptorDataInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCaptureDescriptorDataInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferCaptureDescriptorDataInfoEXT-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBufferCaptureDescriptorDataInfoEXT-buffer-08075` (*yours*; explicit rule): `buffer` must have been created with `VK_BUFFER_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkBufferCreateInfo::`flags`
+- `VUID-VkBufferCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
+- `VUID-VkBufferCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkBufferCaptureDescriptorDataInfoEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -109,15 +110,15 @@ impl<'a> BufferCaptureDescriptorDataInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDescriptorAddressInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorAddressInfoEXT.html). Settled by the wrappers:
+The rules of `VkDescriptorAddressInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorAddressInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorAddressInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorAddressInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 4: explicit rule; the wrappers do not check it*/
+- `VUID-VkDescriptorAddressInfoEXT-address-08043` (*yours*; explicit rule): If the `nullDescriptor` feature is not enabled, `address` must not be zero
+- `VUID-VkDescriptorAddressInfoEXT-None-08044` (*yours*; explicit rule): If `address` is not zero, `address` must be a valid device address at an offset within a VkBuffer
+- `VUID-VkDescriptorAddressInfoEXT-range-08045` (*yours*; explicit rule): `range` must be less than or equal to the size of the buffer containing `address` minus the offset of `address` from the base address of the buffer
+- `VUID-VkDescriptorAddressInfoEXT-range-08046` (*yours*; explicit rule): `range` must not be `VK_WHOLE_SIZE`
+- `VUID-VkDescriptorAddressInfoEXT-format-parameter` (*yours*; enum or flags value): `format` must be a valid VkFormat value
+- `VUID-VkDescriptorAddressInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_ADDRESS_INFO_EXT`
+- `VUID-VkDescriptorAddressInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -154,15 +155,18 @@ impl<'a> DescriptorAddressInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDescriptorBufferBindingInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferBindingInfoEXT.html). Settled by the wrappers:
+The rules of `VkDescriptorBufferBindingInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferBindingInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorBufferBindingInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorBufferBindingInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkDescriptorBufferBindingInfoEXT-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkDescriptorBufferBindingInfoEXT-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDescriptorBufferBindingInfoEXT-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDescriptorBufferBindingInfoEXT-bufferlessPushDescriptors-08056` (*yours*; explicit rule): If `VkPhysicalDeviceDescriptorBufferPropertiesEXT::bufferlessPushDescriptors` is `VK_FALSE`, and `usage` contains VK_BUFFER_USAGE_PUSH_DESCRIPTORS_DESCRIPTOR_BUFFER_BIT_EXT, then the `pNext` chain …
+- `VUID-VkDescriptorBufferBindingInfoEXT-address-08057` (*yours*; explicit rule): `address` must be aligned to VkPhysicalDeviceDescriptorBufferPropertiesEXT::`descriptorBufferOffsetAlignment`
+- `VUID-VkDescriptorBufferBindingInfoEXT-usage-08122` (*yours*; explicit rule): If `usage` includes `VK_BUFFER_USAGE_SAMPLER_DESCRIPTOR_BUFFER_BIT_EXT`, `address` must be an address within a valid buffer that was created with `VK_BUFFER_USAGE_SAMPLER_DESCRIPTOR_BUFFER_BIT_EXT`
+- `VUID-VkDescriptorBufferBindingInfoEXT-usage-08123` (*yours*; explicit rule): If `usage` includes `VK_BUFFER_USAGE_RESOURCE_DESCRIPTOR_BUFFER_BIT_EXT`, `address` must be an address within a valid buffer that was created with `VK_BUFFER_USAGE_RESOURCE_DESCRIPTOR_BUFFER_BIT_EXT`
+- `VUID-VkDescriptorBufferBindingInfoEXT-usage-08124` (*yours*; explicit rule): If `usage` includes `VK_BUFFER_USAGE_PUSH_DESCRIPTORS_DESCRIPTOR_BUFFER_BIT_EXT`, `address` must be an address within a valid buffer that was created with …
+- `VUID-VkDescriptorBufferBindingInfoEXT-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkDescriptorBufferBindingInfoEXT-usage-parameter` (*checked*): `usage` must be a valid combination of VkBufferUsageFlagBits values
+- `VUID-VkDescriptorBufferBindingInfoEXT-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-VkDescriptorBufferBindingInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_BUFFER_BINDING_INFO_EXT`
+- `VUID-VkDescriptorBufferBindingInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkDescriptorBufferBindingPushDescriptorBufferHandleEXT*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -193,12 +197,11 @@ impl<'a> DescriptorBufferBindingInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDescriptorBufferBindingPushDescriptorBufferHandleEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferBindingPushDescriptorBufferHandleEXT.html). Settled by the wrappers:
+The rules of `VkDescriptorBufferBindingPushDescriptorBufferHandleEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferBindingPushDescriptorBufferHandleEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-bufferlessPushDescriptors-08059` (*yours*; explicit rule): `VkPhysicalDeviceDescriptorBufferPropertiesEXT::bufferlessPushDescriptors` must be `VK_FALSE`
+- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_BUFFER_BINDING_PUSH_DESCRIPTOR_BUFFER_HANDLE_EXT`
+- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -239,16 +242,32 @@ for DescriptorBufferBindingPushDescriptorBufferHandleEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDescriptorGetInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorGetInfoEXT.html). Settled by the wrappers:
+The rules of `VkDescriptorGetInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorGetInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorGetInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorGetInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorGetInfoEXT-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 21.
-
-- 9: `parameter` rules are not checked yet
-- 12: explicit rule; the wrappers do not check it*/
+- `VUID-VkDescriptorGetInfoEXT-type-08018` (*yours*; explicit rule): `type` must not be `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
+- `VUID-VkDescriptorGetInfoEXT-type-08019` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the `pCombinedImageSampler->sampler` member of `data` must be a VkSampler created on `device`
+- `VUID-VkDescriptorGetInfoEXT-type-08020` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the `pCombinedImageSampler->imageView` member of `data` must be a VkImageView created on `device`, or VK_NULL_HANDLE
+- `VUID-VkDescriptorGetInfoEXT-type-08021` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `pInputAttachmentImage->imageView` member of `data` must be a VkImageView created on `device`
+- `VUID-VkDescriptorGetInfoEXT-type-08022` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, and if `pSampledImage` is not `NULL`, the `pSampledImage->imageView` member of `data` must be a VkImageView created on `device`, or VK_NULL_HANDLE
+- `VUID-VkDescriptorGetInfoEXT-type-08023` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, and if `pStorageImage` is not `NULL`, the `pStorageImage->imageView` member of `data` must be a VkImageView created on `device`, or VK_NULL_HANDLE
+- `VUID-VkDescriptorGetInfoEXT-type-08024` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER`, `pUniformTexelBuffer` is not `NULL` and `pUniformTexelBuffer->address` is not zero, `pUniformTexelBuffer->address` must be an address within a …
+- `VUID-VkDescriptorGetInfoEXT-type-08025` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, `pStorageTexelBuffer` is not `NULL` and `pStorageTexelBuffer->address` is not zero, `pStorageTexelBuffer->address` must be an address within a …
+- `VUID-VkDescriptorGetInfoEXT-type-08026` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `pUniformBuffer` is not `NULL` and `pUniformBuffer->address` is not zero, `pUniformBuffer->address` must be an address within a VkBuffer created on …
+- `VUID-VkDescriptorGetInfoEXT-type-08027` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, `pStorageBuffer` is not `NULL` and `pStorageBuffer->address` is not zero, `pStorageBuffer->address` must be an address within a VkBuffer created on …
+- `VUID-VkDescriptorGetInfoEXT-pSampler-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_SAMPLER`, the `pSampler` member of `data` must be a valid pointer to a valid VkSampler handle
+- `VUID-VkDescriptorGetInfoEXT-pCombinedImageSampler-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the `pCombinedImageSampler` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pInputAttachmentImage-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `pInputAttachmentImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pSampledImage-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, and if `pSampledImage` is not `NULL`, the `pSampledImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pStorageImage-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, and if `pStorageImage` is not `NULL`, the `pStorageImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pUniformTexelBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER`, and if `pUniformTexelBuffer` is not `NULL`, the `pUniformTexelBuffer` member of `data` must be a valid pointer to a valid …
+- `VUID-VkDescriptorGetInfoEXT-pStorageTexelBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, and if `pStorageTexelBuffer` is not `NULL`, the `pStorageTexelBuffer` member of `data` must be a valid pointer to a valid …
+- `VUID-VkDescriptorGetInfoEXT-pUniformBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, and if `pUniformBuffer` is not `NULL`, the `pUniformBuffer` member of `data` must be a valid pointer to a valid VkDescriptorAddressInfoEXT structure
+- `VUID-VkDescriptorGetInfoEXT-pStorageBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, and if `pStorageBuffer` is not `NULL`, the `pStorageBuffer` member of `data` must be a valid pointer to a valid VkDescriptorAddressInfoEXT structure
+- `VUID-VkDescriptorGetInfoEXT-type-08028` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR` and `accelerationStructure` is not `0`, `accelerationStructure` must contain the address of a VkAccelerationStructureKHR created on …
+- `VUID-VkDescriptorGetInfoEXT-type-08029` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_NV` and `accelerationStructure` is not `0`, `accelerationStructure` must contain the handle of a VkAccelerationStructureNV created on `device`, …
+- `VUID-VkDescriptorGetInfoEXT-type-parameter` (*checked*): `type` must be a valid VkDescriptorType value
+- `VUID-VkDescriptorGetInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_GET_INFO_EXT`
+- `VUID-VkDescriptorGetInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -272,13 +291,12 @@ impl<'a> DescriptorGetInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkImageCaptureDescriptorDataInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCaptureDescriptorDataInfoEXT.html). Settled by the wrappers:
+The rules of `VkImageCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageCaptureDescriptorDataInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageCaptureDescriptorDataInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageCaptureDescriptorDataInfoEXT-image-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageCaptureDescriptorDataInfoEXT-image-08079` (*yours*; explicit rule): `image` must have been created with `VK_IMAGE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkImageCreateInfo::`flags`
+- `VUID-VkImageCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
+- `VUID-VkImageCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImageCaptureDescriptorDataInfoEXT-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -315,13 +333,12 @@ impl<'a> ImageCaptureDescriptorDataInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkImageViewCaptureDescriptorDataInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewCaptureDescriptorDataInfoEXT.html). Settled by the wrappers:
+The rules of `VkImageViewCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-imageView-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-imageView-08083` (*yours*; explicit rule): `imageView` must have been created with `VK_IMAGE_VIEW_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkImageViewCreateInfo::`flags`
+- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
+- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-imageView-parameter` (*by the types*): `imageView` must be a valid VkImageView handle*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -358,11 +375,10 @@ impl<'a> ImageViewCaptureDescriptorDataInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkOpaqueCaptureDescriptorDataCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpaqueCaptureDescriptorDataCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkOpaqueCaptureDescriptorDataCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpaqueCaptureDescriptorDataCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpaqueCaptureDescriptorDataCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not settable safely (a pointer whose length the registry gives as an expression)).*/
+- `VUID-VkOpaqueCaptureDescriptorDataCreateInfoEXT-opaqueCaptureDescriptorData-parameter` (*yours*; not settable safely): `opaqueCaptureDescriptorData` must be a pointer value
+- `VUID-VkOpaqueCaptureDescriptorDataCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPAQUE_CAPTURE_DESCRIPTOR_DATA_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -398,9 +414,9 @@ for OpaqueCaptureDescriptorDataCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDescriptorBufferDensityMapPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorBufferDensityMapPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDescriptorBufferDensityMapPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorBufferDensityMapPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDescriptorBufferDensityMapPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDescriptorBufferDensityMapPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DESCRIPTOR_BUFFER_DENSITY_MAP_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -419,9 +435,9 @@ for PhysicalDeviceDescriptorBufferDensityMapPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDescriptorBufferFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorBufferFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDescriptorBufferFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorBufferFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDescriptorBufferFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDescriptorBufferFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DESCRIPTOR_BUFFER_FEATURES_EXT`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -470,9 +486,9 @@ for PhysicalDeviceDescriptorBufferFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDescriptorBufferPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorBufferPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDescriptorBufferPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorBufferPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDescriptorBufferPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDescriptorBufferPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DESCRIPTOR_BUFFER_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -491,13 +507,12 @@ for PhysicalDeviceDescriptorBufferPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSamplerCaptureDescriptorDataInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCaptureDescriptorDataInfoEXT.html). Settled by the wrappers:
+The rules of `VkSamplerCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sampler-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sampler-08087` (*yours*; explicit rule): `sampler` must have been created with `VK_SAMPLER_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkSamplerCreateInfo::`flags`
+- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
+- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sampler-parameter` (*by the types*): `sampler` must be a valid VkSampler handle*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDeviceAddressBindingCallbackDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceAddressBindingCallbackDataEXT.html). Settled by the wrappers:
+The rules of `VkDeviceAddressBindingCallbackDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceAddressBindingCallbackDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceAddressBindingCallbackDataEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceAddressBindingCallbackDataEXT-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDeviceAddressBindingCallbackDataEXT-bindingType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceAddressBindingCallbackDataEXT-flags-parameter` (*checked*): `flags` must be a valid combination of VkDeviceAddressBindingFlagBitsEXT values
+- `VUID-VkDeviceAddressBindingCallbackDataEXT-bindingType-parameter` (*checked*): `bindingType` must be a valid VkDeviceAddressBindingTypeEXT value
+- `VUID-VkDeviceAddressBindingCallbackDataEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_ADDRESS_BINDING_CALLBACK_DATA_EXT`*/
 #[cfg(feature = "ext_device_address_binding_report")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -57,9 +57,9 @@ for DeviceAddressBindingCallbackDataEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceAddressBindingReportFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAddressBindingReportFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceAddressBindingReportFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAddressBindingReportFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceAddressBindingReportFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceAddressBindingReportFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ADDRESS_BINDING_REPORT_FEATURES_EXT`*/
 #[cfg(feature = "ext_device_address_binding_report")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

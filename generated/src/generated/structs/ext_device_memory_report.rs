@@ -6,13 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDeviceDeviceMemoryReportCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceDeviceMemoryReportCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkDeviceDeviceMemoryReportCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceDeviceMemoryReportCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pfnUserCallback-parameter`: dynamic (checks the function pointer is set)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (opaque user data handed back to a callback; Vulkan never reads through it).*/
+- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pUserData-parameter` (*yours*; opaque user data handed back to a callback): `pUserData` must be a pointer value
+- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pfnUserCallback-parameter` (*checked*): `pfnUserCallback` must be a valid PFN_vkDeviceMemoryReportCallbackEXT value
+- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_DEVICE_MEMORY_REPORT_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_device_memory_report")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -55,10 +54,10 @@ for DeviceDeviceMemoryReportCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDeviceMemoryReportCallbackDataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryReportCallbackDataEXT.html). Settled by the wrappers:
+The rules of `VkDeviceMemoryReportCallbackDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryReportCallbackDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceMemoryReportCallbackDataEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceMemoryReportCallbackDataEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkDeviceMemoryReportCallbackDataEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_MEMORY_REPORT_CALLBACK_DATA_EXT`
+- `VUID-VkDeviceMemoryReportCallbackDataEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_device_memory_report")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -74,9 +73,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDeviceMemoryReportFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDeviceMemoryReportFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDeviceMemoryReportFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDeviceMemoryReportFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDeviceMemoryReportFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDeviceMemoryReportFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEVICE_MEMORY_REPORT_FEATURES_EXT`*/
 #[cfg(feature = "ext_device_memory_report")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDirectFBSurfaceCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDirectFBSurfaceCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkDirectFBSurfaceCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDirectFBSurfaceCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDirectFBSurfaceCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDirectFBSurfaceCreateInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDirectFBSurfaceCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDirectFBSurfaceCreateInfoEXT-dfb-04117` (*yours*; explicit rule): `dfb` must point to a valid DirectFB `IDirectFB`
+- `VUID-VkDirectFBSurfaceCreateInfoEXT-surface-04118` (*yours*; explicit rule): `surface` must point to a valid DirectFB `IDirectFBSurface`
+- `VUID-VkDirectFBSurfaceCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDirectFBSurfaceCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DIRECTFB_SURFACE_CREATE_INFO_EXT`
+- `VUID-VkDirectFBSurfaceCreateInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_directfb_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

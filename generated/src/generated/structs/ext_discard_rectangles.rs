@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDiscardRectanglePropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDiscardRectanglePropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDiscardRectanglePropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDiscardRectanglePropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDiscardRectanglePropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDiscardRectanglePropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DISCARD_RECTANGLE_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_discard_rectangles")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -27,13 +27,12 @@ for PhysicalDeviceDiscardRectanglePropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineDiscardRectangleStateCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineDiscardRectangleStateCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineDiscardRectangleStateCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineDiscardRectangleStateCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-discardRectangleMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-discardRectangleCount-00582` (*yours*; explicit rule): `discardRectangleCount` must be less than or equal to `VkPhysicalDeviceDiscardRectanglePropertiesEXT::maxDiscardRectangles`
+- `VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-discardRectangleMode-parameter` (*checked*): `discardRectangleMode` must be a valid VkDiscardRectangleModeEXT value
+- `VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_DISCARD_RECTANGLE_STATE_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_discard_rectangles")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

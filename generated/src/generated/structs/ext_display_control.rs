@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDeviceEventInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceEventInfoEXT.html). Settled by the wrappers:
+The rules of `VkDeviceEventInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceEventInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceEventInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceEventInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceEventInfoEXT-deviceEvent-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceEventInfoEXT-deviceEvent-parameter` (*checked*): `deviceEvent` must be a valid VkDeviceEventTypeEXT value
+- `VUID-VkDeviceEventInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_EVENT_INFO_EXT`
+- `VUID-VkDeviceEventInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_display_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -34,11 +34,11 @@ impl<'a> DeviceEventInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDisplayEventInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayEventInfoEXT.html). Settled by the wrappers:
+The rules of `VkDisplayEventInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayEventInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayEventInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayEventInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDisplayEventInfoEXT-displayEvent-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDisplayEventInfoEXT-displayEvent-parameter` (*checked*): `displayEvent` must be a valid VkDisplayEventTypeEXT value
+- `VUID-VkDisplayEventInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_EVENT_INFO_EXT`
+- `VUID-VkDisplayEventInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_display_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -62,11 +62,11 @@ impl<'a> DisplayEventInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkDisplayPowerInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPowerInfoEXT.html). Settled by the wrappers:
+The rules of `VkDisplayPowerInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPowerInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayPowerInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayPowerInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDisplayPowerInfoEXT-powerState-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDisplayPowerInfoEXT-powerState-parameter` (*checked*): `powerState` must be a valid VkDisplayPowerStateEXT value
+- `VUID-VkDisplayPowerInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_POWER_INFO_EXT`
+- `VUID-VkDisplayPowerInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_display_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -90,12 +90,11 @@ impl<'a> DisplayPowerInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkSwapchainCounterCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainCounterCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkSwapchainCounterCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainCounterCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainCounterCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSwapchainCounterCreateInfoEXT-surfaceCounters-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSwapchainCounterCreateInfoEXT-surfaceCounters-01244` (*yours*; explicit rule): The bits in `surfaceCounters` must be supported by VkSwapchainCreateInfoKHR::`surface`, as reported by vkGetPhysicalDeviceSurfaceCapabilities2EXT
+- `VUID-VkSwapchainCounterCreateInfoEXT-surfaceCounters-parameter` (*checked*): `surfaceCounters` must be a valid combination of VkSurfaceCounterFlagBitsEXT values
+- `VUID-VkSwapchainCounterCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_COUNTER_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_display_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkSurfaceCapabilities2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilities2EXT.html). Settled by the wrappers:
+The rules of `VkSurfaceCapabilities2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilities2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceCapabilities2EXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSurfaceCapabilities2EXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSurfaceCapabilities2EXT-supportedSurfaceCounters-01246` (*yours*; explicit rule): `supportedSurfaceCounters` must not include `VK_SURFACE_COUNTER_VBLANK_BIT_EXT` unless the surface queried is a display surface
+- `VUID-VkSurfaceCapabilities2EXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_CAPABILITIES_2_EXT`
+- `VUID-VkSurfaceCapabilities2EXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_display_surface_counter")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

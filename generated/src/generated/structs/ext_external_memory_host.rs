@@ -6,12 +6,15 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImportMemoryHostPointerInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryHostPointerInfoEXT.html). Settled by the wrappers:
+The rules of `VkImportMemoryHostPointerInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryHostPointerInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMemoryHostPointerInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportMemoryHostPointerInfoEXT-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportMemoryHostPointerInfoEXT-handleType-01747` (*yours*; explicit rule): If `handleType` is not `0`, it must be supported for import, as reported in VkExternalMemoryProperties
+- `VUID-VkImportMemoryHostPointerInfoEXT-handleType-01748` (*yours*; explicit rule): If `handleType` is not `0`, it must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT` or `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_MAPPED_FOREIGN_MEMORY_BIT_EXT`
+- `VUID-VkImportMemoryHostPointerInfoEXT-pHostPointer-01749` (*yours*; explicit rule): `pHostPointer` must be a pointer aligned to an integer multiple of `VkPhysicalDeviceExternalMemoryHostPropertiesEXT::minImportedHostPointerAlignment`
+- `VUID-VkImportMemoryHostPointerInfoEXT-handleType-01750` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_ALLOCATION_BIT_EXT`, `pHostPointer` must be a pointer to `allocationSize` number of bytes of host memory, where `allocationSize` is the member …
+- `VUID-VkImportMemoryHostPointerInfoEXT-handleType-01751` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_MEMORY_HANDLE_TYPE_HOST_MAPPED_FOREIGN_MEMORY_BIT_EXT`, `pHostPointer` must be a pointer to `allocationSize` number of bytes of host mapped foreign memory, where …
+- `VUID-VkImportMemoryHostPointerInfoEXT-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkImportMemoryHostPointerInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_HOST_POINTER_INFO_EXT`*/
 #[cfg(feature = "ext_external_memory_host")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -38,10 +41,10 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ImportMemoryHostPointerInfoE
 
 # Valid usage
 
-The rules are on [`VkMemoryHostPointerPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryHostPointerPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkMemoryHostPointerPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryHostPointerPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryHostPointerPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryHostPointerPropertiesEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkMemoryHostPointerPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_HOST_POINTER_PROPERTIES_EXT`
+- `VUID-VkMemoryHostPointerPropertiesEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_external_memory_host")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -57,9 +60,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceExternalMemoryHostPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalMemoryHostPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceExternalMemoryHostPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalMemoryHostPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceExternalMemoryHostPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceExternalMemoryHostPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_HOST_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_external_memory_host")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

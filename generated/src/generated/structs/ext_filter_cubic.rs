@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkFilterCubicImageViewImageFormatPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFilterCubicImageViewImageFormatPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkFilterCubicImageViewImageFormatPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFilterCubicImageViewImageFormatPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFilterCubicImageViewImageFormatPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkFilterCubicImageViewImageFormatPropertiesEXT-pNext-02627` (*yours*; explicit rule): If the `pNext` chain of the VkImageFormatProperties2 structure includes a VkFilterCubicImageViewImageFormatPropertiesEXT structure, the `pNext` chain of the VkPhysicalDeviceImageFormatInfo2 structure …
+- `VUID-VkFilterCubicImageViewImageFormatPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FILTER_CUBIC_IMAGE_VIEW_IMAGE_FORMAT_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_filter_cubic")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -29,10 +28,10 @@ for FilterCubicImageViewImageFormatPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImageViewImageFormatInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageViewImageFormatInfoEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImageViewImageFormatInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageViewImageFormatInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImageViewImageFormatInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceImageViewImageFormatInfoEXT-imageViewType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceImageViewImageFormatInfoEXT-imageViewType-parameter` (*checked*): `imageViewType` must be a valid VkImageViewType value
+- `VUID-VkPhysicalDeviceImageViewImageFormatInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGE_VIEW_IMAGE_FORMAT_INFO_EXT`*/
 #[cfg(feature = "ext_filter_cubic")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -7,9 +7,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkSurfaceCapabilitiesFullScreenExclusiveEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilitiesFullScreenExclusiveEXT.html). Settled by the wrappers:
+The rules of `VkSurfaceCapabilitiesFullScreenExclusiveEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilitiesFullScreenExclusiveEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceCapabilitiesFullScreenExclusiveEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkSurfaceCapabilitiesFullScreenExclusiveEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_CAPABILITIES_FULL_SCREEN_EXCLUSIVE_EXT`*/
 #[cfg(feature = "ext_full_screen_exclusive")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -38,10 +38,10 @@ for SurfaceCapabilitiesFullScreenExclusiveEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSurfaceFullScreenExclusiveInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceFullScreenExclusiveInfoEXT.html). Settled by the wrappers:
+The rules of `VkSurfaceFullScreenExclusiveInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceFullScreenExclusiveInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceFullScreenExclusiveInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSurfaceFullScreenExclusiveInfoEXT-fullScreenExclusive-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkSurfaceFullScreenExclusiveInfoEXT-fullScreenExclusive-parameter` (*checked*): `fullScreenExclusive` must be a valid VkFullScreenExclusiveEXT value
+- `VUID-VkSurfaceFullScreenExclusiveInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_FULL_SCREEN_EXCLUSIVE_INFO_EXT`*/
 #[cfg(feature = "ext_full_screen_exclusive")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -74,11 +74,10 @@ for SurfaceFullScreenExclusiveInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSurfaceFullScreenExclusiveWin32InfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceFullScreenExclusiveWin32InfoEXT.html). Settled by the wrappers:
+The rules of `VkSurfaceFullScreenExclusiveWin32InfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceFullScreenExclusiveWin32InfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceFullScreenExclusiveWin32InfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSurfaceFullScreenExclusiveWin32InfoEXT-hmonitor-02673` (*yours*; explicit rule): `hmonitor` must be a valid `HMONITOR`
+- `VUID-VkSurfaceFullScreenExclusiveWin32InfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_FULL_SCREEN_EXCLUSIVE_WIN32_INFO_EXT`*/
 #[cfg(all(feature = "ext_full_screen_exclusive", feature = "khr_win32_surface"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDeviceQueueGlobalPriorityCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueGlobalPriorityCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkDeviceQueueGlobalPriorityCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueGlobalPriorityCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceQueueGlobalPriorityCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceQueueGlobalPriorityCreateInfoKHR-globalPriority-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceQueueGlobalPriorityCreateInfoKHR-globalPriority-parameter` (*checked*): `globalPriority` must be a valid VkQueueGlobalPriorityKHR value
+- `VUID-VkDeviceQueueGlobalPriorityCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_QUEUE_GLOBAL_PRIORITY_CREATE_INFO_KHR`*/
 #[cfg(any(feature = "ext_global_priority", feature = "khr_global_priority"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceGlobalPriorityQueryFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGlobalPriorityQueryFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceGlobalPriorityQueryFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGlobalPriorityQueryFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceGlobalPriorityQueryFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceGlobalPriorityQueryFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_GLOBAL_PRIORITY_QUERY_FEATURES_KHR`*/
 #[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,11 +39,10 @@ for PhysicalDeviceGlobalPriorityQueryFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkQueueFamilyGlobalPriorityPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyGlobalPriorityPropertiesKHR.html). Settled by the wrappers:
+The rules of `VkQueueFamilyGlobalPriorityPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyGlobalPriorityPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueueFamilyGlobalPriorityPropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (enum or flags value; ash types accept any raw value, not checked).*/
+- `VUID-VkQueueFamilyGlobalPriorityPropertiesKHR-priorities-parameter` (*yours*; enum or flags value): Any given element of `priorities` must be a valid VkQueueGlobalPriorityKHR value
+- `VUID-VkQueueFamilyGlobalPriorityPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_GLOBAL_PRIORITY_PROPERTIES_KHR`*/
 #[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkGraphicsPipelineLibraryCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsPipelineLibraryCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkGraphicsPipelineLibraryCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsPipelineLibraryCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGraphicsPipelineLibraryCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGraphicsPipelineLibraryCreateInfoEXT-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkGraphicsPipelineLibraryCreateInfoEXT-flags-requiredbitmask`: dynamic (checks the flags are not 0)*/
+- `VUID-VkGraphicsPipelineLibraryCreateInfoEXT-flags-parameter` (*checked*): `flags` must be a valid combination of VkGraphicsPipelineLibraryFlagBitsEXT values
+- `VUID-VkGraphicsPipelineLibraryCreateInfoEXT-flags-requiredbitmask` (*checked*): `flags` must not be `0`
+- `VUID-VkGraphicsPipelineLibraryCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_LIBRARY_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_graphics_pipeline_library")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -38,9 +38,9 @@ for GraphicsPipelineLibraryCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceGraphicsPipelineLibraryFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGraphicsPipelineLibraryFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceGraphicsPipelineLibraryFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGraphicsPipelineLibraryFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceGraphicsPipelineLibraryFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceGraphicsPipelineLibraryFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_GRAPHICS_PIPELINE_LIBRARY_FEATURES_EXT`*/
 #[cfg(feature = "ext_graphics_pipeline_library")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -71,9 +71,9 @@ for PhysicalDeviceGraphicsPipelineLibraryFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceGraphicsPipelineLibraryPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGraphicsPipelineLibraryPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceGraphicsPipelineLibraryPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGraphicsPipelineLibraryPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceGraphicsPipelineLibraryPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceGraphicsPipelineLibraryPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_GRAPHICS_PIPELINE_LIBRARY_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_graphics_pipeline_library")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

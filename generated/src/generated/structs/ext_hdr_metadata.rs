@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkHdrMetadataEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkHdrMetadataEXT.html). Settled by the wrappers:
+The rules of `VkHdrMetadataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkHdrMetadataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkHdrMetadataEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkHdrMetadataEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkHdrMetadataEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_HDR_METADATA_EXT`
+- `VUID-VkHdrMetadataEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_hdr_metadata")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

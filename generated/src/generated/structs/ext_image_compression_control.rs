@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImageCompressionControlEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCompressionControlEXT.html). Settled by the wrappers:
+The rules of `VkImageCompressionControlEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCompressionControlEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageCompressionControlEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageCompressionControlEXT-flags-06747` (*yours*; explicit rule): `flags` must be one of `VK_IMAGE_COMPRESSION_DEFAULT_EXT`, `VK_IMAGE_COMPRESSION_FIXED_RATE_DEFAULT_EXT`, `VK_IMAGE_COMPRESSION_FIXED_RATE_EXPLICIT_EXT`, or `VK_IMAGE_COMPRESSION_DISABLED_EXT`
+- `VUID-VkImageCompressionControlEXT-flags-06748` (*yours*; explicit rule): If `flags` includes `VK_IMAGE_COMPRESSION_FIXED_RATE_EXPLICIT_EXT`, `pFixedRateFlags` must not be `NULL`
+- `VUID-VkImageCompressionControlEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_COMPRESSION_CONTROL_EXT`*/
 #[cfg(feature = "ext_image_compression_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -43,9 +43,9 @@ for ImageCompressionControlEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageCompressionPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCompressionPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkImageCompressionPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCompressionPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageCompressionPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkImageCompressionPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_COMPRESSION_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_image_compression_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -71,11 +71,11 @@ for ImageCompressionPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageSubresource2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSubresource2EXT.html). Settled by the wrappers:
+The rules of `VkImageSubresource2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSubresource2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageSubresource2EXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageSubresource2EXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageSubresource2EXT-imageSubresource-parameter`: dynamic (checks the struct's own rules)*/
+- `VUID-VkImageSubresource2EXT-imageSubresource-parameter` (*checked*): `imageSubresource` must be a valid VkImageSubresource structure
+- `VUID-VkImageSubresource2EXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_SUBRESOURCE_2_EXT`
+- `VUID-VkImageSubresource2EXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_image_compression_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -100,9 +100,9 @@ impl<'a> ImageSubresource2EXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImageCompressionControlFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageCompressionControlFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImageCompressionControlFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageCompressionControlFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImageCompressionControlFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceImageCompressionControlFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGE_COMPRESSION_CONTROL_FEATURES_EXT`*/
 #[cfg(feature = "ext_image_compression_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -133,11 +133,11 @@ for PhysicalDeviceImageCompressionControlFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSubresourceLayout2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubresourceLayout2EXT.html). Settled by the wrappers:
+The rules of `VkSubresourceLayout2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubresourceLayout2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubresourceLayout2EXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubresourceLayout2EXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSubresourceLayout2EXT-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkSubresourceLayout2EXT-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSubresourceLayout2EXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBRESOURCE_LAYOUT_2_EXT`
+- `VUID-VkSubresourceLayout2EXT-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkImageCompressionPropertiesEXT*/
 #[cfg(feature = "ext_image_compression_control")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -7,9 +7,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDrmFormatModifierPropertiesList2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDrmFormatModifierPropertiesList2EXT.html). Settled by the wrappers:
+The rules of `VkDrmFormatModifierPropertiesList2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDrmFormatModifierPropertiesList2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDrmFormatModifierPropertiesList2EXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkDrmFormatModifierPropertiesList2EXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DRM_FORMAT_MODIFIER_PROPERTIES_LIST_2_EXT`*/
 #[cfg(
     all(feature = "ext_image_drm_format_modifier", feature = "khr_format_feature_flags2")
 )]
@@ -33,9 +33,9 @@ for DrmFormatModifierPropertiesList2EXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDrmFormatModifierPropertiesListEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDrmFormatModifierPropertiesListEXT.html). Settled by the wrappers:
+The rules of `VkDrmFormatModifierPropertiesListEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDrmFormatModifierPropertiesListEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDrmFormatModifierPropertiesListEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkDrmFormatModifierPropertiesListEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DRM_FORMAT_MODIFIER_PROPERTIES_LIST_EXT`*/
 #[cfg(feature = "ext_image_drm_format_modifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -54,12 +54,15 @@ for DrmFormatModifierPropertiesListEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageDrmFormatModifierExplicitCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageDrmFormatModifierExplicitCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkImageDrmFormatModifierExplicitCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageDrmFormatModifierExplicitCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-pPlaneLayouts-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-drmFormatModifier-02264` (*yours*; explicit rule): `drmFormatModifier` must be compatible with the parameters in VkImageCreateInfo and its `pNext` chain, as determined by querying VkPhysicalDeviceImageFormatInfo2 extended with …
+- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-drmFormatModifierPlaneCount-02265` (*yours*; explicit rule): `drmFormatModifierPlaneCount` must be equal to the VkDrmFormatModifierPropertiesEXT::`drmFormatModifierPlaneCount` associated with VkImageCreateInfo::`format` and `drmFormatModifier`, as found by …
+- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-size-02267` (*yours*; explicit rule): For each element of `pPlaneLayouts`, `size` must be 0
+- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-arrayPitch-02268` (*yours*; explicit rule): For each element of `pPlaneLayouts`, `arrayPitch` must be 0 if VkImageCreateInfo::`arrayLayers` is 1
+- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-depthPitch-02269` (*yours*; explicit rule): For each element of `pPlaneLayouts`, `depthPitch` must be 0 if VkImageCreateInfo::`extent.depth` is 1
+- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_DRM_FORMAT_MODIFIER_EXPLICIT_CREATE_INFO_EXT`
+- `VUID-VkImageDrmFormatModifierExplicitCreateInfoEXT-pPlaneLayouts-parameter` (*by the types*): If `drmFormatModifierPlaneCount` is not `0`, `pPlaneLayouts` must be a valid pointer to an array of `drmFormatModifierPlaneCount` VkSubresourceLayout structures*/
 #[cfg(feature = "ext_image_drm_format_modifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -94,13 +97,12 @@ for ImageDrmFormatModifierExplicitCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageDrmFormatModifierListCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageDrmFormatModifierListCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkImageDrmFormatModifierListCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageDrmFormatModifierListCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageDrmFormatModifierListCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageDrmFormatModifierListCreateInfoEXT-pDrmFormatModifiers-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkImageDrmFormatModifierListCreateInfoEXT-drmFormatModifierCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageDrmFormatModifierListCreateInfoEXT-pDrmFormatModifiers-02263` (*yours*; explicit rule): Each modifier in `pDrmFormatModifiers` must be compatible with the parameters in VkImageCreateInfo and its `pNext` chain, as determined by querying VkPhysicalDeviceImageFormatInfo2 extended with …
+- `VUID-VkImageDrmFormatModifierListCreateInfoEXT-drmFormatModifierCount-arraylength` (*checked*): `drmFormatModifierCount` must be greater than `0`
+- `VUID-VkImageDrmFormatModifierListCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_DRM_FORMAT_MODIFIER_LIST_CREATE_INFO_EXT`
+- `VUID-VkImageDrmFormatModifierListCreateInfoEXT-pDrmFormatModifiers-parameter` (*by the types*): `pDrmFormatModifiers` must be a valid pointer to an array of `drmFormatModifierCount` `uint64_t` values*/
 #[cfg(feature = "ext_image_drm_format_modifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -129,10 +131,10 @@ for ImageDrmFormatModifierListCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageDrmFormatModifierPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageDrmFormatModifierPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkImageDrmFormatModifierPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageDrmFormatModifierPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageDrmFormatModifierPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageDrmFormatModifierPropertiesEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkImageDrmFormatModifierPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_DRM_FORMAT_MODIFIER_PROPERTIES_EXT`
+- `VUID-VkImageDrmFormatModifierPropertiesEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_image_drm_format_modifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -148,13 +150,13 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImageDrmFormatModifierInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageDrmFormatModifierInfoEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImageDrmFormatModifierInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageDrmFormatModifierInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sharingMode-02314`: static (the setter takes a slice and stores its length in the count member)
-- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sharingMode-02315` (*yours*; explicit rule): If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, then `queueFamilyIndexCount` must be greater than `1`
+- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sharingMode-02316` (*yours*; explicit rule): If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than the `pQueueFamilyPropertyCount` returned by …
+- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sharingMode-parameter` (*checked*): `sharingMode` must be a valid VkSharingMode value
+- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sharingMode-02314` (*by the types*): If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, then `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkPhysicalDeviceImageDrmFormatModifierInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGE_DRM_FORMAT_MODIFIER_INFO_EXT`*/
 #[cfg(feature = "ext_image_drm_format_modifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

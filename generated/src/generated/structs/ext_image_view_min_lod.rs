@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImageViewMinLodCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewMinLodCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkImageViewMinLodCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewMinLodCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageViewMinLodCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageViewMinLodCreateInfoEXT-minLod-06455` (*yours*; explicit rule): If the `minLod` feature is not enabled, `minLod` must be `0.0`
+- `VUID-VkImageViewMinLodCreateInfoEXT-minLod-06456` (*yours*; explicit rule): `minLod` must be less or equal to the index of the last mipmap level accessible to the view
+- `VUID-VkImageViewMinLodCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_MIN_LOD_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_image_view_min_lod")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -37,9 +37,9 @@ unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for ImageViewMinLodCreateInfoEX
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImageViewMinLodFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageViewMinLodFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImageViewMinLodFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageViewMinLodFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImageViewMinLodFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceImageViewMinLodFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGE_VIEW_MIN_LOD_FEATURES_EXT`*/
 #[cfg(feature = "ext_image_view_min_lod")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

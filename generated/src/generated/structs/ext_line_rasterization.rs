@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceLineRasterizationFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceLineRasterizationFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceLineRasterizationFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceLineRasterizationFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceLineRasterizationFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceLineRasterizationFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT`*/
 #[cfg(feature = "ext_line_rasterization")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -69,9 +69,9 @@ for PhysicalDeviceLineRasterizationFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceLineRasterizationPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceLineRasterizationPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceLineRasterizationPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceLineRasterizationPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceLineRasterizationPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceLineRasterizationPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_line_rasterization")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -90,12 +90,17 @@ for PhysicalDeviceLineRasterizationPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineRasterizationLineStateCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationLineStateCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineRasterizationLineStateCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationLineStateCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-lineRasterizationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-lineRasterizationMode-02768` (*yours*; explicit rule): If `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT`, then the `rectangularLines` feature must be enabled
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-lineRasterizationMode-02769` (*yours*; explicit rule): If `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT`, then the `bresenhamLines` feature must be enabled
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-lineRasterizationMode-02770` (*yours*; explicit rule): If `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_RECTANGULAR_SMOOTH_EXT`, then the `smoothLines` feature must be enabled
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-stippledLineEnable-02771` (*yours*; explicit rule): If `stippledLineEnable` is `VK_TRUE` and `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT`, then the `stippledRectangularLines` feature must be enabled
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-stippledLineEnable-02772` (*yours*; explicit rule): If `stippledLineEnable` is `VK_TRUE` and `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT`, then the `stippledBresenhamLines` feature must be enabled
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-stippledLineEnable-02773` (*yours*; explicit rule): If `stippledLineEnable` is `VK_TRUE` and `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_RECTANGULAR_SMOOTH_EXT`, then the `stippledSmoothLines` feature must be enabled
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-stippledLineEnable-02774` (*yours*; explicit rule): If `stippledLineEnable` is `VK_TRUE` and `lineRasterizationMode` is `VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT`, then the `stippledRectangularLines` feature must be enabled and …
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-lineRasterizationMode-parameter` (*checked*): `lineRasterizationMode` must be a valid VkLineRasterizationModeEXT value
+- `VUID-VkPipelineRasterizationLineStateCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_line_rasterization")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

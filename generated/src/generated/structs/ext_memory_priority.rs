@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkMemoryPriorityAllocateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryPriorityAllocateInfoEXT.html). Settled by the wrappers:
+The rules of `VkMemoryPriorityAllocateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryPriorityAllocateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryPriorityAllocateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no oracle case breaks it yet).*/
+- `VUID-VkMemoryPriorityAllocateInfoEXT-priority-02602` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `priority` must be between `0` and `1`, inclusive
+- `VUID-VkMemoryPriorityAllocateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_PRIORITY_ALLOCATE_INFO_EXT`*/
 #[cfg(feature = "ext_memory_priority")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -37,9 +36,9 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryPriorityAllocateInfoEX
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMemoryPriorityFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMemoryPriorityFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMemoryPriorityFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMemoryPriorityFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMemoryPriorityFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceMemoryPriorityFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PRIORITY_FEATURES_EXT`*/
 #[cfg(feature = "ext_memory_priority")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkExportMetalBufferInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalBufferInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalBufferInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalBufferInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalBufferInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMetalBufferInfoEXT-memory-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkExportMetalBufferInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_BUFFER_INFO_EXT`
+- `VUID-VkExportMetalBufferInfoEXT-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -54,10 +54,10 @@ unsafe impl<'a> Extends<ExportMetalObjectsInfoEXT<'a>> for ExportMetalBufferInfo
 
 # Valid usage
 
-The rules are on [`VkExportMetalCommandQueueInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalCommandQueueInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalCommandQueueInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalCommandQueueInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalCommandQueueInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMetalCommandQueueInfoEXT-queue-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkExportMetalCommandQueueInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_COMMAND_QUEUE_INFO_EXT`
+- `VUID-VkExportMetalCommandQueueInfoEXT-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -103,9 +103,9 @@ for ExportMetalCommandQueueInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkExportMetalDeviceInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalDeviceInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalDeviceInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalDeviceInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalDeviceInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkExportMetalDeviceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_DEVICE_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -132,10 +132,10 @@ unsafe impl<'a> Extends<ExportMetalObjectsInfoEXT<'a>> for ExportMetalDeviceInfo
 
 # Valid usage
 
-The rules are on [`VkExportMetalIOSurfaceInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalIOSurfaceInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalIOSurfaceInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalIOSurfaceInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalIOSurfaceInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMetalIOSurfaceInfoEXT-image-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkExportMetalIOSurfaceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_IO_SURFACE_INFO_EXT`
+- `VUID-VkExportMetalIOSurfaceInfoEXT-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -181,10 +181,10 @@ for ExportMetalIOSurfaceInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkExportMetalObjectCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalObjectCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalObjectCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalObjectCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalObjectCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMetalObjectCreateInfoEXT-exportObjectType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportMetalObjectCreateInfoEXT-exportObjectType-parameter` (*checked*): If `exportObjectType` is not `0`, `exportObjectType` must be a valid VkExportMetalObjectTypeFlagBitsEXT value
+- `VUID-VkExportMetalObjectCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_OBJECT_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -227,13 +227,27 @@ unsafe impl<'a> Extends<EventCreateInfo<'a>> for ExportMetalObjectCreateInfoEXT<
 
 # Valid usage
 
-The rules are on [`VkExportMetalObjectsInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalObjectsInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalObjectsInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalObjectsInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalObjectsInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMetalObjectsInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkExportMetalObjectsInfoEXT-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06791` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalDeviceInfoEXT structure, the VkInstance must have been created with `VK_EXPORT_METAL_OBJECT_TYPE_METAL_DEVICE_BIT_EXT` in the `exportObjectType` member of …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06792` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalCommandQueueInfoEXT structure, the VkInstance must have been created with `VK_EXPORT_METAL_OBJECT_TYPE_METAL_COMMAND_QUEUE_BIT_EXT` in the …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06793` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalBufferInfoEXT structure, the VkDeviceMemory in its `memory` member must have been allocated with `VK_EXPORT_METAL_OBJECT_TYPE_METAL_BUFFER_BIT_EXT` in the …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06794` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, exactly one of its `image`, `imageView`, or `bufferView` members must not be VK_NULL_HANDLE
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06795` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and its `image` member is not VK_NULL_HANDLE, the VkImage in its `image` member must have been created with …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06796` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and its `imageView` member is not VK_NULL_HANDLE, the VkImageView in its `imageView` member must have been created with …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06797` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and its `bufferView` member is not VK_NULL_HANDLE, the VkBufferView in its `bufferView` member must have been created with …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06798` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and if either its `image` or `imageView` member is not VK_NULL_HANDLE, then `plane` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06799` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and if the VkImage in its `image` member does not have a multi-planar format, then its `plane` member must be …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06800` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and if the VkImage in its `image` member has a multi-planar format with only two planes, then its `plane` member must not be …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06801` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and if the VkImageView in its `imageView` member does not have a multi-planar format, then its `plane` member must be …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06802` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalTextureInfoEXT structure, and if the VkImageView in its `imageView` member has a multi-planar format with only two planes, then its `plane` member must not …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06803` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalIOSurfaceInfoEXT structure, the VkImage in its `image` member must have been created with `VK_EXPORT_METAL_OBJECT_TYPE_METAL_IOSURFACE_BIT_EXT` in the …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06804` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalSharedEventInfoEXT structure, exactly one of its `semaphore` or `event` members must not be VK_NULL_HANDLE
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06805` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalSharedEventInfoEXT structure, and its `semaphore` member is not VK_NULL_HANDLE, the VkSemaphore in its `semaphore` member must have been created with …
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-06806` (*yours*; explicit rule): If the `pNext` chain includes a VkExportMetalSharedEventInfoEXT structure, and its `event` member is not VK_NULL_HANDLE, the VkEvent in its `event` member must have been created with …
+- `VUID-VkExportMetalObjectsInfoEXT-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique, with the exception of structures of type VkExportMetalBufferInfoEXT, VkExportMetalCommandQueueInfoEXT, …
+- `VUID-VkExportMetalObjectsInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_OBJECTS_INFO_EXT`
+- `VUID-VkExportMetalObjectsInfoEXT-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkExportMetalBufferInfoEXT, VkExportMetalCommandQueueInfoEXT, …*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -248,12 +262,12 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkExportMetalSharedEventInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalSharedEventInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalSharedEventInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalSharedEventInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalSharedEventInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMetalSharedEventInfoEXT-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkExportMetalSharedEventInfoEXT-event-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkExportMetalSharedEventInfoEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
+- `VUID-VkExportMetalSharedEventInfoEXT-commonparent` (*checked*): Both of `event`, and `semaphore` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkExportMetalSharedEventInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_SHARED_EVENT_INFO_EXT`
+- `VUID-VkExportMetalSharedEventInfoEXT-semaphore-parameter` (*by the types*): If `semaphore` is not VK_NULL_HANDLE, `semaphore` must be a valid VkSemaphore handle
+- `VUID-VkExportMetalSharedEventInfoEXT-event-parameter` (*by the types*): If `event` is not VK_NULL_HANDLE, `event` must be a valid VkEvent handle*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -294,14 +308,14 @@ for ExportMetalSharedEventInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkExportMetalTextureInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalTextureInfoEXT.html). Settled by the wrappers:
+The rules of `VkExportMetalTextureInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalTextureInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalTextureInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMetalTextureInfoEXT-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkExportMetalTextureInfoEXT-imageView-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkExportMetalTextureInfoEXT-bufferView-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkExportMetalTextureInfoEXT-plane-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkExportMetalTextureInfoEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)*/
+- `VUID-VkExportMetalTextureInfoEXT-plane-parameter` (*checked*): `plane` must be a valid VkImageAspectFlagBits value
+- `VUID-VkExportMetalTextureInfoEXT-commonparent` (*checked*): Each of `bufferView`, `image`, and `imageView` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkExportMetalTextureInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_TEXTURE_INFO_EXT`
+- `VUID-VkExportMetalTextureInfoEXT-image-parameter` (*by the types*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
+- `VUID-VkExportMetalTextureInfoEXT-imageView-parameter` (*by the types*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
+- `VUID-VkExportMetalTextureInfoEXT-bufferView-parameter` (*by the types*): If `bufferView` is not VK_NULL_HANDLE, `bufferView` must be a valid VkBufferView handle*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -353,9 +367,9 @@ for ExportMetalTextureInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImportMetalBufferInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalBufferInfoEXT.html). Settled by the wrappers:
+The rules of `VkImportMetalBufferInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalBufferInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMetalBufferInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkImportMetalBufferInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_METAL_BUFFER_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -381,9 +395,9 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ImportMetalBufferInfoEXT<'a>
 
 # Valid usage
 
-The rules are on [`VkImportMetalIOSurfaceInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalIOSurfaceInfoEXT.html). Settled by the wrappers:
+The rules of `VkImportMetalIOSurfaceInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalIOSurfaceInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMetalIOSurfaceInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkImportMetalIOSurfaceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_METAL_IO_SURFACE_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -409,9 +423,9 @@ unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ImportMetalIOSurfaceInfoEXT<'a>
 
 # Valid usage
 
-The rules are on [`VkImportMetalSharedEventInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalSharedEventInfoEXT.html). Settled by the wrappers:
+The rules of `VkImportMetalSharedEventInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalSharedEventInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMetalSharedEventInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkImportMetalSharedEventInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_METAL_SHARED_EVENT_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -440,10 +454,10 @@ unsafe impl<'a> Extends<EventCreateInfo<'a>> for ImportMetalSharedEventInfoEXT<'
 
 # Valid usage
 
-The rules are on [`VkImportMetalTextureInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalTextureInfoEXT.html). Settled by the wrappers:
+The rules of `VkImportMetalTextureInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMetalTextureInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMetalTextureInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportMetalTextureInfoEXT-plane-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkImportMetalTextureInfoEXT-plane-parameter` (*checked*): `plane` must be a valid VkImageAspectFlagBits value
+- `VUID-VkImportMetalTextureInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_METAL_TEXTURE_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkMetalSurfaceCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMetalSurfaceCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkMetalSurfaceCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMetalSurfaceCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMetalSurfaceCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMetalSurfaceCreateInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMetalSurfaceCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkMetalSurfaceCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkMetalSurfaceCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_METAL_SURFACE_CREATE_INFO_EXT`
+- `VUID-VkMetalSurfaceCreateInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_metal_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkMultisampledRenderToSingleSampledInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMultisampledRenderToSingleSampledInfoEXT.html). Settled by the wrappers:
+The rules of `VkMultisampledRenderToSingleSampledInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMultisampledRenderToSingleSampledInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMultisampledRenderToSingleSampledInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMultisampledRenderToSingleSampledInfoEXT-rasterizationSamples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMultisampledRenderToSingleSampledInfoEXT-rasterizationSamples-06878` (*yours*; explicit rule): The value of `rasterizationSamples` must not be `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkMultisampledRenderToSingleSampledInfoEXT-pNext-06880` (*yours*; explicit rule): If added to the `pNext` chain of VkRenderingInfo, each `imageView` member of any element of VkRenderingInfo::`pColorAttachments`, VkRenderingInfo::`pDepthAttachment`, or …
+- `VUID-VkMultisampledRenderToSingleSampledInfoEXT-rasterizationSamples-parameter` (*checked*): `rasterizationSamples` must be a valid VkSampleCountFlagBits value
+- `VUID-VkMultisampledRenderToSingleSampledInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_INFO_EXT`*/
 #[cfg(feature = "ext_multisampled_render_to_single_sampled")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -48,9 +48,9 @@ for MultisampledRenderToSingleSampledInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTISAMPLED_RENDER_TO_SINGLE_SAMPLED_FEATURES_EXT`*/
 #[cfg(feature = "ext_multisampled_render_to_single_sampled")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -81,9 +81,9 @@ for PhysicalDeviceMultisampledRenderToSingleSampledFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSubpassResolvePerformanceQueryEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassResolvePerformanceQueryEXT.html). Settled by the wrappers:
+The rules of `VkSubpassResolvePerformanceQueryEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassResolvePerformanceQueryEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassResolvePerformanceQueryEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkSubpassResolvePerformanceQueryEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_RESOLVE_PERFORMANCE_QUERY_EXT`*/
 #[cfg(feature = "ext_multisampled_render_to_single_sampled")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkMutableDescriptorTypeCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMutableDescriptorTypeCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkMutableDescriptorTypeCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMutableDescriptorTypeCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMutableDescriptorTypeCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMutableDescriptorTypeCreateInfoEXT-pMutableDescriptorTypeLists-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkMutableDescriptorTypeCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MUTABLE_DESCRIPTOR_TYPE_CREATE_INFO_EXT`
+- `VUID-VkMutableDescriptorTypeCreateInfoEXT-pMutableDescriptorTypeLists-parameter` (*by the types*): If `mutableDescriptorTypeListCount` is not `0`, `pMutableDescriptorTypeLists` must be a valid pointer to an array of `mutableDescriptorTypeListCount` valid VkMutableDescriptorTypeListEXT structures*/
 #[cfg(
     any(
         feature = "ext_mutable_descriptor_type",
@@ -65,11 +65,16 @@ for MutableDescriptorTypeCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkMutableDescriptorTypeListEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMutableDescriptorTypeListEXT.html). Settled by the wrappers:
+The rules of `VkMutableDescriptorTypeListEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMutableDescriptorTypeListEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMutableDescriptorTypeListEXT-pDescriptorTypes-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMutableDescriptorTypeListEXT-descriptorTypeCount-04597` (*yours*; explicit rule): `descriptorTypeCount` must not be `0` if the corresponding binding is of `VK_DESCRIPTOR_TYPE_MUTABLE_EXT`
+- `VUID-VkMutableDescriptorTypeListEXT-pDescriptorTypes-04598` (*yours*; explicit rule): `pDescriptorTypes` must be a valid pointer to an array of `descriptorTypeCount` valid, unique VkDescriptorType values if the given binding is of `VK_DESCRIPTOR_TYPE_MUTABLE_EXT` type
+- `VUID-VkMutableDescriptorTypeListEXT-descriptorTypeCount-04599` (*yours*; explicit rule): `descriptorTypeCount` must be `0` if the corresponding binding is not of `VK_DESCRIPTOR_TYPE_MUTABLE_EXT`
+- `VUID-VkMutableDescriptorTypeListEXT-pDescriptorTypes-04600` (*yours*; explicit rule): `pDescriptorTypes` must not contain `VK_DESCRIPTOR_TYPE_MUTABLE_EXT`
+- `VUID-VkMutableDescriptorTypeListEXT-pDescriptorTypes-04601` (*yours*; explicit rule): `pDescriptorTypes` must not contain `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC`
+- `VUID-VkMutableDescriptorTypeListEXT-pDescriptorTypes-04602` (*yours*; explicit rule): `pDescriptorTypes` must not contain `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`
+- `VUID-VkMutableDescriptorTypeListEXT-pDescriptorTypes-04603` (*yours*; explicit rule): `pDescriptorTypes` must not contain `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`
+- `VUID-VkMutableDescriptorTypeListEXT-pDescriptorTypes-parameter` (*checked*): If `descriptorTypeCount` is not `0`, `pDescriptorTypes` must be a valid pointer to an array of `descriptorTypeCount` valid VkDescriptorType values*/
 #[cfg(
     any(
         feature = "ext_mutable_descriptor_type",
@@ -105,9 +110,9 @@ impl<'a> MutableDescriptorTypeListEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMutableDescriptorTypeFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMutableDescriptorTypeFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMutableDescriptorTypeFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMutableDescriptorTypeFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMutableDescriptorTypeFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceMutableDescriptorTypeFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MUTABLE_DESCRIPTOR_TYPE_FEATURES_EXT`*/
 #[cfg(
     any(
         feature = "ext_mutable_descriptor_type",

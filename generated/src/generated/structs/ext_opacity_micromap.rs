@@ -6,17 +6,14 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureTrianglesOpacityMicromapEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureTrianglesOpacityMicromapEXT.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureTrianglesOpacityMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureTrianglesOpacityMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-pUsageCounts-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-ppUsageCounts-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
-- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-micromap-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: enum or flags value; ash types accept any raw value, not checked
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-pUsageCounts-07335` (*yours*; explicit rule): Only one of `pUsageCounts` or `ppUsageCounts` can be a valid pointer, the other must be `NULL`
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-indexType-parameter` (*yours*; enum or flags value): `indexType` must be a valid VkIndexType value
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_TRIANGLES_OPACITY_MICROMAP_EXT`
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-pUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `pUsageCounts` is not `NULL`, `pUsageCounts` must be a valid pointer to an array of `usageCountsCount` VkMicromapUsageEXT structures
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-ppUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `ppUsageCounts` is not `NULL`, `ppUsageCounts` must be a valid pointer to an array of `usageCountsCount` valid pointers to VkMicromapUsageEXT structures
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-micromap-parameter` (*by the types*): `micromap` must be a valid VkMicromapEXT handle*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -92,17 +89,16 @@ for AccelerationStructureTrianglesOpacityMicromapEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkCopyMemoryToMicromapInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMemoryToMicromapInfoEXT.html). Settled by the wrappers:
+The rules of `VkCopyMemoryToMicromapInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMemoryToMicromapInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyMemoryToMicromapInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCopyMemoryToMicromapInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCopyMemoryToMicromapInfoEXT-dst-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyMemoryToMicromapInfoEXT-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+- `VUID-VkCopyMemoryToMicromapInfoEXT-src-07547` (*yours*; explicit rule): The source memory pointed to by `src` must contain data previously serialized using vkCmdCopyMicromapToMemoryEXT
+- `VUID-VkCopyMemoryToMicromapInfoEXT-mode-07548` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `mode` must be `VK_COPY_MICROMAP_MODE_DESERIALIZE_EXT`
+- `VUID-VkCopyMemoryToMicromapInfoEXT-src-07549` (*yours*; explicit rule): The data in `src` must have a format compatible with the destination physical device as returned by vkGetDeviceMicromapCompatibilityEXT
+- `VUID-VkCopyMemoryToMicromapInfoEXT-dst-07550` (*yours*; explicit rule): `dst` must have been created with a `size` greater than or equal to that used to serialize the data in `src`
+- `VUID-VkCopyMemoryToMicromapInfoEXT-mode-parameter` (*checked*): `mode` must be a valid VkCopyMicromapModeEXT value
+- `VUID-VkCopyMemoryToMicromapInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MEMORY_TO_MICROMAP_INFO_EXT`
+- `VUID-VkCopyMemoryToMicromapInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCopyMemoryToMicromapInfoEXT-dst-parameter` (*by the types*): `dst` must be a valid VkMicromapEXT handle*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -144,19 +140,19 @@ impl<'a> CopyMemoryToMicromapInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkCopyMicromapInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMicromapInfoEXT.html). Settled by the wrappers:
+The rules of `VkCopyMicromapInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMicromapInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyMicromapInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCopyMicromapInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCopyMicromapInfoEXT-src-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyMicromapInfoEXT-dst-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyMicromapInfoEXT-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkCopyMicromapInfoEXT-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 4: explicit rule; the wrappers do not check it*/
+- `VUID-VkCopyMicromapInfoEXT-mode-07531` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `mode` must be `VK_COPY_MICROMAP_MODE_COMPACT_EXT` or `VK_COPY_MICROMAP_MODE_CLONE_EXT`
+- `VUID-VkCopyMicromapInfoEXT-src-07532` (*yours*; explicit rule): The source acceleration structure `src` must have been constructed prior to the execution of this command
+- `VUID-VkCopyMicromapInfoEXT-mode-07533` (*yours*; explicit rule): If `mode` is `VK_COPY_MICROMAP_MODE_COMPACT_EXT`, `src` must have been constructed with `VK_BUILD_MICROMAP_ALLOW_COMPACTION_BIT_EXT` in the build
+- `VUID-VkCopyMicromapInfoEXT-buffer-07534` (*yours*; explicit rule): The `buffer` used to create `src` must be bound to device memory
+- `VUID-VkCopyMicromapInfoEXT-buffer-07535` (*yours*; explicit rule): The `buffer` used to create `dst` must be bound to device memory
+- `VUID-VkCopyMicromapInfoEXT-mode-parameter` (*checked*): `mode` must be a valid VkCopyMicromapModeEXT value
+- `VUID-VkCopyMicromapInfoEXT-commonparent` (*checked*): Both of `dst`, and `src` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkCopyMicromapInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MICROMAP_INFO_EXT`
+- `VUID-VkCopyMicromapInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCopyMicromapInfoEXT-src-parameter` (*by the types*): `src` must be a valid VkMicromapEXT handle
+- `VUID-VkCopyMicromapInfoEXT-dst-parameter` (*by the types*): `dst` must be a valid VkMicromapEXT handle*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -203,17 +199,15 @@ impl<'a> CopyMicromapInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkCopyMicromapToMemoryInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMicromapToMemoryInfoEXT.html). Settled by the wrappers:
+The rules of `VkCopyMicromapToMemoryInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMicromapToMemoryInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyMicromapToMemoryInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCopyMicromapToMemoryInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCopyMicromapToMemoryInfoEXT-src-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyMicromapToMemoryInfoEXT-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 2: explicit rule; the wrappers do not check it*/
+- `VUID-VkCopyMicromapToMemoryInfoEXT-src-07540` (*yours*; explicit rule): The source micromap `src` must have been constructed prior to the execution of this command
+- `VUID-VkCopyMicromapToMemoryInfoEXT-dst-07541` (*yours*; explicit rule): The memory pointed to by `dst` must be at least as large as the serialization size of `src`, as reported by vkWriteMicromapsPropertiesEXT or vkCmdWriteMicromapsPropertiesEXT with a query type of …
+- `VUID-VkCopyMicromapToMemoryInfoEXT-mode-07542` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `mode` must be `VK_COPY_MICROMAP_MODE_SERIALIZE_EXT`
+- `VUID-VkCopyMicromapToMemoryInfoEXT-mode-parameter` (*checked*): `mode` must be a valid VkCopyMicromapModeEXT value
+- `VUID-VkCopyMicromapToMemoryInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MICROMAP_TO_MEMORY_INFO_EXT`
+- `VUID-VkCopyMicromapToMemoryInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCopyMicromapToMemoryInfoEXT-src-parameter` (*by the types*): `src` must be a valid VkMicromapEXT handle*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -255,16 +249,17 @@ impl<'a> CopyMicromapToMemoryInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkMicromapBuildInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapBuildInfoEXT.html). Settled by the wrappers:
+The rules of `VkMicromapBuildInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapBuildInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMicromapBuildInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMicromapBuildInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMicromapBuildInfoEXT-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkMicromapBuildInfoEXT-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkMicromapBuildInfoEXT-pUsageCounts-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkMicromapBuildInfoEXT-ppUsageCounts-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMicromapBuildInfoEXT-pUsageCounts-07516` (*yours*; explicit rule): Only one of `pUsageCounts` or `ppUsageCounts` can be a valid pointer, the other must be `NULL`
+- `VUID-VkMicromapBuildInfoEXT-type-07517` (*yours*; explicit rule): If `type` is `VK_MICROMAP_TYPE_OPACITY_MICROMAP_EXT` the `format` member of VkMicromapUsageEXT must be a valid value from `VkOpacityMicromapFormatEXT`
+- `VUID-VkMicromapBuildInfoEXT-type-07518` (*yours*; explicit rule): If `type` is `VK_MICROMAP_TYPE_OPACITY_MICROMAP_EXT` the `format` member of VkMicromapTriangleEXT must be a valid value from `VkOpacityMicromapFormatEXT`
+- `VUID-VkMicromapBuildInfoEXT-type-parameter` (*checked*): `type` must be a valid VkMicromapTypeEXT value
+- `VUID-VkMicromapBuildInfoEXT-flags-parameter` (*checked*): `flags` must be a valid combination of VkBuildMicromapFlagBitsEXT values
+- `VUID-VkMicromapBuildInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MICROMAP_BUILD_INFO_EXT`
+- `VUID-VkMicromapBuildInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMicromapBuildInfoEXT-pUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `pUsageCounts` is not `NULL`, `pUsageCounts` must be a valid pointer to an array of `usageCountsCount` VkMicromapUsageEXT structures
+- `VUID-VkMicromapBuildInfoEXT-ppUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `ppUsageCounts` is not `NULL`, `ppUsageCounts` must be a valid pointer to an array of `usageCountsCount` valid pointers to VkMicromapUsageEXT structures*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -329,10 +324,10 @@ impl<'a> MicromapBuildInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkMicromapBuildSizesInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapBuildSizesInfoEXT.html). Settled by the wrappers:
+The rules of `VkMicromapBuildSizesInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapBuildSizesInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMicromapBuildSizesInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMicromapBuildSizesInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkMicromapBuildSizesInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MICROMAP_BUILD_SIZES_INFO_EXT`
+- `VUID-VkMicromapBuildSizesInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -369,18 +364,19 @@ impl<'a> MicromapBuildSizesInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkMicromapCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkMicromapCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMicromapCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMicromapCreateInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMicromapCreateInfoEXT-createFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkMicromapCreateInfoEXT-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMicromapCreateInfoEXT-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 5: explicit rule; the wrappers do not check it*/
+- `VUID-VkMicromapCreateInfoEXT-deviceAddress-07433` (*yours*; explicit rule): If `deviceAddress` is not zero, `createFlags` must include `VK_MICROMAP_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT_EXT`
+- `VUID-VkMicromapCreateInfoEXT-createFlags-07434` (*yours*; explicit rule): If `createFlags` includes `VK_MICROMAP_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT_EXT`, VkPhysicalDeviceOpacityMicromapFeaturesEXT::`micromapCaptureReplay` must be `VK_TRUE`
+- `VUID-VkMicromapCreateInfoEXT-buffer-07435` (*yours*; explicit rule): `buffer` must have been created with a `usage` value containing `VK_BUFFER_USAGE_MICROMAP_STORAGE_BIT_EXT`
+- `VUID-VkMicromapCreateInfoEXT-buffer-07436` (*yours*; explicit rule): `buffer` must not have been created with `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`
+- `VUID-VkMicromapCreateInfoEXT-offset-07437` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The sum of `offset` and `size` must be less than the size of `buffer`
+- `VUID-VkMicromapCreateInfoEXT-offset-07438` (*yours*; explicit rule): `offset` must be a multiple of `256` bytes
+- `VUID-VkMicromapCreateInfoEXT-createFlags-parameter` (*checked*): `createFlags` must be a valid combination of VkMicromapCreateFlagBitsEXT values
+- `VUID-VkMicromapCreateInfoEXT-type-parameter` (*checked*): `type` must be a valid VkMicromapTypeEXT value
+- `VUID-VkMicromapCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MICROMAP_CREATE_INFO_EXT`
+- `VUID-VkMicromapCreateInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMicromapCreateInfoEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -446,12 +442,11 @@ impl<'a> MicromapCreateInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkMicromapVersionInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapVersionInfoEXT.html). Settled by the wrappers:
+The rules of `VkMicromapVersionInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapVersionInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMicromapVersionInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMicromapVersionInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not settable safely (a pointer whose length the registry gives as an expression)).*/
+- `VUID-VkMicromapVersionInfoEXT-pVersionData-parameter` (*yours*; not settable safely): `pVersionData` must be a valid pointer to an array of \(2 \times \mathtt{VK\_UUID\_SIZE}\) `uint8_t` values
+- `VUID-VkMicromapVersionInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MICROMAP_VERSION_INFO_EXT`
+- `VUID-VkMicromapVersionInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -466,9 +461,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceOpacityMicromapFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpacityMicromapFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceOpacityMicromapFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpacityMicromapFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceOpacityMicromapFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceOpacityMicromapFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_OPACITY_MICROMAP_FEATURES_EXT`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -511,9 +506,9 @@ for PhysicalDeviceOpacityMicromapFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceOpacityMicromapPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpacityMicromapPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceOpacityMicromapPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpacityMicromapPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceOpacityMicromapPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceOpacityMicromapPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_OPACITY_MICROMAP_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -7,9 +7,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePipelinePropertiesFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelinePropertiesFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePipelinePropertiesFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelinePropertiesFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePipelinePropertiesFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePipelinePropertiesFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_PROPERTIES_FEATURES_EXT`*/
 #[cfg(feature = "ext_pipeline_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -40,11 +40,11 @@ for PhysicalDevicePipelinePropertiesFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineInfoKHR.html). Settled by the wrappers:
+The rules of `VkPipelineInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineInfoKHR-pipeline-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkPipelineInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR`
+- `VUID-VkPipelineInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkPipelineInfoKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
 #[cfg(
     any(
         feature = "ext_pipeline_properties",
@@ -91,10 +91,10 @@ impl<'a> PipelineInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkPipelinePropertiesIdentifierEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelinePropertiesIdentifierEXT.html). Settled by the wrappers:
+The rules of `VkPipelinePropertiesIdentifierEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelinePropertiesIdentifierEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelinePropertiesIdentifierEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelinePropertiesIdentifierEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPipelinePropertiesIdentifierEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_PROPERTIES_IDENTIFIER_EXT`
+- `VUID-VkPipelinePropertiesIdentifierEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_pipeline_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

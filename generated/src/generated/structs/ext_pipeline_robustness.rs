@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePipelineRobustnessFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelineRobustnessFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePipelineRobustnessFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelineRobustnessFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePipelineRobustnessFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePipelineRobustnessFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_ROBUSTNESS_FEATURES_EXT`*/
 #[cfg(feature = "ext_pipeline_robustness")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,9 +39,9 @@ for PhysicalDevicePipelineRobustnessFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePipelineRobustnessPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelineRobustnessPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePipelineRobustnessPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelineRobustnessPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePipelineRobustnessPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePipelineRobustnessPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_ROBUSTNESS_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_pipeline_robustness")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -60,15 +60,22 @@ for PhysicalDevicePipelineRobustnessPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineRobustnessCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRobustnessCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineRobustnessCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRobustnessCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineRobustnessCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineRobustnessCreateInfoEXT-storageBuffers-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPipelineRobustnessCreateInfoEXT-uniformBuffers-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPipelineRobustnessCreateInfoEXT-vertexInputs-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPipelineRobustnessCreateInfoEXT-images-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineRobustnessCreateInfoEXT-pipelineRobustness-06926` (*yours*; explicit rule): If the `pipelineRobustness` feature is not enabled, `storageBuffers` must be `VK_PIPELINE_ROBUSTNESS_BUFFER_BEHAVIOR_DEVICE_DEFAULT_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-pipelineRobustness-06927` (*yours*; explicit rule): If the `pipelineRobustness` feature is not enabled, `uniformBuffers` must be `VK_PIPELINE_ROBUSTNESS_BUFFER_BEHAVIOR_DEVICE_DEFAULT_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-pipelineRobustness-06928` (*yours*; explicit rule): If the `pipelineRobustness` feature is not enabled, `vertexInputs` must be `VK_PIPELINE_ROBUSTNESS_BUFFER_BEHAVIOR_DEVICE_DEFAULT_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-pipelineRobustness-06929` (*yours*; explicit rule): If the `pipelineRobustness` feature is not enabled, `images` must be `VK_PIPELINE_ROBUSTNESS_IMAGE_BEHAVIOR_DEVICE_DEFAULT_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-robustImageAccess-06930` (*yours*; explicit rule): If the `robustImageAccess` feature is not supported, `images` must not be `VK_PIPELINE_ROBUSTNESS_IMAGE_BEHAVIOR_ROBUST_IMAGE_ACCESS_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-robustBufferAccess2-06931` (*yours*; explicit rule): If the `robustBufferAccess2` feature is not supported, `storageBuffers` must not be `VK_PIPELINE_ROBUSTNESS_BUFFER_BEHAVIOR_ROBUST_BUFFER_ACCESS_2_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-robustBufferAccess2-06932` (*yours*; explicit rule): If the `robustBufferAccess2` feature is not supported, `uniformBuffers` must not be `VK_PIPELINE_ROBUSTNESS_BUFFER_BEHAVIOR_ROBUST_BUFFER_ACCESS_2_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-robustBufferAccess2-06933` (*yours*; explicit rule): If the `robustBufferAccess2` feature is not supported, `vertexInputs` must not be `VK_PIPELINE_ROBUSTNESS_BUFFER_BEHAVIOR_ROBUST_BUFFER_ACCESS_2_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-robustImageAccess2-06934` (*yours*; explicit rule): If the `robustImageAccess2` feature is not supported, `images` must not be `VK_PIPELINE_ROBUSTNESS_IMAGE_BEHAVIOR_ROBUST_IMAGE_ACCESS_2_EXT`
+- `VUID-VkPipelineRobustnessCreateInfoEXT-storageBuffers-parameter` (*checked*): `storageBuffers` must be a valid VkPipelineRobustnessBufferBehaviorEXT value
+- `VUID-VkPipelineRobustnessCreateInfoEXT-uniformBuffers-parameter` (*checked*): `uniformBuffers` must be a valid VkPipelineRobustnessBufferBehaviorEXT value
+- `VUID-VkPipelineRobustnessCreateInfoEXT-vertexInputs-parameter` (*checked*): `vertexInputs` must be a valid VkPipelineRobustnessBufferBehaviorEXT value
+- `VUID-VkPipelineRobustnessCreateInfoEXT-images-parameter` (*checked*): `images` must be a valid VkPipelineRobustnessImageBehaviorEXT value
+- `VUID-VkPipelineRobustnessCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_ROBUSTNESS_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_pipeline_robustness")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAttachmentSampleLocationsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentSampleLocationsEXT.html). Settled by the wrappers:
+The rules of `VkAttachmentSampleLocationsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentSampleLocationsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAttachmentSampleLocationsEXT-sampleLocationsInfo-parameter`: static (set from the safe counterpart, which the constructor requires)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkAttachmentSampleLocationsEXT-attachmentIndex-01531` (*yours*; explicit rule): `attachmentIndex` must be less than the `attachmentCount` specified in VkRenderPassCreateInfo the render pass specified by VkRenderPassBeginInfo::`renderPass` was created with
+- `VUID-VkAttachmentSampleLocationsEXT-sampleLocationsInfo-parameter` (*by the types*): `sampleLocationsInfo` must be a valid VkSampleLocationsInfoEXT structure*/
 #[cfg(feature = "ext_sample_locations")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -50,10 +49,10 @@ impl<'a> AttachmentSampleLocationsEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkMultisamplePropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMultisamplePropertiesEXT.html). Settled by the wrappers:
+The rules of `VkMultisamplePropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMultisamplePropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMultisamplePropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMultisamplePropertiesEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkMultisamplePropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MULTISAMPLE_PROPERTIES_EXT`
+- `VUID-VkMultisamplePropertiesEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_sample_locations")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -68,9 +67,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSampleLocationsPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSampleLocationsPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSampleLocationsPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSampleLocationsPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSampleLocationsPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSampleLocationsPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SAMPLE_LOCATIONS_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_sample_locations")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -89,10 +88,10 @@ for PhysicalDeviceSampleLocationsPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineSampleLocationsStateCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineSampleLocationsStateCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineSampleLocationsStateCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineSampleLocationsStateCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineSampleLocationsStateCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineSampleLocationsStateCreateInfoEXT-sampleLocationsInfo-parameter`: static (set from the safe counterpart, which the constructor requires)*/
+- `VUID-VkPipelineSampleLocationsStateCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_SAMPLE_LOCATIONS_STATE_CREATE_INFO_EXT`
+- `VUID-VkPipelineSampleLocationsStateCreateInfoEXT-sampleLocationsInfo-parameter` (*by the types*): `sampleLocationsInfo` must be a valid VkSampleLocationsInfoEXT structure*/
 #[cfg(feature = "ext_sample_locations")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -138,11 +137,11 @@ for PipelineSampleLocationsStateCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRenderPassSampleLocationsBeginInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassSampleLocationsBeginInfoEXT.html). Settled by the wrappers:
+The rules of `VkRenderPassSampleLocationsBeginInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassSampleLocationsBeginInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassSampleLocationsBeginInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassSampleLocationsBeginInfoEXT-pAttachmentInitialSampleLocations-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassSampleLocationsBeginInfoEXT-pPostSubpassSampleLocations-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkRenderPassSampleLocationsBeginInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_SAMPLE_LOCATIONS_BEGIN_INFO_EXT`
+- `VUID-VkRenderPassSampleLocationsBeginInfoEXT-pAttachmentInitialSampleLocations-parameter` (*by the types*): If `attachmentInitialSampleLocationsCount` is not `0`, `pAttachmentInitialSampleLocations` must be a valid pointer to an array of `attachmentInitialSampleLocationsCount` valid …
+- `VUID-VkRenderPassSampleLocationsBeginInfoEXT-pPostSubpassSampleLocations-parameter` (*by the types*): If `postSubpassSampleLocationsCount` is not `0`, `pPostSubpassSampleLocations` must be a valid pointer to an array of `postSubpassSampleLocationsCount` valid VkSubpassSampleLocationsEXT structures*/
 #[cfg(feature = "ext_sample_locations")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -184,12 +183,12 @@ for RenderPassSampleLocationsBeginInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSampleLocationsInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSampleLocationsInfoEXT.html). Settled by the wrappers:
+The rules of `VkSampleLocationsInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSampleLocationsInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSampleLocationsInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSampleLocationsInfoEXT-pSampleLocations-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSampleLocationsInfoEXT-sampleLocationsPerPixel-01526` (*yours*; explicit rule): `sampleLocationsPerPixel` must be a bit value that is set in VkPhysicalDeviceSampleLocationsPropertiesEXT::`sampleLocationSampleCounts`
+- `VUID-VkSampleLocationsInfoEXT-sampleLocationsCount-01527` (*yours*; explicit rule): `sampleLocationsCount` must equal `sampleLocationsPerPixel` {times} `sampleLocationGridSize.width` {times} `sampleLocationGridSize.height`
+- `VUID-VkSampleLocationsInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLE_LOCATIONS_INFO_EXT`
+- `VUID-VkSampleLocationsInfoEXT-pSampleLocations-parameter` (*by the types*): If `sampleLocationsCount` is not `0`, `pSampleLocations` must be a valid pointer to an array of `sampleLocationsCount` VkSampleLocationEXT structures*/
 #[cfg(feature = "ext_sample_locations")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -230,11 +229,10 @@ unsafe impl<'a> Extends<ImageMemoryBarrier2<'a>> for SampleLocationsInfoEXT<'a> 
 
 # Valid usage
 
-The rules are on [`VkSubpassSampleLocationsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassSampleLocationsEXT.html). Settled by the wrappers:
+The rules of `VkSubpassSampleLocationsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassSampleLocationsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassSampleLocationsEXT-sampleLocationsInfo-parameter`: static (set from the safe counterpart, which the constructor requires)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSubpassSampleLocationsEXT-subpassIndex-01532` (*yours*; explicit rule): `subpassIndex` must be less than the `subpassCount` specified in VkRenderPassCreateInfo the render pass specified by VkRenderPassBeginInfo::`renderPass` was created with
+- `VUID-VkSubpassSampleLocationsEXT-sampleLocationsInfo-parameter` (*by the types*): `sampleLocationsInfo` must be a valid VkSampleLocationsInfoEXT structure*/
 #[cfg(feature = "ext_sample_locations")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

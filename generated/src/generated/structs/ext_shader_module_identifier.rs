@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShaderModuleIdentifierFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderModuleIdentifierFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShaderModuleIdentifierFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderModuleIdentifierFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShaderModuleIdentifierFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShaderModuleIdentifierFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_MODULE_IDENTIFIER_FEATURES_EXT`*/
 #[cfg(feature = "ext_shader_module_identifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,9 +39,9 @@ for PhysicalDeviceShaderModuleIdentifierFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShaderModuleIdentifierPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderModuleIdentifierPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShaderModuleIdentifierPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderModuleIdentifierPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShaderModuleIdentifierPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShaderModuleIdentifierPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_MODULE_IDENTIFIER_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_shader_module_identifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -60,12 +60,13 @@ for PhysicalDeviceShaderModuleIdentifierPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineShaderStageModuleIdentifierCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineShaderStageModuleIdentifierCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineShaderStageModuleIdentifierCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineShaderStageModuleIdentifierCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineShaderStageModuleIdentifierCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineShaderStageModuleIdentifierCreateInfoEXT-pIdentifier-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineShaderStageModuleIdentifierCreateInfoEXT-pNext-06850` (*yours*; explicit rule): If this structure is included in a `pNext` chain and `identifierSize` is not equal to 0, the `shaderModuleIdentifier` feature must be enabled
+- `VUID-VkPipelineShaderStageModuleIdentifierCreateInfoEXT-pNext-06851` (*yours*; explicit rule): If this struct is included in a `pNext` chain of VkPipelineShaderStageCreateInfo and `identifierSize` is not equal to 0, the pipeline must be created with the …
+- `VUID-VkPipelineShaderStageModuleIdentifierCreateInfoEXT-identifierSize-06852` (*yours*; explicit rule): `identifierSize` must be less-or-equal to `VK_MAX_SHADER_MODULE_IDENTIFIER_SIZE_EXT`
+- `VUID-VkPipelineShaderStageModuleIdentifierCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_MODULE_IDENTIFIER_CREATE_INFO_EXT`
+- `VUID-VkPipelineShaderStageModuleIdentifierCreateInfoEXT-pIdentifier-parameter` (*by the types*): If `identifierSize` is not `0`, `pIdentifier` must be a valid pointer to an array of `identifierSize` `uint8_t` values*/
 #[cfg(feature = "ext_shader_module_identifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -94,10 +95,10 @@ for PipelineShaderStageModuleIdentifierCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkShaderModuleIdentifierEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShaderModuleIdentifierEXT.html). Settled by the wrappers:
+The rules of `VkShaderModuleIdentifierEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShaderModuleIdentifierEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkShaderModuleIdentifierEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkShaderModuleIdentifierEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkShaderModuleIdentifierEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SHADER_MODULE_IDENTIFIER_EXT`
+- `VUID-VkShaderModuleIdentifierEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_shader_module_identifier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

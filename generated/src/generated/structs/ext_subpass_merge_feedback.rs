@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSubpassMergeFeedbackFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubpassMergeFeedbackFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSubpassMergeFeedbackFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubpassMergeFeedbackFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSubpassMergeFeedbackFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSubpassMergeFeedbackFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBPASS_MERGE_FEEDBACK_FEATURES_EXT`*/
 #[cfg(feature = "ext_subpass_merge_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,9 +39,9 @@ for PhysicalDeviceSubpassMergeFeedbackFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRenderPassCreationControlEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreationControlEXT.html). Settled by the wrappers:
+The rules of `VkRenderPassCreationControlEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreationControlEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassCreationControlEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkRenderPassCreationControlEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_CREATION_CONTROL_EXT`*/
 #[cfg(feature = "ext_subpass_merge_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -70,11 +70,10 @@ unsafe impl<'a> Extends<SubpassDescription2<'a>> for RenderPassCreationControlEX
 
 # Valid usage
 
-The rules are on [`VkRenderPassCreationFeedbackCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreationFeedbackCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkRenderPassCreationFeedbackCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreationFeedbackCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not settable safely (a pointer Vulkan writes through)).*/
+- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-pRenderPassFeedback-parameter` (*yours*; not settable safely): `pRenderPassFeedback` must be a valid pointer to a VkRenderPassCreationFeedbackInfoEXT structure
+- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_CREATION_FEEDBACK_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_subpass_merge_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -93,11 +92,10 @@ for RenderPassCreationFeedbackCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRenderPassSubpassFeedbackCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassSubpassFeedbackCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkRenderPassSubpassFeedbackCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassSubpassFeedbackCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not settable safely (a pointer Vulkan writes through)).*/
+- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-pSubpassFeedback-parameter` (*yours*; not settable safely): `pSubpassFeedback` must be a valid pointer to a VkRenderPassSubpassFeedbackInfoEXT structure
+- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_SUBPASS_FEEDBACK_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_subpass_merge_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

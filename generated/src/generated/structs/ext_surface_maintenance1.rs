@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkSurfacePresentModeCompatibilityEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfacePresentModeCompatibilityEXT.html). Settled by the wrappers:
+The rules of `VkSurfacePresentModeCompatibilityEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfacePresentModeCompatibilityEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfacePresentModeCompatibilityEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSurfacePresentModeCompatibilityEXT-pPresentModes-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)*/
+- `VUID-VkSurfacePresentModeCompatibilityEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_PRESENT_MODE_COMPATIBILITY_EXT`
+- `VUID-VkSurfacePresentModeCompatibilityEXT-pPresentModes-parameter` (*by the types*): If `presentModeCount` is not `0`, and `pPresentModes` is not `NULL`, `pPresentModes` must be a valid pointer to an array of `presentModeCount` VkPresentModeKHR values*/
 #[cfg(feature = "ext_surface_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -38,12 +38,11 @@ for SurfacePresentModeCompatibilityEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSurfacePresentModeEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfacePresentModeEXT.html). Settled by the wrappers:
+The rules of `VkSurfacePresentModeEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfacePresentModeEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfacePresentModeEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSurfacePresentModeEXT-presentMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSurfacePresentModeEXT-presentMode-07780` (*yours*; explicit rule): `presentMode` must be a value reported by vkGetPhysicalDeviceSurfacePresentModesKHR for the specified surface
+- `VUID-VkSurfacePresentModeEXT-presentMode-parameter` (*checked*): `presentMode` must be a valid VkPresentModeKHR value
+- `VUID-VkSurfacePresentModeEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_PRESENT_MODE_EXT`*/
 #[cfg(feature = "ext_surface_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -72,12 +71,12 @@ for SurfacePresentModeEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSurfacePresentScalingCapabilitiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfacePresentScalingCapabilitiesEXT.html). Settled by the wrappers:
+The rules of `VkSurfacePresentScalingCapabilitiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfacePresentScalingCapabilitiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfacePresentScalingCapabilitiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSurfacePresentScalingCapabilitiesEXT-supportedPresentScaling-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSurfacePresentScalingCapabilitiesEXT-supportedPresentGravityX-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSurfacePresentScalingCapabilitiesEXT-supportedPresentGravityY-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkSurfacePresentScalingCapabilitiesEXT-supportedPresentScaling-parameter` (*checked*): `supportedPresentScaling` must be a valid combination of VkPresentScalingFlagBitsEXT values
+- `VUID-VkSurfacePresentScalingCapabilitiesEXT-supportedPresentGravityX-parameter` (*checked*): `supportedPresentGravityX` must be a valid combination of VkPresentGravityFlagBitsEXT values
+- `VUID-VkSurfacePresentScalingCapabilitiesEXT-supportedPresentGravityY-parameter` (*checked*): `supportedPresentGravityY` must be a valid combination of VkPresentGravityFlagBitsEXT values
+- `VUID-VkSurfacePresentScalingCapabilitiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_PRESENT_SCALING_CAPABILITIES_EXT`*/
 #[cfg(feature = "ext_surface_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

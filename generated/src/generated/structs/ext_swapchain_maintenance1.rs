@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSwapchainMaintenance1FeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SWAPCHAIN_MAINTENANCE_1_FEATURES_EXT`*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,15 +39,15 @@ for PhysicalDeviceSwapchainMaintenance1FeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkReleaseSwapchainImagesInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkReleaseSwapchainImagesInfoEXT.html). Settled by the wrappers:
+The rules of `VkReleaseSwapchainImagesInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkReleaseSwapchainImagesInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkReleaseSwapchainImagesInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkReleaseSwapchainImagesInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkReleaseSwapchainImagesInfoEXT-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkReleaseSwapchainImagesInfoEXT-pImageIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkReleaseSwapchainImagesInfoEXT-imageIndexCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkReleaseSwapchainImagesInfoEXT-pImageIndices-07785` (*yours*; explicit rule): Each element of `pImageIndices` must be the index of a presentable image acquired from the swapchain specified by `swapchain`
+- `VUID-VkReleaseSwapchainImagesInfoEXT-pImageIndices-07786` (*yours*; explicit rule): All uses of presentable images identified by elements of `pImageIndices` must have completed execution
+- `VUID-VkReleaseSwapchainImagesInfoEXT-imageIndexCount-arraylength` (*checked*): `imageIndexCount` must be greater than `0`
+- `VUID-VkReleaseSwapchainImagesInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RELEASE_SWAPCHAIN_IMAGES_INFO_EXT`
+- `VUID-VkReleaseSwapchainImagesInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkReleaseSwapchainImagesInfoEXT-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-VkReleaseSwapchainImagesInfoEXT-pImageIndices-parameter` (*by the types*): `pImageIndices` must be a valid pointer to an array of `imageIndexCount` `uint32_t` values*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -91,13 +91,14 @@ impl<'a> ReleaseSwapchainImagesInfoEXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkSwapchainPresentFenceInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentFenceInfoEXT.html). Settled by the wrappers:
+The rules of `VkSwapchainPresentFenceInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentFenceInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainPresentFenceInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSwapchainPresentFenceInfoEXT-pFences-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSwapchainPresentFenceInfoEXT-swapchainCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSwapchainPresentFenceInfoEXT-swapchainCount-07757` (*yours*; explicit rule): `swapchainCount` must be equal to VkPresentInfoKHR::`swapchainCount`
+- `VUID-VkSwapchainPresentFenceInfoEXT-pFences-07758` (*yours*; explicit rule): Each element of `pFences` must be unsignaled
+- `VUID-VkSwapchainPresentFenceInfoEXT-pFences-07759` (*yours*; explicit rule): Each element of `pFences` must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-VkSwapchainPresentFenceInfoEXT-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-VkSwapchainPresentFenceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_FENCE_INFO_EXT`
+- `VUID-VkSwapchainPresentFenceInfoEXT-pFences-parameter` (*by the types*): `pFences` must be a valid pointer to an array of `swapchainCount` valid VkFence handles*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -126,13 +127,13 @@ unsafe impl<'a> Extends<PresentInfoKHR<'a>> for SwapchainPresentFenceInfoEXT<'a>
 
 # Valid usage
 
-The rules are on [`VkSwapchainPresentModeInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentModeInfoEXT.html). Settled by the wrappers:
+The rules of `VkSwapchainPresentModeInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentModeInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainPresentModeInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSwapchainPresentModeInfoEXT-pPresentModes-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-VkSwapchainPresentModeInfoEXT-swapchainCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSwapchainPresentModeInfoEXT-swapchainCount-07760` (*yours*; explicit rule): `swapchainCount` must be equal to VkPresentInfoKHR::`swapchainCount`
+- `VUID-VkSwapchainPresentModeInfoEXT-pPresentModes-07761` (*yours*; explicit rule): Each entry in `pPresentModes` must be a presentation mode specified in VkSwapchainPresentModesCreateInfoEXT::pPresentModes when creating the entry&#8217;s corresponding swapchain
+- `VUID-VkSwapchainPresentModeInfoEXT-pPresentModes-parameter` (*checked*): `pPresentModes` must be a valid pointer to an array of `swapchainCount` valid VkPresentModeKHR values
+- `VUID-VkSwapchainPresentModeInfoEXT-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-VkSwapchainPresentModeInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_MODE_INFO_EXT`*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -161,13 +162,14 @@ unsafe impl<'a> Extends<PresentInfoKHR<'a>> for SwapchainPresentModeInfoEXT<'a> 
 
 # Valid usage
 
-The rules are on [`VkSwapchainPresentModesCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentModesCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkSwapchainPresentModesCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentModesCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainPresentModesCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSwapchainPresentModesCreateInfoEXT-pPresentModes-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-VkSwapchainPresentModesCreateInfoEXT-presentModeCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSwapchainPresentModesCreateInfoEXT-None-07762` (*yours*; explicit rule): Each entry in pPresentModes must be one of the VkPresentModeKHR values returned by `vkGetPhysicalDeviceSurfacePresentModesKHR` for the surface
+- `VUID-VkSwapchainPresentModesCreateInfoEXT-pPresentModes-07763` (*yours*; explicit rule): The entries in pPresentModes must be a subset of the present modes returned in VkSurfacePresentModeCompatibilityEXT::`pPresentModes`, given VkSwapchainCreateInfoKHR::`presentMode` in …
+- `VUID-VkSwapchainPresentModesCreateInfoEXT-presentMode-07764` (*yours*; explicit rule): VkSwapchainCreateInfoKHR::`presentMode` must be included in `pPresentModes`
+- `VUID-VkSwapchainPresentModesCreateInfoEXT-pPresentModes-parameter` (*checked*): `pPresentModes` must be a valid pointer to an array of `presentModeCount` valid VkPresentModeKHR values
+- `VUID-VkSwapchainPresentModesCreateInfoEXT-presentModeCount-arraylength` (*checked*): `presentModeCount` must be greater than `0`
+- `VUID-VkSwapchainPresentModesCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_MODES_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -197,14 +199,23 @@ for SwapchainPresentModesCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSwapchainPresentScalingCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentScalingCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkSwapchainPresentScalingCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentScalingCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainPresentScalingCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSwapchainPresentScalingCreateInfoEXT-scalingBehavior-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityX-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityY-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityX-07765` (*yours*; explicit rule): If `presentGravityX` is `0`, `presentGravityY` must be `0`
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityX-07766` (*yours*; explicit rule): If `presentGravityX` is not `0`, `presentGravityY` must not be `0`
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-scalingBehavior-07767` (*yours*; explicit rule): `scalingBehavior` must not have more than one bit set
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityX-07768` (*yours*; explicit rule): `presentGravityX` must not have more than one bit set
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityY-07769` (*yours*; explicit rule): `presentGravityY` must not have more than one bit set
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-scalingBehavior-07770` (*yours*; explicit rule): `scalingBehavior` must be a valid scaling method for the surface as returned in VkSurfacePresentScalingCapabilitiesEXT::`supportedPresentScaling`, given VkSwapchainCreateInfoKHR::`presentMode` in …
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-scalingBehavior-07771` (*yours*; explicit rule): If the swapchain is created with VkSwapchainPresentModesCreateInfoEXT, `scalingBehavior` must be a valid scaling method for the surface as returned in …
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityX-07772` (*yours*; explicit rule): `presentGravityX` must be a valid x-axis present gravity for the surface as returned in VkSurfacePresentScalingCapabilitiesEXT::`supportedPresentGravityX`, given …
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityX-07773` (*yours*; explicit rule): If the swapchain is created with VkSwapchainPresentModesCreateInfoEXT, `presentGravityX` must be a valid x-axis present gravity for the surface as returned in …
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityY-07774` (*yours*; explicit rule): `presentGravityY` must be a valid y-axis present gravity for the surface as returned in VkSurfacePresentScalingCapabilitiesEXT::`supportedPresentGravityY`, given …
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityY-07775` (*yours*; explicit rule): If the swapchain is created with VkSwapchainPresentModesCreateInfoEXT, `presentGravityY` must be a valid y-axis present gravity for the surface as returned in …
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-scalingBehavior-parameter` (*checked*): `scalingBehavior` must be a valid combination of VkPresentScalingFlagBitsEXT values
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityX-parameter` (*checked*): `presentGravityX` must be a valid combination of VkPresentGravityFlagBitsEXT values
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-presentGravityY-parameter` (*checked*): `presentGravityY` must be a valid combination of VkPresentGravityFlagBitsEXT values
+- `VUID-VkSwapchainPresentScalingCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_SCALING_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

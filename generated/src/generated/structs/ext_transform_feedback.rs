@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceTransformFeedbackFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTransformFeedbackFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceTransformFeedbackFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTransformFeedbackFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceTransformFeedbackFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceTransformFeedbackFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT`*/
 #[cfg(feature = "ext_transform_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -45,9 +45,9 @@ for PhysicalDeviceTransformFeedbackFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceTransformFeedbackPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTransformFeedbackPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceTransformFeedbackPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTransformFeedbackPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceTransformFeedbackPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceTransformFeedbackPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_transform_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -66,12 +66,13 @@ for PhysicalDeviceTransformFeedbackPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineRasterizationStateStreamCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationStateStreamCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineRasterizationStateStreamCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineRasterizationStateStreamCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineRasterizationStateStreamCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineRasterizationStateStreamCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineRasterizationStateStreamCreateInfoEXT-geometryStreams-02324` (*yours*; explicit rule): `VkPhysicalDeviceTransformFeedbackFeaturesEXT::geometryStreams` must be enabled
+- `VUID-VkPipelineRasterizationStateStreamCreateInfoEXT-rasterizationStream-02325` (*yours*; explicit rule): `rasterizationStream` must be less than VkPhysicalDeviceTransformFeedbackPropertiesEXT::`maxTransformFeedbackStreams`
+- `VUID-VkPipelineRasterizationStateStreamCreateInfoEXT-rasterizationStream-02326` (*yours*; explicit rule): `rasterizationStream` must be zero if `VkPhysicalDeviceTransformFeedbackPropertiesEXT::transformFeedbackRasterizationStreamSelect` is `VK_FALSE`
+- `VUID-VkPipelineRasterizationStateStreamCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineRasterizationStateStreamCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_STREAM_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_transform_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkShaderModuleValidationCacheCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShaderModuleValidationCacheCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkShaderModuleValidationCacheCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShaderModuleValidationCacheCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-validationCache-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SHADER_MODULE_VALIDATION_CACHE_CREATE_INFO_EXT`
+- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-validationCache-parameter` (*by the types*): `validationCache` must be a valid VkValidationCacheEXT handle*/
 #[cfg(feature = "ext_validation_cache")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -52,14 +52,14 @@ for ShaderModuleValidationCacheCreateInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkValidationCacheCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkValidationCacheCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkValidationCacheCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkValidationCacheCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkValidationCacheCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkValidationCacheCreateInfoEXT-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkValidationCacheCreateInfoEXT-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkValidationCacheCreateInfoEXT-pInitialData-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkValidationCacheCreateInfoEXT-initialDataSize-01534` (*yours*; explicit rule): If `initialDataSize` is not `0`, it must be equal to the size of `pInitialData`, as returned by `vkGetValidationCacheDataEXT` when `pInitialData` was originally retrieved
+- `VUID-VkValidationCacheCreateInfoEXT-initialDataSize-01535` (*yours*; explicit rule): If `initialDataSize` is not `0`, `pInitialData` must have been retrieved from a previous call to `vkGetValidationCacheDataEXT`
+- `VUID-VkValidationCacheCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkValidationCacheCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VALIDATION_CACHE_CREATE_INFO_EXT`
+- `VUID-VkValidationCacheCreateInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkValidationCacheCreateInfoEXT-pInitialData-parameter` (*by the types*): If `initialDataSize` is not `0`, `pInitialData` must be a valid pointer to an array of `initialDataSize` bytes*/
 #[cfg(feature = "ext_validation_cache")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

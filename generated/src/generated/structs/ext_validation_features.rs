@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkValidationFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkValidationFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkValidationFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkValidationFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkValidationFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkValidationFeaturesEXT-pEnabledValidationFeatures-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-VkValidationFeaturesEXT-pDisabledValidationFeatures-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkValidationFeaturesEXT-pEnabledValidationFeatures-02967` (*yours*; explicit rule): If the `pEnabledValidationFeatures` array contains `VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_RESERVE_BINDING_SLOT_EXT`, then it must also contain `VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_EXT`
+- `VUID-VkValidationFeaturesEXT-pEnabledValidationFeatures-02968` (*yours*; explicit rule): If the `pEnabledValidationFeatures` array contains `VK_VALIDATION_FEATURE_ENABLE_DEBUG_PRINTF_EXT`, then it must not contain `VK_VALIDATION_FEATURE_ENABLE_GPU_ASSISTED_EXT`
+- `VUID-VkValidationFeaturesEXT-pEnabledValidationFeatures-parameter` (*checked*): If `enabledValidationFeatureCount` is not `0`, `pEnabledValidationFeatures` must be a valid pointer to an array of `enabledValidationFeatureCount` valid VkValidationFeatureEnableEXT values
+- `VUID-VkValidationFeaturesEXT-pDisabledValidationFeatures-parameter` (*checked*): If `disabledValidationFeatureCount` is not `0`, `pDisabledValidationFeatures` must be a valid pointer to an array of `disabledValidationFeatureCount` valid VkValidationFeatureDisableEXT values
+- `VUID-VkValidationFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT`*/
 #[cfg(feature = "ext_validation_features")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkValidationFlagsEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkValidationFlagsEXT.html). Settled by the wrappers:
+The rules of `VkValidationFlagsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkValidationFlagsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkValidationFlagsEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkValidationFlagsEXT-pDisabledValidationChecks-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-VkValidationFlagsEXT-disabledValidationCheckCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkValidationFlagsEXT-pDisabledValidationChecks-parameter` (*checked*): `pDisabledValidationChecks` must be a valid pointer to an array of `disabledValidationCheckCount` valid VkValidationCheckEXT values
+- `VUID-VkValidationFlagsEXT-disabledValidationCheckCount-arraylength` (*checked*): `disabledValidationCheckCount` must be greater than `0`
+- `VUID-VkValidationFlagsEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VALIDATION_FLAGS_EXT`*/
 #[cfg(feature = "ext_validation_flags")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVertexAttributeDivisorFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVertexAttributeDivisorFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVertexAttributeDivisorFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVertexAttributeDivisorFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVertexAttributeDivisorFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVertexAttributeDivisorFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VERTEX_ATTRIBUTE_DIVISOR_FEATURES_EXT`*/
 #[cfg(feature = "ext_vertex_attribute_divisor")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -45,9 +45,9 @@ for PhysicalDeviceVertexAttributeDivisorFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVertexAttributeDivisorPropertiesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVertexAttributeDivisorPropertiesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVertexAttributeDivisorPropertiesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVertexAttributeDivisorPropertiesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVertexAttributeDivisorPropertiesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVertexAttributeDivisorPropertiesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VERTEX_ATTRIBUTE_DIVISOR_PROPERTIES_EXT`*/
 #[cfg(feature = "ext_vertex_attribute_divisor")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -66,11 +66,11 @@ for PhysicalDeviceVertexAttributeDivisorPropertiesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineVertexInputDivisorStateCreateInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineVertexInputDivisorStateCreateInfoEXT.html). Settled by the wrappers:
+The rules of `VkPipelineVertexInputDivisorStateCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineVertexInputDivisorStateCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-pVertexBindingDivisors-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-vertexBindingDivisorCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-vertexBindingDivisorCount-arraylength` (*checked*): `vertexBindingDivisorCount` must be greater than `0`
+- `VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_DIVISOR_STATE_CREATE_INFO_EXT`
+- `VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-pVertexBindingDivisors-parameter` (*by the types*): `pVertexBindingDivisors` must be a valid pointer to an array of `vertexBindingDivisorCount` VkVertexInputBindingDivisorDescriptionEXT structures*/
 #[cfg(feature = "ext_vertex_attribute_divisor")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

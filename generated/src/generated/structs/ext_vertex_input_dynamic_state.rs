@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVertexInputDynamicStateFeaturesEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVertexInputDynamicStateFeaturesEXT.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVertexInputDynamicStateFeaturesEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVertexInputDynamicStateFeaturesEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVertexInputDynamicStateFeaturesEXT-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVertexInputDynamicStateFeaturesEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VERTEX_INPUT_DYNAMIC_STATE_FEATURES_EXT`*/
 #[cfg(feature = "ext_vertex_input_dynamic_state")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,12 +39,15 @@ for PhysicalDeviceVertexInputDynamicStateFeaturesEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVertexInputAttributeDescription2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVertexInputAttributeDescription2EXT.html). Settled by the wrappers:
+The rules of `VkVertexInputAttributeDescription2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVertexInputAttributeDescription2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVertexInputAttributeDescription2EXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVertexInputAttributeDescription2EXT-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVertexInputAttributeDescription2EXT-location-06228` (*yours*; explicit rule): `location` must be less than `VkPhysicalDeviceLimits::maxVertexInputAttributes`
+- `VUID-VkVertexInputAttributeDescription2EXT-binding-06229` (*yours*; explicit rule): `binding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings`
+- `VUID-VkVertexInputAttributeDescription2EXT-offset-06230` (*yours*; explicit rule): `offset` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputAttributeOffset`
+- `VUID-VkVertexInputAttributeDescription2EXT-format-04805` (*yours*; explicit rule): `format` must be allowed as a vertex buffer format, as specified by the `VK_FORMAT_FEATURE_VERTEX_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by …
+- `VUID-VkVertexInputAttributeDescription2EXT-vertexAttributeAccessBeyondStride-04806` (*yours*; explicit rule): If the VK_KHR_portability_subset extension is enabled, and VkPhysicalDevicePortabilitySubsetFeaturesKHR::`vertexAttributeAccessBeyondStride` is `VK_FALSE`, the sum of `offset` plus the size of the …
+- `VUID-VkVertexInputAttributeDescription2EXT-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-VkVertexInputAttributeDescription2EXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VERTEX_INPUT_ATTRIBUTE_DESCRIPTION_2_EXT`*/
 #[cfg(feature = "ext_vertex_input_dynamic_state")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -87,12 +90,16 @@ impl<'a> VertexInputAttributeDescription2EXT<'a> {
 
 # Valid usage
 
-The rules are on [`VkVertexInputBindingDescription2EXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVertexInputBindingDescription2EXT.html). Settled by the wrappers:
+The rules of `VkVertexInputBindingDescription2EXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVertexInputBindingDescription2EXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVertexInputBindingDescription2EXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVertexInputBindingDescription2EXT-inputRate-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVertexInputBindingDescription2EXT-binding-04796` (*yours*; explicit rule): `binding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings`
+- `VUID-VkVertexInputBindingDescription2EXT-stride-04797` (*yours*; explicit rule): `stride` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindingStride`
+- `VUID-VkVertexInputBindingDescription2EXT-divisor-04798` (*yours*; explicit rule): If the `vertexAttributeInstanceRateZeroDivisor` feature is not enabled, `divisor` must not be `0`
+- `VUID-VkVertexInputBindingDescription2EXT-divisor-04799` (*yours*; explicit rule): If the `vertexAttributeInstanceRateDivisor` feature is not enabled, `divisor` must be `1`
+- `VUID-VkVertexInputBindingDescription2EXT-divisor-06226` (*yours*; explicit rule): `divisor` must be a value between `0` and `VkPhysicalDeviceVertexAttributeDivisorPropertiesEXT::maxVertexAttribDivisor`, inclusive
+- `VUID-VkVertexInputBindingDescription2EXT-divisor-06227` (*yours*; explicit rule): If `divisor` is not `1` then `inputRate` must be of type `VK_VERTEX_INPUT_RATE_INSTANCE`
+- `VUID-VkVertexInputBindingDescription2EXT-inputRate-parameter` (*checked*): `inputRate` must be a valid VkVertexInputRate value
+- `VUID-VkVertexInputBindingDescription2EXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VERTEX_INPUT_BINDING_DESCRIPTION_2_EXT`*/
 #[cfg(feature = "ext_vertex_input_dynamic_state")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

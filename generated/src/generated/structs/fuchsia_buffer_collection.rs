@@ -6,12 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkBufferCollectionBufferCreateInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionBufferCreateInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkBufferCollectionBufferCreateInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionBufferCreateInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-collection-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-index-06388` (*yours*; explicit rule): `index` must be less than VkBufferCollectionPropertiesFUCHSIA::`bufferCount`
+- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_BUFFER_CREATE_INFO_FUCHSIA`
+- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -57,10 +56,10 @@ for BufferCollectionBufferCreateInfoFUCHSIA<'a> {}
 
 # Valid usage
 
-The rules are on [`VkBufferCollectionConstraintsInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionConstraintsInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkBufferCollectionConstraintsInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionConstraintsInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferCollectionConstraintsInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCollectionConstraintsInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkBufferCollectionConstraintsInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_CONSTRAINTS_INFO_FUCHSIA`
+- `VUID-VkBufferCollectionConstraintsInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -109,12 +108,11 @@ impl<'a> BufferCollectionConstraintsInfoFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkBufferCollectionCreateInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionCreateInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkBufferCollectionCreateInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionCreateInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferCollectionCreateInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCollectionCreateInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBufferCollectionCreateInfoFUCHSIA-collectionToken-06393` (*yours*; explicit rule): `collectionToken` must be a valid `zx_handle_t` to a Zircon channel allocated from Sysmem (`fuchsia.sysmem.Allocator`/AllocateSharedCollection) with `ZX_DEFAULT_CHANNEL_RIGHTS` rights
+- `VUID-VkBufferCollectionCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_CREATE_INFO_FUCHSIA`
+- `VUID-VkBufferCollectionCreateInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -143,12 +141,11 @@ impl<'a> BufferCollectionCreateInfoFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkBufferCollectionImageCreateInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionImageCreateInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkBufferCollectionImageCreateInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionImageCreateInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-collection-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-index-06391` (*yours*; explicit rule): `index` must be less than VkBufferCollectionPropertiesFUCHSIA::`bufferCount`
+- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_IMAGE_CREATE_INFO_FUCHSIA`
+- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -194,18 +191,18 @@ for BufferCollectionImageCreateInfoFUCHSIA<'a> {}
 
 # Valid usage
 
-The rules are on [`VkBufferCollectionPropertiesFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionPropertiesFUCHSIA.html). Settled by the wrappers:
+The rules of `VkBufferCollectionPropertiesFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionPropertiesFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-formatFeatures-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-formatFeatures-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-sysmemColorSpaceIndex-parameter`: static (set from the safe counterpart, which the constructor requires)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-samplerYcbcrConversionComponents-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedYcbcrModel-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedYcbcrRange-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedXChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedYChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-formatFeatures-parameter` (*checked*): `formatFeatures` must be a valid combination of VkFormatFeatureFlagBits values
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-formatFeatures-requiredbitmask` (*checked*): `formatFeatures` must not be `0`
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-samplerYcbcrConversionComponents-parameter` (*checked*): `samplerYcbcrConversionComponents` must be a valid VkComponentMapping structure
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedYcbcrModel-parameter` (*checked*): `suggestedYcbcrModel` must be a valid VkSamplerYcbcrModelConversion value
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedYcbcrRange-parameter` (*checked*): `suggestedYcbcrRange` must be a valid VkSamplerYcbcrRange value
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedXChromaOffset-parameter` (*checked*): `suggestedXChromaOffset` must be a valid VkChromaLocation value
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-suggestedYChromaOffset-parameter` (*checked*): `suggestedYChromaOffset` must be a valid VkChromaLocation value
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_PROPERTIES_FUCHSIA`
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkBufferCollectionPropertiesFUCHSIA-sysmemColorSpaceIndex-parameter` (*by the types*): `sysmemColorSpaceIndex` must be a valid VkSysmemColorSpaceFUCHSIA structure*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -311,15 +308,14 @@ impl<'a> BufferCollectionPropertiesFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkBufferConstraintsInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferConstraintsInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkBufferConstraintsInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferConstraintsInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferConstraintsInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferConstraintsInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferConstraintsInfoFUCHSIA-createInfo-parameter`: static (set from the safe counterpart, which the constructor requires)
-- `VUID-VkBufferConstraintsInfoFUCHSIA-requiredFormatFeatures-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkBufferConstraintsInfoFUCHSIA-bufferCollectionConstraints-parameter`: static (set from the safe counterpart, which the constructor requires)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBufferConstraintsInfoFUCHSIA-requiredFormatFeatures-06404` (*yours*; explicit rule): The `requiredFormatFeatures` bitmask of `VkFormatFeatureFlagBits` must be chosen from among the buffer compatible format features listed in buffer compatible format features
+- `VUID-VkBufferConstraintsInfoFUCHSIA-requiredFormatFeatures-parameter` (*checked*): `requiredFormatFeatures` must be a valid combination of VkFormatFeatureFlagBits values
+- `VUID-VkBufferConstraintsInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_CONSTRAINTS_INFO_FUCHSIA`
+- `VUID-VkBufferConstraintsInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkBufferConstraintsInfoFUCHSIA-createInfo-parameter` (*by the types*): `createInfo` must be a valid VkBufferCreateInfo structure
+- `VUID-VkBufferConstraintsInfoFUCHSIA-bufferCollectionConstraints-parameter` (*by the types*): `bufferCollectionConstraints` must be a valid VkBufferCollectionConstraintsInfoFUCHSIA structure*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -375,16 +371,21 @@ impl<'a> BufferConstraintsInfoFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkImageConstraintsInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageConstraintsInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkImageConstraintsInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageConstraintsInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageConstraintsInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageConstraintsInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkImageConstraintsInfoFUCHSIA-bufferCollectionConstraints-parameter`: static (set from the safe counterpart, which the constructor requires)
-- `VUID-VkImageConstraintsInfoFUCHSIA-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageConstraintsInfoFUCHSIA-formatConstraintsCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-06395` (*yours*; explicit rule): All elements of `pFormatConstraints` must have at least one bit set in its VkImageFormatConstraintsInfoFUCHSIA::`requiredFormatFeatures`
+- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-06396` (*yours*; explicit rule): If `pFormatConstraints::imageCreateInfo::usage` contains `VK_IMAGE_USAGE_SAMPLED_BIT`, then `pFormatConstraints::requiredFormatFeatures` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT`
+- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-06397` (*yours*; explicit rule): If `pFormatConstraints::imageCreateInfo::usage` contains `VK_IMAGE_USAGE_STORAGE_BIT`, then `pFormatConstraints::requiredFormatFeatures` must contain `VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT`
+- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-06398` (*yours*; explicit rule): If `pFormatConstraints::imageCreateInfo::usage` contains `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, then `pFormatConstraints::requiredFormatFeatures` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-06399` (*yours*; explicit rule): If `pFormatConstraints::imageCreateInfo::usage` contains `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, then `pFormatConstraints::requiredFormatFeatures` must contain …
+- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-06400` (*yours*; explicit rule): If `pFormatConstraints::imageCreateInfo::usage` contains `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`, then `pFormatConstraints::requiredFormatFeatures` must contain at least one of …
+- `VUID-VkImageConstraintsInfoFUCHSIA-attachmentFragmentShadingRate-06401` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is enabled, and `pFormatConstraints::imageCreateInfo::usage` contains `VK_IMAGE_USAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`, then …
+- `VUID-VkImageConstraintsInfoFUCHSIA-flags-parameter` (*checked*): `flags` must be a valid combination of VkImageConstraintsInfoFlagBitsFUCHSIA values
+- `VUID-VkImageConstraintsInfoFUCHSIA-formatConstraintsCount-arraylength` (*checked*): `formatConstraintsCount` must be greater than `0`
+- `VUID-VkImageConstraintsInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_CONSTRAINTS_INFO_FUCHSIA`
+- `VUID-VkImageConstraintsInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImageConstraintsInfoFUCHSIA-pFormatConstraints-parameter` (*by the types*): `pFormatConstraints` must be a valid pointer to an array of `formatConstraintsCount` valid VkImageFormatConstraintsInfoFUCHSIA structures
+- `VUID-VkImageConstraintsInfoFUCHSIA-bufferCollectionConstraints-parameter` (*by the types*): `bufferCollectionConstraints` must be a valid VkBufferCollectionConstraintsInfoFUCHSIA structure*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -442,16 +443,16 @@ impl<'a> ImageConstraintsInfoFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkImageFormatConstraintsInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatConstraintsInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkImageFormatConstraintsInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatConstraintsInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-imageCreateInfo-parameter`: static (set from the safe counterpart, which the constructor requires)
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-requiredFormatFeatures-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-requiredFormatFeatures-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-pColorSpaces-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkImageFormatConstraintsInfoFUCHSIA-colorSpaceCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-requiredFormatFeatures-parameter` (*checked*): `requiredFormatFeatures` must be a valid combination of VkFormatFeatureFlagBits values
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-requiredFormatFeatures-requiredbitmask` (*checked*): `requiredFormatFeatures` must not be `0`
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-colorSpaceCount-arraylength` (*checked*): `colorSpaceCount` must be greater than `0`
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_FORMAT_CONSTRAINTS_INFO_FUCHSIA`
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-imageCreateInfo-parameter` (*by the types*): `imageCreateInfo` must be a valid VkImageCreateInfo structure
+- `VUID-VkImageFormatConstraintsInfoFUCHSIA-pColorSpaces-parameter` (*by the types*): `pColorSpaces` must be a valid pointer to an array of `colorSpaceCount` valid VkSysmemColorSpaceFUCHSIA structures*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -513,12 +514,11 @@ impl<'a> ImageFormatConstraintsInfoFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkImportMemoryBufferCollectionFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryBufferCollectionFUCHSIA.html). Settled by the wrappers:
+The rules of `VkImportMemoryBufferCollectionFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryBufferCollectionFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMemoryBufferCollectionFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportMemoryBufferCollectionFUCHSIA-collection-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportMemoryBufferCollectionFUCHSIA-index-06406` (*yours*; explicit rule): `index` must be less than the value retrieved as VkBufferCollectionPropertiesFUCHSIA:bufferCount
+- `VUID-VkImportMemoryBufferCollectionFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_BUFFER_COLLECTION_FUCHSIA`
+- `VUID-VkImportMemoryBufferCollectionFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -564,12 +564,11 @@ for ImportMemoryBufferCollectionFUCHSIA<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSysmemColorSpaceFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSysmemColorSpaceFUCHSIA.html). Settled by the wrappers:
+The rules of `VkSysmemColorSpaceFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSysmemColorSpaceFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSysmemColorSpaceFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSysmemColorSpaceFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSysmemColorSpaceFUCHSIA-colorSpace-06402` (*yours*; explicit rule): `colorSpace` must be a `ColorSpaceType` as defined in `fuchsia.sysmem/image_formats.fidl`
+- `VUID-VkSysmemColorSpaceFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SYSMEM_COLOR_SPACE_FUCHSIA`
+- `VUID-VkSysmemColorSpaceFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

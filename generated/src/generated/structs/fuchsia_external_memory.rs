@@ -6,12 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImportMemoryZirconHandleInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryZirconHandleInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkImportMemoryZirconHandleInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryZirconHandleInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMemoryZirconHandleInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportMemoryZirconHandleInfoFUCHSIA-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportMemoryZirconHandleInfoFUCHSIA-handleType-04771` (*yours*; explicit rule): `handleType` must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`
+- `VUID-VkImportMemoryZirconHandleInfoFUCHSIA-handle-04772` (*yours*; explicit rule): `handle` must be a valid VMO handle
+- `VUID-VkImportMemoryZirconHandleInfoFUCHSIA-handleType-parameter` (*checked*): If `handleType` is not `0`, `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkImportMemoryZirconHandleInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_ZIRCON_HANDLE_INFO_FUCHSIA`*/
 #[cfg(feature = "fuchsia_external_memory")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -49,14 +49,14 @@ for ImportMemoryZirconHandleInfoFUCHSIA<'a> {}
 
 # Valid usage
 
-The rules are on [`VkMemoryGetZirconHandleInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetZirconHandleInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkMemoryGetZirconHandleInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetZirconHandleInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-04775` (*yours*; explicit rule): `handleType` must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-04776` (*yours*; explicit rule): `handleType` must have been included in the `handleTypes` field of the `VkExportMemoryAllocateInfo` structure when the external memory was allocated
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_ZIRCON_HANDLE_INFO_FUCHSIA`
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[cfg(feature = "fuchsia_external_memory")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -99,10 +99,10 @@ impl<'a> MemoryGetZirconHandleInfoFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkMemoryZirconHandlePropertiesFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryZirconHandlePropertiesFUCHSIA.html). Settled by the wrappers:
+The rules of `VkMemoryZirconHandlePropertiesFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryZirconHandlePropertiesFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryZirconHandlePropertiesFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryZirconHandlePropertiesFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkMemoryZirconHandlePropertiesFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_ZIRCON_HANDLE_PROPERTIES_FUCHSIA`
+- `VUID-VkMemoryZirconHandlePropertiesFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_external_memory")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

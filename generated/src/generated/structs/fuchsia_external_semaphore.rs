@@ -6,15 +6,17 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImportSemaphoreZirconHandleInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportSemaphoreZirconHandleInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkImportSemaphoreZirconHandleInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportSemaphoreZirconHandleInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-handleType-04765` (*yours*; explicit rule): `handleType` must be a value included in the Handle Types Supported by `VkImportSemaphoreZirconHandleInfoFUCHSIA` table
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-zirconHandle-04766` (*yours*; explicit rule): `zirconHandle` must obey any requirements listed for `handleType` in external semaphore handle types compatibility
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-zirconHandle-04767` (*yours*; explicit rule): `zirconHandle` must have `ZX_RIGHTS_BASIC` and `ZX_RIGHTS_SIGNAL` rights
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-semaphoreType-04768` (*yours*; explicit rule): The VkSemaphoreTypeCreateInfo::`semaphoreType` field must not be `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreImportFlagBits values
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_SEMAPHORE_ZIRCON_HANDLE_INFO_FUCHSIA`
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
 #[cfg(feature = "fuchsia_external_semaphore")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -73,14 +75,18 @@ impl<'a> ImportSemaphoreZirconHandleInfoFUCHSIA<'a> {
 
 # Valid usage
 
-The rules are on [`VkSemaphoreGetZirconHandleInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreGetZirconHandleInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkSemaphoreGetZirconHandleInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreGetZirconHandleInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04758` (*yours*; explicit rule): `handleType` must have been included in VkExportSemaphoreCreateInfo::`handleTypes` when `semaphore`&#8217;s current payload was created
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-04759` (*yours*; explicit rule): `semaphore` must not currently have its payload replaced by an imported payload as described below in Importing Semaphore Payloads unless that imported payload&#8217;s handle type was included in …
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04760` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, as defined below in Importing Semaphore Payloads, there must be no queue waiting on `semaphore`
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04761` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must be signaled, or have an associated semaphore signal operation pending execution
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04762` (*yours*; explicit rule): `handleType` must be defined as a Zircon event handle
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-04763` (*yours*; explicit rule): `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_GET_ZIRCON_HANDLE_INFO_FUCHSIA`
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
 #[cfg(feature = "fuchsia_external_semaphore")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImagePipeSurfaceCreateInfoFUCHSIA`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImagePipeSurfaceCreateInfoFUCHSIA.html). Settled by the wrappers:
+The rules of `VkImagePipeSurfaceCreateInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImagePipeSurfaceCreateInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-imagePipeHandle-04863` (*yours*; explicit rule): `imagePipeHandle` must be a valid `zx_handle_t`
+- `VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGEPIPE_SURFACE_CREATE_INFO_FUCHSIA`
+- `VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_imagepipe_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPresentFrameTokenGGP`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentFrameTokenGGP.html). Settled by the wrappers:
+The rules of `VkPresentFrameTokenGGP` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentFrameTokenGGP.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPresentFrameTokenGGP-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPresentFrameTokenGGP-frameToken-02680` (*yours*; explicit rule): `frameToken` must be a valid `GgpFrameToken`
+- `VUID-VkPresentFrameTokenGGP-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PRESENT_FRAME_TOKEN_GGP`*/
 #[cfg(feature = "ggp_frame_token")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkStreamDescriptorSurfaceCreateInfoGGP`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkStreamDescriptorSurfaceCreateInfoGGP.html). Settled by the wrappers:
+The rules of `VkStreamDescriptorSurfaceCreateInfoGGP` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkStreamDescriptorSurfaceCreateInfoGGP.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkStreamDescriptorSurfaceCreateInfoGGP-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkStreamDescriptorSurfaceCreateInfoGGP-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkStreamDescriptorSurfaceCreateInfoGGP-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkStreamDescriptorSurfaceCreateInfoGGP-streamDescriptor-02681` (*yours*; explicit rule): `streamDescriptor` must be a valid `GgpStreamDescriptor`
+- `VUID-VkStreamDescriptorSurfaceCreateInfoGGP-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkStreamDescriptorSurfaceCreateInfoGGP-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_STREAM_DESCRIPTOR_SURFACE_CREATE_INFO_GGP`
+- `VUID-VkStreamDescriptorSurfaceCreateInfoGGP-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ggp_stream_descriptor_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPresentTimesInfoGOOGLE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentTimesInfoGOOGLE.html). Settled by the wrappers:
+The rules of `VkPresentTimesInfoGOOGLE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentTimesInfoGOOGLE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPresentTimesInfoGOOGLE-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPresentTimesInfoGOOGLE-pTimes-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPresentTimesInfoGOOGLE-swapchainCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPresentTimesInfoGOOGLE-swapchainCount-01247` (*yours*; explicit rule): `swapchainCount` must be the same value as `VkPresentInfoKHR::swapchainCount`, where `VkPresentInfoKHR` is included in the `pNext` chain of this `VkPresentTimesInfoGOOGLE` structure
+- `VUID-VkPresentTimesInfoGOOGLE-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-VkPresentTimesInfoGOOGLE-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PRESENT_TIMES_INFO_GOOGLE`
+- `VUID-VkPresentTimesInfoGOOGLE-pTimes-parameter` (*by the types*): If `pTimes` is not `NULL`, `pTimes` must be a valid pointer to an array of `swapchainCount` VkPresentTimeGOOGLE structures*/
 #[cfg(feature = "google_display_timing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

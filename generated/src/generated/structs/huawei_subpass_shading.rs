@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSubpassShadingFeaturesHUAWEI`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubpassShadingFeaturesHUAWEI.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSubpassShadingFeaturesHUAWEI` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubpassShadingFeaturesHUAWEI.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSubpassShadingFeaturesHUAWEI-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSubpassShadingFeaturesHUAWEI-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBPASS_SHADING_FEATURES_HUAWEI`*/
 #[cfg(feature = "huawei_subpass_shading")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,9 +39,9 @@ for PhysicalDeviceSubpassShadingFeaturesHUAWEI<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSubpassShadingPropertiesHUAWEI`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubpassShadingPropertiesHUAWEI.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSubpassShadingPropertiesHUAWEI` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubpassShadingPropertiesHUAWEI.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSubpassShadingPropertiesHUAWEI-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSubpassShadingPropertiesHUAWEI-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBPASS_SHADING_PROPERTIES_HUAWEI`*/
 #[cfg(feature = "huawei_subpass_shading")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -60,11 +60,10 @@ for PhysicalDeviceSubpassShadingPropertiesHUAWEI<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSubpassShadingPipelineCreateInfoHUAWEI`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassShadingPipelineCreateInfoHUAWEI.html). Settled by the wrappers:
+The rules of `VkSubpassShadingPipelineCreateInfoHUAWEI` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassShadingPipelineCreateInfoHUAWEI.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassShadingPipelineCreateInfoHUAWEI-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSubpassShadingPipelineCreateInfoHUAWEI-subpass-04946` (*yours*; explicit rule): `subpass` must be created with `VK_PIPELINE_BIND_POINT_SUBPASS_SHADING_HUAWEI` bind point
+- `VUID-VkSubpassShadingPipelineCreateInfoHUAWEI-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_SHADING_PIPELINE_CREATE_INFO_HUAWEI`*/
 #[cfg(feature = "huawei_subpass_shading")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkInitializePerformanceApiInfoINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkInitializePerformanceApiInfoINTEL.html). Settled by the wrappers:
+The rules of `VkInitializePerformanceApiInfoINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkInitializePerformanceApiInfoINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkInitializePerformanceApiInfoINTEL-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkInitializePerformanceApiInfoINTEL-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkInitializePerformanceApiInfoINTEL-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_INITIALIZE_PERFORMANCE_API_INFO_INTEL`
+- `VUID-VkInitializePerformanceApiInfoINTEL-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "intel_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -34,11 +34,11 @@ impl<'a> InitializePerformanceApiInfoINTEL<'a> {
 
 # Valid usage
 
-The rules are on [`VkPerformanceConfigurationAcquireInfoINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceConfigurationAcquireInfoINTEL.html). Settled by the wrappers:
+The rules of `VkPerformanceConfigurationAcquireInfoINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceConfigurationAcquireInfoINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPerformanceConfigurationAcquireInfoINTEL-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPerformanceConfigurationAcquireInfoINTEL-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPerformanceConfigurationAcquireInfoINTEL-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPerformanceConfigurationAcquireInfoINTEL-type-parameter` (*checked*): `type` must be a valid VkPerformanceConfigurationTypeINTEL value
+- `VUID-VkPerformanceConfigurationAcquireInfoINTEL-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PERFORMANCE_CONFIGURATION_ACQUIRE_INFO_INTEL`
+- `VUID-VkPerformanceConfigurationAcquireInfoINTEL-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "intel_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -63,10 +63,10 @@ impl<'a> PerformanceConfigurationAcquireInfoINTEL<'a> {
 
 # Valid usage
 
-The rules are on [`VkPerformanceMarkerInfoINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceMarkerInfoINTEL.html). Settled by the wrappers:
+The rules of `VkPerformanceMarkerInfoINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceMarkerInfoINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPerformanceMarkerInfoINTEL-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPerformanceMarkerInfoINTEL-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPerformanceMarkerInfoINTEL-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PERFORMANCE_MARKER_INFO_INTEL`
+- `VUID-VkPerformanceMarkerInfoINTEL-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "intel_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -91,11 +91,11 @@ impl<'a> PerformanceMarkerInfoINTEL<'a> {
 
 # Valid usage
 
-The rules are on [`VkPerformanceOverrideInfoINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceOverrideInfoINTEL.html). Settled by the wrappers:
+The rules of `VkPerformanceOverrideInfoINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceOverrideInfoINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPerformanceOverrideInfoINTEL-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPerformanceOverrideInfoINTEL-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPerformanceOverrideInfoINTEL-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPerformanceOverrideInfoINTEL-type-parameter` (*checked*): `type` must be a valid VkPerformanceOverrideTypeINTEL value
+- `VUID-VkPerformanceOverrideInfoINTEL-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PERFORMANCE_OVERRIDE_INFO_INTEL`
+- `VUID-VkPerformanceOverrideInfoINTEL-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "intel_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -132,12 +132,11 @@ impl<'a> PerformanceOverrideInfoINTEL<'a> {
 
 # Valid usage
 
-The rules are on [`VkPerformanceStreamMarkerInfoINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceStreamMarkerInfoINTEL.html). Settled by the wrappers:
+The rules of `VkPerformanceStreamMarkerInfoINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceStreamMarkerInfoINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPerformanceStreamMarkerInfoINTEL-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPerformanceStreamMarkerInfoINTEL-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPerformanceStreamMarkerInfoINTEL-marker-02735` (*yours*; explicit rule): The value written by the application into `marker` must only used the valid bits as reported by vkGetPerformanceParameterINTEL with the `VK_PERFORMANCE_PARAMETER_TYPE_STREAM_MARKER_VALID_BITS_INTEL`
+- `VUID-VkPerformanceStreamMarkerInfoINTEL-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PERFORMANCE_STREAM_MARKER_INFO_INTEL`
+- `VUID-VkPerformanceStreamMarkerInfoINTEL-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "intel_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -162,10 +161,10 @@ impl<'a> PerformanceStreamMarkerInfoINTEL<'a> {
 
 # Valid usage
 
-The rules are on [`VkQueryPoolPerformanceQueryCreateInfoINTEL`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolPerformanceQueryCreateInfoINTEL.html). Settled by the wrappers:
+The rules of `VkQueryPoolPerformanceQueryCreateInfoINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolPerformanceQueryCreateInfoINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueryPoolPerformanceQueryCreateInfoINTEL-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkQueryPoolPerformanceQueryCreateInfoINTEL-performanceCountersSampling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkQueryPoolPerformanceQueryCreateInfoINTEL-performanceCountersSampling-parameter` (*checked*): `performanceCountersSampling` must be a valid VkQueryPoolSamplingModeINTEL value
+- `VUID-VkQueryPoolPerformanceQueryCreateInfoINTEL-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUERY_POOL_PERFORMANCE_QUERY_CREATE_INFO_INTEL`*/
 #[cfg(feature = "intel_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,17 +6,29 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureBuildGeometryInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureBuildGeometryInfoKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureBuildGeometryInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureBuildGeometryInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-pGeometries-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-ppGeometries-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
-- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 14 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03654` (*yours*; explicit rule): `type` must not be `VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-pGeometries-03788` (*yours*; explicit rule): Only one of `pGeometries` or `ppGeometries` can be a valid pointer, the other must be `NULL`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03789` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`, the `geometryType` member of elements of either `pGeometries` or `ppGeometries` must be `VK_GEOMETRY_TYPE_INSTANCES_KHR`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03790` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`, `geometryCount` must be `1`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03791` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR` the `geometryType` member of elements of either `pGeometries` or `ppGeometries` must not be `VK_GEOMETRY_TYPE_INSTANCES_KHR`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03792` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR` then the `geometryType` member of each geometry in either `pGeometries` or `ppGeometries` must be the same
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03793` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR` then `geometryCount` must be less than or equal to VkPhysicalDeviceAccelerationStructurePropertiesKHR::`maxGeometryCount`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03794` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR` and the `geometryType` member of either `pGeometries` or `ppGeometries` is `VK_GEOMETRY_TYPE_AABBS_KHR`, the total number of AABBs in all …
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-03795` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR` and the `geometryType` member of either `pGeometries` or `ppGeometries` is `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, the total number of …
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-03796` (*yours*; explicit rule): If `flags` has the `VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR` bit set, then it must not have the `VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_BUILD_BIT_KHR` bit set
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-dstAccelerationStructure-04927` (*yours*; explicit rule): If `dstAccelerationStructure` was created with `VK_ACCELERATION_STRUCTURE_CREATE_MOTION_BIT_NV` set in VkAccelerationStructureCreateInfoKHR::`flags`, `VK_BUILD_ACCELERATION_STRUCTURE_MOTION_BIT_NV` …
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-04928` (*yours*; explicit rule): If `VK_BUILD_ACCELERATION_STRUCTURE_MOTION_BIT_NV` is set in `flags`, `dstAccelerationStructure` must have been created with `VK_ACCELERATION_STRUCTURE_CREATE_MOTION_BIT_NV` set in …
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-04929` (*yours*; explicit rule): If `VK_BUILD_ACCELERATION_STRUCTURE_MOTION_BIT_NV` is set in `flags`, `type` must not be `VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-07334` (*yours*; explicit rule): If `flags` has the `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_OPACITY_MICROMAP_UPDATE_EXT` bit set then it must not have the `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_OPACITY_MICROMAP_DATA_UPDATE_EXT` bit …
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-type-parameter` (*checked*): `type` must be a valid VkAccelerationStructureTypeKHR value
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkBuildAccelerationStructureFlagBitsKHR values
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-commonparent` (*checked*): Both of `dstAccelerationStructure`, and `srcAccelerationStructure` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-pGeometries-parameter` (*by the types*): If `geometryCount` is not `0`, and `pGeometries` is not `NULL`, `pGeometries` must be a valid pointer to an array of `geometryCount` valid VkAccelerationStructureGeometryKHR structures
+- `VUID-VkAccelerationStructureBuildGeometryInfoKHR-ppGeometries-parameter` (*by the types*): If `geometryCount` is not `0`, and `ppGeometries` is not `NULL`, `ppGeometries` must be a valid pointer to an array of `geometryCount` valid pointers to valid VkAccelerationStructureGeometryKHR …*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -93,10 +105,10 @@ impl<'a> AccelerationStructureBuildGeometryInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureBuildSizesInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureBuildSizesInfoKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureBuildSizesInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureBuildSizesInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureBuildSizesInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureBuildSizesInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkAccelerationStructureBuildSizesInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR`
+- `VUID-VkAccelerationStructureBuildSizesInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -133,16 +145,24 @@ impl<'a> AccelerationStructureBuildSizesInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkAccelerationStructureCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkAccelerationStructureCreateInfoKHR-createFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAccelerationStructureCreateInfoKHR-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkAccelerationStructureCreateInfoKHR-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkAccelerationStructureCreateInfoKHR-deviceAddress-03612` (*yours*; explicit rule): If `deviceAddress` is not zero, `createFlags` must include `VK_ACCELERATION_STRUCTURE_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT_KHR`
+- `VUID-VkAccelerationStructureCreateInfoKHR-createFlags-03613` (*yours*; explicit rule): If `createFlags` includes `VK_ACCELERATION_STRUCTURE_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT_KHR`, VkPhysicalDeviceAccelerationStructureFeaturesKHR::`accelerationStructureCaptureReplay` must be …
+- `VUID-VkAccelerationStructureCreateInfoKHR-buffer-03614` (*yours*; explicit rule): `buffer` must have been created with a `usage` value containing `VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR`
+- `VUID-VkAccelerationStructureCreateInfoKHR-buffer-03615` (*yours*; explicit rule): `buffer` must not have been created with `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT`
+- `VUID-VkAccelerationStructureCreateInfoKHR-offset-03616` (*yours*; explicit rule): The sum of `offset` and `size` must be less than the size of `buffer`
+- `VUID-VkAccelerationStructureCreateInfoKHR-offset-03734` (*yours*; explicit rule): `offset` must be a multiple of `256` bytes
+- `VUID-VkAccelerationStructureCreateInfoKHR-flags-04954` (*yours*; explicit rule): If `VK_ACCELERATION_STRUCTURE_CREATE_MOTION_BIT_NV` is set in `flags` and `type` is `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`, one member of the `pNext` chain must be a pointer to a valid …
+- `VUID-VkAccelerationStructureCreateInfoKHR-flags-04955` (*yours*; explicit rule): If any geometry includes `VkAccelerationStructureGeometryMotionTrianglesDataNV` then `flags` must contain `VK_ACCELERATION_STRUCTURE_CREATE_MOTION_BIT_NV`
+- `VUID-VkAccelerationStructureCreateInfoKHR-createFlags-08108` (*yours*; explicit rule): If `createFlags` includes `VK_ACCELERATION_STRUCTURE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT`, the `descriptorBufferCaptureReplay` feature must be enabled
+- `VUID-VkAccelerationStructureCreateInfoKHR-pNext-08109` (*yours*; explicit rule): If the `pNext` chain includes a VkOpaqueCaptureDescriptorDataCreateInfoEXT structure, `createFlags` must contain `VK_ACCELERATION_STRUCTURE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT`
+- `VUID-VkAccelerationStructureCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkAccelerationStructureCreateInfoKHR-createFlags-parameter` (*checked*): `createFlags` must be a valid combination of VkAccelerationStructureCreateFlagBitsKHR values
+- `VUID-VkAccelerationStructureCreateInfoKHR-type-parameter` (*checked*): `type` must be a valid VkAccelerationStructureTypeKHR value
+- `VUID-VkAccelerationStructureCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR`
+- `VUID-VkAccelerationStructureCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAccelerationStructureMotionInfoNV or …
+- `VUID-VkAccelerationStructureCreateInfoKHR-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -212,11 +232,11 @@ impl<'a> AccelerationStructureCreateInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureDeviceAddressInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureDeviceAddressInfoKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureDeviceAddressInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureDeviceAddressInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-accelerationStructure-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR`
+- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-accelerationStructure-parameter` (*by the types*): `accelerationStructure` must be a valid VkAccelerationStructureKHR handle*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -256,12 +276,12 @@ impl<'a> AccelerationStructureDeviceAddressInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureGeometryAabbsDataKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryAabbsDataKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureGeometryAabbsDataKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryAabbsDataKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureGeometryAabbsDataKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureGeometryAabbsDataKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkAccelerationStructureGeometryAabbsDataKHR-stride-03545` (*yours*; explicit rule): `stride` must be a multiple of `8`
+- `VUID-VkAccelerationStructureGeometryAabbsDataKHR-stride-03820` (*yours*; explicit rule): `stride` must be less than or equal to 232-1
+- `VUID-VkAccelerationStructureGeometryAabbsDataKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR`
+- `VUID-VkAccelerationStructureGeometryAabbsDataKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -286,10 +306,10 @@ impl<'a> AccelerationStructureGeometryAabbsDataKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureGeometryInstancesDataKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryInstancesDataKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureGeometryInstancesDataKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryInstancesDataKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureGeometryInstancesDataKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureGeometryInstancesDataKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkAccelerationStructureGeometryInstancesDataKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR`
+- `VUID-VkAccelerationStructureGeometryInstancesDataKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -314,14 +334,15 @@ impl<'a> AccelerationStructureGeometryInstancesDataKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureGeometryKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureGeometryKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureGeometryKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureGeometryKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAccelerationStructureGeometryKHR-geometryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAccelerationStructureGeometryKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (`parameter` rules are not checked yet).*/
+- `VUID-VkAccelerationStructureGeometryKHR-triangles-parameter` (*yours*; `parameter` rules are not checked yet): If `geometryType` is `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, the `triangles` member of `geometry` must be a valid VkAccelerationStructureGeometryTrianglesDataKHR structure
+- `VUID-VkAccelerationStructureGeometryKHR-aabbs-parameter` (*yours*; `parameter` rules are not checked yet): If `geometryType` is `VK_GEOMETRY_TYPE_AABBS_KHR`, the `aabbs` member of `geometry` must be a valid VkAccelerationStructureGeometryAabbsDataKHR structure
+- `VUID-VkAccelerationStructureGeometryKHR-instances-parameter` (*yours*; `parameter` rules are not checked yet): If `geometryType` is `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the `instances` member of `geometry` must be a valid VkAccelerationStructureGeometryInstancesDataKHR structure
+- `VUID-VkAccelerationStructureGeometryKHR-geometryType-parameter` (*checked*): `geometryType` must be a valid VkGeometryTypeKHR value
+- `VUID-VkAccelerationStructureGeometryKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkGeometryFlagBitsKHR values
+- `VUID-VkAccelerationStructureGeometryKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR`
+- `VUID-VkAccelerationStructureGeometryKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -352,16 +373,17 @@ impl<'a> AccelerationStructureGeometryKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureGeometryTrianglesDataKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryTrianglesDataKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureGeometryTrianglesDataKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryTrianglesDataKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7.
-
-- 1: `unique` rules are not checked yet
-- 2: enum or flags value; ash types accept any raw value, not checked
-- 4: explicit rule; the wrappers do not check it*/
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexStride-03735` (*yours*; explicit rule): `vertexStride` must be a multiple of the size in bytes of the smallest component of `vertexFormat`
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexStride-03819` (*yours*; explicit rule): `vertexStride` must be less than or equal to 232-1
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexFormat-03797` (*yours*; explicit rule): `vertexFormat` must support the `VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR` in VkFormatProperties::`bufferFeatures` as returned by vkGetPhysicalDeviceFormatProperties2
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-indexType-03798` (*yours*; explicit rule): `indexType` must be `VK_INDEX_TYPE_UINT16`, `VK_INDEX_TYPE_UINT32`, or `VK_INDEX_TYPE_NONE_KHR`
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-sType-unique` (*yours*; `unique` rules are not checked yet): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexFormat-parameter` (*yours*; enum or flags value): `vertexFormat` must be a valid VkFormat value
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-indexType-parameter` (*yours*; enum or flags value): `indexType` must be a valid VkIndexType value
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR`
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAccelerationStructureGeometryMotionTrianglesDataNV or …*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -404,12 +426,11 @@ impl<'a> AccelerationStructureGeometryTrianglesDataKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureVersionInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureVersionInfoKHR.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureVersionInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureVersionInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureVersionInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureVersionInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not settable safely (a pointer whose length the registry gives as an expression)).*/
+- `VUID-VkAccelerationStructureVersionInfoKHR-pVersionData-parameter` (*yours*; not settable safely): `pVersionData` must be a valid pointer to an array of \(2 \times \mathtt{VK\_UUID\_SIZE}\) `uint8_t` values
+- `VUID-VkAccelerationStructureVersionInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR`
+- `VUID-VkAccelerationStructureVersionInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -425,16 +446,21 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkCopyAccelerationStructureInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyAccelerationStructureInfoKHR.html). Settled by the wrappers:
+The rules of `VkCopyAccelerationStructureInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyAccelerationStructureInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyAccelerationStructureInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCopyAccelerationStructureInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCopyAccelerationStructureInfoKHR-src-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyAccelerationStructureInfoKHR-dst-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyAccelerationStructureInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkCopyAccelerationStructureInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCopyAccelerationStructureInfoKHR-mode-03410` (*yours*; explicit rule): `mode` must be `VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR` or `VK_COPY_ACCELERATION_STRUCTURE_MODE_CLONE_KHR`
+- `VUID-VkCopyAccelerationStructureInfoKHR-src-04963` (*yours*; explicit rule): The source acceleration structure `src` must have been constructed prior to the execution of this command
+- `VUID-VkCopyAccelerationStructureInfoKHR-src-03411` (*yours*; explicit rule): If `mode` is `VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR`, `src` must have been constructed with `VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_COMPACTION_BIT_KHR` in the build
+- `VUID-VkCopyAccelerationStructureInfoKHR-buffer-03718` (*yours*; explicit rule): The `buffer` used to create `src` must be bound to device memory
+- `VUID-VkCopyAccelerationStructureInfoKHR-buffer-03719` (*yours*; explicit rule): The `buffer` used to create `dst` must be bound to device memory
+- `VUID-VkCopyAccelerationStructureInfoKHR-dst-07791` (*yours*; explicit rule): The range of memory backing `dst` that is accessed by this command must not overlap the memory backing `src` that is accessed by this command
+- `VUID-VkCopyAccelerationStructureInfoKHR-dst-07792` (*yours*; explicit rule): `dst` must be bound completely and contiguously to a single `VkDeviceMemory` object via vkBindAccelerationStructureMemoryNV
+- `VUID-VkCopyAccelerationStructureInfoKHR-mode-parameter` (*checked*): `mode` must be a valid VkCopyAccelerationStructureModeKHR value
+- `VUID-VkCopyAccelerationStructureInfoKHR-commonparent` (*checked*): Both of `dst`, and `src` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkCopyAccelerationStructureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR`
+- `VUID-VkCopyAccelerationStructureInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCopyAccelerationStructureInfoKHR-src-parameter` (*by the types*): `src` must be a valid VkAccelerationStructureKHR handle
+- `VUID-VkCopyAccelerationStructureInfoKHR-dst-parameter` (*by the types*): `dst` must be a valid VkAccelerationStructureKHR handle*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -487,14 +513,15 @@ impl<'a> CopyAccelerationStructureInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkCopyAccelerationStructureToMemoryInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyAccelerationStructureToMemoryInfoKHR.html). Settled by the wrappers:
+The rules of `VkCopyAccelerationStructureToMemoryInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyAccelerationStructureToMemoryInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-src-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-src-04959` (*yours*; explicit rule): The source acceleration structure `src` must have been constructed prior to the execution of this command
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-dst-03561` (*yours*; explicit rule): The memory pointed to by `dst` must be at least as large as the serialization size of `src`, as reported by vkWriteAccelerationStructuresPropertiesKHR or vkCmdWriteAccelerationStructuresPropertiesKHR …
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-mode-03412` (*yours*; explicit rule): `mode` must be `VK_COPY_ACCELERATION_STRUCTURE_MODE_SERIALIZE_KHR`
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-mode-parameter` (*checked*): `mode` must be a valid VkCopyAccelerationStructureModeKHR value
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_TO_MEMORY_INFO_KHR`
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-src-parameter` (*by the types*): `src` must be a valid VkAccelerationStructureKHR handle*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -537,14 +564,16 @@ impl<'a> CopyAccelerationStructureToMemoryInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkCopyMemoryToAccelerationStructureInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMemoryToAccelerationStructureInfoKHR.html). Settled by the wrappers:
+The rules of `VkCopyMemoryToAccelerationStructureInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyMemoryToAccelerationStructureInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-dst-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-src-04960` (*yours*; explicit rule): The source memory pointed to by `src` must contain data previously serialized using vkCmdCopyAccelerationStructureToMemoryKHR, potentially modified to relocate acceleration structure references as …
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-mode-03413` (*yours*; explicit rule): `mode` must be `VK_COPY_ACCELERATION_STRUCTURE_MODE_DESERIALIZE_KHR`
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-pInfo-03414` (*yours*; explicit rule): The data in `src` must have a format compatible with the destination physical device as returned by vkGetDeviceAccelerationStructureCompatibilityKHR
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-dst-03746` (*yours*; explicit rule): `dst` must have been created with a `size` greater than or equal to that used to serialize the data in `src`
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-mode-parameter` (*checked*): `mode` must be a valid VkCopyAccelerationStructureModeKHR value
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MEMORY_TO_ACCELERATION_STRUCTURE_INFO_KHR`
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-dst-parameter` (*by the types*): `dst` must be a valid VkAccelerationStructureKHR handle*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -587,9 +616,9 @@ impl<'a> CopyMemoryToAccelerationStructureInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceAccelerationStructureFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAccelerationStructureFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceAccelerationStructureFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAccelerationStructureFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceAccelerationStructureFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceAccelerationStructureFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -649,9 +678,9 @@ for PhysicalDeviceAccelerationStructureFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceAccelerationStructurePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAccelerationStructurePropertiesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceAccelerationStructurePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAccelerationStructurePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceAccelerationStructurePropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceAccelerationStructurePropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -670,13 +699,14 @@ for PhysicalDeviceAccelerationStructurePropertiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkWriteDescriptorSetAccelerationStructureKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWriteDescriptorSetAccelerationStructureKHR.html). Settled by the wrappers:
+The rules of `VkWriteDescriptorSetAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWriteDescriptorSetAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-accelerationStructureCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-accelerationStructureCount-02236` (*yours*; explicit rule): `accelerationStructureCount` must be equal to `descriptorCount` in the extended structure
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-03579` (*yours*; explicit rule): Each acceleration structure in `pAccelerationStructures` must have been created with a `type` of `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR` or `VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR`
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-03580` (*yours*; explicit rule): If the `nullDescriptor` feature is not enabled, each element of `pAccelerationStructures` must not be VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-accelerationStructureCount-arraylength` (*checked*): `accelerationStructureCount` must be greater than `0`
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR`
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-parameter` (*by the types*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid or VK_NULL_HANDLE VkAccelerationStructureKHR handles*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -7,20 +7,22 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAcquireNextImageInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAcquireNextImageInfoKHR.html). Settled by the wrappers:
+The rules of `VkAcquireNextImageInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAcquireNextImageInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAcquireNextImageInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAcquireNextImageInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAcquireNextImageInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkAcquireNextImageInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkAcquireNextImageInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 5: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 2: explicit rule; the wrappers do not check it*/
+- `VUID-VkAcquireNextImageInfoKHR-swapchain-01675` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `swapchain` must not be in the retired state
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-01288` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): If `semaphore` is not VK_NULL_HANDLE it must be unsignaled
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-01781` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): If `semaphore` is not VK_NULL_HANDLE it must not have any uncompleted signal or wait operations pending
+- `VUID-VkAcquireNextImageInfoKHR-fence-01289` (*yours*; explicit rule): If `fence` is not VK_NULL_HANDLE it must be unsignaled and must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-01782` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `semaphore` and `fence` must not both be equal to VK_NULL_HANDLE
+- `VUID-VkAcquireNextImageInfoKHR-deviceMask-01290` (*yours*; explicit rule): `deviceMask` must be a valid device mask
+- `VUID-VkAcquireNextImageInfoKHR-deviceMask-01291` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `deviceMask` must not be zero
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-03266` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `semaphore` must have a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+- `VUID-VkAcquireNextImageInfoKHR-commonparent` (*checked*): Each of `fence`, `semaphore`, and `swapchain` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkAcquireNextImageInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACQUIRE_NEXT_IMAGE_INFO_KHR`
+- `VUID-VkAcquireNextImageInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAcquireNextImageInfoKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-parameter` (*by the types*): If `semaphore` is not VK_NULL_HANDLE, `semaphore` must be a valid VkSemaphore handle
+- `VUID-VkAcquireNextImageInfoKHR-fence-parameter` (*by the types*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -78,12 +80,12 @@ impl<'a> AcquireNextImageInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkBindImageMemorySwapchainInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemorySwapchainInfoKHR.html). Settled by the wrappers:
+The rules of `VkBindImageMemorySwapchainInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemorySwapchainInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644` (*yours*; explicit rule): `imageIndex` must be less than the number of images in `swapchain`
+- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756` (*yours*; explicit rule): If the `swapchain` has been created with `VK_SWAPCHAIN_CREATE_DEFERRED_MEMORY_ALLOCATION_BIT_EXT`, `imageIndex` must be one that has previously been returned by vkAcquireNextImageKHR …
+- `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_MEMORY_SWAPCHAIN_INFO_KHR`
+- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -128,10 +130,10 @@ for BindImageMemorySwapchainInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupPresentCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupPresentCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `VkDeviceGroupPresentCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupPresentCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupPresentCapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupPresentCapabilitiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkDeviceGroupPresentCapabilitiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_PRESENT_CAPABILITIES_KHR`
+- `VUID-VkDeviceGroupPresentCapabilitiesKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(
     any(
         feature = "khr_swapchain",
@@ -152,18 +154,18 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupPresentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupPresentInfoKHR.html). Settled by the wrappers:
+The rules of `VkDeviceGroupPresentInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupPresentInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297`: dynamic (checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them))
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01298`: dynamic (checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them))
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01299`: dynamic (checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them))
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01300`: dynamic (checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them))
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01301`: dynamic (checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them))
-- `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302`: dynamic (checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them))
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-01303`: dynamic (checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them))
-- `VUID-VkDeviceGroupPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceGroupPresentInfoKHR-swapchainCount-01297` (*checked*): `swapchainCount` must equal `0` or VkPresentInfoKHR::`swapchainCount`
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01298` (*checked*): If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_LOCAL_BIT_KHR`, then each element of `pDeviceMasks` must have exactly one bit set, and the corresponding element of …
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01299` (*checked*): If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_REMOTE_BIT_KHR`, then each element of `pDeviceMasks` must have exactly one bit set, and some physical device in the logical device must include that bit in …
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01300` (*checked*): If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_SUM_BIT_KHR`, then each element of `pDeviceMasks` must have a value for which all set bits are set in one of the elements of …
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01301` (*checked*): If `mode` is `VK_DEVICE_GROUP_PRESENT_MODE_LOCAL_MULTI_DEVICE_BIT_KHR`, then for each bit set in each element of `pDeviceMasks`, the corresponding element of …
+- `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-01302` (*checked*): The value of each element of `pDeviceMasks` must be equal to the device mask passed in VkAcquireNextImageInfoKHR::`deviceMask` when the image index was last acquired
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-01303` (*checked*): `mode` must have exactly one bit set, and that bit must have been included in VkDeviceGroupSwapchainCreateInfoKHR::`modes`
+- `VUID-VkDeviceGroupPresentInfoKHR-mode-parameter` (*checked*): `mode` must be a valid VkDeviceGroupPresentModeFlagBitsKHR value
+- `VUID-VkDeviceGroupPresentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_PRESENT_INFO_KHR`
+- `VUID-VkDeviceGroupPresentInfoKHR-pDeviceMasks-parameter` (*by the types*): If `swapchainCount` is not `0`, `pDeviceMasks` must be a valid pointer to an array of `swapchainCount` `uint32_t` values*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -197,11 +199,11 @@ unsafe impl<'a> Extends<PresentInfoKHR<'a>> for DeviceGroupPresentInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupSwapchainCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkDeviceGroupSwapchainCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupSwapchainCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask`: dynamic (checks the flags are not 0)*/
+- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-parameter` (*checked*): `modes` must be a valid combination of VkDeviceGroupPresentModeFlagBitsKHR values
+- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask` (*checked*): `modes` must not be `0`
+- `VUID-VkDeviceGroupSwapchainCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_SWAPCHAIN_CREATE_INFO_KHR`*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -230,11 +232,11 @@ for DeviceGroupSwapchainCreateInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSwapchainCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkImageSwapchainCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSwapchainCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995`: dynamic (checks the image's parameters against the implied image creation parameters of the swapchain, recorded at its creation (the 1.3.239 layer does not check it: proven by the error alone))
-- `VUID-VkImageSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995` (*checked*): If `swapchain` is not VK_NULL_HANDLE, the fields of VkImageCreateInfo must match the implied image creation parameters of the swapchain
+- `VUID-VkImageSwapchainCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_SWAPCHAIN_CREATE_INFO_KHR`
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter` (*by the types*): If `swapchain` is not VK_NULL_HANDLE, `swapchain` must be a valid VkSwapchainKHR handle*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDisplayModeCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayModeCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkDisplayModeCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayModeCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayModeCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayModeCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDisplayModeCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkDisplayModeCreateInfoKHR-parameters-parameter`: dynamic (checks the struct's own rules)*/
+- `VUID-VkDisplayModeCreateInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDisplayModeCreateInfoKHR-parameters-parameter` (*checked*): `parameters` must be a valid VkDisplayModeParametersKHR structure
+- `VUID-VkDisplayModeCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_MODE_CREATE_INFO_KHR`
+- `VUID-VkDisplayModeCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_display")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -68,19 +68,20 @@ safe_struct!(#[cfg(feature = "khr_display")] DisplayPropertiesKHR, 'a; zeroed);
 
 # Valid usage
 
-The rules are on [`VkDisplaySurfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplaySurfaceCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkDisplaySurfaceCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplaySurfaceCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplaySurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplaySurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDisplaySurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkDisplaySurfaceCreateInfoKHR-displayMode-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkDisplaySurfaceCreateInfoKHR-transform-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 5: explicit rule; the wrappers do not check it*/
+- `VUID-VkDisplaySurfaceCreateInfoKHR-planeIndex-01252` (*yours*; explicit rule): `planeIndex` must be less than the number of display planes supported by the device as determined by calling `vkGetPhysicalDeviceDisplayPlanePropertiesKHR`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-planeReorderPossible-01253` (*yours*; explicit rule): If the `planeReorderPossible` member of the `VkDisplayPropertiesKHR` structure returned by `vkGetPhysicalDeviceDisplayPropertiesKHR` for the display corresponding to `displayMode` is `VK_TRUE` then …
+- `VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-01254` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `alphaMode` is `VK_DISPLAY_PLANE_ALPHA_GLOBAL_BIT_KHR` then `globalAlpha` must be between `0` and `1`, inclusive
+- `VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-01255` (*yours*; explicit rule): `alphaMode` must be one of the bits present in the `supportedAlpha` member of `VkDisplayPlaneCapabilitiesKHR` for the display plane corresponding to `displayMode`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-transform-06740` (*yours*; explicit rule): `transform` must be one of the bits present in the `supportedTransforms` member of `VkDisplayPropertiesKHR` for the display corresponding to `displayMode`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-width-01256` (*yours*; explicit rule): The `width` and `height` members of `imageExtent` must be less than or equal to VkPhysicalDeviceLimits::`maxImageDimension2D`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-transform-parameter` (*checked*): `transform` must be a valid VkSurfaceTransformFlagBitsKHR value
+- `VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-parameter` (*checked*): `alphaMode` must be a valid VkDisplayPlaneAlphaFlagBitsKHR value
+- `VUID-VkDisplaySurfaceCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_SURFACE_CREATE_INFO_KHR`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-displayMode-parameter` (*by the types*): `displayMode` must be a valid VkDisplayModeKHR handle*/
 #[cfg(feature = "khr_display")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDisplayPresentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPresentInfoKHR.html). Settled by the wrappers:
+The rules of `VkDisplayPresentInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPresentInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDisplayPresentInfoKHR-srcRect-01257` (*yours*; explicit rule): `srcRect` must specify a rectangular region that is a subset of the image being presented
+- `VUID-VkDisplayPresentInfoKHR-dstRect-01258` (*yours*; explicit rule): `dstRect` must specify a rectangular region that is a subset of the `visibleRegion` parameter of the display mode the swapchain being presented uses
+- `VUID-VkDisplayPresentInfoKHR-persistentContent-01259` (*yours*; explicit rule): If the `persistentContent` member of the `VkDisplayPropertiesKHR` structure returned by `vkGetPhysicalDeviceDisplayPropertiesKHR` for the display the present operation targets is `VK_FALSE`, then …
+- `VUID-VkDisplayPresentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_PRESENT_INFO_KHR`*/
 #[cfg(feature = "khr_display_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

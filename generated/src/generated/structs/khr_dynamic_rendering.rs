@@ -7,9 +7,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAttachmentSampleCountInfoAMD`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentSampleCountInfoAMD.html). Settled by the wrappers:
+The rules of `VkAttachmentSampleCountInfoAMD` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentSampleCountInfoAMD.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAttachmentSampleCountInfoAMD-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkAttachmentSampleCountInfoAMD-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ATTACHMENT_SAMPLE_COUNT_INFO_AMD`*/
 #[cfg(
     any(
         all(feature = "amd_mixed_attachment_samples", feature = "khr_dynamic_rendering"),
@@ -74,9 +74,9 @@ for AttachmentSampleCountInfoAMD<'a> {}
 
 # Valid usage
 
-The rules are on [`VkMultiviewPerViewAttributesInfoNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMultiviewPerViewAttributesInfoNVX.html). Settled by the wrappers:
+The rules of `VkMultiviewPerViewAttributesInfoNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMultiviewPerViewAttributesInfoNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMultiviewPerViewAttributesInfoNVX-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkMultiviewPerViewAttributesInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MULTIVIEW_PER_VIEW_ATTRIBUTES_INFO_NVX`*/
 #[cfg(
     all(feature = "khr_dynamic_rendering", feature = "nvx_multiview_per_view_attributes")
 )]
@@ -126,13 +126,15 @@ unsafe impl<'a> Extends<RenderingInfo<'a>> for MultiviewPerViewAttributesInfoNVX
 
 # Valid usage
 
-The rules are on [`VkRenderingFragmentDensityMapAttachmentInfoEXT`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderingFragmentDensityMapAttachmentInfoEXT.html). Settled by the wrappers:
+The rules of `VkRenderingFragmentDensityMapAttachmentInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderingFragmentDensityMapAttachmentInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-06157` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `layout` must be `VK_IMAGE_LAYOUT_GENERAL` or `VK_IMAGE_LAYOUT_FRAGMENT_DENSITY_MAP_OPTIMAL_EXT`
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-06158` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have been created with `VK_IMAGE_USAGE_FRAGMENT_DENSITY_MAP_BIT_EXT`
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-06159` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must not have been created with `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-06160` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have a `layerCount` equal to `1`
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDERING_FRAGMENT_DENSITY_MAP_ATTACHMENT_INFO_EXT`
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-parameter` (*by the types*): `imageView` must be a valid VkImageView handle*/
 #[cfg(all(feature = "ext_fragment_density_map", feature = "khr_dynamic_rendering"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -178,13 +180,21 @@ for RenderingFragmentDensityMapAttachmentInfoEXT<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRenderingFragmentShadingRateAttachmentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderingFragmentShadingRateAttachmentInfoKHR.html). Settled by the wrappers:
+The rules of `VkRenderingFragmentShadingRateAttachmentInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderingFragmentShadingRateAttachmentInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06147` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `layout` must be `VK_IMAGE_LAYOUT_GENERAL` or `VK_IMAGE_LAYOUT_FRAGMENT_SHADING_RATE_ATTACHMENT_OPTIMAL_KHR`
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06148` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have been created with `VK_IMAGE_USAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06149` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `shadingRateAttachmentTexelSize.width` must be a power of two value
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06150` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `shadingRateAttachmentTexelSize.width` must be less than or equal to `maxFragmentShadingRateAttachmentTexelSize.width`
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06151` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `shadingRateAttachmentTexelSize.width` must be greater than or equal to `minFragmentShadingRateAttachmentTexelSize.width`
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06152` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `shadingRateAttachmentTexelSize.height` must be a power of two value
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06153` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `shadingRateAttachmentTexelSize.height` must be less than or equal to `maxFragmentShadingRateAttachmentTexelSize.height`
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06154` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `shadingRateAttachmentTexelSize.height` must be greater than or equal to `minFragmentShadingRateAttachmentTexelSize.height`
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06155` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, the quotient of `shadingRateAttachmentTexelSize.width` and `shadingRateAttachmentTexelSize.height` must be less than or equal to …
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06156` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, the quotient of `shadingRateAttachmentTexelSize.height` and `shadingRateAttachmentTexelSize.width` must be less than or equal to …
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDERING_FRAGMENT_SHADING_RATE_ATTACHMENT_INFO_KHR`
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-parameter` (*by the types*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle*/
 #[cfg(all(feature = "khr_dynamic_rendering", feature = "khr_fragment_shading_rate"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,14 +6,16 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkFenceGetFdInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFenceGetFdInfoKHR.html). Settled by the wrappers:
+The rules of `VkFenceGetFdInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFenceGetFdInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFenceGetFdInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFenceGetFdInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkFenceGetFdInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkFenceGetFdInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkFenceGetFdInfoKHR-handleType-01453` (*yours*; explicit rule): `handleType` must have been included in VkExportFenceCreateInfo::`handleTypes` when `fence`&#8217;s current payload was created
+- `VUID-VkFenceGetFdInfoKHR-handleType-01454` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `fence` must be signaled, or have an associated fence signal operation pending execution
+- `VUID-VkFenceGetFdInfoKHR-fence-01455` (*yours*; explicit rule): `fence` must not currently have its payload replaced by an imported payload as described below in Importing Fence Payloads unless that imported payload&#8217;s handle type was included in …
+- `VUID-VkFenceGetFdInfoKHR-handleType-01456` (*yours*; explicit rule): `handleType` must be defined as a POSIX file descriptor handle
+- `VUID-VkFenceGetFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalFenceHandleTypeFlagBits value
+- `VUID-VkFenceGetFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FENCE_GET_FD_INFO_KHR`
+- `VUID-VkFenceGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkFenceGetFdInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
 #[cfg(feature = "khr_external_fence_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -53,15 +55,16 @@ impl<'a> FenceGetFdInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkImportFenceFdInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportFenceFdInfoKHR.html). Settled by the wrappers:
+The rules of `VkImportFenceFdInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportFenceFdInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportFenceFdInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportFenceFdInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImportFenceFdInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImportFenceFdInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImportFenceFdInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportFenceFdInfoKHR-handleType-01464` (*yours*; explicit rule): `handleType` must be a value included in the Handle Types Supported by `VkImportFenceFdInfoKHR` table
+- `VUID-VkImportFenceFdInfoKHR-fd-01541` (*yours*; explicit rule): `fd` must obey any requirements listed for `handleType` in external fence handle types compatibility
+- `VUID-VkImportFenceFdInfoKHR-handleType-07306` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `flags` must contain `VK_FENCE_IMPORT_TEMPORARY_BIT`
+- `VUID-VkImportFenceFdInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkFenceImportFlagBits values
+- `VUID-VkImportFenceFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalFenceHandleTypeFlagBits value
+- `VUID-VkImportFenceFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_FENCE_FD_INFO_KHR`
+- `VUID-VkImportFenceFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImportFenceFdInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
 #[cfg(feature = "khr_external_fence_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

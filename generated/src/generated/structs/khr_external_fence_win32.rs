@@ -6,14 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkExportFenceWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportFenceWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkExportFenceWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportFenceWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportFenceWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: a window-system pointer given through an unsafe setter
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkExportFenceWin32HandleInfoKHR-handleTypes-01447` (*yours*; explicit rule): If VkExportFenceCreateInfo::`handleTypes` does not include `VK_EXTERNAL_FENCE_HANDLE_TYPE_OPAQUE_WIN32_BIT`, a `VkExportFenceWin32HandleInfoKHR` structure must not be included in the `pNext` chain of …
+- `VUID-VkExportFenceWin32HandleInfoKHR-pAttributes-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `pAttributes` is not `NULL`, `pAttributes` must be a valid pointer to a valid `SECURITY_ATTRIBUTES` value
+- `VUID-VkExportFenceWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_FENCE_WIN32_HANDLE_INFO_KHR`*/
 #[cfg(feature = "khr_external_fence_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -64,14 +61,17 @@ unsafe impl<'a> Extends<FenceCreateInfo<'a>> for ExportFenceWin32HandleInfoKHR<'
 
 # Valid usage
 
-The rules are on [`VkFenceGetWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFenceGetWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkFenceGetWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFenceGetWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFenceGetWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFenceGetWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkFenceGetWin32HandleInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkFenceGetWin32HandleInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkFenceGetWin32HandleInfoKHR-handleType-01448` (*yours*; explicit rule): `handleType` must have been included in VkExportFenceCreateInfo::`handleTypes` when the `fence`&#8217;s current payload was created
+- `VUID-VkFenceGetWin32HandleInfoKHR-handleType-01449` (*yours*; explicit rule): If `handleType` is defined as an NT handle, vkGetFenceWin32HandleKHR must be called no more than once for each valid unique combination of `fence` and `handleType`
+- `VUID-VkFenceGetWin32HandleInfoKHR-fence-01450` (*yours*; explicit rule): `fence` must not currently have its payload replaced by an imported payload as described below in Importing Fence Payloads unless that imported payload&#8217;s handle type was included in …
+- `VUID-VkFenceGetWin32HandleInfoKHR-handleType-01451` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `fence` must be signaled, or have an associated fence signal operation pending execution
+- `VUID-VkFenceGetWin32HandleInfoKHR-handleType-01452` (*yours*; explicit rule): `handleType` must be defined as an NT handle or a global share handle
+- `VUID-VkFenceGetWin32HandleInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalFenceHandleTypeFlagBits value
+- `VUID-VkFenceGetWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FENCE_GET_WIN32_HANDLE_INFO_KHR`
+- `VUID-VkFenceGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkFenceGetWin32HandleInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
 #[cfg(feature = "khr_external_fence_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -113,14 +113,19 @@ impl<'a> FenceGetWin32HandleInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkImportFenceWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportFenceWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkImportFenceWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportFenceWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportFenceWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportFenceWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImportFenceWin32HandleInfoKHR-fence-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImportFenceWin32HandleInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportFenceWin32HandleInfoKHR-handleType-01457` (*yours*; explicit rule): `handleType` must be a value included in the Handle Types Supported by `VkImportFenceWin32HandleInfoKHR` table
+- `VUID-VkImportFenceWin32HandleInfoKHR-handleType-01459` (*yours*; explicit rule): If `handleType` is not `VK_EXTERNAL_FENCE_HANDLE_TYPE_OPAQUE_WIN32_BIT`, `name` must be `NULL`
+- `VUID-VkImportFenceWin32HandleInfoKHR-handleType-01460` (*yours*; explicit rule): If `handle` is `NULL`, `name` must name a valid synchronization primitive of the type specified by `handleType`
+- `VUID-VkImportFenceWin32HandleInfoKHR-handleType-01461` (*yours*; explicit rule): If `name` is `NULL`, `handle` must be a valid handle of the type specified by `handleType`
+- `VUID-VkImportFenceWin32HandleInfoKHR-handle-01462` (*yours*; explicit rule): If `handle` is not `NULL`, `name` must be `NULL`
+- `VUID-VkImportFenceWin32HandleInfoKHR-handle-01539` (*yours*; explicit rule): If `handle` is not `NULL`, it must obey any requirements listed for `handleType` in external fence handle types compatibility
+- `VUID-VkImportFenceWin32HandleInfoKHR-name-01540` (*yours*; explicit rule): If `name` is not `NULL`, it must obey any requirements listed for `handleType` in external fence handle types compatibility
+- `VUID-VkImportFenceWin32HandleInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkFenceImportFlagBits values
+- `VUID-VkImportFenceWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_FENCE_WIN32_HANDLE_INFO_KHR`
+- `VUID-VkImportFenceWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImportFenceWin32HandleInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
 #[cfg(feature = "khr_external_fence_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

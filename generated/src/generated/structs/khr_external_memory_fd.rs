@@ -6,12 +6,16 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImportMemoryFdInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryFdInfoKHR.html). Settled by the wrappers:
+The rules of `VkImportMemoryFdInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryFdInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMemoryFdInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportMemoryFdInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportMemoryFdInfoKHR-handleType-00667` (*yours*; explicit rule): If `handleType` is not `0`, it must be supported for import, as reported by VkExternalImageFormatProperties or VkExternalBufferProperties
+- `VUID-VkImportMemoryFdInfoKHR-fd-00668` (*yours*; explicit rule): The memory from which `fd` was exported must have been created on the same underlying physical device as `device`
+- `VUID-VkImportMemoryFdInfoKHR-handleType-00669` (*yours*; explicit rule): If `handleType` is not `0`, it must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT` or `VK_EXTERNAL_MEMORY_HANDLE_TYPE_DMA_BUF_BIT_EXT`
+- `VUID-VkImportMemoryFdInfoKHR-handleType-00670` (*yours*; explicit rule): If `handleType` is not `0`, `fd` must be a valid handle of the type specified by `handleType`
+- `VUID-VkImportMemoryFdInfoKHR-fd-01746` (*yours*; explicit rule): The memory represented by `fd` must have been created from a physical device and driver that is compatible with `device` and `handleType`, as described in External memory handle types compatibility
+- `VUID-VkImportMemoryFdInfoKHR-fd-01520` (*yours*; explicit rule): `fd` must obey any requirements listed for `handleType` in external memory handle types compatibility
+- `VUID-VkImportMemoryFdInfoKHR-handleType-parameter` (*checked*): If `handleType` is not `0`, `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkImportMemoryFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_FD_INFO_KHR`*/
 #[cfg(feature = "khr_external_memory_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -43,10 +47,10 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ImportMemoryFdInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkMemoryFdPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryFdPropertiesKHR.html). Settled by the wrappers:
+The rules of `VkMemoryFdPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryFdPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryFdPropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryFdPropertiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkMemoryFdPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_FD_PROPERTIES_KHR`
+- `VUID-VkMemoryFdPropertiesKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_memory_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -61,14 +65,14 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkMemoryGetFdInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetFdInfoKHR.html). Settled by the wrappers:
+The rules of `VkMemoryGetFdInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetFdInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryGetFdInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryGetFdInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryGetFdInfoKHR-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMemoryGetFdInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMemoryGetFdInfoKHR-handleType-00671` (*yours*; explicit rule): `handleType` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
+- `VUID-VkMemoryGetFdInfoKHR-handleType-00672` (*yours*; explicit rule): `handleType` must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT` or `VK_EXTERNAL_MEMORY_HANDLE_TYPE_DMA_BUF_BIT_EXT`
+- `VUID-VkMemoryGetFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkMemoryGetFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_FD_INFO_KHR`
+- `VUID-VkMemoryGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMemoryGetFdInfoKHR-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[cfg(feature = "khr_external_memory_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

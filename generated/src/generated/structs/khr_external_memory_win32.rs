@@ -6,14 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkExportMemoryWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkExportMemoryWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMemoryWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: a window-system pointer given through an unsafe setter
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkExportMemoryWin32HandleInfoKHR-handleTypes-00657` (*yours*; explicit rule): If VkExportMemoryAllocateInfo::`handleTypes` does not include `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_WIN32_BIT`, a `VkExportMemoryWin32HandleInfoKHR` structure must not be included in the `pNext` …
+- `VUID-VkExportMemoryWin32HandleInfoKHR-pAttributes-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `pAttributes` is not `NULL`, `pAttributes` must be a valid pointer to a valid `SECURITY_ATTRIBUTES` value
+- `VUID-VkExportMemoryWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_MEMORY_WIN32_HANDLE_INFO_KHR`*/
 #[cfg(feature = "khr_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -64,12 +61,19 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryWin32HandleInfoK
 
 # Valid usage
 
-The rules are on [`VkImportMemoryWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkImportMemoryWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMemoryWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportMemoryWin32HandleInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handleType-00658` (*yours*; explicit rule): If `handleType` is not `0`, it must be supported for import, as reported by VkExternalImageFormatProperties or VkExternalBufferProperties
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handle-00659` (*yours*; explicit rule): The memory from which `handle` was exported, or the memory named by `name` must have been created on the same underlying physical device as `device`
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handleType-00660` (*yours*; explicit rule): If `handleType` is not `0`, it must be defined as an NT handle or a global share handle
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handleType-01439` (*yours*; explicit rule): If `handleType` is not `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_WIN32_BIT`, `VK_EXTERNAL_MEMORY_HANDLE_TYPE_D3D11_TEXTURE_BIT`, `VK_EXTERNAL_MEMORY_HANDLE_TYPE_D3D12_HEAP_BIT`, or …
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handleType-01440` (*yours*; explicit rule): If `handleType` is not `0` and `handle` is `NULL`, `name` must name a valid memory resource of the type specified by `handleType`
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handleType-00661` (*yours*; explicit rule): If `handleType` is not `0` and `name` is `NULL`, `handle` must be a valid handle of the type specified by `handleType`
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handle-01441` (*yours*; explicit rule): if `handle` is not `NULL`, `name` must be `NULL`
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handle-01518` (*yours*; explicit rule): If `handle` is not `NULL`, it must obey any requirements listed for `handleType` in external memory handle types compatibility
+- `VUID-VkImportMemoryWin32HandleInfoKHR-name-01519` (*yours*; explicit rule): If `name` is not `NULL`, it must obey any requirements listed for `handleType` in external memory handle types compatibility
+- `VUID-VkImportMemoryWin32HandleInfoKHR-handleType-parameter` (*checked*): If `handleType` is not `0`, `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkImportMemoryWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_WIN32_HANDLE_INFO_KHR`*/
 #[cfg(feature = "khr_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -116,14 +120,15 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ImportMemoryWin32HandleInfoK
 
 # Valid usage
 
-The rules are on [`VkMemoryGetWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkMemoryGetWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryGetWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryGetWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryGetWin32HandleInfoKHR-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-00662` (*yours*; explicit rule): `handleType` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
+- `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-00663` (*yours*; explicit rule): If `handleType` is defined as an NT handle, vkGetMemoryWin32HandleKHR must be called no more than once for each valid unique combination of `memory` and `handleType`
+- `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-00664` (*yours*; explicit rule): `handleType` must be defined as an NT handle or a global share handle
+- `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkMemoryGetWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_WIN32_HANDLE_INFO_KHR`
+- `VUID-VkMemoryGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMemoryGetWin32HandleInfoKHR-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[cfg(feature = "khr_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -166,10 +171,10 @@ impl<'a> MemoryGetWin32HandleInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkMemoryWin32HandlePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryWin32HandlePropertiesKHR.html). Settled by the wrappers:
+The rules of `VkMemoryWin32HandlePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryWin32HandlePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryWin32HandlePropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryWin32HandlePropertiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkMemoryWin32HandlePropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_WIN32_HANDLE_PROPERTIES_KHR`
+- `VUID-VkMemoryWin32HandlePropertiesKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,15 +6,19 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImportSemaphoreFdInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportSemaphoreFdInfoKHR.html). Settled by the wrappers:
+The rules of `VkImportSemaphoreFdInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportSemaphoreFdInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportSemaphoreFdInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportSemaphoreFdInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImportSemaphoreFdInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImportSemaphoreFdInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImportSemaphoreFdInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportSemaphoreFdInfoKHR-handleType-01143` (*yours*; explicit rule): `handleType` must be a value included in the Handle Types Supported by `VkImportSemaphoreFdInfoKHR` table
+- `VUID-VkImportSemaphoreFdInfoKHR-fd-01544` (*yours*; explicit rule): `fd` must obey any requirements listed for `handleType` in external semaphore handle types compatibility
+- `VUID-VkImportSemaphoreFdInfoKHR-handleType-03263` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_FD_BIT`, the VkSemaphoreCreateInfo::`flags` field must match that of the semaphore from which `fd` was exported
+- `VUID-VkImportSemaphoreFdInfoKHR-handleType-07307` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `flags` must contain `VK_SEMAPHORE_IMPORT_TEMPORARY_BIT`
+- `VUID-VkImportSemaphoreFdInfoKHR-handleType-03264` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_FD_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field must match that of the semaphore from which `fd` was exported
+- `VUID-VkImportSemaphoreFdInfoKHR-flags-03323` (*yours*; explicit rule): If `flags` contains `VK_SEMAPHORE_IMPORT_TEMPORARY_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field of the semaphore from which `fd` was exported must not be `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkImportSemaphoreFdInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreImportFlagBits values
+- `VUID-VkImportSemaphoreFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
+- `VUID-VkImportSemaphoreFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_SEMAPHORE_FD_INFO_KHR`
+- `VUID-VkImportSemaphoreFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImportSemaphoreFdInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
 #[cfg(feature = "khr_external_semaphore_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -68,14 +72,19 @@ impl<'a> ImportSemaphoreFdInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkSemaphoreGetFdInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreGetFdInfoKHR.html). Settled by the wrappers:
+The rules of `VkSemaphoreGetFdInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreGetFdInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreGetFdInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreGetFdInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreGetFdInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSemaphoreGetFdInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSemaphoreGetFdInfoKHR-handleType-01132` (*yours*; explicit rule): `handleType` must have been included in VkExportSemaphoreCreateInfo::`handleTypes` when `semaphore`&#8217;s current payload was created
+- `VUID-VkSemaphoreGetFdInfoKHR-semaphore-01133` (*yours*; explicit rule): `semaphore` must not currently have its payload replaced by an imported payload as described below in Importing Semaphore Payloads unless that imported payload&#8217;s handle type was included in …
+- `VUID-VkSemaphoreGetFdInfoKHR-handleType-01134` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, as defined below in Importing Semaphore Payloads, there must be no queue waiting on `semaphore`
+- `VUID-VkSemaphoreGetFdInfoKHR-handleType-01135` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must be signaled, or have an associated semaphore signal operation pending execution
+- `VUID-VkSemaphoreGetFdInfoKHR-handleType-01136` (*yours*; explicit rule): `handleType` must be defined as a POSIX file descriptor handle
+- `VUID-VkSemaphoreGetFdInfoKHR-handleType-03253` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+- `VUID-VkSemaphoreGetFdInfoKHR-handleType-03254` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must have an associated semaphore signal operation that has been submitted for execution and any semaphore …
+- `VUID-VkSemaphoreGetFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
+- `VUID-VkSemaphoreGetFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_GET_FD_INFO_KHR`
+- `VUID-VkSemaphoreGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkSemaphoreGetFdInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
 #[cfg(feature = "khr_external_semaphore_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

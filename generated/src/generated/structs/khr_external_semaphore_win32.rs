@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkD3D12FenceSubmitInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkD3D12FenceSubmitInfoKHR.html). Settled by the wrappers:
+The rules of `VkD3D12FenceSubmitInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkD3D12FenceSubmitInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkD3D12FenceSubmitInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkD3D12FenceSubmitInfoKHR-pWaitSemaphoreValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkD3D12FenceSubmitInfoKHR-pSignalSemaphoreValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkD3D12FenceSubmitInfoKHR-waitSemaphoreValuesCount-00079` (*yours*; explicit rule): `waitSemaphoreValuesCount` must be the same value as `VkSubmitInfo::waitSemaphoreCount`, where `VkSubmitInfo` is in the `pNext` chain of this `VkD3D12FenceSubmitInfoKHR` structure
+- `VUID-VkD3D12FenceSubmitInfoKHR-signalSemaphoreValuesCount-00080` (*yours*; explicit rule): `signalSemaphoreValuesCount` must be the same value as `VkSubmitInfo::signalSemaphoreCount`, where `VkSubmitInfo` is in the `pNext` chain of this `VkD3D12FenceSubmitInfoKHR` structure
+- `VUID-VkD3D12FenceSubmitInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_D3D12_FENCE_SUBMIT_INFO_KHR`
+- `VUID-VkD3D12FenceSubmitInfoKHR-pWaitSemaphoreValues-parameter` (*by the types*): If `waitSemaphoreValuesCount` is not `0`, and `pWaitSemaphoreValues` is not `NULL`, `pWaitSemaphoreValues` must be a valid pointer to an array of `waitSemaphoreValuesCount` `uint64_t` values
+- `VUID-VkD3D12FenceSubmitInfoKHR-pSignalSemaphoreValues-parameter` (*by the types*): If `signalSemaphoreValuesCount` is not `0`, and `pSignalSemaphoreValues` is not `NULL`, `pSignalSemaphoreValues` must be a valid pointer to an array of `signalSemaphoreValuesCount` `uint64_t` values*/
 #[cfg(feature = "khr_external_semaphore_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -67,14 +67,11 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for D3D12FenceSubmitInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkExportSemaphoreWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportSemaphoreWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkExportSemaphoreWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportSemaphoreWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportSemaphoreWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: a window-system pointer given through an unsafe setter
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkExportSemaphoreWin32HandleInfoKHR-handleTypes-01125` (*yours*; explicit rule): If VkExportSemaphoreCreateInfo::`handleTypes` does not include `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_BIT` or `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_D3D12_FENCE_BIT`, …
+- `VUID-VkExportSemaphoreWin32HandleInfoKHR-pAttributes-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `pAttributes` is not `NULL`, `pAttributes` must be a valid pointer to a valid `SECURITY_ATTRIBUTES` value
+- `VUID-VkExportSemaphoreWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_SEMAPHORE_WIN32_HANDLE_INFO_KHR`*/
 #[cfg(feature = "khr_external_semaphore_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -126,14 +123,22 @@ for ExportSemaphoreWin32HandleInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImportSemaphoreWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportSemaphoreWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkImportSemaphoreWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportSemaphoreWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportSemaphoreWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportSemaphoreWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImportSemaphoreWin32HandleInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImportSemaphoreWin32HandleInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 10 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-01140` (*yours*; explicit rule): `handleType` must be a value included in the Handle Types Supported by `VkImportSemaphoreWin32HandleInfoKHR` table
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-01466` (*yours*; explicit rule): If `handleType` is not `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_BIT` or `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_D3D12_FENCE_BIT`, `name` must be `NULL`
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-01467` (*yours*; explicit rule): If `handle` is `NULL`, `name` must name a valid synchronization primitive of the type specified by `handleType`
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-01468` (*yours*; explicit rule): If `name` is `NULL`, `handle` must be a valid handle of the type specified by `handleType`
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handle-01469` (*yours*; explicit rule): If `handle` is not `NULL`, `name` must be `NULL`
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handle-01542` (*yours*; explicit rule): If `handle` is not `NULL`, it must obey any requirements listed for `handleType` in external semaphore handle types compatibility
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-name-01543` (*yours*; explicit rule): If `name` is not `NULL`, it must obey any requirements listed for `handleType` in external semaphore handle types compatibility
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-03261` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_BIT` or `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_KMT_BIT`, the VkSemaphoreCreateInfo::`flags` field must match that of the …
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-03262` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_BIT` or `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_KMT_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field must match …
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-flags-03322` (*yours*; explicit rule): If `flags` contains `VK_SEMAPHORE_IMPORT_TEMPORARY_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field of the semaphore from which `handle` or `name` was exported must not be …
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreImportFlagBits values
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_SEMAPHORE_WIN32_HANDLE_INFO_KHR`
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
 #[cfg(feature = "khr_external_semaphore_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -202,14 +207,18 @@ impl<'a> ImportSemaphoreWin32HandleInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkSemaphoreGetWin32HandleInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreGetWin32HandleInfoKHR.html). Settled by the wrappers:
+The rules of `VkSemaphoreGetWin32HandleInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreGetWin32HandleInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreGetWin32HandleInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreGetWin32HandleInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreGetWin32HandleInfoKHR-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01126` (*yours*; explicit rule): `handleType` must have been included in VkExportSemaphoreCreateInfo::`handleTypes` when the `semaphore`&#8217;s current payload was created
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01127` (*yours*; explicit rule): If `handleType` is defined as an NT handle, vkGetSemaphoreWin32HandleKHR must be called no more than once for each valid unique combination of `semaphore` and `handleType`
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-semaphore-01128` (*yours*; explicit rule): `semaphore` must not currently have its payload replaced by an imported payload as described below in Importing Semaphore Payloads unless that imported payload&#8217;s handle type was included in …
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01129` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, as defined below in Importing Semaphore Payloads, there must be no queue waiting on `semaphore`
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01130` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must be signaled, or have an associated semaphore signal operation pending execution
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01131` (*yours*; explicit rule): `handleType` must be defined as an NT handle or a global share handle
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_GET_WIN32_HANDLE_INFO_KHR`
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
 #[cfg(feature = "khr_external_semaphore_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -7,9 +7,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentShaderBarycentricFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShaderBarycentricFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentShaderBarycentricFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShaderBarycentricFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentShaderBarycentricFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFragmentShaderBarycentricFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADER_BARYCENTRIC_FEATURES_KHR`*/
 #[cfg(
     any(
         feature = "khr_fragment_shader_barycentric",
@@ -61,9 +61,9 @@ for PhysicalDeviceFragmentShaderBarycentricFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentShaderBarycentricPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShaderBarycentricPropertiesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentShaderBarycentricPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShaderBarycentricPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentShaderBarycentricPropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFragmentShaderBarycentricPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADER_BARYCENTRIC_PROPERTIES_KHR`*/
 #[cfg(feature = "khr_fragment_shader_barycentric")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,19 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkFragmentShadingRateAttachmentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFragmentShadingRateAttachmentInfoKHR.html). Settled by the wrappers:
+The rules of `VkFragmentShadingRateAttachmentInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFragmentShadingRateAttachmentInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFragmentShadingRateAttachmentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04524` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, its `layout` member must be equal to `VK_IMAGE_LAYOUT_GENERAL` or …
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04525` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, `shadingRateAttachmentTexelSize.width` must be a power of two value
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04526` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, `shadingRateAttachmentTexelSize.width` must be less than or equal to …
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04527` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, `shadingRateAttachmentTexelSize.width` must be greater than or equal to …
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04528` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, `shadingRateAttachmentTexelSize.height` must be a power of two value
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04529` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, `shadingRateAttachmentTexelSize.height` must be less than or equal to …
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04530` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, `shadingRateAttachmentTexelSize.height` must be greater than or equal to …
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04531` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, the quotient of `shadingRateAttachmentTexelSize.width` and …
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-04532` (*yours*; explicit rule): If `pFragmentShadingRateAttachment` is not `NULL` and its `attachment` member is not `VK_ATTACHMENT_UNUSED`, the quotient of `shadingRateAttachmentTexelSize.height` and …
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FRAGMENT_SHADING_RATE_ATTACHMENT_INFO_KHR`
+- `VUID-VkFragmentShadingRateAttachmentInfoKHR-pFragmentShadingRateAttachment-parameter` (*by the types*): If `pFragmentShadingRateAttachment` is not `NULL`, `pFragmentShadingRateAttachment` must be a valid pointer to a valid VkAttachmentReference2 structure*/
 #[cfg(feature = "khr_fragment_shading_rate")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -52,9 +59,9 @@ for FragmentShadingRateAttachmentInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentShadingRateFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentShadingRateFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentShadingRateFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFragmentShadingRateFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADING_RATE_FEATURES_KHR`*/
 #[cfg(feature = "khr_fragment_shading_rate")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -97,10 +104,10 @@ for PhysicalDeviceFragmentShadingRateFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentShadingRateKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentShadingRateKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentShadingRateKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceFragmentShadingRateKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPhysicalDeviceFragmentShadingRateKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADING_RATE_KHR`
+- `VUID-VkPhysicalDeviceFragmentShadingRateKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_fragment_shading_rate")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -116,9 +123,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentShadingRatePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRatePropertiesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentShadingRatePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRatePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentShadingRatePropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFragmentShadingRatePropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADING_RATE_PROPERTIES_KHR`*/
 #[cfg(feature = "khr_fragment_shading_rate")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -137,9 +144,9 @@ for PhysicalDeviceFragmentShadingRatePropertiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineFragmentShadingRateStateCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineFragmentShadingRateStateCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkPipelineFragmentShadingRateStateCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineFragmentShadingRateStateCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineFragmentShadingRateStateCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPipelineFragmentShadingRateStateCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_FRAGMENT_SHADING_RATE_STATE_CREATE_INFO_KHR`*/
 #[cfg(feature = "khr_fragment_shading_rate")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

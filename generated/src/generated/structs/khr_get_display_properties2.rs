@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDisplayModeProperties2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayModeProperties2KHR.html). Settled by the wrappers:
+The rules of `VkDisplayModeProperties2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayModeProperties2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayModeProperties2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayModeProperties2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkDisplayModeProperties2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_MODE_PROPERTIES_2_KHR`
+- `VUID-VkDisplayModeProperties2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_get_display_properties2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -25,10 +25,10 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkDisplayPlaneCapabilities2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPlaneCapabilities2KHR.html). Settled by the wrappers:
+The rules of `VkDisplayPlaneCapabilities2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPlaneCapabilities2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayPlaneCapabilities2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayPlaneCapabilities2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkDisplayPlaneCapabilities2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_PLANE_CAPABILITIES_2_KHR`
+- `VUID-VkDisplayPlaneCapabilities2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_get_display_properties2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -44,11 +44,11 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkDisplayPlaneInfo2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPlaneInfo2KHR.html). Settled by the wrappers:
+The rules of `VkDisplayPlaneInfo2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPlaneInfo2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayPlaneInfo2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayPlaneInfo2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDisplayPlaneInfo2KHR-mode-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkDisplayPlaneInfo2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_PLANE_INFO_2_KHR`
+- `VUID-VkDisplayPlaneInfo2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDisplayPlaneInfo2KHR-mode-parameter` (*by the types*): `mode` must be a valid VkDisplayModeKHR handle*/
 #[cfg(feature = "khr_get_display_properties2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -90,10 +90,10 @@ impl<'a> DisplayPlaneInfo2KHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkDisplayPlaneProperties2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPlaneProperties2KHR.html). Settled by the wrappers:
+The rules of `VkDisplayPlaneProperties2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPlaneProperties2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayPlaneProperties2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayPlaneProperties2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkDisplayPlaneProperties2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_PLANE_PROPERTIES_2_KHR`
+- `VUID-VkDisplayPlaneProperties2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_get_display_properties2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -109,10 +109,10 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkDisplayProperties2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayProperties2KHR.html). Settled by the wrappers:
+The rules of `VkDisplayProperties2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayProperties2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDisplayProperties2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDisplayProperties2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkDisplayProperties2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_PROPERTIES_2_KHR`
+- `VUID-VkDisplayProperties2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_get_display_properties2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,14 +6,17 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSurfaceInfo2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSurfaceInfo2KHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSurfaceInfo2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSurfaceInfo2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-surface-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pNext-02672` (*yours*; explicit rule): If the `pNext` chain includes a VkSurfaceFullScreenExclusiveInfoEXT structure with its `fullScreenExclusive` member set to `VK_FULL_SCREEN_EXCLUSIVE_APPLICATION_CONTROLLED_EXT`, and `surface` was …
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pSurfaceInfo-06526` (*yours*; explicit rule): When passed as the `pSurfaceInfo` parameter of vkGetPhysicalDeviceSurfaceCapabilities2KHR, if the VK_GOOGLE_surfaceless_query extension is enabled and the `pNext` chain of the `pSurfaceCapabilities` …
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pSurfaceInfo-06527` (*yours*; explicit rule): When passed as the `pSurfaceInfo` parameter of vkGetPhysicalDeviceSurfaceFormats2KHR, if the VK_GOOGLE_surfaceless_query extension is enabled, then `surface` can be VK_NULL_HANDLE. Otherwise, …
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pSurfaceInfo-06528` (*yours*; explicit rule): When passed as the `pSurfaceInfo` parameter of vkGetPhysicalDeviceSurfacePresentModes2EXT, if the VK_GOOGLE_surfaceless_query extension is enabled, then `surface` can be VK_NULL_HANDLE. Otherwise, …
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-surface-06529` (*yours*; explicit rule): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SURFACE_INFO_2_KHR`
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkSurfaceFullScreenExclusiveInfoEXT, …
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-surface-parameter` (*by the types*): If `surface` is not VK_NULL_HANDLE, `surface` must be a valid VkSurfaceKHR handle*/
 #[cfg(feature = "khr_get_surface_capabilities2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -38,11 +41,11 @@ impl<'a> PhysicalDeviceSurfaceInfo2KHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkSurfaceCapabilities2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilities2KHR.html). Settled by the wrappers:
+The rules of `VkSurfaceCapabilities2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilities2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceCapabilities2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSurfaceCapabilities2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSurfaceCapabilities2KHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkSurfaceCapabilities2KHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSurfaceCapabilities2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_CAPABILITIES_2_KHR`
+- `VUID-VkSurfaceCapabilities2KHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDisplayNativeHdrSurfaceCapabilitiesAMD, …*/
 #[cfg(feature = "khr_get_surface_capabilities2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -58,13 +61,13 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkSurfaceFormat2KHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceFormat2KHR.html). Settled by the wrappers:
+The rules of `VkSurfaceFormat2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceFormat2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceFormat2KHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSurfaceFormat2KHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSurfaceFormat2KHR-sType-unique`: static (the wrappers create it themselves, with an empty `pNext` chain)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSurfaceFormat2KHR-pNext-06749` (*yours*; explicit rule): The `pNext` chain must not include an VkImageCompressionPropertiesEXT structure
+- `VUID-VkSurfaceFormat2KHR-pNext-06750` (*yours*; explicit rule): If the `imageCompressionControlSwapchain` feature is not enabled, the `pNext` chain must not include an VkImageCompressionPropertiesEXT structure
+- `VUID-VkSurfaceFormat2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_FORMAT_2_KHR`
+- `VUID-VkSurfaceFormat2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkImageCompressionPropertiesEXT
+- `VUID-VkSurfaceFormat2KHR-sType-unique` (*by the types*): The `sType` value of each struct in the `pNext` chain must be unique*/
 #[cfg(feature = "khr_get_surface_capabilities2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPresentRegionKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentRegionKHR.html). Settled by the wrappers:
+The rules of `VkPresentRegionKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentRegionKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPresentRegionKHR-pRectangles-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkPresentRegionKHR-pRectangles-parameter` (*by the types*): If `rectangleCount` is not `0`, and `pRectangles` is not `NULL`, `pRectangles` must be a valid pointer to an array of `rectangleCount` valid VkRectLayerKHR structures*/
 #[cfg(feature = "khr_incremental_present")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -41,13 +41,12 @@ impl<'a> PresentRegionKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkPresentRegionsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentRegionsKHR.html). Settled by the wrappers:
+The rules of `VkPresentRegionsKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentRegionsKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPresentRegionsKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPresentRegionsKHR-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPresentRegionsKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPresentRegionsKHR-swapchainCount-01260` (*yours*; explicit rule): `swapchainCount` must be the same value as `VkPresentInfoKHR::swapchainCount`, where `VkPresentInfoKHR` is included in the `pNext` chain of this `VkPresentRegionsKHR` structure
+- `VUID-VkPresentRegionsKHR-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-VkPresentRegionsKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PRESENT_REGIONS_KHR`
+- `VUID-VkPresentRegionsKHR-pRegions-parameter` (*by the types*): If `pRegions` is not `NULL`, `pRegions` must be a valid pointer to an array of `swapchainCount` valid VkPresentRegionKHR structures*/
 #[cfg(feature = "khr_incremental_present")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

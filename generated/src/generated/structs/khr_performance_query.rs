@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAcquireProfilingLockInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAcquireProfilingLockInfoKHR.html). Settled by the wrappers:
+The rules of `VkAcquireProfilingLockInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAcquireProfilingLockInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAcquireProfilingLockInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAcquireProfilingLockInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAcquireProfilingLockInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkAcquireProfilingLockInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkAcquireProfilingLockInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACQUIRE_PROFILING_LOCK_INFO_KHR`
+- `VUID-VkAcquireProfilingLockInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -41,10 +41,10 @@ impl<'a> AcquireProfilingLockInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkPerformanceCounterDescriptionKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceCounterDescriptionKHR.html). Settled by the wrappers:
+The rules of `VkPerformanceCounterDescriptionKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceCounterDescriptionKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPerformanceCounterDescriptionKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPerformanceCounterDescriptionKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPerformanceCounterDescriptionKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PERFORMANCE_COUNTER_DESCRIPTION_KHR`
+- `VUID-VkPerformanceCounterDescriptionKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -60,10 +60,10 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPerformanceCounterKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceCounterKHR.html). Settled by the wrappers:
+The rules of `VkPerformanceCounterKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceCounterKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPerformanceCounterKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPerformanceCounterKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPerformanceCounterKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PERFORMANCE_COUNTER_KHR`
+- `VUID-VkPerformanceCounterKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -78,11 +78,10 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPerformanceQuerySubmitInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceQuerySubmitInfoKHR.html). Settled by the wrappers:
+The rules of `VkPerformanceQuerySubmitInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPerformanceQuerySubmitInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPerformanceQuerySubmitInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPerformanceQuerySubmitInfoKHR-counterPassIndex-03221` (*yours*; explicit rule): `counterPassIndex` must be less than the number of counter passes required by any queries within the batch. The required number of counter passes for a performance query is obtained by calling …
+- `VUID-VkPerformanceQuerySubmitInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PERFORMANCE_QUERY_SUBMIT_INFO_KHR`*/
 #[cfg(feature = "khr_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -111,9 +110,9 @@ unsafe impl<'a> Extends<SubmitInfo2<'a>> for PerformanceQuerySubmitInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePerformanceQueryFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePerformanceQueryFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePerformanceQueryFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePerformanceQueryFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePerformanceQueryFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePerformanceQueryFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PERFORMANCE_QUERY_FEATURES_KHR`*/
 #[cfg(feature = "khr_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -150,9 +149,9 @@ for PhysicalDevicePerformanceQueryFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePerformanceQueryPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePerformanceQueryPropertiesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePerformanceQueryPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePerformanceQueryPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePerformanceQueryPropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePerformanceQueryPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PERFORMANCE_QUERY_PROPERTIES_KHR`*/
 #[cfg(feature = "khr_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -171,13 +170,14 @@ for PhysicalDevicePerformanceQueryPropertiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkQueryPoolPerformanceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolPerformanceCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkQueryPoolPerformanceCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueryPoolPerformanceCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueryPoolPerformanceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkQueryPoolPerformanceCreateInfoKHR-pCounterIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkQueryPoolPerformanceCreateInfoKHR-counterIndexCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkQueryPoolPerformanceCreateInfoKHR-queueFamilyIndex-03236` (*yours*; explicit rule): `queueFamilyIndex` must be a valid queue family index of the device
+- `VUID-VkQueryPoolPerformanceCreateInfoKHR-performanceCounterQueryPools-03237` (*yours*; explicit rule): The `performanceCounterQueryPools` feature must be enabled
+- `VUID-VkQueryPoolPerformanceCreateInfoKHR-pCounterIndices-03321` (*yours*; explicit rule): Each element of `pCounterIndices` must be in the range of counters reported by `vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR` for the queue family specified in `queueFamilyIndex`
+- `VUID-VkQueryPoolPerformanceCreateInfoKHR-counterIndexCount-arraylength` (*checked*): `counterIndexCount` must be greater than `0`
+- `VUID-VkQueryPoolPerformanceCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUERY_POOL_PERFORMANCE_CREATE_INFO_KHR`
+- `VUID-VkQueryPoolPerformanceCreateInfoKHR-pCounterIndices-parameter` (*by the types*): `pCounterIndices` must be a valid pointer to an array of `counterIndexCount` `uint32_t` values*/
 #[cfg(feature = "khr_performance_query")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR`*/
 #[cfg(feature = "khr_pipeline_executable_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,13 +39,12 @@ for PhysicalDevicePipelineExecutablePropertiesFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineExecutableInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutableInfoKHR.html). Settled by the wrappers:
+The rules of `VkPipelineExecutableInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutableInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineExecutableInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineExecutableInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPipelineExecutableInfoKHR-pipeline-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineExecutableInfoKHR-executableIndex-03275` (*yours*; explicit rule): `executableIndex` must be less than the number of pipeline executables associated with `pipeline` as returned in the `pExecutableCount` parameter of `vkGetPipelineExecutablePropertiesKHR`
+- `VUID-VkPipelineExecutableInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR`
+- `VUID-VkPipelineExecutableInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkPipelineExecutableInfoKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
 #[cfg(feature = "khr_pipeline_executable_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -88,10 +87,10 @@ impl<'a> PipelineExecutableInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkPipelineExecutableInternalRepresentationKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutableInternalRepresentationKHR.html). Settled by the wrappers:
+The rules of `VkPipelineExecutableInternalRepresentationKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutableInternalRepresentationKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineExecutableInternalRepresentationKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineExecutableInternalRepresentationKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPipelineExecutableInternalRepresentationKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INTERNAL_REPRESENTATION_KHR`
+- `VUID-VkPipelineExecutableInternalRepresentationKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_pipeline_executable_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -107,10 +106,10 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPipelineExecutablePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutablePropertiesKHR.html). Settled by the wrappers:
+The rules of `VkPipelineExecutablePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutablePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineExecutablePropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineExecutablePropertiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPipelineExecutablePropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR`
+- `VUID-VkPipelineExecutablePropertiesKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_pipeline_executable_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -126,10 +125,10 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPipelineExecutableStatisticKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutableStatisticKHR.html). Settled by the wrappers:
+The rules of `VkPipelineExecutableStatisticKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutableStatisticKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineExecutableStatisticKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineExecutableStatisticKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPipelineExecutableStatisticKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR`
+- `VUID-VkPipelineExecutableStatisticKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_pipeline_executable_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,17 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPipelineLibraryCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineLibraryCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkPipelineLibraryCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineLibraryCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineLibraryCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineLibraryCreateInfoKHR-pLibraries-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineLibraryCreateInfoKHR-pLibraries-03381` (*yours*; explicit rule): Each element of `pLibraries` must have been created with `VK_PIPELINE_CREATE_LIBRARY_BIT_KHR`
+- `VUID-VkPipelineLibraryCreateInfoKHR-pLibraries-06855` (*yours*; explicit rule): If any library in `pLibraries` was created with a shader stage with VkPipelineShaderStageModuleIdentifierCreateInfoEXT and `identifierSize` not equal to 0, the pipeline must be created with the …
+- `VUID-VkPipelineLibraryCreateInfoKHR-pLibraries-08096` (*yours*; explicit rule): If any element of `pLibraries` was created with `VK_PIPELINE_CREATE_DESCRIPTOR_BUFFER_BIT_EXT`, all elements must have been created with `VK_PIPELINE_CREATE_DESCRIPTOR_BUFFER_BIT_EXT`
+- `VUID-VkPipelineLibraryCreateInfoKHR-pipeline-07404` (*yours*; explicit rule): If `pipeline` is being created with `VK_PIPELINE_CREATE_NO_PROTECTED_ACCESS_BIT_EXT`, every element of `pLibraries` must have been created with `VK_PIPELINE_CREATE_NO_PROTECTED_ACCESS_BIT_EXT`
+- `VUID-VkPipelineLibraryCreateInfoKHR-pipeline-07405` (*yours*; explicit rule): If `pipeline` is being created without `VK_PIPELINE_CREATE_NO_PROTECTED_ACCESS_BIT_EXT`, every element of `pLibraries` must have been created without `VK_PIPELINE_CREATE_NO_PROTECTED_ACCESS_BIT_EXT`
+- `VUID-VkPipelineLibraryCreateInfoKHR-pipeline-07406` (*yours*; explicit rule): If `pipeline` is being created with `VK_PIPELINE_CREATE_PROTECTED_ACCESS_ONLY_BIT_EXT`, every element of `pLibraries` must have been created with `VK_PIPELINE_CREATE_PROTECTED_ACCESS_ONLY_BIT_EXT`
+- `VUID-VkPipelineLibraryCreateInfoKHR-pipeline-07407` (*yours*; explicit rule): If `pipeline` is being created without `VK_PIPELINE_CREATE_PROTECTED_ACCESS_ONLY_BIT_EXT`, every element of `pLibraries` must have been created without …
+- `VUID-VkPipelineLibraryCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_LIBRARY_CREATE_INFO_KHR`
+- `VUID-VkPipelineLibraryCreateInfoKHR-pLibraries-parameter` (*by the types*): If `libraryCount` is not `0`, `pLibraries` must be a valid pointer to an array of `libraryCount` valid VkPipeline handles*/
 #[cfg(feature = "khr_pipeline_library")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

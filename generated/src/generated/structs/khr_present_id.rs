@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePresentIdFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePresentIdFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePresentIdFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePresentIdFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePresentIdFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePresentIdFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PRESENT_ID_FEATURES_KHR`*/
 #[cfg(feature = "khr_present_id")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,13 +39,13 @@ for PhysicalDevicePresentIdFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPresentIdKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentIdKHR.html). Settled by the wrappers:
+The rules of `VkPresentIdKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentIdKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPresentIdKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPresentIdKHR-pPresentIds-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPresentIdKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPresentIdKHR-swapchainCount-04998` (*yours*; explicit rule): `swapchainCount` must be the same value as `VkPresentInfoKHR::swapchainCount`, where this `VkPresentIdKHR` is in the `pNext` chain of the `VkPresentInfoKHR` structure
+- `VUID-VkPresentIdKHR-presentIds-04999` (*yours*; explicit rule): Each `presentIds` entry must be greater than any previous `presentIds` entry passed for the associated `pSwapchains` entry
+- `VUID-VkPresentIdKHR-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-VkPresentIdKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PRESENT_ID_KHR`
+- `VUID-VkPresentIdKHR-pPresentIds-parameter` (*by the types*): If `pPresentIds` is not `NULL`, `pPresentIds` must be a valid pointer to an array of `swapchainCount` `uint64_t` values*/
 #[cfg(feature = "khr_present_id")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

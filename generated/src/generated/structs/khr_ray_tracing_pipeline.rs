@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceRayTracingPipelineFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingPipelineFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceRayTracingPipelineFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingPipelineFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceRayTracingPipelineFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPhysicalDeviceRayTracingPipelineFeaturesKHR-rayTracingPipelineShaderGroupHandleCaptureReplayMixed-03575` (*yours*; explicit rule): If `rayTracingPipelineShaderGroupHandleCaptureReplayMixed` is `VK_TRUE`, `rayTracingPipelineShaderGroupHandleCaptureReplay` must also be `VK_TRUE`
+- `VUID-VkPhysicalDeviceRayTracingPipelineFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR`*/
 #[cfg(feature = "khr_ray_tracing_pipeline")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -75,9 +74,9 @@ for PhysicalDeviceRayTracingPipelineFeaturesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceRayTracingPipelinePropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingPipelinePropertiesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceRayTracingPipelinePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingPipelinePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceRayTracingPipelinePropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceRayTracingPipelinePropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR`*/
 #[cfg(feature = "khr_ray_tracing_pipeline")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -96,21 +95,56 @@ for PhysicalDeviceRayTracingPipelinePropertiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRayTracingPipelineCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingPipelineCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkRayTracingPipelineCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingPipelineCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRayTracingPipelineCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkRayTracingPipelineCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-pStages-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-pGroups-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInterface-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-pDynamicState-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-layout-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRayTracingPipelineCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 37 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03421` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is `-1`, `basePipelineHandle` must be a valid handle to a ray tracing `VkPipeline`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03422` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is VK_NULL_HANDLE, `basePipelineIndex` must be a valid index into the calling command&#8217;s `pCreateInfos` …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03423` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is not `-1`, `basePipelineHandle` must be VK_NULL_HANDLE
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03424` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be `-1`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pStages-03426` (*yours*; explicit rule): The shader code for the entry points identified by `pStages`, and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-layout-03427` (*yours*; explicit rule): `layout` must be consistent with all shaders specified in `pStages`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-layout-03428` (*yours*; explicit rule): The number of resources in `layout` accessible to each shader stage that is used by the pipeline must be less than or equal to VkPhysicalDeviceLimits::`maxPerStageResources`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-stage-03425` (*yours*; explicit rule): If `flags` does not include `VK_PIPELINE_CREATE_LIBRARY_BIT_KHR`, the `stage` member of at least one element of `pStages`, including those implicitly added by `pLibraryInfo`, must be …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-maxPipelineRayRecursionDepth-03589` (*yours*; explicit rule): `maxPipelineRayRecursionDepth` must be less than or equal to VkPhysicalDeviceRayTracingPipelinePropertiesKHR::`maxRayRecursionDepth`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-03595` (*yours*; explicit rule): If the VK_KHR_pipeline_library extension is not enabled, `pLibraryInfo` and `pLibraryInterface` must be `NULL`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03470` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_ANY_HIT_SHADERS_BIT_KHR`, for any element of `pGroups` with a `type` of `VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR` or …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03471` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_CLOSEST_HIT_SHADERS_BIT_KHR`, for any element of `pGroups` with a `type` of `VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR` or …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-rayTraversalPrimitiveCulling-03596` (*yours*; explicit rule): If the `rayTraversalPrimitiveCulling` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-rayTraversalPrimitiveCulling-03597` (*yours*; explicit rule): If the `rayTraversalPrimitiveCulling` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-06546` (*yours*; explicit rule): `flags` must not include both `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR` and `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03598` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_SHADER_GROUP_HANDLE_CAPTURE_REPLAY_BIT_KHR`, `rayTracingPipelineShaderGroupHandleCaptureReplay` must be enabled
+- `VUID-VkRayTracingPipelineCreateInfoKHR-rayTracingPipelineShaderGroupHandleCaptureReplay-03599` (*yours*; explicit rule): If VkPhysicalDeviceRayTracingPipelineFeaturesKHR::`rayTracingPipelineShaderGroupHandleCaptureReplay` is `VK_TRUE` and the `pShaderGroupCaptureReplayHandle` member of any element of `pGroups` is not …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-03600` (*yours*; explicit rule): If `pLibraryInfo` is not `NULL` and its `libraryCount` is `0`, `stageCount` must not be `0`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-03601` (*yours*; explicit rule): If `pLibraryInfo` is not `NULL` and its `libraryCount` is `0`, `groupCount` must not be `0`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pDynamicStates-03602` (*yours*; explicit rule): Any element of the `pDynamicStates` member of `pDynamicState` must be `VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-stage-06899` (*yours*; explicit rule): The `stage` value in all `pStages` elements must be one of `VK_SHADER_STAGE_RAYGEN_BIT_KHR`, `VK_SHADER_STAGE_ANY_HIT_BIT_KHR`, `VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR`, `VK_SHADER_STAGE_MISS_BIT_KHR`, …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-02904` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_INDIRECT_BINDABLE_BIT_NV`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pipelineCreationCacheControl-02905` (*yours*; explicit rule): If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03465` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_LIBRARY_BIT_KHR`, `pLibraryInterface` must not be `NULL`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-03590` (*yours*; explicit rule): If `pLibraryInfo` is not `NULL` and its `libraryCount` member is greater than `0`, `pLibraryInterface` must not be `NULL`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraries-03591` (*yours*; explicit rule): Each element of `pLibraryInfo->pLibraries` must have been created with the value of `maxPipelineRayRecursionDepth` equal to that in this pipeline
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-03592` (*yours*; explicit rule): If `pLibraryInfo` is not `NULL`, each element of its `pLibraries` member must have been created with a `layout` that is compatible with the `layout` in this pipeline
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-03593` (*yours*; explicit rule): If `pLibraryInfo` is not `NULL`, each element of its `pLibraries` member must have been created with values of the `maxPipelineRayPayloadSize` and `maxPipelineRayHitAttributeSize` members of …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-03594` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_SHADER_GROUP_HANDLE_CAPTURE_REPLAY_BIT_KHR`, each element of `pLibraryInfo->pLibraries` must have been created with the …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-04718` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR`, each element of `pLibraryInfo->pLibraries` must have been created with the `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR` …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-04719` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR`, each element of `pLibraryInfo->pLibraries` must have been created with the …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-04720` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_ANY_HIT_SHADERS_BIT_KHR`, each element of `pLibraryInfo->pLibraries` must have been created with the …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-04721` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_CLOSEST_HIT_SHADERS_BIT_KHR`, each element of `pLibraryInfo->pLibraries` must have been created with the …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-04722` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_INTERSECTION_SHADERS_BIT_KHR`, each element of `pLibraryInfo->pLibraries` must have been created with the …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-04723` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_MISS_SHADERS_BIT_KHR`, each element of `pLibraryInfo->pLibraries` must have been created with the …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pipelineStageCreationFeedbackCount-06652` (*yours*; explicit rule): If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be equal to `stageCount`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-07403` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT`, each element of `pLibraryInfo->pLibraries` must have been created with the …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkRayTracingPipelineCreateInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineCreateFlagBits values
+- `VUID-VkRayTracingPipelineCreateInfoKHR-commonparent` (*checked*): Both of `basePipelineHandle`, and `layout` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkRayTracingPipelineCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkPipelineCreationFeedbackCreateInfo or …
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pStages-parameter` (*by the types*): If `stageCount` is not `0`, `pStages` must be a valid pointer to an array of `stageCount` valid VkPipelineShaderStageCreateInfo structures
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pGroups-parameter` (*by the types*): If `groupCount` is not `0`, `pGroups` must be a valid pointer to an array of `groupCount` valid VkRayTracingShaderGroupCreateInfoKHR structures
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-parameter` (*by the types*): If `pLibraryInfo` is not `NULL`, `pLibraryInfo` must be a valid pointer to a valid VkPipelineLibraryCreateInfoKHR structure
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInterface-parameter` (*by the types*): If `pLibraryInterface` is not `NULL`, `pLibraryInterface` must be a valid pointer to a valid VkRayTracingPipelineInterfaceCreateInfoKHR structure
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pDynamicState-parameter` (*by the types*): If `pDynamicState` is not `NULL`, `pDynamicState` must be a valid pointer to a valid VkPipelineDynamicStateCreateInfo structure
+- `VUID-VkRayTracingPipelineCreateInfoKHR-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle*/
 #[cfg(feature = "khr_ray_tracing_pipeline")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -230,12 +264,11 @@ impl<'a> RayTracingPipelineCreateInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkRayTracingPipelineInterfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingPipelineInterfaceCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkRayTracingPipelineInterfaceCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingPipelineInterfaceCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRayTracingPipelineInterfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRayTracingPipelineInterfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRayTracingPipelineInterfaceCreateInfoKHR-maxPipelineRayHitAttributeSize-03605` (*yours*; explicit rule): `maxPipelineRayHitAttributeSize` must be less than or equal to VkPhysicalDeviceRayTracingPipelinePropertiesKHR::`maxRayHitAttributeSize`
+- `VUID-VkRayTracingPipelineInterfaceCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_INTERFACE_CREATE_INFO_KHR`
+- `VUID-VkRayTracingPipelineInterfaceCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_ray_tracing_pipeline")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -266,13 +299,19 @@ impl<'a> RayTracingPipelineInterfaceCreateInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkRayTracingShaderGroupCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingShaderGroupCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkRayTracingShaderGroupCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingShaderGroupCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRayTracingShaderGroupCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRayTracingShaderGroupCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkRayTracingShaderGroupCreateInfoKHR-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-type-03474` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR` then `generalShader` must be a valid index into VkRayTracingPipelineCreateInfoKHR::`pStages` referring to a shader of …
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-type-03475` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR` then `closestHitShader`, `anyHitShader`, and `intersectionShader` must be `VK_SHADER_UNUSED_KHR`
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-type-03476` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR` then `intersectionShader` must be a valid index into VkRayTracingPipelineCreateInfoKHR::`pStages` referring to a shader of …
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-type-03477` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR` then `intersectionShader` must be `VK_SHADER_UNUSED_KHR`
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-closestHitShader-03478` (*yours*; explicit rule): `closestHitShader` must be either `VK_SHADER_UNUSED_KHR` or a valid index into VkRayTracingPipelineCreateInfoKHR::`pStages` referring to a shader of `VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR`
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-anyHitShader-03479` (*yours*; explicit rule): `anyHitShader` must be either `VK_SHADER_UNUSED_KHR` or a valid index into VkRayTracingPipelineCreateInfoKHR::`pStages` referring to a shader of `VK_SHADER_STAGE_ANY_HIT_BIT_KHR`
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-rayTracingPipelineShaderGroupHandleCaptureReplayMixed-03603` (*yours*; explicit rule): If VkPhysicalDeviceRayTracingPipelineFeaturesKHR::`rayTracingPipelineShaderGroupHandleCaptureReplayMixed` is `VK_FALSE` then `pShaderGroupCaptureReplayHandle` must not be provided if it has not been …
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-rayTracingPipelineShaderGroupHandleCaptureReplayMixed-03604` (*yours*; explicit rule): If VkPhysicalDeviceRayTracingPipelineFeaturesKHR::`rayTracingPipelineShaderGroupHandleCaptureReplayMixed` is `VK_FALSE` then the caller must guarantee that no ray tracing pipeline creation commands …
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-type-parameter` (*checked*): `type` must be a valid VkRayTracingShaderGroupTypeKHR value
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR`
+- `VUID-VkRayTracingShaderGroupCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_ray_tracing_pipeline")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

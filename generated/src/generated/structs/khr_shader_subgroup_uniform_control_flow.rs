@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShaderSubgroupUniformControlFlowFeaturesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderSubgroupUniformControlFlowFeaturesKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShaderSubgroupUniformControlFlowFeaturesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderSubgroupUniformControlFlowFeaturesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShaderSubgroupUniformControlFlowFeaturesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShaderSubgroupUniformControlFlowFeaturesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_SUBGROUP_UNIFORM_CONTROL_FLOW_FEATURES_KHR`*/
 #[cfg(feature = "khr_shader_subgroup_uniform_control_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkSharedPresentSurfaceCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSharedPresentSurfaceCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `VkSharedPresentSurfaceCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSharedPresentSurfaceCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSharedPresentSurfaceCapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkSharedPresentSurfaceCapabilitiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SHARED_PRESENT_SURFACE_CAPABILITIES_KHR`*/
 #[cfg(feature = "khr_shared_presentable_image")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkSurfaceProtectedCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceProtectedCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `VkSurfaceProtectedCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceProtectedCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceProtectedCapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkSurfaceProtectedCapabilitiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_PROTECTED_CAPABILITIES_KHR`*/
 #[cfg(feature = "khr_surface_protected_capabilities")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -20,20 +20,20 @@ match gpu.queue.present_khr(
 
 # Valid usage
 
-The rules are on [`VkPresentInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentInfoKHR.html). Settled by the wrappers:
+The rules of `VkPresentInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPresentInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPresentInfoKHR-pImageIndices-01296`: dynamic (checks each index against the images acquired from the swapchain and not presented since, and the image's layout against the one the device's submissions so far leave it in (the recorder follows every command that changes a layout))
-- `VUID-VkPresentInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPresentInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkPresentInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkPresentInfoKHR-pSwapchains-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkPresentInfoKHR-pImageIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPresentInfoKHR-pResults-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
-- `VUID-VkPresentInfoKHR-swapchainCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkPresentInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPresentInfoKHR-pImageIndices-01430` (*yours*; explicit rule): Each element of `pImageIndices` must be the index of a presentable image acquired from the swapchain specified by the corresponding element of the `pSwapchains` array, and the presented image …
+- `VUID-VkPresentInfoKHR-pNext-06235` (*yours*; explicit rule): If a VkPresentIdKHR structure is included in the `pNext` chain, and the `presentId` feature is not enabled, each `presentIds` entry in that structure must be NULL
+- `VUID-VkPresentInfoKHR-pImageIndices-01296` (*checked*): Each element of `pImageIndices` must be the index of a presentable image acquired from the swapchain specified by the corresponding element of the `pSwapchains` array, and the presented image …
+- `VUID-VkPresentInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPresentInfoKHR-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
+- `VUID-VkPresentInfoKHR-commonparent` (*checked*): Both of the elements of `pSwapchains`, and the elements of `pWaitSemaphores` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkPresentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PRESENT_INFO_KHR`
+- `VUID-VkPresentInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupPresentInfoKHR, VkDisplayPresentInfoKHR, …
+- `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter` (*by the types*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphores` must be a valid pointer to an array of `waitSemaphoreCount` valid VkSemaphore handles
+- `VUID-VkPresentInfoKHR-pSwapchains-parameter` (*by the types*): `pSwapchains` must be a valid pointer to an array of `swapchainCount` valid VkSwapchainKHR handles
+- `VUID-VkPresentInfoKHR-pImageIndices-parameter` (*by the types*): `pImageIndices` must be a valid pointer to an array of `swapchainCount` `uint32_t` values
+- `VUID-VkPresentInfoKHR-pResults-parameter` (*by the types*): If `pResults` is not `NULL`, `pResults` must be a valid pointer to an array of `swapchainCount` VkResult values*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -101,41 +101,53 @@ let info = tuff::SwapchainCreateInfoKHR::new(&self.surface)
 
 # Valid usage
 
-The rules are on [`VkSwapchainCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkSwapchainCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01273`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-01427`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277`: static (the setter takes a slice and stores its length in the count member)
-- `VUID-VkSwapchainCreateInfoKHR-preTransform-01279`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933`: dynamic (checks oldSwapchain presents to the same surface and was not retired: the device records each swapchain's surface, and a creation retires its oldSwapchain before the call, whether or not it succeeds)
-- `VUID-VkSwapchainCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSwapchainCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSwapchainCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkSwapchainCreateInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-surface-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSwapchainCreateInfoKHR-imageFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-imageColorSpace-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-imageUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-imageUsage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-preTransform-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-presentMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSwapchainCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-- `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429`: dynamic (checks the create info against what the physical device reports for the surface (support from a queue family of the device, capabilities, formats, present modes) and for the swapchain's implied images, its queue families, and the device's physical-device count)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 18.
-
-- 4: checked by the safe methods in every build (against what the physical device reports for the surface and the swapchain's images), but no test breaks it: lavapipe's X11 surface is supported by its only queue family, has no maximum image count, offers every present mode the emitted API defines, and supports the images of every create info the other checks let through
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 13: explicit rule; the wrappers do not check it*/
+- `VUID-VkSwapchainCreateInfoKHR-surface-01270` (*yours*; checked by the safe methods in every build): `surface` must be a surface that is supported by the device as determined using vkGetPhysicalDeviceSurfaceSupportKHR
+- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01272` (*yours*; checked by the safe methods in every build): `minImageCount` must be less than or equal to the value returned in the `maxImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for …
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01278` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, `queueFamilyIndexCount` must be greater than `1`
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-01281` (*yours*; checked by the safe methods in every build): `presentMode` must be one of the VkPresentModeKHR values returned by `vkGetPhysicalDeviceSurfacePresentModesKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01778` (*yours*; checked by the safe methods in every build): The implied image creation parameters of the swapchain must be supported as reported by vkGetPhysicalDeviceImageFormatProperties
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-02839` (*yours*; explicit rule): If `presentMode` is not `VK_PRESENT_MODE_SHARED_DEMAND_REFRESH_KHR` nor `VK_PRESENT_MODE_SHARED_CONTINUOUS_REFRESH_KHR`, then `minImageCount` must be greater than or equal to the value returned in the …
+- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01383` (*yours*; explicit rule): `minImageCount` must be `1` if `presentMode` is either `VK_PRESENT_MODE_SHARED_DEMAND_REFRESH_KHR` or `VK_PRESENT_MODE_SHARED_CONTINUOUS_REFRESH_KHR`
+- `VUID-VkSwapchainCreateInfoKHR-imageUsage-01384` (*yours*; explicit rule): If `presentMode` is `VK_PRESENT_MODE_SHARED_DEMAND_REFRESH_KHR` or `VK_PRESENT_MODE_SHARED_CONTINUOUS_REFRESH_KHR`, `imageUsage` must be a subset of the supported usage flags present in the …
+- `VUID-VkSwapchainCreateInfoKHR-pNext-07781` (*yours*; explicit rule): If a VkSwapchainPresentScalingCreateInfoEXT structure was not included in the `pNext` chain, or it is included and VkSwapchainPresentScalingCreateInfoEXT::`scalingBehavior` is zero then `imageExtent` …
+- `VUID-VkSwapchainCreateInfoKHR-pNext-07782` (*yours*; explicit rule): If a VkSwapchainPresentScalingCreateInfoEXT structure was included in the `pNext` chain and VkSwapchainPresentScalingCreateInfoEXT::`scalingBehavior` is not zero then `imageExtent` must be between …
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01393` (*yours*; explicit rule): If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by …
+- `VUID-VkSwapchainCreateInfoKHR-flags-03168` (*yours*; explicit rule): If `flags` contains `VK_SWAPCHAIN_CREATE_MUTABLE_FORMAT_BIT_KHR` then the `pNext` chain must include a VkImageFormatListCreateInfo structure with a `viewFormatCount` greater than zero and …
+- `VUID-VkSwapchainCreateInfoKHR-pNext-04099` (*yours*; explicit rule): If a VkImageFormatListCreateInfo structure was included in the `pNext` chain and VkImageFormatListCreateInfo::`viewFormatCount` is not zero then all of the formats in …
+- `VUID-VkSwapchainCreateInfoKHR-flags-04100` (*yours*; explicit rule): If `flags` does not contain `VK_SWAPCHAIN_CREATE_MUTABLE_FORMAT_BIT_KHR` and the `pNext` chain include a VkImageFormatListCreateInfo structure then VkImageFormatListCreateInfo::`viewFormatCount` must …
+- `VUID-VkSwapchainCreateInfoKHR-flags-03187` (*yours*; explicit rule): If `flags` contains `VK_SWAPCHAIN_CREATE_PROTECTED_BIT_KHR`, then `VkSurfaceProtectedCapabilitiesKHR::supportsProtected` must be `VK_TRUE` in the VkSurfaceProtectedCapabilitiesKHR structure returned …
+- `VUID-VkSwapchainCreateInfoKHR-pNext-02679` (*yours*; explicit rule): If the `pNext` chain includes a VkSurfaceFullScreenExclusiveInfoEXT structure with its `fullScreenExclusive` member set to `VK_FULL_SCREEN_EXCLUSIVE_APPLICATION_CONTROLLED_EXT`, and `surface` was …
+- `VUID-VkSwapchainCreateInfoKHR-pNext-06751` (*yours*; explicit rule): The `pNext` chain must not include an VkImageCompressionControlEXT structure
+- `VUID-VkSwapchainCreateInfoKHR-pNext-06752` (*yours*; explicit rule): If the `imageCompressionControlSwapchain` feature is not enabled, the `pNext` chain must not include an VkImageCompressionControlEXT structure
+- `VUID-VkSwapchainCreateInfoKHR-imageFormat-01273` (*checked*): `imageFormat` and `imageColorSpace` must match the `format` and `colorSpace` members, respectively, of one of the `VkSurfaceFormatKHR` structures returned by `vkGetPhysicalDeviceSurfaceFormatsKHR` for …
+- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01689` (*checked*): `imageExtent` members `width` and `height` must both be non-zero
+- `VUID-VkSwapchainCreateInfoKHR-imageArrayLayers-01275` (*checked*): `imageArrayLayers` must be greater than `0` and less than or equal to the `maxImageArrayLayers` member of the `VkSurfaceCapabilitiesKHR` structure returned by …
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-01427` (*checked*): If `presentMode` is `VK_PRESENT_MODE_IMMEDIATE_KHR`, `VK_PRESENT_MODE_MAILBOX_KHR`, `VK_PRESENT_MODE_FIFO_KHR` or `VK_PRESENT_MODE_FIFO_RELAXED_KHR`, `imageUsage` must be a subset of the supported …
+- `VUID-VkSwapchainCreateInfoKHR-preTransform-01279` (*checked*): `preTransform` must be one of the bits present in the `supportedTransforms` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the surface
+- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-01280` (*checked*): `compositeAlpha` must be one of the bits present in the `supportedCompositeAlpha` member of the `VkSurfaceCapabilitiesKHR` structure returned by `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` for the …
+- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933` (*checked*): If `oldSwapchain` is not VK_NULL_HANDLE, `oldSwapchain` must be a non-retired swapchain associated with native window referred to by `surface`
+- `VUID-VkSwapchainCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSwapchainCreateInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkSwapchainCreateFlagBitsKHR values
+- `VUID-VkSwapchainCreateInfoKHR-imageFormat-parameter` (*checked*): `imageFormat` must be a valid VkFormat value
+- `VUID-VkSwapchainCreateInfoKHR-imageColorSpace-parameter` (*checked*): `imageColorSpace` must be a valid VkColorSpaceKHR value
+- `VUID-VkSwapchainCreateInfoKHR-imageUsage-parameter` (*checked*): `imageUsage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-VkSwapchainCreateInfoKHR-imageUsage-requiredbitmask` (*checked*): `imageUsage` must not be `0`
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-parameter` (*checked*): `imageSharingMode` must be a valid VkSharingMode value
+- `VUID-VkSwapchainCreateInfoKHR-preTransform-parameter` (*checked*): `preTransform` must be a valid VkSurfaceTransformFlagBitsKHR value
+- `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-parameter` (*checked*): `compositeAlpha` must be a valid VkCompositeAlphaFlagBitsKHR value
+- `VUID-VkSwapchainCreateInfoKHR-presentMode-parameter` (*checked*): `presentMode` must be a valid VkPresentModeKHR value
+- `VUID-VkSwapchainCreateInfoKHR-commonparent` (*checked*): Both of `oldSwapchain`, and `surface` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkInstance
+- `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271` (*checked*): `minImageCount` must be greater than or equal to the value returned in the `minImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by vkGetPhysicalDeviceSurfaceCapabilitiesKHR for …
+- `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274` (*checked*): `imageExtent` must be between `minImageExtent` and `maxImageExtent`, inclusive, where `minImageExtent` and `maxImageExtent` are members of the `VkSurfaceCapabilitiesKHR` structure returned by …
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01428` (*checked*): If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, each element of `pQueueFamilyIndices` must be unique and must be less than `pQueueFamilyPropertyCount` returned by either …
+- `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429` (*checked*): If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_SWAPCHAIN_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT_KHR`
+- `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277` (*by the types*): If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
+- `VUID-VkSwapchainCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR`
+- `VUID-VkSwapchainCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupSwapchainCreateInfoKHR, …
+- `VUID-VkSwapchainCreateInfoKHR-surface-parameter` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
+- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter` (*by the types*): If `oldSwapchain` is not VK_NULL_HANDLE, `oldSwapchain` must be a valid VkSwapchainKHR handle*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

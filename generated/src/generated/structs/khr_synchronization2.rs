@@ -7,10 +7,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCheckpointData2NV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCheckpointData2NV.html). Settled by the wrappers:
+The rules of `VkCheckpointData2NV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCheckpointData2NV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCheckpointData2NV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCheckpointData2NV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkCheckpointData2NV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CHECKPOINT_DATA_2_NV`
+- `VUID-VkCheckpointData2NV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(
     all(feature = "khr_synchronization2", feature = "nv_device_diagnostic_checkpoints")
 )]
@@ -28,9 +28,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkQueueFamilyCheckpointProperties2NV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyCheckpointProperties2NV.html). Settled by the wrappers:
+The rules of `VkQueueFamilyCheckpointProperties2NV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyCheckpointProperties2NV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueueFamilyCheckpointProperties2NV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkQueueFamilyCheckpointProperties2NV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_CHECKPOINT_PROPERTIES_2_NV`*/
 #[cfg(
     all(feature = "khr_synchronization2", feature = "nv_device_diagnostic_checkpoints")
 )]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH264CapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264CapabilitiesKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH264CapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264CapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264CapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkVideoDecodeH264CapabilitiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_CAPABILITIES_KHR`*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -28,11 +28,10 @@ for VideoDecodeH264CapabilitiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH264DpbSlotInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264DpbSlotInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH264DpbSlotInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264DpbSlotInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264DpbSlotInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (a window-system pointer given through an unsafe setter).*/
+- `VUID-VkVideoDecodeH264DpbSlotInfoKHR-pStdReferenceInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdReferenceInfo` must be a valid pointer to a valid `StdVideoDecodeH264ReferenceInfo` value
+- `VUID-VkVideoDecodeH264DpbSlotInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_DPB_SLOT_INFO_KHR`*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -68,13 +67,12 @@ for VideoDecodeH264DpbSlotInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH264PictureInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264PictureInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH264PictureInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264PictureInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264PictureInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoDecodeH264PictureInfoKHR-pSliceOffsets-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkVideoDecodeH264PictureInfoKHR-sliceCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (a window-system pointer given through an unsafe setter).*/
+- `VUID-VkVideoDecodeH264PictureInfoKHR-pStdPictureInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdPictureInfo` must be a valid pointer to a valid `StdVideoDecodeH264PictureInfo` value
+- `VUID-VkVideoDecodeH264PictureInfoKHR-sliceCount-arraylength` (*checked*): `sliceCount` must be greater than `0`
+- `VUID-VkVideoDecodeH264PictureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_PICTURE_INFO_KHR`
+- `VUID-VkVideoDecodeH264PictureInfoKHR-pSliceOffsets-parameter` (*by the types*): `pSliceOffsets` must be a valid pointer to an array of `sliceCount` `uint32_t` values*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -116,10 +114,10 @@ unsafe impl<'a> Extends<VideoDecodeInfoKHR<'a>> for VideoDecodeH264PictureInfoKH
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH264ProfileInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264ProfileInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH264ProfileInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264ProfileInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264ProfileInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoDecodeH264ProfileInfoKHR-pictureLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkVideoDecodeH264ProfileInfoKHR-pictureLayout-parameter` (*checked*): If `pictureLayout` is not `0`, `pictureLayout` must be a valid VkVideoDecodeH264PictureLayoutFlagBitsKHR value
+- `VUID-VkVideoDecodeH264ProfileInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_PROFILE_INFO_KHR`*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -165,14 +163,13 @@ unsafe impl<'a> Extends<QueryPoolCreateInfo<'a>> for VideoDecodeH264ProfileInfoK
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH264SessionParametersAddInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264SessionParametersAddInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH264SessionParametersAddInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264SessionParametersAddInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 2: a window-system pointer given through an unsafe setter
-- 2: explicit rule; the wrappers do not check it*/
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-None-04825` (*yours*; explicit rule): The `seq_parameter_set_id` member of each `StdVideoH264SequenceParameterSet` structure specified in the elements of `pStdSPSs` must be unique within `pStdSPSs`
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-None-04826` (*yours*; explicit rule): The pair constructed from the `seq_parameter_set_id` and `pic_parameter_set_id` members of each `StdVideoH264PictureParameterSet` structure specified in the elements of `pStdPPSs` must be unique …
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-pStdSPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdSPSCount` is not `0`, `pStdSPSs` must be a valid pointer to an array of `stdSPSCount` `StdVideoH264SequenceParameterSet` values
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-pStdPPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdPPSCount` is not `0`, `pStdPPSs` must be a valid pointer to an array of `stdPPSCount` `StdVideoH264PictureParameterSet` values
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_SESSION_PARAMETERS_ADD_INFO_KHR`*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -221,10 +218,10 @@ for VideoDecodeH264SessionParametersAddInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH264SessionParametersCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264SessionParametersCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH264SessionParametersCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264SessionParametersCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264SessionParametersCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoDecodeH264SessionParametersCreateInfoKHR-pParametersAddInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkVideoDecodeH264SessionParametersCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_SESSION_PARAMETERS_CREATE_INFO_KHR`
+- `VUID-VkVideoDecodeH264SessionParametersCreateInfoKHR-pParametersAddInfo-parameter` (*by the types*): If `pParametersAddInfo` is not `NULL`, `pParametersAddInfo` must be a valid pointer to a valid VkVideoDecodeH264SessionParametersAddInfoKHR structure*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH265CapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265CapabilitiesKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH265CapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265CapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265CapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkVideoDecodeH265CapabilitiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_CAPABILITIES_KHR`*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -28,11 +28,10 @@ for VideoDecodeH265CapabilitiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH265DpbSlotInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265DpbSlotInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH265DpbSlotInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265DpbSlotInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265DpbSlotInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (a window-system pointer given through an unsafe setter).*/
+- `VUID-VkVideoDecodeH265DpbSlotInfoKHR-pStdReferenceInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdReferenceInfo` must be a valid pointer to a valid `StdVideoDecodeH265ReferenceInfo` value
+- `VUID-VkVideoDecodeH265DpbSlotInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_DPB_SLOT_INFO_KHR`*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -68,13 +67,12 @@ for VideoDecodeH265DpbSlotInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH265PictureInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265PictureInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH265PictureInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265PictureInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265PictureInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoDecodeH265PictureInfoKHR-pSliceSegmentOffsets-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkVideoDecodeH265PictureInfoKHR-sliceSegmentCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (a window-system pointer given through an unsafe setter).*/
+- `VUID-VkVideoDecodeH265PictureInfoKHR-pStdPictureInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdPictureInfo` must be a valid pointer to a `StdVideoDecodeH265PictureInfo` value
+- `VUID-VkVideoDecodeH265PictureInfoKHR-sliceSegmentCount-arraylength` (*checked*): `sliceSegmentCount` must be greater than `0`
+- `VUID-VkVideoDecodeH265PictureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_PICTURE_INFO_KHR`
+- `VUID-VkVideoDecodeH265PictureInfoKHR-pSliceSegmentOffsets-parameter` (*by the types*): `pSliceSegmentOffsets` must be a valid pointer to an array of `sliceSegmentCount` `uint32_t` values*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -116,9 +114,9 @@ unsafe impl<'a> Extends<VideoDecodeInfoKHR<'a>> for VideoDecodeH265PictureInfoKH
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH265ProfileInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265ProfileInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH265ProfileInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265ProfileInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265ProfileInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkVideoDecodeH265ProfileInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_PROFILE_INFO_KHR`*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -155,14 +153,15 @@ unsafe impl<'a> Extends<QueryPoolCreateInfo<'a>> for VideoDecodeH265ProfileInfoK
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH265SessionParametersAddInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265SessionParametersAddInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH265SessionParametersAddInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265SessionParametersAddInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6.
-
-- 3: a window-system pointer given through an unsafe setter
-- 3: explicit rule; the wrappers do not check it*/
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-None-04833` (*yours*; explicit rule): The `vps_video_parameter_set_id` member of each `StdVideoH265VideoParameterSet` structure specified in the elements of `pStdVPSs` must be unique within `pStdVPSs`
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-None-04834` (*yours*; explicit rule): The pair constructed from the `sps_video_parameter_set_id` and `sps_seq_parameter_set_id` members of each `StdVideoH265SequenceParameterSet` structure specified in the elements of `pStdSPSs` must be …
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-None-04835` (*yours*; explicit rule): The triplet constructed from the `sps_video_parameter_set_id`, `pps_seq_parameter_set_id`, and `pps_pic_parameter_set_id` members of each `StdVideoH265PictureParameterSet` structure specified in the …
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdVPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdVPSCount` is not `0`, `pStdVPSs` must be a valid pointer to an array of `stdVPSCount` `StdVideoH265VideoParameterSet` values
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdSPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdSPSCount` is not `0`, `pStdSPSs` must be a valid pointer to an array of `stdSPSCount` `StdVideoH265SequenceParameterSet` values
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdPPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdPPSCount` is not `0`, `pStdPPSs` must be a valid pointer to an array of `stdPPSCount` `StdVideoH265PictureParameterSet` values
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_SESSION_PARAMETERS_ADD_INFO_KHR`*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -224,10 +223,10 @@ for VideoDecodeH265SessionParametersAddInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeH265SessionParametersCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265SessionParametersCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeH265SessionParametersCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265SessionParametersCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265SessionParametersCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoDecodeH265SessionParametersCreateInfoKHR-pParametersAddInfo-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkVideoDecodeH265SessionParametersCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_SESSION_PARAMETERS_CREATE_INFO_KHR`
+- `VUID-VkVideoDecodeH265SessionParametersCreateInfoKHR-pParametersAddInfo-parameter` (*by the types*): If `pParametersAddInfo` is not `NULL`, `pParametersAddInfo` must be a valid pointer to a valid VkVideoDecodeH265SessionParametersAddInfoKHR structure*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

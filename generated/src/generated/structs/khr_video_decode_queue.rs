@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeCapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkVideoDecodeCapabilitiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_CAPABILITIES_KHR`*/
 #[cfg(feature = "khr_video_decode_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -27,18 +27,23 @@ unsafe impl<'a> Extends<VideoCapabilitiesKHR<'a>> for VideoDecodeCapabilitiesKHR
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoDecodeInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkVideoDecodeInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkVideoDecodeInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkVideoDecodeInfoKHR-srcBuffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkVideoDecodeInfoKHR-dstPictureResource-parameter`: static (set from the safe counterpart, which the constructor requires)
-- `VUID-VkVideoDecodeInfoKHR-pSetupReferenceSlot-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkVideoDecodeInfoKHR-pReferenceSlots-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVideoDecodeInfoKHR-srcBuffer-07165` (*yours*; explicit rule): `srcBuffer` must have been created with `VK_BUFFER_USAGE_VIDEO_DECODE_SRC_BIT_KHR` set
+- `VUID-VkVideoDecodeInfoKHR-srcBufferOffset-07166` (*yours*; explicit rule): `srcBufferOffset` must be less than the size of `srcBuffer`
+- `VUID-VkVideoDecodeInfoKHR-srcBufferRange-07167` (*yours*; explicit rule): `srcBufferRange` must be less than or equal to the size of `srcBuffer` minus `srcBufferOffset`
+- `VUID-VkVideoDecodeInfoKHR-pSetupReferenceSlot-07168` (*yours*; explicit rule): If `pSetupReferenceSlot` is not `NULL`, then its `slotIndex` member must not be negative
+- `VUID-VkVideoDecodeInfoKHR-pSetupReferenceSlot-07169` (*yours*; explicit rule): If `pSetupReferenceSlot` is not `NULL`, then its `pPictureResource` must not be `NULL`
+- `VUID-VkVideoDecodeInfoKHR-slotIndex-07171` (*yours*; explicit rule): The `slotIndex` member of each element of `pReferenceSlots` must not be negative
+- `VUID-VkVideoDecodeInfoKHR-pPictureResource-07172` (*yours*; explicit rule): The `pPictureResource` member of each element of `pReferenceSlots` must not be `NULL`
+- `VUID-VkVideoDecodeInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkVideoDecodeInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkVideoDecodeInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_INFO_KHR`
+- `VUID-VkVideoDecodeInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeH264PictureInfoKHR or …
+- `VUID-VkVideoDecodeInfoKHR-srcBuffer-parameter` (*by the types*): `srcBuffer` must be a valid VkBuffer handle
+- `VUID-VkVideoDecodeInfoKHR-dstPictureResource-parameter` (*by the types*): `dstPictureResource` must be a valid VkVideoPictureResourceInfoKHR structure
+- `VUID-VkVideoDecodeInfoKHR-pSetupReferenceSlot-parameter` (*by the types*): If `pSetupReferenceSlot` is not `NULL`, `pSetupReferenceSlot` must be a valid pointer to a valid VkVideoReferenceSlotInfoKHR structure
+- `VUID-VkVideoDecodeInfoKHR-pReferenceSlots-parameter` (*by the types*): If `referenceSlotCount` is not `0`, `pReferenceSlots` must be a valid pointer to an array of `referenceSlotCount` valid VkVideoReferenceSlotInfoKHR structures*/
 #[cfg(feature = "khr_video_decode_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -126,10 +131,10 @@ impl<'a> VideoDecodeInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoDecodeUsageInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeUsageInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoDecodeUsageInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeUsageInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeUsageInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoDecodeUsageInfoKHR-videoUsageHints-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkVideoDecodeUsageInfoKHR-videoUsageHints-parameter` (*checked*): `videoUsageHints` must be a valid combination of VkVideoDecodeUsageFlagBitsKHR values
+- `VUID-VkVideoDecodeUsageInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_USAGE_INFO_KHR`*/
 #[cfg(feature = "khr_video_decode_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

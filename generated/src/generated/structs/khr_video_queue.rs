@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkBindVideoSessionMemoryInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindVideoSessionMemoryInfoKHR.html). Settled by the wrappers:
+The rules of `VkBindVideoSessionMemoryInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindVideoSessionMemoryInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindVideoSessionMemoryInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindVideoSessionMemoryInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBindVideoSessionMemoryInfoKHR-memory-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBindVideoSessionMemoryInfoKHR-memoryOffset-07201` (*yours*; explicit rule): `memoryOffset` must be less than the size of `memory`
+- `VUID-VkBindVideoSessionMemoryInfoKHR-memorySize-07202` (*yours*; explicit rule): `memorySize` must be less than or equal to the size of `memory` minus `memoryOffset`
+- `VUID-VkBindVideoSessionMemoryInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_VIDEO_SESSION_MEMORY_INFO_KHR`
+- `VUID-VkBindVideoSessionMemoryInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkBindVideoSessionMemoryInfoKHR-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -66,13 +66,13 @@ impl<'a> BindVideoSessionMemoryInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVideoFormatInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVideoFormatInfoKHR.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVideoFormatInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVideoFormatInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-imageUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-imageUsage-requiredbitmask`: dynamic (checks the flags are not 0)*/
+- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-imageUsage-parameter` (*checked*): `imageUsage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-imageUsage-requiredbitmask` (*checked*): `imageUsage` must not be `0`
+- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VIDEO_FORMAT_INFO_KHR`
+- `VUID-VkPhysicalDeviceVideoFormatInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkVideoProfileListInfoKHR*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -97,9 +97,9 @@ impl<'a> PhysicalDeviceVideoFormatInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkQueueFamilyQueryResultStatusPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyQueryResultStatusPropertiesKHR.html). Settled by the wrappers:
+The rules of `VkQueueFamilyQueryResultStatusPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyQueryResultStatusPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueueFamilyQueryResultStatusPropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkQueueFamilyQueryResultStatusPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_QUERY_RESULT_STATUS_PROPERTIES_KHR`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -118,9 +118,9 @@ for QueueFamilyQueryResultStatusPropertiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkQueueFamilyVideoPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyVideoPropertiesKHR.html). Settled by the wrappers:
+The rules of `VkQueueFamilyVideoPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyVideoPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueueFamilyVideoPropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkQueueFamilyVideoPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_VIDEO_PROPERTIES_KHR`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -138,20 +138,31 @@ for QueueFamilyVideoPropertiesKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoBeginCodingInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoBeginCodingInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoBeginCodingInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoBeginCodingInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoBeginCodingInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoBeginCodingInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkVideoBeginCodingInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkVideoBeginCodingInfoKHR-videoSession-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkVideoBeginCodingInfoKHR-videoSessionParameters-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkVideoBeginCodingInfoKHR-pReferenceSlots-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkVideoBeginCodingInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16.
-
-- 1: `parent` rules are not checked yet
-- 15: explicit rule; the wrappers do not check it*/
+- `VUID-VkVideoBeginCodingInfoKHR-videoSession-07237` (*yours*; explicit rule): `videoSession` must have memory bound to all of its memory bindings returned by vkGetVideoSessionMemoryRequirementsKHR for `videoSession`
+- `VUID-VkVideoBeginCodingInfoKHR-slotIndex-04856` (*yours*; explicit rule): Each non-negative VkVideoReferenceSlotInfoKHR::`slotIndex` specified in the elements of `pReferenceSlots` must be less than the VkVideoSessionCreateInfoKHR::`maxDpbSlots` specified when `videoSession` …
+- `VUID-VkVideoBeginCodingInfoKHR-pPictureResource-07238` (*yours*; explicit rule): Each video picture resource corresponding to any non-`NULL` `pPictureResource` member specified in the elements of `pReferenceSlots` must be unique within `pReferenceSlots`
+- `VUID-VkVideoBeginCodingInfoKHR-pPictureResource-07240` (*yours*; explicit rule): If the `pPictureResource` member of any element of `pReferenceSlots` is not `NULL`, then the image view specified in `pPictureResource->imageViewBinding` for that element must be compatible with the …
+- `VUID-VkVideoBeginCodingInfoKHR-pPictureResource-07241` (*yours*; explicit rule): If the `pPictureResource` member of any element of `pReferenceSlots` is not `NULL`, then the format of the image view specified in `pPictureResource->imageViewBinding` for that element must match the …
+- `VUID-VkVideoBeginCodingInfoKHR-pPictureResource-07242` (*yours*; explicit rule): If the `pPictureResource` member of any element of `pReferenceSlots` is not `NULL`, then its `codedOffset` member must be an integer multiple of `codedOffsetGranularity`
+- `VUID-VkVideoBeginCodingInfoKHR-pPictureResource-07243` (*yours*; explicit rule): If the `pPictureResource` member of any element of `pReferenceSlots` is not `NULL`, then its `codedExtent` member must be between `minCodedExtent` and `maxCodedExtent`, inclusive, `videoSession` was …
+- `VUID-VkVideoBeginCodingInfoKHR-flags-07244` (*yours*; explicit rule): If VkVideoCapabilitiesKHR::`flags` does not include `VK_VIDEO_CAPABILITY_SEPARATE_REFERENCE_IMAGES_BIT_KHR`, as returned by vkGetPhysicalDeviceVideoCapabilitiesKHR for the video profile `videoSession` …
+- `VUID-VkVideoBeginCodingInfoKHR-videoSessionParameters-04857` (*yours*; explicit rule): If `videoSessionParameters` is not `VK_NULL_HANDLE`, it must have been created with `videoSession` specified in VkVideoSessionParametersCreateInfoKHR::`videoSession`
+- `VUID-VkVideoBeginCodingInfoKHR-videoSessionParameters-parent` (*yours*; `parent` rules are not checked yet): If `videoSessionParameters` is a valid handle, it must have been created, allocated, or retrieved from `videoSession`
+- `VUID-VkVideoBeginCodingInfoKHR-slotIndex-07245` (*yours*; explicit rule): If `videoSession` was created with a decode operation and the `slotIndex` member of any element of `pReferenceSlots` is not negative, then the image view specified in …
+- `VUID-VkVideoBeginCodingInfoKHR-slotIndex-07246` (*yours*; explicit rule): If `videoSession` was created with an encode operation and the `slotIndex` member of any element of `pReferenceSlots` is not negative, then the image view specified in …
+- `VUID-VkVideoBeginCodingInfoKHR-videoSession-07247` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then `videoSessionParameters` must not be `VK_NULL_HANDLE`
+- `VUID-VkVideoBeginCodingInfoKHR-videoSession-07248` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then `videoSessionParameters` must not be `VK_NULL_HANDLE`
+- `VUID-VkVideoBeginCodingInfoKHR-videoSession-07249` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT`, then `videoSessionParameters` must not be `VK_NULL_HANDLE`
+- `VUID-VkVideoBeginCodingInfoKHR-videoSession-07250` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT`, then `videoSessionParameters` must not be `VK_NULL_HANDLE`
+- `VUID-VkVideoBeginCodingInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkVideoBeginCodingInfoKHR-commonparent` (*checked*): Both of `videoSession`, and `videoSessionParameters` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkVideoBeginCodingInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_BEGIN_CODING_INFO_KHR`
+- `VUID-VkVideoBeginCodingInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkVideoBeginCodingInfoKHR-videoSession-parameter` (*by the types*): `videoSession` must be a valid VkVideoSessionKHR handle
+- `VUID-VkVideoBeginCodingInfoKHR-videoSessionParameters-parameter` (*by the types*): If `videoSessionParameters` is not VK_NULL_HANDLE, `videoSessionParameters` must be a valid VkVideoSessionParametersKHR handle
+- `VUID-VkVideoBeginCodingInfoKHR-pReferenceSlots-parameter` (*by the types*): If `referenceSlotCount` is not `0`, `pReferenceSlots` must be a valid pointer to an array of `referenceSlotCount` valid VkVideoReferenceSlotInfoKHR structures*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -211,11 +222,11 @@ impl<'a> VideoBeginCodingInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoCapabilitiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoCapabilitiesKHR.html). Settled by the wrappers:
+The rules of `VkVideoCapabilitiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoCapabilitiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoCapabilitiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoCapabilitiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkVideoCapabilitiesKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkVideoCapabilitiesKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkVideoCapabilitiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_CAPABILITIES_KHR`
+- `VUID-VkVideoCapabilitiesKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeCapabilitiesKHR, VkVideoDecodeH264CapabilitiesKHR, …*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -230,15 +241,22 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkVideoCodingControlInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoCodingControlInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoCodingControlInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoCodingControlInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoCodingControlInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoCodingControlInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkVideoCodingControlInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkVideoCodingControlInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkVideoCodingControlInfoKHR-flags-requiredbitmask`: dynamic (checks the flags are not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVideoCodingControlInfoKHR-flags-07018` (*yours*; explicit rule): If `flags` includes `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_BIT_KHR`, then the `pNext` chain must include a VkVideoEncodeRateControlInfoKHR structure
+- `VUID-VkVideoCodingControlInfoKHR-flags-07019` (*yours*; explicit rule): If `flags` includes `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_LAYER_BIT_KHR`, then the `pNext` chain must include a VkVideoEncodeRateControlLayerInfoKHR structure
+- `VUID-VkVideoCodingControlInfoKHR-flags-07020` (*yours*; explicit rule): If `flags` includes `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_BIT_KHR`, then it must not also include `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_LAYER_BIT_KHR`
+- `VUID-VkVideoCodingControlInfoKHR-flags-07021` (*yours*; explicit rule): If `flags` includes `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_BIT_KHR`, the `rateControlMode` member of VkVideoEncodeRateControlInfoKHR included in the `pNext` chain is not …
+- `VUID-VkVideoCodingControlInfoKHR-pNext-07022` (*yours*; explicit rule): If the `pNext` chain includes a VkVideoEncodeRateControlInfoKHR, and VkVideoEncodeRateControlInfoKHR::`layerCount` is greater than `1`, then VkVideoEncodeH264RateControlInfoEXT::`temporalLayerCount` …
+- `VUID-VkVideoCodingControlInfoKHR-flags-07023` (*yours*; explicit rule): If `flags` includes `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_LAYER_BIT_KHR` and the bound video session was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT`, …
+- `VUID-VkVideoCodingControlInfoKHR-flags-07024` (*yours*; explicit rule): If `flags` includes `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_BIT_KHR`, the `rateControlMode` member of VkVideoEncodeRateControlInfoKHR included in the `pNext` chain is not …
+- `VUID-VkVideoCodingControlInfoKHR-pNext-07025` (*yours*; explicit rule): If the `pNext` chain includes a VkVideoEncodeRateControlInfoKHR, and VkVideoEncodeRateControlInfoKHR::`layerCount` is greater than `1`, then VkVideoEncodeH265RateControlInfoEXT::`subLayerCount` must …
+- `VUID-VkVideoCodingControlInfoKHR-flags-07026` (*yours*; explicit rule): If `flags` includes `VK_VIDEO_CODING_CONTROL_ENCODE_RATE_CONTROL_LAYER_BIT_KHR` and the bound video session was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT`, …
+- `VUID-VkVideoCodingControlInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkVideoCodingControlInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkVideoCodingControlFlagBitsKHR values
+- `VUID-VkVideoCodingControlInfoKHR-flags-requiredbitmask` (*checked*): `flags` must not be `0`
+- `VUID-VkVideoCodingControlInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_CODING_CONTROL_INFO_KHR`
+- `VUID-VkVideoCodingControlInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoEncodeH264RateControlInfoEXT, …*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -262,11 +280,11 @@ impl<'a> VideoCodingControlInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoEndCodingInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoEndCodingInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoEndCodingInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoEndCodingInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoEndCodingInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoEndCodingInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkVideoEndCodingInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkVideoEndCodingInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkVideoEndCodingInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_END_CODING_INFO_KHR`
+- `VUID-VkVideoEndCodingInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -290,10 +308,10 @@ impl<'a> VideoEndCodingInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoFormatPropertiesKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoFormatPropertiesKHR.html). Settled by the wrappers:
+The rules of `VkVideoFormatPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoFormatPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoFormatPropertiesKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoFormatPropertiesKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkVideoFormatPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_FORMAT_PROPERTIES_KHR`
+- `VUID-VkVideoFormatPropertiesKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -308,13 +326,12 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkVideoPictureResourceInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoPictureResourceInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoPictureResourceInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoPictureResourceInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoPictureResourceInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoPictureResourceInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkVideoPictureResourceInfoKHR-imageViewBinding-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVideoPictureResourceInfoKHR-baseArrayLayer-07175` (*yours*; explicit rule): `baseArrayLayer` must be less than the VkImageViewCreateInfo::`subresourceRange.layerCount` specified when the image view `imageViewBinding` was created
+- `VUID-VkVideoPictureResourceInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_PICTURE_RESOURCE_INFO_KHR`
+- `VUID-VkVideoPictureResourceInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkVideoPictureResourceInfoKHR-imageViewBinding-parameter` (*by the types*): `imageViewBinding` must be a valid VkImageView handle*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -368,17 +385,22 @@ impl<'a> VideoPictureResourceInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoProfileInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoProfileInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoProfileInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoProfileInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoProfileInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoProfileInfoKHR-videoCodecOperation-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkVideoProfileInfoKHR-chromaSubsampling-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkVideoProfileInfoKHR-chromaSubsampling-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkVideoProfileInfoKHR-lumaBitDepth-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkVideoProfileInfoKHR-lumaBitDepth-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkVideoProfileInfoKHR-chromaBitDepth-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVideoProfileInfoKHR-chromaSubsampling-07013` (*yours*; explicit rule): `chromaSubsampling` must have a single bit set
+- `VUID-VkVideoProfileInfoKHR-lumaBitDepth-07014` (*yours*; explicit rule): `lumaBitDepth` must have a single bit set
+- `VUID-VkVideoProfileInfoKHR-chromaSubsampling-07015` (*yours*; explicit rule): If `chromaSubsampling` is not `VK_VIDEO_CHROMA_SUBSAMPLING_MONOCHROME_BIT_KHR`, then `chromaBitDepth` must have a single bit set
+- `VUID-VkVideoProfileInfoKHR-videoCodecOperation-07179` (*yours*; explicit rule): If `videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then the `pNext` chain must include a VkVideoDecodeH264ProfileInfoKHR structure
+- `VUID-VkVideoProfileInfoKHR-videoCodecOperation-07180` (*yours*; explicit rule): If `videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the `pNext` chain must include a VkVideoDecodeH265ProfileInfoKHR structure
+- `VUID-VkVideoProfileInfoKHR-videoCodecOperation-07181` (*yours*; explicit rule): If `videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT`, then the `pNext` chain must include a VkVideoEncodeH264ProfileInfoEXT structure
+- `VUID-VkVideoProfileInfoKHR-videoCodecOperation-07182` (*yours*; explicit rule): If `videoCodecOperation` is `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT`, then the `pNext` chain must include a VkVideoEncodeH265ProfileInfoEXT structure
+- `VUID-VkVideoProfileInfoKHR-videoCodecOperation-parameter` (*checked*): `videoCodecOperation` must be a valid VkVideoCodecOperationFlagBitsKHR value
+- `VUID-VkVideoProfileInfoKHR-chromaSubsampling-parameter` (*checked*): `chromaSubsampling` must be a valid combination of VkVideoChromaSubsamplingFlagBitsKHR values
+- `VUID-VkVideoProfileInfoKHR-chromaSubsampling-requiredbitmask` (*checked*): `chromaSubsampling` must not be `0`
+- `VUID-VkVideoProfileInfoKHR-lumaBitDepth-parameter` (*checked*): `lumaBitDepth` must be a valid combination of VkVideoComponentBitDepthFlagBitsKHR values
+- `VUID-VkVideoProfileInfoKHR-lumaBitDepth-requiredbitmask` (*checked*): `lumaBitDepth` must not be `0`
+- `VUID-VkVideoProfileInfoKHR-chromaBitDepth-parameter` (*checked*): `chromaBitDepth` must be a valid combination of VkVideoComponentBitDepthFlagBitsKHR values
+- `VUID-VkVideoProfileInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_PROFILE_INFO_KHR`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -431,12 +453,11 @@ unsafe impl<'a> Extends<QueryPoolCreateInfo<'a>> for VideoProfileInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoProfileListInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoProfileListInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoProfileListInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoProfileListInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoProfileListInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoProfileListInfoKHR-pProfiles-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVideoProfileListInfoKHR-pProfiles-06813` (*yours*; explicit rule): `pProfiles` must not contain more than one element whose `videoCodecOperation` member specifies a decode operation
+- `VUID-VkVideoProfileListInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_PROFILE_LIST_INFO_KHR`
+- `VUID-VkVideoProfileListInfoKHR-pProfiles-parameter` (*by the types*): If `profileCount` is not `0`, `pProfiles` must be a valid pointer to an array of `profileCount` valid VkVideoProfileInfoKHR structures*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -472,12 +493,12 @@ unsafe impl<'a> Extends<BufferCreateInfo<'a>> for VideoProfileListInfoKHR<'a> {}
 
 # Valid usage
 
-The rules are on [`VkVideoReferenceSlotInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoReferenceSlotInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoReferenceSlotInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoReferenceSlotInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoReferenceSlotInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoReferenceSlotInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkVideoReferenceSlotInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkVideoReferenceSlotInfoKHR-pPictureResource-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkVideoReferenceSlotInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkVideoReferenceSlotInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_REFERENCE_SLOT_INFO_KHR`
+- `VUID-VkVideoReferenceSlotInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeH264DpbSlotInfoKHR or …
+- `VUID-VkVideoReferenceSlotInfoKHR-pPictureResource-parameter` (*by the types*): If `pPictureResource` is not `NULL`, `pPictureResource` must be a valid pointer to a valid VkVideoPictureResourceInfoKHR structure*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -514,17 +535,27 @@ impl<'a> VideoReferenceSlotInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoSessionCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoSessionCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoSessionCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoSessionCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkVideoSessionCreateInfoKHR-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkVideoSessionCreateInfoKHR-pVideoProfile-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkVideoSessionCreateInfoKHR-pictureFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkVideoSessionCreateInfoKHR-referencePictureFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkVideoSessionCreateInfoKHR-pStdHeaderVersion-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkVideoSessionCreateInfoKHR-protectedMemory-07189` (*yours*; explicit rule): If the `protectedMemory` feature is not enabled or if VkVideoCapabilitiesKHR::`flags` does not include `VK_VIDEO_CAPABILITY_PROTECTED_CONTENT_BIT_KHR`, as returned by …
+- `VUID-VkVideoSessionCreateInfoKHR-pVideoProfile-04845` (*yours*; explicit rule): `pVideoProfile` must be a supported video profile
+- `VUID-VkVideoSessionCreateInfoKHR-maxDpbSlots-04847` (*yours*; explicit rule): `maxDpbSlots` must be less than or equal to VkVideoCapabilitiesKHR::`maxDpbSlots`, as returned by vkGetPhysicalDeviceVideoCapabilitiesKHR for the video profile specified by `pVideoProfile`
+- `VUID-VkVideoSessionCreateInfoKHR-maxActiveReferencePictures-04849` (*yours*; explicit rule): `maxActiveReferencePictures` must be less than or equal to VkVideoCapabilitiesKHR::`maxActiveReferencePictures`, as returned by vkGetPhysicalDeviceVideoCapabilitiesKHR for the video profile specified …
+- `VUID-VkVideoSessionCreateInfoKHR-maxDpbSlots-04850` (*yours*; explicit rule): If either `maxDpbSlots` or `maxActiveReferencePictures` is `0`, then both must be `0`
+- `VUID-VkVideoSessionCreateInfoKHR-maxCodedExtent-04851` (*yours*; explicit rule): `maxCodedExtent` must be between VkVideoCapabilitiesKHR::`minCodedExtent` and VkVideoCapabilitiesKHR::`maxCodedExtent`, inclusive, as returned by vkGetPhysicalDeviceVideoCapabilitiesKHR for the video …
+- `VUID-VkVideoSessionCreateInfoKHR-pStdHeaderVersion-07190` (*yours*; explicit rule): `pStdHeaderVersion->extensionName` must match VkVideoCapabilitiesKHR::`stdHeaderVersion.extensionName`, as returned by vkGetPhysicalDeviceVideoCapabilitiesKHR for the video profile specified by …
+- `VUID-VkVideoSessionCreateInfoKHR-pStdHeaderVersion-07191` (*yours*; explicit rule): `pStdHeaderVersion->specVersion` must be less than or equal to VkVideoCapabilitiesKHR::`stdHeaderVersion.specVersion`, as returned by vkGetPhysicalDeviceVideoCapabilitiesKHR for the video profile …
+- `VUID-VkVideoSessionCreateInfoKHR-referencePictureFormat-04852` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` specifies a decode operation and `maxActiveReferencePictures` is greater than `0`, then `referencePictureFormat` must be one of the supported decode DPB …
+- `VUID-VkVideoSessionCreateInfoKHR-pictureFormat-04853` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` specifies a decode operation, then `pictureFormat` must be one of the supported decode output formats, as returned by …
+- `VUID-VkVideoSessionCreateInfoKHR-referencePictureFormat-06814` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` specifies an encode operation and `maxActiveReferencePictures` is greater than `0`, then `referencePictureFormat` must be one of the supported decode DPB …
+- `VUID-VkVideoSessionCreateInfoKHR-pictureFormat-04854` (*yours*; explicit rule): If `pVideoProfile->videoCodecOperation` specifies an encode operation, then `pictureFormat` must be one of the supported encode input formats, as returned by …
+- `VUID-VkVideoSessionCreateInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkVideoSessionCreateFlagBitsKHR values
+- `VUID-VkVideoSessionCreateInfoKHR-pictureFormat-parameter` (*checked*): `pictureFormat` must be a valid VkFormat value
+- `VUID-VkVideoSessionCreateInfoKHR-referencePictureFormat-parameter` (*checked*): `referencePictureFormat` must be a valid VkFormat value
+- `VUID-VkVideoSessionCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_SESSION_CREATE_INFO_KHR`
+- `VUID-VkVideoSessionCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkVideoSessionCreateInfoKHR-pVideoProfile-parameter` (*by the types*): `pVideoProfile` must be a valid pointer to a valid VkVideoProfileInfoKHR structure
+- `VUID-VkVideoSessionCreateInfoKHR-pStdHeaderVersion-parameter` (*by the types*): `pStdHeaderVersion` must be a valid pointer to a valid VkExtensionProperties structure*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -617,10 +648,10 @@ impl<'a> VideoSessionCreateInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoSessionMemoryRequirementsKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionMemoryRequirementsKHR.html). Settled by the wrappers:
+The rules of `VkVideoSessionMemoryRequirementsKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionMemoryRequirementsKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoSessionMemoryRequirementsKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoSessionMemoryRequirementsKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkVideoSessionMemoryRequirementsKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_SESSION_MEMORY_REQUIREMENTS_KHR`
+- `VUID-VkVideoSessionMemoryRequirementsKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -636,20 +667,26 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkVideoSessionParametersCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionParametersCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoSessionParametersCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionParametersCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoSessionParametersCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoSessionParametersCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkVideoSessionParametersCreateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkVideoSessionParametersCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSessionParametersTemplate-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkVideoSessionParametersCreateInfoKHR-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 11.
-
-- 1: `parent` rules are not checked yet
-- 10: explicit rule; the wrappers do not check it*/
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSessionParametersTemplate-04855` (*yours*; explicit rule): If `videoSessionParametersTemplate` represents a valid handle, it must have been created against `videoSession`
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSessionParametersTemplate-parent` (*yours*; `parent` rules are not checked yet): If `videoSessionParametersTemplate` is a valid handle, it must have been created, allocated, or retrieved from `videoSession`
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07203` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then the `pNext` chain must include a VkVideoDecodeH264SessionParametersCreateInfoKHR …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07204` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then the number of elements of `spsAddList` must be less than or equal to the …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07205` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H264_BIT_KHR`, then the number of elements of `ppsAddList` must be less than or equal to the …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07206` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the `pNext` chain must include a VkVideoDecodeH265SessionParametersCreateInfoKHR …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07207` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the number of elements of `vpsAddList` must be less than or equal to the …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07208` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the number of elements of `spsAddList` must be less than or equal to the …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07209` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_DECODE_H265_BIT_KHR`, then the number of elements of `ppsAddList` must be less than or equal to the …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07210` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT`, then the `pNext` chain must include a VkVideoEncodeH264SessionParametersCreateInfoEXT …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07211` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT`, then the `pNext` chain must include a VkVideoEncodeH265SessionParametersCreateInfoEXT …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkVideoSessionParametersCreateInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkVideoSessionParametersCreateInfoKHR-commonparent` (*checked*): Both of `videoSession`, and `videoSessionParametersTemplate` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkVideoSessionParametersCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_SESSION_PARAMETERS_CREATE_INFO_KHR`
+- `VUID-VkVideoSessionParametersCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeH264SessionParametersCreateInfoKHR, …
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSessionParametersTemplate-parameter` (*by the types*): If `videoSessionParametersTemplate` is not VK_NULL_HANDLE, `videoSessionParametersTemplate` must be a valid VkVideoSessionParametersKHR handle
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-parameter` (*by the types*): `videoSession` must be a valid VkVideoSessionKHR handle*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -701,11 +738,11 @@ impl<'a> VideoSessionParametersCreateInfoKHR<'a> {
 
 # Valid usage
 
-The rules are on [`VkVideoSessionParametersUpdateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionParametersUpdateInfoKHR.html). Settled by the wrappers:
+The rules of `VkVideoSessionParametersUpdateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoSessionParametersUpdateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoSessionParametersUpdateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkVideoSessionParametersUpdateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkVideoSessionParametersUpdateInfoKHR-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkVideoSessionParametersUpdateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkVideoSessionParametersUpdateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_SESSION_PARAMETERS_UPDATE_INFO_KHR`
+- `VUID-VkVideoSessionParametersUpdateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeH264SessionParametersAddInfoKHR, …*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

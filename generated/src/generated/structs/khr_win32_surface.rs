@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkWin32SurfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWin32SurfaceCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkWin32SurfaceCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWin32SurfaceCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkWin32SurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkWin32SurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkWin32SurfaceCreateInfoKHR-hinstance-01307` (*yours*; explicit rule): `hinstance` must be a valid Win32 `HINSTANCE`
+- `VUID-VkWin32SurfaceCreateInfoKHR-hwnd-01308` (*yours*; explicit rule): `hwnd` must be a valid Win32 `HWND`
+- `VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkWin32SurfaceCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WIN32_SURFACE_CREATE_INFO_KHR`
+- `VUID-VkWin32SurfaceCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_win32_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkXcbSurfaceCreateInfoKHR`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkXcbSurfaceCreateInfoKHR.html). Settled by the wrappers:
+The rules of `VkXcbSurfaceCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkXcbSurfaceCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkXcbSurfaceCreateInfoKHR-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkXcbSurfaceCreateInfoKHR-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkXcbSurfaceCreateInfoKHR-connection-01310` (*yours*; explicit rule): `connection` must point to a valid X11 `xcb_connection_t`
+- `VUID-VkXcbSurfaceCreateInfoKHR-window-01311` (*yours*; explicit rule): `window` must be a valid X11 `xcb_window_t`
+- `VUID-VkXcbSurfaceCreateInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkXcbSurfaceCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_XCB_SURFACE_CREATE_INFO_KHR`
+- `VUID-VkXcbSurfaceCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_xcb_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

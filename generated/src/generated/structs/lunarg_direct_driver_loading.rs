@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDirectDriverLoadingInfoLUNARG`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDirectDriverLoadingInfoLUNARG.html). Settled by the wrappers:
+The rules of `VkDirectDriverLoadingInfoLUNARG` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDirectDriverLoadingInfoLUNARG.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDirectDriverLoadingInfoLUNARG-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDirectDriverLoadingInfoLUNARG-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkDirectDriverLoadingInfoLUNARG-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDirectDriverLoadingInfoLUNARG-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DIRECT_DRIVER_LOADING_INFO_LUNARG`*/
 #[cfg(feature = "lunarg_direct_driver_loading")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -43,12 +43,12 @@ impl<'a> DirectDriverLoadingInfoLUNARG<'a> {
 
 # Valid usage
 
-The rules are on [`VkDirectDriverLoadingListLUNARG`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDirectDriverLoadingListLUNARG.html). Settled by the wrappers:
+The rules of `VkDirectDriverLoadingListLUNARG` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDirectDriverLoadingListLUNARG.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDirectDriverLoadingListLUNARG-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDirectDriverLoadingListLUNARG-mode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDirectDriverLoadingListLUNARG-pDrivers-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDirectDriverLoadingListLUNARG-driverCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkDirectDriverLoadingListLUNARG-mode-parameter` (*checked*): `mode` must be a valid VkDirectDriverLoadingModeLUNARG value
+- `VUID-VkDirectDriverLoadingListLUNARG-driverCount-arraylength` (*checked*): `driverCount` must be greater than `0`
+- `VUID-VkDirectDriverLoadingListLUNARG-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DIRECT_DRIVER_LOADING_LIST_LUNARG`
+- `VUID-VkDirectDriverLoadingListLUNARG-pDrivers-parameter` (*by the types*): `pDrivers` must be a valid pointer to an array of `driverCount` valid VkDirectDriverLoadingInfoLUNARG structures*/
 #[cfg(feature = "lunarg_direct_driver_loading")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

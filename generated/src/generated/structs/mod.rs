@@ -14,6 +14,12 @@ pub use v1_0::*;
 mod v1_0_part2;
 #[allow(unused_imports)]
 pub use v1_0_part2::*;
+mod v1_0_part3;
+#[allow(unused_imports)]
+pub use v1_0_part3::*;
+mod v1_0_part4;
+#[allow(unused_imports)]
+pub use v1_0_part4::*;
 mod v1_1;
 #[allow(unused_imports)]
 pub use v1_1::*;
@@ -23,6 +29,12 @@ pub use v1_2::*;
 mod v1_3;
 #[allow(unused_imports)]
 pub use v1_3::*;
+mod v1_3_part2;
+#[allow(unused_imports)]
+pub use v1_3_part2::*;
+mod v1_3_part3;
+#[allow(unused_imports)]
+pub use v1_3_part3::*;
 #[cfg(feature = "amd_device_coherent_memory")]
 mod amd_device_coherent_memory;
 #[cfg(feature = "amd_device_coherent_memory")]

@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkIOSSurfaceCreateInfoMVK`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIOSSurfaceCreateInfoMVK.html). Settled by the wrappers:
+The rules of `VkIOSSurfaceCreateInfoMVK` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIOSSurfaceCreateInfoMVK.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkIOSSurfaceCreateInfoMVK-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkIOSSurfaceCreateInfoMVK-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkIOSSurfaceCreateInfoMVK-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkIOSSurfaceCreateInfoMVK-pView-04143` (*yours*; explicit rule): If `pView` is a CAMetalLayer object, it must be a valid CAMetalLayer
+- `VUID-VkIOSSurfaceCreateInfoMVK-pView-01316` (*yours*; explicit rule): If `pView` is a `UIView` object, it must be a valid `UIView`, must be backed by a `CALayer` object of type CAMetalLayer, and vkCreateIOSSurfaceMVK must be called on the main thread
+- `VUID-VkIOSSurfaceCreateInfoMVK-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkIOSSurfaceCreateInfoMVK-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IOS_SURFACE_CREATE_INFO_MVK`
+- `VUID-VkIOSSurfaceCreateInfoMVK-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "mvk_ios_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkMacOSSurfaceCreateInfoMVK`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMacOSSurfaceCreateInfoMVK.html). Settled by the wrappers:
+The rules of `VkMacOSSurfaceCreateInfoMVK` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMacOSSurfaceCreateInfoMVK.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMacOSSurfaceCreateInfoMVK-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMacOSSurfaceCreateInfoMVK-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMacOSSurfaceCreateInfoMVK-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMacOSSurfaceCreateInfoMVK-pView-04144` (*yours*; explicit rule): If `pView` is a CAMetalLayer object, it must be a valid CAMetalLayer
+- `VUID-VkMacOSSurfaceCreateInfoMVK-pView-01317` (*yours*; explicit rule): If `pView` is an `NSView` object, it must be a valid `NSView`, must be backed by a `CALayer` object of type CAMetalLayer, and vkCreateMacOSSurfaceMVK must be called on the main thread
+- `VUID-VkMacOSSurfaceCreateInfoMVK-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkMacOSSurfaceCreateInfoMVK-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MACOS_SURFACE_CREATE_INFO_MVK`
+- `VUID-VkMacOSSurfaceCreateInfoMVK-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "mvk_macos_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkViSurfaceCreateInfoNN`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkViSurfaceCreateInfoNN.html). Settled by the wrappers:
+The rules of `VkViSurfaceCreateInfoNN` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkViSurfaceCreateInfoNN.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkViSurfaceCreateInfoNN-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkViSurfaceCreateInfoNN-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkViSurfaceCreateInfoNN-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkViSurfaceCreateInfoNN-window-01318` (*yours*; explicit rule): `window` must be a valid `nn::vi::NativeWindowHandle`
+- `VUID-VkViSurfaceCreateInfoNN-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkViSurfaceCreateInfoNN-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VI_SURFACE_CREATE_INFO_NN`
+- `VUID-VkViSurfaceCreateInfoNN-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nn_vi_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPipelineViewportWScalingStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportWScalingStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineViewportWScalingStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportWScalingStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineViewportWScalingStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineViewportWScalingStateCreateInfoNV-viewportCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkPipelineViewportWScalingStateCreateInfoNV-viewportCount-arraylength` (*checked*): `viewportCount` must be greater than `0`
+- `VUID-VkPipelineViewportWScalingStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_W_SCALING_STATE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_clip_space_w_scaling")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,15 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCooperativeMatrixPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCooperativeMatrixPropertiesNV.html). Settled by the wrappers:
+The rules of `VkCooperativeMatrixPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCooperativeMatrixPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCooperativeMatrixPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCooperativeMatrixPropertiesNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (enum or flags value; ash types accept any raw value, not checked).*/
+- `VUID-VkCooperativeMatrixPropertiesNV-AType-parameter` (*yours*; enum or flags value): `AType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-BType-parameter` (*yours*; enum or flags value): `BType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-CType-parameter` (*yours*; enum or flags value): `CType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-DType-parameter` (*yours*; enum or flags value): `DType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-scope-parameter` (*yours*; enum or flags value): `scope` must be a valid VkScopeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COOPERATIVE_MATRIX_PROPERTIES_NV`
+- `VUID-VkCooperativeMatrixPropertiesNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_cooperative_matrix")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -78,9 +81,9 @@ impl<'a> CooperativeMatrixPropertiesNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceCooperativeMatrixFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCooperativeMatrixFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceCooperativeMatrixFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCooperativeMatrixFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceCooperativeMatrixFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceCooperativeMatrixFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_COOPERATIVE_MATRIX_FEATURES_NV`*/
 #[cfg(feature = "nv_cooperative_matrix")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -117,9 +120,9 @@ for PhysicalDeviceCooperativeMatrixFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceCooperativeMatrixPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCooperativeMatrixPropertiesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceCooperativeMatrixPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCooperativeMatrixPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceCooperativeMatrixPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceCooperativeMatrixPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_COOPERATIVE_MATRIX_PROPERTIES_NV`*/
 #[cfg(feature = "nv_cooperative_matrix")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkFramebufferMixedSamplesCombinationNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferMixedSamplesCombinationNV.html). Settled by the wrappers:
+The rules of `VkFramebufferMixedSamplesCombinationNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferMixedSamplesCombinationNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFramebufferMixedSamplesCombinationNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFramebufferMixedSamplesCombinationNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkFramebufferMixedSamplesCombinationNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FRAMEBUFFER_MIXED_SAMPLES_COMBINATION_NV`
+- `VUID-VkFramebufferMixedSamplesCombinationNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_coverage_reduction_mode")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -25,9 +25,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceCoverageReductionModeFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCoverageReductionModeFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceCoverageReductionModeFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceCoverageReductionModeFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceCoverageReductionModeFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceCoverageReductionModeFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_COVERAGE_REDUCTION_MODE_FEATURES_NV`*/
 #[cfg(feature = "nv_coverage_reduction_mode")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -58,11 +58,11 @@ for PhysicalDeviceCoverageReductionModeFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineCoverageReductionStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCoverageReductionStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineCoverageReductionStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCoverageReductionStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineCoverageReductionStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineCoverageReductionStateCreateInfoNV-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineCoverageReductionStateCreateInfoNV-coverageReductionMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPipelineCoverageReductionStateCreateInfoNV-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineCoverageReductionStateCreateInfoNV-coverageReductionMode-parameter` (*checked*): `coverageReductionMode` must be a valid VkCoverageReductionModeNV value
+- `VUID-VkPipelineCoverageReductionStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_COVERAGE_REDUCTION_STATE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_coverage_reduction_mode")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDedicatedAllocationBufferCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDedicatedAllocationBufferCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkDedicatedAllocationBufferCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDedicatedAllocationBufferCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDedicatedAllocationBufferCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkDedicatedAllocationBufferCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEDICATED_ALLOCATION_BUFFER_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_dedicated_allocation")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -36,11 +36,10 @@ for DedicatedAllocationBufferCreateInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDedicatedAllocationImageCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDedicatedAllocationImageCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkDedicatedAllocationImageCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDedicatedAllocationImageCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDedicatedAllocationImageCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDedicatedAllocationImageCreateInfoNV-dedicatedAllocation-00994` (*yours*; explicit rule): If `dedicatedAllocation` is `VK_TRUE`, VkImageCreateInfo::`flags` must not include `VK_IMAGE_CREATE_SPARSE_BINDING_BIT`, `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT`, or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`
+- `VUID-VkDedicatedAllocationImageCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEDICATED_ALLOCATION_IMAGE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_dedicated_allocation")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -68,14 +67,19 @@ for DedicatedAllocationImageCreateInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDedicatedAllocationMemoryAllocateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDedicatedAllocationMemoryAllocateInfoNV.html). Settled by the wrappers:
+The rules of `VkDedicatedAllocationMemoryAllocateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDedicatedAllocationMemoryAllocateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 7 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-00649` (*yours*; explicit rule): At least one of `image` and `buffer` must be VK_NULL_HANDLE
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-00650` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE, the image must have been created with VkDedicatedAllocationImageCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-00651` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE, the buffer must have been created with VkDedicatedAllocationBufferCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-00652` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the image
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-00653` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the buffer
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-00654` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation, the memory being imported must also be a dedicated image allocation and `image` must be identical to the …
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-00655` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation, the memory being imported must also be a dedicated buffer allocation and `buffer` must be identical to the …
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-commonparent` (*checked*): Both of `buffer`, and `image` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEDICATED_ALLOCATION_MEMORY_ALLOCATE_INFO_NV`
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-parameter` (*by the types*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-parameter` (*by the types*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "nv_dedicated_allocation")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCheckpointDataNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCheckpointDataNV.html). Settled by the wrappers:
+The rules of `VkCheckpointDataNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCheckpointDataNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCheckpointDataNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCheckpointDataNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkCheckpointDataNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CHECKPOINT_DATA_NV`
+- `VUID-VkCheckpointDataNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_device_diagnostic_checkpoints")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -25,9 +25,9 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkQueueFamilyCheckpointPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyCheckpointPropertiesNV.html). Settled by the wrappers:
+The rules of `VkQueueFamilyCheckpointPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyCheckpointPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueueFamilyCheckpointPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkQueueFamilyCheckpointPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_CHECKPOINT_PROPERTIES_NV`*/
 #[cfg(feature = "nv_device_diagnostic_checkpoints")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDeviceDiagnosticsConfigCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceDiagnosticsConfigCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkDeviceDiagnosticsConfigCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceDiagnosticsConfigCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceDiagnosticsConfigCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceDiagnosticsConfigCreateInfoNV-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceDiagnosticsConfigCreateInfoNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkDeviceDiagnosticsConfigFlagBitsNV values
+- `VUID-VkDeviceDiagnosticsConfigCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_DIAGNOSTICS_CONFIG_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_device_diagnostics_config")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -37,9 +37,9 @@ for DeviceDiagnosticsConfigCreateInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDiagnosticsConfigFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDiagnosticsConfigFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDiagnosticsConfigFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDiagnosticsConfigFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDiagnosticsConfigFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDiagnosticsConfigFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DIAGNOSTICS_CONFIG_FEATURES_NV`*/
 #[cfg(feature = "nv_device_diagnostics_config")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

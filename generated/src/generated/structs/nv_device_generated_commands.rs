@@ -6,21 +6,39 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkGeneratedCommandsInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeneratedCommandsInfoNV.html). Settled by the wrappers:
+The rules of `VkGeneratedCommandsInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeneratedCommandsInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGeneratedCommandsInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGeneratedCommandsInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkGeneratedCommandsInfoNV-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkGeneratedCommandsInfoNV-pipeline-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeneratedCommandsInfoNV-pStreams-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkGeneratedCommandsInfoNV-preprocessBuffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeneratedCommandsInfoNV-streamCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkGeneratedCommandsInfoNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 20 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkGeneratedCommandsInfoNV-pipeline-02912` (*yours*; explicit rule): The provided `pipeline` must match the pipeline bound at execution time
+- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-02913` (*yours*; explicit rule): If the `indirectCommandsLayout` uses a token of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_SHADER_GROUP_NV`, then the `pipeline` must have been created with multiple shader groups
+- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-02914` (*yours*; explicit rule): If the `indirectCommandsLayout` uses a token of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_SHADER_GROUP_NV`, then the `pipeline` must have been created with `VK_PIPELINE_CREATE_INDIRECT_BINDABLE_BIT_NV` set in …
+- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-02915` (*yours*; explicit rule): If the `indirectCommandsLayout` uses a token of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, then the `pipeline``s `VkPipelineLayout` must match the` …
+- `VUID-VkGeneratedCommandsInfoNV-streamCount-02916` (*yours*; explicit rule): `streamCount` must match the `indirectCommandsLayout`&#8217;s `streamCount`
+- `VUID-VkGeneratedCommandsInfoNV-sequencesCount-02917` (*yours*; explicit rule): `sequencesCount` must be less or equal to VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::`maxIndirectSequenceCount` and VkGeneratedCommandsMemoryRequirementsInfoNV::`maxSequencesCount` that was …
+- `VUID-VkGeneratedCommandsInfoNV-preprocessBuffer-02918` (*yours*; explicit rule): `preprocessBuffer` must have the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set in its usage flag
+- `VUID-VkGeneratedCommandsInfoNV-preprocessOffset-02919` (*yours*; explicit rule): `preprocessOffset` must be aligned to VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::`minIndirectCommandsBufferOffsetAlignment`
+- `VUID-VkGeneratedCommandsInfoNV-preprocessBuffer-02971` (*yours*; explicit rule): If `preprocessBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkGeneratedCommandsInfoNV-preprocessSize-02920` (*yours*; explicit rule): `preprocessSize` must be at least equal to the memory requirement`s size returned by vkGetGeneratedCommandsMemoryRequirementsNV using the matching inputs (`indirectCommandsLayout`, &#8230;&#8203;) as` …
+- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-02921` (*yours*; explicit rule): `sequencesCountBuffer` can be set if the actual used count of sequences is sourced from the provided buffer. In that case the `sequencesCount` serves as upper bound
+- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-02922` (*yours*; explicit rule): If `sequencesCountBuffer` is not VK_NULL_HANDLE, its usage flag must have the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
+- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-02923` (*yours*; explicit rule): If `sequencesCountBuffer` is not VK_NULL_HANDLE, `sequencesCountOffset` must be aligned to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::minSequencesCountBufferOffsetAlignment`
+- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-02972` (*yours*; explicit rule): If `sequencesCountBuffer` is not VK_NULL_HANDLE and is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-02924` (*yours*; explicit rule): If `indirectCommandsLayout`&#8217;s `VK_INDIRECT_COMMANDS_LAYOUT_USAGE_INDEXED_SEQUENCES_BIT_NV` is set, `sequencesIndexBuffer` must be set otherwise it must be VK_NULL_HANDLE
+- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-02925` (*yours*; explicit rule): If `sequencesIndexBuffer` is not VK_NULL_HANDLE, its usage flag must have the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
+- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-02926` (*yours*; explicit rule): If `sequencesIndexBuffer` is not VK_NULL_HANDLE, `sequencesIndexOffset` must be aligned to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::minSequencesIndexBufferOffsetAlignment`
+- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-02973` (*yours*; explicit rule): If `sequencesIndexBuffer` is not VK_NULL_HANDLE and is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-07078` (*yours*; explicit rule): If the `indirectCommandsLayout` uses a token of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_DRAW_TASKS_NV`, then the `pipeline` must contain a shader stage using the `MeshNV` {ExecutionModel}
+- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-07079` (*yours*; explicit rule): If the `indirectCommandsLayout` uses a token of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_DRAW_MESH_TASKS_NV`, then the `pipeline` must contain a shader stage using the `MeshEXT` {ExecutionModel}
+- `VUID-VkGeneratedCommandsInfoNV-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-VkGeneratedCommandsInfoNV-streamCount-arraylength` (*checked*): `streamCount` must be greater than `0`
+- `VUID-VkGeneratedCommandsInfoNV-commonparent` (*checked*): Each of `indirectCommandsLayout`, `pipeline`, `preprocessBuffer`, `sequencesCountBuffer`, and `sequencesIndexBuffer` that are valid handles of non-ignored parameters must have been created, allocated, …
+- `VUID-VkGeneratedCommandsInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GENERATED_COMMANDS_INFO_NV`
+- `VUID-VkGeneratedCommandsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkGeneratedCommandsInfoNV-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle
+- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-parameter` (*by the types*): `indirectCommandsLayout` must be a valid VkIndirectCommandsLayoutNV handle
+- `VUID-VkGeneratedCommandsInfoNV-pStreams-parameter` (*by the types*): `pStreams` must be a valid pointer to an array of `streamCount` valid VkIndirectCommandsStreamNV structures
+- `VUID-VkGeneratedCommandsInfoNV-preprocessBuffer-parameter` (*by the types*): `preprocessBuffer` must be a valid VkBuffer handle
+- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-parameter` (*by the types*): If `sequencesCountBuffer` is not VK_NULL_HANDLE, `sequencesCountBuffer` must be a valid VkBuffer handle
+- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-parameter` (*by the types*): If `sequencesIndexBuffer` is not VK_NULL_HANDLE, `sequencesIndexBuffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -132,16 +150,15 @@ impl<'a> GeneratedCommandsInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkGeneratedCommandsMemoryRequirementsInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeneratedCommandsMemoryRequirementsInfoNV.html). Settled by the wrappers:
+The rules of `VkGeneratedCommandsMemoryRequirementsInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeneratedCommandsMemoryRequirementsInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipeline-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-indirectCommandsLayout-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-maxSequencesCount-02907` (*yours*; explicit rule): `maxSequencesCount` must be less or equal to VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::`maxIndirectSequenceCount`
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-commonparent` (*checked*): Both of `indirectCommandsLayout`, and `pipeline` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GENERATED_COMMANDS_MEMORY_REQUIREMENTS_INFO_NV`
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-indirectCommandsLayout-parameter` (*by the types*): `indirectCommandsLayout` must be a valid VkIndirectCommandsLayoutNV handle*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -203,13 +220,20 @@ impl<'a> GeneratedCommandsMemoryRequirementsInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkGraphicsPipelineShaderGroupsCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsPipelineShaderGroupsCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkGraphicsPipelineShaderGroupsCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsPipelineShaderGroupsCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pPipelines-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-groupCount-02879` (*yours*; explicit rule): `groupCount` must be at least `1` and as maximum `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::maxGraphicsShaderGroupCount`
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-groupCount-02880` (*yours*; explicit rule): The sum of `groupCount` including those groups added from referenced `pPipelines` must also be as maximum `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::maxGraphicsShaderGroupCount`
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02881` (*yours*; explicit rule): The state of the first element of `pGroups` must match its equivalent within the parent&#8217;s VkGraphicsPipelineCreateInfo
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02882` (*yours*; explicit rule): Each element of `pGroups` must in combination with the rest of the pipeline state yield a valid state configuration
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pPipelines-02886` (*yours*; explicit rule): Each element of `pPipelines` must have been created with identical state to the pipeline currently created except the state that can be overridden by VkGraphicsShaderGroupCreateInfoNV
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-deviceGeneratedCommands-02887` (*yours*; explicit rule): The `deviceGeneratedCommands` feature must be enabled
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02883` (*yours*; explicit rule): All elements of `pGroups` must use the same shader stage combinations
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02884` (*yours*; explicit rule): All elements of `pGroups` must use the same shader stage combinations unless any mesh shader stage is used, then either combination of task and mesh or just mesh shader is valid
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02885` (*yours*; explicit rule): Mesh and regular primitive shading stages cannot be mixed across `pGroups`
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_SHADER_GROUPS_CREATE_INFO_NV`
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-parameter` (*by the types*): If `groupCount` is not `0`, `pGroups` must be a valid pointer to an array of `groupCount` valid VkGraphicsShaderGroupCreateInfoNV structures
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pPipelines-parameter` (*by the types*): If `pipelineCount` is not `0`, `pPipelines` must be a valid pointer to an array of `pipelineCount` valid VkPipeline handles*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -245,14 +269,16 @@ for GraphicsPipelineShaderGroupsCreateInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkGraphicsShaderGroupCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsShaderGroupCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkGraphicsShaderGroupCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGraphicsShaderGroupCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGraphicsShaderGroupCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGraphicsShaderGroupCreateInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkGraphicsShaderGroupCreateInfoNV-pStages-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkGraphicsShaderGroupCreateInfoNV-stageCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-stageCount-02888` (*yours*; explicit rule): For `stageCount`, the same restrictions as in VkGraphicsPipelineCreateInfo::`stageCount` apply
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-pStages-02889` (*yours*; explicit rule): For `pStages`, the same restrictions as in VkGraphicsPipelineCreateInfo::`pStages` apply
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-pVertexInputState-02890` (*yours*; explicit rule): For `pVertexInputState`, the same restrictions as in VkGraphicsPipelineCreateInfo::`pVertexInputState` apply
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-pTessellationState-02891` (*yours*; explicit rule): For `pTessellationState`, the same restrictions as in VkGraphicsPipelineCreateInfo::`pTessellationState` apply
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-stageCount-arraylength` (*checked*): `stageCount` must be greater than `0`
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GRAPHICS_SHADER_GROUP_CREATE_INFO_NV`
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkGraphicsShaderGroupCreateInfoNV-pStages-parameter` (*by the types*): `pStages` must be a valid pointer to an array of `stageCount` valid VkPipelineShaderStageCreateInfo structures*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -308,18 +334,24 @@ impl<'a> GraphicsShaderGroupCreateInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkIndirectCommandsLayoutCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIndirectCommandsLayoutCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkIndirectCommandsLayoutCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIndirectCommandsLayoutCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pTokens-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pStreamStrides-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-tokenCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkIndirectCommandsLayoutCreateInfoNV-streamCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 8 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pipelineBindPoint-02930` (*yours*; explicit rule): The `pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-tokenCount-02931` (*yours*; explicit rule): `tokenCount` must be greater than `0` and less than or equal to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::maxIndirectCommandsTokenCount`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pTokens-02932` (*yours*; explicit rule): If `pTokens` contains an entry of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_SHADER_GROUP_NV` it must be the first element of the array and there must be only a single element of such token type
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pTokens-02933` (*yours*; explicit rule): If `pTokens` contains an entry of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_STATE_FLAGS_NV` there must be only a single element of such token type
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pTokens-02934` (*yours*; explicit rule): All state tokens in `pTokens` must occur before any work provoking tokens (`VK_INDIRECT_COMMANDS_TOKEN_TYPE_DRAW_NV`, `VK_INDIRECT_COMMANDS_TOKEN_TYPE_DRAW_INDEXED_NV`, …
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pTokens-02935` (*yours*; explicit rule): The content of `pTokens` must include one single work provoking token that is compatible with the `pipelineBindPoint`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-streamCount-02936` (*yours*; explicit rule): `streamCount` must be greater than `0` and less or equal to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::maxIndirectCommandsStreamCount`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pStreamStrides-02937` (*yours*; explicit rule): each element of `pStreamStrides` must be greater than `0`and less than or equal to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::maxIndirectCommandsStreamStride`. Furthermore the alignment of …
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkIndirectCommandsLayoutUsageFlagBitsNV values
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-tokenCount-arraylength` (*checked*): `tokenCount` must be greater than `0`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-streamCount-arraylength` (*checked*): `streamCount` must be greater than `0`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_INDIRECT_COMMANDS_LAYOUT_CREATE_INFO_NV`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pTokens-parameter` (*by the types*): `pTokens` must be a valid pointer to an array of `tokenCount` valid VkIndirectCommandsLayoutTokenNV structures
+- `VUID-VkIndirectCommandsLayoutCreateInfoNV-pStreamStrides-parameter` (*by the types*): `pStreamStrides` must be a valid pointer to an array of `streamCount` `uint32_t` values*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -364,18 +396,28 @@ impl<'a> IndirectCommandsLayoutCreateInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkIndirectCommandsLayoutTokenNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIndirectCommandsLayoutTokenNV.html). Settled by the wrappers:
+The rules of `VkIndirectCommandsLayoutTokenNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIndirectCommandsLayoutTokenNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkIndirectCommandsLayoutTokenNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkIndirectCommandsLayoutTokenNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkIndirectCommandsLayoutTokenNV-pushconstantPipelineLayout-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkIndirectCommandsLayoutTokenNV-pushconstantShaderStageFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkIndirectCommandsLayoutTokenNV-indirectStateFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkIndirectCommandsLayoutTokenNV-pIndexTypes-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-VkIndirectCommandsLayoutTokenNV-pIndexTypeValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkIndirectCommandsLayoutTokenNV-stream-02951` (*yours*; explicit rule): `stream` must be smaller than `VkIndirectCommandsLayoutCreateInfoNV::streamCount`
+- `VUID-VkIndirectCommandsLayoutTokenNV-offset-02952` (*yours*; explicit rule): `offset` must be less than or equal to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::maxIndirectCommandsTokenOffset`
+- `VUID-VkIndirectCommandsLayoutTokenNV-offset-06888` (*yours*; explicit rule): `offset` must be aligned to the scalar alignment of `tokenType` or `minIndirectCommandsBufferOffsetAlignment`, whichever is lower
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02976` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_VERTEX_BUFFER_NV`, `vertexBindingUnit` must stay within device supported limits for the appropriate commands
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02977` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, `pushconstantPipelineLayout` must be valid
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02978` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, `pushconstantOffset` must be a multiple of `4`
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02979` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, `pushconstantSize` must be a multiple of `4`
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02980` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, `pushconstantOffset` must be less than `VkPhysicalDeviceLimits::maxPushConstantsSize`
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02981` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, `pushconstantSize` must be less than or equal to `VkPhysicalDeviceLimits::maxPushConstantsSize` minus `pushconstantOffset`
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02982` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, for each byte in the range specified by `pushconstantOffset` and `pushconstantSize` and for each shader stage in …
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02983` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, for each byte in the range specified by `pushconstantOffset` and `pushconstantSize` and for each push constant range that overlaps …
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02984` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_STATE_FLAGS_NV`, `indirectStateFlags` must not be `0`
+- `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-parameter` (*checked*): `tokenType` must be a valid VkIndirectCommandsTokenTypeNV value
+- `VUID-VkIndirectCommandsLayoutTokenNV-pushconstantShaderStageFlags-parameter` (*checked*): `pushconstantShaderStageFlags` must be a valid combination of VkShaderStageFlagBits values
+- `VUID-VkIndirectCommandsLayoutTokenNV-indirectStateFlags-parameter` (*checked*): `indirectStateFlags` must be a valid combination of VkIndirectStateFlagBitsNV values
+- `VUID-VkIndirectCommandsLayoutTokenNV-pIndexTypes-parameter` (*checked*): If `indexTypeCount` is not `0`, `pIndexTypes` must be a valid pointer to an array of `indexTypeCount` valid VkIndexType values
+- `VUID-VkIndirectCommandsLayoutTokenNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_INDIRECT_COMMANDS_LAYOUT_TOKEN_NV`
+- `VUID-VkIndirectCommandsLayoutTokenNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkIndirectCommandsLayoutTokenNV-pushconstantPipelineLayout-parameter` (*by the types*): If `pushconstantPipelineLayout` is not VK_NULL_HANDLE, `pushconstantPipelineLayout` must be a valid VkPipelineLayout handle
+- `VUID-VkIndirectCommandsLayoutTokenNV-pIndexTypeValues-parameter` (*by the types*): If `indexTypeCount` is not `0`, `pIndexTypeValues` must be a valid pointer to an array of `indexTypeCount` `uint32_t` values*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -487,11 +529,12 @@ impl<'a> IndirectCommandsLayoutTokenNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkIndirectCommandsStreamNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIndirectCommandsStreamNV.html). Settled by the wrappers:
+The rules of `VkIndirectCommandsStreamNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkIndirectCommandsStreamNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkIndirectCommandsStreamNV-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkIndirectCommandsStreamNV-buffer-02942` (*yours*; explicit rule): The `buffer`&#8217;s usage flag must have the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
+- `VUID-VkIndirectCommandsStreamNV-offset-02943` (*yours*; explicit rule): The `offset` must be aligned to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::minIndirectCommandsBufferOffsetAlignment`
+- `VUID-VkIndirectCommandsStreamNV-buffer-02975` (*yours*; explicit rule): If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkIndirectCommandsStreamNV-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -531,9 +574,9 @@ impl<'a> IndirectCommandsStreamNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDeviceGeneratedCommandsFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDeviceGeneratedCommandsFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDeviceGeneratedCommandsFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDeviceGeneratedCommandsFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDeviceGeneratedCommandsFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDeviceGeneratedCommandsFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEVICE_GENERATED_COMMANDS_FEATURES_NV`*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -564,9 +607,9 @@ for PhysicalDeviceDeviceGeneratedCommandsFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEVICE_GENERATED_COMMANDS_PROPERTIES_NV`*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

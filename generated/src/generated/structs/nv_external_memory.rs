@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkExportMemoryAllocateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryAllocateInfoNV.html). Settled by the wrappers:
+The rules of `VkExportMemoryAllocateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryAllocateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMemoryAllocateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMemoryAllocateInfoNV-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportMemoryAllocateInfoNV-handleTypes-parameter` (*checked*): `handleTypes` must be a valid combination of VkExternalMemoryHandleTypeFlagBitsNV values
+- `VUID-VkExportMemoryAllocateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_MEMORY_ALLOCATE_INFO_NV`*/
 #[cfg(feature = "nv_external_memory")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -35,10 +35,10 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryAllocateInfoNV<'
 
 # Valid usage
 
-The rules are on [`VkExternalMemoryImageCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryImageCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkExternalMemoryImageCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryImageCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalMemoryImageCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalMemoryImageCreateInfoNV-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExternalMemoryImageCreateInfoNV-handleTypes-parameter` (*checked*): `handleTypes` must be a valid combination of VkExternalMemoryHandleTypeFlagBitsNV values
+- `VUID-VkExternalMemoryImageCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_IMAGE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_external_memory")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

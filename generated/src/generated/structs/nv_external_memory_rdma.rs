@@ -6,14 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkMemoryGetRemoteAddressInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetRemoteAddressInfoNV.html). Settled by the wrappers:
+The rules of `VkMemoryGetRemoteAddressInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetRemoteAddressInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryGetRemoteAddressInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryGetRemoteAddressInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkMemoryGetRemoteAddressInfoNV-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMemoryGetRemoteAddressInfoNV-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkMemoryGetRemoteAddressInfoNV-handleType-04966` (*yours*; explicit rule): `handleType` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
+- `VUID-VkMemoryGetRemoteAddressInfoNV-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkMemoryGetRemoteAddressInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_REMOTE_ADDRESS_INFO_NV`
+- `VUID-VkMemoryGetRemoteAddressInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMemoryGetRemoteAddressInfoNV-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[cfg(feature = "nv_external_memory_rdma")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -55,9 +54,9 @@ impl<'a> MemoryGetRemoteAddressInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceExternalMemoryRDMAFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalMemoryRDMAFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceExternalMemoryRDMAFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalMemoryRDMAFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceExternalMemoryRDMAFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceExternalMemoryRDMAFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_MEMORY_RDMA_FEATURES_NV`*/
 #[cfg(feature = "nv_external_memory_rdma")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkExportMemoryWin32HandleInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryWin32HandleInfoNV.html). Settled by the wrappers:
+The rules of `VkExportMemoryWin32HandleInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryWin32HandleInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMemoryWin32HandleInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (a window-system pointer given through an unsafe setter).*/
+- `VUID-VkExportMemoryWin32HandleInfoNV-pAttributes-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `pAttributes` is not `NULL`, `pAttributes` must be a valid pointer to a valid `SECURITY_ATTRIBUTES` value
+- `VUID-VkExportMemoryWin32HandleInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_MEMORY_WIN32_HANDLE_INFO_NV`*/
 #[cfg(feature = "nv_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -51,12 +50,12 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryWin32HandleInfoN
 
 # Valid usage
 
-The rules are on [`VkImportMemoryWin32HandleInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryWin32HandleInfoNV.html). Settled by the wrappers:
+The rules of `VkImportMemoryWin32HandleInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryWin32HandleInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImportMemoryWin32HandleInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImportMemoryWin32HandleInfoNV-handleType-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImportMemoryWin32HandleInfoNV-handleType-01327` (*yours*; explicit rule): `handleType` must not have more than one bit set
+- `VUID-VkImportMemoryWin32HandleInfoNV-handle-01328` (*yours*; explicit rule): `handle` must be a valid handle to memory, obtained as specified by `handleType`
+- `VUID-VkImportMemoryWin32HandleInfoNV-handleType-parameter` (*checked*): `handleType` must be a valid combination of VkExternalMemoryHandleTypeFlagBitsNV values
+- `VUID-VkImportMemoryWin32HandleInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_WIN32_HANDLE_INFO_NV`*/
 #[cfg(feature = "nv_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPipelineCoverageToColorStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCoverageToColorStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineCoverageToColorStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCoverageToColorStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineCoverageToColorStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineCoverageToColorStateCreateInfoNV-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineCoverageToColorStateCreateInfoNV-coverageToColorEnable-01404` (*yours*; explicit rule): If `coverageToColorEnable` is `VK_TRUE`, then the render pass subpass indicated by VkGraphicsPipelineCreateInfo::`renderPass` and VkGraphicsPipelineCreateInfo::`subpass` must have a color attachment …
+- `VUID-VkPipelineCoverageToColorStateCreateInfoNV-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineCoverageToColorStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_COVERAGE_TO_COLOR_STATE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_fragment_coverage_to_color")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentShadingRateEnumsFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateEnumsFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentShadingRateEnumsFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateEnumsFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentShadingRateEnumsFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFragmentShadingRateEnumsFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADING_RATE_ENUMS_FEATURES_NV`*/
 #[cfg(feature = "nv_fragment_shading_rate_enums")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -51,10 +51,10 @@ for PhysicalDeviceFragmentShadingRateEnumsFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV-maxFragmentShadingRateInvocationCount-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV-maxFragmentShadingRateInvocationCount-parameter` (*checked*): `maxFragmentShadingRateInvocationCount` must be a valid VkSampleCountFlagBits value
+- `VUID-VkPhysicalDeviceFragmentShadingRateEnumsPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_SHADING_RATE_ENUMS_PROPERTIES_NV`*/
 #[cfg(feature = "nv_fragment_shading_rate_enums")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -85,9 +85,9 @@ for PhysicalDeviceFragmentShadingRateEnumsPropertiesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineFragmentShadingRateEnumStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineFragmentShadingRateEnumStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineFragmentShadingRateEnumStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineFragmentShadingRateEnumStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineFragmentShadingRateEnumStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPipelineFragmentShadingRateEnumStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_FRAGMENT_SHADING_RATE_ENUM_STATE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_fragment_shading_rate_enums")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPipelineCoverageModulationStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCoverageModulationStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineCoverageModulationStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCoverageModulationStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineCoverageModulationStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineCoverageModulationStateCreateInfoNV-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineCoverageModulationStateCreateInfoNV-coverageModulationMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineCoverageModulationStateCreateInfoNV-coverageModulationTableEnable-01405` (*yours*; explicit rule): If `coverageModulationTableEnable` is `VK_TRUE`, `coverageModulationTableCount` must be equal to the number of rasterization samples divided by the number of color samples in the subpass
+- `VUID-VkPipelineCoverageModulationStateCreateInfoNV-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineCoverageModulationStateCreateInfoNV-coverageModulationMode-parameter` (*checked*): `coverageModulationMode` must be a valid VkCoverageModulationModeNV value
+- `VUID-VkPipelineCoverageModulationStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_COVERAGE_MODULATION_STATE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_framebuffer_mixed_samples")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,11 +6,14 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCommandBufferInheritanceViewportScissorInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceViewportScissorInfoNV.html). Settled by the wrappers:
+The rules of `VkCommandBufferInheritanceViewportScissorInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceViewportScissorInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCommandBufferInheritanceViewportScissorInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCommandBufferInheritanceViewportScissorInfoNV-viewportScissor2D-04782` (*yours*; explicit rule): If the `inheritedViewportScissor2D` feature is not enabled, `viewportScissor2D` must be `VK_FALSE`
+- `VUID-VkCommandBufferInheritanceViewportScissorInfoNV-viewportScissor2D-04783` (*yours*; explicit rule): If the `multiViewport` feature is not enabled and `viewportScissor2D` is `VK_TRUE`, then `viewportDepthCount` must be `1`
+- `VUID-VkCommandBufferInheritanceViewportScissorInfoNV-viewportScissor2D-04784` (*yours*; explicit rule): If `viewportScissor2D` is `VK_TRUE`, then `viewportDepthCount` must be greater than `0`
+- `VUID-VkCommandBufferInheritanceViewportScissorInfoNV-viewportScissor2D-04785` (*yours*; explicit rule): If `viewportScissor2D` is `VK_TRUE`, then `pViewportDepths` must be a valid pointer to an array of `viewportDepthCount` valid `VkViewport` structures, except any requirements on `x`, `y`, `width`, and …
+- `VUID-VkCommandBufferInheritanceViewportScissorInfoNV-viewportScissor2D-04786` (*yours*; explicit rule): If `viewportScissor2D` is `VK_TRUE`, then the command buffer must be recorded with the `VK_COMMAND_BUFFER_USAGE_RENDER_PASS_CONTINUE_BIT`
+- `VUID-VkCommandBufferInheritanceViewportScissorInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_VIEWPORT_SCISSOR_INFO_NV`*/
 #[cfg(feature = "nv_inherited_viewport_scissor")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -65,9 +68,9 @@ for CommandBufferInheritanceViewportScissorInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceInheritedViewportScissorFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceInheritedViewportScissorFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceInheritedViewportScissorFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceInheritedViewportScissorFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceInheritedViewportScissorFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceInheritedViewportScissorFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_INHERITED_VIEWPORT_SCISSOR_FEATURES_NV`*/
 #[cfg(feature = "nv_inherited_viewport_scissor")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

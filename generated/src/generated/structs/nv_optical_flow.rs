@@ -6,14 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkOpticalFlowExecuteInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowExecuteInfoNV.html). Settled by the wrappers:
+The rules of `VkOpticalFlowExecuteInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowExecuteInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpticalFlowExecuteInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkOpticalFlowExecuteInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkOpticalFlowExecuteInfoNV-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowExecuteInfoNV-pRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkOpticalFlowExecuteInfoNV-regionCount-07593` (*yours*; explicit rule): `regionCount` must be 0 if `VK_OPTICAL_FLOW_SESSION_CREATE_ALLOW_REGIONS_BIT_NV` was not set for `VkOpticalFlowSessionNV` on which this command is operating
+- `VUID-VkOpticalFlowExecuteInfoNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkOpticalFlowExecuteFlagBitsNV values
+- `VUID-VkOpticalFlowExecuteInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPTICAL_FLOW_EXECUTE_INFO_NV`
+- `VUID-VkOpticalFlowExecuteInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkOpticalFlowExecuteInfoNV-pRegions-parameter` (*by the types*): If `regionCount` is not `0`, `pRegions` must be a valid pointer to an array of `regionCount` VkRect2D structures*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -44,11 +43,11 @@ impl<'a> OpticalFlowExecuteInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkOpticalFlowImageFormatInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowImageFormatInfoNV.html). Settled by the wrappers:
+The rules of `VkOpticalFlowImageFormatInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowImageFormatInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpticalFlowImageFormatInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkOpticalFlowImageFormatInfoNV-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowImageFormatInfoNV-usage-requiredbitmask`: dynamic (checks the flags are not 0)*/
+- `VUID-VkOpticalFlowImageFormatInfoNV-usage-parameter` (*checked*): `usage` must be a valid combination of VkOpticalFlowUsageFlagBitsNV values
+- `VUID-VkOpticalFlowImageFormatInfoNV-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-VkOpticalFlowImageFormatInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPTICAL_FLOW_IMAGE_FORMAT_INFO_NV`*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -77,10 +76,10 @@ unsafe impl<'a> Extends<ImageCreateInfo<'a>> for OpticalFlowImageFormatInfoNV<'a
 
 # Valid usage
 
-The rules are on [`VkOpticalFlowImageFormatPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowImageFormatPropertiesNV.html). Settled by the wrappers:
+The rules of `VkOpticalFlowImageFormatPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowImageFormatPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpticalFlowImageFormatPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkOpticalFlowImageFormatPropertiesNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkOpticalFlowImageFormatPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPTICAL_FLOW_IMAGE_FORMAT_PROPERTIES_NV`
+- `VUID-VkOpticalFlowImageFormatPropertiesNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -96,21 +95,31 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkOpticalFlowSessionCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowSessionCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkOpticalFlowSessionCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowSessionCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpticalFlowSessionCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkOpticalFlowSessionCreateInfoNV-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-imageFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-flowVectorFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-costFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-hintGridSize-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-performanceLevel-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkOpticalFlowSessionCreateInfoNV-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkOpticalFlowSessionCreateInfoNV-width-07581` (*yours*; explicit rule): `width` must be greater than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::minWidth` and less than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::maxWidth`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-height-07582` (*yours*; explicit rule): `height` must be greater than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::minHeight` and less than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::maxHeight`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-imageFormat-07583` (*yours*; explicit rule): `imageFormat` must be one of the formats returned by vkGetPhysicalDeviceOpticalFlowImageFormatsNV for `VK_OPTICAL_FLOW_USAGE_INPUT_BIT_NV`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flowVectorFormat-07584` (*yours*; explicit rule): `flowVectorFormat` must be one of the formats returned by vkGetPhysicalDeviceOpticalFlowImageFormatsNV for `VK_OPTICAL_FLOW_USAGE_OUTPUT_BIT_NV`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-costFormat-07585` (*yours*; explicit rule): `costFormat` must be one of the formats returned by vkGetPhysicalDeviceOpticalFlowImageFormatsNV for `VK_OPTICAL_FLOW_USAGE_COST_BIT_NV` if `VK_OPTICAL_FLOW_SESSION_CREATE_ENABLE_COST_BIT_NV` is set …
+- `VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-07586` (*yours*; explicit rule): `outputGridSize` must be exactly one of the bits reported in `VkPhysicalDeviceOpticalFlowPropertiesNV::supportedOutputGridSizes`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-hintGridSize-07587` (*yours*; explicit rule): `hintGridSize` must be exactly one of the bits reported in `VkPhysicalDeviceOpticalFlowPropertiesNV::supportedHintGridSizes` if `VK_OPTICAL_FLOW_SESSION_CREATE_ENABLE_HINT_BIT_NV` is set in `flags`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07588` (*yours*; explicit rule): `VK_OPTICAL_FLOW_SESSION_CREATE_ENABLE_HINT_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::hintSupported` is `VK_FALSE`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07589` (*yours*; explicit rule): `VK_OPTICAL_FLOW_SESSION_CREATE_ENABLE_COST_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::costSupported` is `VK_FALSE`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07590` (*yours*; explicit rule): `VK_OPTICAL_FLOW_SESSION_CREATE_ENABLE_GLOBAL_FLOW_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::globalFlowSupported` is `VK_FALSE`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07591` (*yours*; explicit rule): `VK_OPTICAL_FLOW_SESSION_CREATE_ALLOW_REGIONS_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::maxNumRegionsOfInterest` is 0
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07592` (*yours*; explicit rule): `VK_OPTICAL_FLOW_SESSION_CREATE_BOTH_DIRECTIONS_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::bidirectionalFlowSupported` is `VK_FALSE`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkOpticalFlowSessionCreateInfoNV-imageFormat-parameter` (*checked*): `imageFormat` must be a valid VkFormat value
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flowVectorFormat-parameter` (*checked*): `flowVectorFormat` must be a valid VkFormat value
+- `VUID-VkOpticalFlowSessionCreateInfoNV-costFormat-parameter` (*checked*): If `costFormat` is not `0`, `costFormat` must be a valid VkFormat value
+- `VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-parameter` (*checked*): `outputGridSize` must be a valid combination of VkOpticalFlowGridSizeFlagBitsNV values
+- `VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-requiredbitmask` (*checked*): `outputGridSize` must not be `0`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-hintGridSize-parameter` (*checked*): `hintGridSize` must be a valid combination of VkOpticalFlowGridSizeFlagBitsNV values
+- `VUID-VkOpticalFlowSessionCreateInfoNV-performanceLevel-parameter` (*checked*): If `performanceLevel` is not `0`, `performanceLevel` must be a valid VkOpticalFlowPerformanceLevelNV value
+- `VUID-VkOpticalFlowSessionCreateInfoNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkOpticalFlowSessionCreateFlagBitsNV values
+- `VUID-VkOpticalFlowSessionCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPTICAL_FLOW_SESSION_CREATE_INFO_NV`
+- `VUID-VkOpticalFlowSessionCreateInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkOpticalFlowSessionCreatePrivateDataInfoNV*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -186,11 +195,10 @@ impl<'a> OpticalFlowSessionCreateInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkOpticalFlowSessionCreatePrivateDataInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowSessionCreatePrivateDataInfoNV.html). Settled by the wrappers:
+The rules of `VkOpticalFlowSessionCreatePrivateDataInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowSessionCreatePrivateDataInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (not settable safely (a pointer whose length the registry gives as an expression)).*/
+- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-pPrivateData-parameter` (*yours*; not settable safely): `pPrivateData` must be a pointer value
+- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPTICAL_FLOW_SESSION_CREATE_PRIVATE_DATA_INFO_NV`*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -225,9 +233,9 @@ for OpticalFlowSessionCreatePrivateDataInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceOpticalFlowFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpticalFlowFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceOpticalFlowFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpticalFlowFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceOpticalFlowFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceOpticalFlowFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_OPTICAL_FLOW_FEATURES_NV`*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -258,9 +266,9 @@ for PhysicalDeviceOpticalFlowFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceOpticalFlowPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpticalFlowPropertiesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceOpticalFlowPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceOpticalFlowPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceOpticalFlowPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceOpticalFlowPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_OPTICAL_FLOW_PROPERTIES_NV`*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

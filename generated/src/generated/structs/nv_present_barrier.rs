@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePresentBarrierFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePresentBarrierFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePresentBarrierFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePresentBarrierFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePresentBarrierFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePresentBarrierFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PRESENT_BARRIER_FEATURES_NV`*/
 #[cfg(feature = "nv_present_barrier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,9 +39,9 @@ for PhysicalDevicePresentBarrierFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSurfaceCapabilitiesPresentBarrierNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilitiesPresentBarrierNV.html). Settled by the wrappers:
+The rules of `VkSurfaceCapabilitiesPresentBarrierNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSurfaceCapabilitiesPresentBarrierNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSurfaceCapabilitiesPresentBarrierNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkSurfaceCapabilitiesPresentBarrierNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SURFACE_CAPABILITIES_PRESENT_BARRIER_NV`*/
 #[cfg(feature = "nv_present_barrier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -70,9 +70,9 @@ for SurfaceCapabilitiesPresentBarrierNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSwapchainPresentBarrierCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentBarrierCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkSwapchainPresentBarrierCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSwapchainPresentBarrierCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSwapchainPresentBarrierCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkSwapchainPresentBarrierCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_BARRIER_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_present_barrier")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,14 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureCreateInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkAccelerationStructureCreateInfoNV-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkAccelerationStructureCreateInfoNV-info-parameter`: static (set from the safe counterpart, which the constructor requires)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkAccelerationStructureCreateInfoNV-compactedSize-02421` (*yours*; explicit rule): If `compactedSize` is not `0` then both `info.geometryCount` and `info.instanceCount` must be `0`
+- `VUID-VkAccelerationStructureCreateInfoNV-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkAccelerationStructureCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_NV`
+- `VUID-VkAccelerationStructureCreateInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkOpaqueCaptureDescriptorDataCreateInfoEXT
+- `VUID-VkAccelerationStructureCreateInfoNV-info-parameter` (*by the types*): `info` must be a valid VkAccelerationStructureInfoNV structure*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -55,16 +54,23 @@ impl<'a> AccelerationStructureCreateInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureInfoNV.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAccelerationStructureInfoNV-pGeometries-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12.
-
-- 2: enum or flags value; ash types accept any raw value, not checked
-- 10: explicit rule; the wrappers do not check it*/
+- `VUID-VkAccelerationStructureInfoNV-geometryCount-02422` (*yours*; explicit rule): `geometryCount` must be less than or equal to VkPhysicalDeviceRayTracingPropertiesNV::`maxGeometryCount`
+- `VUID-VkAccelerationStructureInfoNV-instanceCount-02423` (*yours*; explicit rule): `instanceCount` must be less than or equal to VkPhysicalDeviceRayTracingPropertiesNV::`maxInstanceCount`
+- `VUID-VkAccelerationStructureInfoNV-maxTriangleCount-02424` (*yours*; explicit rule): The total number of triangles in all geometries must be less than or equal to VkPhysicalDeviceRayTracingPropertiesNV::`maxTriangleCount`
+- `VUID-VkAccelerationStructureInfoNV-type-02425` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_NV` then `geometryCount` must be `0`
+- `VUID-VkAccelerationStructureInfoNV-type-02426` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_NV` then `instanceCount` must be `0`
+- `VUID-VkAccelerationStructureInfoNV-type-02786` (*yours*; explicit rule): If `type` is `VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_NV` then the `geometryType` member of each geometry in `pGeometries` must be the same
+- `VUID-VkAccelerationStructureInfoNV-flags-02592` (*yours*; explicit rule): If `flags` has the `VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_NV` bit set, then it must not have the `VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_BUILD_BIT_NV` bit set
+- `VUID-VkAccelerationStructureInfoNV-scratch-02781` (*yours*; explicit rule): `scratch` must have been created with `VK_BUFFER_USAGE_RAY_TRACING_BIT_NV` usage flag
+- `VUID-VkAccelerationStructureInfoNV-instanceData-02782` (*yours*; explicit rule): If `instanceData` is not VK_NULL_HANDLE, `instanceData` must have been created with `VK_BUFFER_USAGE_RAY_TRACING_BIT_NV` usage flag
+- `VUID-VkAccelerationStructureInfoNV-type-parameter` (*yours*; enum or flags value): `type` must be a valid VkAccelerationStructureTypeNV value
+- `VUID-VkAccelerationStructureInfoNV-flags-parameter` (*yours*; enum or flags value): `flags` must be a valid combination of VkBuildAccelerationStructureFlagBitsNV values
+- `VUID-VkAccelerationStructureInfoNV-type-04623` (*yours*; explicit rule): `type` must not be `VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR`
+- `VUID-VkAccelerationStructureInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_INFO_NV`
+- `VUID-VkAccelerationStructureInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAccelerationStructureInfoNV-pGeometries-parameter` (*by the types*): If `geometryCount` is not `0`, `pGeometries` must be a valid pointer to an array of `geometryCount` valid VkGeometryNV structures*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -107,12 +113,12 @@ impl<'a> AccelerationStructureInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureMemoryRequirementsInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureMemoryRequirementsInfoNV.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureMemoryRequirementsInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureMemoryRequirementsInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-accelerationStructure-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-type-parameter` (*checked*): `type` must be a valid VkAccelerationStructureMemoryRequirementsTypeNV value
+- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_MEMORY_REQUIREMENTS_INFO_NV`
+- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-accelerationStructure-parameter` (*by the types*): `accelerationStructure` must be a valid VkAccelerationStructureNV handle*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -158,16 +164,19 @@ impl<'a> AccelerationStructureMemoryRequirementsInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkBindAccelerationStructureMemoryInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindAccelerationStructureMemoryInfoNV.html). Settled by the wrappers:
+The rules of `VkBindAccelerationStructureMemoryInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindAccelerationStructureMemoryInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-accelerationStructure-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-accelerationStructure-03620` (*yours*; explicit rule): `accelerationStructure` must not already be backed by a memory object
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-memoryOffset-03621` (*yours*; explicit rule): `memoryOffset` must be less than the size of `memory`
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-memory-03622` (*yours*; explicit rule): `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the VkMemoryRequirements structure returned from a call to …
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-memoryOffset-03623` (*yours*; explicit rule): `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a call to vkGetAccelerationStructureMemoryRequirementsNV with …
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-size-03624` (*yours*; explicit rule): The `size` member of the `VkMemoryRequirements` structure returned from a call to vkGetAccelerationStructureMemoryRequirementsNV with `accelerationStructure` and `type` of …
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-commonparent` (*checked*): Both of `accelerationStructure`, and `memory` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_ACCELERATION_STRUCTURE_MEMORY_INFO_NV`
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-accelerationStructure-parameter` (*by the types*): `accelerationStructure` must be a valid VkAccelerationStructureNV handle
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-pDeviceIndices-parameter` (*by the types*): If `deviceIndexCount` is not `0`, `pDeviceIndices` must be a valid pointer to an array of `deviceIndexCount` `uint32_t` values*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -226,13 +235,14 @@ impl<'a> BindAccelerationStructureMemoryInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkGeometryAABBNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryAABBNV.html). Settled by the wrappers:
+The rules of `VkGeometryAABBNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryAABBNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGeometryAABBNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGeometryAABBNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkGeometryAABBNV-aabbData-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkGeometryAABBNV-offset-02439` (*yours*; explicit rule): `offset` must be less than the size of `aabbData`
+- `VUID-VkGeometryAABBNV-offset-02440` (*yours*; explicit rule): `offset` must be a multiple of `8`
+- `VUID-VkGeometryAABBNV-stride-02441` (*yours*; explicit rule): `stride` must be a multiple of `8`
+- `VUID-VkGeometryAABBNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GEOMETRY_AABB_NV`
+- `VUID-VkGeometryAABBNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkGeometryAABBNV-aabbData-parameter` (*by the types*): If `aabbData` is not VK_NULL_HANDLE, `aabbData` must be a valid VkBuffer handle*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -272,10 +282,10 @@ impl<'a> GeometryAABBNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkGeometryDataNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryDataNV.html). Settled by the wrappers:
+The rules of `VkGeometryDataNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryDataNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGeometryDataNV-triangles-parameter`: static (set from the safe counterpart, which the constructor requires)
-- `VUID-VkGeometryDataNV-aabbs-parameter`: static (set from the safe counterpart, which the constructor requires)*/
+- `VUID-VkGeometryDataNV-triangles-parameter` (*by the types*): `triangles` must be a valid VkGeometryTrianglesNV structure
+- `VUID-VkGeometryDataNV-aabbs-parameter` (*by the types*): `aabbs` must be a valid VkGeometryAABBNV structure*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -316,15 +326,14 @@ impl<'a> GeometryDataNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkGeometryNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryNV.html). Settled by the wrappers:
+The rules of `VkGeometryNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGeometryNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGeometryNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkGeometryNV-geometryType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkGeometryNV-geometry-parameter`: static (set from the safe counterpart, which the constructor requires)
-- `VUID-VkGeometryNV-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkGeometryNV-geometryType-03503` (*yours*; explicit rule): `geometryType` must be `VK_GEOMETRY_TYPE_TRIANGLES_NV` or `VK_GEOMETRY_TYPE_AABBS_NV`
+- `VUID-VkGeometryNV-geometryType-parameter` (*checked*): `geometryType` must be a valid VkGeometryTypeKHR value
+- `VUID-VkGeometryNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkGeometryFlagBitsKHR values
+- `VUID-VkGeometryNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GEOMETRY_NV`
+- `VUID-VkGeometryNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkGeometryNV-geometry-parameter` (*by the types*): `geometry` must be a valid VkGeometryDataNV structure*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -370,18 +379,28 @@ impl<'a> GeometryNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkGeometryTrianglesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryTrianglesNV.html). Settled by the wrappers:
+The rules of `VkGeometryTrianglesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkGeometryTrianglesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkGeometryTrianglesNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkGeometryTrianglesNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkGeometryTrianglesNV-vertexData-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeometryTrianglesNV-vertexFormat-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkGeometryTrianglesNV-indexData-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeometryTrianglesNV-indexType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkGeometryTrianglesNV-transformData-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkGeometryTrianglesNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkGeometryTrianglesNV-vertexOffset-02428` (*yours*; explicit rule): `vertexOffset` must be less than the size of `vertexData`
+- `VUID-VkGeometryTrianglesNV-vertexOffset-02429` (*yours*; explicit rule): `vertexOffset` must be a multiple of the component size of `vertexFormat`
+- `VUID-VkGeometryTrianglesNV-vertexFormat-02430` (*yours*; explicit rule): `vertexFormat` must be one of `VK_FORMAT_R32G32B32_SFLOAT`, `VK_FORMAT_R32G32_SFLOAT`, `VK_FORMAT_R16G16B16_SFLOAT`, `VK_FORMAT_R16G16_SFLOAT`, `VK_FORMAT_R16G16_SNORM`, or `VK_FORMAT_R16G16B16_SNORM`
+- `VUID-VkGeometryTrianglesNV-vertexStride-03818` (*yours*; explicit rule): `vertexStride` must be less than or equal to 232-1
+- `VUID-VkGeometryTrianglesNV-indexOffset-02431` (*yours*; explicit rule): `indexOffset` must be less than the size of `indexData`
+- `VUID-VkGeometryTrianglesNV-indexOffset-02432` (*yours*; explicit rule): `indexOffset` must be a multiple of the element size of `indexType`
+- `VUID-VkGeometryTrianglesNV-indexType-02433` (*yours*; explicit rule): `indexType` must be `VK_INDEX_TYPE_UINT16`, `VK_INDEX_TYPE_UINT32`, or `VK_INDEX_TYPE_NONE_NV`
+- `VUID-VkGeometryTrianglesNV-indexData-02434` (*yours*; explicit rule): `indexData` must be VK_NULL_HANDLE if `indexType` is `VK_INDEX_TYPE_NONE_NV`
+- `VUID-VkGeometryTrianglesNV-indexData-02435` (*yours*; explicit rule): `indexData` must be a valid `VkBuffer` handle if `indexType` is not `VK_INDEX_TYPE_NONE_NV`
+- `VUID-VkGeometryTrianglesNV-indexCount-02436` (*yours*; explicit rule): `indexCount` must be `0` if `indexType` is `VK_INDEX_TYPE_NONE_NV`
+- `VUID-VkGeometryTrianglesNV-transformOffset-02437` (*yours*; explicit rule): `transformOffset` must be less than the size of `transformData`
+- `VUID-VkGeometryTrianglesNV-transformOffset-02438` (*yours*; explicit rule): `transformOffset` must be a multiple of `16`
+- `VUID-VkGeometryTrianglesNV-vertexFormat-parameter` (*checked*): `vertexFormat` must be a valid VkFormat value
+- `VUID-VkGeometryTrianglesNV-indexType-parameter` (*checked*): `indexType` must be a valid VkIndexType value
+- `VUID-VkGeometryTrianglesNV-commonparent` (*checked*): Each of `indexData`, `transformData`, and `vertexData` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkGeometryTrianglesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GEOMETRY_TRIANGLES_NV`
+- `VUID-VkGeometryTrianglesNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkGeometryTrianglesNV-vertexData-parameter` (*by the types*): If `vertexData` is not VK_NULL_HANDLE, `vertexData` must be a valid VkBuffer handle
+- `VUID-VkGeometryTrianglesNV-indexData-parameter` (*by the types*): If `indexData` is not VK_NULL_HANDLE, `indexData` must be a valid VkBuffer handle
+- `VUID-VkGeometryTrianglesNV-transformData-parameter` (*by the types*): If `transformData` is not VK_NULL_HANDLE, `transformData` must be a valid VkBuffer handle*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -463,9 +482,9 @@ impl<'a> GeometryTrianglesNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceRayTracingPropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingPropertiesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceRayTracingPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceRayTracingPropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceRayTracingPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PROPERTIES_NV`*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -484,20 +503,42 @@ for PhysicalDeviceRayTracingPropertiesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRayTracingPipelineCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingPipelineCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkRayTracingPipelineCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingPipelineCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRayTracingPipelineCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRayTracingPipelineCreateInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkRayTracingPipelineCreateInfoNV-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkRayTracingPipelineCreateInfoNV-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkRayTracingPipelineCreateInfoNV-pStages-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRayTracingPipelineCreateInfoNV-pGroups-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRayTracingPipelineCreateInfoNV-layout-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkRayTracingPipelineCreateInfoNV-stageCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkRayTracingPipelineCreateInfoNV-groupCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkRayTracingPipelineCreateInfoNV-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 24 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03421` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is `-1`, `basePipelineHandle` must be a valid handle to a ray tracing `VkPipeline`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03422` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is VK_NULL_HANDLE, `basePipelineIndex` must be a valid index into the calling command&#8217;s `pCreateInfos` …
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03423` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineIndex` is not `-1`, `basePipelineHandle` must be VK_NULL_HANDLE
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03424` (*yours*; explicit rule): If `flags` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and `basePipelineHandle` is not VK_NULL_HANDLE, `basePipelineIndex` must be `-1`
+- `VUID-VkRayTracingPipelineCreateInfoNV-pStages-03426` (*yours*; explicit rule): The shader code for the entry points identified by `pStages`, and the rest of the state identified by this structure must adhere to the pipeline linking rules described in the Shader Interfaces …
+- `VUID-VkRayTracingPipelineCreateInfoNV-layout-03427` (*yours*; explicit rule): `layout` must be consistent with all shaders specified in `pStages`
+- `VUID-VkRayTracingPipelineCreateInfoNV-layout-03428` (*yours*; explicit rule): The number of resources in `layout` accessible to each shader stage that is used by the pipeline must be less than or equal to VkPhysicalDeviceLimits::`maxPerStageResources`
+- `VUID-VkRayTracingPipelineCreateInfoNV-stage-06232` (*yours*; explicit rule): The `stage` member of at least one element of `pStages` must be `VK_SHADER_STAGE_RAYGEN_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-maxRecursionDepth-03457` (*yours*; explicit rule): `maxRecursionDepth` must be less than or equal to VkPhysicalDeviceRayTracingPropertiesNV::`maxRecursionDepth`
+- `VUID-VkRayTracingPipelineCreateInfoNV-stage-06898` (*yours*; explicit rule): The `stage` value in all `pStages` elements must be one of `VK_SHADER_STAGE_RAYGEN_BIT_KHR`, `VK_SHADER_STAGE_ANY_HIT_BIT_KHR`, `VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR`, `VK_SHADER_STAGE_MISS_BIT_KHR`, …
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-02904` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_INDIRECT_BINDABLE_BIT_NV`
+- `VUID-VkRayTracingPipelineCreateInfoNV-pipelineCreationCacheControl-02905` (*yours*; explicit rule): If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-02957` (*yours*; explicit rule): `flags` must not include both `VK_PIPELINE_CREATE_DEFER_COMPILE_BIT_NV` and `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` at the same time
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03456` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_LIBRARY_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03458` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_ANY_HIT_SHADERS_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03459` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_CLOSEST_HIT_SHADERS_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03460` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_MISS_SHADERS_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03461` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_NO_NULL_INTERSECTION_SHADERS_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03462` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03463` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-03588` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_SHADER_GROUP_HANDLE_CAPTURE_REPLAY_BIT_KHR`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-04948` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV`
+- `VUID-VkRayTracingPipelineCreateInfoNV-pipelineStageCreationFeedbackCount-06651` (*yours*; explicit rule): If VkPipelineCreationFeedbackCreateInfo::`pipelineStageCreationFeedbackCount` is not `0`, it must be equal to `stageCount`
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-07402` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT`
+- `VUID-VkRayTracingPipelineCreateInfoNV-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkRayTracingPipelineCreateInfoNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineCreateFlagBits values
+- `VUID-VkRayTracingPipelineCreateInfoNV-stageCount-arraylength` (*checked*): `stageCount` must be greater than `0`
+- `VUID-VkRayTracingPipelineCreateInfoNV-groupCount-arraylength` (*checked*): `groupCount` must be greater than `0`
+- `VUID-VkRayTracingPipelineCreateInfoNV-commonparent` (*checked*): Both of `basePipelineHandle`, and `layout` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkRayTracingPipelineCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_NV`
+- `VUID-VkRayTracingPipelineCreateInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkPipelineCreationFeedbackCreateInfo
+- `VUID-VkRayTracingPipelineCreateInfoNV-pStages-parameter` (*by the types*): `pStages` must be a valid pointer to an array of `stageCount` valid VkPipelineShaderStageCreateInfo structures
+- `VUID-VkRayTracingPipelineCreateInfoNV-pGroups-parameter` (*by the types*): `pGroups` must be a valid pointer to an array of `groupCount` valid VkRayTracingShaderGroupCreateInfoNV structures
+- `VUID-VkRayTracingPipelineCreateInfoNV-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -571,13 +612,17 @@ impl<'a> RayTracingPipelineCreateInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkRayTracingShaderGroupCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingShaderGroupCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkRayTracingShaderGroupCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRayTracingShaderGroupCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRayTracingShaderGroupCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRayTracingShaderGroupCreateInfoNV-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkRayTracingShaderGroupCreateInfoNV-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-type-02413` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_NV` then `generalShader` must be a valid index into VkRayTracingPipelineCreateInfoNV::`pStages` referring to a shader of …
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-type-02414` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_NV` then `closestHitShader`, `anyHitShader`, and `intersectionShader` must be `VK_SHADER_UNUSED_NV`
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-type-02415` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_NV` then `intersectionShader` must be a valid index into VkRayTracingPipelineCreateInfoNV::`pStages` referring to a shader of …
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-type-02416` (*yours*; explicit rule): If `type` is `VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_NV` then `intersectionShader` must be `VK_SHADER_UNUSED_NV`
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-closestHitShader-02417` (*yours*; explicit rule): `closestHitShader` must be either `VK_SHADER_UNUSED_NV` or a valid index into VkRayTracingPipelineCreateInfoNV::`pStages` referring to a shader of `VK_SHADER_STAGE_CLOSEST_HIT_BIT_NV`
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-anyHitShader-02418` (*yours*; explicit rule): `anyHitShader` must be either `VK_SHADER_UNUSED_NV` or a valid index into VkRayTracingPipelineCreateInfoNV::`pStages` referring to a shader of `VK_SHADER_STAGE_ANY_HIT_BIT_NV`
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-type-parameter` (*checked*): `type` must be a valid VkRayTracingShaderGroupTypeKHR value
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_NV`
+- `VUID-VkRayTracingShaderGroupCreateInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -626,13 +671,14 @@ impl<'a> RayTracingShaderGroupCreateInfoNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkWriteDescriptorSetAccelerationStructureNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWriteDescriptorSetAccelerationStructureNV.html). Settled by the wrappers:
+The rules of `VkWriteDescriptorSetAccelerationStructureNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWriteDescriptorSetAccelerationStructureNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkWriteDescriptorSetAccelerationStructureNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkWriteDescriptorSetAccelerationStructureNV-accelerationStructureCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-accelerationStructureCount-03747` (*yours*; explicit rule): `accelerationStructureCount` must be equal to `descriptorCount` in the extended structure
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-03748` (*yours*; explicit rule): Each acceleration structure in `pAccelerationStructures` must have been created with `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-03749` (*yours*; explicit rule): If the `nullDescriptor` feature is not enabled, each member of `pAccelerationStructures` must not be VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-accelerationStructureCount-arraylength` (*checked*): `accelerationStructureCount` must be greater than `0`
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_NV`
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-parameter` (*by the types*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid or VK_NULL_HANDLE VkAccelerationStructureNV handles*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

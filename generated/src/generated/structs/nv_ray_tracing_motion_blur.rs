@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureGeometryMotionTrianglesDataNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryMotionTrianglesDataNV.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureGeometryMotionTrianglesDataNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryMotionTrianglesDataNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureGeometryMotionTrianglesDataNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkAccelerationStructureGeometryMotionTrianglesDataNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_MOTION_TRIANGLES_DATA_NV`*/
 #[cfg(feature = "nv_ray_tracing_motion_blur")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -28,10 +28,10 @@ for AccelerationStructureGeometryMotionTrianglesDataNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkAccelerationStructureMotionInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureMotionInfoNV.html). Settled by the wrappers:
+The rules of `VkAccelerationStructureMotionInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureMotionInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureMotionInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAccelerationStructureMotionInfoNV-flags-zerobitmask`: dynamic (checks the reserved flags are 0)*/
+- `VUID-VkAccelerationStructureMotionInfoNV-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkAccelerationStructureMotionInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_MOTION_INFO_NV`*/
 #[cfg(feature = "nv_ray_tracing_motion_blur")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -66,9 +66,9 @@ for AccelerationStructureMotionInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceRayTracingMotionBlurFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingMotionBlurFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceRayTracingMotionBlurFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceRayTracingMotionBlurFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceRayTracingMotionBlurFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceRayTracingMotionBlurFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MOTION_BLUR_FEATURES_NV`*/
 #[cfg(feature = "nv_ray_tracing_motion_blur")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

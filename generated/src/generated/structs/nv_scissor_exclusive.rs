@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceExclusiveScissorFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExclusiveScissorFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceExclusiveScissorFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExclusiveScissorFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceExclusiveScissorFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceExclusiveScissorFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXCLUSIVE_SCISSOR_FEATURES_NV`*/
 #[cfg(feature = "nv_scissor_exclusive")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,11 +39,12 @@ for PhysicalDeviceExclusiveScissorFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineViewportExclusiveScissorStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportExclusiveScissorStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineViewportExclusiveScissorStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportExclusiveScissorStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineViewportExclusiveScissorStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineViewportExclusiveScissorStateCreateInfoNV-exclusiveScissorCount-02027` (*yours*; explicit rule): If the `multiViewport` feature is not enabled, `exclusiveScissorCount` must be `0` or `1`
+- `VUID-VkPipelineViewportExclusiveScissorStateCreateInfoNV-exclusiveScissorCount-02028` (*yours*; explicit rule): `exclusiveScissorCount` must be less than or equal to `VkPhysicalDeviceLimits::maxViewports`
+- `VUID-VkPipelineViewportExclusiveScissorStateCreateInfoNV-exclusiveScissorCount-02029` (*yours*; explicit rule): `exclusiveScissorCount` must be `0` or greater than or equal to the `viewportCount` member of VkPipelineViewportStateCreateInfo
+- `VUID-VkPipelineViewportExclusiveScissorStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_EXCLUSIVE_SCISSOR_STATE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_scissor_exclusive")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

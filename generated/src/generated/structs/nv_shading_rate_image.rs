@@ -6,13 +6,16 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCoarseSampleOrderCustomNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCoarseSampleOrderCustomNV.html). Settled by the wrappers:
+The rules of `VkCoarseSampleOrderCustomNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCoarseSampleOrderCustomNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCoarseSampleOrderCustomNV-shadingRate-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkCoarseSampleOrderCustomNV-pSampleLocations-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkCoarseSampleOrderCustomNV-sampleLocationCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCoarseSampleOrderCustomNV-shadingRate-02073` (*yours*; explicit rule): `shadingRate` must be a shading rate that generates fragments with more than one pixel
+- `VUID-VkCoarseSampleOrderCustomNV-sampleCount-02074` (*yours*; explicit rule): `sampleCount` must correspond to a sample count enumerated in VkSampleCountFlags whose corresponding bit is set in VkPhysicalDeviceLimits::`framebufferNoAttachmentsSampleCounts`
+- `VUID-VkCoarseSampleOrderCustomNV-sampleLocationCount-02075` (*yours*; explicit rule): `sampleLocationCount` must be equal to the product of `sampleCount`, the fragment width for `shadingRate`, and the fragment height for `shadingRate`
+- `VUID-VkCoarseSampleOrderCustomNV-sampleLocationCount-02076` (*yours*; explicit rule): `sampleLocationCount` must be less than or equal to the value of `VkPhysicalDeviceShadingRateImagePropertiesNV::shadingRateMaxCoarseSamples`
+- `VUID-VkCoarseSampleOrderCustomNV-pSampleLocations-02077` (*yours*; explicit rule): The array `pSampleLocations` must contain exactly one entry for every combination of valid values for `pixelX`, `pixelY`, and `sample` in the structure VkCoarseSampleOrderCustomNV
+- `VUID-VkCoarseSampleOrderCustomNV-shadingRate-parameter` (*checked*): `shadingRate` must be a valid VkShadingRatePaletteEntryNV value
+- `VUID-VkCoarseSampleOrderCustomNV-sampleLocationCount-arraylength` (*checked*): `sampleLocationCount` must be greater than `0`
+- `VUID-VkCoarseSampleOrderCustomNV-pSampleLocations-parameter` (*by the types*): `pSampleLocations` must be a valid pointer to an array of `sampleLocationCount` VkCoarseSampleLocationNV structures*/
 #[cfg(feature = "nv_shading_rate_image")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -49,9 +52,9 @@ impl<'a> CoarseSampleOrderCustomNV<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShadingRateImageFeaturesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShadingRateImageFeaturesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShadingRateImageFeaturesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShadingRateImageFeaturesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShadingRateImageFeaturesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShadingRateImageFeaturesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADING_RATE_IMAGE_FEATURES_NV`*/
 #[cfg(feature = "nv_shading_rate_image")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -88,9 +91,9 @@ for PhysicalDeviceShadingRateImageFeaturesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShadingRateImagePropertiesNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShadingRateImagePropertiesNV.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShadingRateImagePropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShadingRateImagePropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShadingRateImagePropertiesNV-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShadingRateImagePropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADING_RATE_IMAGE_PROPERTIES_NV`*/
 #[cfg(feature = "nv_shading_rate_image")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -109,13 +112,13 @@ for PhysicalDeviceShadingRateImagePropertiesNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineViewportCoarseSampleOrderStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportCoarseSampleOrderStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineViewportCoarseSampleOrderStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportCoarseSampleOrderStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-sampleOrderType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-pCustomSampleOrders-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-sampleOrderType-02072` (*yours*; explicit rule): If `sampleOrderType` is not `VK_COARSE_SAMPLE_ORDER_TYPE_CUSTOM_NV`, `customSamplerOrderCount` must be `0`
+- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-pCustomSampleOrders-02234` (*yours*; explicit rule): The array `pCustomSampleOrders` must not contain two structures with matching values for both the `shadingRate` and `sampleCount` members
+- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-sampleOrderType-parameter` (*checked*): `sampleOrderType` must be a valid VkCoarseSampleOrderTypeNV value
+- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_COARSE_SAMPLE_ORDER_STATE_CREATE_INFO_NV`
+- `VUID-VkPipelineViewportCoarseSampleOrderStateCreateInfoNV-pCustomSampleOrders-parameter` (*by the types*): If `customSampleOrderCount` is not `0`, `pCustomSampleOrders` must be a valid pointer to an array of `customSampleOrderCount` valid VkCoarseSampleOrderCustomNV structures*/
 #[cfg(feature = "nv_shading_rate_image")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -153,11 +156,12 @@ for PipelineViewportCoarseSampleOrderStateCreateInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineViewportShadingRateImageStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportShadingRateImageStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineViewportShadingRateImageStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportShadingRateImageStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineViewportShadingRateImageStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineViewportShadingRateImageStateCreateInfoNV-viewportCount-02054` (*yours*; explicit rule): If the `multiViewport` feature is not enabled, `viewportCount` must be `0` or `1`
+- `VUID-VkPipelineViewportShadingRateImageStateCreateInfoNV-viewportCount-02055` (*yours*; explicit rule): `viewportCount` must be less than or equal to `VkPhysicalDeviceLimits::maxViewports`
+- `VUID-VkPipelineViewportShadingRateImageStateCreateInfoNV-shadingRateImageEnable-02056` (*yours*; explicit rule): If `shadingRateImageEnable` is `VK_TRUE`, `viewportCount` must be greater or equal to the `viewportCount` member of VkPipelineViewportStateCreateInfo
+- `VUID-VkPipelineViewportShadingRateImageStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_SHADING_RATE_IMAGE_STATE_CREATE_INFO_NV`*/
 #[cfg(feature = "nv_shading_rate_image")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -195,12 +199,11 @@ for PipelineViewportShadingRateImageStateCreateInfoNV<'a> {}
 
 # Valid usage
 
-The rules are on [`VkShadingRatePaletteNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShadingRatePaletteNV.html). Settled by the wrappers:
+The rules of `VkShadingRatePaletteNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShadingRatePaletteNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkShadingRatePaletteNV-pShadingRatePaletteEntries-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)
-- `VUID-VkShadingRatePaletteNV-shadingRatePaletteEntryCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkShadingRatePaletteNV-shadingRatePaletteEntryCount-02071` (*yours*; explicit rule): `shadingRatePaletteEntryCount` must be between `1` and `VkPhysicalDeviceShadingRateImagePropertiesNV::shadingRatePaletteSize`, inclusive
+- `VUID-VkShadingRatePaletteNV-pShadingRatePaletteEntries-parameter` (*checked*): `pShadingRatePaletteEntries` must be a valid pointer to an array of `shadingRatePaletteEntryCount` valid VkShadingRatePaletteEntryNV values
+- `VUID-VkShadingRatePaletteNV-shadingRatePaletteEntryCount-arraylength` (*checked*): `shadingRatePaletteEntryCount` must be greater than `0`*/
 #[cfg(feature = "nv_shading_rate_image")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,14 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPipelineViewportSwizzleStateCreateInfoNV`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportSwizzleStateCreateInfoNV.html). Settled by the wrappers:
+The rules of `VkPipelineViewportSwizzleStateCreateInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportSwizzleStateCreateInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-pViewportSwizzles-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-viewportCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-viewportCount-01215` (*yours*; explicit rule): `viewportCount` must be greater than or equal to the `viewportCount` set in `VkPipelineViewportStateCreateInfo`
+- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-viewportCount-arraylength` (*checked*): `viewportCount` must be greater than `0`
+- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_SWIZZLE_STATE_CREATE_INFO_NV`
+- `VUID-VkPipelineViewportSwizzleStateCreateInfoNV-pViewportSwizzles-parameter` (*by the types*): `pViewportSwizzles` must be a valid pointer to an array of `viewportCount` valid VkViewportSwizzleNV structures*/
 #[cfg(feature = "nv_viewport_swizzle")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCuFunctionCreateInfoNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuFunctionCreateInfoNVX.html). Settled by the wrappers:
+The rules of `VkCuFunctionCreateInfoNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuFunctionCreateInfoNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCuFunctionCreateInfoNVX-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCuFunctionCreateInfoNVX-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCuFunctionCreateInfoNVX-module-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCuFunctionCreateInfoNVX-pName-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkCuFunctionCreateInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CU_FUNCTION_CREATE_INFO_NVX`
+- `VUID-VkCuFunctionCreateInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCuFunctionCreateInfoNVX-module-parameter` (*by the types*): `module` must be a valid VkCuModuleNVX handle
+- `VUID-VkCuFunctionCreateInfoNVX-pName-parameter` (*by the types*): `pName` must be a null-terminated UTF-8 string*/
 #[cfg(feature = "nvx_binary_import")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -52,13 +52,13 @@ impl<'a> CuFunctionCreateInfoNVX<'a> {
 
 # Valid usage
 
-The rules are on [`VkCuLaunchInfoNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuLaunchInfoNVX.html). Settled by the wrappers:
+The rules of `VkCuLaunchInfoNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuLaunchInfoNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCuLaunchInfoNVX-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCuLaunchInfoNVX-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCuLaunchInfoNVX-function-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkCuLaunchInfoNVX-pParams-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)
-- `VUID-VkCuLaunchInfoNVX-pExtras-parameter`: static (never set: the safe struct has no setter for it, so it stays NULL (or its count 0), which the rule allows)*/
+- `VUID-VkCuLaunchInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CU_LAUNCH_INFO_NVX`
+- `VUID-VkCuLaunchInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCuLaunchInfoNVX-function-parameter` (*by the types*): `function` must be a valid VkCuFunctionNVX handle
+- `VUID-VkCuLaunchInfoNVX-pParams-parameter` (*by the types*): If `paramCount` is not `0`, `pParams` must be a valid pointer to an array of `paramCount` bytes
+- `VUID-VkCuLaunchInfoNVX-pExtras-parameter` (*by the types*): If `extraCount` is not `0`, `pExtras` must be a valid pointer to an array of `extraCount` bytes*/
 #[cfg(feature = "nvx_binary_import")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -134,12 +134,12 @@ impl<'a> CuLaunchInfoNVX<'a> {
 
 # Valid usage
 
-The rules are on [`VkCuModuleCreateInfoNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuModuleCreateInfoNVX.html). Settled by the wrappers:
+The rules of `VkCuModuleCreateInfoNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuModuleCreateInfoNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCuModuleCreateInfoNVX-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkCuModuleCreateInfoNVX-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkCuModuleCreateInfoNVX-pData-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkCuModuleCreateInfoNVX-dataSize-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkCuModuleCreateInfoNVX-dataSize-arraylength` (*checked*): `dataSize` must be greater than `0`
+- `VUID-VkCuModuleCreateInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CU_MODULE_CREATE_INFO_NVX`
+- `VUID-VkCuModuleCreateInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCuModuleCreateInfoNVX-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
 #[cfg(feature = "nvx_binary_import")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,10 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImageViewAddressPropertiesNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewAddressPropertiesNVX.html). Settled by the wrappers:
+The rules of `VkImageViewAddressPropertiesNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewAddressPropertiesNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageViewAddressPropertiesNVX-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageViewAddressPropertiesNVX-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkImageViewAddressPropertiesNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_ADDRESS_PROPERTIES_NVX`
+- `VUID-VkImageViewAddressPropertiesNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nvx_image_view_handle")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -25,19 +25,18 @@ safe_struct!(
 
 # Valid usage
 
-The rules are on [`VkImageViewHandleInfoNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewHandleInfoNVX.html). Settled by the wrappers:
+The rules of `VkImageViewHandleInfoNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewHandleInfoNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageViewHandleInfoNVX-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageViewHandleInfoNVX-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageViewHandleInfoNVX-imageView-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImageViewHandleInfoNVX-descriptorType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageViewHandleInfoNVX-sampler-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkImageViewHandleInfoNVX-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 4.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 3: explicit rule; the wrappers do not check it*/
+- `VUID-VkImageViewHandleInfoNVX-descriptorType-02654` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `descriptorType` must be `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`
+- `VUID-VkImageViewHandleInfoNVX-sampler-02655` (*yours*; explicit rule): `sampler` must be a valid VkSampler if `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`
+- `VUID-VkImageViewHandleInfoNVX-imageView-02656` (*yours*; explicit rule): If descriptorType is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the image that `imageView` was created from must have been created with the …
+- `VUID-VkImageViewHandleInfoNVX-imageView-02657` (*yours*; explicit rule): If descriptorType is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, the image that `imageView` was created from must have been created with the `VK_IMAGE_USAGE_STORAGE_BIT` usage bit set
+- `VUID-VkImageViewHandleInfoNVX-descriptorType-parameter` (*checked*): `descriptorType` must be a valid VkDescriptorType value
+- `VUID-VkImageViewHandleInfoNVX-commonparent` (*checked*): Both of `imageView`, and `sampler` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkImageViewHandleInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_HANDLE_INFO_NVX`
+- `VUID-VkImageViewHandleInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImageViewHandleInfoNVX-imageView-parameter` (*by the types*): `imageView` must be a valid VkImageView handle
+- `VUID-VkImageViewHandleInfoNVX-sampler-parameter` (*by the types*): If `sampler` is not VK_NULL_HANDLE, `sampler` must be a valid VkSampler handle*/
 #[cfg(feature = "nvx_image_view_handle")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

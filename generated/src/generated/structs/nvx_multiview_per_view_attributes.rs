@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMultiviewPerViewAttributesPropertiesNVX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewPerViewAttributesPropertiesNVX.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMultiviewPerViewAttributesPropertiesNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewPerViewAttributesPropertiesNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMultiviewPerViewAttributesPropertiesNVX-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceMultiviewPerViewAttributesPropertiesNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_PER_VIEW_ATTRIBUTES_PROPERTIES_NVX`*/
 #[cfg(feature = "nvx_multiview_per_view_attributes")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

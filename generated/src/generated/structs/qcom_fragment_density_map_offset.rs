@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_DENSITY_MAP_OFFSET_FEATURES_QCOM`*/
 #[cfg(feature = "qcom_fragment_density_map_offset")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,9 +39,9 @@ for PhysicalDeviceFragmentDensityMapOffsetFeaturesQCOM<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFragmentDensityMapOffsetPropertiesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentDensityMapOffsetPropertiesQCOM.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFragmentDensityMapOffsetPropertiesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFragmentDensityMapOffsetPropertiesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFragmentDensityMapOffsetPropertiesQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFragmentDensityMapOffsetPropertiesQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FRAGMENT_DENSITY_MAP_OFFSET_PROPERTIES_QCOM`*/
 #[cfg(feature = "qcom_fragment_density_map_offset")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -60,12 +60,21 @@ for PhysicalDeviceFragmentDensityMapOffsetPropertiesQCOM<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSubpassFragmentDensityMapOffsetEndInfoQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassFragmentDensityMapOffsetEndInfoQCOM.html). Settled by the wrappers:
+The rules of `VkSubpassFragmentDensityMapOffsetEndInfoQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassFragmentDensityMapOffsetEndInfoQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-pFragmentDensityOffsets-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 11 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-fragmentDensityMapOffsets-06503` (*yours*; explicit rule): If the `fragmentDensityMapOffsets` feature is not enabled or fragment density map is not enabled in the render pass, `fragmentDensityOffsetCount` must equal `0`
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-fragmentDensityMapAttachment-06504` (*yours*; explicit rule): If `VkSubpassDescription::fragmentDensityMapAttachment` is not is not `VK_ATTACHMENT_UNUSED` and was not created with `VK_IMAGE_CREATE_FRAGMENT_DENSITY_MAP_OFFSET_BIT_QCOM`, …
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-pDepthStencilAttachment-06505` (*yours*; explicit rule): If `VkSubpassDescription::pDepthStencilAttachment` is not is not `VK_ATTACHMENT_UNUSED` and was not created with `VK_IMAGE_CREATE_FRAGMENT_DENSITY_MAP_OFFSET_BIT_QCOM`, `fragmentDensityOffsetCount` …
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-pInputAttachments-06506` (*yours*; explicit rule): If any element of `VkSubpassDescription::pInputAttachments` is not is not `VK_ATTACHMENT_UNUSED` and was not created with `VK_IMAGE_CREATE_FRAGMENT_DENSITY_MAP_OFFSET_BIT_QCOM`, …
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-pColorAttachments-06507` (*yours*; explicit rule): If any element of `VkSubpassDescription::pColorAttachments` is not is not `VK_ATTACHMENT_UNUSED` and was not created with `VK_IMAGE_CREATE_FRAGMENT_DENSITY_MAP_OFFSET_BIT_QCOM`, …
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-pResolveAttachments-06508` (*yours*; explicit rule): If any element of `VkSubpassDescription::pResolveAttachments` is not is not `VK_ATTACHMENT_UNUSED` and was not created with `VK_IMAGE_CREATE_FRAGMENT_DENSITY_MAP_OFFSET_BIT_QCOM`, …
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-pPreserveAttachments-06509` (*yours*; explicit rule): If any element of `VkSubpassDescription::pPreserveAttachments` is not is not `VK_ATTACHMENT_UNUSED` and was not created with `VK_IMAGE_CREATE_FRAGMENT_DENSITY_MAP_OFFSET_BIT_QCOM`, …
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-fragmentDensityOffsetCount-06510` (*yours*; explicit rule): If `fragmentDensityOffsetCount` is not `0` and multiview is enabled for the render pass, `fragmentDensityOffsetCount` must equal the `layerCount` that was specified in creating the fragment density …
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-fragmentDensityOffsetCount-06511` (*yours*; explicit rule): If `fragmentDensityOffsetCount` is not `0` and multiview is not enabled for the render pass, `fragmentDensityOffsetCount` must equal `1`
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-x-06512` (*yours*; explicit rule): The `x` component of each element of `pFragmentDensityOffsets` must be an integer multiple of `fragmentDensityOffsetGranularity.width`
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-y-06513` (*yours*; explicit rule): The `y` component of each element of `pFragmentDensityOffsets` must be an integer multiple of `fragmentDensityOffsetGranularity.height`
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_FRAGMENT_DENSITY_MAP_OFFSET_END_INFO_QCOM`
+- `VUID-VkSubpassFragmentDensityMapOffsetEndInfoQCOM-pFragmentDensityOffsets-parameter` (*by the types*): If `fragmentDensityOffsetCount` is not `0`, `pFragmentDensityOffsets` must be a valid pointer to an array of `fragmentDensityOffsetCount` VkOffset2D structures*/
 #[cfg(feature = "qcom_fragment_density_map_offset")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

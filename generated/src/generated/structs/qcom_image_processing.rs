@@ -6,11 +6,15 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkImageViewSampleWeightCreateInfoQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewSampleWeightCreateInfoQCOM.html). Settled by the wrappers:
+The rules of `VkImageViewSampleWeightCreateInfoQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewSampleWeightCreateInfoQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageViewSampleWeightCreateInfoQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 6 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkImageViewSampleWeightCreateInfoQCOM-filterSize-06958` (*yours*; explicit rule): `filterSize.width` must be less than or equal to `VkPhysicalDeviceImageProcessingPropertiesQCOM::maxWeightFilterDimension.width`
+- `VUID-VkImageViewSampleWeightCreateInfoQCOM-filterSize-06959` (*yours*; explicit rule): `filterSize.height` must be less than or equal to `VkPhysicalDeviceImageProcessingPropertiesQCOM::maxWeightFilterDimension.height`
+- `VUID-VkImageViewSampleWeightCreateInfoQCOM-filterCenter-06960` (*yours*; explicit rule): `filterCenter.x` must be less than or equal to (filterSize.width - 1)
+- `VUID-VkImageViewSampleWeightCreateInfoQCOM-filterCenter-06961` (*yours*; explicit rule): `filterCenter.y` must be less than or equal to (filterSize.height - 1)
+- `VUID-VkImageViewSampleWeightCreateInfoQCOM-numPhases-06962` (*yours*; explicit rule): `numPhases` must be a power of two squared value (i.e., 1, 4, 16, 64, 256, etc.)
+- `VUID-VkImageViewSampleWeightCreateInfoQCOM-numPhases-06963` (*yours*; explicit rule): `numPhases` must be less than or equal to `VkPhysicalDeviceImageProcessingPropertiesQCOM::maxWeightFilterPhases`
+- `VUID-VkImageViewSampleWeightCreateInfoQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_SAMPLE_WEIGHT_CREATE_INFO_QCOM`*/
 #[cfg(feature = "qcom_image_processing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -50,9 +54,9 @@ for ImageViewSampleWeightCreateInfoQCOM<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImageProcessingFeaturesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageProcessingFeaturesQCOM.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImageProcessingFeaturesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageProcessingFeaturesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImageProcessingFeaturesQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceImageProcessingFeaturesQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGE_PROCESSING_FEATURES_QCOM`*/
 #[cfg(feature = "qcom_image_processing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -95,9 +99,9 @@ for PhysicalDeviceImageProcessingFeaturesQCOM<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImageProcessingPropertiesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageProcessingPropertiesQCOM.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImageProcessingPropertiesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageProcessingPropertiesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImageProcessingPropertiesQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceImageProcessingPropertiesQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGE_PROCESSING_PROPERTIES_QCOM`*/
 #[cfg(feature = "qcom_image_processing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

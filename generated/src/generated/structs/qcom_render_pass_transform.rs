@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCommandBufferInheritanceRenderPassTransformInfoQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceRenderPassTransformInfoQCOM.html). Settled by the wrappers:
+The rules of `VkCommandBufferInheritanceRenderPassTransformInfoQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceRenderPassTransformInfoQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCommandBufferInheritanceRenderPassTransformInfoQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCommandBufferInheritanceRenderPassTransformInfoQCOM-transform-02864` (*yours*; explicit rule): `transform` must be `VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR`, `VK_SURFACE_TRANSFORM_ROTATE_90_BIT_KHR`, `VK_SURFACE_TRANSFORM_ROTATE_180_BIT_KHR`, or `VK_SURFACE_TRANSFORM_ROTATE_270_BIT_KHR`
+- `VUID-VkCommandBufferInheritanceRenderPassTransformInfoQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_RENDER_PASS_TRANSFORM_INFO_QCOM`*/
 #[cfg(feature = "qcom_render_pass_transform")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -44,11 +43,11 @@ for CommandBufferInheritanceRenderPassTransformInfoQCOM<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRenderPassTransformBeginInfoQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassTransformBeginInfoQCOM.html). Settled by the wrappers:
+The rules of `VkRenderPassTransformBeginInfoQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassTransformBeginInfoQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassTransformBeginInfoQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRenderPassTransformBeginInfoQCOM-transform-02871` (*yours*; explicit rule): `transform` must be `VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR`, `VK_SURFACE_TRANSFORM_ROTATE_90_BIT_KHR`, `VK_SURFACE_TRANSFORM_ROTATE_180_BIT_KHR`, or `VK_SURFACE_TRANSFORM_ROTATE_270_BIT_KHR`
+- `VUID-VkRenderPassTransformBeginInfoQCOM-flags-02872` (*yours*; explicit rule): The `renderpass` must have been created with VkRenderPassCreateInfo::`flags` containing `VK_RENDER_PASS_CREATE_TRANSFORM_BIT_QCOM`
+- `VUID-VkRenderPassTransformBeginInfoQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_TRANSFORM_BEGIN_INFO_QCOM`*/
 #[cfg(feature = "qcom_render_pass_transform")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

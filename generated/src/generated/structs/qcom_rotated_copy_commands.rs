@@ -6,11 +6,10 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkCopyCommandTransformInfoQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyCommandTransformInfoQCOM.html). Settled by the wrappers:
+The rules of `VkCopyCommandTransformInfoQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyCommandTransformInfoQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyCommandTransformInfoQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkCopyCommandTransformInfoQCOM-transform-04560` (*yours*; explicit rule): `transform` must be `VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR`, `VK_SURFACE_TRANSFORM_ROTATE_90_BIT_KHR`, `VK_SURFACE_TRANSFORM_ROTATE_180_BIT_KHR`, or `VK_SURFACE_TRANSFORM_ROTATE_270_BIT_KHR`
+- `VUID-VkCopyCommandTransformInfoQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_COMMAND_TRANSFORM_INFO_QCOM`*/
 #[cfg(feature = "qcom_rotated_copy_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceTilePropertiesFeaturesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTilePropertiesFeaturesQCOM.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceTilePropertiesFeaturesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTilePropertiesFeaturesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceTilePropertiesFeaturesQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceTilePropertiesFeaturesQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TILE_PROPERTIES_FEATURES_QCOM`*/
 #[cfg(feature = "qcom_tile_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -39,10 +39,10 @@ for PhysicalDeviceTilePropertiesFeaturesQCOM<'a> {}
 
 # Valid usage
 
-The rules are on [`VkTilePropertiesQCOM`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkTilePropertiesQCOM.html). Settled by the wrappers:
+The rules of `VkTilePropertiesQCOM` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkTilePropertiesQCOM.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkTilePropertiesQCOM-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkTilePropertiesQCOM-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkTilePropertiesQCOM-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_TILE_PROPERTIES_QCOM`
+- `VUID-VkTilePropertiesQCOM-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "qcom_tile_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,13 +6,13 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkScreenSurfaceCreateInfoQNX`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkScreenSurfaceCreateInfoQNX.html). Settled by the wrappers:
+The rules of `VkScreenSurfaceCreateInfoQNX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkScreenSurfaceCreateInfoQNX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkScreenSurfaceCreateInfoQNX-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkScreenSurfaceCreateInfoQNX-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkScreenSurfaceCreateInfoQNX-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkScreenSurfaceCreateInfoQNX-context-04741` (*yours*; explicit rule): `context` must point to a valid QNX Screen `struct` _screen_context
+- `VUID-VkScreenSurfaceCreateInfoQNX-window-04742` (*yours*; explicit rule): `window` must point to a valid QNX Screen `struct` _screen_window
+- `VUID-VkScreenSurfaceCreateInfoQNX-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkScreenSurfaceCreateInfoQNX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SCREEN_SURFACE_CREATE_INFO_QNX`
+- `VUID-VkScreenSurfaceCreateInfoQNX-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "qnx_screen_surface")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

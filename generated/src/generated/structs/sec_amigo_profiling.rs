@@ -6,9 +6,9 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAmigoProfilingSubmitInfoSEC`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAmigoProfilingSubmitInfoSEC.html). Settled by the wrappers:
+The rules of `VkAmigoProfilingSubmitInfoSEC` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAmigoProfilingSubmitInfoSEC.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAmigoProfilingSubmitInfoSEC-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkAmigoProfilingSubmitInfoSEC-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_AMIGO_PROFILING_SUBMIT_INFO_SEC`*/
 #[cfg(feature = "sec_amigo_profiling")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -41,9 +41,9 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for AmigoProfilingSubmitInfoSEC<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceAmigoProfilingFeaturesSEC`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAmigoProfilingFeaturesSEC.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceAmigoProfilingFeaturesSEC` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceAmigoProfilingFeaturesSEC.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceAmigoProfilingFeaturesSEC-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceAmigoProfilingFeaturesSEC-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_AMIGO_PROFILING_FEATURES_SEC`*/
 #[cfg(feature = "sec_amigo_profiling")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -6,12 +6,12 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkBindBufferMemoryDeviceGroupInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindBufferMemoryDeviceGroupInfo.html). Settled by the wrappers:
+The rules of `VkBindBufferMemoryDeviceGroupInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindBufferMemoryDeviceGroupInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindBufferMemoryDeviceGroupInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606` (*yours*; explicit rule): `deviceIndexCount` must either be zero or equal to the number of physical devices in the logical device
+- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607` (*yours*; explicit rule): All elements of `pDeviceIndices` must be valid device indices
+- `VUID-VkBindBufferMemoryDeviceGroupInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_BUFFER_MEMORY_DEVICE_GROUP_INFO`
+- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-parameter` (*by the types*): If `deviceIndexCount` is not `0`, `pDeviceIndices` must be a valid pointer to an array of `deviceIndexCount` `uint32_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindBufferMemoryDeviceGroupInfo<'a> {
@@ -34,23 +34,34 @@ for BindBufferMemoryDeviceGroupInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkBindBufferMemoryInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindBufferMemoryInfo.html). Settled by the wrappers:
+The rules of `VkBindBufferMemoryInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindBufferMemoryInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindBufferMemoryInfo-buffer-07459`: dynamic (refuses an object the device recorded as bound (and one an earlier info of the same call binds))
-- `VUID-VkBindBufferMemoryInfo-memoryOffset-01031`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-VkBindBufferMemoryInfo-size-01037`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-VkBindBufferMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindBufferMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkBindBufferMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkBindBufferMemoryInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindBufferMemoryInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindBufferMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16.
-
-- 2: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 14: explicit rule; the wrappers do not check it*/
+- `VUID-VkBindBufferMemoryInfo-buffer-01030` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `buffer` must not have been created with any sparse memory binding flags
+- `VUID-VkBindBufferMemoryInfo-memory-01035` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` …
+- `VUID-VkBindBufferMemoryInfo-buffer-01444` (*yours*; explicit rule): If `buffer` requires a dedicated allocation (as reported by vkGetBufferMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `buffer`), `memory` must have been …
+- `VUID-VkBindBufferMemoryInfo-memory-01508` (*yours*; explicit rule): If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`buffer` was not …
+- `VUID-VkBindBufferMemoryInfo-None-01898` (*yours*; explicit rule): If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit set, the buffer must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkBindBufferMemoryInfo-None-01899` (*yours*; explicit rule): If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit not set, the buffer must not be bound to a memory object allocated with a memory type that reports …
+- `VUID-VkBindBufferMemoryInfo-buffer-01038` (*yours*; explicit rule): If `buffer` was created with VkDedicatedAllocationBufferCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must have been allocated with …
+- `VUID-VkBindBufferMemoryInfo-buffer-01039` (*yours*; explicit rule): If `buffer` was not created with VkDedicatedAllocationBufferCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must not have been allocated dedicated for a specific buffer or image
+- `VUID-VkBindBufferMemoryInfo-memory-02726` (*yours*; explicit rule): If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryBufferCreateInfo::`handleTypes` when …
+- `VUID-VkBindBufferMemoryInfo-memory-02727` (*yours*; explicit rule): If `memory` was allocated by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was …
+- `VUID-VkBindBufferMemoryInfo-memory-02985` (*yours*; explicit rule): If `memory` was allocated by a memory import operation, that is not VkImportAndroidHardwareBufferInfoANDROID with a non-`NULL` `buffer` value, the external handle type of the imported memory must also …
+- `VUID-VkBindBufferMemoryInfo-memory-02986` (*yours*; explicit rule): If `memory` was allocated with the VkImportAndroidHardwareBufferInfoANDROID memory import operation with a non-`NULL` `buffer` value, …
+- `VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339` (*yours*; explicit rule): If the VkPhysicalDeviceBufferDeviceAddressFeatures::`bufferDeviceAddress` feature is enabled and `buffer` was created with the `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT` bit set, `memory` must have …
+- `VUID-VkBindBufferMemoryInfo-buffer-06408` (*yours*; explicit rule): If `buffer` was created with VkBufferCollectionBufferCreateInfoFUCHSIA chained to VkBufferCreateInfo::`pNext`, `memory` must be allocated with a VkImportMemoryBufferCollectionFUCHSIA chained to …
+- `VUID-VkBindBufferMemoryInfo-descriptorBufferCaptureReplay-08112` (*yours*; explicit rule): If the VkPhysicalDeviceDescriptorBufferFeaturesEXT ::`descriptorBufferCaptureReplay` feature is enabled and `buffer` was created with the `VK_BUFFER_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` …
+- `VUID-VkBindBufferMemoryInfo-pNext-01605` (*yours*; explicit rule): If the `pNext` chain includes a VkBindBufferMemoryDeviceGroupInfo structure, all instances of `memory` specified by VkBindBufferMemoryDeviceGroupInfo::`pDeviceIndices` must have been allocated
+- `VUID-VkBindBufferMemoryInfo-buffer-07459` (*checked*): `buffer` must not have been bound to a memory object
+- `VUID-VkBindBufferMemoryInfo-memoryOffset-01031` (*checked*): `memoryOffset` must be less than the size of `memory`
+- `VUID-VkBindBufferMemoryInfo-memoryOffset-01036` (*checked*): `memoryOffset` must be an integer multiple of the `alignment` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` with `buffer`
+- `VUID-VkBindBufferMemoryInfo-size-01037` (*checked*): The `size` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` with `buffer` must be less than or equal to the size of `memory` minus `memoryOffset`
+- `VUID-VkBindBufferMemoryInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkBindBufferMemoryInfo-commonparent` (*checked*): Both of `buffer`, and `memory` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkBindBufferMemoryInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_BUFFER_MEMORY_INFO`
+- `VUID-VkBindBufferMemoryInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkBindBufferMemoryDeviceGroupInfo
+- `VUID-VkBindBufferMemoryInfo-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle
+- `VUID-VkBindBufferMemoryInfo-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindBufferMemoryInfo<'a> {
@@ -95,13 +106,20 @@ impl<'a> BindBufferMemoryInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkBindImageMemoryDeviceGroupInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemoryDeviceGroupInfo.html). Settled by the wrappers:
+The rules of `VkBindImageMemoryDeviceGroupInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemoryDeviceGroupInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindImageMemoryDeviceGroupInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 9 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01633` (*yours*; explicit rule): At least one of `deviceIndexCount` and `splitInstanceBindRegionCount` must be zero
+- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01634` (*yours*; explicit rule): `deviceIndexCount` must either be zero or equal to the number of physical devices in the logical device
+- `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-01635` (*yours*; explicit rule): All elements of `pDeviceIndices` must be valid device indices
+- `VUID-VkBindImageMemoryDeviceGroupInfo-splitInstanceBindRegionCount-01636` (*yours*; explicit rule): `splitInstanceBindRegionCount` must either be zero or equal to the number of physical devices in the logical device squared
+- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-01637` (*yours*; explicit rule): Elements of `pSplitInstanceBindRegions` that correspond to the same instance of an image must not overlap
+- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01638` (*yours*; explicit rule): The `offset.x` member of any element of `pSplitInstanceBindRegions` must be a multiple of the sparse image block width (`VkSparseImageFormatProperties::imageGranularity.width`) of all non-metadata …
+- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01639` (*yours*; explicit rule): The `offset.y` member of any element of `pSplitInstanceBindRegions` must be a multiple of the sparse image block height (`VkSparseImageFormatProperties::imageGranularity.height`) of all non-metadata …
+- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01640` (*yours*; explicit rule): The `extent.width` member of any element of `pSplitInstanceBindRegions` must either be a multiple of the sparse image block width of all non-metadata aspects of the image, or else `extent.width` + …
+- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01641` (*yours*; explicit rule): The `extent.height` member of any element of `pSplitInstanceBindRegions` must either be a multiple of the sparse image block height of all non-metadata aspects of the image, or else `extent.height` + …
+- `VUID-VkBindImageMemoryDeviceGroupInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_MEMORY_DEVICE_GROUP_INFO`
+- `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-parameter` (*by the types*): If `deviceIndexCount` is not `0`, `pDeviceIndices` must be a valid pointer to an array of `deviceIndexCount` `uint32_t` values
+- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-parameter` (*by the types*): If `splitInstanceBindRegionCount` is not `0`, `pSplitInstanceBindRegions` must be a valid pointer to an array of `splitInstanceBindRegionCount` VkRect2D structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemoryDeviceGroupInfo<'a> {
@@ -130,23 +148,48 @@ unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImageMemoryDeviceGroupI
 
 # Valid usage
 
-The rules are on [`VkBindImageMemoryInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemoryInfo.html). Settled by the wrappers:
+The rules of `VkBindImageMemoryInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemoryInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindImageMemoryInfo-image-07460`: dynamic (refuses an object the device recorded as bound (and one an earlier info of the same call binds))
-- `VUID-VkBindImageMemoryInfo-memoryOffset-01046`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-VkBindImageMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindImageMemoryInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkBindImageMemoryInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkBindImageMemoryInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkBindImageMemoryInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkBindImageMemoryInfo-pNext-01616`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-VkBindImageMemoryInfo-pNext-01617`: dynamic (checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind)
-- `VUID-VkBindImageMemoryInfo-memory-01625`: static (the method takes the handle as a wrapper reference, never null and live while borrowed)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 30.
-
-- 3: checked by the safe methods in every build, but no test breaks it yet, so the report does not count it
-- 27: explicit rule; the wrappers do not check it*/
+- `VUID-VkBindImageMemoryInfo-image-01045` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `image` must not have been created with any sparse memory binding flags
+- `VUID-VkBindImageMemoryInfo-image-01445` (*yours*; explicit rule): If `image` requires a dedicated allocation (as reported by vkGetImageMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `image`), `memory` must have been created …
+- `VUID-VkBindImageMemoryInfo-memory-01509` (*yours*; explicit rule): If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`image` was not …
+- `VUID-VkBindImageMemoryInfo-memory-02628` (*yours*; explicit rule): If the `dedicatedAllocationImageAliasing` feature is not enabled, and the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` …
+- `VUID-VkBindImageMemoryInfo-memory-02629` (*yours*; explicit rule): If the `dedicatedAllocationImageAliasing` feature is enabled, and the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` …
+- `VUID-VkBindImageMemoryInfo-None-01901` (*yours*; explicit rule): If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit set, the image must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkBindImageMemoryInfo-None-01902` (*yours*; explicit rule): If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit not set, the image must not be bound to a memory object created with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
+- `VUID-VkBindImageMemoryInfo-image-01050` (*yours*; explicit rule): If `image` was created with VkDedicatedAllocationImageCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must have been created with VkDedicatedAllocationMemoryAllocateInfoNV::`image` …
+- `VUID-VkBindImageMemoryInfo-image-01051` (*yours*; explicit rule): If `image` was not created with VkDedicatedAllocationImageCreateInfoNV::`dedicatedAllocation` equal to `VK_TRUE`, `memory` must not have been allocated dedicated for a specific buffer or image
+- `VUID-VkBindImageMemoryInfo-memory-02728` (*yours*; explicit rule): If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryImageCreateInfo::`handleTypes` when …
+- `VUID-VkBindImageMemoryInfo-memory-02729` (*yours*; explicit rule): If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
+- `VUID-VkBindImageMemoryInfo-memory-02989` (*yours*; explicit rule): If `memory` was created by a memory import operation, that is not VkImportAndroidHardwareBufferInfoANDROID with a non-`NULL` `buffer` value, the external handle type of the imported memory must also …
+- `VUID-VkBindImageMemoryInfo-memory-02990` (*yours*; explicit rule): If `memory` was created with the VkImportAndroidHardwareBufferInfoANDROID memory import operation with a non-`NULL` `buffer` value, `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` …
+- `VUID-VkBindImageMemoryInfo-descriptorBufferCaptureReplay-08113` (*yours*; explicit rule): If the VkPhysicalDeviceDescriptorBufferFeaturesEXT ::`descriptorBufferCaptureReplay` feature is enabled and `image` was created with the `VK_IMAGE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` bit …
+- `VUID-VkBindImageMemoryInfo-memory-01612` (*yours*; explicit rule): `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements with …
+- `VUID-VkBindImageMemoryInfo-memoryOffset-01613` (*yours*; explicit rule): `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements with `image`
+- `VUID-VkBindImageMemoryInfo-memory-01614` (*yours*; explicit rule): The difference of the size of `memory` and `memoryOffset` must be greater than or equal to the `size` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements …
+- `VUID-VkBindImageMemoryInfo-pNext-01615` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): If the `pNext` chain does not include a VkBindImagePlaneMemoryInfo structure, `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the …
+- `VUID-VkBindImageMemoryInfo-pNext-01618` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, `image` must have been created with the `VK_IMAGE_CREATE_DISJOINT_BIT` bit set
+- `VUID-VkBindImageMemoryInfo-image-07736` (*yours*; explicit rule): If `image` was created with the `VK_IMAGE_CREATE_DISJOINT_BIT` bit set, then the `pNext` chain must include a VkBindImagePlaneMemoryInfo structure
+- `VUID-VkBindImageMemoryInfo-pNext-01619` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the VkMemoryRequirements …
+- `VUID-VkBindImageMemoryInfo-pNext-01620` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a call to …
+- `VUID-VkBindImageMemoryInfo-pNext-01621` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, the difference of the size of `memory` and `memoryOffset` must be greater than or equal to the `size` member of the …
+- `VUID-VkBindImageMemoryInfo-pNext-01626` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, all instances of `memory` specified by VkBindImageMemoryDeviceGroupInfo::`pDeviceIndices` must have been allocated
+- `VUID-VkBindImageMemoryInfo-pNext-01627` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, and VkBindImageMemoryDeviceGroupInfo::`splitInstanceBindRegionCount` is not zero, then `image` must have been created with …
+- `VUID-VkBindImageMemoryInfo-pNext-01628` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, all elements of VkBindImageMemoryDeviceGroupInfo::`pSplitInstanceBindRegions` must be valid rectangles contained within the …
+- `VUID-VkBindImageMemoryInfo-pNext-01629` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, the union of the areas of all elements of VkBindImageMemoryDeviceGroupInfo::`pSplitInstanceBindRegions` that correspond to …
+- `VUID-VkBindImageMemoryInfo-image-01630` (*yours*; explicit rule): If `image` was created with a valid swapchain handle in VkImageSwapchainCreateInfoKHR::`swapchain`, then the `pNext` chain must include a VkBindImageMemorySwapchainInfoKHR structure containing the …
+- `VUID-VkBindImageMemoryInfo-pNext-01631` (*yours*; explicit rule): If the `pNext` chain includes a VkBindImageMemorySwapchainInfoKHR structure, `memory` must be VK_NULL_HANDLE
+- `VUID-VkBindImageMemoryInfo-pNext-01632` (*yours*; explicit rule): If the `pNext` chain does not include a VkBindImageMemorySwapchainInfoKHR structure, `memory` must be a valid VkDeviceMemory handle
+- `VUID-VkBindImageMemoryInfo-image-07460` (*checked*): `image` must not have been bound to a memory object
+- `VUID-VkBindImageMemoryInfo-memoryOffset-01046` (*checked*): `memoryOffset` must be less than the size of `memory`
+- `VUID-VkBindImageMemoryInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkBindImageMemoryInfo-commonparent` (*checked*): Both of `image`, and `memory` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkBindImageMemoryInfo-pNext-01616` (*checked*): If the `pNext` chain does not include a VkBindImagePlaneMemoryInfo structure, `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a …
+- `VUID-VkBindImageMemoryInfo-pNext-01617` (*checked*): If the `pNext` chain does not include a VkBindImagePlaneMemoryInfo structure, the difference of the size of `memory` and `memoryOffset` must be greater than or equal to the `size` member of the …
+- `VUID-VkBindImageMemoryInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_MEMORY_INFO`
+- `VUID-VkBindImageMemoryInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkBindImageMemoryDeviceGroupInfo, …
+- `VUID-VkBindImageMemoryInfo-image-parameter` (*by the types*): `image` must be a valid VkImage handle
+- `VUID-VkBindImageMemoryInfo-memory-01625` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImageMemoryInfo<'a> {
@@ -191,12 +234,12 @@ impl<'a> BindImageMemoryInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkBindImagePlaneMemoryInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImagePlaneMemoryInfo.html). Settled by the wrappers:
+The rules of `VkBindImagePlaneMemoryInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImagePlaneMemoryInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindImagePlaneMemoryInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02283` (*yours*; explicit rule): If the image&#8217;s `tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image …
+- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02284` (*yours*; explicit rule): If the image&#8217;s `tiling` is `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`, then `planeAspect` must be a single valid memory plane for the image (that is, `aspectMask` must specify a plane index that …
+- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-parameter` (*checked*): `planeAspect` must be a valid VkImageAspectFlagBits value
+- `VUID-VkBindImagePlaneMemoryInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_PLANE_MEMORY_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindImagePlaneMemoryInfo<'a> {
@@ -217,11 +260,11 @@ unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImagePlaneMemoryInfo<'a
 
 # Valid usage
 
-The rules are on [`VkBufferMemoryRequirementsInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryRequirementsInfo2.html). Settled by the wrappers:
+The rules of `VkBufferMemoryRequirementsInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryRequirementsInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferMemoryRequirementsInfo2-buffer-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkBufferMemoryRequirementsInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_MEMORY_REQUIREMENTS_INFO_2`
+- `VUID-VkBufferMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkBufferMemoryRequirementsInfo2-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryRequirementsInfo2<'a> {
@@ -253,11 +296,11 @@ impl<'a> BufferMemoryRequirementsInfo2<'a> {
 
 # Valid usage
 
-The rules are on [`VkDescriptorSetLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutSupport.html). Settled by the wrappers:
+The rules of `VkDescriptorSetLayoutSupport` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutSupport.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorSetLayoutSupport-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetLayoutSupport-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkDescriptorSetLayoutSupport-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkDescriptorSetLayoutSupport-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkDescriptorSetLayoutSupport-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_SUPPORT`
+- `VUID-VkDescriptorSetLayoutSupport-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkDescriptorSetVariableDescriptorCountLayoutSupport*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutSupport<'a> {
@@ -269,17 +312,20 @@ safe_struct!(DescriptorSetLayoutSupport, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkDescriptorUpdateTemplateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorUpdateTemplateCreateInfo.html). Settled by the wrappers:
+The rules of `VkDescriptorUpdateTemplateCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorUpdateTemplateCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-flags-zerobitmask`: dynamic (checks the reserved flags are 0)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-pDescriptorUpdateEntries-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength`: dynamic (checks the count is not 0)
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_DESCRIPTOR_SET`, `descriptorSetLayout` must be a valid `VkDescriptorSetLayout` handle
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00351` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_PUSH_DESCRIPTORS_KHR`, `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00352` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_PUSH_DESCRIPTORS_KHR`, `pipelineLayout` must be a valid `VkPipelineLayout` handle
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00353` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_PUSH_DESCRIPTORS_KHR`, `set` must be the unique set number in the pipeline layout that uses a descriptor set layout that was created with …
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-04615` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_DESCRIPTOR_SET`, `descriptorSetLayout` must not contain a binding with type `VK_DESCRIPTOR_TYPE_MUTABLE_EXT`
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-parameter` (*checked*): `templateType` must be a valid VkDescriptorUpdateTemplateType value
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength` (*checked*): `descriptorUpdateEntryCount` must be greater than `0`
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent` (*checked*): Both of `descriptorSetLayout`, and `pipelineLayout` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_UPDATE_TEMPLATE_CREATE_INFO`
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-pDescriptorUpdateEntries-parameter` (*by the types*): `pDescriptorUpdateEntries` must be a valid pointer to an array of `descriptorUpdateEntryCount` valid VkDescriptorUpdateTemplateEntry structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorUpdateTemplateCreateInfo<'a> {
@@ -355,11 +401,11 @@ impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupBindSparseInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupBindSparseInfo.html). Settled by the wrappers:
+The rules of `VkDeviceGroupBindSparseInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupBindSparseInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupBindSparseInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDeviceGroupBindSparseInfo-resourceDeviceIndex-01118` (*yours*; explicit rule): `resourceDeviceIndex` and `memoryDeviceIndex` must both be valid device indices
+- `VUID-VkDeviceGroupBindSparseInfo-memoryDeviceIndex-01119` (*yours*; explicit rule): Each memory allocation bound in this batch must have allocated an instance for `memoryDeviceIndex`
+- `VUID-VkDeviceGroupBindSparseInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_BIND_SPARSE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupBindSparseInfo<'a> {
@@ -386,12 +432,11 @@ unsafe impl<'a> Extends<BindSparseInfo<'a>> for DeviceGroupBindSparseInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupCommandBufferBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupCommandBufferBeginInfo.html). Settled by the wrappers:
+The rules of `VkDeviceGroupCommandBufferBeginInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupCommandBufferBeginInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkDeviceGroupCommandBufferBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00106` (*yours*; explicit rule): `deviceMask` must be a valid device mask value
+- `VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107` (*checked*): `deviceMask` must not be zero
+- `VUID-VkDeviceGroupCommandBufferBeginInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_COMMAND_BUFFER_BEGIN_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupCommandBufferBeginInfo<'a> {
@@ -413,13 +458,13 @@ for DeviceGroupCommandBufferBeginInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupDeviceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupDeviceCreateInfo.html). Settled by the wrappers:
+The rules of `VkDeviceGroupDeviceCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupDeviceCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375`: dynamic (checks a chained device group create info names each physical device once, the one the device is created from among them, all in one group that the instance enumerates)
-- `VUID-VkDeviceGroupDeviceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (checked by the safe methods in every build, but no test breaks it: lavapipe has one physical device, the only member of its only device group).*/
+- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376` (*yours*; checked by the safe methods in every build, but no test breaks it): All elements of `pPhysicalDevices` must be in the same device group as enumerated by vkEnumeratePhysicalDeviceGroups
+- `VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377` (*yours*; checked by the safe methods in every build, but no test breaks it): If `physicalDeviceCount` is not `0`, the `physicalDevice` parameter of vkCreateDevice must be an element of `pPhysicalDevices`
+- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375` (*checked*): Each element of `pPhysicalDevices` must be unique
+- `VUID-VkDeviceGroupDeviceCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_DEVICE_CREATE_INFO`
+- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-parameter` (*by the types*): If `physicalDeviceCount` is not `0`, `pPhysicalDevices` must be a valid pointer to an array of `physicalDeviceCount` valid VkPhysicalDevice handles*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupDeviceCreateInfo<'a> {
@@ -444,19 +489,18 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for DeviceGroupDeviceCreateInfo<'a
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupRenderPassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupRenderPassBeginInfo.html). Settled by the wrappers:
+The rules of `VkDeviceGroupRenderPassBeginInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupRenderPassBeginInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167`: dynamic (checks the chained struct's device mask against the device's physical devices, its render areas' count, and each area against the framebuffer's size and the device's limits)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168`: dynamic (checks each device render area against the device's limits (an area past them is past every framebuffer, and the 1.3.239 layer names only that rule: the error alone proves this one))
-- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169`: dynamic (checks each device render area against the device's limits (an area past them is past every framebuffer, and the 1.3.239 layer names only that rule: the error alone proves this one))
-- `VUID-VkDeviceGroupRenderPassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build, but no test breaks it: in a group of one physical device, the only valid masks are the initial mask).*/
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00907` (*yours*; checked by the safe methods in every build, but no test breaks it): `deviceMask` must be a subset of the command buffer&#8217;s initial device mask
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00905` (*checked*): `deviceMask` must be a valid device mask value
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906` (*checked*): `deviceMask` must not be zero
+- `VUID-VkDeviceGroupRenderPassBeginInfo-deviceRenderAreaCount-00908` (*checked*): `deviceRenderAreaCount` must either be zero or equal to the number of physical devices in the logical device
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06166` (*checked*): The `offset.x` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06167` (*checked*): The `offset.y` member of any element of `pDeviceRenderAreas` must be greater than or equal to 0
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06168` (*checked*): The sum of the `offset.x` and `extent.width` members of any element of `pDeviceRenderAreas` must be less than or equal to `maxFramebufferWidth`
+- `VUID-VkDeviceGroupRenderPassBeginInfo-offset-06169` (*checked*): The sum of the `offset.y` and `extent.height` members of any element of `pDeviceRenderAreas` must be less than or equal to `maxFramebufferHeight`
+- `VUID-VkDeviceGroupRenderPassBeginInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_RENDER_PASS_BEGIN_INFO`
+- `VUID-VkDeviceGroupRenderPassBeginInfo-pDeviceRenderAreas-parameter` (*by the types*): If `deviceRenderAreaCount` is not `0`, `pDeviceRenderAreas` must be a valid pointer to an array of `deviceRenderAreaCount` VkRect2D structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupRenderPassBeginInfo<'a> {
@@ -485,17 +529,17 @@ unsafe impl<'a> Extends<RenderingInfo<'a>> for DeviceGroupRenderPassBeginInfo<'a
 
 # Valid usage
 
-The rules are on [`VkDeviceGroupSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupSubmitInfo.html). Settled by the wrappers:
+The rules of `VkDeviceGroupSubmitInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceGroupSubmitInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082`: dynamic (checks the chained struct's count against the count of the struct it extends)
-- `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083`: dynamic (checks the chained struct's count against the count of the struct it extends)
-- `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084`: dynamic (checks the chained struct's count against the count of the struct it extends)
-- `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085`: dynamic (checks a chained device group info's device indices and masks against the device's physical-device count, recorded at its creation)
-- `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086`: dynamic (checks a chained device group info's device indices and masks against the device's physical-device count, recorded at its creation)
-- `VUID-VkDeviceGroupSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082` (*checked*): `waitSemaphoreCount` must equal VkSubmitInfo::`waitSemaphoreCount`
+- `VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083` (*checked*): `commandBufferCount` must equal VkSubmitInfo::`commandBufferCount`
+- `VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084` (*checked*): `signalSemaphoreCount` must equal VkSubmitInfo::`signalSemaphoreCount`
+- `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085` (*checked*): All elements of `pWaitSemaphoreDeviceIndices` and `pSignalSemaphoreDeviceIndices` must be valid device indices
+- `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086` (*checked*): All elements of `pCommandBufferDeviceMasks` must be valid device masks
+- `VUID-VkDeviceGroupSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_SUBMIT_INFO`
+- `VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-parameter` (*by the types*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphoreDeviceIndices` must be a valid pointer to an array of `waitSemaphoreCount` `uint32_t` values
+- `VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-parameter` (*by the types*): If `commandBufferCount` is not `0`, `pCommandBufferDeviceMasks` must be a valid pointer to an array of `commandBufferCount` `uint32_t` values
+- `VUID-VkDeviceGroupSubmitInfo-pSignalSemaphoreDeviceIndices-parameter` (*by the types*): If `signalSemaphoreCount` is not `0`, `pSignalSemaphoreDeviceIndices` must be a valid pointer to an array of `signalSemaphoreCount` `uint32_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupSubmitInfo<'a> {
@@ -531,14 +575,14 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for DeviceGroupSubmitInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDeviceQueueInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueInfo2.html). Settled by the wrappers:
+The rules of `VkDeviceQueueInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceQueueInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
-- `VUID-VkDeviceQueueInfo2-flags-06225`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
-- `VUID-VkDeviceQueueInfo2-queueIndex-01843`: dynamic (checks the family, flags and index against the queue create infos the device recorded at its creation)
-- `VUID-VkDeviceQueueInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceQueueInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceQueueInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842` (*checked*): `queueFamilyIndex` must be one of the queue family indices specified when `device` was created, via the VkDeviceQueueCreateInfo structure
+- `VUID-VkDeviceQueueInfo2-flags-06225` (*checked*): `flags` must be equal to VkDeviceQueueCreateInfo::`flags` for a VkDeviceQueueCreateInfo structure for the queue family indicated by `queueFamilyIndex` when `device` was created
+- `VUID-VkDeviceQueueInfo2-queueIndex-01843` (*checked*): `queueIndex` must be less than VkDeviceQueueCreateInfo::`queueCount` for the corresponding queue family and flags indicated by `queueFamilyIndex` and `flags` when `device` was created
+- `VUID-VkDeviceQueueInfo2-flags-parameter` (*checked*): `flags` must be a valid combination of VkDeviceQueueCreateFlagBits values
+- `VUID-VkDeviceQueueInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_QUEUE_INFO_2`
+- `VUID-VkDeviceQueueInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceQueueInfo2<'a> {
@@ -570,11 +614,11 @@ impl<'a> DeviceQueueInfo2<'a> {
 
 # Valid usage
 
-The rules are on [`VkExportFenceCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportFenceCreateInfo.html). Settled by the wrappers:
+The rules of `VkExportFenceCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportFenceCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportFenceCreateInfo-handleTypes-01446`: dynamic (checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone))
-- `VUID-VkExportFenceCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportFenceCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportFenceCreateInfo-handleTypes-01446` (*checked*): The bits in `handleTypes` must be supported and compatible, as reported by VkExternalFenceProperties
+- `VUID-VkExportFenceCreateInfo-handleTypes-parameter` (*checked*): `handleTypes` must be a valid combination of VkExternalFenceHandleTypeFlagBits values
+- `VUID-VkExportFenceCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_FENCE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportFenceCreateInfo<'a> {
@@ -595,11 +639,11 @@ unsafe impl<'a> Extends<FenceCreateInfo<'a>> for ExportFenceCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkExportMemoryAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryAllocateInfo.html). Settled by the wrappers:
+The rules of `VkExportMemoryAllocateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMemoryAllocateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMemoryAllocateInfo-handleTypes-00656`: dynamic (checks the exported handle types against the external memory properties the physical device reports for the dedicated image or buffer (exportable, compatible with each other); an export without a dedicated object is refused (`Error::Misuse`))
-- `VUID-VkExportMemoryAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportMemoryAllocateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportMemoryAllocateInfo-handleTypes-00656` (*checked*): The bits in `handleTypes` must be supported and compatible, as reported by VkExternalImageFormatProperties or VkExternalBufferProperties
+- `VUID-VkExportMemoryAllocateInfo-handleTypes-parameter` (*checked*): `handleTypes` must be a valid combination of VkExternalMemoryHandleTypeFlagBits values
+- `VUID-VkExportMemoryAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_MEMORY_ALLOCATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportMemoryAllocateInfo<'a> {
@@ -620,11 +664,11 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for ExportMemoryAllocateInfo<'a>
 
 # Valid usage
 
-The rules are on [`VkExportSemaphoreCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportSemaphoreCreateInfo.html). Settled by the wrappers:
+The rules of `VkExportSemaphoreCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportSemaphoreCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportSemaphoreCreateInfo-handleTypes-01124`: dynamic (checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone))
-- `VUID-VkExportSemaphoreCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExportSemaphoreCreateInfo-handleTypes-01124` (*checked*): The bits in `handleTypes` must be supported and compatible, as reported by VkExternalSemaphoreProperties
+- `VUID-VkExportSemaphoreCreateInfo-handleTypes-parameter` (*checked*): `handleTypes` must be a valid combination of VkExternalSemaphoreHandleTypeFlagBits values
+- `VUID-VkExportSemaphoreCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_SEMAPHORE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExportSemaphoreCreateInfo<'a> {
@@ -645,10 +689,10 @@ unsafe impl<'a> Extends<SemaphoreCreateInfo<'a>> for ExportSemaphoreCreateInfo<'
 
 # Valid usage
 
-The rules are on [`VkExternalBufferProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalBufferProperties.html). Settled by the wrappers:
+The rules of `VkExternalBufferProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalBufferProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalBufferProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalBufferProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkExternalBufferProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_BUFFER_PROPERTIES`
+- `VUID-VkExternalBufferProperties-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalBufferProperties<'a> {
@@ -660,10 +704,10 @@ safe_struct!(ExternalBufferProperties, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkExternalFenceProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalFenceProperties.html). Settled by the wrappers:
+The rules of `VkExternalFenceProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalFenceProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalFenceProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalFenceProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkExternalFenceProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_FENCE_PROPERTIES`
+- `VUID-VkExternalFenceProperties-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalFenceProperties<'a> {
@@ -675,9 +719,9 @@ safe_struct!(ExternalFenceProperties, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkExternalImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalImageFormatProperties.html). Settled by the wrappers:
+The rules of `VkExternalImageFormatProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalImageFormatProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalImageFormatProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkExternalImageFormatProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_IMAGE_FORMAT_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalImageFormatProperties<'a> {
@@ -691,10 +735,10 @@ for ExternalImageFormatProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkExternalMemoryBufferCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryBufferCreateInfo.html). Settled by the wrappers:
+The rules of `VkExternalMemoryBufferCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryBufferCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalMemoryBufferCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalMemoryBufferCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExternalMemoryBufferCreateInfo-handleTypes-parameter` (*checked*): `handleTypes` must be a valid combination of VkExternalMemoryHandleTypeFlagBits values
+- `VUID-VkExternalMemoryBufferCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_BUFFER_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalMemoryBufferCreateInfo<'a> {
@@ -715,10 +759,10 @@ unsafe impl<'a> Extends<BufferCreateInfo<'a>> for ExternalMemoryBufferCreateInfo
 
 # Valid usage
 
-The rules are on [`VkExternalMemoryImageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryImageCreateInfo.html). Settled by the wrappers:
+The rules of `VkExternalMemoryImageCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalMemoryImageCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalMemoryImageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalMemoryImageCreateInfo-handleTypes-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkExternalMemoryImageCreateInfo-handleTypes-parameter` (*checked*): `handleTypes` must be a valid combination of VkExternalMemoryHandleTypeFlagBits values
+- `VUID-VkExternalMemoryImageCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_MEMORY_IMAGE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalMemoryImageCreateInfo<'a> {
@@ -739,10 +783,10 @@ unsafe impl<'a> Extends<ImageCreateInfo<'a>> for ExternalMemoryImageCreateInfo<'
 
 # Valid usage
 
-The rules are on [`VkExternalSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalSemaphoreProperties.html). Settled by the wrappers:
+The rules of `VkExternalSemaphoreProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExternalSemaphoreProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExternalSemaphoreProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkExternalSemaphoreProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkExternalSemaphoreProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXTERNAL_SEMAPHORE_PROPERTIES`
+- `VUID-VkExternalSemaphoreProperties-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ExternalSemaphoreProperties<'a> {
@@ -754,11 +798,11 @@ safe_struct!(ExternalSemaphoreProperties, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFormatProperties2.html). Settled by the wrappers:
+The rules of `VkFormatProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFormatProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkFormatProperties2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkFormatProperties2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_2`
+- `VUID-VkFormatProperties2-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDrmFormatModifierPropertiesList2EXT, …*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FormatProperties2<'a> {
@@ -770,11 +814,11 @@ safe_struct!(FormatProperties2, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatProperties2.html). Settled by the wrappers:
+The rules of `VkImageFormatProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkImageFormatProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkImageFormatProperties2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkImageFormatProperties2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_FORMAT_PROPERTIES_2`
+- `VUID-VkImageFormatProperties2-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAndroidHardwareBufferUsageANDROID, …*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageFormatProperties2<'a> {
@@ -786,18 +830,18 @@ safe_struct!(ImageFormatProperties2, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkImageMemoryRequirementsInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryRequirementsInfo2.html). Settled by the wrappers:
+The rules of `VkImageMemoryRequirementsInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageMemoryRequirementsInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageMemoryRequirementsInfo2-image-01590`: dynamic (checks a chained plane info against the image's create flags and format, kept from its creation)
-- `VUID-VkImageMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkImageMemoryRequirementsInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkImageMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 2: checked by the safe methods in every build (the image's create flags are kept from its creation), but no test breaks it yet: lavapipe has no format that supports disjoint planes
-- 3: explicit rule; the wrappers do not check it*/
+- `VUID-VkImageMemoryRequirementsInfo2-image-01589` (*yours*; checked by the safe methods in every build): If `image` was created with a multi-planar format and the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, there must be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the …
+- `VUID-VkImageMemoryRequirementsInfo2-image-02279` (*yours*; explicit rule): If `image` was created with `VK_IMAGE_CREATE_DISJOINT_BIT` and with `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`, then there must be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of …
+- `VUID-VkImageMemoryRequirementsInfo2-image-02280` (*yours*; explicit rule): If `image` was created with a single-plane format and with any `tiling` other than `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`, then there must not be a VkImagePlaneMemoryRequirementsInfo included in …
+- `VUID-VkImageMemoryRequirementsInfo2-image-01591` (*yours*; checked by the safe methods in every build): If `image` was created with a single-plane format, there must not be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 structure
+- `VUID-VkImageMemoryRequirementsInfo2-image-01897` (*yours*; explicit rule): If `image` was created with the `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` external memory handle type, then `image` must be bound to memory
+- `VUID-VkImageMemoryRequirementsInfo2-image-01590` (*checked*): If `image` was not created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, there must not be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 …
+- `VUID-VkImageMemoryRequirementsInfo2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkImageMemoryRequirementsInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_MEMORY_REQUIREMENTS_INFO_2`
+- `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkImagePlaneMemoryRequirementsInfo
+- `VUID-VkImageMemoryRequirementsInfo2-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryRequirementsInfo2<'a> {
@@ -829,15 +873,12 @@ impl<'a> ImageMemoryRequirementsInfo2<'a> {
 
 # Valid usage
 
-The rules are on [`VkImagePlaneMemoryRequirementsInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImagePlaneMemoryRequirementsInfo.html). Settled by the wrappers:
+The rules of `VkImagePlaneMemoryRequirementsInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImagePlaneMemoryRequirementsInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImagePlaneMemoryRequirementsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build (the image's create flags are kept from its creation), but no test breaks it yet: lavapipe has no format that supports disjoint planes
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281` (*yours*; checked by the safe methods in every build): If the image&#8217;s `tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image …
+- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02282` (*yours*; explicit rule): If the image&#8217;s `tiling` is `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`, then `planeAspect` must be a single valid memory plane for the image (that is, `aspectMask` must specify a plane index that …
+- `VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-parameter` (*checked*): `planeAspect` must be a valid VkImageAspectFlagBits value
+- `VUID-VkImagePlaneMemoryRequirementsInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_PLANE_MEMORY_REQUIREMENTS_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImagePlaneMemoryRequirementsInfo<'a> {
@@ -859,11 +900,11 @@ for ImagePlaneMemoryRequirementsInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageSparseMemoryRequirementsInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSparseMemoryRequirementsInfo2.html). Settled by the wrappers:
+The rules of `VkImageSparseMemoryRequirementsInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSparseMemoryRequirementsInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageSparseMemoryRequirementsInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageSparseMemoryRequirementsInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkImageSparseMemoryRequirementsInfo2-image-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkImageSparseMemoryRequirementsInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_SPARSE_MEMORY_REQUIREMENTS_INFO_2`
+- `VUID-VkImageSparseMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkImageSparseMemoryRequirementsInfo2-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageSparseMemoryRequirementsInfo2<'a> {
@@ -895,11 +936,11 @@ impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
 
 # Valid usage
 
-The rules are on [`VkImageViewUsageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewUsageCreateInfo.html). Settled by the wrappers:
+The rules of `VkImageViewUsageCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewUsageCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageViewUsageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageViewUsageCreateInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageViewUsageCreateInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)*/
+- `VUID-VkImageViewUsageCreateInfo-usage-parameter` (*checked*): `usage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-VkImageViewUsageCreateInfo-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-VkImageViewUsageCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_USAGE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewUsageCreateInfo<'a> {
@@ -920,12 +961,12 @@ unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for ImageViewUsageCreateInfo<'a
 
 # Valid usage
 
-The rules are on [`VkMemoryAllocateFlagsInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryAllocateFlagsInfo.html). Settled by the wrappers:
+The rules of `VkMemoryAllocateFlagsInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryAllocateFlagsInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675`: dynamic (checks the mask is not zero and names only the physical devices the device was created with (a chained device group create info's count, recorded at creation))
-- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676`: dynamic (checks the mask is not zero and names only the physical devices the device was created with (a chained device group create info's count, recorded at creation))
-- `VUID-VkMemoryAllocateFlagsInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryAllocateFlagsInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675` (*checked*): If `VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT` is set, `deviceMask` must be a valid device mask
+- `VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676` (*checked*): If `VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT` is set, `deviceMask` must not be zero
+- `VUID-VkMemoryAllocateFlagsInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkMemoryAllocateFlagBits values
+- `VUID-VkMemoryAllocateFlagsInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryAllocateFlagsInfo<'a> {
@@ -952,21 +993,26 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryAllocateFlagsInfo<'a> 
 
 # Valid usage
 
-The rules are on [`VkMemoryDedicatedAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryDedicatedAllocateInfo.html). Settled by the wrappers:
+The rules of `VkMemoryDedicatedAllocateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryDedicatedAllocateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01432`: dynamic (checks the dedicated image or buffer against its recorded creation flags (not sparse, not disjoint), one of the two named, and the allocation size against its memory requirements)
-- `VUID-VkMemoryDedicatedAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkMemoryDedicatedAllocateInfo-commonparent`: dynamic (checks each handle was created from the device (or instance) the command is called on, so they share it)
-- `VUID-VkMemoryDedicatedAllocateInfo-image-01433`: dynamic (checks the dedicated image or buffer against its recorded creation flags (not sparse, not disjoint), one of the two named, and the allocation size against its memory requirements)
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01435`: dynamic (checks the dedicated image or buffer against its recorded creation flags (not sparse, not disjoint), one of the two named, and the allocation size against its memory requirements)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 11.
-
-- 1: checked by the safe methods in every build (the image's recorded creation flags), but no test breaks it: the tests make no disjoint image
-- 2: checked by the safe methods in every build (the object's recorded creation flags), but no test breaks it: lavapipe 22.3 has no sparseBinding, so no sparse object can be named
-- 8: explicit rule; the wrappers do not check it*/
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01434` (*yours*; checked by the safe methods in every build): If `image` is not VK_NULL_HANDLE, `image` must have been created without `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` set in VkImageCreateInfo::`flags`
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01436` (*yours*; checked by the safe methods in every build): If `buffer` is not VK_NULL_HANDLE, `buffer` must have been created without `VK_BUFFER_CREATE_SPARSE_BINDING_BIT` set in VkBufferCreateInfo::`flags`
+- `VUID-VkMemoryDedicatedAllocateInfo-image-02964` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE and the memory is not an imported Android Hardware Buffer, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the image
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-02965` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE and the memory is not an imported Android Hardware Buffer, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the buffer
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01876` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_WIN32_BIT`, …
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01877` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_WIN32_BIT`, …
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01878` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT`, the memory being imported must also be a …
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01879` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT`, the memory being imported must also be a …
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01797` (*yours*; checked by the safe methods in every build): If `image` is not VK_NULL_HANDLE, `image` must not have been created with `VK_IMAGE_CREATE_DISJOINT_BIT` set in VkImageCreateInfo::`flags`
+- `VUID-VkMemoryDedicatedAllocateInfo-image-04751` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`, the memory being imported must …
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-04752` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`, the memory being imported must …
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01432` (*checked*): At least one of `image` and `buffer` must be VK_NULL_HANDLE
+- `VUID-VkMemoryDedicatedAllocateInfo-commonparent` (*checked*): Both of `buffer`, and `image` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkMemoryDedicatedAllocateInfo-image-01433` (*checked*): If `image` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the image
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-01435` (*checked*): If `buffer` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the buffer
+- `VUID-VkMemoryDedicatedAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_DEDICATED_ALLOCATE_INFO`
+- `VUID-VkMemoryDedicatedAllocateInfo-image-parameter` (*by the types*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-parameter` (*by the types*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryDedicatedAllocateInfo<'a> {
@@ -993,9 +1039,9 @@ unsafe impl<'a> Extends<MemoryAllocateInfo<'a>> for MemoryDedicatedAllocateInfo<
 
 # Valid usage
 
-The rules are on [`VkMemoryDedicatedRequirements`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryDedicatedRequirements.html). Settled by the wrappers:
+The rules of `VkMemoryDedicatedRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryDedicatedRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryDedicatedRequirements-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkMemoryDedicatedRequirements-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_DEDICATED_REQUIREMENTS`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryDedicatedRequirements<'a> {
@@ -1008,11 +1054,11 @@ unsafe impl<'a> Extends<MemoryRequirements2<'a>> for MemoryDedicatedRequirements
 
 # Valid usage
 
-The rules are on [`VkMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryRequirements2.html). Settled by the wrappers:
+The rules of `VkMemoryRequirements2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryRequirements2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryRequirements2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkMemoryRequirements2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkMemoryRequirements2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkMemoryRequirements2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkMemoryRequirements2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2`
+- `VUID-VkMemoryRequirements2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkMemoryDedicatedRequirements*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryRequirements2<'a> {
@@ -1024,9 +1070,9 @@ safe_struct!(MemoryRequirements2, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevice16BitStorageFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevice16BitStorageFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDevice16BitStorageFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevice16BitStorageFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevice16BitStorageFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevice16BitStorageFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_16BIT_STORAGE_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDevice16BitStorageFeatures<'a> {
@@ -1068,14 +1114,14 @@ for PhysicalDevice16BitStorageFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceExternalBufferInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalBufferInfo.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceExternalBufferInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalBufferInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceExternalBufferInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkPhysicalDeviceExternalBufferInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceExternalBufferInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkBufferCreateFlagBits values
+- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-parameter` (*checked*): `usage` must be a valid combination of VkBufferUsageFlagBits values
+- `VUID-VkPhysicalDeviceExternalBufferInfo-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-VkPhysicalDeviceExternalBufferInfo-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkPhysicalDeviceExternalBufferInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_BUFFER_INFO`
+- `VUID-VkPhysicalDeviceExternalBufferInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalBufferInfo<'a> {
@@ -1107,11 +1153,11 @@ impl<'a> PhysicalDeviceExternalBufferInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceExternalFenceInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalFenceInfo.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceExternalFenceInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalFenceInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceExternalFenceInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceExternalFenceInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceExternalFenceInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceExternalFenceInfo-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalFenceHandleTypeFlagBits value
+- `VUID-VkPhysicalDeviceExternalFenceInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_FENCE_INFO`
+- `VUID-VkPhysicalDeviceExternalFenceInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalFenceInfo<'a> {
@@ -1131,10 +1177,10 @@ impl<'a> PhysicalDeviceExternalFenceInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceExternalImageFormatInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalImageFormatInfo.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceExternalImageFormatInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalImageFormatInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceExternalImageFormatInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceExternalImageFormatInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceExternalImageFormatInfo-handleType-parameter` (*checked*): If `handleType` is not `0`, `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
+- `VUID-VkPhysicalDeviceExternalImageFormatInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_IMAGE_FORMAT_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalImageFormatInfo<'a> {
@@ -1156,12 +1202,12 @@ for PhysicalDeviceExternalImageFormatInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceExternalSemaphoreInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalSemaphoreInfo.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceExternalSemaphoreInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceExternalSemaphoreInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-handleType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
+- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_SEMAPHORE_INFO`
+- `VUID-VkPhysicalDeviceExternalSemaphoreInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkSemaphoreTypeCreateInfo*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceExternalSemaphoreInfo<'a> {
@@ -1181,9 +1227,9 @@ impl<'a> PhysicalDeviceExternalSemaphoreInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFeatures2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFeatures2.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFeatures2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFeatures2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFeatures2-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFeatures2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceFeatures2<'a> {
@@ -1204,10 +1250,10 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceFeatures2<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceGroupProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGroupProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceGroupProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceGroupProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceGroupProperties-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceGroupProperties-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkPhysicalDeviceGroupProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_GROUP_PROPERTIES`
+- `VUID-VkPhysicalDeviceGroupProperties-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceGroupProperties<'a> {
@@ -1219,9 +1265,9 @@ safe_struct!(PhysicalDeviceGroupProperties, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceIDProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceIDProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceIDProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceIDProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceIDProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceIDProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceIDProperties<'a> {
@@ -1235,19 +1281,19 @@ for PhysicalDeviceIDProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImageFormatInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageFormatInfo2.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImageFormatInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImageFormatInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImageFormatInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkPhysicalDeviceImageFormatInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkPhysicalDeviceImageFormatInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-02249` (*yours*; explicit rule): `tiling` must be `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT` if and only if the `pNext` chain includes VkPhysicalDeviceImageDrmFormatModifierInfoEXT
+- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-02313` (*yours*; explicit rule): If `tiling` is `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT` and `flags` contains `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT`, then the `pNext` chain must include a VkImageFormatListCreateInfo structure with …
+- `VUID-VkPhysicalDeviceImageFormatInfo2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPhysicalDeviceImageFormatInfo2-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-VkPhysicalDeviceImageFormatInfo2-type-parameter` (*checked*): `type` must be a valid VkImageType value
+- `VUID-VkPhysicalDeviceImageFormatInfo2-tiling-parameter` (*checked*): `tiling` must be a valid VkImageTiling value
+- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-parameter` (*checked*): `usage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-VkPhysicalDeviceImageFormatInfo2-flags-parameter` (*checked*): `flags` must be a valid combination of VkImageCreateFlagBits values
+- `VUID-VkPhysicalDeviceImageFormatInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGE_FORMAT_INFO_2`
+- `VUID-VkPhysicalDeviceImageFormatInfo2-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkImageCompressionControlEXT, VkImageFormatListCreateInfo, …*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceImageFormatInfo2<'a> {
@@ -1291,9 +1337,9 @@ impl<'a> PhysicalDeviceImageFormatInfo2<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMaintenance3Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMaintenance3Properties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMaintenance3Properties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMaintenance3Properties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMaintenance3Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceMaintenance3Properties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceMaintenance3Properties<'a> {
@@ -1307,11 +1353,11 @@ for PhysicalDeviceMaintenance3Properties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMemoryProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMemoryProperties2.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMemoryProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMemoryProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMemoryProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceMemoryProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkPhysicalDeviceMemoryProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkPhysicalDeviceMemoryProperties2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPhysicalDeviceMemoryProperties2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2`
+- `VUID-VkPhysicalDeviceMemoryProperties2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkPhysicalDeviceMemoryBudgetPropertiesEXT*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceMemoryProperties2<'a> {
@@ -1323,11 +1369,11 @@ safe_struct!(PhysicalDeviceMemoryProperties2, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMultiviewFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMultiviewFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
-- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
-- `VUID-VkPhysicalDeviceMultiviewFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580` (*checked*): If `multiviewGeometryShader` is enabled then `multiview` must also be enabled
+- `VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581` (*checked*): If `multiviewTessellationShader` is enabled then `multiview` must also be enabled
+- `VUID-VkPhysicalDeviceMultiviewFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceMultiviewFeatures<'a> {
@@ -1362,9 +1408,9 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceMultiviewFeature
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceMultiviewProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceMultiviewProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceMultiviewProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceMultiviewProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceMultiviewProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceMultiviewProperties<'a> {
@@ -1378,9 +1424,9 @@ for PhysicalDeviceMultiviewProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevicePointClippingProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePointClippingProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDevicePointClippingProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevicePointClippingProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevicePointClippingProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevicePointClippingProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_POINT_CLIPPING_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDevicePointClippingProperties<'a> {
@@ -1394,11 +1440,11 @@ for PhysicalDevicePointClippingProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProperties2.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkPhysicalDeviceProperties2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkPhysicalDeviceProperties2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPhysicalDeviceProperties2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2`
+- `VUID-VkPhysicalDeviceProperties2-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkPhysicalDeviceAccelerationStructurePropertiesKHR, …*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceProperties2<'a> {
@@ -1410,9 +1456,9 @@ safe_struct!(PhysicalDeviceProperties2, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceProtectedMemoryFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProtectedMemoryFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceProtectedMemoryFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProtectedMemoryFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceProtectedMemoryFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceProtectedMemoryFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROTECTED_MEMORY_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceProtectedMemoryFeatures<'a> {
@@ -1436,9 +1482,9 @@ for PhysicalDeviceProtectedMemoryFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceProtectedMemoryProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProtectedMemoryProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceProtectedMemoryProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceProtectedMemoryProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceProtectedMemoryProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceProtectedMemoryProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROTECTED_MEMORY_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceProtectedMemoryProperties<'a> {
@@ -1452,9 +1498,9 @@ for PhysicalDeviceProtectedMemoryProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSamplerYcbcrConversionFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSamplerYcbcrConversionFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSamplerYcbcrConversionFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSamplerYcbcrConversionFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSamplerYcbcrConversionFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSamplerYcbcrConversionFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SAMPLER_YCBCR_CONVERSION_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {
@@ -1478,9 +1524,9 @@ for PhysicalDeviceSamplerYcbcrConversionFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShaderDrawParametersFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderDrawParametersFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShaderDrawParametersFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderDrawParametersFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShaderDrawParametersFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShaderDrawParametersFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_DRAW_PARAMETERS_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceShaderDrawParametersFeatures<'a> {
@@ -1504,17 +1550,17 @@ for PhysicalDeviceShaderDrawParametersFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSparseImageFormatInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSparseImageFormatInfo2.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSparseImageFormatInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSparseImageFormatInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095`: dynamic (checks the sample count against the format's sample counts for the type, usage and tiling, queried from the physical device (the 1.3.239 layer does not check it: proven by the error alone))
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-type-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-tiling-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-01095` (*checked*): `samples` must be a bit value that is set in `VkImageFormatProperties::sampleCounts` returned by `vkGetPhysicalDeviceImageFormatProperties` with `format`, `type`, `tiling`, and `usage` equal to those …
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-type-parameter` (*checked*): `type` must be a valid VkImageType value
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-samples-parameter` (*checked*): `samples` must be a valid VkSampleCountFlagBits value
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-parameter` (*checked*): `usage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-tiling-parameter` (*checked*): `tiling` must be a valid VkImageTiling value
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SPARSE_IMAGE_FORMAT_INFO_2`
+- `VUID-VkPhysicalDeviceSparseImageFormatInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSparseImageFormatInfo2<'a> {
@@ -1558,9 +1604,9 @@ impl<'a> PhysicalDeviceSparseImageFormatInfo2<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSubgroupProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubgroupProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSubgroupProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSubgroupProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSubgroupProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSubgroupProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSubgroupProperties<'a> {
@@ -1574,10 +1620,10 @@ for PhysicalDeviceSubgroupProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVariablePointersFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVariablePointersFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVariablePointersFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVariablePointersFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431`: dynamic (checks the queue create infos against the physical device's queue families (index, count, protected capability), the priorities' range, each family named once, and the chain's feature structs against each other (features that come in pairs included) and against pEnabledFeatures)
-- `VUID-VkPhysicalDeviceVariablePointersFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431` (*checked*): If `variablePointers` is enabled then `variablePointersStorageBuffer` must also be enabled
+- `VUID-VkPhysicalDeviceVariablePointersFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VARIABLE_POINTERS_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVariablePointersFeatures<'a> {
@@ -1607,10 +1653,10 @@ for PhysicalDeviceVariablePointersFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPipelineTessellationDomainOriginStateCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineTessellationDomainOriginStateCreateInfo.html). Settled by the wrappers:
+The rules of `VkPipelineTessellationDomainOriginStateCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineTessellationDomainOriginStateCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-domainOrigin-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-domainOrigin-parameter` (*checked*): `domainOrigin` must be a valid VkTessellationDomainOrigin value
+- `VUID-VkPipelineTessellationDomainOriginStateCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_DOMAIN_ORIGIN_STATE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PipelineTessellationDomainOriginStateCreateInfo<'a> {
@@ -1632,9 +1678,9 @@ for PipelineTessellationDomainOriginStateCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkProtectedSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkProtectedSubmitInfo.html). Settled by the wrappers:
+The rules of `VkProtectedSubmitInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkProtectedSubmitInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkProtectedSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkProtectedSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PROTECTED_SUBMIT_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ProtectedSubmitInfo<'a> {
@@ -1655,11 +1701,11 @@ unsafe impl<'a> Extends<SubmitInfo<'a>> for ProtectedSubmitInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkQueueFamilyProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyProperties2.html). Settled by the wrappers:
+The rules of `VkQueueFamilyProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueueFamilyProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkQueueFamilyProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkQueueFamilyProperties2-sType-unique`: static (the wrappers create it themselves, with an empty `pNext` chain)*/
+- `VUID-VkQueueFamilyProperties2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_PROPERTIES_2`
+- `VUID-VkQueueFamilyProperties2-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkQueueFamilyCheckpointProperties2NV, …
+- `VUID-VkQueueFamilyProperties2-sType-unique` (*by the types*): The `sType` value of each struct in the `pNext` chain must be unique*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct QueueFamilyProperties2<'a> {
@@ -1671,11 +1717,11 @@ safe_struct!(QueueFamilyProperties2, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkRenderPassInputAttachmentAspectCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassInputAttachmentAspectCreateInfo.html). Settled by the wrappers:
+The rules of `VkRenderPassInputAttachmentAspectCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassInputAttachmentAspectCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-pAspectReferences-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-aspectReferenceCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-aspectReferenceCount-arraylength` (*checked*): `aspectReferenceCount` must be greater than `0`
+- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_INPUT_ATTACHMENT_ASPECT_CREATE_INFO`
+- `VUID-VkRenderPassInputAttachmentAspectCreateInfo-pAspectReferences-parameter` (*by the types*): `pAspectReferences` must be a valid pointer to an array of `aspectReferenceCount` valid VkInputAttachmentAspectReference structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassInputAttachmentAspectCreateInfo<'a> {
@@ -1701,15 +1747,15 @@ for RenderPassInputAttachmentAspectCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRenderPassMultiviewCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassMultiviewCreateInfo.html). Settled by the wrappers:
+The rules of `VkRenderPassMultiviewCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassMultiviewCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
-- `VUID-VkRenderPassMultiviewCreateInfo-multiview-06555`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
-- `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697`: dynamic (checks a chained VkRenderPassMultiviewCreateInfo's view masks against the multiview feature and maxMultiviewViewCount, its correlation masks against each other, its view offsets against the dependencies, and multi-view self-dependencies against VIEW_LOCAL)
-- `VUID-VkRenderPassMultiviewCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassMultiviewCreateInfo-pViewOffsets-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841` (*checked*): Each view index must not be set in more than one element of `pCorrelationMasks`
+- `VUID-VkRenderPassMultiviewCreateInfo-multiview-06555` (*checked*): If the `multiview` feature is not enabled, each element of `pViewMasks` must be `0`
+- `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697` (*checked*): The index of the most significant bit in each element of `pViewMasks` must be less than `maxMultiviewViewCount`
+- `VUID-VkRenderPassMultiviewCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO`
+- `VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-parameter` (*by the types*): If `subpassCount` is not `0`, `pViewMasks` must be a valid pointer to an array of `subpassCount` `uint32_t` values
+- `VUID-VkRenderPassMultiviewCreateInfo-pViewOffsets-parameter` (*by the types*): If `dependencyCount` is not `0`, `pViewOffsets` must be a valid pointer to an array of `dependencyCount` `int32_t` values
+- `VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-parameter` (*by the types*): If `correlationMaskCount` is not `0`, `pCorrelationMasks` must be a valid pointer to an array of `correlationMaskCount` `uint32_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassMultiviewCreateInfo<'a> {
@@ -1745,20 +1791,33 @@ unsafe impl<'a> Extends<RenderPassCreateInfo<'a>> for RenderPassMultiviewCreateI
 
 # Valid usage
 
-The rules are on [`VkSamplerYcbcrConversionCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionCreateInfo.html). Settled by the wrappers:
+The rules of `VkSamplerYcbcrConversionCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerYcbcrConversionCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-parameter`: dynamic (checks the struct's own rules)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-yChromaOffset-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 15 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-04060` (*yours*; explicit rule): `format` must represent unsigned normalized values (i.e. the format must be a `UNORM` format)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-01904` (*yours*; explicit rule): If an external format conversion is being created, `format` must be `VK_FORMAT_UNDEFINED`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-04061` (*yours*; explicit rule): If an external format conversion is not being created, `format` must represent unsigned normalized values (i.e. the format must be a `UNORM` format)
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-01650` (*yours*; explicit rule): The potential format features of the sampler {YCbCr} conversion must support `VK_FORMAT_FEATURE_MIDPOINT_CHROMA_SAMPLES_BIT` or `VK_FORMAT_FEATURE_COSITED_CHROMA_SAMPLES_BIT`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01651` (*yours*; explicit rule): If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_COSITED_CHROMA_SAMPLES_BIT`, `xChromaOffset` and `yChromaOffset` must not be …
+- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01652` (*yours*; explicit rule): If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_MIDPOINT_CHROMA_SAMPLES_BIT`, `xChromaOffset` and `yChromaOffset` must not be …
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02581` (*yours*; explicit rule): If the format has a `_422` or `_420` suffix, then `components.g` must be the identity swizzle
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02582` (*yours*; explicit rule): If the format has a `_422` or `_420` suffix, then `components.a` must be the identity swizzle, `VK_COMPONENT_SWIZZLE_ONE`, or `VK_COMPONENT_SWIZZLE_ZERO`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02583` (*yours*; explicit rule): If the format has a `_422` or `_420` suffix, then `components.r` must be the identity swizzle or `VK_COMPONENT_SWIZZLE_B`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02584` (*yours*; explicit rule): If the format has a `_422` or `_420` suffix, then `components.b` must be the identity swizzle or `VK_COMPONENT_SWIZZLE_R`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02585` (*yours*; explicit rule): If the format has a `_422` or `_420` suffix, and if either `components.r` or `components.b` is the identity swizzle, both values must be the identity swizzle
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-01655` (*yours*; explicit rule): If `ycbcrModel` is not `VK_SAMPLER_YCBCR_MODEL_CONVERSION_RGB_IDENTITY`, then `components.r`, `components.g`, and `components.b` must correspond to components of the `format`; that is, `components.r`, …
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-02748` (*yours*; explicit rule): If `ycbcrRange` is `VK_SAMPLER_YCBCR_RANGE_ITU_NARROW` then the R, G and B components obtained by applying the `component` swizzle to `format` must each have a bit-depth greater than or equal to 8
+- `VUID-VkSamplerYcbcrConversionCreateInfo-forceExplicitReconstruction-01656` (*yours*; explicit rule): If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_CHROMA_RECONSTRUCTION_EXPLICIT_FORCEABLE_BIT` …
+- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657` (*yours*; explicit rule): If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_LINEAR_FILTER_BIT`, `chromaFilter` must not be `VK_FILTER_LINEAR`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSamplerYcbcrConversionCreateInfo-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-parameter` (*checked*): `ycbcrModel` must be a valid VkSamplerYcbcrModelConversion value
+- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-parameter` (*checked*): `ycbcrRange` must be a valid VkSamplerYcbcrRange value
+- `VUID-VkSamplerYcbcrConversionCreateInfo-components-parameter` (*checked*): `components` must be a valid VkComponentMapping structure
+- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-parameter` (*checked*): `xChromaOffset` must be a valid VkChromaLocation value
+- `VUID-VkSamplerYcbcrConversionCreateInfo-yChromaOffset-parameter` (*checked*): `yChromaOffset` must be a valid VkChromaLocation value
+- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-parameter` (*checked*): `chromaFilter` must be a valid VkFilter value
+- `VUID-VkSamplerYcbcrConversionCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_YCBCR_CONVERSION_CREATE_INFO`
+- `VUID-VkSamplerYcbcrConversionCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkExternalFormatANDROID*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerYcbcrConversionCreateInfo<'a> {
@@ -1820,9 +1879,9 @@ impl<'a> SamplerYcbcrConversionCreateInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkSamplerYcbcrConversionImageFormatProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionImageFormatProperties.html). Settled by the wrappers:
+The rules of `VkSamplerYcbcrConversionImageFormatProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionImageFormatProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerYcbcrConversionImageFormatProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkSamplerYcbcrConversionImageFormatProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_YCBCR_CONVERSION_IMAGE_FORMAT_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerYcbcrConversionImageFormatProperties<'a> {
@@ -1836,10 +1895,10 @@ for SamplerYcbcrConversionImageFormatProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSamplerYcbcrConversionInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionInfo.html). Settled by the wrappers:
+The rules of `VkSamplerYcbcrConversionInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerYcbcrConversionInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerYcbcrConversionInfo-conversion-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkSamplerYcbcrConversionInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_YCBCR_CONVERSION_INFO`
+- `VUID-VkSamplerYcbcrConversionInfo-conversion-parameter` (*by the types*): `conversion` must be a valid VkSamplerYcbcrConversion handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerYcbcrConversionInfo<'a> {
@@ -1873,10 +1932,10 @@ unsafe impl<'a> Extends<ImageViewCreateInfo<'a>> for SamplerYcbcrConversionInfo<
 
 # Valid usage
 
-The rules are on [`VkSparseImageFormatProperties2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageFormatProperties2.html). Settled by the wrappers:
+The rules of `VkSparseImageFormatProperties2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageFormatProperties2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSparseImageFormatProperties2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSparseImageFormatProperties2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkSparseImageFormatProperties2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SPARSE_IMAGE_FORMAT_PROPERTIES_2`
+- `VUID-VkSparseImageFormatProperties2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageFormatProperties2<'a> {
@@ -1888,10 +1947,10 @@ safe_struct!(SparseImageFormatProperties2, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkSparseImageMemoryRequirements2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageMemoryRequirements2.html). Settled by the wrappers:
+The rules of `VkSparseImageMemoryRequirements2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageMemoryRequirements2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSparseImageMemoryRequirements2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSparseImageMemoryRequirements2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkSparseImageMemoryRequirements2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SPARSE_IMAGE_MEMORY_REQUIREMENTS_2`
+- `VUID-VkSparseImageMemoryRequirements2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryRequirements2<'a> {

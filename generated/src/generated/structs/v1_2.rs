@@ -6,38 +6,48 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkAttachmentDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescription2.html). Settled by the wrappers:
+The rules of `VkAttachmentDescription2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescription2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAttachmentDescription2-format-06699`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-finalLayout-00843`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03280`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03281`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03282`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03283`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkAttachmentDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkAttachmentDescription2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-format-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-samples-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-loadOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-storeOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-stencilLoadOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-stencilStoreOp-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-initialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-finalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescription2-format-06487`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-06488`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03286`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03287`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03290`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-format-03291`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-synchronization2-06908`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescription2-synchronization2-06909`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-
-Left to the caller (listed one by one in the crate's `validation.json`): 12 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkAttachmentDescription2-format-06698` (*yours*; explicit rule): `format` must not be VK_FORMAT_UNDEFINED
+- `VUID-VkAttachmentDescription2-format-06906` (*yours*; explicit rule): If `format` is a depth/stencil format which includes both depth and stencil aspects, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or …
+- `VUID-VkAttachmentDescription2-format-06907` (*yours*; explicit rule): If `format` is a depth/stencil format which includes both depth and stencil aspects, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or …
+- `VUID-VkAttachmentDescription2-pNext-06704` (*yours*; explicit rule): If the `pNext` chain does not include a VkAttachmentDescriptionStencilLayout structure, `format` includes a stencil aspect, and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` …
+- `VUID-VkAttachmentDescription2-pNext-06705` (*yours*; explicit rule): If the `pNext` chain does includes a VkAttachmentDescriptionStencilLayout structure, `format` includes a stencil aspect, and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then …
+- `VUID-VkAttachmentDescription2-format-06249` (*yours*; explicit rule): If `format` is a depth/stencil format which includes both depth and stencil aspects, and `initialLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, the …
+- `VUID-VkAttachmentDescription2-format-06250` (*yours*; explicit rule): If `format` is a depth/stencil format which includes both depth and stencil aspects, and `finalLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, the …
+- `VUID-VkAttachmentDescription2-format-06247` (*yours*; explicit rule): If the `pNext` chain does not include a VkAttachmentDescriptionStencilLayout structure and `format` only includes a stencil aspect, `initialLayout` must not be …
+- `VUID-VkAttachmentDescription2-format-06248` (*yours*; explicit rule): If the `pNext` chain does not include a VkAttachmentDescriptionStencilLayout structure and `format` only includes a stencil aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` …
+- `VUID-VkAttachmentDescription2-attachmentFeedbackLoopLayout-07309` (*yours*; explicit rule): If the `attachmentFeedbackLoopLayout` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_FEEDBACK_LOOP_OPTIMAL_EXT`
+- `VUID-VkAttachmentDescription2-attachmentFeedbackLoopLayout-07310` (*yours*; explicit rule): If the `attachmentFeedbackLoopLayout` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_FEEDBACK_LOOP_OPTIMAL_EXT`
+- `VUID-VkAttachmentDescription2-format-06703` (*yours*; explicit rule): If `format` includes a stencil aspect and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`
+- `VUID-VkAttachmentDescription2-format-06699` (*checked*): If `format` includes a color or depth aspect and `loadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`
+- `VUID-VkAttachmentDescription2-finalLayout-00843` (*checked*): `finalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkAttachmentDescription2-format-03280` (*checked*): If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription2-format-03281` (*checked*): If `format` is a depth/stencil format, `initialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
+- `VUID-VkAttachmentDescription2-format-03282` (*checked*): If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription2-format-03283` (*checked*): If `format` is a depth/stencil format, `finalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
+- `VUID-VkAttachmentDescription2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkAttachmentDescription2-flags-parameter` (*checked*): `flags` must be a valid combination of VkAttachmentDescriptionFlagBits values
+- `VUID-VkAttachmentDescription2-format-parameter` (*checked*): `format` must be a valid VkFormat value
+- `VUID-VkAttachmentDescription2-samples-parameter` (*checked*): `samples` must be a valid VkSampleCountFlagBits value
+- `VUID-VkAttachmentDescription2-loadOp-parameter` (*checked*): `loadOp` must be a valid VkAttachmentLoadOp value
+- `VUID-VkAttachmentDescription2-storeOp-parameter` (*checked*): `storeOp` must be a valid VkAttachmentStoreOp value
+- `VUID-VkAttachmentDescription2-stencilLoadOp-parameter` (*checked*): `stencilLoadOp` must be a valid VkAttachmentLoadOp value
+- `VUID-VkAttachmentDescription2-stencilStoreOp-parameter` (*checked*): `stencilStoreOp` must be a valid VkAttachmentStoreOp value
+- `VUID-VkAttachmentDescription2-initialLayout-parameter` (*checked*): `initialLayout` must be a valid VkImageLayout value
+- `VUID-VkAttachmentDescription2-finalLayout-parameter` (*checked*): `finalLayout` must be a valid VkImageLayout value
+- `VUID-VkAttachmentDescription2-format-06487` (*checked*): If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
+- `VUID-VkAttachmentDescription2-format-06488` (*checked*): If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
+- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284` (*checked*): If the `separateDepthStencilLayouts` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, …
+- `VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285` (*checked*): If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, …
+- `VUID-VkAttachmentDescription2-format-03286` (*checked*): If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or …
+- `VUID-VkAttachmentDescription2-format-03287` (*checked*): If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or …
+- `VUID-VkAttachmentDescription2-format-03290` (*checked*): If `format` is a depth/stencil format which includes only the depth aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription2-format-03291` (*checked*): If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
+- `VUID-VkAttachmentDescription2-synchronization2-06908` (*checked*): If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR`
+- `VUID-VkAttachmentDescription2-synchronization2-06909` (*checked*): If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR`
+- `VUID-VkAttachmentDescription2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ATTACHMENT_DESCRIPTION_2`
+- `VUID-VkAttachmentDescription2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkAttachmentDescriptionStencilLayout*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescription2<'a> {
@@ -105,14 +115,14 @@ impl<'a> AttachmentDescription2<'a> {
 
 # Valid usage
 
-The rules are on [`VkAttachmentDescriptionStencilLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescriptionStencilLayout.html). Settled by the wrappers:
+The rules of `VkAttachmentDescriptionStencilLayout` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentDescriptionStencilLayout.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentDescriptionStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308` (*checked*): `stencilInitialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, …
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309` (*checked*): `stencilFinalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, …
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310` (*checked*): `stencilFinalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-parameter` (*checked*): `stencilInitialLayout` must be a valid VkImageLayout value
+- `VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter` (*checked*): `stencilFinalLayout` must be a valid VkImageLayout value
+- `VUID-VkAttachmentDescriptionStencilLayout-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ATTACHMENT_DESCRIPTION_STENCIL_LAYOUT`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentDescriptionStencilLayout<'a> {
@@ -140,19 +150,16 @@ for AttachmentDescriptionStencilLayout<'a> {}
 
 # Valid usage
 
-The rules are on [`VkAttachmentReference2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReference2.html). Settled by the wrappers:
+The rules of `VkAttachmentReference2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReference2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAttachmentReference2-layout-03077`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentReference2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentReference2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkAttachmentReference2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkAttachmentReference2-layout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkAttachmentReference2-synchronization2-06910`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkAttachmentReference2-separateDepthStencilLayouts-03313` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, …
+- `VUID-VkAttachmentReference2-attachmentFeedbackLoopLayout-07311` (*yours*; explicit rule): If the `attachmentFeedbackLoopLayout` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_FEEDBACK_LOOP_OPTIMAL_EXT`
+- `VUID-VkAttachmentReference2-layout-03077` (*checked*): If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR`
+- `VUID-VkAttachmentReference2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkAttachmentReference2-layout-parameter` (*checked*): `layout` must be a valid VkImageLayout value
+- `VUID-VkAttachmentReference2-synchronization2-06910` (*checked*): If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR`
+- `VUID-VkAttachmentReference2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ATTACHMENT_REFERENCE_2`
+- `VUID-VkAttachmentReference2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkAttachmentReferenceStencilLayout*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReference2<'a> {
@@ -184,11 +191,11 @@ impl<'a> AttachmentReference2<'a> {
 
 # Valid usage
 
-The rules are on [`VkAttachmentReferenceStencilLayout`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReferenceStencilLayout.html). Settled by the wrappers:
+The rules of `VkAttachmentReferenceStencilLayout` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAttachmentReferenceStencilLayout.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkAttachmentReferenceStencilLayout-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318` (*checked*): `stencilLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, …
+- `VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter` (*checked*): `stencilLayout` must be a valid VkImageLayout value
+- `VUID-VkAttachmentReferenceStencilLayout-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ATTACHMENT_REFERENCE_STENCIL_LAYOUT`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct AttachmentReferenceStencilLayout<'a> {
@@ -210,13 +217,13 @@ for AttachmentReferenceStencilLayout<'a> {}
 
 # Valid usage
 
-The rules are on [`VkBufferDeviceAddressInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferDeviceAddressInfo.html). Settled by the wrappers:
+The rules of `VkBufferDeviceAddressInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferDeviceAddressInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferDeviceAddressInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkBufferDeviceAddressInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkBufferDeviceAddressInfo-buffer-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkBufferDeviceAddressInfo-buffer-02600` (*yours*; explicit rule): If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkBufferDeviceAddressInfo-buffer-02601` (*yours*; explicit rule): `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
+- `VUID-VkBufferDeviceAddressInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO`
+- `VUID-VkBufferDeviceAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkBufferDeviceAddressInfo-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferDeviceAddressInfo<'a> {
@@ -248,9 +255,9 @@ impl<'a> BufferDeviceAddressInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkBufferOpaqueCaptureAddressCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferOpaqueCaptureAddressCreateInfo.html). Settled by the wrappers:
+The rules of `VkBufferOpaqueCaptureAddressCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferOpaqueCaptureAddressCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferOpaqueCaptureAddressCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkBufferOpaqueCaptureAddressCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_OPAQUE_CAPTURE_ADDRESS_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferOpaqueCaptureAddressCreateInfo<'a> {
@@ -272,27 +279,26 @@ for BufferOpaqueCaptureAddressCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDescriptorSetLayoutBindingFlagsCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutBindingFlagsCreateInfo.html). Settled by the wrappers:
+The rules of `VkDescriptorSetLayoutBindingFlagsCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutBindingFlagsCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014`: dynamic (checks the bindings against each other (each number once), input attachments' stages, inline uniform blocks against maxInlineUniformBlockSize, and a chained binding-flags struct's count and flags against the device's descriptor-indexing features)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define, for each element)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 5.
-
-- 2: checked by the safe methods in every build, but no test breaks it: lavapipe 22.3 has no variable descriptor counts, so a variable-sized binding is refused for the missing feature first
-- 1: checked by the safe methods in every build, but no test breaks it: the tests' only device with inlineUniformBlock enables every feature lavapipe has, update-after-bind of inline uniform blocks included
-- 2: explicit rule; the wrappers do not check it*/
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03004` (*yours*; checked by the safe methods in every build, but no test breaks it): If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, then all other elements of VkDescriptorSetLayoutCreateInfo::`pBindings` must have a smaller value of …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-03015` (*yours*; checked by the safe methods in every build, but no test breaks it): If an element of `pBindingFlags` includes `VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT`, that element&#8217;s `descriptorType` must not be `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC` or …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-flags-03003` (*yours*; explicit rule): If VkDescriptorSetLayoutCreateInfo::`flags` includes `VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR`, then all elements of `pBindingFlags` must not include …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingInlineUniformBlockUpdateAfterBind-02211` (*yours*; checked by the safe methods in every build, but no test breaks it): If VkPhysicalDeviceInlineUniformBlockFeatures::`descriptorBindingInlineUniformBlockUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` must not …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingAccelerationStructureUpdateAfterBind-03570` (*yours*; explicit rule): If VkPhysicalDeviceAccelerationStructureFeaturesKHR::`descriptorBindingAccelerationStructureUpdateAfterBind` is not enabled, all bindings with descriptor type …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-bindingCount-03002` (*checked*): If `bindingCount` is not zero, `bindingCount` must equal VkDescriptorSetLayoutCreateInfo::`bindingCount`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformBufferUpdateAfterBind-03005` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` must not use …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingSampledImageUpdateAfterBind-03006` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingSampledImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_SAMPLER`, …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageImageUpdateAfterBind-03007` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageImageUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` must not use …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageBufferUpdateAfterBind-03008` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` must not use …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUniformTexelBufferUpdateAfterBind-03009` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUniformTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` must not …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingStorageTexelBufferUpdateAfterBind-03010` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingStorageTexelBufferUpdateAfterBind` is not enabled, all bindings with descriptor type `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` must not …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-None-03011` (*checked*): All bindings with descriptor type `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC`, or `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC` must not use …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingUpdateUnusedWhilePending-03012` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingUpdateUnusedWhilePending` is not enabled, all elements of `pBindingFlags` must not include …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingPartiallyBound-03013` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingPartiallyBound` is not enabled, all elements of `pBindingFlags` must not include `VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT`
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-descriptorBindingVariableDescriptorCount-03014` (*checked*): If VkPhysicalDeviceDescriptorIndexingFeatures::`descriptorBindingVariableDescriptorCount` is not enabled, all elements of `pBindingFlags` must not include …
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-pBindingFlags-parameter` (*checked*): If `bindingCount` is not `0`, `pBindingFlags` must be a valid pointer to an array of `bindingCount` valid combinations of VkDescriptorBindingFlagBits values
+- `VUID-VkDescriptorSetLayoutBindingFlagsCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBindingFlagsCreateInfo<'a> {
@@ -315,13 +321,12 @@ for DescriptorSetLayoutBindingFlagsCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDescriptorSetVariableDescriptorCountAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetVariableDescriptorCountAllocateInfo.html). Settled by the wrappers:
+The rules of `VkDescriptorSetVariableDescriptorCountAllocateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetVariableDescriptorCountAllocateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045`: dynamic (checks the chained struct's count against the count of the struct it extends)
-- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pDescriptorCounts-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (checked by the safe methods in every build (the variable-count binding is kept from the layout's creation, and each set's writes are checked against the count it was allocated with), but no test breaks it: lavapipe 22.3 has no variable descriptor counts).*/
+- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046` (*yours*; checked by the safe methods in every build): If VkDescriptorSetAllocateInfo::`pSetLayouts`\[i\] has a variable-sized descriptor binding, then `pDescriptorCounts`\[i\] must be less than or equal to the descriptor count specified for that binding when …
+- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045` (*checked*): If `descriptorSetCount` is not zero, `descriptorSetCount` must equal VkDescriptorSetAllocateInfo::`descriptorSetCount`
+- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_VARIABLE_DESCRIPTOR_COUNT_ALLOCATE_INFO`
+- `VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pDescriptorCounts-parameter` (*by the types*): If `descriptorSetCount` is not `0`, `pDescriptorCounts` must be a valid pointer to an array of `descriptorSetCount` `uint32_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetVariableDescriptorCountAllocateInfo<'a> {
@@ -344,9 +349,9 @@ for DescriptorSetVariableDescriptorCountAllocateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDescriptorSetVariableDescriptorCountLayoutSupport`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetVariableDescriptorCountLayoutSupport.html). Settled by the wrappers:
+The rules of `VkDescriptorSetVariableDescriptorCountLayoutSupport` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetVariableDescriptorCountLayoutSupport.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorSetVariableDescriptorCountLayoutSupport-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkDescriptorSetVariableDescriptorCountLayoutSupport-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_VARIABLE_DESCRIPTOR_COUNT_LAYOUT_SUPPORT`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetVariableDescriptorCountLayoutSupport<'a> {
@@ -360,13 +365,12 @@ for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 
 # Valid usage
 
-The rules are on [`VkDeviceMemoryOpaqueCaptureAddressInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryOpaqueCaptureAddressInfo.html). Settled by the wrappers:
+The rules of `VkDeviceMemoryOpaqueCaptureAddressInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryOpaqueCaptureAddressInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 1 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336` (*yours*; explicit rule): `memory` must have been allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_MEMORY_OPAQUE_CAPTURE_ADDRESS_INFO`
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceMemoryOpaqueCaptureAddressInfo<'a> {
@@ -398,14 +402,14 @@ impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkFramebufferAttachmentImageInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferAttachmentImageInfo.html). Settled by the wrappers:
+The rules of `VkFramebufferAttachmentImageInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferAttachmentImageInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFramebufferAttachmentImageInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFramebufferAttachmentImageInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkFramebufferAttachmentImageInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkFramebufferAttachmentImageInfo-usage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkFramebufferAttachmentImageInfo-usage-requiredbitmask`: dynamic (checks the flags are not 0)
-- `VUID-VkFramebufferAttachmentImageInfo-pViewFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
+- `VUID-VkFramebufferAttachmentImageInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkImageCreateFlagBits values
+- `VUID-VkFramebufferAttachmentImageInfo-usage-parameter` (*checked*): `usage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-VkFramebufferAttachmentImageInfo-usage-requiredbitmask` (*checked*): `usage` must not be `0`
+- `VUID-VkFramebufferAttachmentImageInfo-pViewFormats-parameter` (*checked*): If `viewFormatCount` is not `0`, `pViewFormats` must be a valid pointer to an array of `viewFormatCount` valid VkFormat values
+- `VUID-VkFramebufferAttachmentImageInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FRAMEBUFFER_ATTACHMENT_IMAGE_INFO`
+- `VUID-VkFramebufferAttachmentImageInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferAttachmentImageInfo<'a> {
@@ -456,10 +460,10 @@ impl<'a> FramebufferAttachmentImageInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkFramebufferAttachmentsCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferAttachmentsCreateInfo.html). Settled by the wrappers:
+The rules of `VkFramebufferAttachmentsCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkFramebufferAttachmentsCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkFramebufferAttachmentsCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkFramebufferAttachmentsCreateInfo-pAttachmentImageInfos-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkFramebufferAttachmentsCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FRAMEBUFFER_ATTACHMENTS_CREATE_INFO`
+- `VUID-VkFramebufferAttachmentsCreateInfo-pAttachmentImageInfos-parameter` (*by the types*): If `attachmentImageInfoCount` is not `0`, `pAttachmentImageInfos` must be a valid pointer to an array of `attachmentImageInfoCount` valid VkFramebufferAttachmentImageInfo structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferAttachmentsCreateInfo<'a> {
@@ -485,10 +489,10 @@ for FramebufferAttachmentsCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageFormatListCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatListCreateInfo.html). Settled by the wrappers:
+The rules of `VkImageFormatListCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageFormatListCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageFormatListCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageFormatListCreateInfo-pViewFormats-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define, for each element)*/
+- `VUID-VkImageFormatListCreateInfo-pViewFormats-parameter` (*checked*): If `viewFormatCount` is not `0`, `pViewFormats` must be a valid pointer to an array of `viewFormatCount` valid VkFormat values
+- `VUID-VkImageFormatListCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_FORMAT_LIST_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageFormatListCreateInfo<'a> {
@@ -514,12 +518,12 @@ for ImageFormatListCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkImageStencilUsageCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageStencilUsageCreateInfo.html). Settled by the wrappers:
+The rules of `VkImageStencilUsageCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageStencilUsageCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539`: dynamic (checks the rule as written (recogniser: flags with no bits but these))
-- `VUID-VkImageStencilUsageCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask`: dynamic (checks the flags are not 0)*/
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539` (*checked*): If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter` (*checked*): `stencilUsage` must be a valid combination of VkImageUsageFlagBits values
+- `VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask` (*checked*): `stencilUsage` must not be `0`
+- `VUID-VkImageStencilUsageCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_STENCIL_USAGE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageStencilUsageCreateInfo<'a> {
@@ -542,9 +546,9 @@ for ImageStencilUsageCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkMemoryOpaqueCaptureAddressAllocateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryOpaqueCaptureAddressAllocateInfo.html). Settled by the wrappers:
+The rules of `VkMemoryOpaqueCaptureAddressAllocateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryOpaqueCaptureAddressAllocateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMemoryOpaqueCaptureAddressAllocateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkMemoryOpaqueCaptureAddressAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_OPAQUE_CAPTURE_ADDRESS_ALLOCATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryOpaqueCaptureAddressAllocateInfo<'a> {
@@ -566,9 +570,9 @@ for MemoryOpaqueCaptureAddressAllocateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDevice8BitStorageFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevice8BitStorageFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDevice8BitStorageFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDevice8BitStorageFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDevice8BitStorageFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDevice8BitStorageFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_8BIT_STORAGE_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDevice8BitStorageFeatures<'a> {
@@ -603,9 +607,9 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDevice8BitStorageFeatu
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceBufferDeviceAddressFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBufferDeviceAddressFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceBufferDeviceAddressFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceBufferDeviceAddressFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceBufferDeviceAddressFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceBufferDeviceAddressFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_BUFFER_DEVICE_ADDRESS_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceBufferDeviceAddressFeatures<'a> {
@@ -641,9 +645,9 @@ for PhysicalDeviceBufferDeviceAddressFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDepthStencilResolveProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDepthStencilResolveProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDepthStencilResolveProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDepthStencilResolveProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDepthStencilResolveProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDepthStencilResolveProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_STENCIL_RESOLVE_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceDepthStencilResolveProperties<'a> {
@@ -657,9 +661,9 @@ for PhysicalDeviceDepthStencilResolveProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDescriptorIndexingFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorIndexingFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDescriptorIndexingFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorIndexingFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDescriptorIndexingFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDescriptorIndexingFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DESCRIPTOR_INDEXING_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceDescriptorIndexingFeatures<'a> {
@@ -882,9 +886,9 @@ for PhysicalDeviceDescriptorIndexingFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDescriptorIndexingProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorIndexingProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDescriptorIndexingProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorIndexingProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDescriptorIndexingProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDescriptorIndexingProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DESCRIPTOR_INDEXING_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceDescriptorIndexingProperties<'a> {
@@ -898,9 +902,9 @@ for PhysicalDeviceDescriptorIndexingProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDriverProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDriverProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDriverProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDriverProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDriverProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDriverProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceDriverProperties<'a> {
@@ -914,9 +918,9 @@ for PhysicalDeviceDriverProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceFloatControlsProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFloatControlsProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceFloatControlsProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceFloatControlsProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceFloatControlsProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceFloatControlsProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FLOAT_CONTROLS_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceFloatControlsProperties<'a> {
@@ -930,9 +934,9 @@ for PhysicalDeviceFloatControlsProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceHostQueryResetFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceHostQueryResetFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceHostQueryResetFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceHostQueryResetFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceHostQueryResetFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceHostQueryResetFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_HOST_QUERY_RESET_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceHostQueryResetFeatures<'a> {
@@ -956,9 +960,9 @@ for PhysicalDeviceHostQueryResetFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceImagelessFramebufferFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImagelessFramebufferFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceImagelessFramebufferFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceImagelessFramebufferFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceImagelessFramebufferFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceImagelessFramebufferFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_IMAGELESS_FRAMEBUFFER_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceImagelessFramebufferFeatures<'a> {
@@ -982,9 +986,9 @@ for PhysicalDeviceImagelessFramebufferFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSamplerFilterMinmaxProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSamplerFilterMinmaxProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSamplerFilterMinmaxProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSamplerFilterMinmaxProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSamplerFilterMinmaxProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSamplerFilterMinmaxProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SAMPLER_FILTER_MINMAX_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSamplerFilterMinmaxProperties<'a> {
@@ -998,9 +1002,9 @@ for PhysicalDeviceSamplerFilterMinmaxProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceScalarBlockLayoutFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceScalarBlockLayoutFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceScalarBlockLayoutFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceScalarBlockLayoutFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceScalarBlockLayoutFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceScalarBlockLayoutFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SCALAR_BLOCK_LAYOUT_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceScalarBlockLayoutFeatures<'a> {
@@ -1024,9 +1028,9 @@ for PhysicalDeviceScalarBlockLayoutFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SEPARATE_DEPTH_STENCIL_LAYOUTS_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {
@@ -1050,9 +1054,9 @@ for PhysicalDeviceSeparateDepthStencilLayoutsFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShaderAtomicInt64Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderAtomicInt64Features.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShaderAtomicInt64Features` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderAtomicInt64Features.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShaderAtomicInt64Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShaderAtomicInt64Features-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_INT64_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceShaderAtomicInt64Features<'a> {
@@ -1082,9 +1086,9 @@ for PhysicalDeviceShaderAtomicInt64Features<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShaderFloat16Int8Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderFloat16Int8Features.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShaderFloat16Int8Features` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderFloat16Int8Features.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShaderFloat16Int8Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShaderFloat16Int8Features-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceShaderFloat16Int8Features<'a> {
@@ -1114,9 +1118,9 @@ for PhysicalDeviceShaderFloat16Int8Features<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceShaderSubgroupExtendedTypesFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_SUBGROUP_EXTENDED_TYPES_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {
@@ -1140,9 +1144,9 @@ for PhysicalDeviceShaderSubgroupExtendedTypesFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceTimelineSemaphoreFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTimelineSemaphoreFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceTimelineSemaphoreFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTimelineSemaphoreFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceTimelineSemaphoreFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceTimelineSemaphoreFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceTimelineSemaphoreFeatures<'a> {
@@ -1166,9 +1170,9 @@ for PhysicalDeviceTimelineSemaphoreFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceTimelineSemaphoreProperties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTimelineSemaphoreProperties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceTimelineSemaphoreProperties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceTimelineSemaphoreProperties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceTimelineSemaphoreProperties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceTimelineSemaphoreProperties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceTimelineSemaphoreProperties<'a> {
@@ -1182,9 +1186,9 @@ for PhysicalDeviceTimelineSemaphoreProperties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceUniformBufferStandardLayoutFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceUniformBufferStandardLayoutFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceUniformBufferStandardLayoutFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceUniformBufferStandardLayoutFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceUniformBufferStandardLayoutFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceUniformBufferStandardLayoutFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_UNIFORM_BUFFER_STANDARD_LAYOUT_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {
@@ -1208,9 +1212,9 @@ for PhysicalDeviceUniformBufferStandardLayoutFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVulkan11Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan11Features.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVulkan11Features` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan11Features.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVulkan11Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVulkan11Features-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVulkan11Features<'a> {
@@ -1299,9 +1303,9 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan11Features
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVulkan11Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan11Properties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVulkan11Properties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan11Properties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVulkan11Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVulkan11Properties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVulkan11Properties<'a> {
@@ -1315,9 +1319,9 @@ for PhysicalDeviceVulkan11Properties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVulkan12Features`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan12Features.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVulkan12Features` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan12Features.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVulkan12Features-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVulkan12Features-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVulkan12Features<'a> {
@@ -1706,9 +1710,9 @@ unsafe impl<'a> Extends<DeviceCreateInfo<'a>> for PhysicalDeviceVulkan12Features
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVulkan12Properties`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan12Properties.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVulkan12Properties` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkan12Properties.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVulkan12Properties-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVulkan12Properties-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_PROPERTIES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVulkan12Properties<'a> {
@@ -1722,9 +1726,9 @@ for PhysicalDeviceVulkan12Properties<'a> {}
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceVulkanMemoryModelFeatures`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkanMemoryModelFeatures.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceVulkanMemoryModelFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceVulkanMemoryModelFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceVulkanMemoryModelFeatures-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceVulkanMemoryModelFeatures-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_MEMORY_MODEL_FEATURES`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct PhysicalDeviceVulkanMemoryModelFeatures<'a> {
@@ -1765,17 +1769,14 @@ for PhysicalDeviceVulkanMemoryModelFeatures<'a> {}
 
 # Valid usage
 
-The rules are on [`VkRenderPassAttachmentBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassAttachmentBeginInfo.html). Settled by the wrappers:
+The rules of `VkRenderPassAttachmentBeginInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassAttachmentBeginInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218`: dynamic (checks the views a chained VkRenderPassAttachmentBeginInfo gives against the imageless framebuffer's attachment image infos and the render pass's attachments, and the render pass against the one the framebuffer was created with (attachment formats and sample counts, each subpass's attachments and view mask), as the device recorded them)
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219`: dynamic (checks the views a chained VkRenderPassAttachmentBeginInfo gives against the imageless framebuffer's attachment image infos and the render pass's attachments, and the render pass against the one the framebuffer was created with (attachment formats and sample counts, each subpass's attachments and view mask), as the device recorded them)
-- `VUID-VkRenderPassAttachmentBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 2.
-
-- 1: checked by the safe methods in every build, but no test breaks it yet
-- 1: explicit rule; the wrappers do not check it*/
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-04114` (*yours*; checked by the safe methods in every build, but no test breaks it yet): Each element of `pAttachments` must have been created with VkImageViewCreateInfo::`viewType` not equal to `VK_IMAGE_VIEW_TYPE_3D`
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-07010` (*yours*; explicit rule): If multisampled-render-to-single-sampled is enabled for any subpass, all element of `pAttachments` which have a sample count equal to `VK_SAMPLE_COUNT_1_BIT` must have a format that supports the …
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218` (*checked*): Each element of `pAttachments` must only specify a single mip level
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219` (*checked*): Each element of `pAttachments` must have been created with the identity swizzle
+- `VUID-VkRenderPassAttachmentBeginInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_ATTACHMENT_BEGIN_INFO`
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-parameter` (*by the types*): If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkImageView handles*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassAttachmentBeginInfo<'a> {
@@ -1797,24 +1798,45 @@ unsafe impl<'a> Extends<RenderPassBeginInfo<'a>> for RenderPassAttachmentBeginIn
 
 # Valid usage
 
-The rules are on [`VkRenderPassCreateInfo2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreateInfo2.html). Settled by the wrappers:
+The rules of `VkRenderPassCreateInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreateInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassCreateInfo2-attachment-03051`: dynamic (checks each attachment, subpass and input attachment index against the render pass's counts)
-- `VUID-VkRenderPassCreateInfo2-viewMask-03057`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkRenderPassCreateInfo2-viewMask-03058`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkRenderPassCreateInfo2-viewMask-03059`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkRenderPassCreateInfo2-attachment-02525`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkRenderPassCreateInfo2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkRenderPassCreateInfo2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkRenderPassCreateInfo2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkRenderPassCreateInfo2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkRenderPassCreateInfo2-pAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassCreateInfo2-pSubpasses-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassCreateInfo2-pDependencies-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkRenderPassCreateInfo2-subpassCount-arraylength`: dynamic (checks the count is not 0)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 23 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkRenderPassCreateInfo2-None-03049` (*yours*; explicit rule): If any two subpasses operate on attachments with overlapping ranges of the same `VkDeviceMemory` object, and at least one subpass writes to that area of `VkDeviceMemory`, a subpass dependency must be …
+- `VUID-VkRenderPassCreateInfo2-attachment-03050` (*yours*; explicit rule): If the `attachment` member of any element of `pInputAttachments`, `pColorAttachments`, `pResolveAttachments` or `pDepthStencilAttachment`, or the attachment indexed by any element of …
+- `VUID-VkRenderPassCreateInfo2-pAttachments-02522` (*yours*; explicit rule): For any member of `pAttachments` with a `loadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to …
+- `VUID-VkRenderPassCreateInfo2-pAttachments-02523` (*yours*; explicit rule): For any member of `pAttachments` with a `stencilLoadOp` equal to `VK_ATTACHMENT_LOAD_OP_CLEAR`, the first use of that attachment must not specify a `layout` equal to …
+- `VUID-VkRenderPassCreateInfo2-pDependencies-03054` (*yours*; explicit rule): For any element of `pDependencies`, if the `srcSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `srcStageMask` member of that dependency must be a pipeline stage supported by the …
+- `VUID-VkRenderPassCreateInfo2-pDependencies-03055` (*yours*; explicit rule): For any element of `pDependencies`, if the `dstSubpass` is not `VK_SUBPASS_EXTERNAL`, all stage flags included in the `dstStageMask` member of that dependency must be a pipeline stage supported by the …
+- `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056` (*yours*; explicit rule): The set of bits included in any element of `pCorrelatedViewMasks` must not overlap with the set of bits included in any other element of `pCorrelatedViewMasks`
+- `VUID-VkRenderPassCreateInfo2-pDependencies-03060` (*yours*; explicit rule): For any element of `pDependencies` where its `srcSubpass` member equals its `dstSubpass` member, if the `viewMask` member of the corresponding element of `pSubpasses` includes more than one bit, its …
+- `VUID-VkRenderPassCreateInfo2-srcSubpass-02526` (*yours*; explicit rule): The `srcSubpass` member of each element of `pDependencies` must be less than `subpassCount`
+- `VUID-VkRenderPassCreateInfo2-dstSubpass-02527` (*yours*; explicit rule): The `dstSubpass` member of each element of `pDependencies` must be less than `subpassCount`
+- `VUID-VkRenderPassCreateInfo2-fragmentDensityMapAttachment-06472` (*yours*; explicit rule): If the pNext chain includes a VkRenderPassFragmentDensityMapCreateInfoEXT structure and the `fragmentDensityMapAttachment` member is not `VK_ATTACHMENT_UNUSED`, then `attachment` must be less than …
+- `VUID-VkRenderPassCreateInfo2-pSubpasses-06473` (*yours*; explicit rule): If the `pSubpasses` pNext chain includes a VkSubpassDescriptionDepthStencilResolve structure and the `pDepthStencilResolveAttachment` member is not `NULL` and does not have the value …
+- `VUID-VkRenderPassCreateInfo2-pAttachments-04585` (*yours*; explicit rule): If any element of `pAttachments` is used as a fragment shading rate attachment in any subpass, it must not be used as any other attachment in the render pass
+- `VUID-VkRenderPassCreateInfo2-pAttachments-04586` (*yours*; explicit rule): If any element of `pAttachments` is used as a fragment shading rate attachment in any subpass, it must have an image format whose potential format features contain …
+- `VUID-VkRenderPassCreateInfo2-flags-04521` (*yours*; explicit rule): If `flags` includes `VK_RENDER_PASS_CREATE_TRANSFORM_BIT_QCOM`, an element of `pSubpasses` includes an instance of VkFragmentShadingRateAttachmentInfoKHR in its `pNext` chain, and the …
+- `VUID-VkRenderPassCreateInfo2-rasterizationSamples-04905` (*yours*; explicit rule): If the pipeline is being created with fragment shader state, and the VK_QCOM_render_pass_shader_resolve extension is enabled, and if subpass has any input attachments, and if the subpass description …
+- `VUID-VkRenderPassCreateInfo2-sampleShadingEnable-04906` (*yours*; explicit rule): If the pipeline is being created with fragment shader state, and the VK_QCOM_render_pass_shader_resolve extension is enabled, and if the subpass description contains …
+- `VUID-VkRenderPassCreateInfo2-flags-04907` (*yours*; explicit rule): If `flags` includes `VK_SUBPASS_DESCRIPTION_SHADER_RESOLVE_BIT_QCOM`, and if `pResolveAttachments` is not `NULL`, then each resolve attachment must be `VK_ATTACHMENT_UNUSED`
+- `VUID-VkRenderPassCreateInfo2-flags-04908` (*yours*; explicit rule): If `flags` includes `VK_SUBPASS_DESCRIPTION_SHADER_RESOLVE_BIT_QCOM`, and if `pDepthStencilResolveAttachment` is not `NULL`, then the depth/stencil resolve attachment must be `VK_ATTACHMENT_UNUSED`
+- `VUID-VkRenderPassCreateInfo2-flags-04909` (*yours*; explicit rule): If `flags` includes `VK_SUBPASS_DESCRIPTION_SHADER_RESOLVE_BIT_QCOM`, then the subpass must be the last subpass in a subpass dependency chain
+- `VUID-VkRenderPassCreateInfo2-attachment-06244` (*yours*; explicit rule): If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, the `layout` member of that same structure is either …
+- `VUID-VkRenderPassCreateInfo2-attachment-06245` (*yours*; explicit rule): If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED` and the `layout` member of that same structure is either …
+- `VUID-VkRenderPassCreateInfo2-attachment-06246` (*yours*; explicit rule): If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED` and the `layout` member of that same structure is either …
+- `VUID-VkRenderPassCreateInfo2-attachment-03051` (*checked*): If the `attachment` member of any element of `pInputAttachments`, `pColorAttachments`, `pResolveAttachments` or `pDepthStencilAttachment`, or any element of `pPreserveAttachments` in any given element …
+- `VUID-VkRenderPassCreateInfo2-viewMask-03057` (*checked*): If the VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` is `0`, `correlatedViewMaskCount` must be `0`
+- `VUID-VkRenderPassCreateInfo2-viewMask-03058` (*checked*): The VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` must either all be `0`, or all not be `0`
+- `VUID-VkRenderPassCreateInfo2-viewMask-03059` (*checked*): If the VkSubpassDescription2::`viewMask` member of all elements of `pSubpasses` is `0`, the `dependencyFlags` member of any element of `pDependencies` must not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`
+- `VUID-VkRenderPassCreateInfo2-attachment-02525` (*checked*): If the `attachment` member of any element of the `pInputAttachments` member of any element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, the `aspectMask` member of that element of `pInputAttachments` …
+- `VUID-VkRenderPassCreateInfo2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkRenderPassCreateInfo2-flags-parameter` (*checked*): `flags` must be a valid combination of VkRenderPassCreateFlagBits values
+- `VUID-VkRenderPassCreateInfo2-subpassCount-arraylength` (*checked*): `subpassCount` must be greater than `0`
+- `VUID-VkRenderPassCreateInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO_2`
+- `VUID-VkRenderPassCreateInfo2-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkRenderPassCreationControlEXT, …
+- `VUID-VkRenderPassCreateInfo2-pAttachments-parameter` (*by the types*): If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkAttachmentDescription2 structures
+- `VUID-VkRenderPassCreateInfo2-pSubpasses-parameter` (*by the types*): `pSubpasses` must be a valid pointer to an array of `subpassCount` valid VkSubpassDescription2 structures
+- `VUID-VkRenderPassCreateInfo2-pDependencies-parameter` (*by the types*): If `dependencyCount` is not `0`, `pDependencies` must be a valid pointer to an array of `dependencyCount` valid VkSubpassDependency2 structures
+- `VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-parameter` (*by the types*): If `correlatedViewMaskCount` is not `0`, `pCorrelatedViewMasks` must be a valid pointer to an array of `correlatedViewMaskCount` `uint32_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassCreateInfo2<'a> {
@@ -1862,10 +1884,10 @@ impl<'a> RenderPassCreateInfo2<'a> {
 
 # Valid usage
 
-The rules are on [`VkSamplerReductionModeCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerReductionModeCreateInfo.html). Settled by the wrappers:
+The rules of `VkSamplerReductionModeCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerReductionModeCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerReductionModeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSamplerReductionModeCreateInfo-reductionMode-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkSamplerReductionModeCreateInfo-reductionMode-parameter` (*checked*): `reductionMode` must be a valid VkSamplerReductionMode value
+- `VUID-VkSamplerReductionModeCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_REDUCTION_MODE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerReductionModeCreateInfo<'a> {
@@ -1886,14 +1908,15 @@ unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerReductionModeCreateInf
 
 # Valid usage
 
-The rules are on [`VkSemaphoreSignalInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSignalInfo.html). Settled by the wrappers:
+The rules of `VkSemaphoreSignalInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSignalInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreSignalInfo-semaphore-03257`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
-- `VUID-VkSemaphoreSignalInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreSignalInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreSignalInfo-semaphore-parameter`: static (set from wrappers, which always hold valid handles)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 3 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSemaphoreSignalInfo-value-03258` (*yours*; explicit rule): `value` must have a value greater than the current value of the semaphore
+- `VUID-VkSemaphoreSignalInfo-value-03259` (*yours*; explicit rule): `value` must be less than the value of any pending semaphore signal operations
+- `VUID-VkSemaphoreSignalInfo-value-03260` (*yours*; explicit rule): `value` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on `semaphore` by more than …
+- `VUID-VkSemaphoreSignalInfo-semaphore-03257` (*checked*): `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkSemaphoreSignalInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_SIGNAL_INFO`
+- `VUID-VkSemaphoreSignalInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkSemaphoreSignalInfo-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSignalInfo<'a> {
@@ -1931,12 +1954,12 @@ impl<'a> SemaphoreSignalInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkSemaphoreTypeCreateInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreTypeCreateInfo.html). Settled by the wrappers:
+The rules of `VkSemaphoreTypeCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreTypeCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSemaphoreTypeCreateInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252` (*checked*): If the `timelineSemaphore` feature is not enabled, `semaphoreType` must not equal `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279` (*checked*): If `semaphoreType` is `VK_SEMAPHORE_TYPE_BINARY`, `initialValue` must be zero
+- `VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter` (*checked*): `semaphoreType` must be a valid VkSemaphoreType value
+- `VUID-VkSemaphoreTypeCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreTypeCreateInfo<'a> {
@@ -1965,15 +1988,15 @@ for SemaphoreTypeCreateInfo<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSemaphoreWaitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreWaitInfo.html). Settled by the wrappers:
+The rules of `VkSemaphoreWaitInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreWaitInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreWaitInfo-pSemaphores-03256`: dynamic (checks the semaphore's type, kept by the wrapper from its creation)
-- `VUID-VkSemaphoreWaitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSemaphoreWaitInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSemaphoreWaitInfo-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSemaphoreWaitInfo-pSemaphores-parameter`: static (set from wrappers, which always hold valid handles)
-- `VUID-VkSemaphoreWaitInfo-pValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength`: dynamic (checks the count is not 0)*/
+- `VUID-VkSemaphoreWaitInfo-pSemaphores-03256` (*checked*): All of the elements of `pSemaphores` must reference a semaphore that was created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkSemaphoreWaitInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreWaitFlagBits values
+- `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength` (*checked*): `semaphoreCount` must be greater than `0`
+- `VUID-VkSemaphoreWaitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO`
+- `VUID-VkSemaphoreWaitInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkSemaphoreWaitInfo-pSemaphores-parameter` (*by the types*): `pSemaphores` must be a valid pointer to an array of `semaphoreCount` valid VkSemaphore handles
+- `VUID-VkSemaphoreWaitInfo-pValues-parameter` (*by the types*): `pValues` must be a valid pointer to an array of `semaphoreCount` `uint64_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreWaitInfo<'a> {
@@ -2019,11 +2042,11 @@ impl<'a> SemaphoreWaitInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkSubpassBeginInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassBeginInfo.html). Settled by the wrappers:
+The rules of `VkSubpassBeginInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassBeginInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassBeginInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubpassBeginInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkSubpassBeginInfo-contents-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)*/
+- `VUID-VkSubpassBeginInfo-contents-parameter` (*checked*): `contents` must be a valid VkSubpassContents value
+- `VUID-VkSubpassBeginInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_BEGIN_INFO`
+- `VUID-VkSubpassBeginInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassBeginInfo<'a> {
@@ -2043,26 +2066,50 @@ impl<'a> SubpassBeginInfo<'a> {
 
 # Valid usage
 
-The rules are on [`VkSubpassDependency2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDependency2.html). Settled by the wrappers:
+The rules of `VkSubpassDependency2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDependency2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassDependency2-srcStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
-- `VUID-VkSubpassDependency2-srcStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
-- `VUID-VkSubpassDependency2-dstStageMask-04090`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
-- `VUID-VkSubpassDependency2-dstStageMask-04091`: dynamic (checks the rule as written (recogniser: flags must (not) include bits))
-- `VUID-VkSubpassDependency2-dependencyFlags-03092`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSubpassDependency2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubpassDependency2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSubpassDependency2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkSubpassDependency2-srcStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSubpassDependency2-dstStageMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSubpassDependency2-srcAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSubpassDependency2-dstAccessMask-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSubpassDependency2-dependencyFlags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 29.
-
-- 2: checked by the safe methods in every build, but no oracle case breaks it yet
-- 27: explicit rule; the wrappers do not check it*/
+- `VUID-VkSubpassDependency2-srcSubpass-03084` (*yours*; explicit rule): `srcSubpass` must be less than or equal to `dstSubpass`, unless one of them is `VK_SUBPASS_EXTERNAL`, to avoid cyclic dependencies and ensure a valid execution order
+- `VUID-VkSubpassDependency2-srcSubpass-03085` (*yours*; explicit rule): `srcSubpass` and `dstSubpass` must not both be equal to `VK_SUBPASS_EXTERNAL`
+- `VUID-VkSubpassDependency2-srcSubpass-06810` (*yours*; explicit rule): If `srcSubpass` is equal to `dstSubpass` and `srcStageMask` includes a framebuffer-space stage, `dstStageMask` must only contain framebuffer-space stages
+- `VUID-VkSubpassDependency2-srcAccessMask-03088` (*yours*; explicit rule): Any access flag included in `srcAccessMask` must be supported by one of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
+- `VUID-VkSubpassDependency2-dstAccessMask-03089` (*yours*; explicit rule): Any access flag included in `dstAccessMask` must be supported by one of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
+- `VUID-VkSubpassDependency2-dependencyFlags-03090` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL`
+- `VUID-VkSubpassDependency2-dependencyFlags-03091` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL`
+- `VUID-VkSubpassDependency2-srcSubpass-02245` (*yours*; explicit rule): If `srcSubpass` equals `dstSubpass`, and `srcStageMask` and `dstStageMask` both include a framebuffer-space stage, then `dependencyFlags` must include `VK_DEPENDENCY_BY_REGION_BIT`
+- `VUID-VkSubpassDependency2-viewOffset-02530` (*yours*; explicit rule): If `viewOffset` is not equal to `0`, `srcSubpass` must not be equal to `dstSubpass`
+- `VUID-VkSubpassDependency2-srcStageMask-04092` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04092` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04093` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04093` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04094` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04094` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04095` (*yours*; explicit rule): If the `meshShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04096` (*yours*; explicit rule): If the `taskShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04095` (*yours*; explicit rule): If the `meshShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04096` (*yours*; explicit rule): If the `taskShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04097` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
+- `VUID-VkSubpassDependency2-dstStageMask-04097` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
+- `VUID-VkSubpassDependency2-srcStageMask-07318` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkSubpassDependency2-dstStageMask-07318` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkSubpassDependency2-srcStageMask-07319` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkSubpassDependency2-dstStageMask-07319` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkSubpassDependency2-srcStageMask-03937` (*yours*; explicit rule): If the `synchronization2` feature is not enabled, `srcStageMask` must not be `0`
+- `VUID-VkSubpassDependency2-dstStageMask-03937` (*yours*; explicit rule): If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
+- `VUID-VkSubpassDependency2-srcStageMask-04996` (*yours*; explicit rule): `srcStageMask` must not be `0`
+- `VUID-VkSubpassDependency2-dstStageMask-04996` (*yours*; explicit rule): `dstStageMask` must not be `0`
+- `VUID-VkSubpassDependency2-srcStageMask-04090` (*checked*): If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
+- `VUID-VkSubpassDependency2-srcStageMask-04091` (*checked*): If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-VkSubpassDependency2-dstStageMask-04090` (*checked*): If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
+- `VUID-VkSubpassDependency2-dstStageMask-04091` (*checked*): If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-VkSubpassDependency2-dependencyFlags-03092` (*checked*): If `dependencyFlags` does not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `viewOffset` must be `0`
+- `VUID-VkSubpassDependency2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSubpassDependency2-srcStageMask-parameter` (*checked*): `srcStageMask` must be a valid combination of VkPipelineStageFlagBits values
+- `VUID-VkSubpassDependency2-dstStageMask-parameter` (*checked*): `dstStageMask` must be a valid combination of VkPipelineStageFlagBits values
+- `VUID-VkSubpassDependency2-srcAccessMask-parameter` (*checked*): `srcAccessMask` must be a valid combination of VkAccessFlagBits values
+- `VUID-VkSubpassDependency2-dstAccessMask-parameter` (*checked*): `dstAccessMask` must be a valid combination of VkAccessFlagBits values
+- `VUID-VkSubpassDependency2-dependencyFlags-parameter` (*checked*): `dependencyFlags` must be a valid combination of VkDependencyFlagBits values
+- `VUID-VkSubpassDependency2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_DEPENDENCY_2`
+- `VUID-VkSubpassDependency2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkMemoryBarrier2*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDependency2<'a> {
@@ -2124,45 +2171,62 @@ impl<'a> SubpassDependency2<'a> {
 
 # Valid usage
 
-The rules are on [`VkSubpassDescription2`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription2.html). Settled by the wrappers:
+The rules of `VkSubpassDescription2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescription2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassDescription2-attachment-06913`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSubpassDescription2-pResolveAttachments-03065`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pResolveAttachments-03066`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pResolveAttachments-03067`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pResolveAttachments-03068`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pInputAttachments-02897`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pColorAttachments-02898`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pDepthStencilAttachment-02900`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-attachment-03073`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pPreserveAttachments-03074`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-layout-02528`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-attachment-02800`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-attachment-02801`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-- `VUID-VkSubpassDescription2-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubpassDescription2-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSubpassDescription2-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)
-- `VUID-VkSubpassDescription2-flags-parameter`: dynamic (checks every bit set is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSubpassDescription2-pipelineBindPoint-parameter`: dynamic (checks the value is one that the versions and extensions enabled on the instance or device define)
-- `VUID-VkSubpassDescription2-pInputAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescription2-pColorAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescription2-pResolveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescription2-pPreserveAttachments-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkSubpassDescription2-attachment-06916`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSubpassDescription2-attachment-06919`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSubpassDescription2-attachment-06922`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSubpassDescription2-pipelineBindPoint-03062`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSubpassDescription2-multiview-06558`: dynamic (checks the rule as written (recogniser: value must (not) be one of))
-- `VUID-VkSubpassDescription2-viewMask-06706`: dynamic (checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone))
-
-Left to the caller (listed one by one in the crate's `validation.json`): 23.
-
-- 8: checked by the safe methods in every build, but no oracle case breaks it yet
-- 1: checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first
-- 14: explicit rule; the wrappers do not check it*/
+- `VUID-VkSubpassDescription2-attachment-06912` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or …
+- `VUID-VkSubpassDescription2-attachment-06914` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or …
+- `VUID-VkSubpassDescription2-attachment-06915` (*yours*; explicit rule): If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED`, ts `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or …
+- `VUID-VkSubpassDescription2-colorAttachmentCount-03063` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `colorAttachmentCount` must be less than or equal to `VkPhysicalDeviceLimits::maxColorAttachments`
+- `VUID-VkSubpassDescription2-loadOp-03064` (*yours*; explicit rule): If the first use of an attachment in this render pass is as an input attachment, and the attachment is not also used as a color or depth/stencil attachment in the same subpass, then `loadOp` must not …
+- `VUID-VkSubpassDescription2-pResolveAttachments-02899` (*yours*; checked by the safe methods in every build, but no test breaks it): All attachments in `pResolveAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription2-attachment-02799` (*yours*; explicit rule): If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must be a valid combination of VkImageAspectFlagBits
+- `VUID-VkSubpassDescription2-attachment-06917` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or …
+- `VUID-VkSubpassDescription2-attachment-06918` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or …
+- `VUID-VkSubpassDescription2-attachment-06920` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, …
+- `VUID-VkSubpassDescription2-attachment-06251` (*yours*; explicit rule): If the `attachment` member of `pDepthStencilAttachment` is not `VK_ATTACHMENT_UNUSED` and its `pNext` chain includes a VkAttachmentDescriptionStencilLayout structure, the `layout` member of …
+- `VUID-VkSubpassDescription2-attachment-06921` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR`
+- `VUID-VkSubpassDescription2-attachment-06923` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR`
+- `VUID-VkSubpassDescription2-pipelineBindPoint-04953` (*yours*; explicit rule): `pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS` or `VK_PIPELINE_BIND_POINT_SUBPASS_SHADING_HUAWEI`
+- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06869` (*yours*; explicit rule): If none of the VK_AMD_mixed_attachment_samples extension, the VK_NV_framebuffer_mixed_samples extension, or the `multisampledRenderToSingleSampled` feature are enabled, all attachments in …
+- `VUID-VkSubpassDescription2-pNext-06870` (*yours*; explicit rule): If the `pNext` chain includes a VkMultisampledRenderToSingleSampledInfoEXT structure with `multisampledRenderToSingleSampledEnable` equal to `VK_TRUE`, then all attachments in `pColorAttachments` and …
+- `VUID-VkSubpassDescription2-pNext-06871` (*yours*; explicit rule): If the `pNext` chain includes a VkMultisampledRenderToSingleSampledInfoEXT structure with `multisampledRenderToSingleSampledEnable` equal to `VK_TRUE`, and `pDepthStencilAttachment` is not `NULL`, …
+- `VUID-VkSubpassDescription2-linearColorAttachment-06499` (*yours*; explicit rule): If the `linearColorAttachment` feature is enabled and the image is created with `VK_IMAGE_TILING_LINEAR`, all attachments in `pInputAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image …
+- `VUID-VkSubpassDescription2-linearColorAttachment-06500` (*yours*; explicit rule): If the `linearColorAttachment` feature is enabled and the image is created with `VK_IMAGE_TILING_LINEAR`, all attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image …
+- `VUID-VkSubpassDescription2-linearColorAttachment-06501` (*yours*; explicit rule): If the `linearColorAttachment` feature is enabled and the image is created with `VK_IMAGE_TILING_LINEAR`, all attachments in `pResolveAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image …
+- `VUID-VkSubpassDescription2-pColorAttachments-03070` (*yours*; explicit rule): If the VK_AMD_mixed_attachment_samples extension is enabled, all attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have a sample count that is smaller than or equal to the …
+- `VUID-VkSubpassDescription2-flags-03076` (*yours*; explicit rule): If `flags` includes `VK_SUBPASS_DESCRIPTION_PER_VIEW_POSITION_X_ONLY_BIT_NVX`, it must also include `VK_SUBPASS_DESCRIPTION_PER_VIEW_ATTRIBUTES_BIT_NVX`
+- `VUID-VkSubpassDescription2-attachment-04563` (*yours*; explicit rule): If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must not include VK_IMAGE_ASPECT_MEMORY_PLANE{ibit}BIT_EXT for any index i
+- `VUID-VkSubpassDescription2-attachment-06913` (*checked*): If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or …
+- `VUID-VkSubpassDescription2-pResolveAttachments-03065` (*checked*): If `pResolveAttachments` is not `NULL`, for each resolve attachment that does not have the value `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have the value …
+- `VUID-VkSubpassDescription2-pResolveAttachments-03066` (*checked*): If `pResolveAttachments` is not `NULL`, for each resolve attachment that is not `VK_ATTACHMENT_UNUSED`, the corresponding color attachment must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescription2-pResolveAttachments-03067` (*checked*): If `pResolveAttachments` is not `NULL`, each resolve attachment that is not `VK_ATTACHMENT_UNUSED` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescription2-pResolveAttachments-03068` (*checked*): Any given element of `pResolveAttachments` must have the same VkFormat as its corresponding color attachment
+- `VUID-VkSubpassDescription2-pInputAttachments-02897` (*checked*): All attachments in `pInputAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain at least `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT` or …
+- `VUID-VkSubpassDescription2-pColorAttachments-02898` (*checked*): All attachments in `pColorAttachments` that are not `VK_ATTACHMENT_UNUSED` must have image formats whose potential format features contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkSubpassDescription2-pDepthStencilAttachment-02900` (*checked*): If `pDepthStencilAttachment` is not `NULL` and the attachment is not `VK_ATTACHMENT_UNUSED` then it must have an image format whose potential format features contain …
+- `VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872` (*checked*): If none of the VK_AMD_mixed_attachment_samples extension, the VK_NV_framebuffer_mixed_samples extension, or the `multisampledRenderToSingleSampled` feature are enabled, all attachments in …
+- `VUID-VkSubpassDescription2-attachment-03073` (*checked*): Each element of `pPreserveAttachments` must not be `VK_ATTACHMENT_UNUSED`
+- `VUID-VkSubpassDescription2-pPreserveAttachments-03074` (*checked*): Any given element of `pPreserveAttachments` must not also be an element of any other member of the subpass description
+- `VUID-VkSubpassDescription2-layout-02528` (*checked*): If any attachment is used by more than one VkAttachmentReference2 member, then each use must use the same `layout`
+- `VUID-VkSubpassDescription2-attachment-02800` (*checked*): If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must not be `0`
+- `VUID-VkSubpassDescription2-attachment-02801` (*checked*): If the `attachment` member of any element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, then the `aspectMask` member must not include `VK_IMAGE_ASPECT_METADATA_BIT`
+- `VUID-VkSubpassDescription2-pDepthStencilAttachment-04440` (*checked*): An attachment must not be used in both `pDepthStencilAttachment` and `pColorAttachments`
+- `VUID-VkSubpassDescription2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSubpassDescription2-flags-parameter` (*checked*): `flags` must be a valid combination of VkSubpassDescriptionFlagBits values
+- `VUID-VkSubpassDescription2-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-VkSubpassDescription2-attachment-06916` (*checked*): If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or …
+- `VUID-VkSubpassDescription2-attachment-06919` (*checked*): If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, …
+- `VUID-VkSubpassDescription2-attachment-06922` (*checked*): If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR`
+- `VUID-VkSubpassDescription2-pipelineBindPoint-03062` (*checked*): `pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS`
+- `VUID-VkSubpassDescription2-multiview-06558` (*checked*): If the `multiview` feature is not enabled, `viewMask` must be `0`
+- `VUID-VkSubpassDescription2-viewMask-06706` (*checked*): The index of the most significant bit in `viewMask` must be less than `maxMultiviewViewCount`
+- `VUID-VkSubpassDescription2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_DESCRIPTION_2`
+- `VUID-VkSubpassDescription2-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkFragmentShadingRateAttachmentInfoKHR, …
+- `VUID-VkSubpassDescription2-pInputAttachments-parameter` (*by the types*): If `inputAttachmentCount` is not `0`, `pInputAttachments` must be a valid pointer to an array of `inputAttachmentCount` valid VkAttachmentReference2 structures
+- `VUID-VkSubpassDescription2-pColorAttachments-parameter` (*by the types*): If `colorAttachmentCount` is not `0`, `pColorAttachments` must be a valid pointer to an array of `colorAttachmentCount` valid VkAttachmentReference2 structures
+- `VUID-VkSubpassDescription2-pResolveAttachments-parameter` (*by the types*): If `colorAttachmentCount` is not `0`, and `pResolveAttachments` is not `NULL`, `pResolveAttachments` must be a valid pointer to an array of `colorAttachmentCount` valid VkAttachmentReference2 …
+- `VUID-VkSubpassDescription2-pDepthStencilAttachment-parameter` (*by the types*): If `pDepthStencilAttachment` is not `NULL`, `pDepthStencilAttachment` must be a valid pointer to a valid VkAttachmentReference2 structure
+- `VUID-VkSubpassDescription2-pPreserveAttachments-parameter` (*by the types*): If `preserveAttachmentCount` is not `0`, `pPreserveAttachments` must be a valid pointer to an array of `preserveAttachmentCount` `uint32_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescription2<'a> {
@@ -2254,12 +2318,26 @@ impl<'a> SubpassDescription2<'a> {
 
 # Valid usage
 
-The rules are on [`VkSubpassDescriptionDepthStencilResolve`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescriptionDepthStencilResolve.html). Settled by the wrappers:
+The rules of `VkSubpassDescriptionDepthStencilResolve` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassDescriptionDepthStencilResolve.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassDescriptionDepthStencilResolve-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-parameter`: static (set from a reference or slice, a valid pointer with its length)
-
-Left to the caller (listed one by one in the crate's `validation.json`): 16 (explicit rule; the wrappers do not check it).*/
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilAttachment` must not be `NULL` or have the value `VK_ATTACHMENT_UNUSED`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilAttachment` must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `pDepthStencilResolveAttachment` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-02651` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` then it must have an image format whose potential format features contain …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03181` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` and VkFormat of `pDepthStencilResolveAttachment` has a depth component, then the VkFormat of …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03182` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, and VkFormat of `pDepthStencilResolveAttachment` has a stencil component, then the VkFormat of …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03178` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, `depthResolveMode` and `stencilResolveMode` must not both be `VK_RESOLVE_MODE_NONE`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-depthResolveMode-03183` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` and the VkFormat of `pDepthStencilResolveAttachment` has a depth component, then the value of …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-stencilResolveMode-03184` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED` and the VkFormat of `pDepthStencilResolveAttachment` has a stencil component, then the value of …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03185` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, the VkFormat of `pDepthStencilResolveAttachment` has both depth and stencil components, …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03186` (*yours*; explicit rule): If `pDepthStencilResolveAttachment` is not `NULL` and does not have the value `VK_ATTACHMENT_UNUSED`, the VkFormat of `pDepthStencilResolveAttachment` has both depth and stencil components, …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06873` (*yours*; explicit rule): If the `pNext` chain of VkSubpassDescription2 includes a `VkMultisampledRenderToSingleSampledInfoEXT` structure, the `multisampledRenderToSingleSampledEnable` field is `VK_TRUE`, and …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06874` (*yours*; explicit rule): If the `pNext` chain of VkSubpassDescription2 includes a `VkMultisampledRenderToSingleSampledInfoEXT` structure whose `multisampledRenderToSingleSampledEnable` field is `VK_TRUE`, and …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06875` (*yours*; explicit rule): If the `pNext` chain of VkSubpassDescription2 includes a `VkMultisampledRenderToSingleSampledInfoEXT` structure whose `multisampledRenderToSingleSampledEnable` field is `VK_TRUE`, and …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06876` (*yours*; explicit rule): If the `pNext` chain of VkSubpassDescription2 includes a `VkMultisampledRenderToSingleSampledInfoEXT` structure whose `multisampledRenderToSingleSampledEnable` field is `VK_TRUE`, …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pNext-06877` (*yours*; explicit rule): If the `pNext` chain of VkSubpassDescription2 includes a `VkMultisampledRenderToSingleSampledInfoEXT` structure whose `multisampledRenderToSingleSampledEnable` field is `VK_TRUE`, …
+- `VUID-VkSubpassDescriptionDepthStencilResolve-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_DESCRIPTION_DEPTH_STENCIL_RESOLVE`
+- `VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-parameter` (*by the types*): If `pDepthStencilResolveAttachment` is not `NULL`, `pDepthStencilResolveAttachment` must be a valid pointer to a valid VkAttachmentReference2 structure*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDescriptionDepthStencilResolve<'a> {
@@ -2300,11 +2378,11 @@ for SubpassDescriptionDepthStencilResolve<'a> {}
 
 # Valid usage
 
-The rules are on [`VkSubpassEndInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassEndInfo.html). Settled by the wrappers:
+The rules of `VkSubpassEndInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubpassEndInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubpassEndInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkSubpassEndInfo-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head, and the checks refuse a node of a version or extension not enabled where the call runs (tests/creation_checks.rs))
-- `VUID-VkSubpassEndInfo-sType-unique`: dynamic (walks the chain and checks no structure type appears twice)*/
+- `VUID-VkSubpassEndInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSubpassEndInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_END_INFO`
+- `VUID-VkSubpassEndInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkSubpassFragmentDensityMapOffsetEndInfoQCOM*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassEndInfo<'a> {
@@ -2316,11 +2394,11 @@ safe_struct!(SubpassEndInfo, 'a; zeroed chained);
 
 # Valid usage
 
-The rules are on [`VkTimelineSemaphoreSubmitInfo`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkTimelineSemaphoreSubmitInfo.html). Settled by the wrappers:
+The rules of `VkTimelineSemaphoreSubmitInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkTimelineSemaphoreSubmitInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkTimelineSemaphoreSubmitInfo-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkTimelineSemaphoreSubmitInfo-pWaitSemaphoreValues-parameter`: static (set from a reference or slice, a valid pointer with its length)
-- `VUID-VkTimelineSemaphoreSubmitInfo-pSignalSemaphoreValues-parameter`: static (set from a reference or slice, a valid pointer with its length)*/
+- `VUID-VkTimelineSemaphoreSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_TIMELINE_SEMAPHORE_SUBMIT_INFO`
+- `VUID-VkTimelineSemaphoreSubmitInfo-pWaitSemaphoreValues-parameter` (*by the types*): If `waitSemaphoreValueCount` is not `0`, and `pWaitSemaphoreValues` is not `NULL`, `pWaitSemaphoreValues` must be a valid pointer to an array of `waitSemaphoreValueCount` `uint64_t` values
+- `VUID-VkTimelineSemaphoreSubmitInfo-pSignalSemaphoreValues-parameter` (*by the types*): If `signalSemaphoreValueCount` is not `0`, and `pSignalSemaphoreValues` is not `NULL`, `pSignalSemaphoreValues` must be a valid pointer to an array of `signalSemaphoreValueCount` `uint64_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct TimelineSemaphoreSubmitInfo<'a> {

@@ -6,11 +6,11 @@ use super::*;
 
 # Valid usage
 
-The rules are on [`VkDescriptorSetBindingReferenceVALVE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetBindingReferenceVALVE.html). Settled by the wrappers:
+The rules of `VkDescriptorSetBindingReferenceVALVE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetBindingReferenceVALVE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorSetBindingReferenceVALVE-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetBindingReferenceVALVE-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)
-- `VUID-VkDescriptorSetBindingReferenceVALVE-descriptorSetLayout-parameter`: static (set from wrappers, which always hold valid handles)*/
+- `VUID-VkDescriptorSetBindingReferenceVALVE-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_BINDING_REFERENCE_VALVE`
+- `VUID-VkDescriptorSetBindingReferenceVALVE-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDescriptorSetBindingReferenceVALVE-descriptorSetLayout-parameter` (*by the types*): `descriptorSetLayout` must be a valid VkDescriptorSetLayout handle*/
 #[cfg(feature = "valve_descriptor_set_host_mapping")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -53,10 +53,10 @@ impl<'a> DescriptorSetBindingReferenceVALVE<'a> {
 
 # Valid usage
 
-The rules are on [`VkDescriptorSetLayoutHostMappingInfoVALVE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutHostMappingInfoVALVE.html). Settled by the wrappers:
+The rules of `VkDescriptorSetLayoutHostMappingInfoVALVE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetLayoutHostMappingInfoVALVE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorSetLayoutHostMappingInfoVALVE-sType-sType`: static (the safe struct's constructor sets `sType`)
-- `VUID-VkDescriptorSetLayoutHostMappingInfoVALVE-pNext-pNext`: static (`push_next` accepts only structs that implement `Extends` for the head)*/
+- `VUID-VkDescriptorSetLayoutHostMappingInfoVALVE-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_HOST_MAPPING_INFO_VALVE`
+- `VUID-VkDescriptorSetLayoutHostMappingInfoVALVE-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "valve_descriptor_set_host_mapping")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -87,9 +87,9 @@ impl<'a> DescriptorSetLayoutHostMappingInfoVALVE<'a> {
 
 # Valid usage
 
-The rules are on [`VkPhysicalDeviceDescriptorSetHostMappingFeaturesVALVE`'s reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorSetHostMappingFeaturesVALVE.html). Settled by the wrappers:
+The rules of `VkPhysicalDeviceDescriptorSetHostMappingFeaturesVALVE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPhysicalDeviceDescriptorSetHostMappingFeaturesVALVE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPhysicalDeviceDescriptorSetHostMappingFeaturesVALVE-sType-sType`: static (the safe struct's constructor sets `sType`)*/
+- `VUID-VkPhysicalDeviceDescriptorSetHostMappingFeaturesVALVE-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DESCRIPTOR_SET_HOST_MAPPING_FEATURES_VALVE`*/
 #[cfg(feature = "valve_descriptor_set_host_mapping")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
