@@ -288,9 +288,18 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         parts.push(quote!(zeroed));
         quote!()
     } else {
+        // What `new` takes is what has no zero form (a handle, a nested struct or
+        // pointer, a name); a number the struct needs, such as a queue family
+        // index, starts at 0 like the rest, so the doc does not promise more.
+        let s_type = model.types[name].members.iter().any(|m| m.name == "sType");
+        let new_doc = format!(
+            " A struct with the members that have no zero form set from the arguments \
+             (handles, nested structs and pointers, names) and every other member zero \
+             or empty{}; set the rest with the setters.",
+            if s_type { ", its `sType` set" } else { "" }
+        );
         quote! {
-            /// A struct with its required members set and every other member zero or
-            /// empty (and `sType` set).
+            #[doc = #new_doc]
             #[inline]
             pub fn new(#(#ctor_args),*) -> Self {
                 Self {

@@ -21,8 +21,7 @@ pub struct DebugMarkerMarkerInfoEXT<'a> {
 safe_struct!(#[cfg(feature = "ext_debug_marker")] DebugMarkerMarkerInfoEXT, 'a; chained);
 #[cfg(feature = "ext_debug_marker")]
 impl<'a> DebugMarkerMarkerInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(marker_name: &'a core::ffi::CStr) -> Self {
         Self {
@@ -71,8 +70,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_debug_marker")]
 impl<'a> DebugMarkerObjectNameInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(object_name: &'a core::ffi::CStr) -> Self {
         Self {

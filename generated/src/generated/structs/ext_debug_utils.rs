@@ -21,8 +21,7 @@ pub struct DebugUtilsLabelEXT<'a> {
 safe_struct!(#[cfg(feature = "ext_debug_utils")] DebugUtilsLabelEXT, 'a; chained);
 #[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsLabelEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(label_name: &'a core::ffi::CStr) -> Self {
         Self {
@@ -73,8 +72,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_debug_utils")]
 impl<'a> DebugUtilsMessengerCallbackDataEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(message: &'a core::ffi::CStr) -> Self {
         Self {

@@ -87,8 +87,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_descriptor_buffer")]
 impl<'a> BufferCaptureDescriptorDataInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -215,8 +214,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_descriptor_buffer")]
 impl<'a> DescriptorBufferBindingPushDescriptorBufferHandleEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -310,8 +308,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_descriptor_buffer")]
 impl<'a> ImageCaptureDescriptorDataInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {
@@ -352,8 +349,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_descriptor_buffer")]
 impl<'a> ImageViewCaptureDescriptorDataInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image_view: &'a ImageView) -> Self {
         Self {
@@ -526,8 +522,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_descriptor_buffer")]
 impl<'a> SamplerCaptureDescriptorDataInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(sampler: &'a Sampler) -> Self {
         Self {

@@ -22,8 +22,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_metal_objects")]
 impl<'a> ExportMetalBufferInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(memory: &'a DeviceMemory) -> Self {
         Self {
@@ -70,8 +69,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_metal_objects")]
 impl<'a> ExportMetalCommandQueueInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(queue: &'a Queue) -> Self {
         Self {
@@ -148,8 +146,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_metal_objects")]
 impl<'a> ExportMetalIOSurfaceInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {

@@ -27,8 +27,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_opacity_micromap")]
 impl<'a> AccelerationStructureTrianglesOpacityMicromapEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(micromap: &'a MicromapEXT) -> Self {
         Self {
@@ -111,8 +110,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_opacity_micromap")]
 impl<'a> CopyMemoryToMicromapInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(dst: &'a MicromapEXT) -> Self {
         Self {
@@ -163,8 +161,7 @@ pub struct CopyMicromapInfoEXT<'a> {
 safe_struct!(#[cfg(feature = "ext_opacity_micromap")] CopyMicromapInfoEXT, 'a; chained);
 #[cfg(feature = "ext_opacity_micromap")]
 impl<'a> CopyMicromapInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src: &'a MicromapEXT, dst: &'a MicromapEXT) -> Self {
         Self {
@@ -220,8 +217,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_opacity_micromap")]
 impl<'a> CopyMicromapToMemoryInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src: &'a MicromapEXT) -> Self {
         Self {
@@ -389,8 +385,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_opacity_micromap")]
 impl<'a> MicromapCreateInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {

@@ -20,8 +20,7 @@ pub struct AttachmentSampleLocationsEXT<'a> {
 safe_struct!(#[cfg(feature = "ext_sample_locations")] AttachmentSampleLocationsEXT, 'a;);
 #[cfg(feature = "ext_sample_locations")]
 impl<'a> AttachmentSampleLocationsEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(sample_locations_info: SampleLocationsInfoEXT<'a>) -> Self {
         Self {
@@ -105,8 +104,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_sample_locations")]
 impl<'a> PipelineSampleLocationsStateCreateInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(sample_locations_info: SampleLocationsInfoEXT<'a>) -> Self {
         Self {
@@ -243,8 +241,7 @@ pub struct SubpassSampleLocationsEXT<'a> {
 safe_struct!(#[cfg(feature = "ext_sample_locations")] SubpassSampleLocationsEXT, 'a;);
 #[cfg(feature = "ext_sample_locations")]
 impl<'a> SubpassSampleLocationsEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(sample_locations_info: SampleLocationsInfoEXT<'a>) -> Self {
         Self {

@@ -23,8 +23,7 @@ safe_struct!(
 );
 #[cfg(feature = "ext_validation_cache")]
 impl<'a> ShaderModuleValidationCacheCreateInfoEXT<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(validation_cache: &'a ValidationCacheEXT) -> Self {
         Self {

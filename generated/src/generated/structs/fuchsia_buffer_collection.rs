@@ -24,8 +24,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_buffer_collection")]
 impl<'a> BufferCollectionBufferCreateInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(collection: &'a BufferCollectionFUCHSIA) -> Self {
         Self {
@@ -159,8 +158,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_buffer_collection")]
 impl<'a> BufferCollectionImageCreateInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(collection: &'a BufferCollectionFUCHSIA) -> Self {
         Self {
@@ -216,8 +214,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_buffer_collection")]
 impl<'a> BufferCollectionPropertiesFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(sysmem_color_space_index: SysmemColorSpaceFUCHSIA<'a>) -> Self {
         Self {
@@ -329,8 +326,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_buffer_collection")]
 impl<'a> BufferConstraintsInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         create_info: BufferCreateInfo<'a>,
@@ -399,8 +395,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_buffer_collection")]
 impl<'a> ImageConstraintsInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         buffer_collection_constraints: BufferCollectionConstraintsInfoFUCHSIA<'a>,
@@ -466,8 +461,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_buffer_collection")]
 impl<'a> ImageFormatConstraintsInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image_create_info: ImageCreateInfo<'a>) -> Self {
         Self {
@@ -532,8 +526,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_buffer_collection")]
 impl<'a> ImportMemoryBufferCollectionFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(collection: &'a BufferCollectionFUCHSIA) -> Self {
         Self {

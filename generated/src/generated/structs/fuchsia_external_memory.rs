@@ -70,8 +70,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_external_memory")]
 impl<'a> MemoryGetZirconHandleInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(memory: &'a DeviceMemory) -> Self {
         Self {

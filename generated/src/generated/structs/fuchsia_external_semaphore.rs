@@ -30,8 +30,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_external_semaphore")]
 impl<'a> ImportSemaphoreZirconHandleInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {
@@ -100,8 +99,7 @@ safe_struct!(
 );
 #[cfg(feature = "fuchsia_external_semaphore")]
 impl<'a> SemaphoreGetZirconHandleInfoFUCHSIA<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {

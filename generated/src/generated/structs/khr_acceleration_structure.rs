@@ -176,8 +176,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'a> AccelerationStructureCreateInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -250,8 +249,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'a> AccelerationStructureDeviceAddressInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(acceleration_structure: &'a AccelerationStructureKHR) -> Self {
         Self {
@@ -474,8 +472,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'a> CopyAccelerationStructureInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         src: &'a AccelerationStructureKHR,
@@ -535,8 +532,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'a> CopyAccelerationStructureToMemoryInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src: &'a AccelerationStructureKHR) -> Self {
         Self {
@@ -587,8 +583,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'a> CopyMemoryToAccelerationStructureInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(dst: &'a AccelerationStructureKHR) -> Self {
         Self {

@@ -33,8 +33,7 @@ pub struct AcquireNextImageInfoKHR<'a> {
 safe_struct!(#[cfg(feature = "khr_swapchain")] AcquireNextImageInfoKHR, 'a; chained);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> AcquireNextImageInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(swapchain: &'a SwapchainKHR) -> Self {
         Self {
@@ -98,8 +97,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_swapchain")]
 impl<'a> BindImageMemorySwapchainInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(swapchain: &'a SwapchainKHR) -> Self {
         Self {

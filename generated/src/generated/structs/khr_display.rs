@@ -92,8 +92,7 @@ pub struct DisplaySurfaceCreateInfoKHR<'a> {
 safe_struct!(#[cfg(feature = "khr_display")] DisplaySurfaceCreateInfoKHR, 'a; chained);
 #[cfg(feature = "khr_display")]
 impl<'a> DisplaySurfaceCreateInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(display_mode: &'a DisplayModeKHR) -> Self {
         Self {

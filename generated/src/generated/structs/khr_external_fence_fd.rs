@@ -26,8 +26,7 @@ pub struct FenceGetFdInfoKHR<'a> {
 safe_struct!(#[cfg(feature = "khr_external_fence_fd")] FenceGetFdInfoKHR, 'a; chained);
 #[cfg(feature = "khr_external_fence_fd")]
 impl<'a> FenceGetFdInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(fence: &'a Fence) -> Self {
         Self {
@@ -77,8 +76,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_external_fence_fd")]
 impl<'a> ImportFenceFdInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(fence: &'a Fence) -> Self {
         Self {

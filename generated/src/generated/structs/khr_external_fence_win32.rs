@@ -84,8 +84,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_external_fence_win32")]
 impl<'a> FenceGetWin32HandleInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(fence: &'a Fence) -> Self {
         Self {
@@ -139,8 +138,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_external_fence_win32")]
 impl<'a> ImportFenceWin32HandleInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(fence: &'a Fence) -> Self {
         Self {

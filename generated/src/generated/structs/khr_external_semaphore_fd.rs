@@ -31,8 +31,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_external_semaphore_fd")]
 impl<'a> ImportSemaphoreFdInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {
@@ -97,8 +96,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_external_semaphore_fd")]
 impl<'a> SemaphoreGetFdInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {

@@ -152,8 +152,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_external_semaphore_win32")]
 impl<'a> ImportSemaphoreWin32HandleInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {
@@ -232,8 +231,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_external_semaphore_win32")]
 impl<'a> SemaphoreGetWin32HandleInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {

@@ -158,8 +158,7 @@ pub struct SwapchainCreateInfoKHR<'a> {
 safe_struct!(#[cfg(feature = "khr_swapchain")] SwapchainCreateInfoKHR, 'a; chained);
 #[cfg(feature = "khr_swapchain")]
 impl<'a> SwapchainCreateInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(surface: &'a SurfaceKHR) -> Self {
         Self {

@@ -54,8 +54,7 @@ pub struct VideoDecodeInfoKHR<'a> {
 safe_struct!(#[cfg(feature = "khr_video_decode_queue")] VideoDecodeInfoKHR, 'a; chained);
 #[cfg(feature = "khr_video_decode_queue")]
 impl<'a> VideoDecodeInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         src_buffer: &'a Buffer,

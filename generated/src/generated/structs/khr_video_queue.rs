@@ -25,8 +25,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_video_queue")]
 impl<'a> BindVideoSessionMemoryInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(memory: &'a DeviceMemory) -> Self {
         Self {
@@ -173,8 +172,7 @@ pub struct VideoBeginCodingInfoKHR<'a> {
 safe_struct!(#[cfg(feature = "khr_video_queue")] VideoBeginCodingInfoKHR, 'a; chained);
 #[cfg(feature = "khr_video_queue")]
 impl<'a> VideoBeginCodingInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(video_session: &'a VideoSessionKHR) -> Self {
         Self {
@@ -344,8 +342,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_video_queue")]
 impl<'a> VideoPictureResourceInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image_view_binding: &'a ImageView) -> Self {
         Self {
@@ -566,8 +563,7 @@ pub struct VideoSessionCreateInfoKHR<'a> {
 safe_struct!(#[cfg(feature = "khr_video_queue")] VideoSessionCreateInfoKHR, 'a; chained);
 #[cfg(feature = "khr_video_queue")]
 impl<'a> VideoSessionCreateInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         video_profile: &'a VideoProfileInfoKHR<'a>,
@@ -699,8 +695,7 @@ safe_struct!(
 );
 #[cfg(feature = "khr_video_queue")]
 impl<'a> VideoSessionParametersCreateInfoKHR<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(video_session: &'a VideoSessionKHR) -> Self {
         Self {

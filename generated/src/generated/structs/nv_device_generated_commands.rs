@@ -51,8 +51,7 @@ safe_struct!(
 );
 #[cfg(feature = "nv_device_generated_commands")]
 impl<'a> GeneratedCommandsInfoNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         pipeline: &'a Pipeline,
@@ -172,8 +171,7 @@ safe_struct!(
 );
 #[cfg(feature = "nv_device_generated_commands")]
 impl<'a> GeneratedCommandsMemoryRequirementsInfoNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         pipeline: &'a Pipeline,
@@ -545,8 +543,7 @@ pub struct IndirectCommandsStreamNV<'a> {
 safe_struct!(#[cfg(feature = "nv_device_generated_commands")] IndirectCommandsStreamNV;);
 #[cfg(feature = "nv_device_generated_commands")]
 impl<'a> IndirectCommandsStreamNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {

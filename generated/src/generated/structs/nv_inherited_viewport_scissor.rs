@@ -27,8 +27,7 @@ safe_struct!(
 );
 #[cfg(feature = "nv_inherited_viewport_scissor")]
 impl<'a> CommandBufferInheritanceViewportScissorInfoNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(viewport_depths: &'a vk::Viewport) -> Self {
         Self {

@@ -25,8 +25,7 @@ safe_struct!(
 );
 #[cfg(feature = "nv_ray_tracing")]
 impl<'a> AccelerationStructureCreateInfoNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(info: AccelerationStructureInfoNV<'a>) -> Self {
         Self {
@@ -132,8 +131,7 @@ safe_struct!(
 );
 #[cfg(feature = "nv_ray_tracing")]
 impl<'a> AccelerationStructureMemoryRequirementsInfoNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(acceleration_structure: &'a AccelerationStructureNV) -> Self {
         Self {
@@ -189,8 +187,7 @@ safe_struct!(
 );
 #[cfg(feature = "nv_ray_tracing")]
 impl<'a> BindAccelerationStructureMemoryInfoNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         acceleration_structure: &'a AccelerationStructureNV,
@@ -296,8 +293,7 @@ pub struct GeometryDataNV<'a> {
 safe_struct!(#[cfg(feature = "nv_ray_tracing")] GeometryDataNV, 'a;);
 #[cfg(feature = "nv_ray_tracing")]
 impl<'a> GeometryDataNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(triangles: GeometryTrianglesNV<'a>, aabbs: GeometryAABBNV<'a>) -> Self {
         Self {
@@ -344,8 +340,7 @@ pub struct GeometryNV<'a> {
 safe_struct!(#[cfg(feature = "nv_ray_tracing")] GeometryNV, 'a; chained);
 #[cfg(feature = "nv_ray_tracing")]
 impl<'a> GeometryNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(geometry: GeometryDataNV<'a>) -> Self {
         Self {
@@ -551,8 +546,7 @@ safe_struct!(
 );
 #[cfg(feature = "nv_ray_tracing")]
 impl<'a> RayTracingPipelineCreateInfoNV<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(layout: &'a PipelineLayout) -> Self {
         Self {

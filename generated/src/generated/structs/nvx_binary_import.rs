@@ -22,8 +22,7 @@ pub struct CuFunctionCreateInfoNVX<'a> {
 safe_struct!(#[cfg(feature = "nvx_binary_import")] CuFunctionCreateInfoNVX, 'a; chained);
 #[cfg(feature = "nvx_binary_import")]
 impl<'a> CuFunctionCreateInfoNVX<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(module: &'a CuModuleNVX, name: &'a core::ffi::CStr) -> Self {
         Self {
@@ -69,8 +68,7 @@ pub struct CuLaunchInfoNVX<'a> {
 safe_struct!(#[cfg(feature = "nvx_binary_import")] CuLaunchInfoNVX, 'a; chained);
 #[cfg(feature = "nvx_binary_import")]
 impl<'a> CuLaunchInfoNVX<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(function: &'a CuFunctionNVX) -> Self {
         Self {

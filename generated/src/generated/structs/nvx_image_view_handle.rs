@@ -49,8 +49,7 @@ safe_struct!(
 );
 #[cfg(feature = "nvx_image_view_handle")]
 impl<'a> ImageViewHandleInfoNVX<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image_view: &'a ImageView) -> Self {
         Self {

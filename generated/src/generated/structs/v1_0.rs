@@ -369,8 +369,7 @@ pub struct BufferMemoryBarrier<'a> {
 }
 safe_struct!(BufferMemoryBarrier, 'a; chained);
 impl<'a> BufferMemoryBarrier<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -459,8 +458,7 @@ pub struct BufferViewCreateInfo<'a> {
 }
 safe_struct!(BufferViewCreateInfo, 'a; chained);
 impl<'a> BufferViewCreateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -520,8 +518,7 @@ pub struct CommandBufferAllocateInfo<'a> {
 }
 safe_struct!(CommandBufferAllocateInfo, 'a; chained);
 impl<'a> CommandBufferAllocateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(command_pool: &'a CommandPool) -> Self {
         Self {
@@ -741,8 +738,7 @@ pub struct ComputePipelineCreateInfo<'a> {
 }
 safe_struct!(ComputePipelineCreateInfo, 'a; chained);
 impl<'a> ComputePipelineCreateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         stage: PipelineShaderStageCreateInfo<'a>,
@@ -826,8 +822,7 @@ pub struct CopyDescriptorSet<'a> {
 }
 safe_struct!(CopyDescriptorSet, 'a; chained);
 impl<'a> CopyDescriptorSet<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src_set: &'a DescriptorSet, dst_set: &'a DescriptorSet) -> Self {
         Self {
@@ -964,8 +959,7 @@ pub struct DescriptorImageInfo<'a> {
 }
 safe_struct!(DescriptorImageInfo;);
 impl<'a> DescriptorImageInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(sampler: &'a Sampler, image_view: &'a ImageView) -> Self {
         Self {
@@ -1097,8 +1091,7 @@ pub struct DescriptorSetAllocateInfo<'a> {
 }
 safe_struct!(DescriptorSetAllocateInfo, 'a; chained);
 impl<'a> DescriptorSetAllocateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(descriptor_pool: &'a DescriptorPool) -> Self {
         Self {
@@ -1555,8 +1548,7 @@ pub struct FramebufferCreateInfo<'a> {
 }
 safe_struct!(FramebufferCreateInfo, 'a; chained);
 impl<'a> FramebufferCreateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(render_pass: &'a RenderPass) -> Self {
         Self {

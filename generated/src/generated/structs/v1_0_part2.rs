@@ -815,8 +815,7 @@ pub struct ImageMemoryBarrier<'a> {
 }
 safe_struct!(ImageMemoryBarrier, 'a; chained);
 impl<'a> ImageMemoryBarrier<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {
@@ -1002,8 +1001,7 @@ pub struct ImageViewCreateInfo<'a> {
 }
 safe_struct!(ImageViewCreateInfo, 'a; chained);
 impl<'a> ImageViewCreateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {

@@ -90,8 +90,7 @@ pub struct MappedMemoryRange<'a> {
 }
 safe_struct!(MappedMemoryRange, 'a; chained);
 impl<'a> MappedMemoryRange<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(memory: &'a DeviceMemory) -> Self {
         Self {
@@ -900,8 +899,7 @@ pub struct PipelineShaderStageCreateInfo<'a> {
 }
 safe_struct!(PipelineShaderStageCreateInfo, 'a; chained);
 impl<'a> PipelineShaderStageCreateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(name: &'a core::ffi::CStr) -> Self {
         Self {
@@ -1251,8 +1249,7 @@ pub struct RenderPassBeginInfo<'a> {
 }
 safe_struct!(RenderPassBeginInfo, 'a; chained);
 impl<'a> RenderPassBeginInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(render_pass: &'a RenderPass, framebuffer: &'a Framebuffer) -> Self {
         Self {
@@ -1647,8 +1644,7 @@ pub struct SparseBufferMemoryBindInfo<'a> {
 }
 safe_struct!(SparseBufferMemoryBindInfo, 'a;);
 impl<'a> SparseBufferMemoryBindInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -1758,8 +1754,7 @@ pub struct SparseImageMemoryBindInfo<'a> {
 }
 safe_struct!(SparseImageMemoryBindInfo, 'a;);
 impl<'a> SparseImageMemoryBindInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {
@@ -1802,8 +1797,7 @@ pub struct SparseImageOpaqueMemoryBindInfo<'a> {
 }
 safe_struct!(SparseImageOpaqueMemoryBindInfo, 'a;);
 impl<'a> SparseImageOpaqueMemoryBindInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {

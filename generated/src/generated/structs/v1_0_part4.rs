@@ -310,8 +310,7 @@ pub struct WriteDescriptorSet<'a> {
 }
 safe_struct!(WriteDescriptorSet, 'a; chained);
 impl<'a> WriteDescriptorSet<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(dst_set: &'a DescriptorSet) -> Self {
         Self {

@@ -70,8 +70,7 @@ pub struct BindBufferMemoryInfo<'a> {
 }
 safe_struct!(BindBufferMemoryInfo, 'a; chained);
 impl<'a> BindBufferMemoryInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer, memory: &'a DeviceMemory) -> Self {
         Self {
@@ -198,8 +197,7 @@ pub struct BindImageMemoryInfo<'a> {
 }
 safe_struct!(BindImageMemoryInfo, 'a; chained);
 impl<'a> BindImageMemoryInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image, memory: &'a DeviceMemory) -> Self {
         Self {
@@ -273,8 +271,7 @@ pub struct BufferMemoryRequirementsInfo2<'a> {
 }
 safe_struct!(BufferMemoryRequirementsInfo2, 'a; chained);
 impl<'a> BufferMemoryRequirementsInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -334,8 +331,7 @@ pub struct DescriptorUpdateTemplateCreateInfo<'a> {
 }
 safe_struct!(DescriptorUpdateTemplateCreateInfo, 'a; chained);
 impl<'a> DescriptorUpdateTemplateCreateInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(
         descriptor_set_layout: &'a DescriptorSetLayout,
@@ -850,8 +846,7 @@ pub struct ImageMemoryRequirementsInfo2<'a> {
 }
 safe_struct!(ImageMemoryRequirementsInfo2, 'a; chained);
 impl<'a> ImageMemoryRequirementsInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {
@@ -913,8 +908,7 @@ pub struct ImageSparseMemoryRequirementsInfo2<'a> {
 }
 safe_struct!(ImageSparseMemoryRequirementsInfo2, 'a; chained);
 impl<'a> ImageSparseMemoryRequirementsInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {
@@ -1907,8 +1901,7 @@ pub struct SamplerYcbcrConversionInfo<'a> {
 }
 safe_struct!(SamplerYcbcrConversionInfo, 'a; chained);
 impl<'a> SamplerYcbcrConversionInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(conversion: &'a SamplerYcbcrConversion) -> Self {
         Self {

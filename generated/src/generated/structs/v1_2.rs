@@ -232,8 +232,7 @@ pub struct BufferDeviceAddressInfo<'a> {
 }
 safe_struct!(BufferDeviceAddressInfo, 'a; chained);
 impl<'a> BufferDeviceAddressInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -379,8 +378,7 @@ pub struct DeviceMemoryOpaqueCaptureAddressInfo<'a> {
 }
 safe_struct!(DeviceMemoryOpaqueCaptureAddressInfo, 'a; chained);
 impl<'a> DeviceMemoryOpaqueCaptureAddressInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(memory: &'a DeviceMemory) -> Self {
         Self {
@@ -1925,8 +1923,7 @@ pub struct SemaphoreSignalInfo<'a> {
 }
 safe_struct!(SemaphoreSignalInfo, 'a; chained);
 impl<'a> SemaphoreSignalInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {

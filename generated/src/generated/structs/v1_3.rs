@@ -73,8 +73,7 @@ pub struct BlitImageInfo2<'a> {
 }
 safe_struct!(BlitImageInfo2, 'a; chained);
 impl<'a> BlitImageInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src_image: &'a Image, dst_image: &'a Image) -> Self {
         Self {
@@ -365,8 +364,7 @@ pub struct BufferMemoryBarrier2<'a> {
 }
 safe_struct!(BufferMemoryBarrier2, 'a; chained);
 impl<'a> BufferMemoryBarrier2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(buffer: &'a Buffer) -> Self {
         Self {
@@ -522,8 +520,7 @@ pub struct CommandBufferSubmitInfo<'a> {
 }
 safe_struct!(CommandBufferSubmitInfo, 'a; chained);
 impl<'a> CommandBufferSubmitInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(command_buffer: &'a CommandBuffer) -> Self {
         Self {
@@ -577,8 +574,7 @@ pub struct CopyBufferInfo2<'a> {
 }
 safe_struct!(CopyBufferInfo2, 'a; chained);
 impl<'a> CopyBufferInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src_buffer: &'a Buffer, dst_buffer: &'a Buffer) -> Self {
         Self {
@@ -676,8 +672,7 @@ pub struct CopyBufferToImageInfo2<'a> {
 }
 safe_struct!(CopyBufferToImageInfo2, 'a; chained);
 impl<'a> CopyBufferToImageInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src_buffer: &'a Buffer, dst_image: &'a Image) -> Self {
         Self {
@@ -811,8 +806,7 @@ pub struct CopyImageInfo2<'a> {
 }
 safe_struct!(CopyImageInfo2, 'a; chained);
 impl<'a> CopyImageInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src_image: &'a Image, dst_image: &'a Image) -> Self {
         Self {
@@ -921,8 +915,7 @@ pub struct CopyImageToBufferInfo2<'a> {
 }
 safe_struct!(CopyImageToBufferInfo2, 'a; chained);
 impl<'a> CopyImageToBufferInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src_image: &'a Image, dst_buffer: &'a Buffer) -> Self {
         Self {
@@ -1055,8 +1048,7 @@ pub struct DeviceBufferMemoryRequirements<'a> {
 }
 safe_struct!(DeviceBufferMemoryRequirements, 'a; chained);
 impl<'a> DeviceBufferMemoryRequirements<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(create_info: &'a BufferCreateInfo<'a>) -> Self {
         Self {
@@ -1101,8 +1093,7 @@ pub struct DeviceImageMemoryRequirements<'a> {
 }
 safe_struct!(DeviceImageMemoryRequirements, 'a; chained);
 impl<'a> DeviceImageMemoryRequirements<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(create_info: &'a ImageCreateInfo<'a>) -> Self {
         Self {

@@ -186,8 +186,7 @@ pub struct ImageMemoryBarrier2<'a> {
 }
 safe_struct!(ImageMemoryBarrier2, 'a; chained);
 impl<'a> ImageMemoryBarrier2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(image: &'a Image) -> Self {
         Self {
@@ -1464,8 +1463,7 @@ pub struct ResolveImageInfo2<'a> {
 }
 safe_struct!(ResolveImageInfo2, 'a; chained);
 impl<'a> ResolveImageInfo2<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(src_image: &'a Image, dst_image: &'a Image) -> Self {
         Self {

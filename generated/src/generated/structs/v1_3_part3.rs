@@ -34,8 +34,7 @@ pub struct SemaphoreSubmitInfo<'a> {
 }
 safe_struct!(SemaphoreSubmitInfo, 'a; chained);
 impl<'a> SemaphoreSubmitInfo<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(semaphore: &'a Semaphore) -> Self {
         Self {

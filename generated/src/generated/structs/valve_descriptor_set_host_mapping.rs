@@ -24,8 +24,7 @@ safe_struct!(
 );
 #[cfg(feature = "valve_descriptor_set_host_mapping")]
 impl<'a> DescriptorSetBindingReferenceVALVE<'a> {
-    /// A struct with its required members set and every other member zero or
-    /// empty (and `sType` set).
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
     pub fn new(descriptor_set_layout: &'a DescriptorSetLayout) -> Self {
         Self {
