@@ -325,7 +325,10 @@ fn image_info<'a>(
     view: &'a tuff::ImageView,
     layout: L,
 ) -> [tuff::DescriptorImageInfo<'a>; 1] {
-    [tuff::DescriptorImageInfo::new(sampler, view).image_layout(layout)]
+    [tuff::DescriptorImageInfo::new()
+        .sampler(Some(sampler))
+        .image_view(Some(view))
+        .image_layout(layout)]
 }
 
 /// One buffer info.
@@ -417,9 +420,33 @@ fn image_descriptors_fit_their_type() {
     let both_aspects = info(&o.depth_stencil, L::DEPTH_STENCIL_READ_ONLY_OPTIMAL);
     let good = info(&o.view, read);
     let two = [good[0], good[0]];
+    // What a type does not read may be left out; what it reads may not.
+    let no_sampler = [tuff::DescriptorImageInfo::new()
+        .image_view(Some(&o.view))
+        .image_layout(read)];
+    let no_view = [tuff::DescriptorImageInfo::new()
+        .sampler(Some(&o.sampler))
+        .image_layout(read)];
     let buffers = buffer_info(Some(&o.buffer), 0, 16);
     let set = &o.set;
     let cases = [
+        (
+            "VUID-VkWriteDescriptorSet-descriptorType-00325",
+            image_write(
+                set,
+                binding::COMBINED,
+                T::COMBINED_IMAGE_SAMPLER,
+                &no_sampler,
+            ),
+        ),
+        (
+            "VUID-VkWriteDescriptorSet-descriptorType-02997",
+            image_write(set, binding::SAMPLED, T::SAMPLED_IMAGE, &no_view),
+        ),
+        (
+            "VUID-VkWriteDescriptorSet-descriptorType-07683",
+            image_write(set, binding::INPUT, T::INPUT_ATTACHMENT, &no_view),
+        ),
         (
             "VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493",
             buffer_write(set, binding::SAMPLED, T::SAMPLED_IMAGE, &buffers),
@@ -525,6 +552,16 @@ fn image_descriptors_fit_their_type() {
             &[],
         )
         .expect("fitting image descriptors");
+    // A sampler needs no view, and a sampled image no sampler.
+    s.device
+        .update_descriptor_sets(
+            &[
+                image_write(set, binding::SAMPLER, T::SAMPLER, &no_view),
+                image_write(set, binding::SAMPLED, T::SAMPLED_IMAGE, &no_sampler),
+            ],
+            &[],
+        )
+        .expect("image infos without what their type does not read");
     assert_silent(&s.messages);
 }
 
@@ -609,7 +646,9 @@ fn inline_uniform_block_writes_chain_their_data() {
     let data = [0u8; 16];
     // The safe struct takes its count from an array setter: 16 (ignored) image infos
     // give the 16 bytes of the block.
-    let counted = [tuff::DescriptorImageInfo::new(&o.sampler, &o.view); 16];
+    let counted = [tuff::DescriptorImageInfo::new()
+        .sampler(Some(&o.sampler))
+        .image_view(Some(&o.view)); 16];
     let mut block = tuff::WriteDescriptorSetInlineUniformBlock::new().data(&data[..8]);
     let write = tuff::WriteDescriptorSet::new(&o.set)
         .dst_binding(binding::INLINE)
@@ -657,10 +696,14 @@ fn descriptors_of_another_device_are_refused() {
         unsafe { d2.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let target = other.color_target(4, vk::ImageUsageFlags::SAMPLED);
     let read = L::SHADER_READ_ONLY_OPTIMAL;
-    let foreign_image =
-        [tuff::DescriptorImageInfo::new(&o.sampler, &target.view).image_layout(read)];
-    let foreign_sampled_by =
-        [tuff::DescriptorImageInfo::new(&foreign_sampler, &o.view).image_layout(read)];
+    let foreign_image = [tuff::DescriptorImageInfo::new()
+        .sampler(Some(&o.sampler))
+        .image_view(Some(&target.view))
+        .image_layout(read)];
+    let foreign_sampled_by = [tuff::DescriptorImageInfo::new()
+        .sampler(Some(&foreign_sampler))
+        .image_view(Some(&o.view))
+        .image_layout(read)];
     let buffers = [tuff::DescriptorBufferInfo::new()
         .buffer(Some(&foreign_buffer))
         .range(16)];
@@ -1324,8 +1367,14 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
     let source = one_set(&s, &pool, &layout);
     let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let infos = [
-        tuff::DescriptorImageInfo::new(&sampler, &first_view).image_layout(L::GENERAL),
-        tuff::DescriptorImageInfo::new(&sampler, &second_view).image_layout(L::GENERAL),
+        tuff::DescriptorImageInfo::new()
+            .sampler(Some(&sampler))
+            .image_view(Some(&first_view))
+            .image_layout(L::GENERAL),
+        tuff::DescriptorImageInfo::new()
+            .sampler(Some(&sampler))
+            .image_view(Some(&second_view))
+            .image_layout(L::GENERAL),
     ];
     d.update_descriptor_sets(&[image_write(&source, 0, T::STORAGE_IMAGE, &infos)], &[])
         .expect("a write running on into binding 1");

@@ -675,9 +675,10 @@ fn descriptor_draw(
         .pop()
         .expect("one set");
     if let Some((view, sampler)) = written {
-        let images = [
-            tuff::DescriptorImageInfo::new(sampler, view).image_layout(vk::ImageLayout::GENERAL)
-        ];
+        let images = [tuff::DescriptorImageInfo::new()
+            .sampler(Some(sampler))
+            .image_view(Some(view))
+            .image_layout(vk::ImageLayout::GENERAL)];
         d.update_descriptor_sets(
             &[tuff::WriteDescriptorSet::new(&set)
                 .dst_binding(0)

@@ -1074,7 +1074,9 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
     let sampler =
         unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
     let target = s.color_target(4, vk::ImageUsageFlags::SAMPLED);
-    let images = [tuff::DescriptorImageInfo::new(&sampler, &target.view)
+    let images = [tuff::DescriptorImageInfo::new()
+        .sampler(Some(&sampler))
+        .image_view(Some(&target.view))
         .image_layout(vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL)];
     // A uniform buffer binding written from image infos: pBufferInfo is null.
     let writes = [tuff::WriteDescriptorSet::new(&set.set)

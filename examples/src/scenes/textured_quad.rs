@@ -88,7 +88,10 @@ impl TexturedQuad {
                 &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layouts),
             )?
             .remove(0);
-        let texture = [tuff::DescriptorImageInfo::new(&sampler, &view).image_layout(read)];
+        let texture = [tuff::DescriptorImageInfo::new()
+            .sampler(Some(&sampler))
+            .image_view(Some(&view))
+            .image_layout(read)];
         d.update_descriptor_sets(
             &[tuff::WriteDescriptorSet::new(&set)
                 .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)

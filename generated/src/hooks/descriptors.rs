@@ -354,6 +354,22 @@ fn check_descriptors(
             // `pImageInfo` is not set, and the safe setter stores it with the count.
             let infos = unsafe { raw_slice(w.p_image_info, count) };
             for (j, info) in infos.iter().enumerate() {
+                // A descriptor image info may leave out what a type does not read;
+                // where it is read, a null one is refused before the lookups below.
+                if samples && info.sampler == vk::Sampler::null() {
+                    refuse(
+                        "VUID-VkWriteDescriptorSet-descriptorType-00325",
+                        format!("{at}.pImageInfo[{j}] has no sampler, and binding {} has no immutable samplers", head.binding),
+                    )?;
+                }
+                if w.descriptor_type != T::SAMPLER && info.image_view == vk::ImageView::null() {
+                    let vuid = if w.descriptor_type == T::INPUT_ATTACHMENT {
+                        "VUID-VkWriteDescriptorSet-descriptorType-07683"
+                    } else {
+                        "VUID-VkWriteDescriptorSet-descriptorType-02997"
+                    };
+                    refuse(vuid, format!("{at}.pImageInfo[{j}] has no image view"))?;
+                }
                 if samples && live.get(info.sampler).is_none() {
                     refuse(
                         "VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238",

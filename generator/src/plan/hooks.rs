@@ -236,7 +236,9 @@ const LIVE_OBJECT: &str =
     "checks the handle is the device or a live object of it of that type, which the device lists";
 const NAMED_OBJECT: &str = "checks the handle is a live object of that type: the device, its instance or physical device, or an object the device lists (the `_unchecked` twin checks it too, as it finds the object's lock so: proven by the error alone)";
 const NO_SUSPENSION: &str = "checked by the safe methods in every build: the safe `begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance";
-const IMAGE_INFO_WRAPPERS: &str = "a descriptor image info takes its sampler and image view as wrappers, which always hold valid handles (it has no null form)";
+const IMAGE_INFO_WRAPPERS: &str = "a descriptor image info takes its sampler and image view as wrappers or none, so each is a valid handle or null";
+const IMAGE_INFO_SAMPLER: &str = "refuses a SAMPLER or COMBINED_IMAGE_SAMPLER write into a binding without immutable samplers whose image info has no sampler";
+const IMAGE_INFO_VIEW: &str = "refuses a write of an image descriptor type other than SAMPLER whose image info has no image view (the nullDescriptor feature is not followed: a null view is refused even where it is enabled)";
 const TEXEL_VIEW_WRAPPERS: &str =
     "texel buffer views are taken as a slice of wrappers, which always hold valid handles";
 const OTHER_DEVICE_DESCRIPTOR: &str = "checks each object a descriptor names is one the device recorded (the 1.3.239 layer names the structs' commonparent rule, or for a sampler its validity rule, which the same handle breaks)";
@@ -263,6 +265,29 @@ pub const UNCHAINED: &[(&str, &str, &str)] = &[(
     "VkPipelineShaderStageCreateInfo",
     "it carries shader code, which enters only through the unsafe `create_shader_module` and its shader promise",
 )];
+
+/// Handle members the registry does not mark optional that the safe structs take as
+/// `Option` all the same, each with why: Vulkan ignores them for some uses of the
+/// struct, and the checks of the commands that take it refuse a null one where it
+/// is read.
+pub const NULLABLE: &[(&str, &str, &str)] = &[
+    (
+        "VkDescriptorImageInfo",
+        "sampler",
+        "read only for SAMPLER and COMBINED_IMAGE_SAMPLER descriptors without immutable samplers; `update_descriptor_sets` refuses a null one there (VUID-VkWriteDescriptorSet-descriptorType-00325)",
+    ),
+    (
+        "VkDescriptorImageInfo",
+        "imageView",
+        "not read for SAMPLER descriptors; `update_descriptor_sets` refuses a null one for every other image type (VUID-VkWriteDescriptorSet-descriptorType-02997, -07683)",
+    ),
+];
+
+/// Whether the safe structs take member `member` of `ty` as `Option` although the
+/// registry does not mark it optional ([`NULLABLE`]).
+pub fn nullable(ty: &str, member: &str) -> bool {
+    NULLABLE.iter().any(|(t, m, _)| *t == ty && *m == member)
+}
 
 /// Whether the safe structs refuse to chain `ext` into `head`.
 pub fn unchained(ext: &str, head: &str) -> bool {
@@ -1083,10 +1108,10 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkCopyDescriptorSet-dstBinding-02224", How::User(UNPROVEN_INLINE_COPIES)),
             ("VUID-VkCopyDescriptorSet-srcBinding-02225", How::User(UNPROVEN_INLINE_COPIES)),
             ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06493", How::Dynamic("refuses a write whose descriptor type selects an array that is not set")),
-            ("VUID-VkWriteDescriptorSet-descriptorType-00325", How::Static(IMAGE_INFO_WRAPPERS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-00325", How::Dynamic(IMAGE_INFO_SAMPLER)),
             ("VUID-VkWriteDescriptorSet-descriptorType-02996", How::Static(IMAGE_INFO_WRAPPERS)),
-            ("VUID-VkWriteDescriptorSet-descriptorType-02997", How::Static(IMAGE_INFO_WRAPPERS)),
-            ("VUID-VkWriteDescriptorSet-descriptorType-07683", How::Static(IMAGE_INFO_WRAPPERS)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-02997", How::Dynamic(IMAGE_INFO_VIEW)),
+            ("VUID-VkWriteDescriptorSet-descriptorType-07683", How::Dynamic(IMAGE_INFO_VIEW)),
             ("VUID-VkWriteDescriptorSet-descriptorType-02994", How::Static(TEXEL_VIEW_WRAPPERS)),
             ("VUID-VkWriteDescriptorSet-descriptorType-02995", How::Static(TEXEL_VIEW_WRAPPERS)),
             ("VUID-vkUpdateDescriptorSets-pDescriptorWrites-06236", How::Dynamic(OTHER_DEVICE_DESCRIPTOR)),

@@ -104,7 +104,12 @@ pub fn struct_members(model: &Model, facts: &TypeFacts, name: &str) -> Vec<(Fiel
     t.members
         .iter()
         .map(|m| {
-            let shape = member_shape(model, facts, m, &counts, &t.members);
+            let shape = match member_shape(model, facts, m, &counts, &t.members) {
+                Member::Handle { .. } if super::hooks::nullable(name, &m.name) => {
+                    Member::Handle { optional: true }
+                }
+                shape => shape,
+            };
             (m.clone(), shape)
         })
         .collect()

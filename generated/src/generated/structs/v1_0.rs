@@ -933,7 +933,10 @@ impl<'a> DescriptorBufferInfo<'a> {
 Made, as `examples/src/scenes/textured_quad.rs` (line 91) does; the example programs run in CI:
 
 ```ignore
-let texture = [tuff::DescriptorImageInfo::new(&sampler, &view).image_layout(read)];
+let texture = [tuff::DescriptorImageInfo::new()
+    .sampler(Some(&sampler))
+    .image_view(Some(&view))
+    .image_layout(read)];
 ```
 
 # Valid usage
@@ -957,30 +960,18 @@ pub struct DescriptorImageInfo<'a> {
     pub(super) raw: vk::DescriptorImageInfo,
     _marker: PhantomData<&'a ()>,
 }
-safe_struct!(DescriptorImageInfo;);
+safe_struct!(DescriptorImageInfo; zeroed);
 impl<'a> DescriptorImageInfo<'a> {
-    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty; set the rest with the setters.
-    #[inline]
-    pub fn new(sampler: &'a Sampler, image_view: &'a ImageView) -> Self {
-        Self {
-            raw: vk::DescriptorImageInfo {
-                sampler: sampler.raw(),
-                image_view: image_view.raw(),
-                ..Default::default()
-            },
-            _marker: PhantomData,
-        }
-    }
     ///Sets `sampler`.
     #[inline]
-    pub fn sampler(mut self, value: &'a Sampler) -> Self {
-        self.raw.sampler = value.raw();
+    pub fn sampler(mut self, value: Option<&'a Sampler>) -> Self {
+        self.raw.sampler = value.map_or(vk::Sampler::null(), |h| h.raw());
         self
     }
     ///Sets `imageView`.
     #[inline]
-    pub fn image_view(mut self, value: &'a ImageView) -> Self {
-        self.raw.image_view = value.raw();
+    pub fn image_view(mut self, value: Option<&'a ImageView>) -> Self {
+        self.raw.image_view = value.map_or(vk::ImageView::null(), |h| h.raw());
         self
     }
     ///Sets `imageLayout`.
