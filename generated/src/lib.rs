@@ -65,11 +65,8 @@
 //!     let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
 //!         .stage(vk::ShaderStageFlags::COMPUTE)
 //!         .module(Some(&module));
-//!     let (mut pipelines, _) = device.create_compute_pipelines(
-//!         None,
-//!         &[tuff::ComputePipelineCreateInfo::new(stage, &layout)],
-//!     )?;
-//!     let pipeline = pipelines.pop().ok_or("no pipeline")?;
+//!     let pipeline = device
+//!         .create_compute_pipeline(None, &tuff::ComputePipelineCreateInfo::new(stage, &layout))?;
 //!
 //!     // Its descriptor set, pointing at the buffer.
 //!     let sizes = [vk::DescriptorPoolSize {
@@ -130,7 +127,10 @@
 //!     let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
 //!     let submitted = tuff::HandleSlice::new(&[&cb]);
 //!     queue.submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], Some(&fence))?;
-//!     device.wait_for_fences(&[&fence], true, u64::MAX)?;
+//!     // A wait answers which of its success codes it got: with no timeout, the
+//!     // fence signalled.
+//!     let waited = device.wait_for_fences(&[&fence], true, u64::MAX)?;
+//!     assert_eq!(waited, tuff::SuccessOrTimeout::Success);
 //!     Ok(buffer.memory().read::<u32>(0, 64)?)
 //! }
 //! ```

@@ -51,10 +51,10 @@ pub fn methods(model: &Model) -> BTreeMap<String, String> {
         .values()
         .map(|(r, m)| (r.as_str(), m.as_str()))
         .collect();
-    let mut short: BTreeMap<&str, String> = BTreeMap::new();
-    for (command, (receiver, name)) in &full {
-        short.insert(command, receiver_relative(model, receiver, name));
-    }
+    let short: BTreeMap<&str, String> = full
+        .iter()
+        .map(|(command, (receiver, name))| (*command, receiver_relative(model, receiver, name)))
+        .collect();
     let mut uses: BTreeMap<(&str, &str), usize> = BTreeMap::new();
     for (command, (receiver, _)) in &full {
         *uses
@@ -84,10 +84,10 @@ pub fn receiver_type<'a>(model: &'a Model, command: &str) -> &'a str {
     }
 }
 
-/// A method name without the words that repeat its receiver: `draw` on a
-/// recorder is `draw`, `submit` on a queue `submit`, `wait_idle` on a
-/// device `wait_idle`, `get_properties` on a physical device
-/// `get_properties`, `reset` on a command buffer `reset`. The words
+/// A method name without the words that repeat its receiver: `cmd_draw` on a
+/// recorder is `draw`, `queue_submit` on a queue `submit`, `device_wait_idle` on a
+/// device `wait_idle`, `get_physical_device_properties` on a physical device
+/// `get_properties`, `reset_command_buffer` on a command buffer `reset`. The words
 /// stay where they begin another handle's name (`get_device_memory_commitment`
 /// speaks of a `VkDeviceMemory`), and where nothing would be left.
 pub fn receiver_relative(model: &Model, receiver: &str, name: &str) -> String {
