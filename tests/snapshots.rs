@@ -182,3 +182,23 @@ fn methods_are_named_on_their_receiver() {
         );
     }
 }
+
+/// The per-method table of the report puts first the methods whose commands the
+/// scenes use: by their ash name in the raw-ash programs, or by the method on a
+/// receiver of its type in the tuff ones; not a method of another type that shares
+/// the name.
+#[test]
+fn the_report_marks_the_methods_the_scenes_use() {
+    let text = std::fs::read_to_string(root().join("generated/VALIDATION.md")).expect("report");
+    let scenes = |method: &str| {
+        let row = text
+            .lines()
+            .find(|l| l.starts_with(&format!("| `{method}` |")))
+            .unwrap_or_else(|| panic!("no row for {method}"));
+        row.split('|').nth(2).map(str::trim) == Some("yes")
+    };
+    assert!(scenes("Recorder::draw"));
+    assert!(scenes("Queue::submit"));
+    assert!(scenes("PhysicalDevice::get_memory_properties"));
+    assert!(!scenes("Recorder::draw_mesh_tasks_ext"));
+}

@@ -331,12 +331,22 @@ pub fn generate(opts: &Options) -> Result<Generation> {
     let plans = plan::Plans::build(&cx);
     let emission = emit::emit(&plans);
     let mut report = report::build(&model, &validity, &plans.records);
-    report.add_methods(
-        &plans.methods,
-        &plans.safety,
-        &plans.enabling,
-        &scene_calls(&sources),
-    );
+    // The commands the scenes use: called by their ash name in the raw-ash programs,
+    // or by their method, on a receiver of its type, in the tuff ones (as the docs'
+    // examples are chosen).
+    let ash_calls = scene_calls(&sources);
+    let scenes: std::collections::BTreeSet<String> = plans
+        .methods
+        .iter()
+        .filter(|r| {
+            ash_calls.contains(&names::command_fn(model.spelling(&r.command)))
+                || cx
+                    .example(&r.method, Some(names::receiver_type(&model, &r.command)))
+                    .is_some()
+        })
+        .map(|r| r.command.clone())
+        .collect();
+    report.add_methods(&plans.methods, &plans.safety, &plans.enabling, &scenes);
     let mut files = emission.files;
     files.extend(report::render(&report));
     files.push(emit::OutputFile {

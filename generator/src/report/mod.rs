@@ -144,13 +144,14 @@ pub struct ClassTally {
 
 impl Report<'_> {
     /// Tally the rules of each method's items (strict rules where the registry's keys
-    /// say which hold), the methods `scene_calls` names first.
+    /// say which hold), those of the commands in `scenes` (which the scene programs
+    /// call) first.
     pub fn add_methods(
         &mut self,
         rows: &[crate::plan::methods::MethodRow],
         safety: &BTreeMap<String, crate::plan::safety::MethodSafety>,
         enabling: &crate::plan::safety::Enabling,
-        scene_calls: &std::collections::BTreeSet<String>,
+        scenes: &std::collections::BTreeSet<String>,
     ) {
         self.refused = enabling.refused.clone();
         let mut classes: Vec<ClassTally> = crate::plan::safety::REVIEWED
@@ -200,7 +201,7 @@ impl Report<'_> {
                 let owned = safety.get(&row.command).map_or(0, |m| m.owned.len());
                 MethodTally {
                     method: format!("{}::{}", row.receiver, row.method),
-                    scenes: scene_calls.contains(&row.method),
+                    scenes: scenes.contains(&row.command),
                     counts,
                     safe: safety.get(&row.command).is_none_or(|m| m.safe()),
                     owned,
