@@ -675,7 +675,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         post.push(quote!(self.state_changed();));
     }
     let fp = quote!(fp);
-    let status = crate::plan::status::of(model, &plan.name).map(|s| ident(&s.name));
+    let status = all.status_of(&plan.name).map(|s| ident(&s.name));
     let count_ty = cmd
         .params
         .iter()

@@ -380,13 +380,7 @@ pub fn emit(plans: &Plans) -> Emission {
         ("features.rs".to_owned(), features::emit(cx.model)),
         ("formats.rs".to_owned(), formats::emit(cx.model)),
         ("helpers.rs".to_owned(), helpers::emit(plans)),
-        (
-            "status.rs".to_owned(),
-            status::emit(
-                cx,
-                &crate::plan::status::all(cx.model, ok.iter().map(|p| p.name.as_str())),
-            ),
-        ),
+        ("status.rs".to_owned(), status::emit(cx, &plans.statuses)),
     ];
     files.extend(command_checks);
     files.extend(checks::emit(&plans.checker));

@@ -3,7 +3,8 @@
 //! members' shapes ([`shape`]); the dynamic checks of commands and structs
 //! ([`checks::Checker`]); the host synchronization of each call ([`sync`]); which
 //! structs can reach a handle ([`reach`]); the special cases of commands, in one
-//! table ([`hooks`]); which methods are safe ([`safety`]); and for every rule of the emitted API how
+//! table ([`hooks`]); which methods are safe ([`safety`]); the typed results of
+//! commands with several success codes ([`status`]); and for every rule of the emitted API how
 //! it is settled ([`settle`]). Renderers (`emit`) and the report are functions of
 //! [`Plans`]; nothing here imports them.
 
@@ -162,6 +163,8 @@ pub struct Plans<'c, 'm> {
     pub by_item: BTreeMap<String, Vec<(String, Settlement)>>,
     /// Each rule's text on one line, code in backticks, for the docs.
     pub texts: BTreeMap<String, String>,
+    /// The status enums of the planned commands with several success codes.
+    pub statuses: Vec<status::Status>,
 }
 
 impl<'c, 'm> Plans<'c, 'm> {
@@ -205,6 +208,7 @@ impl<'c, 'm> Plans<'c, 'm> {
                 )
             })
             .collect();
+        let statuses = status::all(cx.model, ok.iter().map(|p| p.name.as_str()));
         Plans {
             cx,
             commands,
@@ -216,7 +220,15 @@ impl<'c, 'm> Plans<'c, 'm> {
             enabling,
             by_item,
             texts,
+            statuses,
         }
+    }
+
+    /// The status enum a command returns, if it has several success codes.
+    pub fn status_of(&self, command: &str) -> Option<&status::Status> {
+        self.statuses
+            .iter()
+            .find(|s| s.commands.iter().any(|c| c == command))
     }
 
     /// The commands that have a plan.
