@@ -579,12 +579,11 @@ fn barriers_inside_render_pass_instances_are_checked() {
                 .dependencies(&itself),
         )
         .expect("render pass");
-    let views = tuff::HandleSlice::new(&[&target.view]);
     let framebuffer = s
         .device
         .create_framebuffer(
             &tuff::FramebufferCreateInfo::new(&render_pass)
-                .attachments(&views)
+                .attachments(&target.view)
                 .width(4)
                 .height(4)
                 .layers(1),

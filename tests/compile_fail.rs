@@ -12,6 +12,8 @@ fn misuse_does_not_compile() {
     t.compile_fail("compile_fail/pushed_struct_reused.rs");
     t.compile_fail("compile_fail/outside_command_in_continuing_secondary.rs");
     t.compile_fail("compile_fail/raw_handle_for_wrapper.rs");
+    t.compile_fail("compile_fail/raw_handles_for_handle_array.rs");
+    t.compile_fail("compile_fail/handle_array_outlives_wrapper.rs");
     t.compile_fail("compile_fail/method_with_callers_rules_needs_unsafe.rs");
     t.compile_fail("compile_fail/command_in_video_coding_scope.rs");
     t.pass("compile_pass/commands_of_both_scopes_in_video_coding.rs");

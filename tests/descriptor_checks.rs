@@ -79,7 +79,6 @@ struct Objects {
 fn objects(s: &Setup) -> Objects {
     let d = &s.device;
     let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
-    let samplers = tuff::HandleSlice::new(&[&sampler]);
     let stages = vk::ShaderStageFlags::FRAGMENT;
     let b = |n: u32, ty: T, count: u32| {
         tuff::DescriptorSetLayoutBinding::new()
@@ -94,12 +93,12 @@ fn objects(s: &Setup) -> Objects {
         b(binding::SAMPLED, T::SAMPLED_IMAGE, 1),
         b(binding::STORAGE_IMAGE, T::STORAGE_IMAGE, 1),
         b(binding::COMBINED, T::COMBINED_IMAGE_SAMPLER, 1),
-        b(binding::IMMUTABLE_SAMPLER, T::SAMPLER, 1).immutable_samplers(&samplers),
+        b(binding::IMMUTABLE_SAMPLER, T::SAMPLER, 1).immutable_samplers(&sampler),
         b(binding::UNIFORM_TEXEL, T::UNIFORM_TEXEL_BUFFER, 1),
         b(binding::STORAGE_TEXEL, T::STORAGE_TEXEL_BUFFER, 1),
         b(binding::INPUT, T::INPUT_ATTACHMENT, 1),
         b(binding::SAMPLER, T::SAMPLER, 1),
-        b(binding::COMBINED_IMMUTABLE, T::COMBINED_IMAGE_SAMPLER, 1).immutable_samplers(&samplers),
+        b(binding::COMBINED_IMMUTABLE, T::COMBINED_IMAGE_SAMPLER, 1).immutable_samplers(&sampler),
         b(
             binding::COMBINED_IMMUTABLE + 1,
             T::COMBINED_IMAGE_SAMPLER,
@@ -138,11 +137,10 @@ fn objects(s: &Setup) -> Objects {
                 .push_next(&mut inline),
         )
         .expect("pool");
-    let layouts = tuff::HandleSlice::new(&[&layout]);
     let set = d
         .allocate_descriptor_sets(
             &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layout),
         )
         .expect("set")
         .pop()
@@ -585,8 +583,6 @@ fn buffer_descriptors_fit_their_type() {
     let set = &o.set;
     let uniform = |infos| buffer_write(set, binding::UNIFORM, T::UNIFORM_BUFFER, infos);
     let storage = |infos| buffer_write(set, binding::STORAGE, T::STORAGE_BUFFER, infos);
-    let uniform_texel = tuff::HandleSlice::new(&[&o.uniform_texel_view]);
-    let storage_texel = tuff::HandleSlice::new(&[&o.storage_texel_view]);
     let cases = [
         ("VUID-VkDescriptorBufferInfo-buffer-02998", uniform(&null)),
         (
@@ -618,14 +614,14 @@ fn buffer_descriptors_fit_their_type() {
             tuff::WriteDescriptorSet::new(set)
                 .dst_binding(binding::UNIFORM_TEXEL)
                 .descriptor_type(T::UNIFORM_TEXEL_BUFFER)
-                .texel_buffer_view(&uniform_texel),
+                .texel_buffer_view(&o.uniform_texel_view),
         ),
         (
             "VUID-VkWriteDescriptorSet-descriptorType-00335",
             tuff::WriteDescriptorSet::new(set)
                 .dst_binding(binding::STORAGE_TEXEL)
                 .descriptor_type(T::STORAGE_TEXEL_BUFFER)
-                .texel_buffer_view(&storage_texel),
+                .texel_buffer_view(&o.storage_texel_view),
         ),
     ];
     run(&s, &cases);
@@ -707,7 +703,6 @@ fn descriptors_of_another_device_are_refused() {
     let buffers = [tuff::DescriptorBufferInfo::new()
         .buffer(Some(&foreign_buffer))
         .range(16)];
-    let views = tuff::HandleSlice::new(&[&foreign_view]);
     let set = &o.set;
     let cases = [
         (
@@ -715,7 +710,7 @@ fn descriptors_of_another_device_are_refused() {
             tuff::WriteDescriptorSet::new(set)
                 .dst_binding(binding::UNIFORM_TEXEL)
                 .descriptor_type(T::UNIFORM_TEXEL_BUFFER)
-                .texel_buffer_view(&views),
+                .texel_buffer_view(&foreign_view),
         ),
         (
             "VUID-vkUpdateDescriptorSets-pDescriptorWrites-06238",
@@ -761,11 +756,10 @@ fn one_set(
     pool: &tuff::DescriptorPool,
     layout: &tuff::DescriptorSetLayout,
 ) -> tuff::DescriptorSet {
-    let layouts = tuff::HandleSlice::new(&[layout]);
     s.device
         .allocate_descriptor_sets(
             pool,
-            &tuff::DescriptorSetAllocateInfo::new(pool).set_layouts(&layouts),
+            &tuff::DescriptorSetAllocateInfo::new(pool).set_layouts(layout),
         )
         .expect("set")
         .pop()
@@ -920,8 +914,7 @@ fn sets_in_use_are_not_rewritten() {
         .expect("an update of a recorded set");
     let invalid = "VUID-vkQueueSubmit-pCommandBuffers-00070";
     {
-        let cbs = tuff::HandleSlice::new(&[&cb]);
-        let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
+        let submit = [tuff::SubmitInfo::new().command_buffers(&cb)];
         assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), invalid);
         assert_silent(&s.messages);
         s.messages.abort_on_error(true);
@@ -947,13 +940,11 @@ fn sets_in_use_are_not_rewritten() {
     let gate = d
         .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
         .expect("timeline");
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    let waits = tuff::HandleSlice::new(&[&gate]);
     let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
     let mut values = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1]);
     let gated = [tuff::SubmitInfo::new()
-        .command_buffers(&cbs)
-        .wait_semaphores(&waits, &stages)
+        .command_buffers(&cb)
+        .wait_semaphores(&gate, &stages)
         .expect("one stage per wait")
         .push_next(&mut values)];
     s.queue.submit(&gated, Some(&fence)).expect("gated submit");
@@ -973,15 +964,15 @@ fn sets_in_use_are_not_rewritten() {
     unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1)) }
         .expect("open the gate");
     assert_eq!(
-        d.wait_for_fences(&[&fence], true, u64::MAX)
+        d.wait_for_fences(&fence, true, u64::MAX)
             .expect("the gated batch"),
         tuff::SuccessOrTimeout::Success
     );
     // Complete now: the set may be written, which leaves the buffer invalid again.
     d.update_descriptor_sets(&[write], &[])
         .expect("an update after the wait");
-    d.reset_fences(&[&fence]).expect("reset");
-    let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
+    d.reset_fences(&fence).expect("reset");
+    let submit = [tuff::SubmitInfo::new().command_buffers(&cb)];
     assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), invalid);
     assert_silent(&s.messages);
 }
@@ -1099,10 +1090,10 @@ fn settle(s: &Setup, submitted: tuff::Result<()>, fence: &tuff::Fence) {
     if submitted.is_ok() {
         let waited = s
             .device
-            .wait_for_fences(&[fence], true, u64::MAX)
+            .wait_for_fences(fence, true, u64::MAX)
             .expect("wait");
         assert_eq!(waited, tuff::SuccessOrTimeout::Success);
-        s.device.reset_fences(&[fence]).expect("reset");
+        s.device.reset_fences(fence).expect("reset");
     }
 }
 
@@ -1156,7 +1147,7 @@ fn image_descriptors_are_read_in_their_layouts() {
             vk::PipelineBindPoint::COMPUTE,
             &reader.layout,
             0,
-            &[&reader.set],
+            &reader.set,
             &[],
         )
         .expect("set");
@@ -1183,8 +1174,7 @@ fn image_descriptors_are_read_in_their_layouts() {
     let _ = unsafe { rec.dispatch_unchecked(1, 1, 1) };
     rec.end().expect("end");
     {
-        let cbs = tuff::HandleSlice::new(&[&cb]);
-        let submit = [tuff::SubmitInfo::new().command_buffers(&cbs)];
+        let submit = [tuff::SubmitInfo::new().command_buffers(&cb)];
         s.messages.abort_on_error(true);
         // SAFETY: as above.
         let r = unsafe { s.queue.submit_unchecked(&submit, Some(&fence)) };
@@ -1243,7 +1233,7 @@ fn image_descriptors_are_read_in_their_layouts() {
         .submit(&submit, Some(&fence))
         .expect("a dispatch of a GENERAL image");
     assert_eq!(
-        d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
+        d.wait_for_fences(&fence, true, u64::MAX).expect("wait"),
         tuff::SuccessOrTimeout::Success
     );
     assert_silent(&s.messages);
@@ -1273,7 +1263,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
-        &[&reader.set],
+        &reader.set,
         &[],
     )
     .expect("set");
@@ -1315,7 +1305,7 @@ fn dispatches_see_the_layouts_of_their_moment() {
         vk::PipelineBindPoint::COMPUTE,
         &both.layout,
         0,
-        &[&both.set],
+        &both.set,
         &[],
     )
     .expect("set");
@@ -1401,7 +1391,7 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
-        &[&reader.set],
+        &reader.set,
         &[],
     )
     .expect("set");
@@ -1476,7 +1466,7 @@ fn dispatches_read_views_their_shaders_can_read() {
                     vk::PipelineBindPoint::COMPUTE,
                     &reader.layout,
                     0,
-                    &[&reader.set],
+                    &reader.set,
                     &[],
                 )
                 .expect("set");
@@ -1515,7 +1505,7 @@ fn a_copy_of_an_unwritten_descriptor_empties_its_slot() {
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
-        &[&reader.set],
+        &reader.set,
         &[],
     )
     .expect("set");
@@ -1576,7 +1566,7 @@ fn dispatches_read_pushed_constants() {
                 .expect("begin");
             rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)
                 .expect("pipeline");
-            rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])
+            rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &set, &[])
                 .expect("set");
             if unchecked {
                 s.messages.abort_on_error(true);
@@ -1630,12 +1620,12 @@ fn secondaries_leave_nothing_bound() {
         vk::PipelineBindPoint::COMPUTE,
         &reader.layout,
         0,
-        &[&reader.set],
+        &reader.set,
         &[],
     )
     .expect("set");
     // SAFETY: the secondary records nothing; the dispatch is refused.
-    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(&secondary) }.expect("execute");
     assert_eq!(vuid(rec.dispatch(1, 1, 1)), "VUID-vkCmdDispatch-None-02700");
     drop(rec);
     assert_silent(&s.messages);

@@ -209,12 +209,11 @@ fn draws_check_their_pipeline_and_dynamic_state() {
     let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
     let rgba = vk::Format::R8G8B8A8_UNORM;
     let two = render_pass(&s, rgba, 2);
-    let views = tuff::HandleSlice::new(&[&target.view]);
     let two_framebuffer = s
         .device
         .create_framebuffer(
             &tuff::FramebufferCreateInfo::new(&two)
-                .attachments(&views)
+                .attachments(&target.view)
                 .width(SIZE)
                 .height(SIZE)
                 .layers(1),
@@ -241,7 +240,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
     let set_named = |r: &mut Inside<'_>, state: D| match state {
         D::PRIMITIVE_TOPOLOGY => r.set_primitive_topology(vk::PrimitiveTopology::TRIANGLE_LIST),
         D::VERTEX_INPUT_BINDING_STRIDE => {
-            unsafe { r.bind_vertex_buffers2(0, &[&args], &[0], &[], &[16]) }
+            unsafe { r.bind_vertex_buffers2(0, &args, &[0], &[], &[16]) }
                 .expect("vertex buffer with its stride")
         }
         D::RASTERIZER_DISCARD_ENABLE => r.set_rasterizer_discard_enable(false),
@@ -570,7 +569,7 @@ fn direct_draws_fetch_inside_their_vertex_buffers() {
                 .expect("bind");
             set_viewport(&mut rec);
             set_scissor(&mut rec);
-            rec.bind_vertex_buffers(0, &[&vertices], &[offset])
+            rec.bind_vertex_buffers(0, &vertices, &[offset])
                 .expect("vertex buffer");
             if unchecked {
                 s.messages.abort_on_error(true);
@@ -665,11 +664,10 @@ fn descriptor_draw(
                 .pool_sizes(&sizes),
         )
         .expect("pool");
-    let layouts = tuff::HandleSlice::new(&[&set_layout]);
     let set = d
         .allocate_descriptor_sets(
             &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
         )
         .expect("set")
         .pop()
@@ -1431,7 +1429,7 @@ fn record_descriptor_draw(
         vk::PipelineBindPoint::GRAPHICS,
         &draw.layout,
         0,
-        &[&draw.set],
+        &draw.set,
         &[],
     )
     .expect("set");
@@ -1575,7 +1573,7 @@ fn indexed_draws_fetch_inside_their_vertex_buffers() {
         let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
         rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
             .expect("bind");
-        rec.bind_vertex_buffers(0, &[&vertices], &[0])
+        rec.bind_vertex_buffers(0, &vertices, &[0])
             .expect("vertex buffer");
         rec.bind_index_buffer(&indices, 0, vk::IndexType::UINT32)
             .expect("index buffer");
@@ -1638,7 +1636,7 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
             vk::PipelineBindPoint::COMPUTE,
             &p.compute_layout,
             0,
-            &[&p.set],
+            &p.set,
             &[],
         )
         .expect("sets");

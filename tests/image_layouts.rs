@@ -534,7 +534,7 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer]) -> tuff::Result<()> {
     )?;
     let waited = s
         .device
-        .wait_for_fences(&[&fence], true, u64::MAX)
+        .wait_for_fences(&fence, true, u64::MAX)
         .expect("wait");
     assert_eq!(waited, tuff::SuccessOrTimeout::Success);
     Ok(())
@@ -630,11 +630,11 @@ fn a_secondary_is_checked_against_the_layouts_its_primary_leaves() {
         .expect("begin");
     transition(&mut rec, &a, COLOR, UNDEFINED, GENERAL).expect("to GENERAL");
     assert_eq!(
-        vuid(unsafe { rec.execute_commands(&[&secondary]) }),
+        vuid(unsafe { rec.execute_commands(&secondary) }),
         "VUID-vkCmdClearColorImage-imageLayout-00004"
     );
     transition(&mut rec, &a, COLOR, GENERAL, DST).expect("to DST");
-    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(&secondary) }.expect("execute");
     // The secondary leaves the image in TRANSFER_DST_OPTIMAL, as the primary knows.
     transition(&mut rec, &a, COLOR, DST, SRC).expect("to SRC");
     rec.end().expect("end");
@@ -751,11 +751,10 @@ fn loading_passes_to(
     }
     .expect("render pass 2");
     [one, two].map(|rp| {
-        let views = tuff::HandleSlice::new(&[view]);
         let fb = d
             .create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&rp)
-                    .attachments(&views)
+                    .attachments(view)
                     .width(8)
                     .height(8)
                     .layers(1),
@@ -1229,12 +1228,11 @@ fn the_views_of_an_imageless_framebuffer_and_the_render_pass_are_checked() {
         tuff::FramebufferAttachmentsCreateInfo::new().attachment_image_infos(&info);
     // An imageless framebuffer reads only the count of its attachments.
     let (_placeholder_image, _placeholder_memory, placeholder) = view(good);
-    let counted = tuff::HandleSlice::new(&[&placeholder]);
     let imageless = d
         .create_framebuffer(
             &tuff::FramebufferCreateInfo::new(&render_pass)
                 .flags(vk::FramebufferCreateFlags::IMAGELESS)
-                .attachments(&counted)
+                .attachments(&placeholder)
                 .width(8)
                 .height(8)
                 .layers(1)

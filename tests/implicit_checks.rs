@@ -117,7 +117,7 @@ fn counts_and_chains_are_checked() {
     let s = setup(true);
     let d = &s.device;
     assert_eq!(
-        vuid(d.wait_for_fences(&[], true, 0)),
+        vuid(d.wait_for_fences(&tuff::HandleSlice::new(&[]), true, 0)),
         "VUID-vkWaitForFences-fenceCount-arraylength"
     );
     let priorities = [1.0f32];

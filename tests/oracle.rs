@@ -523,9 +523,8 @@ fn framebuffer_create_info(
     change: &dyn Fn(&mut vk::FramebufferCreateInfo<'_>, &Limits, &mut Objects),
 ) -> Outcome {
     let target = s.color_target(4, vk::ImageUsageFlags::empty());
-    let views = tuff::HandleSlice::new(&[&target.view]);
     let mut info = tuff::FramebufferCreateInfo::new(&target.render_pass)
-        .attachments(&views)
+        .attachments(&target.view)
         .width(4)
         .height(4)
         .layers(1);
@@ -1168,13 +1167,29 @@ fn cmd_wait_events(
         s,
         |r| {
             unsafe { r.set_event(&e, vk::PipelineStageFlags::TRANSFER) };
-            unsafe { r.wait_events(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[]) }
+            unsafe {
+                r.wait_events(
+                    &tuff::HandleSlice::new(&events),
+                    a.src_stage_mask,
+                    a.dst_stage_mask,
+                    &[],
+                    &[],
+                    &[],
+                )
+            }
         },
         |r| {
             unsafe { r.set_event(&e, vk::PipelineStageFlags::TRANSFER) };
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe {
-                r.wait_events_unchecked(&events, a.src_stage_mask, a.dst_stage_mask, &[], &[], &[])
+                r.wait_events_unchecked(
+                    &tuff::HandleSlice::new(&events),
+                    a.src_stage_mask,
+                    a.dst_stage_mask,
+                    &[],
+                    &[],
+                    &[],
+                )
             }
         },
     )
@@ -1982,7 +1997,7 @@ fn cmd_dispatch_indirect(
             vk::PipelineBindPoint::COMPUTE,
             &p.compute_layout,
             0,
-            &[&p.set],
+            &p.set,
             &[],
         )
         .expect("sets");
@@ -2377,14 +2392,13 @@ fn after_a_refusal_the_same_objects_render_a_correct_frame() {
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
-    let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
         .submit(
-            &[tuff::SubmitInfo::new().command_buffers(&handles)],
+            &[tuff::SubmitInfo::new().command_buffers(&cb)],
             Some(&fence),
         )
         .expect("submit");
-    let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
+    let status = d.wait_for_fences(&fence, true, u64::MAX).expect("wait");
     assert_eq!(status, tuff::SuccessOrTimeout::Success);
     let pixel = pipelines::access_memory(&s, &readback.1, 4, None);
     let expected: Vec<u8> = pipelines::COLOR
@@ -2610,7 +2624,7 @@ fn cmd_dispatch(
             vk::PipelineBindPoint::COMPUTE,
             &p.compute_layout,
             0,
-            &[&p.set],
+            &p.set,
             &[],
         )
         .expect("sets");
@@ -2845,9 +2859,9 @@ fn cmd_wait_events2(
     let infos = [tuff::DependencyInfo::new()];
     record(
         s,
-        |r| unsafe { r.wait_events2(&[&e], &infos) },
+        |r| unsafe { r.wait_events2(&e, &infos) },
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| drop(unsafe { r.wait_events2_unchecked(&[&e], &infos) }),
+        |r| drop(unsafe { r.wait_events2_unchecked(&e, &infos) }),
     )
 }
 

@@ -339,11 +339,10 @@ fn common(s: &Setup) -> Common {
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&input_bindings),
         )
         .expect("input set layout");
-    let input_set_layouts = tuff::HandleSlice::new(&[&input_set_layout]);
     let input_layout = s
         .device
         .create_pipeline_layout(
-            &tuff::PipelineLayoutCreateInfo::new().set_layouts(&input_set_layouts),
+            &tuff::PipelineLayoutCreateInfo::new().set_layouts(&input_set_layout),
         )
         .expect("input layout");
     Common {

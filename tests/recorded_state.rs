@@ -288,11 +288,14 @@ fn a_cache_is_not_merged_into_itself_and_the_layer_agrees() {
     };
     let (a, b) = (new_cache(), new_cache());
     let expected = "VUID-vkMergePipelineCaches-dstCache-00770";
-    assert_eq!(vuid(d.merge_pipeline_caches(&a, &[&b, &a])), expected);
-    d.merge_pipeline_caches(&a, &[&b]).expect("merge");
+    assert_eq!(
+        vuid(d.merge_pipeline_caches(&a, &tuff::HandleSlice::new(&[&b, &a]))),
+        expected
+    );
+    d.merge_pipeline_caches(&a, &b).expect("merge");
     layer_names(&s.messages, expected, || {
         // SAFETY: see the module docs.
-        drop(unsafe { d.merge_pipeline_caches_unchecked(&a, &[&b, &a]) });
+        drop(unsafe { d.merge_pipeline_caches_unchecked(&a, &tuff::HandleSlice::new(&[&b, &a])) });
     });
     assert_silent(&s.messages);
 }
@@ -378,16 +381,20 @@ fn vertex_bindings_stay_under_the_device_limits_and_the_layer_agrees() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    assert_eq!(vuid(rec.bind_vertex_buffers(last, &two, &[0, 0])), first);
+    assert_eq!(
+        vuid(rec.bind_vertex_buffers(last, &tuff::HandleSlice::new(&two), &[0, 0])),
+        first
+    );
     // SAFETY: no pipeline is bound, so no binding's stride has a vertex attribute to
     // fit (the rule `bind_vertex_buffers2` leaves to its caller).
-    let refused = unsafe { rec.bind_vertex_buffers2(last, &two, &[0, 0], &[], &[]) };
+    let refused =
+        unsafe { rec.bind_vertex_buffers2(last, &tuff::HandleSlice::new(&two), &[0, 0], &[], &[]) };
     assert_eq!(vuid(refused), first2);
     // SAFETY: as above.
-    let refused = unsafe { rec.bind_vertex_buffers2(0, &[&vertices], &[0], &[], &[stride]) };
+    let refused = unsafe { rec.bind_vertex_buffers2(0, &vertices, &[0], &[], &[stride]) };
     assert_eq!(vuid(refused), strides);
     // The last binding the device has is bound.
-    rec.bind_vertex_buffers(last, &[&vertices], &[0])
+    rec.bind_vertex_buffers(last, &vertices, &[0])
         .expect("the last binding");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -398,15 +405,25 @@ fn vertex_bindings_stay_under_the_device_limits_and_the_layer_agrees() {
         .expect("begin");
     layer_names(&s.messages, first, || {
         // SAFETY: see the module docs; the command buffer is never submitted.
-        drop(unsafe { rec.bind_vertex_buffers_unchecked(last, &two, &[0, 0]) });
+        drop(unsafe {
+            rec.bind_vertex_buffers_unchecked(last, &tuff::HandleSlice::new(&two), &[0, 0])
+        });
     });
     layer_names(&s.messages, first2, || {
         // SAFETY: as above.
-        drop(unsafe { rec.bind_vertex_buffers2_unchecked(last, &two, &[0, 0], &[], &[]) });
+        drop(unsafe {
+            rec.bind_vertex_buffers2_unchecked(
+                last,
+                &tuff::HandleSlice::new(&two),
+                &[0, 0],
+                &[],
+                &[],
+            )
+        });
     });
     layer_names(&s.messages, strides, || {
         // SAFETY: as above.
-        drop(unsafe { rec.bind_vertex_buffers2_unchecked(0, &[&vertices], &[0], &[], &[stride]) });
+        drop(unsafe { rec.bind_vertex_buffers2_unchecked(0, &vertices, &[0], &[], &[stride]) });
     });
     rec.end().expect("end");
 }
@@ -626,7 +643,7 @@ fn two_subpasses(
         .device
         .create_framebuffer(
             &tuff::FramebufferCreateInfo::new(&render_pass)
-                .attachments(&tuff::HandleSlice::new(&[&target.view]))
+                .attachments(&target.view)
                 .width(4)
                 .height(4)
                 .layers(1),

@@ -69,7 +69,7 @@ fn record_gated_fill(
         .expect("begin");
     unsafe {
         rec.wait_events(
-            &[gate],
+            gate,
             vk::PipelineStageFlags::HOST,
             vk::PipelineStageFlags::TRANSFER,
             &[],
@@ -93,7 +93,7 @@ fn submit(s: &Setup, cbs: &[&tuff::CommandBuffer], fence: &tuff::Fence) -> tuff:
 fn wait(s: &Setup, fence: &tuff::Fence) {
     let r = s
         .device
-        .wait_for_fences(&[fence], true, u64::MAX)
+        .wait_for_fences(fence, true, u64::MAX)
         .expect("wait");
     assert_eq!(r, tuff::SuccessOrTimeout::Success);
 }
@@ -116,9 +116,8 @@ fn a_submission_without_a_fence_is_held_by_its_queue() {
             &gate,
             &buffer,
         );
-        let handles = tuff::HandleSlice::new(&[&cb]);
         s.queue
-            .submit(&[tuff::SubmitInfo::new().command_buffers(&handles)], None)
+            .submit(&[tuff::SubmitInfo::new().command_buffers(&cb)], None)
             .expect("submit without a fence");
         // Pending: recording it again is refused.
         assert!(cb
@@ -192,7 +191,7 @@ fn a_pending_submission_cannot_be_reset_resubmitted_or_rerecorded() {
     submit(&s, &[&cb], &done).expect("submit");
 
     assert_eq!(
-        vuid(s.device.reset_fences(&[&done])),
+        vuid(s.device.reset_fences(&done)),
         "VUID-vkResetFences-pFences-01123"
     );
     assert_eq!(
@@ -218,7 +217,7 @@ fn a_pending_submission_cannot_be_reset_resubmitted_or_rerecorded() {
     s.device.set_event(&gate).expect("set event");
     wait(&s, &done);
     // Complete now: every refused call goes through.
-    s.device.reset_fences(&[&done]).expect("reset");
+    s.device.reset_fences(&done).expect("reset");
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin after completion");
@@ -281,13 +280,11 @@ fn a_fence_without_command_buffers_and_semaphores_in_use_wait_for_the_queue() {
     let second = fence(&s);
     let signalled = semaphore(&s);
     {
-        let cbs = tuff::HandleSlice::new(&[&cb]);
-        let signals = tuff::HandleSlice::new(&[&signalled]);
         s.queue
             .submit(
                 &[tuff::SubmitInfo::new()
-                    .command_buffers(&cbs)
-                    .signal_semaphores(&signals)],
+                    .command_buffers(&cb)
+                    .signal_semaphores(&signalled)],
                 Some(&first),
             )
             .expect("first submit");
@@ -382,7 +379,7 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueBindSparse-fence-01114"
     );
     assert_eq!(
-        vuid(s.device.reset_fences(&[&done])),
+        vuid(s.device.reset_fences(&done)),
         "VUID-vkResetFences-pFences-01123"
     );
     assert_silent(&s.messages);
@@ -403,7 +400,7 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
     let _ = unsafe { s.queue.bind_sparse_unchecked(&[], &done) };
     assert_layer_reports(&s, "VUID-vkQueueBindSparse-fence-01114");
     // SAFETY: as above.
-    unsafe { s.device.reset_fences_unchecked(&[&done]) }.expect("unchecked reset");
+    unsafe { s.device.reset_fences_unchecked(&done) }.expect("unchecked reset");
     assert_layer_reports(&s, "VUID-vkResetFences-pFences-01123");
     s.queue.wait_idle().expect("idle");
     assert_silent(&s.messages);
@@ -473,7 +470,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
     rec.end().expect("end once");
     submit(&s, &[&once], &done).expect("first submission");
     wait(&s, &done);
-    s.device.reset_fences(&[&done]).expect("reset");
+    s.device.reset_fences(&done).expect("reset");
     assert_eq!(
         vuid(submit(&s, &[&once], &done)),
         "VUID-vkQueueSubmit-pCommandBuffers-00070"
@@ -485,20 +482,17 @@ fn command_buffers_in_the_wrong_state_are_refused() {
         (&fresh, "VUID-vkQueueSubmit-pCommandBuffers-00070"),
         (&secondary, "VUID-VkSubmitInfo-pCommandBuffers-00075"),
     ] {
-        let cbs = tuff::HandleSlice::new(&[cb]);
         // SAFETY: lavapipe runs a never-recorded buffer as an empty one and a
         // secondary's fill as a primary's; the program keeps everything until the
         // fence is waited for.
         unsafe {
-            s.queue.submit_unchecked(
-                &[tuff::SubmitInfo::new().command_buffers(&cbs)],
-                Some(&done),
-            )
+            s.queue
+                .submit_unchecked(&[tuff::SubmitInfo::new().command_buffers(cb)], Some(&done))
         }
         .expect("unchecked submit");
         assert_layer_reports(&s, rule);
         wait(&s, &done);
-        s.device.reset_fences(&[&done]).expect("reset");
+        s.device.reset_fences(&done).expect("reset");
     }
     assert_silent(&s.messages);
 }
@@ -523,7 +517,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         .expect("begin primary");
     unsafe {
         rec.wait_events(
-            &[&gate],
+            &gate,
             vk::PipelineStageFlags::HOST,
             vk::PipelineStageFlags::TRANSFER,
             &[],
@@ -532,7 +526,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         )
         .expect("recorded")
     };
-    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(&secondary) }.expect("execute");
     rec.end().expect("end primary");
     submit(&s, &[&primary], &done).expect("submit");
 
@@ -542,7 +536,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
     );
     s.device.set_event(&gate).expect("set event");
     wait(&s, &done);
-    s.device.reset_fences(&[&done]).expect("reset");
+    s.device.reset_fences(&done).expect("reset");
 
     // Recorded again once complete: the primary that executes it is now invalid.
     let mut rec = secondary.begin(&secondary_begin).expect("begin again");
@@ -571,7 +565,7 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
     s.queue.wait_idle().expect("idle");
     // Known complete without a look at the fence: the buffer may be recorded again
     // and the fence reset.
-    s.device.reset_fences(&[&done]).expect("reset after idle");
+    s.device.reset_fences(&done).expect("reset after idle");
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin after idle");
@@ -579,7 +573,7 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
     submit(&s, &[&cb], &done).expect("submit again");
     s.device.wait_idle().expect("device idle");
     s.device
-        .reset_fences(&[&done])
+        .reset_fences(&done)
         .expect("reset after device idle");
     assert_silent(&s.messages);
 }
@@ -730,12 +724,11 @@ fn a_descriptor_pool_is_not_reset_while_its_sets_are_alive() {
         .reset_descriptor_pool(&pool, vk::DescriptorPoolResetFlags::empty())
         .expect("reset once no set is left");
     // The pool gives sets again after its reset.
-    let layouts = tuff::HandleSlice::new(&[&layout]);
     let again = s
         .device
         .allocate_descriptor_sets(
             &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layout),
         )
         .expect("allocate after reset");
     assert_eq!(again.len(), 1);
@@ -802,7 +795,7 @@ fn recorder_states_follow_the_begin_info() {
         })
         .clear_values(&clear);
     let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
-    unsafe { rec.execute_commands(&[&secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(&secondary) }.expect("execute");
     rec.end_render_pass().end().expect("end primary");
     let done = fence(&s);
     submit(&s, &[&primary], &done).expect("submit");
@@ -874,16 +867,14 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
                     }),
             )
             .expect("view");
-        let views = tuff::HandleSlice::new(&[&view]);
         // An imageless framebuffer reads no view at creation, only the count: it is
         // given the target's own view, so that only the begin info names `view`.
-        let creation_views = tuff::HandleSlice::new(&[&target.view]);
         let framebuffer = s
             .device
             .create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&target.render_pass)
                     .flags(vk::FramebufferCreateFlags::IMAGELESS)
-                    .attachments(&creation_views)
+                    .attachments(&target.view)
                     .width(16)
                     .height(16)
                     .layers(1)
@@ -891,7 +882,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
             )
             .expect("imageless framebuffer");
         live_with_view = s.device.live_object_count();
-        let mut at_begin = tuff::RenderPassAttachmentBeginInfo::new().attachments(&views);
+        let mut at_begin = tuff::RenderPassAttachmentBeginInfo::new().attachments(&view);
         let clear = [vk::ClearValue::default()];
         let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &framebuffer)
             .render_area(vk::Rect2D {
@@ -908,7 +899,7 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
             .expect("begin");
         unsafe {
             rec.wait_events(
-                &[&gate],
+                &gate,
                 vk::PipelineStageFlags::HOST,
                 vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
                 &[],
@@ -980,14 +971,13 @@ fn arrays_that_share_a_count_cannot_disagree() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let sem = semaphore(&s);
-    let sems = tuff::HandleSlice::new(&[&sem]);
     let stages = [vk::PipelineStageFlags::TRANSFER; 3];
     assert_eq!(
-        vuid(tuff::SubmitInfo::new().wait_semaphores(&sems, &stages)),
+        vuid(tuff::SubmitInfo::new().wait_semaphores(&sem, &stages)),
         "VUID-VkSubmitInfo-pWaitDstStageMask-parameter"
     );
     let info = tuff::SubmitInfo::new()
-        .wait_semaphores(&sems, &stages[..1])
+        .wait_semaphores(&sem, &stages[..1])
         .expect("equal lengths");
     assert_eq!(info.wait_semaphore_count, 1);
 
@@ -997,7 +987,7 @@ fn arrays_that_share_a_count_cannot_disagree() {
         "VUID-VkPresentInfoKHR-pImageIndices-parameter"
     );
     assert_eq!(
-        vuid(tuff::SemaphoreWaitInfo::new().semaphores(&sems, &[1, 2])),
+        vuid(tuff::SemaphoreWaitInfo::new().semaphores(&sem, &[1, 2])),
         "VUID-VkSemaphoreWaitInfo-pValues-parameter"
     );
 
@@ -1052,9 +1042,8 @@ fn arrays_that_share_a_count_cannot_disagree() {
     // A count that means something alone clears the array it no longer matches.
     let sampler =
         unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
-    let samplers = tuff::HandleSlice::new(&[&sampler]);
     let binding = tuff::DescriptorSetLayoutBinding::new()
-        .immutable_samplers(&samplers)
+        .immutable_samplers(&sampler)
         .descriptor_count(5);
     assert_eq!(binding.descriptor_count, 5);
     assert!(binding.p_immutable_samplers.is_null());
@@ -1115,13 +1104,9 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                     .expect("begin");
                 unsafe { rec.fill_buffer(buffer, 0, 256, 1) }.expect("fill");
                 rec.end().expect("end");
-                let cbs = tuff::HandleSlice::new(&[&cb]);
                 for _ in 0..200 {
                     queue
-                        .submit(
-                            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
-                            Some(&done),
-                        )
+                        .submit(&[tuff::SubmitInfo::new().command_buffers(&cb)], Some(&done))
                         .expect("submit");
                     wait(s, &done);
                     s.device.reset_fences(&[&done]).expect("reset");
@@ -1284,9 +1269,8 @@ fn timeline_semaphores_are_used_only_with_their_values() {
             .expect("value"),
         0
     );
-    let binaries = tuff::HandleSlice::new(&[&binary]);
     let wait_binary = tuff::SemaphoreWaitInfo::new()
-        .semaphores(&binaries, &[1])
+        .semaphores(&binary, &[1])
         .expect("one value per semaphore");
     assert_eq!(
         vuid(s.device.wait_semaphores(&wait_binary, 0)),
@@ -1301,9 +1285,8 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     );
 
     let done = fence(&s);
-    let timelines = tuff::HandleSlice::new(&[&timeline]);
     let no_values = s.queue.submit(
-        &[tuff::SubmitInfo::new().signal_semaphores(&timelines)],
+        &[tuff::SubmitInfo::new().signal_semaphores(&timeline)],
         Some(&done),
     );
     assert_eq!(vuid(no_values), "VUID-VkSubmitInfo-pWaitSemaphores-03239");
@@ -1311,7 +1294,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     let mut counted = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_value_count(1);
     let r = s.queue.submit(
         &[tuff::SubmitInfo::new()
-            .signal_semaphores(&timelines)
+            .signal_semaphores(&timeline)
             .push_next(&mut counted)],
         Some(&done),
     );
@@ -1319,7 +1302,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     let mut two = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1, 2]);
     let r = s.queue.submit(
         &[tuff::SubmitInfo::new()
-            .signal_semaphores(&timelines)
+            .signal_semaphores(&timeline)
             .push_next(&mut two)],
         Some(&done),
     );
@@ -1329,7 +1312,7 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     let mut two_waits = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1, 2]);
     let r = s.queue.submit(
         &[tuff::SubmitInfo::new()
-            .wait_semaphores(&timelines, &stages)
+            .wait_semaphores(&timeline, &stages)
             .expect("one stage per semaphore")
             .push_next(&mut two_waits)],
         Some(&done),
@@ -1341,13 +1324,13 @@ fn timeline_semaphores_are_used_only_with_their_values() {
     s.queue
         .submit(
             &[tuff::SubmitInfo::new()
-                .signal_semaphores(&timelines)
+                .signal_semaphores(&timeline)
                 .push_next(&mut one)],
             Some(&done),
         )
         .expect("submit with its value");
     let wait_one = tuff::SemaphoreWaitInfo::new()
-        .semaphores(&timelines, &[1])
+        .semaphores(&timeline, &[1])
         .expect("one value per semaphore");
     assert_eq!(
         s.device.wait_semaphores(&wait_one, u64::MAX).expect("wait"),
@@ -1426,7 +1409,7 @@ fn record_execute(
     let mut rec = primary
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin primary");
-    unsafe { rec.execute_commands(&[secondary]) }.expect("execute");
+    unsafe { rec.execute_commands(secondary) }.expect("execute");
     rec.end().expect("end primary");
 }
 
@@ -1450,7 +1433,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
         let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
         unsafe {
             rec.wait_events(
-                &[&gate],
+                &gate,
                 vk::PipelineStageFlags::HOST,
                 vk::PipelineStageFlags::TRANSFER,
                 &[],
@@ -1485,13 +1468,13 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin third");
         assert_eq!(
-            vuid(unsafe { rec.execute_commands(&[&secondary]) }),
+            vuid(unsafe { rec.execute_commands(&secondary) }),
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091"
         );
         rec.end().expect("end third");
         s.device.set_event(&gate).expect("set");
         wait(&s, &done);
-        s.device.reset_fences(&[&done]).expect("reset");
+        s.device.reset_fences(&done).expect("reset");
 
         // The secondary recorded again: the primary that executes it is invalid.
         let rec = secondary.begin(&secondary_begin).expect("begin again");
@@ -1554,14 +1537,12 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
             &gate,
             &buffer,
         );
-        let cbs = tuff::HandleSlice::new(&[&cb]);
-        let signals = tuff::HandleSlice::new(&[&timeline]);
         let mut values = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[1]);
         s.queue
             .submit(
                 &[tuff::SubmitInfo::new()
-                    .command_buffers(&cbs)
-                    .signal_semaphores(&signals)
+                    .command_buffers(&cb)
+                    .signal_semaphores(&timeline)
                     .push_next(&mut values)],
                 Some(&done),
             )
@@ -1572,9 +1553,8 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
         "the pending submission keeps its buffer, memory, pool and command buffer"
     );
     s.device.set_event(&gate).expect("set");
-    let timelines = tuff::HandleSlice::new(&[&timeline]);
     let wait_info = tuff::SemaphoreWaitInfo::new()
-        .semaphores(&timelines, &[1])
+        .semaphores(&timeline, &[1])
         .expect("one value per semaphore");
     assert_eq!(
         s.device
@@ -1588,7 +1568,7 @@ fn a_timeline_value_seen_on_the_host_releases_what_its_batch_used() {
         "the value was reached: the batch's objects went"
     );
     wait(&s, &done);
-    s.device.reset_fences(&[&done]).expect("reset");
+    s.device.reset_fences(&done).expect("reset");
     assert_silent(&s.messages);
 }
 
@@ -1802,27 +1782,29 @@ fn slices_sharing_a_count_have_its_length() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     assert_eq!(
-        vuid(rec.bind_vertex_buffers(0, &[&a, &b], &[0])),
+        vuid(rec.bind_vertex_buffers(0, &tuff::HandleSlice::new(&[&a, &b]), &[0])),
         "VUID-vkCmdBindVertexBuffers-pOffsets-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.bind_vertex_buffers2(0, &[&a, &b], &[0, 0], &[256], &[]) }),
+        vuid(unsafe {
+            rec.bind_vertex_buffers2(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 0], &[256], &[])
+        }),
         "VUID-vkCmdBindVertexBuffers2-pSizes-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.bind_vertex_buffers2(0, &[&a], &[0], &[], &[16, 16]) }),
+        vuid(unsafe { rec.bind_vertex_buffers2(0, &a, &[0], &[], &[16, 16]) }),
         "VUID-vkCmdBindVertexBuffers2-pStrides-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.wait_events2(&[&gate], &[]) }),
+        vuid(unsafe { rec.wait_events2(&gate, &[]) }),
         "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter"
     );
     // The same recorder goes on: equal lengths, and empty optional slices as NULL.
-    rec.bind_vertex_buffers(0, &[&a, &b], &[0, 16])
+    rec.bind_vertex_buffers(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 16])
         .expect("one offset per buffer");
-    unsafe { rec.bind_vertex_buffers2(0, &[&a, &b], &[0, 16], &[], &[]) }
+    unsafe { rec.bind_vertex_buffers2(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 16], &[], &[]) }
         .expect("no sizes and no strides");
-    unsafe { rec.bind_vertex_buffers2(0, &[&a], &[0], &[128], &[]) }.expect("a size per buffer");
+    unsafe { rec.bind_vertex_buffers2(0, &a, &[0], &[128], &[]) }.expect("a size per buffer");
     rec.end().expect("end");
     assert_silent(&s.messages);
 }
@@ -1889,9 +1871,9 @@ fn buffer_commands_stay_inside_their_buffers() {
             Box::new(move |rec: &mut Rec<'_>, unchecked: bool| {
                 if unchecked {
                     // SAFETY: as for the fills.
-                    unsafe { rec.bind_vertex_buffers_unchecked(0, &[&buf], &[offset]) }
+                    unsafe { rec.bind_vertex_buffers_unchecked(0, &buf, &[offset]) }
                 } else {
-                    rec.bind_vertex_buffers(0, &[&buf], &[offset])
+                    rec.bind_vertex_buffers(0, &buf, &[offset])
                 }
             }),
         )
@@ -1973,8 +1955,7 @@ fn buffer_commands_stay_inside_their_buffers() {
     // The recorder goes on with correct calls, which run.
     unsafe { rec.fill_buffer(&buffer, 0, 128, 7) }.expect("fill");
     unsafe { rec.update_buffer(&buffer, 252, &[1, 2, 3, 4]) }.expect("update");
-    rec.bind_vertex_buffers(0, &[&buffer], &[252])
-        .expect("vertex");
+    rec.bind_vertex_buffers(0, &buffer, &[252]).expect("vertex");
     rec.bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
         .expect("index");
     rec.end().expect("end");
@@ -2207,11 +2188,11 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
     }
     let graphics = vk::PipelineBindPoint::GRAPHICS;
     assert_eq!(
-        vuid(rec.bind_descriptor_sets(graphics, &layout, 1, &[&set], &[0])),
+        vuid(rec.bind_descriptor_sets(graphics, &layout, 1, &set, &[0])),
         "VUID-vkCmdBindDescriptorSets-firstSet-00360"
     );
     assert_eq!(
-        vuid(rec.bind_descriptor_sets(graphics, &layout, 0, &[&set], &[])),
+        vuid(rec.bind_descriptor_sets(graphics, &layout, 0, &set, &[])),
         "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359"
     );
     // The recorder goes on with correct calls.
@@ -2219,7 +2200,7 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         .expect("push");
     rec.push_constants(&layout, vk::ShaderStageFlags::FRAGMENT, 16, &bytes[..16])
         .expect("push");
-    rec.bind_descriptor_sets(graphics, &layout, 0, &[&set], &[0])
+    rec.bind_descriptor_sets(graphics, &layout, 0, &set, &[0])
         .expect("bind");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -2237,11 +2218,11 @@ fn push_constants_and_set_bindings_stay_inside_the_layout() {
         assert_layer_reports(&s, expected);
     }
     // SAFETY: as above.
-    unsafe { rec.bind_descriptor_sets_unchecked(graphics, &layout, 1, &[&set], &[0]) }
+    unsafe { rec.bind_descriptor_sets_unchecked(graphics, &layout, 1, &set, &[0]) }
         .expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindDescriptorSets-firstSet-00360");
     // SAFETY: as above; the layer reads no dynamic offset it was not given.
-    unsafe { rec.bind_descriptor_sets_unchecked(graphics, &layout, 0, &[&set], &[]) }
+    unsafe { rec.bind_descriptor_sets_unchecked(graphics, &layout, 0, &set, &[]) }
         .expect("recorded");
     assert_layer_reports(&s, "VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359");
     s.messages.abort_on_error(false);
@@ -2297,10 +2278,9 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
         )
         .expect("descriptor pool");
     let allocate = |layout: &tuff::DescriptorSetLayout| {
-        let layouts = tuff::HandleSlice::new(&[layout]);
         d.allocate_descriptor_sets(
             &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(layout),
         )
         .expect("set")
         .pop()
@@ -2379,14 +2359,14 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
         .expect("begin");
     for (expected, layout, set, offset) in cases {
         assert_eq!(
-            vuid(rec.bind_descriptor_sets(graphics, layout, 0, &[set], &[offset])),
+            vuid(rec.bind_descriptor_sets(graphics, layout, 0, set, &[offset])),
             expected
         );
     }
     // The recorder goes on with correct binds.
-    rec.bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&ranged], &[ua])
+    rec.bind_descriptor_sets(graphics, &uniform_pipeline, 0, &ranged, &[ua])
         .expect("bind");
-    rec.bind_descriptor_sets(graphics, &uniform_pipeline, 0, &[&whole], &[0])
+    rec.bind_descriptor_sets(graphics, &uniform_pipeline, 0, &whole, &[0])
         .expect("bind");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -2398,7 +2378,7 @@ fn bound_sets_match_their_layout_and_dynamic_offsets_stay_in_their_buffers() {
     for (expected, layout, set, offset) in cases {
         // SAFETY: the layer skips the call, which breaks only the rule under test; the
         // command buffer is never submitted.
-        unsafe { rec.bind_descriptor_sets_unchecked(graphics, layout, 0, &[set], &[offset]) }
+        unsafe { rec.bind_descriptor_sets_unchecked(graphics, layout, 0, set, &[offset]) }
             .expect("recorded");
         assert_layer_reports(&s, expected);
     }
@@ -2417,11 +2397,10 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
         let signaled = d
             .create_semaphore(&tuff::SemaphoreCreateInfo::new())
             .expect("semaphore");
-        let signals = tuff::HandleSlice::new(&[&signaled]);
         let first = fence(&s);
         s.queue
             .submit(
-                &[tuff::SubmitInfo::new().signal_semaphores(&signals)],
+                &[tuff::SubmitInfo::new().signal_semaphores(&signaled)],
                 Some(&first),
             )
             .expect("signal");
@@ -2430,8 +2409,6 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
             .expect("begin")
             .end()
             .expect("end");
-        let waits = tuff::HandleSlice::new(&[&signaled]);
-        let cbs = tuff::HandleSlice::new(&[&cb]);
         type S = vk::PipelineStageFlags;
         let mut cases: Vec<(&str, S, Vec<u32>, Vec<u32>)> = vec![];
         if sync2_off {
@@ -2485,9 +2462,9 @@ fn wait_stages_and_device_indices_are_checked_and_the_layer_agrees() {
                 .wait_semaphore_device_indices(&indices)
                 .command_buffer_device_masks(&masks);
             let mut batch = tuff::SubmitInfo::new()
-                .wait_semaphores(&waits, &stages)
+                .wait_semaphores(&signaled, &stages)
                 .expect("one stage per wait")
-                .command_buffers(&cbs);
+                .command_buffers(&cb);
             if !indices.is_empty() {
                 batch = batch.push_next(&mut group);
             }
@@ -3230,12 +3207,11 @@ fn indices_and_chained_counts_match_what_they_index() {
     let pool = d
         .create_descriptor_pool(&tuff::DescriptorPoolCreateInfo::new().max_sets(1))
         .expect("pool");
-    let layouts = tuff::HandleSlice::new(&[&set_layout]);
     let counts = [1u32, 1];
     let mut variable =
         tuff::DescriptorSetVariableDescriptorCountAllocateInfo::new().descriptor_counts(&counts);
     let allocate = tuff::DescriptorSetAllocateInfo::new(&pool)
-        .set_layouts(&layouts)
+        .set_layouts(&set_layout)
         .push_next(&mut variable);
     assert_eq!(
         vuid(d.allocate_descriptor_sets(&pool, &allocate)),
@@ -3284,7 +3260,7 @@ fn draws_and_dispatches_need_their_pipeline_and_sets() {
     );
     rec.bind_pipeline(compute, &p.compute).expect("bind");
     assert_eq!(vuid(rec.dispatch(1, 1, 1)), "VUID-vkCmdDispatch-None-02697");
-    rec.bind_descriptor_sets(compute, &p.compute_layout, 0, &[&p.set], &[])
+    rec.bind_descriptor_sets(compute, &p.compute_layout, 0, &p.set, &[])
         .expect("sets");
     rec.dispatch(1, 1, 1)
         .expect("a dispatch with its pipeline and set");
@@ -3584,7 +3560,7 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
         }
         s.messages.abort_on_error(false);
         if !unchecked {
-            rec.bind_vertex_buffers(0, &[&vertices], &[0])
+            rec.bind_vertex_buffers(0, &vertices, &[0])
                 .expect("vertex buffer");
             rec.draw(3, 1, 0, 0)
                 .expect("a draw with its vertex buffer bound");
@@ -3659,11 +3635,8 @@ fn a_pipeline_layout_must_have_what_its_shaders_read() {
                 &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
             )
             .expect("set layout");
-        d.create_pipeline_layout(
-            &tuff::PipelineLayoutCreateInfo::new()
-                .set_layouts(&tuff::HandleSlice::new(&[&set_layout])),
-        )
-        .expect("layout")
+        d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layout))
+            .expect("layout")
     };
     let (uniform, storage) = (
         vk::DescriptorType::UNIFORM_BUFFER,
@@ -4307,8 +4280,7 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
                 &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
             )
             .expect("set layout");
-        let layouts = tuff::HandleSlice::new(&[&set_layout]);
-        let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
+        let info = tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layout);
         assert_eq!(vuid(d.create_pipeline_layout(&info)), rule, "{rule}");
         assert_silent(&s.messages);
         // SAFETY: the layer skips the call it reports, so the driver never sees it.
@@ -4361,8 +4333,7 @@ fn a_pipeline_layout_past_the_descriptor_limits_is_refused_and_the_layer_agrees(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
         .expect("set layout");
-    let layouts = tuff::HandleSlice::new(&[&set_layout]);
-    d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
+    d.create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layout))
         .expect("a layout at the per-stage limit");
     assert_silent(&s.messages);
 }

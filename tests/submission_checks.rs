@@ -86,7 +86,7 @@ fn timeline_signals_rise() {
         .push_next(&mut between)];
     assert_eq!(vuid(s.queue.submit(&submit, Some(&other))), rule);
     assert_eq!(
-        d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait"),
+        d.wait_for_fences(&fence, true, u64::MAX).expect("wait"),
         tuff::SuccessOrTimeout::Success
     );
     assert_eq!(d.get_semaphore_counter_value(&semaphore).expect("value"), 8);

@@ -89,11 +89,10 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
                 .pool_sizes(&sizes),
         )
         .expect("descriptor pool");
-    let layouts = tuff::HandleSlice::new(&[&set_layout]);
     let sets = d
         .allocate_descriptor_sets(
             &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
         )
         .expect("descriptor sets");
     let buffer_info = [tuff::DescriptorBufferInfo::new()
@@ -303,9 +302,9 @@ fn resources_dropped_while_their_submission_is_in_flight() {
         drop(pool);
         drop(buffer);
         drop(memory);
-        let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
+        let status = d.wait_for_fences(&fence, true, u64::MAX).expect("wait");
         assert_eq!(status, tuff::SuccessOrTimeout::Success);
-        d.reset_fences(&[&fence]).expect("reset");
+        d.reset_fences(&fence).expect("reset");
     }
     assert_silent(&s.messages);
 }
@@ -339,7 +338,7 @@ fn several_success_codes_are_typed() {
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
     assert_eq!(
-        d.wait_for_fences(&[&fence], true, 0).expect("wait"),
+        d.wait_for_fences(&fence, true, 0).expect("wait"),
         tuff::SuccessOrTimeout::Timeout
     );
     assert_eq!(
@@ -363,6 +362,48 @@ fn several_success_codes_are_typed() {
         vk::Result::from(tuff::SuccessOrTimeout::Timeout),
         vk::Result::TIMEOUT
     );
+    assert_silent(&s.messages);
+}
+
+#[test]
+fn arrays_of_handles_take_the_same_forms_in_commands_and_structs() {
+    use tuff::Handle as _;
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let fence = || {
+        d.create_fence(&tuff::FenceCreateInfo::new().flags(vk::FenceCreateFlags::SIGNALED))
+            .expect("fence")
+    };
+    let (a, b) = (fence(), fence());
+    let layout = d
+        .create_descriptor_set_layout(&tuff::DescriptorSetLayoutCreateInfo::new())
+        .expect("set layout");
+    // One wrapper as it is, in a command and in a struct: an array of its one handle.
+    assert_eq!(
+        d.wait_for_fences(&a, true, 0).expect("wait"),
+        tuff::SuccessOrTimeout::Success
+    );
+    let one = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layout);
+    assert_eq!(one.set_layout_count, 1);
+    // SAFETY: the setter stored a pointer to one handle, borrowed from `layout`.
+    assert_eq!(unsafe { *one.p_set_layouts }, layout.raw());
+    // Several as a `HandleSlice`, built from a list or collected, in either place.
+    let both = tuff::HandleSlice::new(&[&a, &b]);
+    d.reset_fences(&both).expect("reset");
+    assert_eq!(
+        d.get_fence_status(&b).expect("status"),
+        tuff::SuccessOrNotReady::NotReady
+    );
+    let layouts: tuff::HandleSlice<_> = [&layout, &layout].into_iter().collect();
+    let two = tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts);
+    assert_eq!(two.set_layout_count, 2);
+    // SAFETY: the setter stored a pointer to `layouts`' two handles.
+    let stored = unsafe { std::slice::from_raw_parts(two.p_set_layouts, 2) };
+    assert_eq!(stored, [layout.raw(); 2]);
+    // The struct reaches Vulkan: two sets of the same (empty) layout.
+    let pipeline_layout = d.create_pipeline_layout(&two).expect("pipeline layout");
+    drop(pipeline_layout);
     assert_silent(&s.messages);
 }
 
@@ -463,17 +504,14 @@ fn present_one_frame(
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
-    let waits = tuff::HandleSlice::new(&[&acquired]);
-    let signals = tuff::HandleSlice::new(&[&rendered]);
-    let cbs = tuff::HandleSlice::new(&[&cb]);
     let stages = [vk::PipelineStageFlags::TRANSFER];
     s.queue
         .submit(
             &[tuff::SubmitInfo::new()
-                .wait_semaphores(&waits, &stages)
+                .wait_semaphores(&acquired, &stages)
                 .expect("one stage per semaphore")
-                .command_buffers(&cbs)
-                .signal_semaphores(&signals)],
+                .command_buffers(&cb)
+                .signal_semaphores(&rendered)],
             Some(&fence),
         )
         .expect("submit");
@@ -483,7 +521,7 @@ fn present_one_frame(
         .queue
         .present_khr(
             &tuff::PresentInfoKHR::new()
-                .wait_semaphores(&signals)
+                .wait_semaphores(&rendered)
                 .swapchains(&swapchains, &indices)
                 .expect("one index per swapchain"),
         )
@@ -765,14 +803,13 @@ fn pipelines_draw_and_dispatch() {
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
-    let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
         .submit(
-            &[tuff::SubmitInfo::new().command_buffers(&handles)],
+            &[tuff::SubmitInfo::new().command_buffers(&cb)],
             Some(&fence),
         )
         .expect("submit");
-    let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
+    let status = d.wait_for_fences(&fence, true, u64::MAX).expect("wait");
     assert_eq!(status, tuff::SuccessOrTimeout::Success);
     let pixel = access_memory(&s, &readback.1, 4, None);
     let expected: Vec<u8> = COLOR.iter().map(|c| (c * 255.0).round() as u8).collect();
@@ -839,15 +876,14 @@ fn submit_and_wait<K>(s: &Setup, fill: impl FnOnce(&mut tuff::Recorder<'_, tuff:
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
-    let handles = tuff::HandleSlice::new(&[&cb]);
     s.queue
         .submit(
-            &[tuff::SubmitInfo::new().command_buffers(&handles)],
+            &[tuff::SubmitInfo::new().command_buffers(&cb)],
             Some(&fence),
         )
         .expect("submit");
     drop(kept);
-    let status = d.wait_for_fences(&[&fence], true, u64::MAX).expect("wait");
+    let status = d.wait_for_fences(&fence, true, u64::MAX).expect("wait");
     assert_eq!(status, tuff::SuccessOrTimeout::Success);
 }
 
@@ -1383,15 +1419,14 @@ fn acquire_and_present_take_binary_semaphores() {
         .expect("acquire");
     assert_eq!(
         s.device
-            .wait_for_fences(&[&fence], true, u64::MAX)
+            .wait_for_fences(&fence, true, u64::MAX)
             .expect("acquired"),
         tuff::SuccessOrTimeout::Success
     );
-    let waits = tuff::HandleSlice::new(&[&timeline]);
     let swapchains = tuff::HandleSlice::new(&[&swapchain]);
     let indices = [index];
     let present = tuff::PresentInfoKHR::new()
-        .wait_semaphores(&waits)
+        .wait_semaphores(&timeline)
         .swapchains(&swapchains, &indices)
         .expect("one index per swapchain");
     let binary = "VUID-vkQueuePresentKHR-pWaitSemaphores-03267";
@@ -1434,7 +1469,7 @@ fn only_acquired_images_in_the_present_layout_are_presented() {
         .expect("acquire");
     assert_eq!(
         s.device
-            .wait_for_fences(&[&fence], true, u64::MAX)
+            .wait_for_fences(&fence, true, u64::MAX)
             .expect("acquired"),
         tuff::SuccessOrTimeout::Success
     );
@@ -1478,8 +1513,7 @@ fn acquire_for_present(
         .acquire_next_image_khr(swapchain, u64::MAX, None, Some(&fence))
         .expect("acquire");
     assert_eq!(
-        d.wait_for_fences(&[&fence], true, u64::MAX)
-            .expect("acquired"),
+        d.wait_for_fences(&fence, true, u64::MAX).expect("acquired"),
         tuff::SuccessOrTimeout::Success
     );
     let mut cb = d
@@ -1518,15 +1552,11 @@ fn acquire_for_present(
     let done = d
         .create_fence(&tuff::FenceCreateInfo::new())
         .expect("fence");
-    let cbs = tuff::HandleSlice::new(&[&cb]);
     s.queue
-        .submit(
-            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
-            Some(&done),
-        )
+        .submit(&[tuff::SubmitInfo::new().command_buffers(&cb)], Some(&done))
         .expect("submit");
     assert_eq!(
-        d.wait_for_fences(&[&done], true, u64::MAX).expect("moved"),
+        d.wait_for_fences(&done, true, u64::MAX).expect("moved"),
         tuff::SuccessOrTimeout::Success
     );
     index
@@ -1722,11 +1752,10 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     });
     // The acquire's fence belongs to it until it is seen signaled.
     assert_eq!(
-        d.wait_for_fences(&[&done], true, u64::MAX)
-            .expect("acquired"),
+        d.wait_for_fences(&done, true, u64::MAX).expect("acquired"),
         tuff::SuccessOrTimeout::Success
     );
-    d.reset_fences(&[&done]).expect("reset");
+    d.reset_fences(&done).expect("reset");
     // A wait on it is pending while a timeline wait holds its batch back.
     let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
         .semaphore_type(vk::SemaphoreType::TIMELINE)
@@ -1744,10 +1773,9 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     s.queue.submit(&gated, Some(&done)).expect("gated submit");
     // A second wait on it, with no signal between, is refused too.
     let unsignaled_wait = "VUID-vkQueueSubmit-pWaitSemaphores-03238";
-    let one_wait = tuff::HandleSlice::new(&[&acquired]);
     let one_stage = [vk::PipelineStageFlags::ALL_COMMANDS];
     let second = [tuff::SubmitInfo::new()
-        .wait_semaphores(&one_wait, &one_stage)
+        .wait_semaphores(&acquired, &one_stage)
         .expect("one stage per wait")];
     let other = fence(unsignaled);
     assert_eq!(
@@ -1774,7 +1802,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1)) }
         .expect("open the gate");
     assert_eq!(
-        d.wait_for_fences(&[&done], true, u64::MAX)
+        d.wait_for_fences(&done, true, u64::MAX)
             .expect("the gated batch"),
         tuff::SuccessOrTimeout::Success
     );
@@ -1801,11 +1829,10 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     );
     // A presentation that waits on a semaphore nothing signals.
     let nothing = semaphore();
-    let present_waits = tuff::HandleSlice::new(&[&nothing]);
     let swapchains = tuff::HandleSlice::new(&[&swapchain]);
     let indices = [index];
     let present = tuff::PresentInfoKHR::new()
-        .wait_semaphores(&present_waits)
+        .wait_semaphores(&nothing)
         .swapchains(&swapchains, &indices)
         .expect("one index per swapchain");
     let present_rule = "VUID-vkQueuePresentKHR-pWaitSemaphores-03268";
@@ -1889,7 +1916,8 @@ fn an_acquire_that_cannot_progress_may_not_wait_forever() {
     });
     let all: Vec<&tuff::Fence> = fences.iter().collect();
     assert_eq!(
-        d.wait_for_fences(&all, true, u64::MAX).expect("acquired"),
+        d.wait_for_fences(&tuff::HandleSlice::new(&all), true, u64::MAX)
+            .expect("acquired"),
         tuff::SuccessOrTimeout::Success
     );
     drop(swapchain);

@@ -378,10 +378,9 @@ impl<S: Scene> Live<S> {
         timer.lap(Stage::Submit);
         let swapchains = tuff::HandleSlice::new(&[swapchain]);
         let indices = [index as u32];
-        let signals = tuff::HandleSlice::new(&[rendered]);
         match gpu.queue.present_khr(
             &tuff::PresentInfoKHR::new()
-                .wait_semaphores(&signals)
+                .wait_semaphores(rendered)
                 .swapchains(&swapchains, &indices)?,
         ) {
             Ok(status) => self.stale |= status == tuff::SuccessOrSuboptimal::Suboptimal,

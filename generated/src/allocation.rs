@@ -311,6 +311,9 @@ impl Device {
 /// vertices.memory().write(0, &[1u16, 2, 3])?;
 /// # let _ = buffer; Ok(()) }
 /// ```
+// `repr(C)` with the resource first: a reference to a `Bound` is one to its resource,
+// which is how it stands for an array of one handle (`Handles`).
+#[repr(C)]
 pub struct Bound<T> {
     resource: T,
     memory: BoundMemory,
@@ -347,6 +350,24 @@ impl<T> Bound<T> {
     /// ```
     pub fn into_parts(self) -> (T, BoundMemory) {
         (self.resource, self.memory)
+    }
+}
+
+impl<T: Handle> crate::support::sealed::Sealed for &Bound<T> {}
+
+/// A bound resource stands for its one handle, as the resource itself does.
+impl<'a, T: Handle> crate::Handles<'a, T> for &'a Bound<T> {
+    #[inline]
+    fn raws(self) -> &'a [T::Raw] {
+        core::slice::from_ref(self.resource.raw_ref())
+    }
+    #[inline]
+    fn wrappers(&self) -> &[&'a T] {
+        let this: &&'a Bound<T> = self;
+        // SAFETY: `Bound` is `repr(C)` with `resource` first, at offset 0, so the
+        // address `this` points to is that of a `&'a T` to the resource, borrowed as long.
+        let resource: &&'a T = unsafe { &*(this as *const &'a Bound<T>).cast::<&'a T>() };
+        core::slice::from_ref(resource)
     }
 }
 

@@ -16,7 +16,7 @@ use crate::structs::{
     CommandBufferAllocateInfo, CommandBufferBeginInfo, CommandPoolCreateInfo, FenceCreateInfo,
     SubmitInfo,
 };
-use crate::{Error, HandleSlice, Result, SuccessOrTimeout};
+use crate::{Error, HandleSlice, Handles, Result, SuccessOrTimeout};
 use ash::vk;
 use smallvec::SmallVec;
 
@@ -121,7 +121,7 @@ impl FramesInFlight {
         let index = self.next;
         let count = self.frames.len();
         let (commands, fence) = &mut self.frames[index];
-        wait(commands.device(), &[fence])?;
+        wait(commands.device(), &*fence)?;
         Ok(Frame {
             index,
             commands,
@@ -134,7 +134,7 @@ impl FramesInFlight {
     /// Waits until every frame's last submission completed, as before reading what
     /// the frames wrote or changing what they use.
     pub fn wait_all(&self) -> Result<()> {
-        let fences: Vec<&Fence> = self.frames.iter().map(|(_, f)| f).collect();
+        let fences: HandleSlice<Fence> = self.frames.iter().map(|(_, f)| f).collect();
         match self.frames.first() {
             Some((cb, _)) => wait(cb.device(), &fences),
             None => Ok(()),
@@ -143,7 +143,7 @@ impl FramesInFlight {
 }
 
 /// Waits without timeout for all of `fences`.
-fn wait(device: &Device, fences: &[&Fence]) -> Result<()> {
+fn wait<'a>(device: &Device, fences: impl Handles<'a, Fence>) -> Result<()> {
     match device.wait_for_fences(fences, true, u64::MAX)? {
         SuccessOrTimeout::Success => Ok(()),
         // No timeout was asked for; a driver that reports one anyway fails here.
@@ -229,8 +229,7 @@ impl Frame<'_> {
                 waits.iter().map(|(_, st)| *st).collect();
             let wait_semaphores = HandleSlice::new(&wait_semaphores);
             let signal_semaphores = HandleSlice::new(signals);
-            let commands = HandleSlice::new(&[&*self.commands]);
-            let mut info = SubmitInfo::new().command_buffers(&commands);
+            let mut info = SubmitInfo::new().command_buffers(&*self.commands);
             if !waits.is_empty() {
                 info = info.wait_semaphores(&wait_semaphores, &stages)?;
             }
@@ -239,7 +238,7 @@ impl Frame<'_> {
             }
             let device = self.commands.device();
             // The fence was seen signalled by `next_frame`, so the reset cannot orphan a wait.
-            device.reset_fences(&[self.fence])?;
+            device.reset_fences(self.fence)?;
             // `submit` is safe in the pinned configuration and may be `unsafe` in
             // wider ones.
             #[allow(unused_unsafe)]

@@ -56,9 +56,9 @@
 //!     let set_layout = device.create_descriptor_set_layout(
 //!         &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
 //!     )?;
-//!     let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+//!     // An array of handles takes one wrapper as it is, several as a `HandleSlice`.
 //!     let layout = device
-//!         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))?;
+//!         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layout))?;
 //!     // SAFETY: the shader promise: `spirv` is valid SPIR-V for this device, it
 //!     // terminates, and it writes only the 64 words of the buffer at binding 0.
 //!     let module = unsafe { device.create_shader_module_from_spirv(spirv) }?;
@@ -76,13 +76,7 @@
 //!     let pool = device.create_descriptor_pool(
 //!         &tuff::DescriptorPoolCreateInfo::new().max_sets(1).pool_sizes(&sizes),
 //!     )?;
-//!     let set = device
-//!         .allocate_descriptor_sets(
-//!             &pool,
-//!             &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layouts),
-//!         )?
-//!         .pop()
-//!         .ok_or("no set")?;
+//!     let set = device.allocate_descriptor_set(&pool, &set_layout)?;
 //!     let written = [tuff::DescriptorBufferInfo::new()
 //!         .buffer(Some(&buffer))
 //!         .range(vk::WHOLE_SIZE)];
@@ -107,7 +101,7 @@
 //!         .ok_or("no command buffer")?;
 //!     let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
 //!     rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
-//!     rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+//!     rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &set, &[])?;
 //!     rec.dispatch(1, 1, 1)?;
 //!     let to_host = tuff::MemoryBarrier::new()
 //!         .src_access_mask(vk::AccessFlags::SHADER_WRITE)
@@ -125,11 +119,10 @@
 //!     // Submit, wait, read back. The fence keeps what the submission uses alive
 //!     // until it is seen signalled.
 //!     let fence = device.create_fence(&tuff::FenceCreateInfo::new())?;
-//!     let submitted = tuff::HandleSlice::new(&[&cb]);
-//!     queue.submit(&[tuff::SubmitInfo::new().command_buffers(&submitted)], Some(&fence))?;
+//!     queue.submit(&[tuff::SubmitInfo::new().command_buffers(&cb)], Some(&fence))?;
 //!     // A wait answers which of its success codes it got: with no timeout, the
 //!     // fence signalled.
-//!     let waited = device.wait_for_fences(&[&fence], true, u64::MAX)?;
+//!     let waited = device.wait_for_fences(&fence, true, u64::MAX)?;
 //!     assert_eq!(waited, tuff::SuccessOrTimeout::Success);
 //!     Ok(buffer.memory().read::<u32>(0, 64)?)
 //! }

@@ -14,9 +14,7 @@ use crate::structs::{
     BufferCreateInfo, CommandBufferAllocateInfo, CommandBufferBeginInfo, CommandPoolCreateInfo,
     FenceCreateInfo, ImageMemoryBarrier, SubmitInfo,
 };
-use crate::{
-    Error, Handle as _, HandleSlice, Image, MemoryLocation, Queue, Result, SuccessOrTimeout,
-};
+use crate::{Error, Handle as _, Image, MemoryLocation, Queue, Result, SuccessOrTimeout};
 use ash::vk;
 use tuff_runtime::Allocator;
 
@@ -190,12 +188,11 @@ impl Queue {
             // SAFETY: a fence with no flags and no chain: the rules a wider
             // configuration adds are about chained export infos.
             let fence = unsafe { device.create_fence(&FenceCreateInfo::new()) }?;
-            let submitted = HandleSlice::new(&[&commands]);
             #[allow(unused_unsafe)]
             // SAFETY: where `submit` is `unsafe`, so is this method, and its
             // caller upholds the rules of this submission.
-            unsafe { self.submit(&[SubmitInfo::new().command_buffers(&submitted)], Some(&fence)) }?;
-            match device.wait_for_fences(&[&fence], true, u64::MAX)? {
+            unsafe { self.submit(&[SubmitInfo::new().command_buffers(&commands)], Some(&fence)) }?;
+            match device.wait_for_fences(&fence, true, u64::MAX)? {
                 SuccessOrTimeout::Success => Ok(out),
                 // No timeout was asked for; a driver that reports one anyway fails
                 // here.

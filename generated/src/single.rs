@@ -6,7 +6,7 @@
 use crate::structs::{
     ComputePipelineCreateInfo, DescriptorSetAllocateInfo, GraphicsPipelineCreateInfo,
 };
-use crate::{DescriptorPool, DescriptorSet, DescriptorSetLayout, Device, Error, HandleSlice};
+use crate::{DescriptorPool, DescriptorSet, DescriptorSetLayout, Device, Error};
 use crate::{Pipeline, PipelineCache, Result, SuccessOrPipelineCompileRequired};
 use ash::vk;
 
@@ -103,8 +103,7 @@ impl Device {
             pool: &DescriptorPool,
             layout: &DescriptorSetLayout,
         ) -> Result<DescriptorSet> {
-            let layouts = HandleSlice::new(&[layout]);
-            let info = DescriptorSetAllocateInfo::new(pool).set_layouts(&layouts);
+            let info = DescriptorSetAllocateInfo::new(pool).set_layouts(layout);
             #[allow(unused_unsafe)]
             // SAFETY: where the array form is `unsafe`, so is this method, and its
             // caller upholds the rules of this allocation.

@@ -4,6 +4,7 @@
 use ash::vk;
 use core::ffi::{c_char, CStr};
 use core::marker::PhantomData;
+use core::ptr::NonNull;
 use tuff_runtime::Vrc;
 
 /// Errors of the generated wrappers. New kinds may come with new checks, so a
@@ -103,6 +104,72 @@ pub trait Handle {
     type Raw: Copy;
     /// The raw handle, valid as long as the wrapper lives.
     fn raw(&self) -> Self::Raw;
+    /// The raw handle in place, borrowed for as long as the wrapper is: what lets one
+    /// wrapper stand for an array of one handle ([`Handles`]).
+    fn raw_ref(&self) -> &Self::Raw;
+}
+
+pub(crate) mod sealed {
+    /// Keeps [`Handles`](super::Handles) to the forms whose handles are laid out
+    /// as Vulkan reads them.
+    pub trait Sealed {}
+}
+
+/// What a command parameter or a struct member that is an array of handles takes, the
+/// same in both: one wrapper (`&fence`, or a [`Bound`](crate::Bound) resource) or a
+/// [`HandleSlice`] of several
+/// (`&HandleSlice::new(&[&a, &b])`). Either borrows the wrappers, so none of them can
+/// be dropped while the call or the struct holds its handle.
+///
+/// ```no_run
+/// # fn f(device: &tuff::Device, a: &tuff::Fence, b: &tuff::Fence,
+/// #      layout: &tuff::DescriptorSetLayout, pool: &tuff::DescriptorPool) -> tuff::Result<()> {
+/// device.reset_fences(a)?;
+/// device.reset_fences(&tuff::HandleSlice::new(&[a, b]))?;
+/// let info = tuff::DescriptorSetAllocateInfo::new(pool).set_layouts(layout);
+/// # let _ = info;
+/// # Ok(()) }
+/// ```
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a way to pass `{T}` handles",
+    label = "one wrapper (`&x`) or a `&HandleSlice` of several",
+    note = "several handles: `&HandleSlice::new(&[&a, &b])`, or `.iter().collect::<HandleSlice<_>>()`"
+)]
+pub trait Handles<'a, T: Handle + 'a>: Copy + sealed::Sealed {
+    /// The raw handles, contiguous as Vulkan reads an array of them.
+    fn raws(self) -> &'a [T::Raw];
+    /// The wrappers, in the same order.
+    fn wrappers(&self) -> &[&'a T];
+}
+
+impl<T: Handle> sealed::Sealed for &T {}
+
+impl<'a, T: Handle> Handles<'a, T> for &'a T {
+    #[inline]
+    fn raws(self) -> &'a [T::Raw] {
+        core::slice::from_ref(self.raw_ref())
+    }
+    #[inline]
+    fn wrappers(&self) -> &[&'a T] {
+        core::slice::from_ref(self)
+    }
+}
+
+impl<T: Handle> sealed::Sealed for &HandleSlice<'_, T> {}
+
+impl<'a, 'w: 'a, T: Handle> Handles<'a, T> for &'a HandleSlice<'w, T> {
+    #[inline]
+    fn raws(self) -> &'a [T::Raw] {
+        &self.raw
+    }
+    #[inline]
+    fn wrappers(&self) -> &[&'a T] {
+        let pointers: &[NonNull<T>] = &self.wrappers;
+        // SAFETY: each pointer was made from a `&'w T` (`'w: 'a`), so it is non-null,
+        // aligned and points to a live `T` for `'a`; `NonNull<T>` and `&T` have one
+        // layout, so the slice of one is a slice of the other.
+        unsafe { core::slice::from_raw_parts(pointers.as_ptr().cast::<&'a T>(), pointers.len()) }
+    }
 }
 
 /// The Vulkan loader: entry points that need no instance.
@@ -150,8 +217,10 @@ impl Entry {
     }
 }
 
-/// Raw handles of a list of wrappers, for a struct member that is an array of
-/// handles. Borrowing the wrappers keeps them alive while the struct is used.
+/// Several wrappers and their raw handles side by side, for a command parameter or a
+/// struct member that is an array of handles ([`Handles`]; one handle needs none:
+/// `&fence` is taken as it is). Borrowing the wrappers keeps them alive while the call
+/// or the struct uses their handles.
 ///
 /// ```no_run
 /// # fn f(a: &tuff::Semaphore, b: &tuff::Semaphore) -> tuff::Result<()> {
@@ -163,6 +232,10 @@ impl Entry {
 /// ```
 pub struct HandleSlice<'a, T: Handle> {
     raw: smallvec::SmallVec<[T::Raw; 4]>,
+    // Pointers rather than `&'a T`: a `SmallVec` has drop glue, which would make a
+    // `HandleSlice` hold its wrappers borrowed until it is dropped rather than until
+    // its last use, and invariant in `'a`.
+    wrappers: smallvec::SmallVec<[NonNull<T>; 4]>,
     _marker: PhantomData<&'a T>,
 }
 
@@ -179,10 +252,7 @@ where
 impl<'a, T: Handle> HandleSlice<'a, T> {
     /// Collects the raw handles of `wrappers`.
     pub fn new(wrappers: &[&'a T]) -> Self {
-        HandleSlice {
-            raw: wrappers.iter().map(|w| w.raw()).collect(),
-            _marker: PhantomData,
-        }
+        wrappers.iter().copied().collect()
     }
 
     /// The number of handles.
@@ -207,6 +277,27 @@ impl<'a, T: Handle> HandleSlice<'a, T> {
     #[inline]
     pub fn as_slice(&self) -> &[T::Raw] {
         &self.raw
+    }
+}
+
+// SAFETY: a `HandleSlice` is raw handles and `&'a T`s held as pointers; a `&T` may go
+// to, and be shared with, another thread when `T` is `Sync`.
+unsafe impl<T: Handle + Sync> Send for HandleSlice<'_, T> where T::Raw: Send {}
+// SAFETY: as for `Send`.
+unsafe impl<T: Handle + Sync> Sync for HandleSlice<'_, T> where T::Raw: Sync {}
+
+impl<'a, T: Handle> FromIterator<&'a T> for HandleSlice<'a, T> {
+    /// Collects wrappers: `sets.iter().collect::<HandleSlice<_>>()`.
+    fn from_iter<I: IntoIterator<Item = &'a T>>(iter: I) -> Self {
+        let (raw, wrappers) = iter
+            .into_iter()
+            .map(|w| (w.raw(), NonNull::from(w)))
+            .unzip();
+        HandleSlice {
+            raw,
+            wrappers,
+            _marker: PhantomData,
+        }
     }
 }
 
@@ -514,6 +605,10 @@ macro_rules! child_handle {
             #[inline]
             fn raw(&self) -> ash::vk::$name {
                 self.inner.raw
+            }
+            #[inline]
+            fn raw_ref(&self) -> &ash::vk::$name {
+                &self.inner.raw
             }
         }
         $(#[cfg($cfg)])?

@@ -244,10 +244,12 @@ fn settle(b: &Bench) {
     let fences: Vec<&tuff::Fence> = b.fences.iter().collect();
     let waited =
         b.s.device
-            .wait_for_fences(&fences, true, u64::MAX)
+            .wait_for_fences(&tuff::HandleSlice::new(&fences), true, u64::MAX)
             .expect("wait");
     assert_eq!(waited, tuff::SuccessOrTimeout::Success);
-    b.s.device.reset_fences(&fences).expect("reset");
+    b.s.device
+        .reset_fences(&tuff::HandleSlice::new(&fences))
+        .expect("reset");
 }
 
 const VARIANTS: [&str; 4] = [

@@ -432,7 +432,7 @@ impl Pipelines {
             vk::PipelineBindPoint::COMPUTE,
             &self.compute_layout,
             0,
-            &[&self.set],
+            &self.set,
             &[],
         )
         .expect("recorded");
@@ -471,11 +471,10 @@ pub fn uniform_set(s: &Setup) -> UniformSet {
                 .pool_sizes(&sizes),
         )
         .expect("descriptor pool");
-    let layouts = tuff::HandleSlice::new(&[&layout]);
     let set = d
         .allocate_descriptor_sets(
             &pool,
-            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layout),
         )
         .expect("descriptor set")
         .pop()

@@ -398,11 +398,10 @@ impl Setup {
                     .subpasses(&subpasses),
             )
             .expect("render pass");
-        let views = tuff::HandleSlice::new(&[&view]);
         let framebuffer = d
             .create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&render_pass)
-                    .attachments(&views)
+                    .attachments(&view)
                     .width(size)
                     .height(size)
                     .layers(1),

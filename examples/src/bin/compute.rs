@@ -170,7 +170,7 @@ fn add_on_gpu(args: &Args, log: &tuff::MessageLog) -> Result<(String, u32)> {
     // host; recorded, submitted and waited for in one call.
     queue.submit_and_wait(|rec| {
         rec.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &pipeline)?;
-        rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+        rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &set, &[])?;
         rec.push_constants(
             &layout,
             vk::ShaderStageFlags::COMPUTE,

@@ -80,11 +80,10 @@ impl Bezier {
                     descriptor_count: 1,
                 }]),
         )?;
-        let layouts = tuff::HandleSlice::new(&[&set_layout]);
         let set = d
             .allocate_descriptor_sets(
                 &pool,
-                &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+                &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
             )?
             .pop()
             .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
@@ -136,7 +135,7 @@ impl Scene for Bezier {
             vk::PipelineBindPoint::GRAPHICS,
             &self.layout,
             0,
-            &[&self.set],
+            &self.set,
             &[],
         )?;
         rec.bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;

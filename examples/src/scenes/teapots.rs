@@ -154,10 +154,10 @@ impl Scene for Teapots {
             vk::PipelineBindPoint::GRAPHICS,
             &self.pipeline_layout,
             0,
-            &[&self.sets[view.slot]],
+            &self.sets[view.slot],
             &[],
         )?;
-        rec.bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+        rec.bind_vertex_buffers(0, &self.vertices, &[0])?;
         rec.bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
         for teapot in &self.layout_data.teapots {
             let block = teapot.block(view.time);

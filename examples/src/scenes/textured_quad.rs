@@ -142,7 +142,7 @@ impl Scene for TexturedQuad {
             vk::PipelineBindPoint::GRAPHICS,
             &self.layout,
             0,
-            &[&self.set],
+            &self.set,
             &[],
         )?;
         rec.draw(4, 1, 0, 0)

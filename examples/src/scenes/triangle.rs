@@ -75,7 +75,7 @@ impl Scene for Triangle {
         _view: &View,
     ) -> tuff::Result<()> {
         rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.pipeline)?;
-        rec.bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+        rec.bind_vertex_buffers(0, &self.vertices, &[0])?;
         rec.draw(3, 1, 0, 0)?;
         Ok(())
     }

@@ -2533,6 +2533,10 @@ impl Handle for Device {
     fn raw(&self) -> vk::Device {
         self.inner.raw
     }
+    #[inline]
+    fn raw_ref(&self) -> &vk::Device {
+        &self.inner.raw
+    }
 }
 impl core::ops::Deref for Device {
     type Target = vk::Device;
@@ -3641,6 +3645,10 @@ impl Handle for Instance {
     #[inline]
     fn raw(&self) -> vk::Instance {
         self.inner.raw
+    }
+    #[inline]
+    fn raw_ref(&self) -> &vk::Instance {
+        &self.inner.raw
     }
 }
 impl core::ops::Deref for Instance {

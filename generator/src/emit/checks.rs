@@ -581,7 +581,7 @@ pub fn render(check: &Check) -> TokenStream {
                     HandleAt::MemberSlice { member, count } => {
                         let (f, n) = (field_ident(member), field_ident(count));
                         quote! {
-                            __safety!("the safe setter stored this HandleSlice and its count.");
+                            __safety!("the safe setter stored these handles and their count.");
                             for h in unsafe { members(v.#f, v.#n) } {
                                 if *h != Default::default() && !s.#owner(*h) { #fail }
                             }

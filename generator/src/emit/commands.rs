@@ -257,6 +257,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let mut args: Vec<TokenStream> = Vec::new(); // method parameters
     let mut pre: Vec<TokenStream> = Vec::new();
     let mut call_args: Vec<TokenStream> = Vec::new();
+    // Handle arrays, taken as `impl Handles` (one wrapper or a `HandleSlice`, as struct
+    // members take them) and seen by the body as a slice of wrappers: name, wrapper.
+    let mut handle_arrays: Vec<(proc_macro2::Ident, proc_macro2::Ident)> = Vec::new();
     let mut retain: Vec<TokenStream> = Vec::new();
     let mut ret_ty = quote!(());
     let mut ret_expr = quote!(());
@@ -393,9 +396,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 if is_cmd {
                     pre.push(quote!(for h in #name { self.retain(h.retained()); }));
                 }
-                let raw = ident(&format!("{name}_raw"));
-                pre.push(quote!(let #raw: smallvec::SmallVec<[vk::#w; 8]> = #name.iter().map(|h| h.raw()).collect();));
-                call_args.push(quote!(#raw.as_ptr(),));
+                let given = given_ident(&name);
+                call_args.push(quote!(crate::Handles::raws(#given).as_ptr(),));
+                handle_arrays.push((name.clone(), w));
             }
             Param::StructRef { optional } => {
                 lifetimes = true;
@@ -792,21 +795,46 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         quote!(#ret_ty)
     };
     let host_sync = super::sync::host_syncs(cx, plan);
+    // The handle arrays as slices of wrappers, before anything reads them; the
+    // argument itself stays for the raw handles (and the checked method's call).
+    let as_slices = handle_arrays.iter().map(|(name, _)| {
+        let given = given_ident(name);
+        quote!(let #given = #name; #[allow(unused_variables)] let #name = crate::Handles::wrappers(&#given);)
+    });
+    let as_slices = quote!(#(#as_slices)*);
     let body = if fallible && cmd.return_type != "VkResult" && two_call.is_none() {
         if ret_ty.to_string() == "()" {
             // A unit result is not passed through `Ok(..)`.
-            quote!(#host_sync #load_fp { #body } Ok(()))
+            quote!(#as_slices #host_sync #load_fp { #body } Ok(()))
         } else {
-            quote!(#host_sync #load_fp Ok({ #body }))
+            quote!(#as_slices #host_sync #load_fp Ok({ #body }))
         }
     } else {
-        quote!(#host_sync #load_fp #body)
+        quote!(#as_slices #host_sync #load_fp #body)
     };
+    // The methods' parameters: a handle array as `impl Handles`, where the body and
+    // the checks see the slice `args` names.
+    let inner_args = args.clone();
+    let args: Vec<TokenStream> = args
+        .into_iter()
+        .map(|a| {
+            let first = a.clone().into_iter().next().map(|t| t.to_string());
+            match handle_arrays
+                .iter()
+                .find(|(n, _)| Some(n.to_string()) == first)
+            {
+                Some((name, w)) => quote!(#name: impl crate::Handles<'h, #w>),
+                None => a,
+            }
+        })
+        .collect();
     // `'a` is declared only where a parameter or the result names it.
-    let lt = if lifetimes && (args.iter().any(names_a) || names_a(&ret)) {
-        quote!(<'a>)
-    } else {
-        quote!()
+    let names_lt_a = lifetimes && (args.iter().any(names_a) || names_a(&ret));
+    let lt = match (names_lt_a, handle_arrays.is_empty()) {
+        (true, true) => quote!(<'a>),
+        (true, false) => quote!(<'a, 'h>),
+        (false, false) => quote!(<'h>),
+        (false, true) => quote!(),
     };
     let mut self_ref = if plan.receiver == "VkCommandBuffer" {
         quote!(&mut self)
@@ -930,6 +958,16 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .filter_map(|a| a.clone().into_iter().next())
             .map(TokenStream::from)
             .collect();
+        // The `_unchecked` twin takes the handle arrays as they were given.
+        let call_names: Vec<TokenStream> = names
+            .iter()
+            .map(
+                |n| match handle_arrays.iter().any(|(h, _)| *h == n.to_string()) {
+                    true => given_ident(&ident(&n.to_string())).into_token_stream(),
+                    false => n.clone(),
+                },
+            )
+            .collect();
         let codes = checks.iter().map(super::checks::render);
         let scope = scope_expr(cx, plan, &device_path);
         // A transition's special check joins its other checks' result, which the
@@ -988,7 +1026,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // The checks are a named method beside the command's, taking only the
         // arguments they read.
         let validate = ident(&format!("validate_{}", f));
-        let read: Vec<(&TokenStream, &TokenStream)> = args
+        let read: Vec<(&TokenStream, &TokenStream)> = inner_args
             .iter()
             .zip(&names)
             .filter(|(_, n)| checks.iter().any(|c| c.reads().contains(&n.to_string())))
@@ -1010,8 +1048,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 false => (*n).clone(),
             })
             .collect();
+        // The checks see handle arrays as slices, so only `'a` can be theirs.
         let v_lt = if read.iter().any(|(a, _)| names_a(a)) {
-            lt.clone()
+            quote!(<'a>)
         } else {
             quote!()
         };
@@ -1049,7 +1088,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 (
                     quote!(Recorder<'c, #state>),
                     guard,
-                    quote!(unsafe { self.#unchecked(#(#names),*) }),
+                    quote!(unsafe { self.#unchecked(#(#call_names),*) }),
                 )
             }
             (None, true) if !fallible => {
@@ -1066,16 +1105,16 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 (
                     ret.clone(),
                     guard,
-                    quote!(unsafe { self.#unchecked(#(#names),*) }),
+                    quote!(unsafe { self.#unchecked(#(#call_names),*) }),
                 )
             }
             _ => {
                 let call = if fallible {
-                    quote!(unsafe { self.#unchecked(#(#names),*) })
+                    quote!(unsafe { self.#unchecked(#(#call_names),*) })
                 } else if ret.to_string() == "()" {
-                    quote!(unsafe { self.#unchecked(#(#names),*) }; Ok(()))
+                    quote!(unsafe { self.#unchecked(#(#call_names),*) }; Ok(()))
                 } else {
-                    quote!(Ok(unsafe { self.#unchecked(#(#names),*) }))
+                    quote!(Ok(unsafe { self.#unchecked(#(#call_names),*) }))
                 };
                 let ret_checked = if fallible {
                     ret.clone()
@@ -1115,6 +1154,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             #[doc(alias = #alias)]
             #[inline]
             pub #unsafe_kw fn #f #lt(#self_ref, #(#args),*) #checked_arrow {
+                #as_slices
                 // Held across the checks too, so what they saw holds at the call.
                 #host_sync
                 // The special cases' checks first: each refuses a call that would
@@ -1135,6 +1175,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
     };
     (impl_header(plan, cmd, &cfg), method, validator)
+}
+
+/// The name a handle array's argument keeps once `name` is its slice of wrappers.
+fn given_ident(name: &proc_macro2::Ident) -> proc_macro2::Ident {
+    ident(&format!("{name}_given"))
 }
 
 /// The `# Safety` text of a method whose caller owns `owned` (empty when it owns

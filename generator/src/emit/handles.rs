@@ -226,6 +226,10 @@ fn emit_instance(cx: &Context) -> TokenStream {
             fn raw(&self) -> vk::Instance {
                 self.inner.raw
             }
+            #[inline]
+            fn raw_ref(&self) -> &vk::Instance {
+                &self.inner.raw
+            }
         }
         impl core::ops::Deref for Instance {
             type Target = vk::Instance;
@@ -361,6 +365,10 @@ fn emit_device(cx: &Context) -> TokenStream {
             #[inline]
             fn raw(&self) -> vk::Device {
                 self.inner.raw
+            }
+            #[inline]
+            fn raw_ref(&self) -> &vk::Device {
+                &self.inner.raw
             }
         }
         impl core::ops::Deref for Device {

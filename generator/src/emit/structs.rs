@@ -45,7 +45,7 @@ pub(super) fn emit(plans: &Plans) -> Vec<(String, TokenStream)> {
         //! Safe counterparts of the registry's structs that carry handles, pointers or
         //! an `sType`, one module per core version and extension. Plain structs
         //! (`vk::Extent2D`, ...) are used as ash has them.
-        use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, HandleSlice};
+        use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, Handles};
         use ash::vk;
         use core::marker::PhantomData;
     };
@@ -66,10 +66,9 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
     let cfg = cfg_of(model, model.condition(name));
     let members = struct_members(model, facts, name);
     let groups = count_groups(&members);
-    let array_tys: Vec<(String, TokenStream)> = members
+    let array_tys: Vec<ArrayParam> = members
         .iter()
         .filter_map(|(m, shape)| array_param(cx, m, shape))
-        .map(|a| (a.member, a.ty))
         .collect();
     let mut ctor_args = Vec::new();
     let mut ctor_sets = Vec::new();
@@ -374,13 +373,25 @@ struct ArrayParam {
     member: String,
     count: String,
     ty: TokenStream,
+    /// Taken as `impl Handles`, whose raw handles the setter stores.
+    handles: bool,
+}
+
+impl ArrayParam {
+    /// Rebinds the argument `name` as a slice of what the member points to.
+    fn lower(&self, name: &proc_macro2::Ident) -> TokenStream {
+        match self.handles {
+            true => quote!(let #name = Handles::raws(#name);),
+            false => quote!(),
+        }
+    }
 }
 
 fn array_param(cx: &Context, m: &Field, shape: &Member) -> Option<ArrayParam> {
     let (count, ty) = match shape {
         Member::HandleSlice { count } => {
             let w = type_ident(&m.type_name);
-            (count, quote!(&'a HandleSlice<'a, #w>))
+            (count, quote!(impl Handles<'a, #w>))
         }
         Member::Slice { count, safe } => {
             let elem = if *safe {
@@ -398,6 +409,7 @@ fn array_param(cx: &Context, m: &Field, shape: &Member) -> Option<ArrayParam> {
         member: m.name.clone(),
         count: count.clone(),
         ty,
+        handles: matches!(shape, Member::HandleSlice { .. }),
     })
 }
 
@@ -423,18 +435,23 @@ fn array_setter(
     m: &Field,
     array: &ArrayParam,
     groups: &[CountGroup],
-    array_tys: &[(String, TokenStream)],
+    array_tys: &[ArrayParam],
 ) -> Option<TokenStream> {
     let f = field_ident(&m.name);
     let setter = field_ident(&crate::names::param(&m.name));
     let c = field_ident(&array.count);
     let ty = &array.ty;
+    let lower = array.lower(&proc_macro2::Ident::new(
+        "value",
+        proc_macro2::Span::call_site(),
+    ));
     let Some(g) = groups.iter().find(|g| g.holds(&m.name)) else {
         let doc = format!("Sets `{}`.", m.name);
         return Some(quote! {
             #[doc = #doc]
             #[inline]
             pub fn #setter(mut self, value: #ty) -> Self {
+                #lower
                 self.raw.#c = value.len() as _;
                 self.raw.#f = value.as_ptr().cast();
                 self
@@ -470,6 +487,7 @@ fn array_setter(
             #[doc = #doc]
             #[inline]
             pub fn #setter(mut self, value: #ty) -> crate::Result<Self> {
+                #lower
                 if value.len() != self.raw.#c as usize {
                     return Err(crate::Error::Validation {
                         vuid: #vuid,
@@ -504,6 +522,7 @@ fn array_setter(
         #[doc = #doc]
         #[inline]
         pub fn #setter(mut self, value: #ty) -> Self {
+            #lower
             let len = value.len();
             #clear
             self.raw.#c = len as _;
@@ -519,19 +538,19 @@ fn lead_setter(
     struct_name: &str,
     g: &CountGroup,
     first: &Field,
-    array_tys: &[(String, TokenStream)],
+    array_tys: &[ArrayParam],
 ) -> TokenStream {
-    let param_tys: Vec<&TokenStream> = g
+    let leads: Vec<&ArrayParam> = g
         .leads
         .iter()
         .map(|l| {
-            &array_tys
+            array_tys
                 .iter()
-                .find(|(n, _)| n == l)
+                .find(|a| &a.member == l)
                 .expect("every lead is an array")
-                .1
         })
         .collect();
+    let param_tys: Vec<&TokenStream> = leads.iter().map(|a| &a.ty).collect();
     let setter = field_ident(&crate::names::param(&first.name));
     let c = field_ident(&g.count);
     let params: Vec<_> = g
@@ -541,6 +560,7 @@ fn lead_setter(
         .collect();
     let fields: Vec<_> = g.leads.iter().map(|l| field_ident(l)).collect();
     let first_param = &params[0];
+    let lower = leads.iter().zip(&params).map(|(a, p)| a.lower(p));
     let checks = g.leads.iter().zip(&params).skip(1).map(|(l, p)| {
         let vuid = format!("VUID-{struct_name}-{l}-parameter");
         let what = format!("`{}` has {{}} elements but `{}` has {{}}", l, g.leads[0]);
@@ -565,6 +585,7 @@ fn lead_setter(
         #[doc = #doc]
         #[inline]
         pub fn #setter(mut self, #(#params: #param_tys),*) -> crate::Result<Self> {
+            #(#lower)*
             let len = #first_param.len();
             #(#checks)*
             #clear

@@ -25,7 +25,7 @@ pub enum Member {
         /// May be null.
         optional: bool,
     },
-    /// An array of handles, taken as a `HandleSlice` of wrappers.
+    /// An array of handles, taken as `impl Handles` (a wrapper or a `HandleSlice`).
     HandleSlice {
         /// The member that holds the length.
         count: String,

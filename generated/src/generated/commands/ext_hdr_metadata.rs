@@ -17,11 +17,14 @@ The rules of `vkSetHdrMetadataEXT` that apply to this crate's API ([reference pa
 - `VUID-vkSetHdrMetadataEXT-pSwapchains-parameter` (*by the types*): `pSwapchains` must be a valid pointer to an array of `swapchainCount` valid VkSwapchainKHR handles*/
     #[doc(alias = "vkSetHdrMetadataEXT")]
     #[inline]
-    pub fn set_hdr_metadata_ext<'a>(
+    pub fn set_hdr_metadata_ext<'a, 'h>(
         &self,
-        swapchains: &[&SwapchainKHR],
+        swapchains: impl crate::Handles<'h, SwapchainKHR>,
         metadata: &[HdrMetadataEXT<'a>],
     ) -> Result<()> {
+        let swapchains_given = swapchains;
+        #[allow(unused_variables)]
+        let swapchains = crate::Handles::wrappers(&swapchains_given);
         if metadata.len() != swapchains.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkSetHdrMetadataEXT-pMetadata-parameter",
@@ -37,7 +40,7 @@ The rules of `vkSetHdrMetadataEXT` that apply to this crate's API ([reference pa
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.set_hdr_metadata_ext_unchecked(swapchains, metadata) }
+        unsafe { self.set_hdr_metadata_ext_unchecked(swapchains_given, metadata) }
     }
     /**`vkSetHdrMetadataEXT` without its dynamic checks.
 
@@ -45,11 +48,14 @@ The rules of `vkSetHdrMetadataEXT` that apply to this crate's API ([reference pa
 
 The caller upholds the rules that [`Self::set_hdr_metadata_ext`] checks at run time: `VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength`, `VUID-vkSetHdrMetadataEXT-pSwapchains-parent`, `VUID-vkSetHdrMetadataEXT-pMetadata-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn set_hdr_metadata_ext_unchecked<'a>(
+    pub unsafe fn set_hdr_metadata_ext_unchecked<'a, 'h>(
         &self,
-        swapchains: &[&SwapchainKHR],
+        swapchains: impl crate::Handles<'h, SwapchainKHR>,
         metadata: &[HdrMetadataEXT<'a>],
     ) -> Result<()> {
+        let swapchains_given = swapchains;
+        #[allow(unused_variables)]
+        let swapchains = crate::Handles::wrappers(&swapchains_given);
         let fp = self
             .ext()
             .ext_hdr_metadata
@@ -57,16 +63,12 @@ The caller upholds the rules that [`Self::set_hdr_metadata_ext`] checks at run t
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_hdr_metadata"))?
             .set_hdr_metadata_ext;
         {
-            let swapchains_raw: smallvec::SmallVec<[vk::SwapchainKHR; 8]> = swapchains
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     swapchains.len() as u32,
-                    swapchains_raw.as_ptr(),
+                    crate::Handles::raws(swapchains_given).as_ptr(),
                     metadata.as_ptr().cast(),
                 )
             };

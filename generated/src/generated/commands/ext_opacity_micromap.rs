@@ -584,13 +584,16 @@ The rules of `vkWriteMicromapsPropertiesEXT` that apply to this crate's API ([re
 - `VUID-vkWriteMicromapsPropertiesEXT-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkWriteMicromapsPropertiesEXT")]
     #[inline]
-    pub unsafe fn write_micromaps_properties_ext(
+    pub unsafe fn write_micromaps_properties_ext<'h>(
         &self,
-        micromaps: &[&MicromapEXT],
+        micromaps: impl crate::Handles<'h, MicromapEXT>,
         query_type: vk::QueryType,
         data: &mut [u8],
         stride: usize,
     ) -> Result<()> {
+        let micromaps_given = micromaps;
+        #[allow(unused_variables)]
+        let micromaps = crate::Handles::wrappers(&micromaps_given);
         {
             let r = self
                 .validate_write_micromaps_properties_ext(micromaps, query_type, data);
@@ -600,7 +603,7 @@ The rules of `vkWriteMicromapsPropertiesEXT` that apply to this crate's API ([re
         // docs).
         unsafe {
             self.write_micromaps_properties_ext_unchecked(
-                micromaps,
+                micromaps_given,
                 query_type,
                 data,
                 stride,
@@ -613,29 +616,28 @@ The rules of `vkWriteMicromapsPropertiesEXT` that apply to this crate's API ([re
 
 The caller upholds the rules that [`Self::write_micromaps_properties_ext`] checks at run time: `VUID-vkWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength`, `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent`, `VUID-vkWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn write_micromaps_properties_ext_unchecked(
+    pub unsafe fn write_micromaps_properties_ext_unchecked<'h>(
         &self,
-        micromaps: &[&MicromapEXT],
+        micromaps: impl crate::Handles<'h, MicromapEXT>,
         query_type: vk::QueryType,
         data: &mut [u8],
         stride: usize,
     ) -> Result<()> {
+        let micromaps_given = micromaps;
+        #[allow(unused_variables)]
+        let micromaps = crate::Handles::wrappers(&micromaps_given);
         let fp = self
             .ext()
             .ext_opacity_micromap
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_opacity_micromap"))?
             .write_micromaps_properties_ext;
-        let micromaps_raw: smallvec::SmallVec<[vk::MicromapEXT; 8]> = micromaps
-            .iter()
-            .map(|h| h.raw())
-            .collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 micromaps.len() as u32,
-                micromaps_raw.as_ptr(),
+                crate::Handles::raws(micromaps_given).as_ptr(),
                 query_type,
                 data.len(),
                 data.as_mut_ptr().cast(),
@@ -1052,13 +1054,16 @@ The rules of `vkCmdWriteMicromapsPropertiesEXT` that apply to this crate's API (
 - `VUID-vkCmdWriteMicromapsPropertiesEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteMicromapsPropertiesEXT")]
     #[inline]
-    pub unsafe fn write_micromaps_properties_ext(
+    pub unsafe fn write_micromaps_properties_ext<'h>(
         &mut self,
-        micromaps: &[&MicromapEXT],
+        micromaps: impl crate::Handles<'h, MicromapEXT>,
         query_type: vk::QueryType,
         query_pool: &QueryPool,
         first_query: u32,
     ) -> Result<()> {
+        let micromaps_given = micromaps;
+        #[allow(unused_variables)]
+        let micromaps = crate::Handles::wrappers(&micromaps_given);
         {
             let r = self
                 .validate_write_micromaps_properties_ext(
@@ -1072,7 +1077,7 @@ The rules of `vkCmdWriteMicromapsPropertiesEXT` that apply to this crate's API (
         // docs).
         unsafe {
             self.write_micromaps_properties_ext_unchecked(
-                micromaps,
+                micromaps_given,
                 query_type,
                 query_pool,
                 first_query,
@@ -1085,13 +1090,16 @@ The rules of `vkCmdWriteMicromapsPropertiesEXT` that apply to this crate's API (
 
 The caller upholds the rules that [`Self::write_micromaps_properties_ext`] checks at run time: `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool`, `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent`, `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn write_micromaps_properties_ext_unchecked(
+    pub unsafe fn write_micromaps_properties_ext_unchecked<'h>(
         &mut self,
-        micromaps: &[&MicromapEXT],
+        micromaps: impl crate::Handles<'h, MicromapEXT>,
         query_type: vk::QueryType,
         query_pool: &QueryPool,
         first_query: u32,
     ) -> Result<()> {
+        let micromaps_given = micromaps;
+        #[allow(unused_variables)]
+        let micromaps = crate::Handles::wrappers(&micromaps_given);
         let fp = self
             .device()
             .ext()
@@ -1103,16 +1111,12 @@ The caller upholds the rules that [`Self::write_micromaps_properties_ext`] check
             for h in micromaps {
                 self.retain(h.retained());
             }
-            let micromaps_raw: smallvec::SmallVec<[vk::MicromapEXT; 8]> = micromaps
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     micromaps.len() as u32,
-                    micromaps_raw.as_ptr(),
+                    crate::Handles::raws(micromaps_given).as_ptr(),
                     query_type,
                     query_pool.raw(),
                     first_query,

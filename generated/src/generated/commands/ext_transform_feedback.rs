@@ -128,13 +128,16 @@ The rules of `vkCmdBindTransformFeedbackBuffersEXT` that apply to this crate's A
 - `VUID-vkCmdBindTransformFeedbackBuffersEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindTransformFeedbackBuffersEXT")]
     #[inline]
-    pub fn bind_transform_feedback_buffers_ext(
+    pub fn bind_transform_feedback_buffers_ext<'h>(
         &mut self,
         first_binding: u32,
-        buffers: &[&Buffer],
+        buffers: impl crate::Handles<'h, Buffer>,
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
     ) -> Result<()> {
+        let buffers_given = buffers;
+        #[allow(unused_variables)]
+        let buffers = crate::Handles::wrappers(&buffers_given);
         if offsets.len() != buffers.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkCmdBindTransformFeedbackBuffersEXT-pOffsets-parameter",
@@ -162,7 +165,7 @@ The rules of `vkCmdBindTransformFeedbackBuffersEXT` that apply to this crate's A
         unsafe {
             self.bind_transform_feedback_buffers_ext_unchecked(
                 first_binding,
-                buffers,
+                buffers_given,
                 offsets,
                 sizes,
             )
@@ -174,13 +177,16 @@ The rules of `vkCmdBindTransformFeedbackBuffersEXT` that apply to this crate's A
 
 The caller upholds the rules that [`Self::bind_transform_feedback_buffers_ext`] checks at run time: `VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pOffsets-parameter`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pSizes-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn bind_transform_feedback_buffers_ext_unchecked(
+    pub unsafe fn bind_transform_feedback_buffers_ext_unchecked<'h>(
         &mut self,
         first_binding: u32,
-        buffers: &[&Buffer],
+        buffers: impl crate::Handles<'h, Buffer>,
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
     ) -> Result<()> {
+        let buffers_given = buffers;
+        #[allow(unused_variables)]
+        let buffers = crate::Handles::wrappers(&buffers_given);
         let fp = self
             .device()
             .ext()
@@ -192,17 +198,13 @@ The caller upholds the rules that [`Self::bind_transform_feedback_buffers_ext`] 
             for h in buffers {
                 self.retain(h.retained());
             }
-            let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     first_binding,
                     buffers.len() as u32,
-                    buffers_raw.as_ptr(),
+                    crate::Handles::raws(buffers_given).as_ptr(),
                     offsets.as_ptr().cast(),
                     if sizes.is_empty() {
                         core::ptr::null()
@@ -311,12 +313,15 @@ The rules of `vkCmdBeginTransformFeedbackEXT` that apply to this crate's API ([r
 - `VUID-vkCmdBeginTransformFeedbackEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBeginTransformFeedbackEXT")]
     #[inline]
-    pub fn begin_transform_feedback_ext(
+    pub fn begin_transform_feedback_ext<'h>(
         &mut self,
         first_counter_buffer: u32,
-        counter_buffers: &[&Buffer],
+        counter_buffers: impl crate::Handles<'h, Buffer>,
         counter_buffer_offsets: &[vk::DeviceSize],
     ) -> Result<()> {
+        let counter_buffers_given = counter_buffers;
+        #[allow(unused_variables)]
+        let counter_buffers = crate::Handles::wrappers(&counter_buffers_given);
         if !counter_buffer_offsets.is_empty()
             && counter_buffer_offsets.len() != counter_buffers.len()
         {
@@ -337,7 +342,7 @@ The rules of `vkCmdBeginTransformFeedbackEXT` that apply to this crate's API ([r
         unsafe {
             self.begin_transform_feedback_ext_unchecked(
                 first_counter_buffer,
-                counter_buffers,
+                counter_buffers_given,
                 counter_buffer_offsets,
             )
         }
@@ -348,12 +353,15 @@ The rules of `vkCmdBeginTransformFeedbackEXT` that apply to this crate's API ([r
 
 The caller upholds the rules that [`Self::begin_transform_feedback_ext`] checks at run time: `VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginTransformFeedbackEXT-commonparent`, `VUID-vkCmdBeginTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn begin_transform_feedback_ext_unchecked(
+    pub unsafe fn begin_transform_feedback_ext_unchecked<'h>(
         &mut self,
         first_counter_buffer: u32,
-        counter_buffers: &[&Buffer],
+        counter_buffers: impl crate::Handles<'h, Buffer>,
         counter_buffer_offsets: &[vk::DeviceSize],
     ) -> Result<()> {
+        let counter_buffers_given = counter_buffers;
+        #[allow(unused_variables)]
+        let counter_buffers = crate::Handles::wrappers(&counter_buffers_given);
         let fp = self
             .device()
             .ext()
@@ -365,17 +373,13 @@ The caller upholds the rules that [`Self::begin_transform_feedback_ext`] checks 
             for h in counter_buffers {
                 self.retain(h.retained());
             }
-            let counter_buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = counter_buffers
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     first_counter_buffer,
                     counter_buffers.len() as u32,
-                    counter_buffers_raw.as_ptr(),
+                    crate::Handles::raws(counter_buffers_given).as_ptr(),
                     if counter_buffer_offsets.is_empty() {
                         core::ptr::null()
                     } else {
@@ -687,12 +691,15 @@ The rules of `vkCmdEndTransformFeedbackEXT` that apply to this crate's API ([ref
 - `VUID-vkCmdEndTransformFeedbackEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdEndTransformFeedbackEXT")]
     #[inline]
-    pub fn end_transform_feedback_ext(
+    pub fn end_transform_feedback_ext<'h>(
         &mut self,
         first_counter_buffer: u32,
-        counter_buffers: &[&Buffer],
+        counter_buffers: impl crate::Handles<'h, Buffer>,
         counter_buffer_offsets: &[vk::DeviceSize],
     ) -> Result<()> {
+        let counter_buffers_given = counter_buffers;
+        #[allow(unused_variables)]
+        let counter_buffers = crate::Handles::wrappers(&counter_buffers_given);
         if !counter_buffer_offsets.is_empty()
             && counter_buffer_offsets.len() != counter_buffers.len()
         {
@@ -713,7 +720,7 @@ The rules of `vkCmdEndTransformFeedbackEXT` that apply to this crate's API ([ref
         unsafe {
             self.end_transform_feedback_ext_unchecked(
                 first_counter_buffer,
-                counter_buffers,
+                counter_buffers_given,
                 counter_buffer_offsets,
             )
         }
@@ -724,12 +731,15 @@ The rules of `vkCmdEndTransformFeedbackEXT` that apply to this crate's API ([ref
 
 The caller upholds the rules that [`Self::end_transform_feedback_ext`] checks at run time: `VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndTransformFeedbackEXT-commonparent`, `VUID-vkCmdEndTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn end_transform_feedback_ext_unchecked(
+    pub unsafe fn end_transform_feedback_ext_unchecked<'h>(
         &mut self,
         first_counter_buffer: u32,
-        counter_buffers: &[&Buffer],
+        counter_buffers: impl crate::Handles<'h, Buffer>,
         counter_buffer_offsets: &[vk::DeviceSize],
     ) -> Result<()> {
+        let counter_buffers_given = counter_buffers;
+        #[allow(unused_variables)]
+        let counter_buffers = crate::Handles::wrappers(&counter_buffers_given);
         let fp = self
             .device()
             .ext()
@@ -741,17 +751,13 @@ The caller upholds the rules that [`Self::end_transform_feedback_ext`] checks at
             for h in counter_buffers {
                 self.retain(h.retained());
             }
-            let counter_buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = counter_buffers
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     first_counter_buffer,
                     counter_buffers.len() as u32,
-                    counter_buffers_raw.as_ptr(),
+                    crate::Handles::raws(counter_buffers_given).as_ptr(),
                     if counter_buffer_offsets.is_empty() {
                         core::ptr::null()
                     } else {

@@ -139,11 +139,14 @@ The rules of `vkMergeValidationCachesEXT` that apply to this crate's API ([refer
 - `VUID-vkMergeValidationCachesEXT-pSrcCaches-parameter` (*by the types*): `pSrcCaches` must be a valid pointer to an array of `srcCacheCount` valid VkValidationCacheEXT handles*/
     #[doc(alias = "vkMergeValidationCachesEXT")]
     #[inline]
-    pub unsafe fn merge_validation_caches_ext(
+    pub unsafe fn merge_validation_caches_ext<'h>(
         &self,
         dst_cache: &ValidationCacheEXT,
-        src_caches: &[&ValidationCacheEXT],
+        src_caches: impl crate::Handles<'h, ValidationCacheEXT>,
     ) -> Result<()> {
+        let src_caches_given = src_caches;
+        #[allow(unused_variables)]
+        let src_caches = crate::Handles::wrappers(&src_caches_given);
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -156,7 +159,9 @@ The rules of `vkMergeValidationCachesEXT` that apply to this crate's API ([refer
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.merge_validation_caches_ext_unchecked(dst_cache, src_caches) }
+        unsafe {
+            self.merge_validation_caches_ext_unchecked(dst_cache, src_caches_given)
+        }
     }
     /**`vkMergeValidationCachesEXT` without its dynamic checks.
 
@@ -164,11 +169,14 @@ The rules of `vkMergeValidationCachesEXT` that apply to this crate's API ([refer
 
 The caller upholds the rules that [`Self::merge_validation_caches_ext`] checks at run time: `VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength`, `VUID-vkMergeValidationCachesEXT-dstCache-parent`, `VUID-vkMergeValidationCachesEXT-pSrcCaches-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn merge_validation_caches_ext_unchecked(
+    pub unsafe fn merge_validation_caches_ext_unchecked<'h>(
         &self,
         dst_cache: &ValidationCacheEXT,
-        src_caches: &[&ValidationCacheEXT],
+        src_caches: impl crate::Handles<'h, ValidationCacheEXT>,
     ) -> Result<()> {
+        let src_caches_given = src_caches;
+        #[allow(unused_variables)]
+        let src_caches = crate::Handles::wrappers(&src_caches_given);
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -181,17 +189,13 @@ The caller upholds the rules that [`Self::merge_validation_caches_ext`] checks a
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_validation_cache"))?
             .merge_validation_caches_ext;
-        let src_caches_raw: smallvec::SmallVec<[vk::ValidationCacheEXT; 8]> = src_caches
-            .iter()
-            .map(|h| h.raw())
-            .collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 dst_cache.raw(),
                 src_caches.len() as u32,
-                src_caches_raw.as_ptr(),
+                crate::Handles::raws(src_caches_given).as_ptr(),
             )
         };
         if r.as_raw() < 0 {

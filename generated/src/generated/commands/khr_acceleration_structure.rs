@@ -600,13 +600,18 @@ The rules of `vkWriteAccelerationStructuresPropertiesKHR` that apply to this cra
 - `VUID-vkWriteAccelerationStructuresPropertiesKHR-pData-parameter` (*by the types*): `pData` must be a valid pointer to an array of `dataSize` bytes*/
     #[doc(alias = "vkWriteAccelerationStructuresPropertiesKHR")]
     #[inline]
-    pub fn write_acceleration_structures_properties_khr(
+    pub fn write_acceleration_structures_properties_khr<'h>(
         &self,
-        acceleration_structures: &[&AccelerationStructureKHR],
+        acceleration_structures: impl crate::Handles<'h, AccelerationStructureKHR>,
         query_type: vk::QueryType,
         data: &mut [u8],
         stride: usize,
     ) -> Result<()> {
+        let acceleration_structures_given = acceleration_structures;
+        #[allow(unused_variables)]
+        let acceleration_structures = crate::Handles::wrappers(
+            &acceleration_structures_given,
+        );
         {
             let r = self
                 .validate_write_acceleration_structures_properties_khr(
@@ -620,7 +625,7 @@ The rules of `vkWriteAccelerationStructuresPropertiesKHR` that apply to this cra
         // docs).
         unsafe {
             self.write_acceleration_structures_properties_khr_unchecked(
-                acceleration_structures,
+                acceleration_structures_given,
                 query_type,
                 data,
                 stride,
@@ -633,28 +638,30 @@ The rules of `vkWriteAccelerationStructuresPropertiesKHR` that apply to this cra
 
 The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn write_acceleration_structures_properties_khr_unchecked(
+    pub unsafe fn write_acceleration_structures_properties_khr_unchecked<'h>(
         &self,
-        acceleration_structures: &[&AccelerationStructureKHR],
+        acceleration_structures: impl crate::Handles<'h, AccelerationStructureKHR>,
         query_type: vk::QueryType,
         data: &mut [u8],
         stride: usize,
     ) -> Result<()> {
+        let acceleration_structures_given = acceleration_structures;
+        #[allow(unused_variables)]
+        let acceleration_structures = crate::Handles::wrappers(
+            &acceleration_structures_given,
+        );
         let fp = self
             .ext()
             .khr_acceleration_structure
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
             .write_acceleration_structures_properties_khr;
-        let acceleration_structures_raw: smallvec::SmallVec<
-            [vk::AccelerationStructureKHR; 8],
-        > = acceleration_structures.iter().map(|h| h.raw()).collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 acceleration_structures.len() as u32,
-                acceleration_structures_raw.as_ptr(),
+                crate::Handles::raws(acceleration_structures_given).as_ptr(),
                 query_type,
                 data.len(),
                 data.as_mut_ptr().cast(),
@@ -1261,13 +1268,18 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesKHR` that apply to this 
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesKHR")]
     #[inline]
-    pub fn write_acceleration_structures_properties_khr(
+    pub fn write_acceleration_structures_properties_khr<'h>(
         &mut self,
-        acceleration_structures: &[&AccelerationStructureKHR],
+        acceleration_structures: impl crate::Handles<'h, AccelerationStructureKHR>,
         query_type: vk::QueryType,
         query_pool: &QueryPool,
         first_query: u32,
     ) -> Result<()> {
+        let acceleration_structures_given = acceleration_structures;
+        #[allow(unused_variables)]
+        let acceleration_structures = crate::Handles::wrappers(
+            &acceleration_structures_given,
+        );
         {
             let r = self
                 .validate_write_acceleration_structures_properties_khr(
@@ -1281,7 +1293,7 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesKHR` that apply to this 
         // docs).
         unsafe {
             self.write_acceleration_structures_properties_khr_unchecked(
-                acceleration_structures,
+                acceleration_structures_given,
                 query_type,
                 query_pool,
                 first_query,
@@ -1294,13 +1306,18 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesKHR` that apply to this 
 
 The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn write_acceleration_structures_properties_khr_unchecked(
+    pub unsafe fn write_acceleration_structures_properties_khr_unchecked<'h>(
         &mut self,
-        acceleration_structures: &[&AccelerationStructureKHR],
+        acceleration_structures: impl crate::Handles<'h, AccelerationStructureKHR>,
         query_type: vk::QueryType,
         query_pool: &QueryPool,
         first_query: u32,
     ) -> Result<()> {
+        let acceleration_structures_given = acceleration_structures;
+        #[allow(unused_variables)]
+        let acceleration_structures = crate::Handles::wrappers(
+            &acceleration_structures_given,
+        );
         let fp = self
             .device()
             .ext()
@@ -1312,15 +1329,12 @@ The caller upholds the rules that [`Self::write_acceleration_structures_properti
             for h in acceleration_structures {
                 self.retain(h.retained());
             }
-            let acceleration_structures_raw: smallvec::SmallVec<
-                [vk::AccelerationStructureKHR; 8],
-            > = acceleration_structures.iter().map(|h| h.raw()).collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     acceleration_structures.len() as u32,
-                    acceleration_structures_raw.as_ptr(),
+                    crate::Handles::raws(acceleration_structures_given).as_ptr(),
                     query_type,
                     query_pool.raw(),
                     first_query,

@@ -319,12 +319,12 @@ impl Queue {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 382) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 381) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(
     &tuff::PresentInfoKHR::new()
-        .wait_semaphores(&signals)
+        .wait_semaphores(rendered)
         .swapchains(&swapchains, &indices)?,
 ) {
     // ...

@@ -844,13 +844,18 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesNV` that apply to this c
 - `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdWriteAccelerationStructuresPropertiesNV")]
     #[inline]
-    pub fn write_acceleration_structures_properties_nv(
+    pub fn write_acceleration_structures_properties_nv<'h>(
         &mut self,
-        acceleration_structures: &[&AccelerationStructureNV],
+        acceleration_structures: impl crate::Handles<'h, AccelerationStructureNV>,
         query_type: vk::QueryType,
         query_pool: &QueryPool,
         first_query: u32,
     ) -> Result<()> {
+        let acceleration_structures_given = acceleration_structures;
+        #[allow(unused_variables)]
+        let acceleration_structures = crate::Handles::wrappers(
+            &acceleration_structures_given,
+        );
         {
             let r = self
                 .validate_write_acceleration_structures_properties_nv(
@@ -864,7 +869,7 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesNV` that apply to this c
         // docs).
         unsafe {
             self.write_acceleration_structures_properties_nv_unchecked(
-                acceleration_structures,
+                acceleration_structures_given,
                 query_type,
                 query_pool,
                 first_query,
@@ -877,13 +882,18 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesNV` that apply to this c
 
 The caller upholds the rules that [`Self::write_acceleration_structures_properties_nv`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn write_acceleration_structures_properties_nv_unchecked(
+    pub unsafe fn write_acceleration_structures_properties_nv_unchecked<'h>(
         &mut self,
-        acceleration_structures: &[&AccelerationStructureNV],
+        acceleration_structures: impl crate::Handles<'h, AccelerationStructureNV>,
         query_type: vk::QueryType,
         query_pool: &QueryPool,
         first_query: u32,
     ) -> Result<()> {
+        let acceleration_structures_given = acceleration_structures;
+        #[allow(unused_variables)]
+        let acceleration_structures = crate::Handles::wrappers(
+            &acceleration_structures_given,
+        );
         let fp = self
             .device()
             .ext()
@@ -895,15 +905,12 @@ The caller upholds the rules that [`Self::write_acceleration_structures_properti
             for h in acceleration_structures {
                 self.retain(h.retained());
             }
-            let acceleration_structures_raw: smallvec::SmallVec<
-                [vk::AccelerationStructureNV; 8],
-            > = acceleration_structures.iter().map(|h| h.raw()).collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     acceleration_structures.len() as u32,
-                    acceleration_structures_raw.as_ptr(),
+                    crate::Handles::raws(acceleration_structures_given).as_ptr(),
                     query_type,
                     query_pool.raw(),
                     first_query,

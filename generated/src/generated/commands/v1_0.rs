@@ -2619,11 +2619,14 @@ The rules of `vkMergePipelineCaches` that apply to this crate's API ([reference 
 - `VUID-vkMergePipelineCaches-pSrcCaches-parameter` (*by the types*): `pSrcCaches` must be a valid pointer to an array of `srcCacheCount` valid VkPipelineCache handles*/
     #[doc(alias = "vkMergePipelineCaches")]
     #[inline]
-    pub fn merge_pipeline_caches(
+    pub fn merge_pipeline_caches<'h>(
         &self,
         dst_cache: &PipelineCache,
-        src_caches: &[&PipelineCache],
+        src_caches: impl crate::Handles<'h, PipelineCache>,
     ) -> Result<()> {
+        let src_caches_given = src_caches;
+        #[allow(unused_variables)]
+        let src_caches = crate::Handles::wrappers(&src_caches_given);
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2637,7 +2640,7 @@ The rules of `vkMergePipelineCaches` that apply to this crate's API ([reference 
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches) }
+        unsafe { self.merge_pipeline_caches_unchecked(dst_cache, src_caches_given) }
     }
     /**`vkMergePipelineCaches` without its dynamic checks.
 
@@ -2645,11 +2648,14 @@ The rules of `vkMergePipelineCaches` that apply to this crate's API ([reference 
 
 The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, `VUID-vkMergePipelineCaches-dstCache-00770`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn merge_pipeline_caches_unchecked(
+    pub unsafe fn merge_pipeline_caches_unchecked<'h>(
         &self,
         dst_cache: &PipelineCache,
-        src_caches: &[&PipelineCache],
+        src_caches: impl crate::Handles<'h, PipelineCache>,
     ) -> Result<()> {
+        let src_caches_given = src_caches;
+        #[allow(unused_variables)]
+        let src_caches = crate::Handles::wrappers(&src_caches_given);
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2657,17 +2663,13 @@ The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run 
             tuff_runtime::lock_all(syncs)
         };
         let fp = self.fns().fp_v1_0().merge_pipeline_caches;
-        let src_caches_raw: smallvec::SmallVec<[vk::PipelineCache; 8]> = src_caches
-            .iter()
-            .map(|h| h.raw())
-            .collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 dst_cache.raw(),
                 src_caches.len() as u32,
-                src_caches_raw.as_ptr(),
+                crate::Handles::raws(src_caches_given).as_ptr(),
             )
         };
         if r.as_raw() < 0 {
@@ -2864,7 +2866,13 @@ The rules of `vkResetFences` that apply to this crate's API ([reference page](ht
 - `VUID-vkResetFences-pFences-parameter` (*by the types*): `pFences` must be a valid pointer to an array of `fenceCount` valid VkFence handles*/
     #[doc(alias = "vkResetFences")]
     #[inline]
-    pub fn reset_fences(&self, fences: &[&Fence]) -> Result<()> {
+    pub fn reset_fences<'h>(
+        &self,
+        fences: impl crate::Handles<'h, Fence>,
+    ) -> Result<()> {
+        let fences_given = fences;
+        #[allow(unused_variables)]
+        let fences = crate::Handles::wrappers(&fences_given);
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2880,7 +2888,7 @@ The rules of `vkResetFences` that apply to this crate's API ([reference page](ht
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.reset_fences_unchecked(fences) }
+        unsafe { self.reset_fences_unchecked(fences_given) }
     }
     /**`vkResetFences` without its dynamic checks.
 
@@ -2888,7 +2896,13 @@ The rules of `vkResetFences` that apply to this crate's API ([reference page](ht
 
 The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn reset_fences_unchecked(&self, fences: &[&Fence]) -> Result<()> {
+    pub unsafe fn reset_fences_unchecked<'h>(
+        &self,
+        fences: impl crate::Handles<'h, Fence>,
+    ) -> Result<()> {
+        let fences_given = fences;
+        #[allow(unused_variables)]
+        let fences = crate::Handles::wrappers(&fences_given);
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2898,12 +2912,14 @@ The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VU
             tuff_runtime::lock_all(syncs)
         };
         let fp = self.fns().fp_v1_0().reset_fences;
-        let fences_raw: smallvec::SmallVec<[vk::Fence; 8]> = fences
-            .iter()
-            .map(|h| h.raw())
-            .collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe { fp(self.raw(), fences.len() as u32, fences_raw.as_ptr()) };
+        let r = unsafe {
+            fp(
+                self.raw(),
+                fences.len() as u32,
+                crate::Handles::raws(fences_given).as_ptr(),
+            )
+        };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
@@ -3057,19 +3073,22 @@ The rules of `vkWaitForFences` that apply to this crate's API ([reference page](
 - `VUID-vkWaitForFences-pFences-parameter` (*by the types*): `pFences` must be a valid pointer to an array of `fenceCount` valid VkFence handles*/
     #[doc(alias = "vkWaitForFences")]
     #[inline]
-    pub fn wait_for_fences(
+    pub fn wait_for_fences<'h>(
         &self,
-        fences: &[&Fence],
+        fences: impl crate::Handles<'h, Fence>,
         wait_all: bool,
         timeout: u64,
     ) -> Result<crate::status::SuccessOrTimeout> {
+        let fences_given = fences;
+        #[allow(unused_variables)]
+        let fences = crate::Handles::wrappers(&fences_given);
         {
             let r = self.validate_wait_for_fences(fences);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.wait_for_fences_unchecked(fences, wait_all, timeout) }
+        unsafe { self.wait_for_fences_unchecked(fences_given, wait_all, timeout) }
     }
     /**`vkWaitForFences` without its dynamic checks.
 
@@ -3077,21 +3096,26 @@ The rules of `vkWaitForFences` that apply to this crate's API ([reference page](
 
 The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-fenceCount-arraylength`, `VUID-vkWaitForFences-pFences-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn wait_for_fences_unchecked(
+    pub unsafe fn wait_for_fences_unchecked<'h>(
         &self,
-        fences: &[&Fence],
+        fences: impl crate::Handles<'h, Fence>,
         wait_all: bool,
         timeout: u64,
     ) -> Result<crate::status::SuccessOrTimeout> {
+        let fences_given = fences;
+        #[allow(unused_variables)]
+        let fences = crate::Handles::wrappers(&fences_given);
         let fp = self.fns().fp_v1_0().wait_for_fences;
-        let fences_raw: smallvec::SmallVec<[vk::Fence; 8]> = fences
-            .iter()
-            .map(|h| h.raw())
-            .collect();
         let wait_all = vk::Bool32::from(wait_all);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
-            fp(self.raw(), fences.len() as u32, fences_raw.as_ptr(), wait_all, timeout)
+            fp(
+                self.raw(),
+                fences.len() as u32,
+                crate::Handles::raws(fences_given).as_ptr(),
+                wait_all,
+                timeout,
+            )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));

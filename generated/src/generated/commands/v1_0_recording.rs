@@ -412,15 +412,18 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
 - `VUID-vkCmdWaitEvents-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdWaitEvents")]
     #[inline]
-    pub unsafe fn wait_events<'a>(
+    pub unsafe fn wait_events<'a, 'h>(
         &mut self,
-        events: &[&Event],
+        events: impl crate::Handles<'h, Event>,
         src_stage_mask: vk::PipelineStageFlags,
         dst_stage_mask: vk::PipelineStageFlags,
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) -> Result<()> {
+        let events_given = events;
+        #[allow(unused_variables)]
+        let events = crate::Handles::wrappers(&events_given);
         crate::hooks::wait_events_checks(
             self,
             buffer_memory_barriers,
@@ -442,7 +445,7 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
         // docs).
         unsafe {
             self.wait_events_unchecked(
-                events,
+                events_given,
                 src_stage_mask,
                 dst_stage_mask,
                 memory_barriers,
@@ -457,30 +460,29 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
 
 The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn wait_events_unchecked<'a>(
+    pub unsafe fn wait_events_unchecked<'a, 'h>(
         &mut self,
-        events: &[&Event],
+        events: impl crate::Handles<'h, Event>,
         src_stage_mask: vk::PipelineStageFlags,
         dst_stage_mask: vk::PipelineStageFlags,
         memory_barriers: &[MemoryBarrier<'a>],
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) -> Result<()> {
+        let events_given = events;
+        #[allow(unused_variables)]
+        let events = crate::Handles::wrappers(&events_given);
         let fp = self.device().fns().fp_v1_0().cmd_wait_events;
         {
             for h in events {
                 self.retain(h.retained());
             }
-            let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     events.len() as u32,
-                    events_raw.as_ptr(),
+                    crate::Handles::raws(events_given).as_ptr(),
                     src_stage_mask,
                     dst_stage_mask,
                     memory_barriers.len() as u32,

@@ -10,7 +10,7 @@ impl<'c, S: State> Recorder<'c, S> {
 Called, as `examples/src/bin/compute.rs` (line 173) does; the example programs run in CI:
 
 ```ignore
-rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &[&set], &[])?;
+rec.bind_descriptor_sets(vk::PipelineBindPoint::COMPUTE, &layout, 0, &set, &[])?;
 ```
 
 # Valid usage
@@ -41,14 +41,17 @@ The rules of `vkCmdBindDescriptorSets` that apply to this crate's API ([referenc
 - `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563` (*by the types*): Each element of `pDescriptorSets` must be a valid VkDescriptorSet*/
     #[doc(alias = "vkCmdBindDescriptorSets")]
     #[inline]
-    pub fn bind_descriptor_sets(
+    pub fn bind_descriptor_sets<'h>(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
         first_set: u32,
-        descriptor_sets: &[&DescriptorSet],
+        descriptor_sets: impl crate::Handles<'h, DescriptorSet>,
         dynamic_offsets: &[u32],
     ) -> Result<()> {
+        let descriptor_sets_given = descriptor_sets;
+        #[allow(unused_variables)]
+        let descriptor_sets = crate::Handles::wrappers(&descriptor_sets_given);
         crate::hooks::cmd_bind_descriptor_sets_checks(
             self,
             pipeline_bind_point,
@@ -73,7 +76,7 @@ The rules of `vkCmdBindDescriptorSets` that apply to this crate's API ([referenc
                 pipeline_bind_point,
                 layout,
                 first_set,
-                descriptor_sets,
+                descriptor_sets_given,
                 dynamic_offsets,
             )
         }
@@ -84,23 +87,22 @@ The rules of `vkCmdBindDescriptorSets` that apply to this crate's API ([referenc
 
 The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`, `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn bind_descriptor_sets_unchecked(
+    pub unsafe fn bind_descriptor_sets_unchecked<'h>(
         &mut self,
         pipeline_bind_point: vk::PipelineBindPoint,
         layout: &PipelineLayout,
         first_set: u32,
-        descriptor_sets: &[&DescriptorSet],
+        descriptor_sets: impl crate::Handles<'h, DescriptorSet>,
         dynamic_offsets: &[u32],
     ) -> Result<()> {
+        let descriptor_sets_given = descriptor_sets;
+        #[allow(unused_variables)]
+        let descriptor_sets = crate::Handles::wrappers(&descriptor_sets_given);
         let fp = self.device().fns().fp_v1_0().cmd_bind_descriptor_sets;
         {
             for h in descriptor_sets {
                 self.retain(h.retained());
             }
-            let descriptor_sets_raw: smallvec::SmallVec<[vk::DescriptorSet; 8]> = descriptor_sets
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
@@ -109,7 +111,7 @@ The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run t
                     layout.raw(),
                     first_set,
                     descriptor_sets.len() as u32,
-                    descriptor_sets_raw.as_ptr(),
+                    crate::Handles::raws(descriptor_sets_given).as_ptr(),
                     dynamic_offsets.len() as u32,
                     dynamic_offsets.as_ptr().cast(),
                 )
@@ -129,7 +131,7 @@ The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run t
 
 # Example
 
-Called, as `examples/src/scenes/bezier.rs` (line 142) does; the example programs run in CI:
+Called, as `examples/src/scenes/bezier.rs` (line 141) does; the example programs run in CI:
 
 ```ignore
 rec.bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
@@ -276,7 +278,7 @@ The caller upholds the rules that [`Self::bind_pipeline`] checks at run time: `V
 Called, as `examples/src/scenes/teapots.rs` (line 160) does; the example programs run in CI:
 
 ```ignore
-rec.bind_vertex_buffers(0, &[&self.vertices], &[0])?;
+rec.bind_vertex_buffers(0, &self.vertices, &[0])?;
 ```
 
 # Valid usage
@@ -300,12 +302,15 @@ The rules of `vkCmdBindVertexBuffers` that apply to this crate's API ([reference
 - `VUID-vkCmdBindVertexBuffers-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindVertexBuffers")]
     #[inline]
-    pub fn bind_vertex_buffers(
+    pub fn bind_vertex_buffers<'h>(
         &mut self,
         first_binding: u32,
-        buffers: &[&Buffer],
+        buffers: impl crate::Handles<'h, Buffer>,
         offsets: &[vk::DeviceSize],
     ) -> Result<()> {
+        let buffers_given = buffers;
+        #[allow(unused_variables)]
+        let buffers = crate::Handles::wrappers(&buffers_given);
         if offsets.len() != buffers.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkCmdBindVertexBuffers-pOffsets-parameter",
@@ -327,7 +332,9 @@ The rules of `vkCmdBindVertexBuffers` that apply to this crate's API ([reference
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.bind_vertex_buffers_unchecked(first_binding, buffers, offsets) }
+        unsafe {
+            self.bind_vertex_buffers_unchecked(first_binding, buffers_given, offsets)
+        }
     }
     /**`vkCmdBindVertexBuffers` without its dynamic checks.
 
@@ -335,28 +342,27 @@ The rules of `vkCmdBindVertexBuffers` that apply to this crate's API ([reference
 
 The caller upholds the rules that [`Self::bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-firstBinding-00625`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn bind_vertex_buffers_unchecked(
+    pub unsafe fn bind_vertex_buffers_unchecked<'h>(
         &mut self,
         first_binding: u32,
-        buffers: &[&Buffer],
+        buffers: impl crate::Handles<'h, Buffer>,
         offsets: &[vk::DeviceSize],
     ) -> Result<()> {
+        let buffers_given = buffers;
+        #[allow(unused_variables)]
+        let buffers = crate::Handles::wrappers(&buffers_given);
         let fp = self.device().fns().fp_v1_0().cmd_bind_vertex_buffers;
         {
             for h in buffers {
                 self.retain(h.retained());
             }
-            let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     first_binding,
                     buffers.len() as u32,
-                    buffers_raw.as_ptr(),
+                    crate::Handles::raws(buffers_given).as_ptr(),
                     offsets.as_ptr().cast(),
                 )
             };
@@ -479,10 +485,13 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
 - `VUID-vkCmdExecuteCommands-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdExecuteCommands")]
     #[inline]
-    pub unsafe fn execute_commands(
+    pub unsafe fn execute_commands<'h>(
         &mut self,
-        command_buffers: &[&CommandBuffer],
+        command_buffers: impl crate::Handles<'h, CommandBuffer>,
     ) -> Result<()> {
+        let command_buffers_given = command_buffers;
+        #[allow(unused_variables)]
+        let command_buffers = crate::Handles::wrappers(&command_buffers_given);
         crate::hooks::cmd_execute_commands_checks(self, command_buffers)?;
         {
             let r = self.validate_execute_commands(command_buffers);
@@ -490,7 +499,7 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.execute_commands_unchecked(command_buffers) }
+        unsafe { self.execute_commands_unchecked(command_buffers_given) }
     }
     /**`vkCmdExecuteCommands` without its dynamic checks.
 
@@ -498,26 +507,25 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
 
 The caller upholds the rules that [`Self::execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-commonparent`, `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn execute_commands_unchecked(
+    pub unsafe fn execute_commands_unchecked<'h>(
         &mut self,
-        command_buffers: &[&CommandBuffer],
+        command_buffers: impl crate::Handles<'h, CommandBuffer>,
     ) -> Result<()> {
+        let command_buffers_given = command_buffers;
+        #[allow(unused_variables)]
+        let command_buffers = crate::Handles::wrappers(&command_buffers_given);
         let fp = self.device().fns().fp_v1_0().cmd_execute_commands;
         {
             for h in command_buffers {
                 self.retain(h.retained());
             }
-            let command_buffers_raw: smallvec::SmallVec<[vk::CommandBuffer; 8]> = command_buffers
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             crate::hooks::cmd_execute_commands_before(self, command_buffers);
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     command_buffers.len() as u32,
-                    command_buffers_raw.as_ptr(),
+                    crate::Handles::raws(command_buffers_given).as_ptr(),
                 )
             };
             crate::hooks::execute_layouts_done(self, command_buffers);

@@ -441,7 +441,7 @@ The caller upholds the rules that [`Self::draw`] checks at run time: `VUID-vkCmd
 
 # Example
 
-Called, as `examples/src/scenes/bezier.rs` (line 148) does; the example programs run in CI:
+Called, as `examples/src/scenes/bezier.rs` (line 147) does; the example programs run in CI:
 
 ```ignore
 rec.draw_indexed(16, 1, patch * 16, 0, 0)?;

@@ -717,14 +717,17 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
 - `VUID-vkCmdBindVertexBuffers2-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindVertexBuffers2")]
     #[inline]
-    pub unsafe fn bind_vertex_buffers2(
+    pub unsafe fn bind_vertex_buffers2<'h>(
         &mut self,
         first_binding: u32,
-        buffers: &[&Buffer],
+        buffers: impl crate::Handles<'h, Buffer>,
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
     ) -> Result<()> {
+        let buffers_given = buffers;
+        #[allow(unused_variables)]
+        let buffers = crate::Handles::wrappers(&buffers_given);
         if offsets.len() != buffers.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkCmdBindVertexBuffers2-pOffsets-parameter",
@@ -768,7 +771,7 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
         unsafe {
             self.bind_vertex_buffers2_unchecked(
                 first_binding,
-                buffers,
+                buffers_given,
                 offsets,
                 sizes,
                 strides,
@@ -781,30 +784,29 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
 
 The caller upholds the rules that [`Self::bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn bind_vertex_buffers2_unchecked(
+    pub unsafe fn bind_vertex_buffers2_unchecked<'h>(
         &mut self,
         first_binding: u32,
-        buffers: &[&Buffer],
+        buffers: impl crate::Handles<'h, Buffer>,
         offsets: &[vk::DeviceSize],
         sizes: &[vk::DeviceSize],
         strides: &[vk::DeviceSize],
     ) -> Result<()> {
+        let buffers_given = buffers;
+        #[allow(unused_variables)]
+        let buffers = crate::Handles::wrappers(&buffers_given);
         let fp = self.device().fns().fp_v1_3().cmd_bind_vertex_buffers2;
         {
             for h in buffers {
                 self.retain(h.retained());
             }
-            let buffers_raw: smallvec::SmallVec<[vk::Buffer; 8]> = buffers
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     first_binding,
                     buffers.len() as u32,
-                    buffers_raw.as_ptr(),
+                    crate::Handles::raws(buffers_given).as_ptr(),
                     offsets.as_ptr().cast(),
                     if sizes.is_empty() {
                         core::ptr::null()
@@ -1718,11 +1720,14 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
 - `VUID-vkCmdWaitEvents2-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdWaitEvents2")]
     #[inline]
-    pub unsafe fn wait_events2<'a>(
+    pub unsafe fn wait_events2<'a, 'h>(
         &mut self,
-        events: &[&Event],
+        events: impl crate::Handles<'h, Event>,
         dependency_infos: &[DependencyInfo<'a>],
     ) -> Result<()> {
+        let events_given = events;
+        #[allow(unused_variables)]
+        let events = crate::Handles::wrappers(&events_given);
         if dependency_infos.len() != events.len() {
             return Err(Error::Validation {
                 vuid: "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter",
@@ -1739,7 +1744,7 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.wait_events2_unchecked(events, dependency_infos) }
+        unsafe { self.wait_events2_unchecked(events_given, dependency_infos) }
     }
     /**`vkCmdWaitEvents2` without its dynamic checks.
 
@@ -1747,26 +1752,25 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
 
 The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn wait_events2_unchecked<'a>(
+    pub unsafe fn wait_events2_unchecked<'a, 'h>(
         &mut self,
-        events: &[&Event],
+        events: impl crate::Handles<'h, Event>,
         dependency_infos: &[DependencyInfo<'a>],
     ) -> Result<()> {
+        let events_given = events;
+        #[allow(unused_variables)]
+        let events = crate::Handles::wrappers(&events_given);
         let fp = self.device().fns().fp_v1_3().cmd_wait_events2;
         {
             for h in events {
                 self.retain(h.retained());
             }
-            let events_raw: smallvec::SmallVec<[vk::Event; 8]> = events
-                .iter()
-                .map(|h| h.raw())
-                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     events.len() as u32,
-                    events_raw.as_ptr(),
+                    crate::Handles::raws(events_given).as_ptr(),
                     dependency_infos.as_ptr().cast(),
                 )
             };

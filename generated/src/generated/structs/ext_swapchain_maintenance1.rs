@@ -113,7 +113,8 @@ safe_struct!(
 impl<'a> SwapchainPresentFenceInfoEXT<'a> {
     ///Sets `pFences`.
     #[inline]
-    pub fn fences(mut self, value: &'a HandleSlice<'a, Fence>) -> Self {
+    pub fn fences(mut self, value: impl Handles<'a, Fence>) -> Self {
+        let value = Handles::raws(value);
         self.raw.swapchain_count = value.len() as _;
         self.raw.p_fences = value.as_ptr().cast();
         self

@@ -719,8 +719,9 @@ impl<'a> WriteDescriptorSetAccelerationStructureKHR<'a> {
     #[inline]
     pub fn acceleration_structures(
         mut self,
-        value: &'a HandleSlice<'a, AccelerationStructureKHR>,
+        value: impl Handles<'a, AccelerationStructureKHR>,
     ) -> Self {
+        let value = Handles::raws(value);
         self.raw.acceleration_structure_count = value.len() as _;
         self.raw.p_acceleration_structures = value.as_ptr().cast();
         self

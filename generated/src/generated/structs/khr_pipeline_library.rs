@@ -32,7 +32,8 @@ safe_struct!(
 impl<'a> PipelineLibraryCreateInfoKHR<'a> {
     ///Sets `pLibraries`.
     #[inline]
-    pub fn libraries(mut self, value: &'a HandleSlice<'a, Pipeline>) -> Self {
+    pub fn libraries(mut self, value: impl Handles<'a, Pipeline>) -> Self {
+        let value = Handles::raws(value);
         self.raw.library_count = value.len() as _;
         self.raw.p_libraries = value.as_ptr().cast();
         self

@@ -6,12 +6,12 @@ use super::*;
 
 # Example
 
-Made, as `examples/src/window.rs` (line 383) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 382) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(
     &tuff::PresentInfoKHR::new()
-        .wait_semaphores(&signals)
+        .wait_semaphores(rendered)
         .swapchains(&swapchains, &indices)?,
 ) {
     // ...
@@ -46,7 +46,8 @@ safe_struct!(#[cfg(feature = "khr_swapchain")] PresentInfoKHR, 'a; zeroed chaine
 impl<'a> PresentInfoKHR<'a> {
     ///Sets `pWaitSemaphores`.
     #[inline]
-    pub fn wait_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
+    pub fn wait_semaphores(mut self, value: impl Handles<'a, Semaphore>) -> Self {
+        let value = Handles::raws(value);
         self.raw.wait_semaphore_count = value.len() as _;
         self.raw.p_wait_semaphores = value.as_ptr().cast();
         self
@@ -59,9 +60,10 @@ impl<'a> PresentInfoKHR<'a> {
     #[inline]
     pub fn swapchains(
         mut self,
-        swapchains: &'a HandleSlice<'a, SwapchainKHR>,
+        swapchains: impl Handles<'a, SwapchainKHR>,
         image_indices: &'a [u32],
     ) -> crate::Result<Self> {
+        let swapchains = Handles::raws(swapchains);
         let len = swapchains.len();
         if image_indices.len() != len {
             return Err(crate::Error::Validation {

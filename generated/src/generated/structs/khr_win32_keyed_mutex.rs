@@ -37,10 +37,11 @@ impl<'a> Win32KeyedMutexAcquireReleaseInfoKHR<'a> {
     #[inline]
     pub fn acquire_syncs(
         mut self,
-        acquire_syncs: &'a HandleSlice<'a, DeviceMemory>,
+        acquire_syncs: impl Handles<'a, DeviceMemory>,
         acquire_keys: &'a [u64],
         acquire_timeouts: &'a [u32],
     ) -> crate::Result<Self> {
+        let acquire_syncs = Handles::raws(acquire_syncs);
         let len = acquire_syncs.len();
         if acquire_keys.len() != len {
             return Err(crate::Error::Validation {
@@ -74,9 +75,10 @@ impl<'a> Win32KeyedMutexAcquireReleaseInfoKHR<'a> {
     #[inline]
     pub fn release_syncs(
         mut self,
-        release_syncs: &'a HandleSlice<'a, DeviceMemory>,
+        release_syncs: impl Handles<'a, DeviceMemory>,
         release_keys: &'a [u64],
     ) -> crate::Result<Self> {
+        let release_syncs = Handles::raws(release_syncs);
         let len = release_syncs.len();
         if release_keys.len() != len {
             return Err(crate::Error::Validation {

@@ -3,9 +3,7 @@
 //! Safe counterparts of the registry's structs that carry handles, pointers or
 //! an `sType`, one module per core version and extension. Plain structs
 //! (`vk::Extent2D`, ...) are used as ash has them.
-use crate::{
-    chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, HandleSlice,
-};
+use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, Handles};
 use ash::vk;
 use core::marker::PhantomData;
 mod v1_0;

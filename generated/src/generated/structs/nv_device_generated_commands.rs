@@ -254,7 +254,8 @@ impl<'a> GraphicsPipelineShaderGroupsCreateInfoNV<'a> {
     }
     ///Sets `pPipelines`.
     #[inline]
-    pub fn pipelines(mut self, value: &'a HandleSlice<'a, Pipeline>) -> Self {
+    pub fn pipelines(mut self, value: impl Handles<'a, Pipeline>) -> Self {
+        let value = Handles::raws(value);
         self.raw.pipeline_count = value.len() as _;
         self.raw.p_pipelines = value.as_ptr().cast();
         self

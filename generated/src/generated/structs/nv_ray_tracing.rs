@@ -690,8 +690,9 @@ impl<'a> WriteDescriptorSetAccelerationStructureNV<'a> {
     #[inline]
     pub fn acceleration_structures(
         mut self,
-        value: &'a HandleSlice<'a, AccelerationStructureNV>,
+        value: impl Handles<'a, AccelerationStructureNV>,
     ) -> Self {
+        let value = Handles::raws(value);
         self.raw.acceleration_structure_count = value.len() as _;
         self.raw.p_acceleration_structures = value.as_ptr().cast();
         self

@@ -200,7 +200,8 @@ safe_struct!(BindSparseInfo, 'a; zeroed chained);
 impl<'a> BindSparseInfo<'a> {
     ///Sets `pWaitSemaphores`.
     #[inline]
-    pub fn wait_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
+    pub fn wait_semaphores(mut self, value: impl Handles<'a, Semaphore>) -> Self {
+        let value = Handles::raws(value);
         self.raw.wait_semaphore_count = value.len() as _;
         self.raw.p_wait_semaphores = value.as_ptr().cast();
         self
@@ -231,7 +232,8 @@ impl<'a> BindSparseInfo<'a> {
     }
     ///Sets `pSignalSemaphores`.
     #[inline]
-    pub fn signal_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
+    pub fn signal_semaphores(mut self, value: impl Handles<'a, Semaphore>) -> Self {
+        let value = Handles::raws(value);
         self.raw.signal_semaphore_count = value.len() as _;
         self.raw.p_signal_semaphores = value.as_ptr().cast();
         self
@@ -1045,13 +1047,13 @@ impl<'a> DescriptorPoolCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/scenes/bezier.rs` (line 87) does; the example programs run in CI:
+Made, as `examples/src/scenes/bezier.rs` (line 86) does; the example programs run in CI:
 
 ```ignore
 let set = d
     .allocate_descriptor_sets(
         &pool,
-        &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&layouts),
+        &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
     )?
     .pop()
     .ok_or_else(|| anyhow::anyhow!("no descriptor set was allocated"))?;
@@ -1101,10 +1103,8 @@ impl<'a> DescriptorSetAllocateInfo<'a> {
     }
     ///Sets `pSetLayouts`.
     #[inline]
-    pub fn set_layouts(
-        mut self,
-        value: &'a HandleSlice<'a, DescriptorSetLayout>,
-    ) -> Self {
+    pub fn set_layouts(mut self, value: impl Handles<'a, DescriptorSetLayout>) -> Self {
+        let value = Handles::raws(value);
         self.raw.descriptor_set_count = value.len() as _;
         self.raw.p_set_layouts = value.as_ptr().cast();
         self
@@ -1178,7 +1178,8 @@ impl<'a> DescriptorSetLayoutBinding<'a> {
     }
     ///Sets `pImmutableSamplers` (and `descriptorCount`).
     #[inline]
-    pub fn immutable_samplers(mut self, value: &'a HandleSlice<'a, Sampler>) -> Self {
+    pub fn immutable_samplers(mut self, value: impl Handles<'a, Sampler>) -> Self {
+        let value = Handles::raws(value);
         let len = value.len();
         self.raw.descriptor_count = len as _;
         self.raw.p_immutable_samplers = value.as_ptr().cast();
@@ -1564,7 +1565,8 @@ impl<'a> FramebufferCreateInfo<'a> {
     }
     ///Sets `pAttachments`.
     #[inline]
-    pub fn attachments(mut self, value: &'a HandleSlice<'a, ImageView>) -> Self {
+    pub fn attachments(mut self, value: impl Handles<'a, ImageView>) -> Self {
+        let value = Handles::raws(value);
         self.raw.attachment_count = value.len() as _;
         self.raw.p_attachments = value.as_ptr().cast();
         self

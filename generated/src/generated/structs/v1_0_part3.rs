@@ -638,10 +638,8 @@ impl<'a> PipelineLayoutCreateInfo<'a> {
     }
     ///Sets `pSetLayouts`.
     #[inline]
-    pub fn set_layouts(
-        mut self,
-        value: &'a HandleSlice<'a, DescriptorSetLayout>,
-    ) -> Self {
+    pub fn set_layouts(mut self, value: impl Handles<'a, DescriptorSetLayout>) -> Self {
+        let value = Handles::raws(value);
         self.raw.set_layout_count = value.len() as _;
         self.raw.p_set_layouts = value.as_ptr().cast();
         self

@@ -59,9 +59,10 @@ impl<'a> SubmitInfo<'a> {
     #[inline]
     pub fn wait_semaphores(
         mut self,
-        wait_semaphores: &'a HandleSlice<'a, Semaphore>,
+        wait_semaphores: impl Handles<'a, Semaphore>,
         wait_dst_stage_mask: &'a [vk::PipelineStageFlags],
     ) -> crate::Result<Self> {
+        let wait_semaphores = Handles::raws(wait_semaphores);
         let len = wait_semaphores.len();
         if wait_dst_stage_mask.len() != len {
             return Err(crate::Error::Validation {
@@ -79,14 +80,16 @@ impl<'a> SubmitInfo<'a> {
     }
     ///Sets `pCommandBuffers`.
     #[inline]
-    pub fn command_buffers(mut self, value: &'a HandleSlice<'a, CommandBuffer>) -> Self {
+    pub fn command_buffers(mut self, value: impl Handles<'a, CommandBuffer>) -> Self {
+        let value = Handles::raws(value);
         self.raw.command_buffer_count = value.len() as _;
         self.raw.p_command_buffers = value.as_ptr().cast();
         self
     }
     ///Sets `pSignalSemaphores`.
     #[inline]
-    pub fn signal_semaphores(mut self, value: &'a HandleSlice<'a, Semaphore>) -> Self {
+    pub fn signal_semaphores(mut self, value: impl Handles<'a, Semaphore>) -> Self {
+        let value = Handles::raws(value);
         self.raw.signal_semaphore_count = value.len() as _;
         self.raw.p_signal_semaphores = value.as_ptr().cast();
         self
@@ -371,7 +374,8 @@ impl<'a> WriteDescriptorSet<'a> {
     }
     ///Sets `pTexelBufferView` (and `descriptorCount`). `pImageInfo`, `pBufferInfo` share that count: each is cleared when its length differs.
     #[inline]
-    pub fn texel_buffer_view(mut self, value: &'a HandleSlice<'a, BufferView>) -> Self {
+    pub fn texel_buffer_view(mut self, value: impl Handles<'a, BufferView>) -> Self {
+        let value = Handles::raws(value);
         let len = value.len();
         if self.raw.descriptor_count as usize != len {
             self.raw.p_image_info = core::ptr::null();

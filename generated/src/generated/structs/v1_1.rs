@@ -471,10 +471,8 @@ safe_struct!(DeviceGroupDeviceCreateInfo, 'a; zeroed chained);
 impl<'a> DeviceGroupDeviceCreateInfo<'a> {
     ///Sets `pPhysicalDevices`.
     #[inline]
-    pub fn physical_devices(
-        mut self,
-        value: &'a HandleSlice<'a, PhysicalDevice>,
-    ) -> Self {
+    pub fn physical_devices(mut self, value: impl Handles<'a, PhysicalDevice>) -> Self {
+        let value = Handles::raws(value);
         self.raw.physical_device_count = value.len() as _;
         self.raw.p_physical_devices = value.as_ptr().cast();
         self

@@ -1785,7 +1785,8 @@ safe_struct!(RenderPassAttachmentBeginInfo, 'a; zeroed chained);
 impl<'a> RenderPassAttachmentBeginInfo<'a> {
     ///Sets `pAttachments`.
     #[inline]
-    pub fn attachments(mut self, value: &'a HandleSlice<'a, ImageView>) -> Self {
+    pub fn attachments(mut self, value: impl Handles<'a, ImageView>) -> Self {
+        let value = Handles::raws(value);
         self.raw.attachment_count = value.len() as _;
         self.raw.p_attachments = value.as_ptr().cast();
         self
@@ -2016,9 +2017,10 @@ impl<'a> SemaphoreWaitInfo<'a> {
     #[inline]
     pub fn semaphores(
         mut self,
-        semaphores: &'a HandleSlice<'a, Semaphore>,
+        semaphores: impl Handles<'a, Semaphore>,
         values: &'a [u64],
     ) -> crate::Result<Self> {
+        let semaphores = Handles::raws(semaphores);
         let len = semaphores.len();
         if values.len() != len {
             return Err(crate::Error::Validation {

@@ -13,7 +13,7 @@ pub fn check_present_info_khr(v: &vk::PresentInfoKHR<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -25,7 +25,7 @@ pub fn check_present_info_khr(v: &vk::PresentInfoKHR<'_>, s: &Scope<'_>) -> Resu
             );
         }
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_swapchains, v.swapchain_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(

@@ -8,7 +8,7 @@ pub fn check_win32_keyed_mutex_acquire_release_info_nv(
     v: &vk::Win32KeyedMutexAcquireReleaseInfoNV<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_acquire_syncs, v.acquire_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -20,7 +20,7 @@ pub fn check_win32_keyed_mutex_acquire_release_info_nv(
             );
         }
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_release_syncs, v.release_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(

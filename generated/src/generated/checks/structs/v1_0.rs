@@ -422,7 +422,7 @@ pub fn check_attachment_reference(
 }
 ///The rules of `VkBindSparseInfo` that are checked at run time.
 pub fn check_bind_sparse_info(v: &vk::BindSparseInfo<'_>, s: &Scope<'_>) -> Result<()> {
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -434,7 +434,7 @@ pub fn check_bind_sparse_info(v: &vk::BindSparseInfo<'_>, s: &Scope<'_>) -> Resu
             );
         }
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -1200,7 +1200,7 @@ pub fn check_descriptor_set_allocate_info(
             ),
         );
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_set_layouts, v.descriptor_set_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -1482,7 +1482,7 @@ pub fn check_framebuffer_create_info(
             ),
         );
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_attachments, v.attachment_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3734,7 +3734,7 @@ pub fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
             "VUID-VkSubmitInfo-pWaitDstStageMask-parameter",
         )?;
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3746,7 +3746,7 @@ pub fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
             );
         }
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_command_buffers, v.command_buffer_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -3758,7 +3758,7 @@ pub fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
             );
         }
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
@@ -4494,7 +4494,7 @@ pub fn check_write_descriptor_set(
             ),
         );
     }
-    // SAFETY: the safe setter stored this HandleSlice and its count.
+    // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_texel_buffer_view, v.descriptor_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
             return Err(
