@@ -1109,7 +1109,7 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                         .submit(&[tuff::SubmitInfo::new().command_buffers(&cb)], Some(&done))
                         .expect("submit");
                     wait(s, &done);
-                    s.device.reset_fences(&[&done]).expect("reset");
+                    s.device.reset_fences(&done).expect("reset");
                 }
             });
         }
