@@ -407,6 +407,21 @@ fn arrays_of_handles_take_the_same_forms_in_commands_and_structs() {
     assert_silent(&s.messages);
 }
 
+#[test]
+fn codec_structs_are_taken_as_slices_that_set_their_count() {
+    // SAFETY: all-zero bytes are a parameter set: numbers, bit flags and null pointers.
+    let sps: [vk::native::StdVideoH264SequenceParameterSet; 2] = unsafe { std::mem::zeroed() };
+    // SAFETY: the parameter sets' own pointers are null, which the codec allows here.
+    let add = unsafe { tuff::VideoDecodeH264SessionParametersAddInfoKHR::new().std_sp_ss(&sps) };
+    assert_eq!(add.std_sps_count, 2);
+    assert_eq!(add.p_std_sp_ss, sps.as_ptr());
+    // SAFETY: as above.
+    let picture: vk::native::StdVideoDecodeH264PictureInfo = unsafe { std::mem::zeroed() };
+    // SAFETY: a picture info holds no pointer.
+    let info = unsafe { tuff::VideoDecodeH264PictureInfoKHR::new().std_picture_info(&picture) };
+    assert_eq!(info.p_std_picture_info, &picture as *const _);
+}
+
 /// One frame into a swapchain: acquire, clear the image, present.
 fn present_one_frame(
     s: &Setup,

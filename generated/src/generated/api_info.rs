@@ -352,6 +352,7 @@ pub const CHECKED_EXTENSIONS: &[&str] = &[
     "VK_EXT_debug_utils",
     "VK_EXT_depth_clamp_zero_one",
     "VK_EXT_device_address_binding_report",
+    "VK_EXT_device_memory_report",
     "VK_EXT_direct_mode_display",
     "VK_EXT_directfb_surface",
     "VK_EXT_display_surface_counter",

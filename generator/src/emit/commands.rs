@@ -511,6 +511,15 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     pre.push(quote!(let mut out: *mut #ty = core::ptr::null_mut();));
                     call_args.push(quote!(core::ptr::addr_of_mut!(out).cast(),));
                     quote!(*mut #ty)
+                } else if crate::plan::shape::is_foreign_value(model, &p.type_name) {
+                    // ash spells these as the C typedefs (`*mut c_void`, `u32`), some
+                    // without `Default`.
+                    pre.push(quote! {
+                        __safety!("a window-system value is a C integer or pointer, for which all-zero bytes are a value.");
+                        let mut out: #ty = unsafe { core::mem::zeroed() };
+                    });
+                    call_args.push(quote!(&mut out,));
+                    ty
                 } else {
                     pre.push(quote!(let mut out: #ty = Default::default();));
                     call_args.push(quote!(&mut out,));

@@ -91,7 +91,8 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
             Member::HandleSlice { .. }
             | Member::Slice { .. }
             | Member::Bytes { .. }
-            | Member::CStrSlice { .. } => unreachable!("arrays are set above"),
+            | Member::CStrSlice { .. }
+            | Member::CodecStd { count: Some(_) } => unreachable!("arrays are set above"),
             Member::PNext => {}
             Member::Value if groups.iter().any(|g| g.count == m.name) => {
                 setters.push(count_setter(m, ty, &groups));
@@ -249,6 +250,18 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     }
                 });
             }
+            Member::CodecStd { count: None } => {
+                let (unsafe_kw, codec_safety) = codec_safety(true);
+                let doc = format!("Sets `{}`.{codec_safety}", m.name);
+                setters.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub #unsafe_kw fn #setter(mut self, value: &'a #ty) -> Self {
+                        self.raw.#f = value;
+                        self
+                    }
+                });
+            }
             Member::Platform => {
                 let mutability = if m.is_const {
                     quote!(const)
@@ -375,6 +388,8 @@ struct ArrayParam {
     ty: TokenStream,
     /// Taken as `impl Handles`, whose raw handles the setter stores.
     handles: bool,
+    /// A video codec's structs: the setter is `unsafe` (`Member::CodecStd`).
+    codec: bool,
 }
 
 impl ArrayParam {
@@ -402,6 +417,10 @@ fn array_param(cx: &Context, m: &Field, shape: &Member) -> Option<ArrayParam> {
             (count, quote!(&'a [#elem]))
         }
         Member::Bytes { count } => (count, quote!(&'a [u8])),
+        Member::CodecStd { count: Some(count) } => {
+            let elem = spelled(cx.model, &cx.facts, &m.type_name);
+            (count, quote!(&'a [#elem]))
+        }
         Member::CStrSlice { count } => (count, quote!(&'a [CStrPtr<'a>])),
         _ => return None,
     };
@@ -410,7 +429,22 @@ fn array_param(cx: &Context, m: &Field, shape: &Member) -> Option<ArrayParam> {
         count: count.clone(),
         ty,
         handles: matches!(shape, Member::HandleSlice { .. }),
+        codec: matches!(shape, Member::CodecStd { .. }),
     })
+}
+
+/// The `unsafe` of a setter of a video codec's structs, and its `# Safety` section.
+fn codec_safety(codec: bool) -> (TokenStream, String) {
+    match codec {
+        true => (
+            quote!(unsafe),
+            "\n\n# Safety\n\nEvery pointer inside the codec's structs (a parameter set's \
+             scaling lists or VUI, say) must be valid, as the video specification requires, \
+             for as long as the struct is used."
+                .to_owned(),
+        ),
+        false => (quote!(), String::new()),
+    }
 }
 
 /// Statements that null the listed array members when the count is about to change
@@ -445,12 +479,13 @@ fn array_setter(
         "value",
         proc_macro2::Span::call_site(),
     ));
+    let (unsafe_kw, codec_safety) = codec_safety(array.codec);
     let Some(g) = groups.iter().find(|g| g.holds(&m.name)) else {
-        let doc = format!("Sets `{}`.", m.name);
+        let doc = format!("Sets `{}`.{codec_safety}", m.name);
         return Some(quote! {
             #[doc = #doc]
             #[inline]
-            pub fn #setter(mut self, value: #ty) -> Self {
+            pub #unsafe_kw fn #setter(mut self, value: #ty) -> Self {
                 #lower
                 self.raw.#c = value.len() as _;
                 self.raw.#f = value.as_ptr().cast();
@@ -483,10 +518,11 @@ fn array_setter(
             "`{}` has {{}} elements but `{}` is {{}}",
             m.name, array.count
         );
+        let doc = format!("{doc}{codec_safety}");
         return Some(quote! {
             #[doc = #doc]
             #[inline]
-            pub fn #setter(mut self, value: #ty) -> crate::Result<Self> {
+            pub #unsafe_kw fn #setter(mut self, value: #ty) -> crate::Result<Self> {
                 #lower
                 if value.len() != self.raw.#c as usize {
                     return Err(crate::Error::Validation {
@@ -518,10 +554,11 @@ fn array_setter(
             },
         )
     };
+    let doc = format!("{doc}{codec_safety}");
     Some(quote! {
         #[doc = #doc]
         #[inline]
-        pub fn #setter(mut self, value: #ty) -> Self {
+        pub #unsafe_kw fn #setter(mut self, value: #ty) -> Self {
             #lower
             let len = value.len();
             #clear
@@ -551,6 +588,7 @@ fn lead_setter(
         })
         .collect();
     let param_tys: Vec<&TokenStream> = leads.iter().map(|a| &a.ty).collect();
+    let (unsafe_kw, codec_safety) = codec_safety(leads.iter().any(|a| a.codec));
     let setter = field_ident(&crate::names::param(&first.name));
     let c = field_ident(&g.count);
     let params: Vec<_> = g
@@ -577,14 +615,14 @@ fn lead_setter(
     let names: Vec<String> = g.leads.iter().map(|l| format!("`{l}`")).collect();
     let doc = format!(
         "Sets {} (and `{}`): one element of each per entry.\n\n# Errors\n\n\
-         [`Error::Validation`](crate::Error::Validation) when the slices' lengths differ.",
+         [`Error::Validation`](crate::Error::Validation) when the slices' lengths differ.{codec_safety}",
         names.join(", "),
         g.count
     );
     quote! {
         #[doc = #doc]
         #[inline]
-        pub fn #setter(mut self, #(#params: #param_tys),*) -> crate::Result<Self> {
+        pub #unsafe_kw fn #setter(mut self, #(#params: #param_tys),*) -> crate::Result<Self> {
             #(#lower)*
             let len = #first_param.len();
             #(#checks)*

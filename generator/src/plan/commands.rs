@@ -293,6 +293,12 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             let enumerated = matches!(len, Some(LenEntry::Reference(parts))
                 if parts.len() == 1 && cmd.params.iter().any(|q| q.name == parts[0] && q.pointers == 1));
             match (len, category) {
+                // A window-system value (a Win32 `HANDLE`, a Zircon handle) the command
+                // writes is returned like any output; a pointer to a window-system
+                // object (`Display*`) is one the caller passes in.
+                (None, None) if super::shape::is_foreign_value(model, &p.type_name) => {
+                    Param::Output
+                }
                 (None, None)
                     if p.type_name != "void" && !super::shape::is_c_scalar(&p.type_name) =>
                 {

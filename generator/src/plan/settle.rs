@@ -343,6 +343,9 @@ fn member_settlement(shape: &Member) -> Settlement {
         Member::Platform => {
             Settlement::User("a window-system pointer given through an unsafe setter".into())
         }
+        Member::CodecStd { .. } => Settlement::Static(
+            "taken as a reference or slice of the codec's structs, a valid pointer with its length (the setter is `unsafe` for the pointers inside them)".into(),
+        ),
         Member::PlatformValue => {
             Settlement::User("a window-system value given through an unsafe setter".into())
         }
@@ -354,8 +357,10 @@ fn member_settlement(shape: &Member) -> Settlement {
             "the `pNext` of a generic chain node (`VkBaseInStructure`); the wrappers pass none"
                 .into(),
         ),
-        Member::UserData => Settlement::User(
-            "opaque user data handed back to a callback; Vulkan never reads through it".into(),
+        // Its one rule is that it be "a pointer value", which every value of the
+        // setter's `*mut c_void` is: Vulkan only hands it back to the callback.
+        Member::UserData => Settlement::Static(
+            "opaque user data handed back to a callback: any `*mut c_void` is a pointer value, and Vulkan never reads through it".into(),
         ),
     }
 }

@@ -65,6 +65,15 @@ pub enum Member {
         /// The member that holds the length.
         count: String,
     },
+    /// A pointer to a video codec's own structs (video.xml's `StdVideo*`, in ash's
+    /// `vk::native`): one, or `count` of them. Taken as a reference or a slice, so
+    /// the pointer and its length are valid; the setter is `unsafe`, as some of
+    /// those structs hold pointers of their own (an SPS's scaling lists and VUI),
+    /// which Vulkan follows.
+    CodecStd {
+        /// The member that holds the length, for an array.
+        count: Option<String>,
+    },
     /// Opaque user data handed back to a callback; never dereferenced by Vulkan.
     UserData,
     /// A pointer to a window-system object: set through an `unsafe` setter.
@@ -194,6 +203,19 @@ fn member_shape(
     if m.name == "pUserData" && m.type_name == "void" {
         return Member::UserData;
     }
+    if category.is_none()
+        && m.is_const
+        && m.pointers == 1
+        && super::types::is_codec_std(model, &m.type_name)
+    {
+        return match (&first_len, count_of(&first_len)) {
+            (None, _) => Member::CodecStd { count: None },
+            (Some(_), Some(count)) => Member::CodecStd { count: Some(count) },
+            (Some(_), None) => Member::Unsupported(
+                "a pointer whose length the registry gives as an expression".into(),
+            ),
+        };
+    }
     if category.is_none() && !is_c_scalar(&m.type_name) && m.type_name != "void" {
         return Member::Platform;
     }
@@ -240,6 +262,28 @@ fn member_shape(
         }
     }
     Member::Unsupported("a pointer to pointers".into())
+}
+
+/// A window-system type that the registry passes by value somewhere (a Win32
+/// `HANDLE`, a Zircon `zx_handle_t`, an X11 `Window`): a plain number or pointer,
+/// as opposed to an object only ever pointed to (an Xlib `Display`).
+pub fn is_foreign_value(model: &Model, name: &str) -> bool {
+    let foreign = model
+        .types
+        .get(name)
+        .is_some_and(|t| t.category.is_none() && !super::types::is_codec_std(model, name));
+    foreign
+        && !is_c_scalar(name)
+        && name != "void"
+        && (model.types.values().any(|t| {
+            t.members
+                .iter()
+                .any(|m| m.type_name == name && m.pointers == 0)
+        }) || model.commands.values().any(|c| {
+            c.params
+                .iter()
+                .any(|p| p.type_name == name && p.pointers == 0)
+        }))
 }
 
 /// C scalar types.
@@ -314,7 +358,8 @@ pub fn count_groups(members: &[(Field, Member)]) -> Vec<CountGroup> {
             Member::HandleSlice { count }
             | Member::Slice { count, .. }
             | Member::Bytes { count }
-            | Member::CStrSlice { count } => count,
+            | Member::CStrSlice { count }
+            | Member::CodecStd { count: Some(count) } => count,
             _ => continue,
         };
         let i = match groups.iter().position(|g| &g.count == count) {

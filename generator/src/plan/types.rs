@@ -178,11 +178,7 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
                     Some(quote!(vk::#id))
                 }
                 // The video codecs' own types (video.xml), in ash's `native` module.
-                None if t
-                    .bit_values
-                    .as_deref()
-                    .is_some_and(|header| header.starts_with("vk_video/")) =>
-                {
+                None if is_codec_std(model, name) => {
                     let id = ident(name);
                     Some(quote!(vk::native::#id))
                 }
@@ -196,6 +192,16 @@ pub fn ash_type(model: &Model, facts: &TypeFacts, name: &str) -> Option<TokenStr
         }
     };
     Some(c)
+}
+
+/// A video codec's own type (video.xml's, which vk.xml names with the codec
+/// header it `requires`), which ash has in `vk::native`.
+pub fn is_codec_std(model: &Model, name: &str) -> bool {
+    model
+        .types
+        .get(name)
+        .and_then(|t| t.bit_values.as_deref())
+        .is_some_and(|header| header.starts_with("vk_video/"))
 }
 
 /// A constant of a fixed array size as ash names it (`VK_UUID_SIZE` ->

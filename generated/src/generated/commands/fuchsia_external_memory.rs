@@ -6,24 +6,19 @@ use super::*;
 impl Device {
     /**`vkGetMemoryZirconHandleFUCHSIA`
 
-# Safety
-
-`zircon_handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetMemoryZirconHandleFUCHSIA` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetMemoryZirconHandleFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryZirconHandleFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryZirconHandleFUCHSIA-pZirconHandle-parameter` (*yours*; passed as ash's raw type): `pZirconHandle` must be a valid pointer to a `zx_handle_t` value
 - `VUID-vkGetMemoryZirconHandleFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetMemoryZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter` (*by the types*): `pGetZirconHandleInfo` must be a valid pointer to a valid VkMemoryGetZirconHandleInfoFUCHSIA structure*/
+- `VUID-vkGetMemoryZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter` (*by the types*): `pGetZirconHandleInfo` must be a valid pointer to a valid VkMemoryGetZirconHandleInfoFUCHSIA structure
+- `VUID-vkGetMemoryZirconHandleFUCHSIA-pZirconHandle-parameter` (*by the types*): `pZirconHandle` must be a valid pointer to a `zx_handle_t` value*/
     #[doc(alias = "vkGetMemoryZirconHandleFUCHSIA")]
     #[inline]
-    pub unsafe fn get_memory_zircon_handle_fuchsia<'a>(
+    pub fn get_memory_zircon_handle_fuchsia<'a>(
         &self,
         get_zircon_handle_info: &MemoryGetZirconHandleInfoFUCHSIA<'a>,
-        zircon_handle: *mut vk::zx_handle_t,
-    ) -> Result<()> {
+    ) -> Result<vk::zx_handle_t> {
         {
             let r = self
                 .validate_get_memory_zircon_handle_fuchsia(get_zircon_handle_info);
@@ -32,42 +27,41 @@ The rules of `vkGetMemoryZirconHandleFUCHSIA` that apply to this crate's API ([r
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_memory_zircon_handle_fuchsia_unchecked(
-                get_zircon_handle_info,
-                zircon_handle,
-            )
+            self.get_memory_zircon_handle_fuchsia_unchecked(get_zircon_handle_info)
         }
     }
     /**`vkGetMemoryZirconHandleFUCHSIA` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_memory_zircon_handle_fuchsia`] checks at run time (those of the structs it takes). `zircon_handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetMemoryZirconHandleFUCHSIA` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.*/
+The caller upholds the rules that [`Self::get_memory_zircon_handle_fuchsia`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn get_memory_zircon_handle_fuchsia_unchecked<'a>(
         &self,
         get_zircon_handle_info: &MemoryGetZirconHandleInfoFUCHSIA<'a>,
-        zircon_handle: *mut vk::zx_handle_t,
-    ) -> Result<()> {
+    ) -> Result<vk::zx_handle_t> {
         let fp = self
             .ext()
             .fuchsia_external_memory
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_FUCHSIA_external_memory"))?
             .get_memory_zircon_handle_fuchsia;
+        // SAFETY: a window-system value is a C integer or pointer, for which all-zero bytes are a
+        // value.
+        let mut out: vk::zx_handle_t = unsafe { core::mem::zeroed() };
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 get_zircon_handle_info as *const MemoryGetZirconHandleInfoFUCHSIA<'a>
                     as *const _,
-                zircon_handle,
+                &mut out,
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(())
+        Ok(out)
     }
     /**`vkGetMemoryZirconHandlePropertiesFUCHSIA`
 

@@ -8,11 +8,8 @@ impl Device {
 
 # Safety
 
-`zircon_handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreZirconHandleFUCHSIA` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pZirconHandle-parameter`: `pZirconHandle` must be a valid pointer to a `zx_handle_t` value
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04758`: `handleType` must have been included in VkExportSemaphoreCreateInfo::`handleTypes` when `semaphore`&#8217;s current payload was created
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-04759`: `semaphore` must not currently have its payload replaced by an imported payload as described below in Importing Semaphore Payloads unless that imported payload&#8217;s handle type was included in VkExternalSemaphoreProperties::`exportFromImportedHandleTypes` for `handleType`
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04760`: If `handleType` refers to a handle type with copy payload transference semantics, as defined below in Importing Semaphore Payloads, there must be no queue waiting on `semaphore`
@@ -24,16 +21,15 @@ The caller upholds these 7 rules that no check of this method enforces (its comm
 
 The rules of `vkGetSemaphoreZirconHandleFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreZirconHandleFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pZirconHandle-parameter` (*yours*; passed as ash's raw type): `pZirconHandle` must be a valid pointer to a `zx_handle_t` value
 - `VUID-vkGetSemaphoreZirconHandleFUCHSIA-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter` (*by the types*): `pGetZirconHandleInfo` must be a valid pointer to a valid VkSemaphoreGetZirconHandleInfoFUCHSIA structure*/
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pGetZirconHandleInfo-parameter` (*by the types*): `pGetZirconHandleInfo` must be a valid pointer to a valid VkSemaphoreGetZirconHandleInfoFUCHSIA structure
+- `VUID-vkGetSemaphoreZirconHandleFUCHSIA-pZirconHandle-parameter` (*by the types*): `pZirconHandle` must be a valid pointer to a `zx_handle_t` value*/
     #[doc(alias = "vkGetSemaphoreZirconHandleFUCHSIA")]
     #[inline]
     pub unsafe fn get_semaphore_zircon_handle_fuchsia<'a>(
         &self,
         get_zircon_handle_info: &SemaphoreGetZirconHandleInfoFUCHSIA<'a>,
-        zircon_handle: *mut vk::zx_handle_t,
-    ) -> Result<()> {
+    ) -> Result<vk::zx_handle_t> {
         {
             let r = self
                 .validate_get_semaphore_zircon_handle_fuchsia(get_zircon_handle_info);
@@ -42,42 +38,41 @@ The rules of `vkGetSemaphoreZirconHandleFUCHSIA` that apply to this crate's API 
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.get_semaphore_zircon_handle_fuchsia_unchecked(
-                get_zircon_handle_info,
-                zircon_handle,
-            )
+            self.get_semaphore_zircon_handle_fuchsia_unchecked(get_zircon_handle_info)
         }
     }
     /**`vkGetSemaphoreZirconHandleFUCHSIA` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_semaphore_zircon_handle_fuchsia`] checks at run time (those of the structs it takes). `zircon_handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreZirconHandleFUCHSIA` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.*/
+The caller upholds the rules that [`Self::get_semaphore_zircon_handle_fuchsia`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn get_semaphore_zircon_handle_fuchsia_unchecked<'a>(
         &self,
         get_zircon_handle_info: &SemaphoreGetZirconHandleInfoFUCHSIA<'a>,
-        zircon_handle: *mut vk::zx_handle_t,
-    ) -> Result<()> {
+    ) -> Result<vk::zx_handle_t> {
         let fp = self
             .ext()
             .fuchsia_external_semaphore
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_FUCHSIA_external_semaphore"))?
             .get_semaphore_zircon_handle_fuchsia;
+        // SAFETY: a window-system value is a C integer or pointer, for which all-zero bytes are a
+        // value.
+        let mut out: vk::zx_handle_t = unsafe { core::mem::zeroed() };
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 get_zircon_handle_info as *const SemaphoreGetZirconHandleInfoFUCHSIA<'a>
                     as *const _,
-                zircon_handle,
+                &mut out,
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(())
+        Ok(out)
     }
     /**`vkImportSemaphoreZirconHandleFUCHSIA`
 

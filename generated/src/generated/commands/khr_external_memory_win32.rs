@@ -6,64 +6,59 @@ use super::*;
 impl Device {
     /**`vkGetMemoryWin32HandleKHR`
 
-# Safety
-
-`handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetMemoryWin32HandleKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetMemoryWin32HandleKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandleKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryWin32HandleKHR-pHandle-parameter` (*yours*; passed as ash's raw type): `pHandle` must be a valid pointer to a `HANDLE` value
 - `VUID-vkGetMemoryWin32HandleKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetMemoryWin32HandleKHR-pGetWin32HandleInfo-parameter` (*by the types*): `pGetWin32HandleInfo` must be a valid pointer to a valid VkMemoryGetWin32HandleInfoKHR structure*/
+- `VUID-vkGetMemoryWin32HandleKHR-pGetWin32HandleInfo-parameter` (*by the types*): `pGetWin32HandleInfo` must be a valid pointer to a valid VkMemoryGetWin32HandleInfoKHR structure
+- `VUID-vkGetMemoryWin32HandleKHR-pHandle-parameter` (*by the types*): `pHandle` must be a valid pointer to a `HANDLE` value*/
     #[doc(alias = "vkGetMemoryWin32HandleKHR")]
     #[inline]
-    pub unsafe fn get_memory_win32_handle_khr<'a>(
+    pub fn get_memory_win32_handle_khr<'a>(
         &self,
         get_win32_handle_info: &MemoryGetWin32HandleInfoKHR<'a>,
-        handle: *mut vk::HANDLE,
-    ) -> Result<()> {
+    ) -> Result<vk::HANDLE> {
         {
             let r = self.validate_get_memory_win32_handle_khr(get_win32_handle_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_memory_win32_handle_khr_unchecked(get_win32_handle_info, handle)
-        }
+        unsafe { self.get_memory_win32_handle_khr_unchecked(get_win32_handle_info) }
     }
     /**`vkGetMemoryWin32HandleKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_memory_win32_handle_khr`] checks at run time (those of the structs it takes). `handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetMemoryWin32HandleKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.*/
+The caller upholds the rules that [`Self::get_memory_win32_handle_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn get_memory_win32_handle_khr_unchecked<'a>(
         &self,
         get_win32_handle_info: &MemoryGetWin32HandleInfoKHR<'a>,
-        handle: *mut vk::HANDLE,
-    ) -> Result<()> {
+    ) -> Result<vk::HANDLE> {
         let fp = self
             .ext()
             .khr_external_memory_win32
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_external_memory_win32"))?
             .get_memory_win32_handle_khr;
+        // SAFETY: a window-system value is a C integer or pointer, for which all-zero bytes are a
+        // value.
+        let mut out: vk::HANDLE = unsafe { core::mem::zeroed() };
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 get_win32_handle_info as *const MemoryGetWin32HandleInfoKHR<'a>
                     as *const _,
-                handle,
+                &mut out,
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(())
+        Ok(out)
     }
     /**`vkGetMemoryWin32HandlePropertiesKHR`
 

@@ -6,64 +6,59 @@ use super::*;
 impl Device {
     /**`vkGetSemaphoreWin32HandleKHR`
 
-# Safety
-
-`handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreWin32HandleKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetSemaphoreWin32HandleKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSemaphoreWin32HandleKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetSemaphoreWin32HandleKHR-pHandle-parameter` (*yours*; passed as ash's raw type): `pHandle` must be a valid pointer to a `HANDLE` value
 - `VUID-vkGetSemaphoreWin32HandleKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetSemaphoreWin32HandleKHR-pGetWin32HandleInfo-parameter` (*by the types*): `pGetWin32HandleInfo` must be a valid pointer to a valid VkSemaphoreGetWin32HandleInfoKHR structure*/
+- `VUID-vkGetSemaphoreWin32HandleKHR-pGetWin32HandleInfo-parameter` (*by the types*): `pGetWin32HandleInfo` must be a valid pointer to a valid VkSemaphoreGetWin32HandleInfoKHR structure
+- `VUID-vkGetSemaphoreWin32HandleKHR-pHandle-parameter` (*by the types*): `pHandle` must be a valid pointer to a `HANDLE` value*/
     #[doc(alias = "vkGetSemaphoreWin32HandleKHR")]
     #[inline]
-    pub unsafe fn get_semaphore_win32_handle_khr<'a>(
+    pub fn get_semaphore_win32_handle_khr<'a>(
         &self,
         get_win32_handle_info: &SemaphoreGetWin32HandleInfoKHR<'a>,
-        handle: *mut vk::HANDLE,
-    ) -> Result<()> {
+    ) -> Result<vk::HANDLE> {
         {
             let r = self.validate_get_semaphore_win32_handle_khr(get_win32_handle_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.get_semaphore_win32_handle_khr_unchecked(get_win32_handle_info, handle)
-        }
+        unsafe { self.get_semaphore_win32_handle_khr_unchecked(get_win32_handle_info) }
     }
     /**`vkGetSemaphoreWin32HandleKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_semaphore_win32_handle_khr`] checks at run time (those of the structs it takes). `handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSemaphoreWin32HandleKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.*/
+The caller upholds the rules that [`Self::get_semaphore_win32_handle_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn get_semaphore_win32_handle_khr_unchecked<'a>(
         &self,
         get_win32_handle_info: &SemaphoreGetWin32HandleInfoKHR<'a>,
-        handle: *mut vk::HANDLE,
-    ) -> Result<()> {
+    ) -> Result<vk::HANDLE> {
         let fp = self
             .ext()
             .khr_external_semaphore_win32
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_external_semaphore_win32"))?
             .get_semaphore_win32_handle_khr;
+        // SAFETY: a window-system value is a C integer or pointer, for which all-zero bytes are a
+        // value.
+        let mut out: vk::HANDLE = unsafe { core::mem::zeroed() };
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 get_win32_handle_info as *const SemaphoreGetWin32HandleInfoKHR<'a>
                     as *const _,
-                handle,
+                &mut out,
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(())
+        Ok(out)
     }
     /**`vkImportSemaphoreWin32HandleKHR`
 

@@ -6,60 +6,57 @@ use super::*;
 impl Device {
     /**`vkGetMemoryWin32HandleNV`
 
-# Safety
-
-`handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetMemoryWin32HandleNV` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetMemoryWin32HandleNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryWin32HandleNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetMemoryWin32HandleNV-handleType-01326` (*yours*; explicit rule): `handleType` must be a flag specified in VkExportMemoryAllocateInfoNV::`handleTypes` when allocating `memory`
-- `VUID-vkGetMemoryWin32HandleNV-pHandle-parameter` (*yours*; passed as ash's raw type): `pHandle` must be a valid pointer to a `HANDLE` value
 - `VUID-vkGetMemoryWin32HandleNV-handleType-parameter` (*checked*): `handleType` must be a valid combination of VkExternalMemoryHandleTypeFlagBitsNV values
 - `VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask` (*checked*): `handleType` must not be `0`
 - `VUID-vkGetMemoryWin32HandleNV-memory-parent` (*checked*): `memory` must have been created, allocated, or retrieved from `device`
 - `VUID-vkGetMemoryWin32HandleNV-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetMemoryWin32HandleNV-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-vkGetMemoryWin32HandleNV-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle
+- `VUID-vkGetMemoryWin32HandleNV-pHandle-parameter` (*by the types*): `pHandle` must be a valid pointer to a `HANDLE` value*/
     #[doc(alias = "vkGetMemoryWin32HandleNV")]
     #[inline]
-    pub unsafe fn get_memory_win32_handle_nv(
+    pub fn get_memory_win32_handle_nv(
         &self,
         memory: &DeviceMemory,
         handle_type: vk::ExternalMemoryHandleTypeFlagsNV,
-        handle: *mut vk::HANDLE,
-    ) -> Result<()> {
+    ) -> Result<vk::HANDLE> {
         {
             let r = self.validate_get_memory_win32_handle_nv(memory, handle_type);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.get_memory_win32_handle_nv_unchecked(memory, handle_type, handle) }
+        unsafe { self.get_memory_win32_handle_nv_unchecked(memory, handle_type) }
     }
     /**`vkGetMemoryWin32HandleNV` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::get_memory_win32_handle_nv`] checks at run time: `VUID-vkGetMemoryWin32HandleNV-handleType-parameter`, `VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask`, `VUID-vkGetMemoryWin32HandleNV-memory-parent`, and those of the structs it takes. `handle` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetMemoryWin32HandleNV` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_memory_win32_handle_nv`] checks at run time: `VUID-vkGetMemoryWin32HandleNV-handleType-parameter`, `VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask`, `VUID-vkGetMemoryWin32HandleNV-memory-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_memory_win32_handle_nv_unchecked(
         &self,
         memory: &DeviceMemory,
         handle_type: vk::ExternalMemoryHandleTypeFlagsNV,
-        handle: *mut vk::HANDLE,
-    ) -> Result<()> {
+    ) -> Result<vk::HANDLE> {
         let fp = self
             .ext()
             .nv_external_memory_win32
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_NV_external_memory_win32"))?
             .get_memory_win32_handle_nv;
+        // SAFETY: a window-system value is a C integer or pointer, for which all-zero bytes are a
+        // value.
+        let mut out: vk::HANDLE = unsafe { core::mem::zeroed() };
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe { fp(self.raw(), memory.raw(), handle_type, handle) };
+        let r = unsafe { fp(self.raw(), memory.raw(), handle_type, &mut out) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(())
+        Ok(out)
     }
 }

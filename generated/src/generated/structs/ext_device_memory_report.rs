@@ -8,10 +8,10 @@ use super::*;
 
 The rules of `VkDeviceDeviceMemoryReportCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceDeviceMemoryReportCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pUserData-parameter` (*yours*; opaque user data handed back to a callback): `pUserData` must be a pointer value
 - `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-flags-zerobitmask` (*checked*): `flags` must be `0`
 - `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pfnUserCallback-parameter` (*checked*): `pfnUserCallback` must be a valid PFN_vkDeviceMemoryReportCallbackEXT value
-- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_DEVICE_MEMORY_REPORT_CREATE_INFO_EXT`*/
+- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_DEVICE_MEMORY_REPORT_CREATE_INFO_EXT`
+- `VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pUserData-parameter` (*by the types*): `pUserData` must be a pointer value*/
 #[cfg(feature = "ext_device_memory_report")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -30,8 +30,8 @@ for VideoDecodeH264CapabilitiesKHR<'a> {}
 
 The rules of `VkVideoDecodeH264DpbSlotInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264DpbSlotInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264DpbSlotInfoKHR-pStdReferenceInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdReferenceInfo` must be a valid pointer to a valid `StdVideoDecodeH264ReferenceInfo` value
-- `VUID-VkVideoDecodeH264DpbSlotInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_DPB_SLOT_INFO_KHR`*/
+- `VUID-VkVideoDecodeH264DpbSlotInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_DPB_SLOT_INFO_KHR`
+- `VUID-VkVideoDecodeH264DpbSlotInfoKHR-pStdReferenceInfo-parameter` (*by the types*): `pStdReferenceInfo` must be a valid pointer to a valid `StdVideoDecodeH264ReferenceInfo` value*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -49,11 +49,11 @@ impl<'a> VideoDecodeH264DpbSlotInfoKHR<'a> {
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_reference_info(
         mut self,
-        value: *const vk::native::StdVideoDecodeH264ReferenceInfo,
+        value: &'a vk::native::StdVideoDecodeH264ReferenceInfo,
     ) -> Self {
         self.raw.p_std_reference_info = value;
         self
@@ -69,9 +69,9 @@ for VideoDecodeH264DpbSlotInfoKHR<'a> {}
 
 The rules of `VkVideoDecodeH264PictureInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH264PictureInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH264PictureInfoKHR-pStdPictureInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdPictureInfo` must be a valid pointer to a valid `StdVideoDecodeH264PictureInfo` value
 - `VUID-VkVideoDecodeH264PictureInfoKHR-sliceCount-arraylength` (*checked*): `sliceCount` must be greater than `0`
 - `VUID-VkVideoDecodeH264PictureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_PICTURE_INFO_KHR`
+- `VUID-VkVideoDecodeH264PictureInfoKHR-pStdPictureInfo-parameter` (*by the types*): `pStdPictureInfo` must be a valid pointer to a valid `StdVideoDecodeH264PictureInfo` value
 - `VUID-VkVideoDecodeH264PictureInfoKHR-pSliceOffsets-parameter` (*by the types*): `pSliceOffsets` must be a valid pointer to an array of `sliceCount` `uint32_t` values*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
@@ -90,11 +90,11 @@ impl<'a> VideoDecodeH264PictureInfoKHR<'a> {
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_picture_info(
         mut self,
-        value: *const vk::native::StdVideoDecodeH264PictureInfo,
+        value: &'a vk::native::StdVideoDecodeH264PictureInfo,
     ) -> Self {
         self.raw.p_std_picture_info = value;
         self
@@ -167,9 +167,9 @@ The rules of `VkVideoDecodeH264SessionParametersAddInfoKHR` that apply to this c
 
 - `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-None-04825` (*yours*; explicit rule): The `seq_parameter_set_id` member of each `StdVideoH264SequenceParameterSet` structure specified in the elements of `pStdSPSs` must be unique within `pStdSPSs`
 - `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-None-04826` (*yours*; explicit rule): The pair constructed from the `seq_parameter_set_id` and `pic_parameter_set_id` members of each `StdVideoH264PictureParameterSet` structure specified in the elements of `pStdPPSs` must be unique …
-- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-pStdSPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdSPSCount` is not `0`, `pStdSPSs` must be a valid pointer to an array of `stdSPSCount` `StdVideoH264SequenceParameterSet` values
-- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-pStdPPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdPPSCount` is not `0`, `pStdPPSs` must be a valid pointer to an array of `stdPPSCount` `StdVideoH264PictureParameterSet` values
-- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_SESSION_PARAMETERS_ADD_INFO_KHR`*/
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H264_SESSION_PARAMETERS_ADD_INFO_KHR`
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-pStdSPSs-parameter` (*by the types*): If `stdSPSCount` is not `0`, `pStdSPSs` must be a valid pointer to an array of `stdSPSCount` `StdVideoH264SequenceParameterSet` values
+- `VUID-VkVideoDecodeH264SessionParametersAddInfoKHR-pStdPPSs-parameter` (*by the types*): If `stdPPSCount` is not `0`, `pStdPPSs` must be a valid pointer to an array of `stdPPSCount` `StdVideoH264PictureParameterSet` values*/
 #[cfg(feature = "khr_video_decode_h264")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -187,26 +187,28 @@ impl<'a> VideoDecodeH264SessionParametersAddInfoKHR<'a> {
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_sp_ss(
         mut self,
-        value: *const vk::native::StdVideoH264SequenceParameterSet,
+        value: &'a [vk::native::StdVideoH264SequenceParameterSet],
     ) -> Self {
-        self.raw.p_std_sp_ss = value;
+        self.raw.std_sps_count = value.len() as _;
+        self.raw.p_std_sp_ss = value.as_ptr().cast();
         self
     }
     /**Sets `pStdPPSs`.
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_pp_ss(
         mut self,
-        value: *const vk::native::StdVideoH264PictureParameterSet,
+        value: &'a [vk::native::StdVideoH264PictureParameterSet],
     ) -> Self {
-        self.raw.p_std_pp_ss = value;
+        self.raw.std_pps_count = value.len() as _;
+        self.raw.p_std_pp_ss = value.as_ptr().cast();
         self
     }
 }

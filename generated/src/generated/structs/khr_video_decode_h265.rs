@@ -30,8 +30,8 @@ for VideoDecodeH265CapabilitiesKHR<'a> {}
 
 The rules of `VkVideoDecodeH265DpbSlotInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265DpbSlotInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265DpbSlotInfoKHR-pStdReferenceInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdReferenceInfo` must be a valid pointer to a valid `StdVideoDecodeH265ReferenceInfo` value
-- `VUID-VkVideoDecodeH265DpbSlotInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_DPB_SLOT_INFO_KHR`*/
+- `VUID-VkVideoDecodeH265DpbSlotInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_DPB_SLOT_INFO_KHR`
+- `VUID-VkVideoDecodeH265DpbSlotInfoKHR-pStdReferenceInfo-parameter` (*by the types*): `pStdReferenceInfo` must be a valid pointer to a valid `StdVideoDecodeH265ReferenceInfo` value*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -49,11 +49,11 @@ impl<'a> VideoDecodeH265DpbSlotInfoKHR<'a> {
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_reference_info(
         mut self,
-        value: *const vk::native::StdVideoDecodeH265ReferenceInfo,
+        value: &'a vk::native::StdVideoDecodeH265ReferenceInfo,
     ) -> Self {
         self.raw.p_std_reference_info = value;
         self
@@ -158,10 +158,10 @@ The rules of `VkVideoDecodeH265SessionParametersAddInfoKHR` that apply to this c
 - `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-None-04833` (*yours*; explicit rule): The `vps_video_parameter_set_id` member of each `StdVideoH265VideoParameterSet` structure specified in the elements of `pStdVPSs` must be unique within `pStdVPSs`
 - `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-None-04834` (*yours*; explicit rule): The pair constructed from the `sps_video_parameter_set_id` and `sps_seq_parameter_set_id` members of each `StdVideoH265SequenceParameterSet` structure specified in the elements of `pStdSPSs` must be …
 - `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-None-04835` (*yours*; explicit rule): The triplet constructed from the `sps_video_parameter_set_id`, `pps_seq_parameter_set_id`, and `pps_pic_parameter_set_id` members of each `StdVideoH265PictureParameterSet` structure specified in the …
-- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdVPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdVPSCount` is not `0`, `pStdVPSs` must be a valid pointer to an array of `stdVPSCount` `StdVideoH265VideoParameterSet` values
-- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdSPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdSPSCount` is not `0`, `pStdSPSs` must be a valid pointer to an array of `stdSPSCount` `StdVideoH265SequenceParameterSet` values
-- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdPPSs-parameter` (*yours*; a window-system pointer given through an unsafe setter): If `stdPPSCount` is not `0`, `pStdPPSs` must be a valid pointer to an array of `stdPPSCount` `StdVideoH265PictureParameterSet` values
-- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_SESSION_PARAMETERS_ADD_INFO_KHR`*/
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_SESSION_PARAMETERS_ADD_INFO_KHR`
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdVPSs-parameter` (*by the types*): If `stdVPSCount` is not `0`, `pStdVPSs` must be a valid pointer to an array of `stdVPSCount` `StdVideoH265VideoParameterSet` values
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdSPSs-parameter` (*by the types*): If `stdSPSCount` is not `0`, `pStdSPSs` must be a valid pointer to an array of `stdSPSCount` `StdVideoH265SequenceParameterSet` values
+- `VUID-VkVideoDecodeH265SessionParametersAddInfoKHR-pStdPPSs-parameter` (*by the types*): If `stdPPSCount` is not `0`, `pStdPPSs` must be a valid pointer to an array of `stdPPSCount` `StdVideoH265PictureParameterSet` values*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -179,39 +179,42 @@ impl<'a> VideoDecodeH265SessionParametersAddInfoKHR<'a> {
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_vp_ss(
         mut self,
-        value: *const vk::native::StdVideoH265VideoParameterSet,
+        value: &'a [vk::native::StdVideoH265VideoParameterSet],
     ) -> Self {
-        self.raw.p_std_vp_ss = value;
+        self.raw.std_vps_count = value.len() as _;
+        self.raw.p_std_vp_ss = value.as_ptr().cast();
         self
     }
     /**Sets `pStdSPSs`.
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_sp_ss(
         mut self,
-        value: *const vk::native::StdVideoH265SequenceParameterSet,
+        value: &'a [vk::native::StdVideoH265SequenceParameterSet],
     ) -> Self {
-        self.raw.p_std_sp_ss = value;
+        self.raw.std_sps_count = value.len() as _;
+        self.raw.p_std_sp_ss = value.as_ptr().cast();
         self
     }
     /**Sets `pStdPPSs`.
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_pp_ss(
         mut self,
-        value: *const vk::native::StdVideoH265PictureParameterSet,
+        value: &'a [vk::native::StdVideoH265PictureParameterSet],
     ) -> Self {
-        self.raw.p_std_pp_ss = value;
+        self.raw.std_pps_count = value.len() as _;
+        self.raw.p_std_pp_ss = value.as_ptr().cast();
         self
     }
 }
