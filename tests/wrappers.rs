@@ -422,6 +422,40 @@ fn codec_structs_are_taken_as_slices_that_set_their_count() {
     assert_eq!(info.p_std_picture_info, &picture as *const _);
 }
 
+#[test]
+fn a_selected_union_is_set_with_the_member_that_selects_it() {
+    let address = tuff::DescriptorAddressInfoEXT::new()
+        .address(0x1000)
+        .range(64);
+    let info =
+        tuff::DescriptorGetInfoEXT::new(tuff::DescriptorDataEXT::UniformBuffer(Some(&address)));
+    assert_eq!(info.ty, vk::DescriptorType::UNIFORM_BUFFER);
+    // SAFETY: `ty` says the union holds `p_uniform_buffer`.
+    let held = unsafe { info.data.p_uniform_buffer };
+    assert_eq!(
+        held,
+        (&address as *const tuff::DescriptorAddressInfoEXT).cast()
+    );
+    // Another variant moves the selector with it.
+    let info = info.data(tuff::DescriptorDataEXT::AccelerationStructureKHR(0xabc0));
+    assert_eq!(info.ty, vk::DescriptorType::ACCELERATION_STRUCTURE_KHR);
+    // SAFETY: `ty` says the union holds `acceleration_structure`.
+    assert_eq!(unsafe { info.data.acceleration_structure }, 0xabc0);
+    // A union of structs held by value.
+    let aabbs = tuff::AccelerationStructureGeometryAabbsDataKHR::new().stride(24);
+    let geometry = tuff::AccelerationStructureGeometryKHR::new(
+        tuff::AccelerationStructureGeometryDataKHR::Aabbs(aabbs),
+    );
+    assert_eq!(geometry.geometry_type, vk::GeometryTypeKHR::AABBS);
+    // SAFETY: `geometry_type` says the union holds `aabbs`.
+    let held = unsafe { geometry.geometry.aabbs };
+    assert_eq!(
+        held.s_type,
+        vk::StructureType::ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR
+    );
+    assert_eq!(held.stride, 24);
+}
+
 /// One frame into a swapchain: acquire, clear the image, present.
 fn present_one_frame(
     s: &Setup,

@@ -6,7 +6,7 @@
 
 pub use crate::model::tables::{minimal_feature_sets, table, Table};
 use crate::model::{Condition, Model};
-use heck::{ToSnakeCase, ToUpperCamelCase};
+use heck::{ToShoutySnakeCase, ToSnakeCase, ToUpperCamelCase};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 use std::collections::{BTreeMap, BTreeSet};
@@ -119,6 +119,44 @@ pub fn receiver_relative(model: &Model, receiver: &str, name: &str) -> String {
         Some(s) if !s.is_empty() && syn::parse_str::<Ident>(&s).is_ok() => s,
         _ => name.to_owned(),
     }
+}
+
+/// Vendor tags, which ash keeps upper case in a type's or a value's name.
+const VENDOR_TAGS: &[&str] = &[
+    "KHR", "EXT", "NV", "NVX", "AMD", "ARM", "QCOM", "INTEL", "GOOGLE", "HUAWEI", "VALVE",
+    "FUCHSIA", "MVK", "GGP", "ANDROID", "QNX", "SEC", "IMG", "MESA", "LUNARG", "NN", "MSFT",
+];
+
+/// The name ash gives an enum value in its type's `impl`: `VK_DESCRIPTOR_TYPE_SAMPLER`
+/// of `VkDescriptorType` is `SAMPLER`, `VK_GEOMETRY_TYPE_TRIANGLES_KHR` of
+/// `VkGeometryTypeKHR` is `TRIANGLES` (the type's own vendor tag goes too).
+pub fn enum_const(type_name: &str, value: &str) -> String {
+    let base = type_name.strip_prefix("Vk").unwrap_or(type_name);
+    let tag = VENDOR_TAGS.iter().find(|t| base.ends_with(*t));
+    let base = tag.map_or(base, |t| &base[..base.len() - t.len()]);
+    let prefix = format!("VK_{}_", base.to_shouty_snake_case());
+    let mut rest = value.strip_prefix(&prefix).unwrap_or(value).to_owned();
+    if let Some(t) = tag {
+        if let Some(r) = rest.strip_suffix(&format!("_{t}")) {
+            rest = r.to_owned();
+        }
+    }
+    if rest.starts_with(|c: char| c.is_ascii_digit()) {
+        rest = format!("TYPE_{rest}");
+    }
+    rest
+}
+
+/// An enum value's name as a Rust variant: `ACCELERATION_STRUCTURE_KHR` ->
+/// `AccelerationStructureKHR`.
+pub fn variant_name(shouty: &str) -> String {
+    shouty
+        .split('_')
+        .map(|w| match VENDOR_TAGS.contains(&w) {
+            true => w.to_owned(),
+            false => w.to_upper_camel_case(),
+        })
+        .collect()
 }
 
 /// A member or parameter name as ash spells it.

@@ -11,6 +11,7 @@ pub mod formats;
 pub mod handles;
 pub mod helpers;
 pub mod reach;
+mod selected;
 pub mod status;
 pub mod structs;
 pub mod sync;
@@ -408,6 +409,46 @@ pub fn emit(plans: &Plans) -> Emission {
 /// turns theirs on, so that its items compile alone (`VkRayTracingPipelineCreateInfoKHR`
 /// points to `VkPipelineLibraryCreateInfoKHR`, which only `VK_KHR_pipeline_library`
 /// requires).
+/// The extensions whose features the feature of `ext` turns on: those its
+/// `depends` names, then those whose items its own items reference.
+pub(crate) fn feature_deps(model: &Model, ext: &str) -> Vec<String> {
+    let mut deps: Vec<String> = model
+        .extension_depends
+        .get(ext)
+        .map(|d| {
+            model
+                .enabled
+                .iter()
+                .filter(|e| !e.starts_with("VK_VERSION_") && *e != ext && d.contains(e.as_str()))
+                .cloned()
+                .collect()
+        })
+        .unwrap_or_default();
+    for e in referenced_extensions(model, ext) {
+        if !deps.contains(&e) {
+            deps.push(e);
+        }
+    }
+    deps
+}
+
+/// `exts` with every extension their features turn on, transitively.
+pub(crate) fn feature_closure(
+    model: &Model,
+    exts: &std::collections::BTreeSet<String>,
+) -> std::collections::BTreeSet<String> {
+    let mut on = exts.clone();
+    let mut todo: Vec<String> = exts.iter().cloned().collect();
+    while let Some(e) = todo.pop() {
+        for d in feature_deps(model, &e) {
+            if on.insert(d.clone()) {
+                todo.push(d);
+            }
+        }
+    }
+    on
+}
+
 fn referenced_extensions(model: &Model, ext: &str) -> Vec<String> {
     // Items compiled whenever `ext`'s feature is on: one alternative of their
     // condition needs `ext` and core versions alone.
@@ -532,26 +573,10 @@ all_extensions = ["#,
         .iter()
         .filter(|e| !e.starts_with("VK_VERSION_"))
     {
-        let mut deps: Vec<String> = model
-            .extension_depends
-            .get(ext)
-            .map(|d| {
-                model
-                    .enabled
-                    .iter()
-                    .filter(|e| {
-                        !e.starts_with("VK_VERSION_") && *e != ext && d.contains(e.as_str())
-                    })
-                    .map(|e| format!("{:?}", names::feature(e)))
-                    .collect()
-            })
-            .unwrap_or_default();
-        for e in referenced_extensions(model, ext) {
-            let f = format!("{:?}", names::feature(&e));
-            if !deps.contains(&f) {
-                deps.push(f);
-            }
-        }
+        let deps: Vec<String> = feature_deps(model, ext)
+            .iter()
+            .map(|e| format!("{:?}", names::feature(e)))
+            .collect();
         s.push_str(&format!(
             "{} = [{}]\n",
             names::feature(ext),

@@ -72,9 +72,23 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         .collect();
     let mut ctor_args = Vec::new();
     let mut ctor_sets = Vec::new();
+    // Items beside the struct: the enums of its selected unions.
+    let mut beside = Vec::new();
     let mut setters = Vec::new();
     let returned_only = t.returned_only;
     for (m, shape) in &members {
+        // A setter of a member whose type a narrower condition gates
+        // (`accelerationStructureNV` of a struct that VK_KHR_acceleration_structure
+        // alone also brings) exists only where its type does.
+        let before = setters.len();
+        let gate = member_gate(cx, name, m);
+        let gate_from = |setters: &mut Vec<TokenStream>| {
+            if let Some(gate) = &gate {
+                for s in &mut setters[before..] {
+                    *s = quote!(#gate #s);
+                }
+            }
+        };
         let f = field_ident(&m.name);
         let setter = field_ident(&crate::names::param(&m.name));
         let doc = format!("Sets `{}`.", m.name);
@@ -84,6 +98,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         }
         if let Some(array) = array_param(cx, m, shape) {
             setters.extend(array_setter(name, m, &array, &groups, &array_tys));
+            gate_from(&mut setters);
             continue;
         }
         match shape {
@@ -226,6 +241,32 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     });
                 }
             }
+            // Set by the variant of the union it selects.
+            Member::Selector => {}
+            Member::Selected { variants, selector } => {
+                let Some(sel) = members.iter().map(|(f, _)| f).find(|f| &f.name == selector) else {
+                    continue;
+                };
+                let (item, ty) = super::selected::render(cx, m, sel, variants, &cfg);
+                beside.push(item);
+                let sel_f = field_ident(selector);
+                ctor_args.push(quote!(#setter: #ty));
+                ctor_sets.push(quote!(#sel_f: #setter.selector()));
+                ctor_sets.push(quote!(#f: #setter.raw()));
+                let doc = format!(
+                    "Sets `{}` and the `{selector}` that selects its member.",
+                    m.name
+                );
+                setters.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub fn #setter(mut self, value: #ty) -> Self {
+                        self.raw.#sel_f = value.selector();
+                        self.raw.#f = value.raw();
+                        self
+                    }
+                });
+            }
             Member::UserData => {
                 setters.push(quote! {
                     #[doc = "Sets the pointer handed back to the callback; Vulkan never reads through it."]
@@ -282,6 +323,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                 });
             }
         }
+        gate_from(&mut setters);
     }
     let has_next = members.iter().any(|(_, s)| matches!(s, Member::PNext));
     let rules = doc_rules(plans, name);
@@ -365,7 +407,26 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         safe_struct!(#cfg #id #borrows; #(#parts)*);
         #setters_impl
         #(#extends)*
+        #(#beside)*
     }
+}
+
+/// The `#[cfg]` of a member's type where it is narrower than its struct's: the
+/// struct's condition does not imply the type's.
+fn member_gate(cx: &Context, struct_name: &str, m: &Field) -> Option<TokenStream> {
+    let model = cx.model;
+    let of_type = model.condition(&m.type_name);
+    // ash has every type whatever the features; only tuff's own (wrappers, safe
+    // structs) exist under their `cfg`.
+    let tuffs =
+        model.category(&m.type_name) == Some(Kind::Handle) || cx.facts.is_safe(&m.type_name);
+    if of_type.is_core() || !tuffs {
+        return None;
+    }
+    let of_struct = model.condition(struct_name);
+    (!of_struct.implies(of_type, &|set| super::feature_closure(model, set)))
+        .then(|| cfg_of(model, of_type))
+        .flatten()
 }
 
 /// The generated safe type of a struct, or ash's when it has none.

@@ -53,6 +53,28 @@ impl Condition {
     pub fn is_core(&self) -> bool {
         self.text == "core"
     }
+
+    /// Whether every way this condition holds makes `other` hold too, where
+    /// `closure` adds to a set of extensions what enabling them enables (the crate's
+    /// feature dependencies) and versions count as present (the emitted crate has
+    /// them all); false where either has a negation.
+    pub fn implies(
+        &self,
+        other: &Condition,
+        closure: &dyn Fn(&BTreeSet<String>) -> BTreeSet<String>,
+    ) -> bool {
+        let fixed = |n: &str| (n == "core" || n.starts_with("VK_VERSION_")).then_some(true);
+        match (
+            self.expr.minimal_sets(&fixed),
+            other.expr.minimal_sets(&fixed),
+        ) {
+            (Some(mine), Some(theirs)) => mine.iter().all(|set| {
+                let on = closure(set);
+                theirs.iter().any(|t| t.is_subset(&on))
+            }),
+            _ => false,
+        }
+    }
 }
 
 /// The resolved registry.

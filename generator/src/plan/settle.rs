@@ -281,6 +281,21 @@ fn implicit(
         };
     }
     let members = struct_members(model, &cx.facts, &d.item);
+    // A member of a selected union is set only with the selector, by the variant
+    // of the safe enum that holds it.
+    if let Some(variant) = members.iter().find_map(|(_, s)| match s {
+        Member::Selected { variants, .. } => variants
+            .iter()
+            .find(|v| Some(&v.member.name) == d.field.as_ref()),
+        _ => None,
+    }) {
+        return match (d.kind, variant.kind) {
+            (K::Parameter, _) => Settlement::Static(
+                "set, with the selector, only by the variant of the safe enum that holds it: a live wrapper, a reference to a struct (its safe counterpart where it has one) or a safe struct by value".into(),
+            ),
+            (kind, _) => Settlement::User(format!("`{}` rules are not checked yet", kind.tag())),
+        };
+    }
     let field = members
         .iter()
         .find(|(m, _)| Some(&m.name) == d.field.as_ref());
@@ -343,6 +358,12 @@ fn member_settlement(shape: &Member) -> Settlement {
         Member::Platform => {
             Settlement::User("a window-system pointer given through an unsafe setter".into())
         }
+        Member::Selected { .. } => Settlement::Static(
+            "set from the variant of the safe enum the constructor takes, which names its member".into(),
+        ),
+        Member::Selector => Settlement::Static(
+            "set only by the variant of the union it selects, to that variant's value".into(),
+        ),
         Member::CodecStd { .. } => Settlement::Static(
             "taken as a reference or slice of the codec's structs, a valid pointer with its length (the setter is `unsafe` for the pointers inside them)".into(),
         ),

@@ -74,6 +74,17 @@ pub enum Member {
         /// The member that holds the length, for an array.
         count: Option<String>,
     },
+    /// A union that another member selects the meaning of (`VkDescriptorGetInfoEXT`'s
+    /// `data`, chosen by `type`): taken, with the selector, as one variant of a safe
+    /// enum of the union's members, which the constructor requires.
+    Selected {
+        /// The union's members, each with the selector values that choose it.
+        variants: Vec<Variant>,
+        /// The member that selects.
+        selector: String,
+    },
+    /// The member that selects a union's meaning: set only by the union's variant.
+    Selector,
     /// Opaque user data handed back to a callback; never dereferenced by Vulkan.
     UserData,
     /// A pointer to a window-system object: set through an `unsafe` setter.
@@ -83,6 +94,78 @@ pub enum Member {
     PlatformValue,
     /// Not exposed; the text says why.
     Unsupported(String),
+}
+
+/// One member of a selected union, as the safe enum's variant takes it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Variant {
+    /// The union member.
+    pub member: Field,
+    /// The selector value that chooses it (one variant per value).
+    pub selection: String,
+    /// How the variant holds it.
+    pub kind: VariantKind,
+}
+
+/// What a variant of a selected union holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VariantKind {
+    /// A pointer to one handle: a wrapper.
+    Handle {
+        /// May be null.
+        optional: bool,
+    },
+    /// A pointer to one struct: a reference to it (its safe counterpart if it has one).
+    StructRef {
+        /// May be null.
+        optional: bool,
+        /// The struct has a safe counterpart.
+        safe: bool,
+    },
+    /// A struct with a safe counterpart, by value.
+    Nested,
+    /// A plain value (a number, a device address, a plain struct).
+    Value,
+}
+
+/// The variants of a selected union, or why the union cannot be taken safely.
+fn union_variants(model: &Model, facts: &TypeFacts, union: &str) -> Result<Vec<Variant>, String> {
+    let t = model.types.get(union).ok_or("an unknown union")?;
+    let mut out = Vec::new();
+    for u in &t.members {
+        let selection = u
+            .selection
+            .as_deref()
+            .ok_or("a union member no value selects")?;
+        let category = model.category(&u.type_name);
+        let optional = u.is_optional();
+        let kind = match (u.pointers, category) {
+            (1, Some(Kind::Handle)) if u.is_const && u.len.is_none() => {
+                VariantKind::Handle { optional }
+            }
+            (1, Some(Kind::Struct)) if u.is_const && u.len.is_none() => VariantKind::StructRef {
+                optional,
+                safe: facts.is_safe(&u.type_name),
+            },
+            (0, Some(Kind::Struct)) if facts.is_safe(&u.type_name) => VariantKind::Nested,
+            (0, Some(Kind::Struct)) if !facts.has_lifetime(&u.type_name) => VariantKind::Value,
+            (0, _)
+                if u.static_array.is_none()
+                    && (is_c_scalar(&u.type_name) || matches!(category, Some(Kind::Basetype))) =>
+            {
+                VariantKind::Value
+            }
+            _ => return Err(format!("a union member `{}` of no safe shape", u.name)),
+        };
+        for value in selection.split(',') {
+            out.push(Variant {
+                member: u.clone(),
+                selection: value.to_owned(),
+                kind,
+            });
+        }
+    }
+    Ok(out)
 }
 
 /// The shapes of a struct's members, in order.
@@ -117,6 +200,12 @@ pub fn struct_members(model: &Model, facts: &TypeFacts, name: &str) -> Vec<(Fiel
                 Member::Handle { .. } if super::hooks::nullable(name, &m.name) => {
                     Member::Handle { optional: true }
                 }
+                // Only a safe struct's constructor can require the union's variant; a
+                // plain struct (data the device reads) keeps both as ash has them.
+                Member::Selected { .. } if !facts.is_safe(name) => {
+                    Member::Unsupported("a union chosen by another member".into())
+                }
+                Member::Selector if !facts.is_safe(name) => Member::Value,
                 shape => shape,
             };
             (m.clone(), shape)
@@ -162,8 +251,22 @@ fn member_shape(
     if m.type_name != "void" && super::types::ash_type(model, facts, &m.type_name).is_none() {
         return Member::Unsupported(format!("ash has no type `{}`", m.type_name));
     }
-    if m.selector.is_some() {
-        return Member::Unsupported("a union member chosen by another member".into());
+    if let Some(selector) = &m.selector {
+        return match union_variants(model, facts, &m.type_name) {
+            Ok(variants) => Member::Selected {
+                variants,
+                selector: selector.clone(),
+            },
+            Err(why) => {
+                Member::Unsupported(format!("a union chosen by another member, with {why}"))
+            }
+        };
+    }
+    if members.iter().any(|x| {
+        x.selector.as_deref() == Some(m.name.as_str())
+            && union_variants(model, facts, &x.type_name).is_ok()
+    }) {
+        return Member::Selector;
     }
     if m.bitfield.is_some() {
         return Member::Unsupported("a C bitfield, which ash packs with its neighbours".into());

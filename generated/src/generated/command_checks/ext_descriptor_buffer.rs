@@ -141,12 +141,10 @@ impl Device {
 #[cfg(feature = "ext_descriptor_buffer")]
 impl Device {
     ///The dynamic checks of [`Self::get_descriptor_ext`], run before the call.
-    pub(crate) fn validate_get_descriptor_ext<'a>(
+    pub(crate) fn validate_get_descriptor_ext(
         &self,
-        descriptor_info: &DescriptorGetInfoEXT<'a>,
         descriptor: &mut [u8],
     ) -> Result<()> {
-        let s = &self.scope();
         if descriptor.is_empty() {
             return Err(
                 fail(
@@ -155,7 +153,6 @@ impl Device {
                 ),
             );
         }
-        crate::checks::check_descriptor_get_info_ext(descriptor_info, s)?;
         Ok(())
     }
     ///The dynamic checks of [`Self::get_descriptor_set_layout_binding_offset_ext`], run before the call.

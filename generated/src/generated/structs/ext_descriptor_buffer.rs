@@ -43,6 +43,7 @@ safe_struct!(
     )
 )]
 impl<'a> AccelerationStructureCaptureDescriptorDataInfoEXT<'a> {
+    #[cfg(feature = "khr_acceleration_structure")]
     ///Sets `accelerationStructure`.
     #[inline]
     pub fn acceleration_structure(
@@ -53,6 +54,7 @@ impl<'a> AccelerationStructureCaptureDescriptorDataInfoEXT<'a> {
             .map_or(vk::AccelerationStructureKHR::null(), |h| h.raw());
         self
     }
+    #[cfg(feature = "nv_ray_tracing")]
     ///Sets `accelerationStructureNV`.
     #[inline]
     pub fn acceleration_structure_nv(
@@ -252,20 +254,20 @@ The rules of `VkDescriptorGetInfoEXT` that apply to this crate's API ([reference
 - `VUID-VkDescriptorGetInfoEXT-type-08025` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, `pStorageTexelBuffer` is not `NULL` and `pStorageTexelBuffer->address` is not zero, `pStorageTexelBuffer->address` must be an address within a …
 - `VUID-VkDescriptorGetInfoEXT-type-08026` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, `pUniformBuffer` is not `NULL` and `pUniformBuffer->address` is not zero, `pUniformBuffer->address` must be an address within a VkBuffer created on …
 - `VUID-VkDescriptorGetInfoEXT-type-08027` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, `pStorageBuffer` is not `NULL` and `pStorageBuffer->address` is not zero, `pStorageBuffer->address` must be an address within a VkBuffer created on …
-- `VUID-VkDescriptorGetInfoEXT-pSampler-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_SAMPLER`, the `pSampler` member of `data` must be a valid pointer to a valid VkSampler handle
-- `VUID-VkDescriptorGetInfoEXT-pCombinedImageSampler-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the `pCombinedImageSampler` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
-- `VUID-VkDescriptorGetInfoEXT-pInputAttachmentImage-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `pInputAttachmentImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
-- `VUID-VkDescriptorGetInfoEXT-pSampledImage-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, and if `pSampledImage` is not `NULL`, the `pSampledImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
-- `VUID-VkDescriptorGetInfoEXT-pStorageImage-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, and if `pStorageImage` is not `NULL`, the `pStorageImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
-- `VUID-VkDescriptorGetInfoEXT-pUniformTexelBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER`, and if `pUniformTexelBuffer` is not `NULL`, the `pUniformTexelBuffer` member of `data` must be a valid pointer to a valid …
-- `VUID-VkDescriptorGetInfoEXT-pStorageTexelBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, and if `pStorageTexelBuffer` is not `NULL`, the `pStorageTexelBuffer` member of `data` must be a valid pointer to a valid …
-- `VUID-VkDescriptorGetInfoEXT-pUniformBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, and if `pUniformBuffer` is not `NULL`, the `pUniformBuffer` member of `data` must be a valid pointer to a valid VkDescriptorAddressInfoEXT structure
-- `VUID-VkDescriptorGetInfoEXT-pStorageBuffer-parameter` (*yours*; `parameter` rules are not checked yet): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, and if `pStorageBuffer` is not `NULL`, the `pStorageBuffer` member of `data` must be a valid pointer to a valid VkDescriptorAddressInfoEXT structure
 - `VUID-VkDescriptorGetInfoEXT-type-08028` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR` and `accelerationStructure` is not `0`, `accelerationStructure` must contain the address of a VkAccelerationStructureKHR created on …
 - `VUID-VkDescriptorGetInfoEXT-type-08029` (*yours*; explicit rule): If `type` is `VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_NV` and `accelerationStructure` is not `0`, `accelerationStructure` must contain the handle of a VkAccelerationStructureNV created on `device`, …
-- `VUID-VkDescriptorGetInfoEXT-type-parameter` (*checked*): `type` must be a valid VkDescriptorType value
 - `VUID-VkDescriptorGetInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_GET_INFO_EXT`
-- `VUID-VkDescriptorGetInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
+- `VUID-VkDescriptorGetInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkDescriptorGetInfoEXT-type-parameter` (*by the types*): `type` must be a valid VkDescriptorType value
+- `VUID-VkDescriptorGetInfoEXT-pSampler-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_SAMPLER`, the `pSampler` member of `data` must be a valid pointer to a valid VkSampler handle
+- `VUID-VkDescriptorGetInfoEXT-pCombinedImageSampler-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the `pCombinedImageSampler` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pInputAttachmentImage-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT`, the `pInputAttachmentImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pSampledImage-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, and if `pSampledImage` is not `NULL`, the `pSampledImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pStorageImage-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, and if `pStorageImage` is not `NULL`, the `pStorageImage` member of `data` must be a valid pointer to a valid VkDescriptorImageInfo structure
+- `VUID-VkDescriptorGetInfoEXT-pUniformTexelBuffer-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER`, and if `pUniformTexelBuffer` is not `NULL`, the `pUniformTexelBuffer` member of `data` must be a valid pointer to a valid …
+- `VUID-VkDescriptorGetInfoEXT-pStorageTexelBuffer-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER`, and if `pStorageTexelBuffer` is not `NULL`, the `pStorageTexelBuffer` member of `data` must be a valid pointer to a valid …
+- `VUID-VkDescriptorGetInfoEXT-pUniformBuffer-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER`, and if `pUniformBuffer` is not `NULL`, the `pUniformBuffer` member of `data` must be a valid pointer to a valid VkDescriptorAddressInfoEXT structure
+- `VUID-VkDescriptorGetInfoEXT-pStorageBuffer-parameter` (*by the types*): If `type` is `VK_DESCRIPTOR_TYPE_STORAGE_BUFFER`, and if `pStorageBuffer` is not `NULL`, the `pStorageBuffer` member of `data` must be a valid pointer to a valid VkDescriptorAddressInfoEXT structure*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -274,15 +276,166 @@ pub struct DescriptorGetInfoEXT<'a> {
     _marker: PhantomData<&'a ()>,
 }
 safe_struct!(
-    #[cfg(feature = "ext_descriptor_buffer")] DescriptorGetInfoEXT, 'a; zeroed chained
+    #[cfg(feature = "ext_descriptor_buffer")] DescriptorGetInfoEXT, 'a; chained
 );
 #[cfg(feature = "ext_descriptor_buffer")]
 impl<'a> DescriptorGetInfoEXT<'a> {
-    ///Sets `type`.
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
-    pub fn ty(mut self, value: vk::DescriptorType) -> Self {
-        self.raw.ty = value;
+    pub fn new(data: DescriptorDataEXT<'a>) -> Self {
+        Self {
+            raw: vk::DescriptorGetInfoEXT {
+                ty: data.selector(),
+                data: data.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
+    }
+    ///Sets `data` and the `type` that selects its member.
+    #[inline]
+    pub fn data(mut self, value: DescriptorDataEXT<'a>) -> Self {
+        self.raw.ty = value.selector();
+        self.raw.data = value.raw();
         self
+    }
+}
+///A member of [`vk::DescriptorDataEXT`] with the `type` that selects it, as `data` takes them: the one way to set the union, so that it always holds what the selector names.
+#[cfg(feature = "ext_descriptor_buffer")]
+#[derive(Clone, Copy, Debug)]
+pub enum DescriptorDataEXT<'a> {
+    ///`pSampler`, which `type = VK_DESCRIPTOR_TYPE_SAMPLER` selects.
+    Sampler(&'a Sampler),
+    ///`pCombinedImageSampler`, which `type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER` selects.
+    CombinedImageSampler(&'a DescriptorImageInfo<'a>),
+    ///`pInputAttachmentImage`, which `type = VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` selects.
+    InputAttachment(&'a DescriptorImageInfo<'a>),
+    ///`pSampledImage`, which `type = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` selects.
+    SampledImage(Option<&'a DescriptorImageInfo<'a>>),
+    ///`pStorageImage`, which `type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE` selects.
+    StorageImage(Option<&'a DescriptorImageInfo<'a>>),
+    ///`pUniformTexelBuffer`, which `type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER` selects.
+    UniformTexelBuffer(Option<&'a DescriptorAddressInfoEXT<'a>>),
+    ///`pStorageTexelBuffer`, which `type = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER` selects.
+    StorageTexelBuffer(Option<&'a DescriptorAddressInfoEXT<'a>>),
+    ///`pUniformBuffer`, which `type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER` selects.
+    UniformBuffer(Option<&'a DescriptorAddressInfoEXT<'a>>),
+    ///`pStorageBuffer`, which `type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER` selects.
+    StorageBuffer(Option<&'a DescriptorAddressInfoEXT<'a>>),
+    ///`accelerationStructure`, which `type = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR` selects.
+    AccelerationStructureKHR(vk::DeviceAddress),
+    ///`accelerationStructure`, which `type = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_NV` selects.
+    AccelerationStructureNV(vk::DeviceAddress),
+}
+#[cfg(feature = "ext_descriptor_buffer")]
+impl<'a> DescriptorDataEXT<'a> {
+    /// The selector's value for this member.
+    #[inline]
+    pub fn selector(&self) -> vk::DescriptorType {
+        match self {
+            Self::Sampler(_) => vk::DescriptorType::SAMPLER,
+            Self::CombinedImageSampler(_) => vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
+            Self::InputAttachment(_) => vk::DescriptorType::INPUT_ATTACHMENT,
+            Self::SampledImage(_) => vk::DescriptorType::SAMPLED_IMAGE,
+            Self::StorageImage(_) => vk::DescriptorType::STORAGE_IMAGE,
+            Self::UniformTexelBuffer(_) => vk::DescriptorType::UNIFORM_TEXEL_BUFFER,
+            Self::StorageTexelBuffer(_) => vk::DescriptorType::STORAGE_TEXEL_BUFFER,
+            Self::UniformBuffer(_) => vk::DescriptorType::UNIFORM_BUFFER,
+            Self::StorageBuffer(_) => vk::DescriptorType::STORAGE_BUFFER,
+            Self::AccelerationStructureKHR(_) => {
+                vk::DescriptorType::ACCELERATION_STRUCTURE_KHR
+            }
+            Self::AccelerationStructureNV(_) => {
+                vk::DescriptorType::ACCELERATION_STRUCTURE_NV
+            }
+        }
+    }
+    /// The union, holding this member.
+    #[inline]
+    pub fn raw(self) -> vk::DescriptorDataEXT<'a> {
+        match self {
+            Self::Sampler(x) => {
+                vk::DescriptorDataEXT {
+                    p_sampler: x.raw_ref(),
+                }
+            }
+            Self::CombinedImageSampler(x) => {
+                vk::DescriptorDataEXT {
+                    p_combined_image_sampler: (x as *const DescriptorImageInfo<'a>)
+                        .cast(),
+                }
+            }
+            Self::InputAttachment(x) => {
+                vk::DescriptorDataEXT {
+                    p_input_attachment_image: (x as *const DescriptorImageInfo<'a>)
+                        .cast(),
+                }
+            }
+            Self::SampledImage(x) => {
+                vk::DescriptorDataEXT {
+                    p_sampled_image: x
+                        .map_or(
+                            core::ptr::null(),
+                            |s| (s as *const DescriptorImageInfo<'a>).cast(),
+                        ),
+                }
+            }
+            Self::StorageImage(x) => {
+                vk::DescriptorDataEXT {
+                    p_storage_image: x
+                        .map_or(
+                            core::ptr::null(),
+                            |s| (s as *const DescriptorImageInfo<'a>).cast(),
+                        ),
+                }
+            }
+            Self::UniformTexelBuffer(x) => {
+                vk::DescriptorDataEXT {
+                    p_uniform_texel_buffer: x
+                        .map_or(
+                            core::ptr::null(),
+                            |s| (s as *const DescriptorAddressInfoEXT<'a>).cast(),
+                        ),
+                }
+            }
+            Self::StorageTexelBuffer(x) => {
+                vk::DescriptorDataEXT {
+                    p_storage_texel_buffer: x
+                        .map_or(
+                            core::ptr::null(),
+                            |s| (s as *const DescriptorAddressInfoEXT<'a>).cast(),
+                        ),
+                }
+            }
+            Self::UniformBuffer(x) => {
+                vk::DescriptorDataEXT {
+                    p_uniform_buffer: x
+                        .map_or(
+                            core::ptr::null(),
+                            |s| (s as *const DescriptorAddressInfoEXT<'a>).cast(),
+                        ),
+                }
+            }
+            Self::StorageBuffer(x) => {
+                vk::DescriptorDataEXT {
+                    p_storage_buffer: x
+                        .map_or(
+                            core::ptr::null(),
+                            |s| (s as *const DescriptorAddressInfoEXT<'a>).cast(),
+                        ),
+                }
+            }
+            Self::AccelerationStructureKHR(x) => {
+                vk::DescriptorDataEXT {
+                    acceleration_structure: x,
+                }
+            }
+            Self::AccelerationStructureNV(x) => {
+                vk::DescriptorDataEXT {
+                    acceleration_structure: x,
+                }
+            }
+        }
     }
 }
 /**Safe counterpart of [`vk::ImageCaptureDescriptorDataInfoEXT`].

@@ -334,13 +334,13 @@ impl<'a> AccelerationStructureGeometryInstancesDataKHR<'a> {
 
 The rules of `VkAccelerationStructureGeometryKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureGeometryKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureGeometryKHR-triangles-parameter` (*yours*; `parameter` rules are not checked yet): If `geometryType` is `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, the `triangles` member of `geometry` must be a valid VkAccelerationStructureGeometryTrianglesDataKHR structure
-- `VUID-VkAccelerationStructureGeometryKHR-aabbs-parameter` (*yours*; `parameter` rules are not checked yet): If `geometryType` is `VK_GEOMETRY_TYPE_AABBS_KHR`, the `aabbs` member of `geometry` must be a valid VkAccelerationStructureGeometryAabbsDataKHR structure
-- `VUID-VkAccelerationStructureGeometryKHR-instances-parameter` (*yours*; `parameter` rules are not checked yet): If `geometryType` is `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the `instances` member of `geometry` must be a valid VkAccelerationStructureGeometryInstancesDataKHR structure
-- `VUID-VkAccelerationStructureGeometryKHR-geometryType-parameter` (*checked*): `geometryType` must be a valid VkGeometryTypeKHR value
 - `VUID-VkAccelerationStructureGeometryKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkGeometryFlagBitsKHR values
 - `VUID-VkAccelerationStructureGeometryKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR`
-- `VUID-VkAccelerationStructureGeometryKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
+- `VUID-VkAccelerationStructureGeometryKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAccelerationStructureGeometryKHR-geometryType-parameter` (*by the types*): `geometryType` must be a valid VkGeometryTypeKHR value
+- `VUID-VkAccelerationStructureGeometryKHR-triangles-parameter` (*by the types*): If `geometryType` is `VK_GEOMETRY_TYPE_TRIANGLES_KHR`, the `triangles` member of `geometry` must be a valid VkAccelerationStructureGeometryTrianglesDataKHR structure
+- `VUID-VkAccelerationStructureGeometryKHR-aabbs-parameter` (*by the types*): If `geometryType` is `VK_GEOMETRY_TYPE_AABBS_KHR`, the `aabbs` member of `geometry` must be a valid VkAccelerationStructureGeometryAabbsDataKHR structure
+- `VUID-VkAccelerationStructureGeometryKHR-instances-parameter` (*by the types*): If `geometryType` is `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the `instances` member of `geometry` must be a valid VkAccelerationStructureGeometryInstancesDataKHR structure*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -350,14 +350,27 @@ pub struct AccelerationStructureGeometryKHR<'a> {
 }
 safe_struct!(
     #[cfg(feature = "khr_acceleration_structure")] AccelerationStructureGeometryKHR, 'a;
-    zeroed chained
+    chained
 );
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'a> AccelerationStructureGeometryKHR<'a> {
-    ///Sets `geometryType`.
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
     #[inline]
-    pub fn geometry_type(mut self, value: vk::GeometryTypeKHR) -> Self {
-        self.raw.geometry_type = value;
+    pub fn new(geometry: AccelerationStructureGeometryDataKHR<'a>) -> Self {
+        Self {
+            raw: vk::AccelerationStructureGeometryKHR {
+                geometry_type: geometry.selector(),
+                geometry: geometry.raw(),
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
+    }
+    ///Sets `geometry` and the `geometryType` that selects its member.
+    #[inline]
+    pub fn geometry(mut self, value: AccelerationStructureGeometryDataKHR<'a>) -> Self {
+        self.raw.geometry_type = value.selector();
+        self.raw.geometry = value.raw();
         self
     }
     ///Sets `flags`.
@@ -365,6 +378,50 @@ impl<'a> AccelerationStructureGeometryKHR<'a> {
     pub fn flags(mut self, value: vk::GeometryFlagsKHR) -> Self {
         self.raw.flags = value;
         self
+    }
+}
+///A member of [`vk::AccelerationStructureGeometryDataKHR`] with the `geometryType` that selects it, as `geometry` takes them: the one way to set the union, so that it always holds what the selector names.
+#[cfg(feature = "khr_acceleration_structure")]
+#[derive(Clone, Copy, Debug)]
+pub enum AccelerationStructureGeometryDataKHR<'a> {
+    ///`triangles`, which `geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR` selects.
+    Triangles(AccelerationStructureGeometryTrianglesDataKHR<'a>),
+    ///`aabbs`, which `geometryType = VK_GEOMETRY_TYPE_AABBS_KHR` selects.
+    Aabbs(AccelerationStructureGeometryAabbsDataKHR<'a>),
+    ///`instances`, which `geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR` selects.
+    Instances(AccelerationStructureGeometryInstancesDataKHR<'a>),
+}
+#[cfg(feature = "khr_acceleration_structure")]
+impl<'a> AccelerationStructureGeometryDataKHR<'a> {
+    /// The selector's value for this member.
+    #[inline]
+    pub fn selector(&self) -> vk::GeometryTypeKHR {
+        match self {
+            Self::Triangles(_) => vk::GeometryTypeKHR::TRIANGLES,
+            Self::Aabbs(_) => vk::GeometryTypeKHR::AABBS,
+            Self::Instances(_) => vk::GeometryTypeKHR::INSTANCES,
+        }
+    }
+    /// The union, holding this member.
+    #[inline]
+    pub fn raw(self) -> vk::AccelerationStructureGeometryDataKHR<'a> {
+        match self {
+            Self::Triangles(x) => {
+                vk::AccelerationStructureGeometryDataKHR {
+                    triangles: *x,
+                }
+            }
+            Self::Aabbs(x) => {
+                vk::AccelerationStructureGeometryDataKHR {
+                    aabbs: *x,
+                }
+            }
+            Self::Instances(x) => {
+                vk::AccelerationStructureGeometryDataKHR {
+                    instances: *x,
+                }
+            }
+        }
     }
 }
 /**Safe counterpart of [`vk::AccelerationStructureGeometryTrianglesDataKHR`].

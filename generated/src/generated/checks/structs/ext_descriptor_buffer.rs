@@ -78,16 +78,3 @@ pub fn check_descriptor_buffer_binding_info_ext(
     )?;
     Ok(())
 }
-///The rules of `VkDescriptorGetInfoEXT` that are checked at run time.
-#[cfg(feature = "ext_descriptor_buffer")]
-pub fn check_descriptor_get_info_ext(
-    v: &vk::DescriptorGetInfoEXT<'_>,
-    s: &Scope<'_>,
-) -> Result<()> {
-    crate::checks::enum_descriptor_type(
-        v.ty,
-        s,
-        "VUID-VkDescriptorGetInfoEXT-type-parameter",
-    )?;
-    Ok(())
-}

@@ -76,11 +76,6 @@ pub fn check_acceleration_structure_geometry_khr(
     v: &vk::AccelerationStructureGeometryKHR<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    crate::checks::enum_geometry_type_khr(
-        v.geometry_type,
-        s,
-        "VUID-VkAccelerationStructureGeometryKHR-geometryType-parameter",
-    )?;
     crate::checks::flags_geometry_flags_khr(
         v.flags,
         s,
