@@ -275,6 +275,33 @@ mod tests {
     use super::*;
 
     #[test]
+    fn enum_values_are_named_as_ash_names_them() {
+        assert_eq!(
+            enum_const("VkDescriptorType", "VK_DESCRIPTOR_TYPE_SAMPLER"),
+            "SAMPLER"
+        );
+        // The type's own vendor tag goes; another vendor's stays.
+        assert_eq!(
+            enum_const("VkGeometryTypeKHR", "VK_GEOMETRY_TYPE_TRIANGLES_KHR"),
+            "TRIANGLES"
+        );
+        assert_eq!(
+            enum_const(
+                "VkDescriptorType",
+                "VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_NV"
+            ),
+            "ACCELERATION_STRUCTURE_NV"
+        );
+        // A name that would start with a digit gets ash's `TYPE_`.
+        assert_eq!(enum_const("VkImageType", "VK_IMAGE_TYPE_2D"), "TYPE_2D");
+        assert_eq!(
+            variant_name("ACCELERATION_STRUCTURE_KHR"),
+            "AccelerationStructureKHR"
+        );
+        assert_eq!(variant_name("UNIFORM_TEXEL_BUFFER"), "UniformTexelBuffer");
+    }
+
+    #[test]
     fn names_match_ash() {
         assert_eq!(command_fn("vkCmdDraw"), "cmd_draw");
         assert_eq!(
