@@ -456,6 +456,14 @@ fn a_selected_union_is_set_with_the_member_that_selects_it() {
     assert_eq!(held.stride, 24);
 }
 
+#[test]
+fn a_length_of_constants_is_an_array_of_that_size() {
+    // `2*VK_UUID_SIZE` bytes: the type takes exactly that many, no fewer.
+    let data = [7u8; 2 * vk::UUID_SIZE];
+    let info = tuff::AccelerationStructureVersionInfoKHR::new().version_data(&data);
+    assert_eq!(info.p_version_data.cast::<u8>(), data.as_ptr());
+}
+
 /// One frame into a swapchain: acquire, clear the image, present.
 fn present_one_frame(
     s: &Setup,

@@ -402,7 +402,10 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
             Param::StructRef { optional } => {
                 lifetimes = true;
-                let ty = safe_or_ash(cx, &p.type_name);
+                let ty = match crate::plan::shape::is_c_scalar(&p.type_name) {
+                    true => spelled(model, &cx.facts, &p.type_name),
+                    false => safe_or_ash(cx, &p.type_name),
+                };
                 let is_override = pool_override
                     .as_ref()
                     .is_some_and(|(pn, m)| pn == &p.name && m.is_some());

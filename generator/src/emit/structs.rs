@@ -291,6 +291,21 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     }
                 });
             }
+            Member::FixedRef { size } => {
+                let factors = crate::plan::shape::constant_size(size).unwrap_or_default();
+                let len = factors
+                    .iter()
+                    .map(|f| crate::plan::types::array_size(f))
+                    .reduce(|a, b| quote!(#a * #b));
+                setters.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub fn #setter(mut self, value: &'a [#ty; #len]) -> Self {
+                        self.raw.#f = value.as_ptr().cast();
+                        self
+                    }
+                });
+            }
             Member::CodecStd { count: None } => {
                 let (unsafe_kw, codec_safety) = codec_safety(true);
                 let doc = format!("Sets `{}`.{codec_safety}", m.name);

@@ -272,6 +272,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             let len = pp.len.first();
             match (len, category) {
                 (None, Some(Kind::Struct)) => Param::StructRef { optional },
+                // One number by pointer (`pVertexOffset`): a reference, like a struct.
+                (None, None) if super::shape::is_c_scalar(&p.type_name) => {
+                    Param::StructRef { optional }
+                }
                 (None, Some(Kind::Union)) if cx.facts.union_is_plain(model, &p.type_name) => {
                     Param::StructRef { optional }
                 }

@@ -361,6 +361,9 @@ fn member_settlement(shape: &Member) -> Settlement {
         Member::Selected { .. } => Settlement::Static(
             "set from the variant of the safe enum the constructor takes, which names its member".into(),
         ),
+        Member::FixedRef { .. } => Settlement::Static(
+            "taken as a reference to an array of the length the registry gives".into(),
+        ),
         Member::Selector => Settlement::Static(
             "set only by the variant of the union it selects, to that variant's value".into(),
         ),

@@ -85,6 +85,12 @@ pub enum Member {
     },
     /// The member that selects a union's meaning: set only by the union's variant.
     Selector,
+    /// A pointer to an array whose length is a product of constants (`pVersionData`,
+    /// `2*VK_UUID_SIZE` bytes): taken as a reference to an array of that size.
+    FixedRef {
+        /// The registry's C expression of the length.
+        size: String,
+    },
     /// Opaque user data handed back to a callback; never dereferenced by Vulkan.
     UserData,
     /// A pointer to a window-system object: set through an `unsafe` setter.
@@ -355,6 +361,14 @@ fn member_shape(
         if first_len.is_none() && category == Some(Kind::Struct) {
             return Member::StructRef { optional };
         }
+        // A length of constants only (`2*VK_UUID_SIZE`): an array of that size.
+        if let Some(size) = m.altlen.as_deref().filter(|a| constant_size(a).is_some()) {
+            if is_c_scalar(&m.type_name) {
+                return Member::FixedRef {
+                    size: size.to_owned(),
+                };
+            }
+        }
         return Member::Unsupported(
             "a pointer whose length the registry gives as an expression".into(),
         );
@@ -387,6 +401,22 @@ pub fn is_foreign_value(model: &Model, name: &str) -> bool {
                 .iter()
                 .any(|p| p.type_name == name && p.pointers == 0)
         }))
+}
+
+/// The factors of a length that is a product of numbers and API constants
+/// (`2*VK_UUID_SIZE`), or `None` when it names anything else.
+pub fn constant_size(expr: &str) -> Option<Vec<&str>> {
+    let factors: Vec<&str> = expr.split('*').map(str::trim).collect();
+    factors
+        .iter()
+        .all(|f| {
+            !f.is_empty()
+                && (f.chars().all(|c| c.is_ascii_digit())
+                    || (f.starts_with("VK_")
+                        && f.chars()
+                            .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')))
+        })
+        .then_some(factors)
 }
 
 /// C scalar types.

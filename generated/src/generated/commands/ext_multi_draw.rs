@@ -348,9 +348,7 @@ The caller upholds the rules that [`Self::draw_multi_ext`] checks at run time: `
 
 # Safety
 
-`vertex_offset` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdDrawMultiIndexedEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
-The caller upholds these 71 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 70 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawMultiIndexedEXT-magFilter-04553`: If a VkSampler created with `magFilter` or `minFilter` equal to `VK_FILTER_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdDrawMultiIndexedEXT-mipmapMode-04770`: If a VkSampler created with `mipmapMode` equal to `VK_SAMPLER_MIPMAP_MODE_LINEAR` and `compareEnable` equal to `VK_FALSE` is used to sample a VkImageView as a result of this command, then the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
@@ -386,7 +384,6 @@ The caller upholds these 71 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawMultiIndexedEXT-drawCount-04939`: `drawCount` must be less than `VkPhysicalDeviceMultiDrawPropertiesEXT::maxMultiDrawCount`
 - `VUID-vkCmdDrawMultiIndexedEXT-drawCount-04940`: If `drawCount` is greater than zero, `pIndexInfo` must be a valid pointer to memory containing one or more valid instances of VkMultiDrawIndexedInfoEXT structures
 - `VUID-vkCmdDrawMultiIndexedEXT-stride-04941`: `stride` must be a multiple of 4
-- `VUID-vkCmdDrawMultiIndexedEXT-pVertexOffset-parameter`: If `pVertexOffset` is not `NULL`, `pVertexOffset` must be a valid pointer to a valid `int32_t` value
 - `VUID-vkCmdDrawMultiIndexedEXT-None-06479`: If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
 - `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07027`: For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_WRITE_WITHOUT_FORMAT_BIT`
 - `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07028`: For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_STORAGE_READ_WITHOUT_FORMAT_BIT`
@@ -463,7 +460,6 @@ The rules of `vkCmdDrawMultiIndexedEXT` that apply to this crate's API ([referen
 - `VUID-vkCmdDrawMultiIndexedEXT-drawCount-04939` (*yours*; explicit rule): `drawCount` must be less than `VkPhysicalDeviceMultiDrawPropertiesEXT::maxMultiDrawCount`
 - `VUID-vkCmdDrawMultiIndexedEXT-drawCount-04940` (*yours*; explicit rule): If `drawCount` is greater than zero, `pIndexInfo` must be a valid pointer to memory containing one or more valid instances of VkMultiDrawIndexedInfoEXT structures
 - `VUID-vkCmdDrawMultiIndexedEXT-stride-04941` (*yours*; explicit rule): `stride` must be a multiple of 4
-- `VUID-vkCmdDrawMultiIndexedEXT-pVertexOffset-parameter` (*yours*; passed as ash's raw type): If `pVertexOffset` is not `NULL`, `pVertexOffset` must be a valid pointer to a valid `int32_t` value
 - `VUID-vkCmdDrawMultiIndexedEXT-aspectMask-06478` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view must have been created with an `aspectMask` that contains `VK_IMAGE_ASPECT_DEPTH_BIT`
 - `VUID-vkCmdDrawMultiIndexedEXT-None-06479` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
 - `VUID-vkCmdDrawMultiIndexedEXT-OpTypeImage-07027` (*yours*; explicit rule): For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
@@ -629,6 +625,7 @@ The rules of `vkCmdDrawMultiIndexedEXT` that apply to this crate's API ([referen
 - `VUID-vkCmdDrawMultiIndexedEXT-stage-06481` (*yours*; explicit rule): The bound graphics pipeline must not have been created with the VkPipelineShaderStageCreateInfo::`stage` member of an element of VkGraphicsPipelineCreateInfo::`pStages` set to …
 - `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-vkCmdDrawMultiIndexedEXT-pVertexOffset-parameter` (*by the types*): If `pVertexOffset` is not `NULL`, `pVertexOffset` must be a valid pointer to a valid `int32_t` value
 - `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
 - `VUID-vkCmdDrawMultiIndexedEXT-renderpass` (*by the types*): This command must only be called inside of a render pass instance
 - `VUID-vkCmdDrawMultiIndexedEXT-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
@@ -640,7 +637,7 @@ The rules of `vkCmdDrawMultiIndexedEXT` that apply to this crate's API ([referen
         instance_count: u32,
         first_instance: u32,
         stride: u32,
-        vertex_offset: *const i32,
+        vertex_offset: Option<&i32>,
     ) -> Result<()> {
         {
             let r = self.validate_draw_multi_indexed_ext();
@@ -662,7 +659,7 @@ The rules of `vkCmdDrawMultiIndexedEXT` that apply to this crate's API ([referen
 
 # Safety
 
-The caller upholds the rules that [`Self::draw_multi_indexed_ext`] checks at run time: `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool`, and those of the structs it takes. `vertex_offset` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdDrawMultiIndexedEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_multi_indexed_ext`] checks at run time: `VUID-vkCmdDrawMultiIndexedEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn draw_multi_indexed_ext_unchecked(
         &mut self,
@@ -670,7 +667,7 @@ The caller upholds the rules that [`Self::draw_multi_indexed_ext`] checks at run
         instance_count: u32,
         first_instance: u32,
         stride: u32,
-        vertex_offset: *const i32,
+        vertex_offset: Option<&i32>,
     ) -> Result<()> {
         let fp = self
             .device()
@@ -689,7 +686,8 @@ The caller upholds the rules that [`Self::draw_multi_indexed_ext`] checks at run
                     instance_count,
                     first_instance,
                     stride,
-                    vertex_offset,
+                    vertex_offset
+                        .map_or(core::ptr::null(), |s| s as *const i32 as *const _),
                 )
             };
             self.state_changed();

@@ -429,10 +429,9 @@ The caller upholds the rules that [`Self::create_micromap_ext`] checks at run ti
 
 # Safety
 
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkGetDeviceMicromapCompatibilityEXT-micromap-07551`: The `micromap` feature must be enabled
-- `VUID-VkMicromapVersionInfoEXT-pVersionData-parameter`: `pVersionData` must be a valid pointer to an array of \(2 \times \mathtt{VK\_UUID\_SIZE}\) `uint8_t` values
 
 # Valid usage
 

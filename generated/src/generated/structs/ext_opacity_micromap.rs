@@ -439,9 +439,9 @@ impl<'a> MicromapCreateInfoEXT<'a> {
 
 The rules of `VkMicromapVersionInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMicromapVersionInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMicromapVersionInfoEXT-pVersionData-parameter` (*yours*; not settable safely): `pVersionData` must be a valid pointer to an array of \(2 \times \mathtt{VK\_UUID\_SIZE}\) `uint8_t` values
 - `VUID-VkMicromapVersionInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MICROMAP_VERSION_INFO_EXT`
-- `VUID-VkMicromapVersionInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
+- `VUID-VkMicromapVersionInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkMicromapVersionInfoEXT-pVersionData-parameter` (*by the types*): `pVersionData` must be a valid pointer to an array of \(2 \times \mathtt{VK\_UUID\_SIZE}\) `uint8_t` values*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -452,6 +452,15 @@ pub struct MicromapVersionInfoEXT<'a> {
 safe_struct!(
     #[cfg(feature = "ext_opacity_micromap")] MicromapVersionInfoEXT, 'a; zeroed chained
 );
+#[cfg(feature = "ext_opacity_micromap")]
+impl<'a> MicromapVersionInfoEXT<'a> {
+    ///Sets `pVersionData`.
+    #[inline]
+    pub fn version_data(mut self, value: &'a [u8; 2usize * vk::UUID_SIZE]) -> Self {
+        self.raw.p_version_data = value.as_ptr().cast();
+        self
+    }
+}
 /**Safe counterpart of [`vk::PhysicalDeviceOpacityMicromapFeaturesEXT`].
 
 # Valid usage

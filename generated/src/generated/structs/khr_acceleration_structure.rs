@@ -483,9 +483,9 @@ impl<'a> AccelerationStructureGeometryTrianglesDataKHR<'a> {
 
 The rules of `VkAccelerationStructureVersionInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureVersionInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkAccelerationStructureVersionInfoKHR-pVersionData-parameter` (*yours*; not settable safely): `pVersionData` must be a valid pointer to an array of \(2 \times \mathtt{VK\_UUID\_SIZE}\) `uint8_t` values
 - `VUID-VkAccelerationStructureVersionInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR`
-- `VUID-VkAccelerationStructureVersionInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
+- `VUID-VkAccelerationStructureVersionInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkAccelerationStructureVersionInfoKHR-pVersionData-parameter` (*by the types*): `pVersionData` must be a valid pointer to an array of \(2 \times \mathtt{VK\_UUID\_SIZE}\) `uint8_t` values*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -497,6 +497,15 @@ safe_struct!(
     #[cfg(feature = "khr_acceleration_structure")] AccelerationStructureVersionInfoKHR,
     'a; zeroed chained
 );
+#[cfg(feature = "khr_acceleration_structure")]
+impl<'a> AccelerationStructureVersionInfoKHR<'a> {
+    ///Sets `pVersionData`.
+    #[inline]
+    pub fn version_data(mut self, value: &'a [u8; 2usize * vk::UUID_SIZE]) -> Self {
+        self.raw.p_version_data = value.as_ptr().cast();
+        self
+    }
+}
 /**Safe counterpart of [`vk::CopyAccelerationStructureInfoKHR`].
 
 # Valid usage
