@@ -510,7 +510,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     .types
                     .get(&p.type_name)
                     .is_some_and(|t| t.category == Some(Kind::Basetype) && t.code.contains('*'));
-                let ty = if pointer_typedef {
+                let ty = if pointer_typedef || p.pointers == 2 {
                     pre.push(quote!(let mut out: *mut #ty = core::ptr::null_mut();));
                     call_args.push(quote!(core::ptr::addr_of_mut!(out).cast(),));
                     quote!(*mut #ty)

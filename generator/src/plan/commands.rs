@@ -320,6 +320,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (None, _) if p.type_name != "void" => Param::Output,
                 _ => Param::Raw,
             }
+        } else if p.pointers == 2 && p.const_pointees == [false, false] && pp.len.is_empty() {
+            // A pointer the command writes (`AHardwareBuffer** pBuffer`, `void**
+            // ppData` of a host mapping): returned as the raw pointer it is.
+            Param::Output
         } else {
             Param::Raw
         };

@@ -75,24 +75,19 @@ The caller upholds the rules that [`Self::get_android_hardware_buffer_properties
     }
     /**`vkGetMemoryAndroidHardwareBufferANDROID`
 
-# Safety
-
-`buffer` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetMemoryAndroidHardwareBufferANDROID` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetMemoryAndroidHardwareBufferANDROID` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetMemoryAndroidHardwareBufferANDROID.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pBuffer-parameter` (*yours*; passed as ash's raw type): `pBuffer` must be a valid pointer to a valid pointer to an AHardwareBuffer value
 - `VUID-vkGetMemoryAndroidHardwareBufferANDROID-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkMemoryGetAndroidHardwareBufferInfoANDROID structure*/
+- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkMemoryGetAndroidHardwareBufferInfoANDROID structure
+- `VUID-vkGetMemoryAndroidHardwareBufferANDROID-pBuffer-parameter` (*by the types*): `pBuffer` must be a valid pointer to a valid pointer to an AHardwareBuffer value*/
     #[doc(alias = "vkGetMemoryAndroidHardwareBufferANDROID")]
     #[inline]
-    pub unsafe fn get_memory_android_hardware_buffer_android<'a>(
+    pub fn get_memory_android_hardware_buffer_android<'a>(
         &self,
         info: &MemoryGetAndroidHardwareBufferInfoANDROID<'a>,
-        buffer: *mut *mut vk::AHardwareBuffer,
-    ) -> Result<()> {
+    ) -> Result<*mut vk::AHardwareBuffer> {
         let fp = self
             .ext()
             .android_external_memory_android_hardware_buffer
@@ -103,17 +98,18 @@ The rules of `vkGetMemoryAndroidHardwareBufferANDROID` that apply to this crate'
                 ),
             )?
             .get_memory_android_hardware_buffer_android;
+        let mut out: *mut vk::AHardwareBuffer = core::ptr::null_mut();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
                 info as *const MemoryGetAndroidHardwareBufferInfoANDROID<'a> as *const _,
-                buffer,
+                core::ptr::addr_of_mut!(out).cast(),
             )
         };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(())
+        Ok(out)
     }
 }

@@ -6,39 +6,33 @@ use super::*;
 impl Device {
     /**`vkGetDescriptorSetHostMappingVALVE`
 
-# Safety
-
-`data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetDescriptorSetHostMappingVALVE` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetDescriptorSetHostMappingVALVE-ppData-parameter`: `ppData` must be a valid pointer to a pointer value
-
 # Valid usage
 
 The rules of `vkGetDescriptorSetHostMappingVALVE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDescriptorSetHostMappingVALVE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDescriptorSetHostMappingVALVE-ppData-parameter` (*yours*; passed as ash's raw type): `ppData` must be a valid pointer to a pointer value
 - `VUID-vkGetDescriptorSetHostMappingVALVE-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetDescriptorSetHostMappingVALVE-descriptorSet-parameter` (*by the types*): `descriptorSet` must be a valid VkDescriptorSet handle*/
+- `VUID-vkGetDescriptorSetHostMappingVALVE-descriptorSet-parameter` (*by the types*): `descriptorSet` must be a valid VkDescriptorSet handle
+- `VUID-vkGetDescriptorSetHostMappingVALVE-ppData-parameter` (*by the types*): `ppData` must be a valid pointer to a pointer value*/
     #[doc(alias = "vkGetDescriptorSetHostMappingVALVE")]
     #[inline]
-    pub unsafe fn get_descriptor_set_host_mapping_valve(
+    pub fn get_descriptor_set_host_mapping_valve(
         &self,
         descriptor_set: &DescriptorSet,
-        data: *mut *mut ::core::ffi::c_void,
-    ) -> Result<()> {
+    ) -> Result<*mut ::core::ffi::c_void> {
         let fp = self
             .ext()
             .valve_descriptor_set_host_mapping
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_VALVE_descriptor_set_host_mapping"))?
             .get_descriptor_set_host_mapping_valve;
-        {
+        Ok({
+            let mut out: *mut ::core::ffi::c_void = core::ptr::null_mut();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), descriptor_set.raw(), data) };
-        }
-        Ok(())
+            unsafe {
+                fp(self.raw(), descriptor_set.raw(), core::ptr::addr_of_mut!(out).cast())
+            };
+            out
+        })
     }
     /**`vkGetDescriptorSetLayoutHostMappingInfoVALVE`
 
