@@ -157,6 +157,9 @@ fn methods_are_named_on_their_receiver() {
         ("vkResetCommandBuffer", "reset"),
         ("vkGetDeviceQueue", "get_queue"),
         ("vkQueuePresentKHR", "present_khr"),
+        // A display's commands are its own, without its vendor tag's help.
+        ("vkReleaseDisplayEXT", "release_ext"),
+        ("vkCreateDisplayModeKHR", "create_mode_khr"),
         // Unchanged: not the receiver's name, another handle's, a clash.
         ("vkCreateBuffer", "create_buffer"),
         ("vkWaitForFences", "wait_for_fences"),
@@ -172,6 +175,16 @@ fn methods_are_named_on_their_receiver() {
     ] {
         assert_eq!(methods[command], method, "{command}");
     }
+    // A physical device's command that acts on one of its displays is called on
+    // the display, which passes its own parent.
+    assert_eq!(
+        tuff_gen::names::receiver_type(&pinned().model, "vkReleaseDisplayEXT"),
+        "VkDisplayKHR"
+    );
+    assert_eq!(
+        tuff_gen::names::receiver_type(&pinned().model, "vkGetPhysicalDeviceDisplayPropertiesKHR"),
+        "VkPhysicalDevice"
+    );
     // No two commands of one receiver share a method.
     let mut seen = std::collections::BTreeSet::new();
     for (command, method) in &methods {

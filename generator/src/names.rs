@@ -91,14 +91,21 @@ pub fn receiver_type<'a>(model: &'a Model, command: &str) -> &'a str {
 /// stay where they begin another handle's name (`get_device_memory_commitment`
 /// speaks of a `VkDeviceMemory`), and where nothing would be left.
 pub fn receiver_relative(model: &Model, receiver: &str, name: &str) -> String {
+    // A receiver's vendor tag is not among the command's words (`VkDisplayKHR`'s
+    // `vkReleaseDisplayEXT`).
+    let full = type_name(receiver);
+    let base = VENDOR_TAGS
+        .iter()
+        .find_map(|t| full.strip_suffix(t))
+        .unwrap_or(&full);
     let words = if receiver == "Recorder" {
         "cmd".to_owned()
     } else {
-        type_name(receiver).to_snake_case()
+        base.to_snake_case()
     };
     let names_a_type = |rest: &str| {
         let next = rest.split('_').next().unwrap_or("");
-        let candidate = format!("{}{}", type_name(receiver), next.to_upper_camel_case());
+        let candidate = format!("{base}{}", next.to_upper_camel_case());
         !next.is_empty()
             && model.category(&format!("Vk{candidate}")) == Some(crate::model::Kind::Handle)
     };

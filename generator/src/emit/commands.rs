@@ -199,8 +199,16 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     // so that no recorder of it is alive.
     let is_cmd = recorded(plan);
     let lvl = level(model, &plan.name);
+    // The dispatchable handle: `self`'s, or its parent's where the method is called
+    // on a display (a physical device's child).
     let receiver_raw = if plan.receiver == "Entry" {
         quote!()
+    } else if cmd
+        .params
+        .first()
+        .is_some_and(|p| p.type_name != plan.receiver)
+    {
+        quote!(self.parent().raw(),)
     } else {
         quote!(self.raw(),)
     };
@@ -208,6 +216,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let device_path = match (lvl, plan.receiver.as_str()) {
         (Level::Entry, _) => quote!(self),
         (Level::Instance, "VkInstance") => quote!(self),
+        (Level::Instance, "VkDisplayKHR") => quote!(self.parent().parent()),
         (Level::Instance, _) => quote!(self.parent()),
         (Level::Device, "VkDevice") => quote!(self),
         (Level::Device, "VkQueue") => quote!(self.parent()),
@@ -324,6 +333,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 call_args.push(quote!(#name,));
             }
             Param::Dispatch => call_args.push(receiver_raw.clone()),
+            Param::Receiver => call_args.push(quote!(self.raw(),)),
             Param::Allocator => call_args.push(quote!(core::ptr::null(),)),
             Param::Count => {
                 // The length of the first slice that names this count.

@@ -31,6 +31,7 @@ pub fn host_syncs(cx: &Context, plan: &Plan) -> TokenStream {
                 Param::Dispatch if i == 0 && !recorded => {
                     pushes.push(quote!(syncs.push(self.host_sync().clone());))
                 }
+                Param::Receiver => pushes.push(quote!(syncs.push(self.host_sync().clone());)),
                 Param::Handle { optional: false } => {
                     pushes.push(quote!(syncs.push(#name.host_sync().clone());))
                 }

@@ -562,12 +562,29 @@ impl Model {
         Ok(model)
     }
 
-    /// The dispatchable handle a command is called through (its first parameter's
-    /// type), or `None` for a global command such as `vkCreateInstance`.
+    /// The handle a command's method is called on: its dispatchable first
+    /// parameter's type, or the display a physical-device command acts on; `None`
+    /// for a global command such as `vkCreateInstance`.
     pub fn receiver(&self, command: &str) -> Option<&str> {
-        let first = self.commands.get(command)?.params.first()?;
+        let params = &self.commands.get(command)?.params;
+        let first = params.first()?;
         let def = self.types.get(&first.type_name)?;
-        (def.category == Some(Kind::Handle) && def.dispatchable).then_some(first.type_name.as_str())
+        if !(def.category == Some(Kind::Handle) && def.dispatchable) {
+            return None;
+        }
+        // A command of a physical device that acts on one of its displays is the
+        // display's: the method passes the display's own parent, so the two cannot
+        // disagree.
+        let child = params.iter().skip(1).find(|p| {
+            p.pointers == 0
+                && !p.is_optional()
+                && self
+                    .handles
+                    .get(&p.type_name)
+                    .is_some_and(|h| h.parent_chain.first() == Some(&first.type_name))
+                && first.type_name == "VkPhysicalDevice"
+        });
+        Some(child.map_or(first.type_name.as_str(), |p| p.type_name.as_str()))
     }
 
     /// The category of a type, following no aliases (as the specification's

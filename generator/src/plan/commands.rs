@@ -20,6 +20,9 @@ pub enum Param {
     Value,
     /// A fixed-size array, by reference.
     Array,
+    /// The handle the method is called on where it is not the dispatchable first
+    /// parameter (a display, whose physical device goes first): `self`.
+    Receiver,
     /// A handle, as a wrapper.
     Handle {
         /// May be null.
@@ -243,6 +246,8 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         let is_count = count_refs.iter().any(|(_, c)| c == &p.name);
         let shape = if i == 0 && receiver != "Entry" {
             Param::Dispatch
+        } else if i > 0 && p.type_name == receiver && p.pointers == 0 {
+            Param::Receiver
         } else if p.type_name == "VkAllocationCallbacks" {
             Param::Allocator
         } else if is_count && p.pointers == 0 {

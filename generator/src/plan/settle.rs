@@ -261,6 +261,18 @@ fn implicit(
                 }
             }
             K::ArrayLength => Settlement::User("a slice may be empty; not checked".into()),
+            // The method is called on the child, and passes its own parent.
+            K::Parent
+                if model.commands[&d.item]
+                    .params
+                    .iter()
+                    .zip(&plan.params)
+                    .any(|(p, s)| Some(&p.name) == d.field.as_ref() && *s == Param::Receiver) =>
+            {
+                Settlement::Static(
+                    "the method is called on the handle, and passes the handle's own parent as the command's first parameter".into(),
+                )
+            }
             _ => Settlement::User(format!("`{}` rules are not checked yet", d.kind.tag())),
         };
     }
@@ -391,7 +403,9 @@ fn member_settlement(shape: &Member) -> Settlement {
 
 fn param_settlement(p: &Param) -> Settlement {
     match p {
-        Param::Dispatch => Settlement::Static("`self` is a live wrapper".into()),
+        Param::Dispatch | Param::Receiver => {
+            Settlement::Static("`self` is a live wrapper".into())
+        }
         Param::Handle { .. } | Param::HandleSlice | Param::Created | Param::CreatedArray => {
             Settlement::Static("taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides".into())
         }

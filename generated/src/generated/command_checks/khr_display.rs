@@ -3,13 +3,13 @@
 //!The dynamic checks of the commands of `VK_KHR_DISPLAY`.
 use super::*;
 #[cfg(feature = "khr_display")]
-impl PhysicalDevice {
-    ///The dynamic checks of [`Self::create_display_mode_khr`], run before the call.
-    pub(crate) fn validate_create_display_mode_khr<'a>(
+impl DisplayKHR {
+    ///The dynamic checks of [`Self::create_mode_khr`], run before the call.
+    pub(crate) fn validate_create_mode_khr<'a>(
         &self,
         create_info: &DisplayModeCreateInfoKHR<'a>,
     ) -> Result<()> {
-        let s = &self.parent().scope();
+        let s = &self.parent().parent().scope();
         crate::checks::check_display_mode_create_info_khr(create_info, s)?;
         Ok(())
     }

@@ -3,30 +3,21 @@
 //!The commands of `VK_EXT_ACQUIRE_DRM_DISPLAY`.
 use super::*;
 #[cfg(feature = "ext_acquire_drm_display")]
-impl PhysicalDevice {
+impl DisplayKHR {
     /**`vkAcquireDrmDisplayEXT`
-
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkAcquireDrmDisplayEXT-display-parent`: `display` must have been created, allocated, or retrieved from `physicalDevice`
 
 # Valid usage
 
 The rules of `vkAcquireDrmDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireDrmDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireDrmDisplayEXT-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-vkAcquireDrmDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
-- `VUID-vkAcquireDrmDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
+- `VUID-vkAcquireDrmDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkAcquireDrmDisplayEXT-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkAcquireDrmDisplayEXT")]
     #[inline]
-    pub unsafe fn acquire_drm_display_ext(
-        &self,
-        drm_fd: i32,
-        display: &DisplayKHR,
-    ) -> Result<()> {
+    pub fn acquire_drm_display_ext(&self, drm_fd: i32) -> Result<()> {
         let fp = self
+            .parent()
             .parent()
             .ext()
             .ext_acquire_drm_display
@@ -34,12 +25,15 @@ The rules of `vkAcquireDrmDisplayEXT` that apply to this crate's API ([reference
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_acquire_drm_display"))?
             .acquire_drm_display_ext;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe { fp(self.raw(), drm_fd, display.raw()) };
+        let r = unsafe { fp(self.parent().raw(), drm_fd, self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
         Ok(())
     }
+}
+#[cfg(feature = "ext_acquire_drm_display")]
+impl PhysicalDevice {
     /**`vkGetDrmDisplayEXT`
 
 # Valid usage

@@ -3,34 +3,30 @@
 //!The commands of `VK_EXT_ACQUIRE_XLIB_DISPLAY`.
 use super::*;
 #[cfg(feature = "ext_acquire_xlib_display")]
-impl PhysicalDevice {
+impl DisplayKHR {
     /**`vkAcquireXlibDisplayEXT`
 
 # Safety
 
 `dpy` is passed to Vulkan as ash's raw type: each must be what the specification of `vkAcquireXlibDisplayEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
 
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkAcquireXlibDisplayEXT-dpy-parameter`: `dpy` must be a valid pointer to a `Display` value
-- `VUID-vkAcquireXlibDisplayEXT-display-parent`: `display` must have been created, allocated, or retrieved from `physicalDevice`
 
 # Valid usage
 
 The rules of `vkAcquireXlibDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireXlibDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkAcquireXlibDisplayEXT-dpy-parameter` (*yours*; passed as ash's raw type): `dpy` must be a valid pointer to a `Display` value
-- `VUID-vkAcquireXlibDisplayEXT-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-vkAcquireXlibDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
-- `VUID-vkAcquireXlibDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
+- `VUID-vkAcquireXlibDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkAcquireXlibDisplayEXT-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkAcquireXlibDisplayEXT")]
     #[inline]
-    pub unsafe fn acquire_xlib_display_ext(
-        &self,
-        dpy: *mut vk::Display,
-        display: &DisplayKHR,
-    ) -> Result<()> {
+    pub unsafe fn acquire_xlib_display_ext(&self, dpy: *mut vk::Display) -> Result<()> {
         let fp = self
+            .parent()
             .parent()
             .ext()
             .ext_acquire_xlib_display
@@ -38,12 +34,15 @@ The rules of `vkAcquireXlibDisplayEXT` that apply to this crate's API ([referenc
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_acquire_xlib_display"))?
             .acquire_xlib_display_ext;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe { fp(self.raw(), dpy, display.raw()) };
+        let r = unsafe { fp(self.parent().raw(), dpy, self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
         Ok(())
     }
+}
+#[cfg(feature = "ext_acquire_xlib_display")]
+impl PhysicalDevice {
     /**`vkGetRandROutputDisplayEXT`
 
 # Safety

@@ -3,26 +3,21 @@
 //!The commands of `VK_EXT_DIRECT_MODE_DISPLAY`.
 use super::*;
 #[cfg(feature = "ext_direct_mode_display")]
-impl PhysicalDevice {
+impl DisplayKHR {
     /**`vkReleaseDisplayEXT`
-
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkReleaseDisplayEXT-display-parent`: `display` must have been created, allocated, or retrieved from `physicalDevice`
 
 # Valid usage
 
 The rules of `vkReleaseDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkReleaseDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkReleaseDisplayEXT-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-vkReleaseDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
-- `VUID-vkReleaseDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
+- `VUID-vkReleaseDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkReleaseDisplayEXT-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkReleaseDisplayEXT")]
     #[inline]
-    pub unsafe fn release_display_ext(&self, display: &DisplayKHR) -> Result<()> {
+    pub fn release_ext(&self) -> Result<()> {
         let fp = self
+            .parent()
             .parent()
             .ext()
             .ext_direct_mode_display
@@ -30,7 +25,7 @@ The rules of `vkReleaseDisplayEXT` that apply to this crate's API ([reference pa
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_direct_mode_display"))?
             .release_display_ext;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe { fp(self.raw(), display.raw()) };
+        let r = unsafe { fp(self.parent().raw(), self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }

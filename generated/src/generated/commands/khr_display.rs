@@ -3,14 +3,13 @@
 //!The commands of `VK_KHR_DISPLAY`.
 use super::*;
 #[cfg(feature = "khr_display")]
-impl PhysicalDevice {
+impl DisplayKHR {
     /**`vkCreateDisplayModeKHR`
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCreateDisplayModeKHR-display-parent`: `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-VkDisplayModeParametersKHR-width-01990`: The `width` member of `visibleRegion` must be greater than `0`
 - `VUID-VkDisplayModeParametersKHR-height-01991`: The `height` member of `visibleRegion` must be greater than `0`
 
@@ -18,51 +17,50 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 The rules of `vkCreateDisplayModeKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDisplayModeKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateDisplayModeKHR-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-vkCreateDisplayModeKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
 - `VUID-vkCreateDisplayModeKHR-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
 - `VUID-vkCreateDisplayModeKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDisplayModeCreateInfoKHR structure
 - `VUID-vkCreateDisplayModeKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
-- `VUID-vkCreateDisplayModeKHR-pMode-parameter` (*by the types*): `pMode` must be a valid pointer to a VkDisplayModeKHR handle*/
+- `VUID-vkCreateDisplayModeKHR-pMode-parameter` (*by the types*): `pMode` must be a valid pointer to a VkDisplayModeKHR handle
+- `VUID-vkCreateDisplayModeKHR-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkCreateDisplayModeKHR")]
     #[inline]
-    pub unsafe fn create_display_mode_khr<'a>(
+    pub unsafe fn create_mode_khr<'a>(
         &self,
-        display: &DisplayKHR,
         create_info: &DisplayModeCreateInfoKHR<'a>,
     ) -> Result<DisplayModeKHR> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(display.host_sync().clone());
+            syncs.push(self.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
         {
-            let r = self.validate_create_display_mode_khr(create_info);
+            let r = self.validate_create_mode_khr(create_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.create_display_mode_khr_unchecked(display, create_info) }
+        unsafe { self.create_mode_khr_unchecked(create_info) }
     }
     /**`vkCreateDisplayModeKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_display_mode_khr`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_mode_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
-    pub unsafe fn create_display_mode_khr_unchecked<'a>(
+    pub unsafe fn create_mode_khr_unchecked<'a>(
         &self,
-        display: &DisplayKHR,
         create_info: &DisplayModeCreateInfoKHR<'a>,
     ) -> Result<DisplayModeKHR> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
-            syncs.push(display.host_sync().clone());
+            syncs.push(self.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
         let fp = self
+            .parent()
             .parent()
             .ext()
             .khr_display
@@ -73,8 +71,8 @@ The caller upholds the rules that [`Self::create_display_mode_khr`] checks at ru
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
+                self.parent().raw(),
                 self.raw(),
-                display.raw(),
                 create_info as *const DisplayModeCreateInfoKHR<'a> as *const _,
                 core::ptr::null(),
                 &mut out,
@@ -83,15 +81,14 @@ The caller upholds the rules that [`Self::create_display_mode_khr`] checks at ru
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        Ok(DisplayModeKHR::from_raw(out, display, None, true))
+        Ok(DisplayModeKHR::from_raw(out, self, None, true))
     }
     /**`vkGetDisplayModePropertiesKHR`
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkGetDisplayModePropertiesKHR-display-parent`: `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-VkDisplayModeParametersKHR-width-01990`: The `width` member of `visibleRegion` must be greater than `0`
 - `VUID-VkDisplayModeParametersKHR-height-01991`: The `height` member of `visibleRegion` must be greater than `0`
 
@@ -99,18 +96,18 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 The rules of `vkGetDisplayModePropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayModePropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDisplayModePropertiesKHR-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-vkGetDisplayModePropertiesKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
 - `VUID-vkGetDisplayModePropertiesKHR-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
 - `VUID-vkGetDisplayModePropertiesKHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
-- `VUID-vkGetDisplayModePropertiesKHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayModePropertiesKHR structures*/
+- `VUID-vkGetDisplayModePropertiesKHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayModePropertiesKHR structures
+- `VUID-vkGetDisplayModePropertiesKHR-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkGetDisplayModePropertiesKHR")]
     #[inline]
-    pub unsafe fn get_display_mode_properties_khr(
+    pub unsafe fn get_mode_properties_khr(
         &self,
-        display: &DisplayKHR,
     ) -> Result<Vec<vk::DisplayModePropertiesKHR>> {
         let fp = self
+            .parent()
             .parent()
             .ext()
             .khr_display
@@ -123,9 +120,80 @@ The rules of `vkGetDisplayModePropertiesKHR` that apply to this crate's API ([re
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::DisplayModePropertiesKHR|
-            fp(self.raw(), display.raw(), count, items_ptr.cast()))
+            fp(self.parent().raw(), self.raw(), count, items_ptr.cast()))
         }
     }
+}
+#[cfg(feature = "khr_display")]
+impl Instance {
+    /**`vkCreateDisplayPlaneSurfaceKHR`
+
+# Safety
+
+The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
+
+- `VUID-VkDisplaySurfaceCreateInfoKHR-planeIndex-01252`: `planeIndex` must be less than the number of display planes supported by the device as determined by calling `vkGetPhysicalDeviceDisplayPlanePropertiesKHR`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-planeReorderPossible-01253`: If the `planeReorderPossible` member of the `VkDisplayPropertiesKHR` structure returned by `vkGetPhysicalDeviceDisplayPropertiesKHR` for the display corresponding to `displayMode` is `VK_TRUE` then `planeStackIndex` must be less than the number of display planes supported by the device as determined by calling `vkGetPhysicalDeviceDisplayPlanePropertiesKHR`; otherwise `planeStackIndex` must equal the `currentStackIndex` member of `VkDisplayPlanePropertiesKHR` returned by `vkGetPhysicalDeviceDisplayPlanePropertiesKHR` for the display plane corresponding to `displayMode`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-01255`: `alphaMode` must be one of the bits present in the `supportedAlpha` member of `VkDisplayPlaneCapabilitiesKHR` for the display plane corresponding to `displayMode`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-transform-06740`: `transform` must be one of the bits present in the `supportedTransforms` member of `VkDisplayPropertiesKHR` for the display corresponding to `displayMode`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-width-01256`: The `width` and `height` members of `imageExtent` must be less than or equal to VkPhysicalDeviceLimits::`maxImageDimension2D`
+
+# Valid usage
+
+The rules of `vkCreateDisplayPlaneSurfaceKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDisplayPlaneSurfaceKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
+
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDisplaySurfaceCreateInfoKHR structure
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
+- `VUID-vkCreateDisplayPlaneSurfaceKHR-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
+    #[doc(alias = "vkCreateDisplayPlaneSurfaceKHR")]
+    #[inline]
+    pub unsafe fn create_display_plane_surface_khr<'a>(
+        &self,
+        create_info: &DisplaySurfaceCreateInfoKHR<'a>,
+    ) -> Result<SurfaceKHR> {
+        {
+            let r = self.validate_create_display_plane_surface_khr(create_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.create_display_plane_surface_khr_unchecked(create_info) }
+    }
+    /**`vkCreateDisplayPlaneSurfaceKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_display_plane_surface_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_display_plane_surface_khr_unchecked<'a>(
+        &self,
+        create_info: &DisplaySurfaceCreateInfoKHR<'a>,
+    ) -> Result<SurfaceKHR> {
+        let fp = self
+            .ext()
+            .khr_display
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_display"))?
+            .create_display_plane_surface_khr;
+        let mut out = vk::SurfaceKHR::null();
+        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+        let r = unsafe {
+            fp(
+                self.raw(),
+                create_info as *const DisplaySurfaceCreateInfoKHR<'a> as *const _,
+                core::ptr::null(),
+                &mut out,
+            )
+        };
+        if r.as_raw() < 0 {
+            return Err(Error::Vk(r));
+        }
+        Ok(SurfaceKHR::from_raw(out, self, None, true))
+    }
+}
+#[cfg(feature = "khr_display")]
+impl PhysicalDevice {
     /**`vkGetDisplayPlaneCapabilitiesKHR`
 
 # Valid usage
@@ -268,73 +336,5 @@ The rules of `vkGetPhysicalDeviceDisplayPropertiesKHR` that apply to this crate'
                 items_ptr: *mut vk::DisplayPropertiesKHR<'static>|
             fp(self.raw(), count, items_ptr.cast()))
         }
-    }
-}
-#[cfg(feature = "khr_display")]
-impl Instance {
-    /**`vkCreateDisplayPlaneSurfaceKHR`
-
-# Safety
-
-The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDisplaySurfaceCreateInfoKHR-planeIndex-01252`: `planeIndex` must be less than the number of display planes supported by the device as determined by calling `vkGetPhysicalDeviceDisplayPlanePropertiesKHR`
-- `VUID-VkDisplaySurfaceCreateInfoKHR-planeReorderPossible-01253`: If the `planeReorderPossible` member of the `VkDisplayPropertiesKHR` structure returned by `vkGetPhysicalDeviceDisplayPropertiesKHR` for the display corresponding to `displayMode` is `VK_TRUE` then `planeStackIndex` must be less than the number of display planes supported by the device as determined by calling `vkGetPhysicalDeviceDisplayPlanePropertiesKHR`; otherwise `planeStackIndex` must equal the `currentStackIndex` member of `VkDisplayPlanePropertiesKHR` returned by `vkGetPhysicalDeviceDisplayPlanePropertiesKHR` for the display plane corresponding to `displayMode`
-- `VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-01255`: `alphaMode` must be one of the bits present in the `supportedAlpha` member of `VkDisplayPlaneCapabilitiesKHR` for the display plane corresponding to `displayMode`
-- `VUID-VkDisplaySurfaceCreateInfoKHR-transform-06740`: `transform` must be one of the bits present in the `supportedTransforms` member of `VkDisplayPropertiesKHR` for the display corresponding to `displayMode`
-- `VUID-VkDisplaySurfaceCreateInfoKHR-width-01256`: The `width` and `height` members of `imageExtent` must be less than or equal to VkPhysicalDeviceLimits::`maxImageDimension2D`
-
-# Valid usage
-
-The rules of `vkCreateDisplayPlaneSurfaceKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDisplayPlaneSurfaceKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
-
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-instance-parameter` (*by the types*): `instance` must be a valid VkInstance handle
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkDisplaySurfaceCreateInfoKHR structure
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
-- `VUID-vkCreateDisplayPlaneSurfaceKHR-pSurface-parameter` (*by the types*): `pSurface` must be a valid pointer to a VkSurfaceKHR handle*/
-    #[doc(alias = "vkCreateDisplayPlaneSurfaceKHR")]
-    #[inline]
-    pub unsafe fn create_display_plane_surface_khr<'a>(
-        &self,
-        create_info: &DisplaySurfaceCreateInfoKHR<'a>,
-    ) -> Result<SurfaceKHR> {
-        {
-            let r = self.validate_create_display_plane_surface_khr(create_info);
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.create_display_plane_surface_khr_unchecked(create_info) }
-    }
-    /**`vkCreateDisplayPlaneSurfaceKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::create_display_plane_surface_khr`] checks at run time (those of the structs it takes).*/
-    #[inline]
-    pub unsafe fn create_display_plane_surface_khr_unchecked<'a>(
-        &self,
-        create_info: &DisplaySurfaceCreateInfoKHR<'a>,
-    ) -> Result<SurfaceKHR> {
-        let fp = self
-            .ext()
-            .khr_display
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_display"))?
-            .create_display_plane_surface_khr;
-        let mut out = vk::SurfaceKHR::null();
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe {
-            fp(
-                self.raw(),
-                create_info as *const DisplaySurfaceCreateInfoKHR<'a> as *const _,
-                core::ptr::null(),
-                &mut out,
-            )
-        };
-        if r.as_raw() < 0 {
-            return Err(Error::Vk(r));
-        }
-        Ok(SurfaceKHR::from_raw(out, self, None, true))
     }
 }

@@ -3,14 +3,13 @@
 //!The commands of `VK_KHR_GET_DISPLAY_PROPERTIES2`.
 use super::*;
 #[cfg(feature = "khr_get_display_properties2")]
-impl PhysicalDevice {
+impl DisplayKHR {
     /**`vkGetDisplayModeProperties2KHR`
 
 # Safety
 
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkGetDisplayModeProperties2KHR-display-parent`: `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-VkDisplayModeParametersKHR-width-01990`: The `width` member of `visibleRegion` must be greater than `0`
 - `VUID-VkDisplayModeParametersKHR-height-01991`: The `height` member of `visibleRegion` must be greater than `0`
 
@@ -18,18 +17,18 @@ The caller upholds these 3 rules that no check of this method enforces (its comm
 
 The rules of `vkGetDisplayModeProperties2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDisplayModeProperties2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDisplayModeProperties2KHR-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-vkGetDisplayModeProperties2KHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
 - `VUID-vkGetDisplayModeProperties2KHR-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
 - `VUID-vkGetDisplayModeProperties2KHR-pPropertyCount-parameter` (*by the types*): `pPropertyCount` must be a valid pointer to a `uint32_t` value
-- `VUID-vkGetDisplayModeProperties2KHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayModeProperties2KHR structures*/
+- `VUID-vkGetDisplayModeProperties2KHR-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkDisplayModeProperties2KHR structures
+- `VUID-vkGetDisplayModeProperties2KHR-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkGetDisplayModeProperties2KHR")]
     #[inline]
-    pub unsafe fn get_display_mode_properties2_khr(
+    pub unsafe fn get_mode_properties2_khr(
         &self,
-        display: &DisplayKHR,
     ) -> Result<Vec<vk::DisplayModeProperties2KHR<'static>>> {
         let fp = self
+            .parent()
             .parent()
             .ext()
             .khr_get_display_properties2
@@ -42,9 +41,12 @@ The rules of `vkGetDisplayModeProperties2KHR` that apply to this crate's API ([r
             crate::support::two_call(|
                 count: &mut u32,
                 items_ptr: *mut vk::DisplayModeProperties2KHR<'static>|
-            fp(self.raw(), display.raw(), count, items_ptr.cast()))
+            fp(self.parent().raw(), self.raw(), count, items_ptr.cast()))
         }
     }
+}
+#[cfg(feature = "khr_get_display_properties2")]
+impl PhysicalDevice {
     /**`vkGetDisplayPlaneCapabilities2KHR`
 
 # Valid usage

@@ -3,26 +3,21 @@
 //!The commands of `VK_NV_ACQUIRE_WINRT_DISPLAY`.
 use super::*;
 #[cfg(feature = "nv_acquire_winrt_display")]
-impl PhysicalDevice {
+impl DisplayKHR {
     /**`vkAcquireWinrtDisplayNV`
-
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkAcquireWinrtDisplayNV-display-parent`: `display` must have been created, allocated, or retrieved from `physicalDevice`
 
 # Valid usage
 
 The rules of `vkAcquireWinrtDisplayNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireWinrtDisplayNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireWinrtDisplayNV-display-parent` (*yours*; `parent` rules are not checked yet): `display` must have been created, allocated, or retrieved from `physicalDevice`
 - `VUID-vkAcquireWinrtDisplayNV-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
-- `VUID-vkAcquireWinrtDisplayNV-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle*/
+- `VUID-vkAcquireWinrtDisplayNV-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
+- `VUID-vkAcquireWinrtDisplayNV-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkAcquireWinrtDisplayNV")]
     #[inline]
-    pub unsafe fn acquire_winrt_display_nv(&self, display: &DisplayKHR) -> Result<()> {
+    pub fn acquire_winrt_display_nv(&self) -> Result<()> {
         let fp = self
+            .parent()
             .parent()
             .ext()
             .nv_acquire_winrt_display
@@ -30,12 +25,15 @@ The rules of `vkAcquireWinrtDisplayNV` that apply to this crate's API ([referenc
             .ok_or(Error::ExtensionNotEnabled("VK_NV_acquire_winrt_display"))?
             .acquire_winrt_display_nv;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        let r = unsafe { fp(self.raw(), display.raw()) };
+        let r = unsafe { fp(self.parent().raw(), self.raw()) };
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
         Ok(())
     }
+}
+#[cfg(feature = "nv_acquire_winrt_display")]
+impl PhysicalDevice {
     /**`vkGetWinrtDisplayNV`
 
 # Valid usage
