@@ -566,6 +566,48 @@ pub(crate) unsafe fn two_call<T: Default, C: Copy + Default + TryFrom<usize> + T
     }
 }
 
+/// [`two_call`] for two arrays of one count that the same calls fill (a performance
+/// query's counters and their descriptions).
+///
+/// # Safety
+///
+/// As for [`two_call`], for both arrays.
+// Only an extension's commands use it, so a build without them has none.
+#[allow(dead_code)]
+pub(crate) unsafe fn two_call_pair<
+    A: Default,
+    B: Default,
+    C: Copy + Default + TryFrom<usize> + TryInto<usize>,
+>(
+    mut call: impl FnMut(&mut C, *mut A, *mut B) -> vk::Result,
+) -> Result<(Vec<A>, Vec<B>)> {
+    let ok = |r: vk::Result| r == vk::Result::SUCCESS || r == vk::Result::INCOMPLETE;
+    loop {
+        let mut count = C::default();
+        let r = call(&mut count, core::ptr::null_mut(), core::ptr::null_mut());
+        if !ok(r) {
+            return Err(Error::Vk(r));
+        }
+        let n: usize = count.try_into().unwrap_or(0);
+        let mut a: Vec<A> = Vec::with_capacity(n);
+        a.resize_with(n, A::default);
+        let mut b: Vec<B> = Vec::with_capacity(n);
+        b.resize_with(n, B::default);
+        let r = call(&mut count, a.as_mut_ptr(), b.as_mut_ptr());
+        if !ok(r) {
+            return Err(Error::Vk(r));
+        }
+        if r == vk::Result::INCOMPLETE {
+            continue;
+        }
+        // The command wrote `count` of each, no more than the `n` it was given.
+        let written = count.try_into().unwrap_or(0);
+        a.truncate(written);
+        b.truncate(written);
+        return Ok((a, b));
+    }
+}
+
 /// What every wrapper of a child object (created from a device or an instance, or
 /// allocated from a pool) has besides its construction and parent, written once:
 /// the accessors of its shared state, [`Handle`] and `Deref` to the raw handle. The
@@ -629,3 +671,47 @@ macro_rules! child_handle {
     };
 }
 pub(crate) use child_handle;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A command that reports `total` items, fills as many as it is given, and says
+    /// `INCOMPLETE` when that is fewer; `grow` more appear after the first count.
+    fn counters(total: u32, grow: u32) -> impl FnMut(&mut u32, *mut u32, *mut u64) -> vk::Result {
+        let mut calls = 0;
+        move |count: &mut u32, a: *mut u32, b: *mut u64| {
+            calls += 1;
+            let have = if calls > 1 { total + grow } else { total };
+            if a.is_null() {
+                *count = have;
+                return vk::Result::SUCCESS;
+            }
+            let n = (*count).min(have);
+            for i in 0..n {
+                // SAFETY: the caller gave arrays of `*count` elements each.
+                unsafe {
+                    *a.add(i as usize) = i;
+                    *b.add(i as usize) = u64::from(i) * 10;
+                }
+            }
+            *count = n;
+            match n < have {
+                true => vk::Result::INCOMPLETE,
+                false => vk::Result::SUCCESS,
+            }
+        }
+    }
+
+    #[test]
+    fn two_arrays_of_one_count_come_back_together() {
+        // SAFETY: `counters` writes no more than the count it is handed.
+        let (a, b) = unsafe { two_call_pair(counters(3, 0)) }.expect("filled");
+        assert_eq!(a, [0, 1, 2]);
+        assert_eq!(b, [0, 10, 20]);
+        // More items between the calls: `INCOMPLETE`, then a second round.
+        // SAFETY: as above.
+        let (a, b) = unsafe { two_call_pair(counters(2, 1)) }.expect("filled");
+        assert_eq!((a.len(), b.len()), (3, 3));
+    }
+}

@@ -274,6 +274,8 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let mut ret_expr = quote!(());
     let mut post: Vec<TokenStream> = Vec::new();
     let mut two_call = None;
+    // The element type of a second array the same two calls fill.
+    let mut second: Option<TokenStream> = None;
     // Parameters taken as `bool` for a `VkBool32`, by name.
     let mut bools: Vec<String> = Vec::new();
     let special = special(&plan.name);
@@ -654,6 +656,15 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 } else {
                     spelled(model, &cx.facts, &p.type_name)
                 };
+                // A second array of the same count (`pCounterDescriptions`)
+                // comes back beside the first.
+                if two_call.is_some() {
+                    call_args.push(quote!(others_ptr.cast(),));
+                    let first = ret_ty.clone();
+                    ret_ty = quote!((#first, Vec<#elem>));
+                    second = Some(elem);
+                    continue;
+                }
                 call_args.push(quote!(items_ptr.cast(),));
                 two_call = Some(elem.clone());
                 if elem_is_handle {
@@ -720,10 +731,19 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let safety = super::safety(
             "`two_call` hands the command its count and array; other arguments as for any call.",
         );
-        let enumerate = quote! {
-            unsafe {
-                crate::support::two_call(|count: &mut #count_ty, items_ptr: *mut #elem| #call)
-            }
+        let enumerate = match &second {
+            None => quote! {
+                unsafe {
+                    crate::support::two_call(|count: &mut #count_ty, items_ptr: *mut #elem| #call)
+                }
+            },
+            Some(other) => quote! {
+                unsafe {
+                    crate::support::two_call_pair(
+                        |count: &mut #count_ty, items_ptr: *mut #elem, others_ptr: *mut #other| #call,
+                    )
+                }
+            },
         };
         if ret_expr.to_string() == "items" {
             quote!(#(#pre)* #safety #enumerate)

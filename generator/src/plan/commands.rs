@@ -343,7 +343,17 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             )
         })
         .count();
-    if outputs > 1 {
+    // Two arrays filled in the same two calls (a performance query's counters and
+    // their descriptions) are one output, a pair of Vecs.
+    let counts: Vec<Option<&str>> = cmd
+        .params
+        .iter()
+        .zip(&params)
+        .filter(|(_, s)| matches!(s, Param::Enumerated))
+        .map(|(p, _)| p.parsed.len.first().and_then(LenEntry::other_param))
+        .collect();
+    let pair = counts.len() == 2 && counts[0].is_some() && counts[0] == counts[1];
+    if outputs > 1 && !(outputs == 2 && pair) {
         return Err("several outputs".into());
     }
     if params

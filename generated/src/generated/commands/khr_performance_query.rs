@@ -77,6 +77,50 @@ The rules of `vkReleaseProfilingLockKHR` that apply to this crate's API ([refere
 }
 #[cfg(feature = "khr_performance_query")]
 impl PhysicalDevice {
+    /**`vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR`
+
+# Valid usage
+
+The rules of `vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
+
+- `VUID-vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR-pCounterCount-parameter` (*by the types*): `pCounterCount` must be a valid pointer to a `uint32_t` value
+- `VUID-vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR-pCounters-parameter` (*by the types*): If the value referenced by `pCounterCount` is not `0`, and `pCounters` is not `NULL`, `pCounters` must be a valid pointer to an array of `pCounterCount` VkPerformanceCounterKHR structures
+- `VUID-vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR-pCounterDescriptions-parameter` (*by the types*): If the value referenced by `pCounterCount` is not `0`, and `pCounterDescriptions` is not `NULL`, `pCounterDescriptions` must be a valid pointer to an array of `pCounterCount` …*/
+    #[doc(alias = "vkEnumeratePhysicalDeviceQueueFamilyPerformanceQueryCountersKHR")]
+    #[inline]
+    pub fn enumerate_queue_family_performance_query_counters_khr(
+        &self,
+        queue_family_index: u32,
+    ) -> Result<
+        (
+            Vec<vk::PerformanceCounterKHR<'static>>,
+            Vec<vk::PerformanceCounterDescriptionKHR<'static>>,
+        ),
+    > {
+        let fp = self
+            .parent()
+            .ext()
+            .khr_performance_query
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_performance_query"))?
+            .enumerate_physical_device_queue_family_performance_query_counters_khr;
+        // SAFETY: `two_call` hands the command its count and array; other arguments as for any
+        // call.
+        unsafe {
+            crate::support::two_call_pair(|
+                count: &mut u32,
+                items_ptr: *mut vk::PerformanceCounterKHR<'static>,
+                others_ptr: *mut vk::PerformanceCounterDescriptionKHR<'static>|
+            fp(
+                self.raw(),
+                queue_family_index,
+                count,
+                items_ptr.cast(),
+                others_ptr.cast(),
+            ))
+        }
+    }
     /**`vkGetPhysicalDeviceQueueFamilyPerformanceQueryPassesKHR`
 
 # Valid usage
