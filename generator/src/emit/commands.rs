@@ -192,7 +192,21 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let (cx, checker): (&Context, &Checker) = (all.cx, &all.checker);
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
-    let cfg = crate::names::cfg_of(model, model.condition(&plan.name));
+    // A command of several extensions (`vkGetRayTracingShaderGroupHandlesKHR`, also
+    // `VK_NV_ray_tracing`'s under another name) is called through one of their
+    // tables, so it exists only where that table's extension is enabled.
+    let condition = match table(model, &plan.name) {
+        Some(Table::Extension(e))
+            if !model.condition(&plan.name).implies(
+                &crate::model::Condition::parse(&e).expect("an extension name parses"),
+                &|set| super::feature_closure(model, set),
+            ) =>
+        {
+            crate::model::Condition::parse(&e).expect("an extension name parses")
+        }
+        _ => model.condition(&plan.name).clone(),
+    };
+    let cfg = crate::names::cfg_of(model, &condition);
     let f = ident(&cx.method(&plan.name));
     // Commands recorded into a command buffer go on the recorder; the others of a
     // command buffer (`vkResetCommandBuffer`) on the buffer itself, taken mutably,

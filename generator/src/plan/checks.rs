@@ -453,6 +453,13 @@ impl<'c, 'm> Checker<'c, 'm> {
     /// checks, and what it does.
     fn value_kind(&self, type_name: &str) -> Option<(ValueKind, &'static str)> {
         let model = self.cx.model;
+        // An alias (`VkAccelerationStructureTypeNV`) has the values of the type it
+        // names, which ash spells as the same type.
+        let type_name = model
+            .types
+            .get(type_name)
+            .and_then(|t| t.alias.as_deref())
+            .unwrap_or(type_name);
         match model.category(type_name) {
             Some(Kind::Enum) if !enum_values(model, type_name).is_empty() => {
                 Some((ValueKind::Enum(type_name.to_owned()), ENUM_VALUE))

@@ -14,14 +14,6 @@ impl Device {
         crate::checks::check_acquire_next_image_info_khr(acquire_info, s)?;
         Ok(())
     }
-}
-#[cfg(
-    any(
-        feature = "khr_swapchain",
-        all(feature = "khr_device_group", feature = "khr_surface")
-    )
-)]
-impl Device {
     ///The dynamic checks of [`Self::get_group_surface_present_modes_khr`], run before the call.
     pub(crate) fn validate_get_group_surface_present_modes_khr(
         &self,
@@ -40,12 +32,7 @@ impl Device {
         Ok(())
     }
 }
-#[cfg(
-    any(
-        feature = "khr_swapchain",
-        all(feature = "khr_device_group", feature = "khr_surface")
-    )
-)]
+#[cfg(feature = "khr_swapchain")]
 impl PhysicalDevice {
     ///The dynamic checks of [`Self::get_present_rectangles_khr`], run before the call.
     pub(crate) fn validate_get_present_rectangles_khr(

@@ -122,31 +122,6 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_ray_tracing_shader_group_stack_size_khr`], run before the call.
-    pub(crate) fn validate_get_ray_tracing_shader_group_stack_size_khr(
-        &self,
-        pipeline: &Pipeline,
-        group_shader: vk::ShaderGroupShaderKHR,
-    ) -> Result<()> {
-        let s = &self.scope();
-        crate::checks::enum_shader_group_shader_khr(
-            group_shader,
-            s,
-            "VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter",
-        )?;
-        if !s.owned_by_device(pipeline.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent",
-                    "`pipeline` does not come from `device`".into(),
-                ),
-            );
-        }
-        Ok(())
-    }
-}
-#[cfg(any(feature = "khr_ray_tracing_pipeline", feature = "nv_ray_tracing"))]
-impl Device {
     ///The dynamic checks of [`Self::get_ray_tracing_shader_group_handles_khr`], run before the call.
     pub(crate) fn validate_get_ray_tracing_shader_group_handles_khr(
         &self,
@@ -166,6 +141,28 @@ impl Device {
             return Err(
                 fail(
                     "VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent",
+                    "`pipeline` does not come from `device`".into(),
+                ),
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_ray_tracing_shader_group_stack_size_khr`], run before the call.
+    pub(crate) fn validate_get_ray_tracing_shader_group_stack_size_khr(
+        &self,
+        pipeline: &Pipeline,
+        group_shader: vk::ShaderGroupShaderKHR,
+    ) -> Result<()> {
+        let s = &self.scope();
+        crate::checks::enum_shader_group_shader_khr(
+            group_shader,
+            s,
+            "VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter",
+        )?;
+        if !s.owned_by_device(pipeline.raw()) {
+            return Err(
+                fail(
+                    "VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent",
                     "`pipeline` does not come from `device`".into(),
                 ),
             );

@@ -71,14 +71,6 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
             .ok_or(Error::Vk(r))?;
         Ok((out, status))
     }
-}
-#[cfg(
-    any(
-        feature = "khr_swapchain",
-        all(feature = "khr_device_group", feature = "khr_surface")
-    )
-)]
-impl Device {
     /**`vkGetDeviceGroupPresentCapabilitiesKHR`
 
 # Valid usage
@@ -179,12 +171,7 @@ The caller upholds the rules that [`Self::get_group_surface_present_modes_khr`] 
         Ok(out)
     }
 }
-#[cfg(
-    any(
-        feature = "khr_swapchain",
-        all(feature = "khr_device_group", feature = "khr_surface")
-    )
-)]
+#[cfg(feature = "khr_swapchain")]
 impl PhysicalDevice {
     /**`vkGetPhysicalDevicePresentRectanglesKHR`
 

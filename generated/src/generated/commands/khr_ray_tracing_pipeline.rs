@@ -621,71 +621,6 @@ The caller upholds the rules that [`Self::get_ray_tracing_capture_replay_shader_
         }
         Ok(())
     }
-    /**`vkGetRayTracingShaderGroupStackSizeKHR`
-
-# Valid usage
-
-The rules of `vkGetRayTracingShaderGroupStackSizeKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingShaderGroupStackSizeKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
-
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-04622` (*yours*; explicit rule): `pipeline` must be a ray tracing pipeline
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-group-03608` (*yours*; explicit rule): The value of `group` must be less than the number of shader groups in `pipeline`
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-03609` (*yours*; explicit rule): The shader identified by `groupShader` in `group` must not be `VK_SHADER_UNUSED_KHR`
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter` (*checked*): `groupShader` must be a valid VkShaderGroupShaderKHR value
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent` (*checked*): `pipeline` must have been created, allocated, or retrieved from `device`
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
-    #[doc(alias = "vkGetRayTracingShaderGroupStackSizeKHR")]
-    #[inline]
-    pub fn get_ray_tracing_shader_group_stack_size_khr(
-        &self,
-        pipeline: &Pipeline,
-        group: u32,
-        group_shader: vk::ShaderGroupShaderKHR,
-    ) -> Result<vk::DeviceSize> {
-        {
-            let r = self
-                .validate_get_ray_tracing_shader_group_stack_size_khr(
-                    pipeline,
-                    group_shader,
-                );
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe {
-            self.get_ray_tracing_shader_group_stack_size_khr_unchecked(
-                pipeline,
-                group,
-                group_shader,
-            )
-        }
-    }
-    /**`vkGetRayTracingShaderGroupStackSizeKHR` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::get_ray_tracing_shader_group_stack_size_khr`] checks at run time: `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter`, `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn get_ray_tracing_shader_group_stack_size_khr_unchecked(
-        &self,
-        pipeline: &Pipeline,
-        group: u32,
-        group_shader: vk::ShaderGroupShaderKHR,
-    ) -> Result<vk::DeviceSize> {
-        let fp = self
-            .ext()
-            .khr_ray_tracing_pipeline
-            .as_ref()
-            .ok_or(Error::ExtensionNotEnabled("VK_KHR_ray_tracing_pipeline"))?
-            .get_ray_tracing_shader_group_stack_size_khr;
-        Ok({
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe { fp(self.raw(), pipeline.raw(), group, group_shader) }
-        })
-    }
-}
-#[cfg(any(feature = "khr_ray_tracing_pipeline", feature = "nv_ray_tracing"))]
-impl Device {
     /**`vkGetRayTracingShaderGroupHandlesKHR`
 
 # Valid usage
@@ -761,5 +696,67 @@ The caller upholds the rules that [`Self::get_ray_tracing_shader_group_handles_k
             return Err(Error::Vk(r));
         }
         Ok(())
+    }
+    /**`vkGetRayTracingShaderGroupStackSizeKHR`
+
+# Valid usage
+
+The rules of `vkGetRayTracingShaderGroupStackSizeKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRayTracingShaderGroupStackSizeKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
+
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-04622` (*yours*; explicit rule): `pipeline` must be a ray tracing pipeline
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-group-03608` (*yours*; explicit rule): The value of `group` must be less than the number of shader groups in `pipeline`
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-03609` (*yours*; explicit rule): The shader identified by `groupShader` in `group` must not be `VK_SHADER_UNUSED_KHR`
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter` (*checked*): `groupShader` must be a valid VkShaderGroupShaderKHR value
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent` (*checked*): `pipeline` must have been created, allocated, or retrieved from `device`
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
+- `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
+    #[doc(alias = "vkGetRayTracingShaderGroupStackSizeKHR")]
+    #[inline]
+    pub fn get_ray_tracing_shader_group_stack_size_khr(
+        &self,
+        pipeline: &Pipeline,
+        group: u32,
+        group_shader: vk::ShaderGroupShaderKHR,
+    ) -> Result<vk::DeviceSize> {
+        {
+            let r = self
+                .validate_get_ray_tracing_shader_group_stack_size_khr(
+                    pipeline,
+                    group_shader,
+                );
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_ray_tracing_shader_group_stack_size_khr_unchecked(
+                pipeline,
+                group,
+                group_shader,
+            )
+        }
+    }
+    /**`vkGetRayTracingShaderGroupStackSizeKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_ray_tracing_shader_group_stack_size_khr`] checks at run time: `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter`, `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_ray_tracing_shader_group_stack_size_khr_unchecked(
+        &self,
+        pipeline: &Pipeline,
+        group: u32,
+        group_shader: vk::ShaderGroupShaderKHR,
+    ) -> Result<vk::DeviceSize> {
+        let fp = self
+            .ext()
+            .khr_ray_tracing_pipeline
+            .as_ref()
+            .ok_or(Error::ExtensionNotEnabled("VK_KHR_ray_tracing_pipeline"))?
+            .get_ray_tracing_shader_group_stack_size_khr;
+        Ok({
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), pipeline.raw(), group, group_shader) }
+        })
     }
 }

@@ -64,9 +64,9 @@ The rules of `VkAccelerationStructureInfoNV` that apply to this crate's API ([re
 - `VUID-VkAccelerationStructureInfoNV-flags-02592` (*yours*; explicit rule): If `flags` has the `VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_NV` bit set, then it must not have the `VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_BUILD_BIT_NV` bit set
 - `VUID-VkAccelerationStructureInfoNV-scratch-02781` (*yours*; explicit rule): `scratch` must have been created with `VK_BUFFER_USAGE_RAY_TRACING_BIT_NV` usage flag
 - `VUID-VkAccelerationStructureInfoNV-instanceData-02782` (*yours*; explicit rule): If `instanceData` is not VK_NULL_HANDLE, `instanceData` must have been created with `VK_BUFFER_USAGE_RAY_TRACING_BIT_NV` usage flag
-- `VUID-VkAccelerationStructureInfoNV-type-parameter` (*yours*; enum or flags value): `type` must be a valid VkAccelerationStructureTypeNV value
-- `VUID-VkAccelerationStructureInfoNV-flags-parameter` (*yours*; enum or flags value): `flags` must be a valid combination of VkBuildAccelerationStructureFlagBitsNV values
 - `VUID-VkAccelerationStructureInfoNV-type-04623` (*yours*; explicit rule): `type` must not be `VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR`
+- `VUID-VkAccelerationStructureInfoNV-type-parameter` (*checked*): `type` must be a valid VkAccelerationStructureTypeNV value
+- `VUID-VkAccelerationStructureInfoNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkBuildAccelerationStructureFlagBitsNV values
 - `VUID-VkAccelerationStructureInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_INFO_NV`
 - `VUID-VkAccelerationStructureInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
 - `VUID-VkAccelerationStructureInfoNV-pGeometries-parameter` (*by the types*): If `geometryCount` is not `0`, `pGeometries` must be a valid pointer to an array of `geometryCount` valid VkGeometryNV structures*/

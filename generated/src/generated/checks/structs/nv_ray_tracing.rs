@@ -23,6 +23,16 @@ pub fn check_acceleration_structure_info_nv(
     v: &vk::AccelerationStructureInfoNV<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
+    crate::checks::enum_acceleration_structure_type_khr(
+        v.ty,
+        s,
+        "VUID-VkAccelerationStructureInfoNV-type-parameter",
+    )?;
+    crate::checks::flags_build_acceleration_structure_flags_khr(
+        v.flags,
+        s,
+        "VUID-VkAccelerationStructureInfoNV-flags-parameter",
+    )?;
     // SAFETY: the safe setter stored this array and its count.
     for e in unsafe { members(v.p_geometries, v.geometry_count) } {
         crate::checks::check_geometry_nv(e, s)?;
