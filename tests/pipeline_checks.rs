@@ -119,8 +119,8 @@ struct Parts {
     entry: &'static core::ffi::CStr,
     /// A required subgroup size chained to the first stage.
     subgroup_size: Option<SubgroupSize>,
-    /// A creation feedback info chained to the pipeline, as the safe struct makes
-    /// it (its pointers NULL: the registry gives it no setter).
+    /// A creation feedback info chained to the pipeline, with the feedback struct
+    /// its constructor requires.
     feedback: bool,
 }
 
@@ -619,20 +619,30 @@ fn create(s: &Setup, c: &Common, parts: &Parts, layer: bool) -> (tuff::Result<()
     if let Some(r) = rendering_info.as_mut() {
         info = info.push_next(r);
     }
+    let mut written = vk::PipelineCreationFeedback::default();
     let mut feedback = parts
         .feedback
-        .then(tuff::PipelineCreationFeedbackCreateInfo::new);
+        .then(|| tuff::PipelineCreationFeedbackCreateInfo::new(&mut written));
     if let Some(f) = feedback.as_mut() {
         info = info.push_next(f);
     }
     let infos = [info];
     let safe = s.device.create_graphics_pipelines(None, &infos).map(drop);
-    if !layer {
-        return (safe, Vec::new());
+    let layer = match layer {
+        true => under_layer(s, || {
+            let _ = unsafe { s.device.create_graphics_pipelines_unchecked(None, &infos) };
+        }),
+        false => Vec::new(),
+    };
+    if parts.feedback && safe.is_ok() {
+        // The driver wrote where the safe struct pointed.
+        assert!(
+            written
+                .flags
+                .contains(vk::PipelineCreationFeedbackFlags::VALID),
+            "no feedback written: {written:?}"
+        );
     }
-    let layer = under_layer(s, || {
-        let _ = unsafe { s.device.create_graphics_pipelines_unchecked(None, &infos) };
-    });
     (safe, layer)
 }
 
@@ -1049,10 +1059,6 @@ const CASES: &[Case] = &[
     case("VUID-VkPipelineShaderStageCreateInfo-pName-00707", |p| {
         p.entry = c"other"
     }),
-    case(
-        "VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter",
-        |p| p.feedback = true,
-    ),
     Case {
         on: On::Bare,
         ..case("VUID-VkPipelineShaderStageCreateInfo-flags-02784", |p| {
@@ -1418,6 +1424,15 @@ fn the_cases_start_from_valid_pipelines() {
     let full = tuff_setup::setup_full_features(true);
     for (s, parts, what) in [
         (&s, Parts::default(), "the test pipeline"),
+        // `create` checks that the driver wrote the feedback.
+        (
+            &s,
+            Parts {
+                feedback: true,
+                ..Parts::default()
+            },
+            "the test pipeline with a creation feedback",
+        ),
         (
             &s,
             Parts {

@@ -313,10 +313,37 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     #[doc = #doc]
                     #[inline]
                     pub #unsafe_kw fn #setter(mut self, value: &'a #ty) -> Self {
-                        self.raw.#f = value;
+                        // `cast_mut` where the registry lacks the `const` of a
+                        // pointer Vulkan only reads (H.265's picture info).
+                        self.raw.#f = (value as *const #ty).cast_mut().cast();
                         self
                     }
                 });
+            }
+            Member::StructMut { optional } => {
+                let target = safe_or_ash(cx, &m.type_name);
+                let lower = quote!((value as *mut #target).cast());
+                if *optional {
+                    setters.push(quote! {
+                        #[doc = #doc]
+                        #[inline]
+                        pub fn #setter(mut self, value: Option<&'a mut #target>) -> Self {
+                            self.raw.#f = value.map_or(core::ptr::null_mut(), |value| #lower);
+                            self
+                        }
+                    });
+                } else {
+                    ctor_args.push(quote!(#setter: &'a mut #target));
+                    ctor_sets.push(quote!(#f: { let value = #setter; #lower }));
+                    setters.push(quote! {
+                        #[doc = #doc]
+                        #[inline]
+                        pub fn #setter(mut self, value: &'a mut #target) -> Self {
+                            self.raw.#f = #lower;
+                            self
+                        }
+                    });
+                }
             }
             Member::Platform => {
                 let mutability = if m.is_const {

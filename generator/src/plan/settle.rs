@@ -373,6 +373,9 @@ fn member_settlement(shape: &Member) -> Settlement {
         Member::Selected { .. } => Settlement::Static(
             "set from the variant of the safe enum the constructor takes, which names its member".into(),
         ),
+        Member::StructMut { .. } => Settlement::Static(
+            "taken as a mutable borrow of the struct Vulkan writes (required where the pointer is), a valid pointer for as long as the struct lives".into(),
+        ),
         Member::FixedRef { .. } => Settlement::Static(
             "taken as a reference to an array of the length the registry gives".into(),
         ),

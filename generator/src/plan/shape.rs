@@ -33,6 +33,12 @@ pub enum Member {
     /// A struct held by value that has a safe counterpart: taken as that counterpart
     /// in the constructor, since a zeroed one would break the counterpart's invariants.
     Nested,
+    /// A pointer to one struct that Vulkan writes, taken as a mutable borrow (of its
+    /// safe counterpart where it has one) for as long as the struct lives.
+    StructMut {
+        /// May be null.
+        optional: bool,
+    },
     /// A pointer to one struct, taken as a reference to its safe counterpart.
     StructRef {
         /// May be null.
@@ -312,11 +318,9 @@ fn member_shape(
     if m.name == "pUserData" && m.type_name == "void" {
         return Member::UserData;
     }
-    if category.is_none()
-        && m.is_const
-        && m.pointers == 1
-        && super::types::is_codec_std(model, &m.type_name)
-    {
+    // (`VkVideoDecodeH265PictureInfoKHR::pStdPictureInfo` lacks its `const` in
+    // 1.3.239; Vulkan reads it, and later registries have the `const`.)
+    if category.is_none() && m.pointers == 1 && super::types::is_codec_std(model, &m.type_name) {
         return match (&first_len, count_of(&first_len)) {
             (None, _) => Member::CodecStd { count: None },
             (Some(_), Some(count)) => Member::CodecStd { count: Some(count) },
@@ -329,6 +333,11 @@ fn member_shape(
         return Member::Platform;
     }
     if !m.is_const {
+        // One struct Vulkan writes (a render pass's creation feedback): a mutable
+        // borrow, required by the constructor where the pointer is.
+        if m.pointers == 1 && first_len.is_none() && category == Some(Kind::Struct) {
+            return Member::StructMut { optional };
+        }
         return Member::Unsupported("a pointer Vulkan writes through".into());
     }
     if m.pointers == 1 {

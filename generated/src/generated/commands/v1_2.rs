@@ -7,7 +7,7 @@ impl Device {
 
 # Safety
 
-The caller upholds these 49 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 47 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkAttachmentDescription2-format-06698`: `format` must not be VK_FORMAT_UNDEFINED
 - `VUID-VkAttachmentDescription2-format-06906`: If `format` is a depth/stencil format which includes both depth and stencil aspects, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
@@ -32,8 +32,6 @@ The caller upholds these 49 rules that no check of this method enforces (its com
 - `VUID-VkRenderPassCreateInfo2-attachment-06244`: If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED`, the `layout` member of that same structure is either `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, and the `pNext` chain of that structure does not include a VkAttachmentReferenceStencilLayout structure, then the element of `pAttachments` with an index equal to `attachment` must not have a `format` that includes both depth and stencil aspects
 - `VUID-VkRenderPassCreateInfo2-attachment-06245`: If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED` and the `layout` member of that same structure is either `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, then the element of `pAttachments` with an index equal to `attachment` must have a `format` that includes only a stencil aspect
 - `VUID-VkRenderPassCreateInfo2-attachment-06246`: If the `attachment` member of the `pDepthStencilAttachment` member of an element of `pSubpasses` is not `VK_ATTACHMENT_UNUSED` and the `layout` member of that same structure is either `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, then the element of `pAttachments` with an index equal to `attachment` must not have a `format` that includes only a stencil aspect
-- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-pRenderPassFeedback-parameter`: `pRenderPassFeedback` must be a valid pointer to a VkRenderPassCreationFeedbackInfoEXT structure
-- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-pSubpassFeedback-parameter`: `pSubpassFeedback` must be a valid pointer to a VkRenderPassSubpassFeedbackInfoEXT structure
 - `VUID-VkSubpassDependency2-srcSubpass-03084`: `srcSubpass` must be less than or equal to `dstSubpass`, unless one of them is `VK_SUBPASS_EXTERNAL`, to avoid cyclic dependencies and ensure a valid execution order
 - `VUID-VkSubpassDependency2-srcSubpass-03085`: `srcSubpass` and `dstSubpass` must not both be equal to `VK_SUBPASS_EXTERNAL`
 - `VUID-VkSubpassDependency2-srcSubpass-06810`: If `srcSubpass` is equal to `dstSubpass` and `srcStageMask` includes a framebuffer-space stage, `dstStageMask` must only contain framebuffer-space stages

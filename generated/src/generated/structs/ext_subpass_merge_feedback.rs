@@ -72,8 +72,8 @@ unsafe impl<'a> Extends<SubpassDescription2<'a>> for RenderPassCreationControlEX
 
 The rules of `VkRenderPassCreationFeedbackCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassCreationFeedbackCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-pRenderPassFeedback-parameter` (*yours*; not settable safely): `pRenderPassFeedback` must be a valid pointer to a VkRenderPassCreationFeedbackInfoEXT structure
-- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_CREATION_FEEDBACK_CREATE_INFO_EXT`*/
+- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_CREATION_FEEDBACK_CREATE_INFO_EXT`
+- `VUID-VkRenderPassCreationFeedbackCreateInfoEXT-pRenderPassFeedback-parameter` (*by the types*): `pRenderPassFeedback` must be a valid pointer to a VkRenderPassCreationFeedbackInfoEXT structure*/
 #[cfg(feature = "ext_subpass_merge_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -83,8 +83,38 @@ pub struct RenderPassCreationFeedbackCreateInfoEXT<'a> {
 }
 safe_struct!(
     #[cfg(feature = "ext_subpass_merge_feedback")]
-    RenderPassCreationFeedbackCreateInfoEXT, 'a; zeroed chained
+    RenderPassCreationFeedbackCreateInfoEXT, 'a; chained
 );
+#[cfg(feature = "ext_subpass_merge_feedback")]
+impl<'a> RenderPassCreationFeedbackCreateInfoEXT<'a> {
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
+    #[inline]
+    pub fn new(
+        render_pass_feedback: &'a mut vk::RenderPassCreationFeedbackInfoEXT,
+    ) -> Self {
+        Self {
+            raw: vk::RenderPassCreationFeedbackCreateInfoEXT {
+                p_render_pass_feedback: {
+                    let value = render_pass_feedback;
+                    (value as *mut vk::RenderPassCreationFeedbackInfoEXT).cast()
+                },
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
+    }
+    ///Sets `pRenderPassFeedback`.
+    #[inline]
+    pub fn render_pass_feedback(
+        mut self,
+        value: &'a mut vk::RenderPassCreationFeedbackInfoEXT,
+    ) -> Self {
+        self.raw.p_render_pass_feedback = (value
+            as *mut vk::RenderPassCreationFeedbackInfoEXT)
+            .cast();
+        self
+    }
+}
 #[cfg(feature = "ext_subpass_merge_feedback")]
 unsafe impl<'a> Extends<RenderPassCreateInfo2<'a>>
 for RenderPassCreationFeedbackCreateInfoEXT<'a> {}
@@ -94,8 +124,8 @@ for RenderPassCreationFeedbackCreateInfoEXT<'a> {}
 
 The rules of `VkRenderPassSubpassFeedbackCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkRenderPassSubpassFeedbackCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-pSubpassFeedback-parameter` (*yours*; not settable safely): `pSubpassFeedback` must be a valid pointer to a VkRenderPassSubpassFeedbackInfoEXT structure
-- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_SUBPASS_FEEDBACK_CREATE_INFO_EXT`*/
+- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_SUBPASS_FEEDBACK_CREATE_INFO_EXT`
+- `VUID-VkRenderPassSubpassFeedbackCreateInfoEXT-pSubpassFeedback-parameter` (*by the types*): `pSubpassFeedback` must be a valid pointer to a VkRenderPassSubpassFeedbackInfoEXT structure*/
 #[cfg(feature = "ext_subpass_merge_feedback")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -105,8 +135,36 @@ pub struct RenderPassSubpassFeedbackCreateInfoEXT<'a> {
 }
 safe_struct!(
     #[cfg(feature = "ext_subpass_merge_feedback")]
-    RenderPassSubpassFeedbackCreateInfoEXT, 'a; zeroed chained
+    RenderPassSubpassFeedbackCreateInfoEXT, 'a; chained
 );
+#[cfg(feature = "ext_subpass_merge_feedback")]
+impl<'a> RenderPassSubpassFeedbackCreateInfoEXT<'a> {
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
+    #[inline]
+    pub fn new(subpass_feedback: &'a mut vk::RenderPassSubpassFeedbackInfoEXT) -> Self {
+        Self {
+            raw: vk::RenderPassSubpassFeedbackCreateInfoEXT {
+                p_subpass_feedback: {
+                    let value = subpass_feedback;
+                    (value as *mut vk::RenderPassSubpassFeedbackInfoEXT).cast()
+                },
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
+    }
+    ///Sets `pSubpassFeedback`.
+    #[inline]
+    pub fn subpass_feedback(
+        mut self,
+        value: &'a mut vk::RenderPassSubpassFeedbackInfoEXT,
+    ) -> Self {
+        self.raw.p_subpass_feedback = (value
+            as *mut vk::RenderPassSubpassFeedbackInfoEXT)
+            .cast();
+        self
+    }
+}
 #[cfg(feature = "ext_subpass_merge_feedback")]
 unsafe impl<'a> Extends<SubpassDescription2<'a>>
 for RenderPassSubpassFeedbackCreateInfoEXT<'a> {}

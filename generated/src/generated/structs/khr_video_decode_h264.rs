@@ -55,7 +55,10 @@ Every pointer inside the codec's structs (a parameter set's scaling lists or VUI
         mut self,
         value: &'a vk::native::StdVideoDecodeH264ReferenceInfo,
     ) -> Self {
-        self.raw.p_std_reference_info = value;
+        self.raw.p_std_reference_info = (value
+            as *const vk::native::StdVideoDecodeH264ReferenceInfo)
+            .cast_mut()
+            .cast();
         self
     }
 }
@@ -96,7 +99,10 @@ Every pointer inside the codec's structs (a parameter set's scaling lists or VUI
         mut self,
         value: &'a vk::native::StdVideoDecodeH264PictureInfo,
     ) -> Self {
-        self.raw.p_std_picture_info = value;
+        self.raw.p_std_picture_info = (value
+            as *const vk::native::StdVideoDecodeH264PictureInfo)
+            .cast_mut()
+            .cast();
         self
     }
     ///Sets `pSliceOffsets`.

@@ -55,7 +55,10 @@ Every pointer inside the codec's structs (a parameter set's scaling lists or VUI
         mut self,
         value: &'a vk::native::StdVideoDecodeH265ReferenceInfo,
     ) -> Self {
-        self.raw.p_std_reference_info = value;
+        self.raw.p_std_reference_info = (value
+            as *const vk::native::StdVideoDecodeH265ReferenceInfo)
+            .cast_mut()
+            .cast();
         self
     }
 }
@@ -69,9 +72,9 @@ for VideoDecodeH265DpbSlotInfoKHR<'a> {}
 
 The rules of `VkVideoDecodeH265PictureInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoDecodeH265PictureInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkVideoDecodeH265PictureInfoKHR-pStdPictureInfo-parameter` (*yours*; a window-system pointer given through an unsafe setter): `pStdPictureInfo` must be a valid pointer to a `StdVideoDecodeH265PictureInfo` value
 - `VUID-VkVideoDecodeH265PictureInfoKHR-sliceSegmentCount-arraylength` (*checked*): `sliceSegmentCount` must be greater than `0`
 - `VUID-VkVideoDecodeH265PictureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_H265_PICTURE_INFO_KHR`
+- `VUID-VkVideoDecodeH265PictureInfoKHR-pStdPictureInfo-parameter` (*by the types*): `pStdPictureInfo` must be a valid pointer to a `StdVideoDecodeH265PictureInfo` value
 - `VUID-VkVideoDecodeH265PictureInfoKHR-pSliceSegmentOffsets-parameter` (*by the types*): `pSliceSegmentOffsets` must be a valid pointer to an array of `sliceSegmentCount` `uint32_t` values*/
 #[cfg(feature = "khr_video_decode_h265")]
 #[repr(transparent)]
@@ -90,13 +93,16 @@ impl<'a> VideoDecodeH265PictureInfoKHR<'a> {
 
 # Safety
 
-`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+Every pointer inside the codec's structs (a parameter set's scaling lists or VUI, say) must be valid, as the video specification requires, for as long as the struct is used.*/
     #[inline]
     pub unsafe fn std_picture_info(
         mut self,
-        value: *mut vk::native::StdVideoDecodeH265PictureInfo,
+        value: &'a vk::native::StdVideoDecodeH265PictureInfo,
     ) -> Self {
-        self.raw.p_std_picture_info = value;
+        self.raw.p_std_picture_info = (value
+            as *const vk::native::StdVideoDecodeH265PictureInfo)
+            .cast_mut()
+            .cast();
         self
     }
     ///Sets `pSliceSegmentOffsets`.

@@ -1053,8 +1053,8 @@ for PhysicalDeviceZeroInitializeWorkgroupMemoryFeatures<'a> {}
 
 The rules of `VkPipelineCreationFeedbackCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCreationFeedbackCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter` (*checked*): `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
 - `VUID-VkPipelineCreationFeedbackCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_CREATION_FEEDBACK_CREATE_INFO`
+- `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineCreationFeedback-parameter` (*by the types*): `pPipelineCreationFeedback` must be a valid pointer to a VkPipelineCreationFeedback structure
 - `VUID-VkPipelineCreationFeedbackCreateInfo-pPipelineStageCreationFeedbacks-parameter` (*by the types*): If `pipelineStageCreationFeedbackCount` is not `0`, `pPipelineStageCreationFeedbacks` must be a valid pointer to an array of `pipelineStageCreationFeedbackCount` VkPipelineCreationFeedback structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1062,7 +1062,36 @@ pub struct PipelineCreationFeedbackCreateInfo<'a> {
     pub(super) raw: vk::PipelineCreationFeedbackCreateInfo<'a>,
     _marker: PhantomData<&'a ()>,
 }
-safe_struct!(PipelineCreationFeedbackCreateInfo, 'a; zeroed chained);
+safe_struct!(PipelineCreationFeedbackCreateInfo, 'a; chained);
+impl<'a> PipelineCreationFeedbackCreateInfo<'a> {
+    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
+    #[inline]
+    pub fn new(
+        pipeline_creation_feedback: &'a mut vk::PipelineCreationFeedback,
+    ) -> Self {
+        Self {
+            raw: vk::PipelineCreationFeedbackCreateInfo {
+                p_pipeline_creation_feedback: {
+                    let value = pipeline_creation_feedback;
+                    (value as *mut vk::PipelineCreationFeedback).cast()
+                },
+                ..Default::default()
+            },
+            _marker: PhantomData,
+        }
+    }
+    ///Sets `pPipelineCreationFeedback`.
+    #[inline]
+    pub fn pipeline_creation_feedback(
+        mut self,
+        value: &'a mut vk::PipelineCreationFeedback,
+    ) -> Self {
+        self.raw.p_pipeline_creation_feedback = (value
+            as *mut vk::PipelineCreationFeedback)
+            .cast();
+        self
+    }
+}
 unsafe impl<'a> Extends<GraphicsPipelineCreateInfo<'a>>
 for PipelineCreationFeedbackCreateInfo<'a> {}
 unsafe impl<'a> Extends<ComputePipelineCreateInfo<'a>>
