@@ -723,6 +723,8 @@ enum On {
     Full,
     /// No feature at all.
     Bare,
+    /// A Vulkan 1.2 device (no feature either): no count of viewports can be dynamic.
+    V12,
 }
 
 /// One case: the rule, the device, the rules the same change necessarily breaks
@@ -1384,6 +1386,39 @@ const CASES: &[Case] = &[
             },
         )
     },
+    // Without Vulkan 1.3 the counts are simply required (the registry's
+    // hand-written arraylength rules); a render pass, as there is no dynamic
+    // rendering either. Equal counts, so that 01220 (they must match) holds.
+    Case {
+        on: On::V12,
+        also: &["VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength"],
+        ..case(
+            "VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength",
+            |p| {
+                p.viewport_counts = Some((0, 0));
+                p.target = Target::Pass {
+                    colors: vec![RGBA8],
+                    depth: None,
+                    subpass: 0,
+                };
+            },
+        )
+    },
+    Case {
+        on: On::V12,
+        also: &["VUID-VkPipelineViewportStateCreateInfo-scissorCount-01220"],
+        ..case(
+            "VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength",
+            |p| {
+                p.viewport_counts = Some((1, 0));
+                p.target = Target::Pass {
+                    colors: vec![RGBA8],
+                    depth: None,
+                    subpass: 0,
+                };
+            },
+        )
+    },
     case("VUID-VkPipelineViewportStateCreateInfo-x-02821", |p| {
         p.dynamic = vec![vk::DynamicState::VIEWPORT];
         p.scissor.offset.x = -1;
@@ -1499,6 +1534,7 @@ fn each_broken_pipeline_rule_is_refused_and_the_layer_agrees() {
     let fixture = tuff_setup::setup(true);
     let full = tuff_setup::setup_full_features(true);
     let bare = tuff_setup::setup_bare(true);
+    let v12 = tuff_setup::setup_v1_2(true);
     let mut failures = Vec::new();
     let (mut by_layer, mut alone) = (0, Vec::new());
     for case in CASES {
@@ -1509,6 +1545,7 @@ fn each_broken_pipeline_rule_is_refused_and_the_layer_agrees() {
             On::Fixture => &fixture,
             On::Full => &full,
             On::Bare => &bare,
+            On::V12 => &v12,
         };
         let c = common(s);
         let mut parts = Parts::default();

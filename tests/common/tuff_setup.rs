@@ -69,6 +69,18 @@ pub fn setup_bare(validation: bool) -> Setup {
     )
 }
 
+/// [`setup`] on a Vulkan 1.2 instance (so a 1.2 device) with no feature of 1.1 or
+/// 1.2 enabled either, for rules that apply only without Vulkan 1.3.
+#[allow(dead_code)]
+pub fn setup_v1_2(validation: bool) -> Setup {
+    setup_full(
+        validation,
+        Wsi::None,
+        vk::PhysicalDeviceFeatures::default(),
+        Chain::V12,
+    )
+}
+
 /// [`setup`], on a device that enables every feature of Vulkan 1.0 to 1.3 the
 /// physical device has, for changes that need one `setup` leaves off.
 #[allow(dead_code)]
@@ -108,6 +120,8 @@ enum Chain {
     None,
     /// Every feature the physical device has, Vulkan 1.0 to 1.3.
     All,
+    /// None, on a Vulkan 1.2 instance.
+    V12,
 }
 
 fn setup_full(
@@ -136,7 +150,11 @@ fn setup_full(
         exts.push(tuff::CStrPtr::from(c"VK_KHR_surface"));
         exts.push(tuff::CStrPtr::from(c"VK_KHR_xlib_surface"));
     }
-    let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_3);
+    let version = match chain {
+        Chain::V12 => vk::API_VERSION_1_2,
+        _ => vk::API_VERSION_1_3,
+    };
+    let app = tuff::ApplicationInfo::new().api_version(version);
     let mut messenger_info = messages.messenger_info();
     let mut info = tuff::InstanceCreateInfo::new()
         .application_info(Some(&app))
@@ -244,7 +262,7 @@ fn setup_full(
             .push_next(&mut imageless)
             .push_next(&mut timeline),
         Chain::Core => info.push_next(&mut features13).push_next(&mut features12),
-        Chain::None => info,
+        Chain::None | Chain::V12 => info,
         Chain::All => info
             .push_next(&mut all13)
             .push_next(&mut all12)

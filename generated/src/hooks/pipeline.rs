@@ -152,7 +152,7 @@ pub(crate) fn graphics_pipeline_state_checks(
             check_blend_identical(device, &states, &at)?;
         }
         check_stage_resources(device, raw, &states, targets.colors.len(), &at)?;
-        check_viewport_state(&states, &at)?;
+        check_viewport_state(device, &states, &at)?;
         check_fixed_function(device, &states, &at)?;
         check_state_structs(device, &states, &at)?;
     }
@@ -1426,7 +1426,7 @@ fn check_blend_identical(device: &Device, states: &States<'_>, at: &str) -> Resu
 /// The viewport state's counts against the dynamic states that replace them, and
 /// its static scissors. With rasterization discarded (and not dynamically) the
 /// state is not read.
-fn check_viewport_state(states: &States<'_>, at: &str) -> Result<()> {
+fn check_viewport_state(device: &Device, states: &States<'_>, at: &str) -> Result<()> {
     let Some(v) = states.viewport else {
         return Ok(());
     };
@@ -1439,19 +1439,35 @@ fn check_viewport_state(states: &States<'_>, at: &str) -> Result<()> {
     }
     let viewports_counted = states.dynamic(vk::DynamicState::VIEWPORT_WITH_COUNT);
     let scissors_counted = states.dynamic(vk::DynamicState::SCISSOR_WITH_COUNT);
+    // Without Vulkan 1.3 or VK_EXT_extended_dynamic_state no count can be dynamic,
+    // and the rules are the registry's plain "greater than 0".
+    let exts = device.exts();
+    let counts_can_be_dynamic = exts.version(3) || exts.named("VK_EXT_extended_dynamic_state");
     if !viewports_counted && v.viewport_count == 0 {
-        refuse(
-            "VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135",
-            format!("{at}'s viewportCount is 0, and VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT is not dynamic"),
-        )?;
+        match counts_can_be_dynamic {
+            true => refuse(
+                "VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135",
+                format!("{at}'s viewportCount is 0, and VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT is not dynamic"),
+            )?,
+            false => refuse(
+                "VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength",
+                format!("{at}'s viewportCount is 0"),
+            )?,
+        }
     }
     if !scissors_counted && v.scissor_count == 0 {
-        refuse(
-            "VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136",
-            format!(
-                "{at}'s scissorCount is 0, and VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT is not dynamic"
-            ),
-        )?;
+        match counts_can_be_dynamic {
+            true => refuse(
+                "VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136",
+                format!(
+                    "{at}'s scissorCount is 0, and VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT is not dynamic"
+                ),
+            )?,
+            false => refuse(
+                "VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength",
+                format!("{at}'s scissorCount is 0"),
+            )?,
+        }
     }
     if !viewports_counted && !scissors_counted && v.viewport_count != v.scissor_count {
         refuse(

@@ -2220,6 +2220,8 @@ pub const SPECIALS: &[Special] = &[
             ("VUID-VkSpecializationInfo-constantID-04911", How::Dynamic(STATE_STRUCTS)),
             ("VUID-VkGraphicsPipelineCreateInfo-layout-00756", How::Dynamic(SHADER_LAYOUT)),
             ("VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength", How::Dynamic(PIPELINE_STATE)),
+            ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134", How::Dynamic(PIPELINE_STATE)),
             ("VUID-VkPipelineViewportStateCreateInfo-x-02821", How::Dynamic(PIPELINE_STATE)),

@@ -1066,8 +1066,6 @@ let viewport = tuff::PipelineViewportStateCreateInfo::new()
 The rules of `VkPipelineViewportStateCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineViewportStateCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01220` (*yours*; explicit rule): `scissorCount` and `viewportCount` must be identical
-- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength` (*yours*; written by hand in the specification): `viewportCount` must be greater than `0`
-- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength` (*yours*; written by hand in the specification): `scissorCount` must be greater than `0`
 - `VUID-VkPipelineViewportStateCreateInfo-viewportWScalingEnable-01726` (*yours*; explicit rule): If the `viewportWScalingEnable` member of a VkPipelineViewportWScalingStateCreateInfoNV structure included in the `pNext` chain is `VK_TRUE`, the `viewportCount` member of the …
 - `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216` (*checked*): If the `multiViewport` feature is not enabled, `viewportCount` must not be greater than `1`
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217` (*checked*): If the `multiViewport` feature is not enabled, `scissorCount` must not be greater than `1`
@@ -1078,6 +1076,8 @@ The rules of `VkPipelineViewportStateCreateInfo` that apply to this crate's API 
 - `VUID-VkPipelineViewportStateCreateInfo-offset-02823` (*checked*): Evaluation of (`offset.y` + `extent.height`) must not cause a signed integer addition overflow for any element of `pScissors`
 - `VUID-VkPipelineViewportStateCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength` (*checked*): `viewportCount` must be greater than `0`
+- `VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength` (*checked*): `scissorCount` must be greater than `0`
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134` (*checked*): If the graphics pipeline is being created without `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` and `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` and `viewportCount` must be identical
 - `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135` (*checked*): If the graphics pipeline is being created with `VK_DYNAMIC_STATE_VIEWPORT_WITH_COUNT` set then `viewportCount` must be `0`, otherwise it must be greater than `0`
 - `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136` (*checked*): If the graphics pipeline is being created with `VK_DYNAMIC_STATE_SCISSOR_WITH_COUNT` set then `scissorCount` must be `0`, otherwise it must be greater than `0`
