@@ -662,6 +662,40 @@ pub fn render(check: &Check) -> TokenStream {
                     let a = ident(a);
                     quote!(for x in #a.iter() { crate::checks::#call(x, s)?; })
                 }
+                StructAt::Variant {
+                    union,
+                    variant,
+                    selector,
+                    selector_type,
+                    values,
+                    by_ref,
+                } => {
+                    let (u, f, sel) = (
+                        field_ident(union),
+                        field_ident(variant),
+                        field_ident(selector),
+                    );
+                    let ty = ident(selector_type);
+                    let values = values.iter().map(|c| {
+                        let c = ident(c);
+                        quote!(vk::#ty::#c)
+                    });
+                    let check = match by_ref {
+                        true => quote! {
+                            __safety!("the safe enum's variant wrote this member with the selector, from a reference that outlives `v`.");
+                            let x = unsafe { v.#u.#f };
+                            if !x.is_null() {
+                                __safety!("the pointer comes from that reference.");
+                                crate::checks::#call(unsafe { &*x }, s)?;
+                            }
+                        },
+                        false => quote! {
+                            __safety!("the safe enum's variant wrote this member with the selector.");
+                            crate::checks::#call(unsafe { &v.#u.#f }, s)?;
+                        },
+                    };
+                    quote!(if #(v.#sel == #values)||* { #check })
+                }
             }
         }
         CheckKind::Chain { pnext } => {

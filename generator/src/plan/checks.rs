@@ -6,7 +6,7 @@
 //! dynamically solved exactly when the emitted code checks it.
 
 use super::commands::{Param, Plan};
-use super::shape::{struct_members, Member};
+use super::shape::{struct_members, Member, VariantKind};
 use super::Context;
 use crate::model::Kind;
 use crate::model::LenEntry;
@@ -116,6 +116,22 @@ pub enum StructAt {
     ArgByValue(String),
     /// A slice argument.
     ArgSlice(String),
+    /// A member of a union that another member of the checked struct selects,
+    /// checked when the selector names it (the safe enum sets both together).
+    Variant {
+        /// The union member of the checked struct.
+        union: String,
+        /// The union's member that holds the struct.
+        variant: String,
+        /// The selector member.
+        selector: String,
+        /// The selector's type, as ash spells it (`GeometryTypeKHR`).
+        selector_type: String,
+        /// The selector values that choose the variant, as ash's constants.
+        values: Vec<String>,
+        /// The union holds a pointer to the struct (maybe null), not the struct.
+        by_ref: bool,
+    },
 }
 
 /// Which queue flags a command's checks read.
@@ -439,6 +455,16 @@ impl<'c, 'm> Checker<'c, 'm> {
             .map(|(m, _)| m.type_name)
             .filter(|t| self.checked.contains(t))
             .collect();
+        // The structs a selected union's variants hold.
+        for c in self.struct_cache.get(name).into_iter().flatten() {
+            if let CheckKind::NestedStruct {
+                ty,
+                at: StructAt::Variant { .. },
+            } = &c.kind
+            {
+                out.push(ty.clone());
+            }
+        }
         if let Some(ext) = model.extended_by.get(name) {
             out.extend(ext.iter().filter(|e| self.checked.contains(*e)).cloned());
         }
@@ -582,6 +608,10 @@ impl<'c, 'm> Checker<'c, 'm> {
         }
         // Nested structs' own checks.
         for (m, shape) in &members {
+            if let Member::Selected { variants, selector } = shape {
+                out.extend(self.variant_checks(m, selector, variants, &members));
+                continue;
+            }
             if !self.checked.contains(&m.type_name) {
                 continue;
             }
@@ -618,6 +648,67 @@ impl<'c, 'm> Checker<'c, 'm> {
                 what: "walks the chain and checks no structure type appears twice".into(),
                 kind: CheckKind::Chain {
                     pnext: gated.then_some(pnext_vuid),
+                },
+            });
+        }
+        out
+    }
+
+    /// The checks of the structs a selected union's variants hold, each run when the
+    /// selector names its variant.
+    fn variant_checks(
+        &self,
+        union: &crate::model::Field,
+        selector: &str,
+        variants: &[super::shape::Variant],
+        members: &[(crate::model::Field, Member)],
+    ) -> Vec<Check> {
+        let Some((sel, _)) = members.iter().find(|(m, _)| m.name == selector) else {
+            return Vec::new();
+        };
+        let model = self.cx.model;
+        let mut out: Vec<Check> = Vec::new();
+        for v in variants {
+            let by_ref = match v.kind {
+                VariantKind::StructRef { .. } => true,
+                VariantKind::Nested => false,
+                VariantKind::Handle { .. } | VariantKind::Value => continue,
+            };
+            if !self.checked.contains(&v.member.type_name) {
+                continue;
+            }
+            let value = crate::names::enum_const(&sel.type_name, &v.selection);
+            // Several values may select one member (an alias, or the uniform and
+            // storage kinds of one pointer): one check names them all.
+            let same = out.iter_mut().find_map(|c| match &mut c.kind {
+                CheckKind::NestedStruct {
+                    at:
+                        StructAt::Variant {
+                            variant, values, ..
+                        },
+                    ..
+                } if *variant == v.member.name => Some(values),
+                _ => None,
+            });
+            if let Some(values) = same {
+                if !values.contains(&value) {
+                    values.push(value);
+                }
+                continue;
+            }
+            out.push(Check {
+                vuid: None,
+                what: String::new(),
+                kind: CheckKind::NestedStruct {
+                    ty: v.member.type_name.clone(),
+                    at: StructAt::Variant {
+                        union: union.name.clone(),
+                        variant: v.member.name.clone(),
+                        selector: selector.to_owned(),
+                        selector_type: crate::names::type_name(model.spelling(&sel.type_name)),
+                        values: vec![value],
+                        by_ref,
+                    },
                 },
             });
         }

@@ -190,8 +190,11 @@ pub(super) fn render(r: &Report) -> String {
         s,
         "\n### Implicit rules left to the user in the emitted API\n"
     );
+    // The same rules the tables count: a derived rule validusage.json does not list
+    // (an alias command's, mostly) is in validation.json only.
     for st in r.settled.iter().filter(|st| {
         st.rule.emitted
+            && (st.rule.listed || !v.explicit_known)
             && st.rule.category == Category::Implicit
             && st.settlement.status() == "user"
     }) {

@@ -141,10 +141,12 @@ impl Device {
 #[cfg(feature = "ext_descriptor_buffer")]
 impl Device {
     ///The dynamic checks of [`Self::get_descriptor_ext`], run before the call.
-    pub(crate) fn validate_get_descriptor_ext(
+    pub(crate) fn validate_get_descriptor_ext<'a>(
         &self,
+        descriptor_info: &DescriptorGetInfoEXT<'a>,
         descriptor: &mut [u8],
     ) -> Result<()> {
+        let s = &self.scope();
         if descriptor.is_empty() {
             return Err(
                 fail(
@@ -153,6 +155,7 @@ impl Device {
                 ),
             );
         }
+        crate::checks::check_descriptor_get_info_ext(descriptor_info, s)?;
         Ok(())
     }
     ///The dynamic checks of [`Self::get_descriptor_set_layout_binding_offset_ext`], run before the call.

@@ -406,7 +406,7 @@ The rules of `vkGetDescriptorEXT` that apply to this crate's API ([reference pag
         descriptor: &mut [u8],
     ) -> Result<()> {
         {
-            let r = self.validate_get_descriptor_ext(descriptor);
+            let r = self.validate_get_descriptor_ext(descriptor_info, descriptor);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the

@@ -117,7 +117,7 @@ The rules of `VkDescriptorAddressInfoEXT` that apply to this crate's API ([refer
 - `VUID-VkDescriptorAddressInfoEXT-None-08044` (*yours*; explicit rule): If `address` is not zero, `address` must be a valid device address at an offset within a VkBuffer
 - `VUID-VkDescriptorAddressInfoEXT-range-08045` (*yours*; explicit rule): `range` must be less than or equal to the size of the buffer containing `address` minus the offset of `address` from the base address of the buffer
 - `VUID-VkDescriptorAddressInfoEXT-range-08046` (*yours*; explicit rule): `range` must not be `VK_WHOLE_SIZE`
-- `VUID-VkDescriptorAddressInfoEXT-format-parameter` (*yours*; enum or flags value): `format` must be a valid VkFormat value
+- `VUID-VkDescriptorAddressInfoEXT-format-parameter` (*checked*): `format` must be a valid VkFormat value
 - `VUID-VkDescriptorAddressInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_ADDRESS_INFO_EXT`
 - `VUID-VkDescriptorAddressInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_descriptor_buffer")]

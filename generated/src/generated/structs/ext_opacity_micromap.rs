@@ -9,7 +9,7 @@ use super::*;
 The rules of `VkAccelerationStructureTrianglesOpacityMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureTrianglesOpacityMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-pUsageCounts-07335` (*yours*; explicit rule): Only one of `pUsageCounts` or `ppUsageCounts` can be a valid pointer, the other must be `NULL`
-- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-indexType-parameter` (*yours*; enum or flags value): `indexType` must be a valid VkIndexType value
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-indexType-parameter` (*checked*): `indexType` must be a valid VkIndexType value
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_TRIANGLES_OPACITY_MICROMAP_EXT`
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-pUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `pUsageCounts` is not `NULL`, `pUsageCounts` must be a valid pointer to an array of `usageCountsCount` VkMicromapUsageEXT structures
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-ppUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `ppUsageCounts` is not `NULL`, `ppUsageCounts` must be a valid pointer to an array of `usageCountsCount` valid pointers to VkMicromapUsageEXT structures

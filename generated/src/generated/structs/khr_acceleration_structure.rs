@@ -434,9 +434,9 @@ The rules of `VkAccelerationStructureGeometryTrianglesDataKHR` that apply to thi
 - `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexStride-03819` (*yours*; explicit rule): `vertexStride` must be less than or equal to 232-1
 - `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexFormat-03797` (*yours*; explicit rule): `vertexFormat` must support the `VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR` in VkFormatProperties::`bufferFeatures` as returned by vkGetPhysicalDeviceFormatProperties2
 - `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-indexType-03798` (*yours*; explicit rule): `indexType` must be `VK_INDEX_TYPE_UINT16`, `VK_INDEX_TYPE_UINT32`, or `VK_INDEX_TYPE_NONE_KHR`
-- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-sType-unique` (*yours*; `unique` rules are not checked yet): The `sType` value of each struct in the `pNext` chain must be unique
-- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexFormat-parameter` (*yours*; enum or flags value): `vertexFormat` must be a valid VkFormat value
-- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-indexType-parameter` (*yours*; enum or flags value): `indexType` must be a valid VkIndexType value
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexFormat-parameter` (*checked*): `vertexFormat` must be a valid VkFormat value
+- `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-indexType-parameter` (*checked*): `indexType` must be a valid VkIndexType value
 - `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR`
 - `VUID-VkAccelerationStructureGeometryTrianglesDataKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAccelerationStructureGeometryMotionTrianglesDataNV or …*/
 #[cfg(feature = "khr_acceleration_structure")]

@@ -78,3 +78,83 @@ pub fn check_descriptor_buffer_binding_info_ext(
     )?;
     Ok(())
 }
+///The rules of `VkDescriptorGetInfoEXT` that are checked at run time.
+#[cfg(feature = "ext_descriptor_buffer")]
+pub fn check_descriptor_get_info_ext(
+    v: &vk::DescriptorGetInfoEXT<'_>,
+    s: &Scope<'_>,
+) -> Result<()> {
+    if v.ty == vk::DescriptorType::COMBINED_IMAGE_SAMPLER {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_combined_image_sampler };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_image_info(unsafe { &*x }, s)?;
+        }
+    }
+    if v.ty == vk::DescriptorType::INPUT_ATTACHMENT {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_input_attachment_image };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_image_info(unsafe { &*x }, s)?;
+        }
+    }
+    if v.ty == vk::DescriptorType::SAMPLED_IMAGE {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_sampled_image };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_image_info(unsafe { &*x }, s)?;
+        }
+    }
+    if v.ty == vk::DescriptorType::STORAGE_IMAGE {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_storage_image };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_image_info(unsafe { &*x }, s)?;
+        }
+    }
+    if v.ty == vk::DescriptorType::UNIFORM_TEXEL_BUFFER {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_uniform_texel_buffer };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_address_info_ext(unsafe { &*x }, s)?;
+        }
+    }
+    if v.ty == vk::DescriptorType::STORAGE_TEXEL_BUFFER {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_storage_texel_buffer };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_address_info_ext(unsafe { &*x }, s)?;
+        }
+    }
+    if v.ty == vk::DescriptorType::UNIFORM_BUFFER {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_uniform_buffer };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_address_info_ext(unsafe { &*x }, s)?;
+        }
+    }
+    if v.ty == vk::DescriptorType::STORAGE_BUFFER {
+        // SAFETY: the safe enum's variant wrote this member with the selector, from a reference
+        // that outlives `v`.
+        let x = unsafe { v.data.p_storage_buffer };
+        if !x.is_null() {
+            // SAFETY: the pointer comes from that reference.
+            crate::checks::check_descriptor_address_info_ext(unsafe { &*x }, s)?;
+        }
+    }
+    Ok(())
+}

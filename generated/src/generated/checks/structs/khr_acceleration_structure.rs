@@ -81,6 +81,13 @@ pub fn check_acceleration_structure_geometry_khr(
         s,
         "VUID-VkAccelerationStructureGeometryKHR-flags-parameter",
     )?;
+    if v.geometry_type == vk::GeometryTypeKHR::TRIANGLES {
+        // SAFETY: the safe enum's variant wrote this member with the selector.
+        crate::checks::check_acceleration_structure_geometry_triangles_data_khr(
+            unsafe { &v.geometry.triangles },
+            s,
+        )?;
+    }
     Ok(())
 }
 ///The rules of `VkAccelerationStructureGeometryTrianglesDataKHR` that are checked at run time.
