@@ -290,3 +290,41 @@ fn a_newer_registry_is_emitted_by_the_names_ash_has_and_loses_only_what_ash_lack
     .expect("the model builds");
     assert!(model.spellings.is_empty(), "{:?}", model.spellings);
 }
+
+/// A struct the pinned registry does not mark `returnedonly` but the reference does
+/// (Khronos's correction, which drops its members' value rules) is one Vulkan only
+/// writes, where the emitted API also passes it only as storage to fill: it gets no
+/// setters. A struct the reference leaves as it is (the Metal export structs, which
+/// name the memory or image to export) is not one.
+#[test]
+fn structs_the_reference_marks_returned_only_are_written_by_vulkan_alone() {
+    let (pinned, reference) = registries();
+    let config = tuff_gen::config::Config {
+        api_version: "1.3".to_owned(),
+        all_extensions: true,
+        ..Default::default()
+    };
+    let build = |reference: Option<&Registry>| {
+        tuff_gen::model::Model::build(&pinned, reference, &config, std::path::Path::new("t.toml"))
+            .expect("the model builds")
+    };
+    let model = build(Some(&reference));
+    let facts = tuff_gen::plan::types::TypeFacts::new(&model);
+    let written: Vec<&str> = facts.written.iter().map(String::as_str).collect();
+    for name in [
+        "VkCooperativeMatrixPropertiesNV",
+        "VkQueueFamilyGlobalPriorityPropertiesKHR",
+        "VkPerformanceValueINTEL",
+    ] {
+        assert!(written.contains(&name), "{name} missing from {written:?}");
+    }
+    for name in &written {
+        assert!(model.returned_only_in_reference.contains(*name), "{name}");
+    }
+    assert!(!written.contains(&"VkExportMetalBufferInfoEXT"));
+    assert!(!written.contains(&"VkPhysicalDeviceExtendedDynamicState3PropertiesEXT"));
+    // Without a reference there is no correction to follow.
+    assert!(tuff_gen::plan::types::TypeFacts::new(&build(None))
+        .written
+        .is_empty());
+}

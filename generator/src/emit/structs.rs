@@ -75,7 +75,8 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
     // Items beside the struct: the enums of its selected unions.
     let mut beside = Vec::new();
     let mut setters = Vec::new();
-    let returned_only = t.returned_only;
+    // A struct Vulkan only writes gets no setters, as a `returnedonly` one.
+    let returned_only = t.returned_only || facts.is_written(name);
     for (m, shape) in &members {
         // A setter of a member whose type a narrower condition gates
         // (`accelerationStructureNV` of a struct that VK_KHR_acceleration_structure
@@ -375,8 +376,15 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         None,
         "Made",
     );
+    let written = match facts.is_written(name) {
+        true => {
+            " Vulkan writes it: pass one made with `default()` where a command or chain \
+                 asks for it, and read the members it filled through `Deref`."
+        }
+        false => "",
+    };
     let doc = format!(
-        "Safe counterpart of [`vk::{}`].{example}{rules}",
+        "Safe counterpart of [`vk::{}`].{written}{example}{rules}",
         crate::names::type_name(model.spelling(name))
     );
     let mut parts = Vec::new();

@@ -122,6 +122,10 @@ pub struct Model {
     /// The extensions the config wants that the reference lacks or defines
     /// otherwise, with the reason, in name order.
     pub left_out: Vec<reference::LeftOut>,
+    /// Structs this registry does not mark `returnedonly` and the reference
+    /// registry does: Khronos found Vulkan only writes them, and dropped the value
+    /// rules of their members.
+    pub returned_only_in_reference: BTreeSet<String>,
     /// For each type and command, the alternatives (`VK_KHR_x`, `VK_KHR_x+dep`) of
     /// the require blocks that name it under this very name, aliases not merged.
     pub named_by: BTreeMap<String, BTreeSet<String>>,
@@ -505,6 +509,20 @@ impl Model {
         let mut model = Model {
             reference_version: reference.map(|r| r.version.clone()),
             left_out,
+            returned_only_in_reference: reference
+                .map(|r| {
+                    r.types
+                        .iter()
+                        .filter(|t| {
+                            t.returned_only
+                                && types.get(&t.name).is_some_and(|here| {
+                                    here.category == Some(Kind::Struct) && !here.returned_only
+                                })
+                        })
+                        .map(|t| t.name.clone())
+                        .collect()
+                })
+                .unwrap_or_default(),
             named_by,
             spellings,
             version: registry.version.clone(),

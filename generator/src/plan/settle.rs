@@ -284,6 +284,11 @@ fn implicit(
             "the wrappers create it themselves, with an empty `pNext` chain".into(),
         );
     }
+    if d.kind == K::Parameter && cx.facts.is_written(&d.item) {
+        return Settlement::Static(
+            "a struct Vulkan writes: every emitted command and struct passes it as storage Vulkan fills (the reference registry marks it `returnedonly` and has no such rule), and the safe struct has no setter for the member, so no value of the caller's is passed".into(),
+        );
+    }
     if !cx.facts.is_safe(&d.item) {
         return match d.kind {
             K::Parameter => Settlement::User(

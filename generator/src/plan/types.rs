@@ -5,7 +5,7 @@ use crate::model::Model;
 use crate::names::{ident, type_ident};
 use proc_macro2::TokenStream;
 use quote::quote;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// What the generated crate knows about every struct and union of the emitted API.
 #[derive(Debug, Clone, Default)]
@@ -15,6 +15,9 @@ pub struct TypeFacts {
     /// The type gets a safe counterpart in the generated crate (it carries handles,
     /// pointers or an `sType`), else ash's type is used as it is.
     pub safe: BTreeMap<String, bool>,
+    /// Structs that the emitted API only hands to Vulkan to write, which the
+    /// registry does not mark `returnedonly` but the reference registry does.
+    pub written: BTreeSet<String>,
 }
 
 impl TypeFacts {
@@ -27,7 +30,13 @@ impl TypeFacts {
                 facts.safe_of(model, name, 0);
             }
         }
+        facts.written = written_only(model);
         facts
+    }
+
+    /// Whether Vulkan only writes `name` in the emitted API (see [`written_only`]).
+    pub fn is_written(&self, name: &str) -> bool {
+        self.written.contains(name)
     }
 
     fn lifetime_of(&mut self, model: &Model, name: &str, depth: usize) -> bool {
@@ -106,6 +115,98 @@ impl TypeFacts {
                     && !self.has_lifetime(&m.type_name)
             })
         })
+    }
+}
+
+/// The structs that this registry does not mark `returnedonly` and the reference
+/// registry does (Khronos's correction: `VkCooperativeMatrixPropertiesNV`,
+/// `VkQueueFamilyGlobalPriorityPropertiesKHR`), where the emitted API agrees that
+/// Vulkan only writes them: every emitted command takes them through a
+/// non-`const` pointer, every emitted struct holds them the same way or is itself
+/// written, every struct whose chain they extend is written or `returnedonly`, and
+/// their members are plain values (no handle or pointer Vulkan would read).
+fn written_only(model: &Model) -> BTreeSet<String> {
+    let base = |name: &str| -> String {
+        model
+            .types
+            .get(name)
+            .and_then(|t| t.alias.clone())
+            .unwrap_or_else(|| name.to_owned())
+    };
+    let output = |f: &crate::model::Field| {
+        f.pointers == 1 && !f.const_pointees.first().copied().unwrap_or(f.is_const)
+    };
+    let structs: Vec<&crate::model::TypeDef> = model
+        .types
+        .values()
+        .filter(|t| {
+            t.alias.is_none() && t.category == Some(Kind::Struct) && model.emitted.contains(&t.name)
+        })
+        .collect();
+    // Each struct's uses: (written through the use, the struct that holds it).
+    let mut uses: BTreeMap<String, Vec<(bool, Option<String>)>> = BTreeMap::new();
+    for c in model
+        .commands
+        .values()
+        .filter(|c| model.emitted.contains(&c.name))
+    {
+        for p in &c.params {
+            uses.entry(base(&p.type_name))
+                .or_default()
+                .push((output(p), None));
+        }
+    }
+    for t in &structs {
+        // A chain's `pNext` is not a use of the struct type it is declared as
+        // (`VkBaseOutStructure`'s own).
+        for m in t.members.iter().filter(|m| m.name != "pNext") {
+            let holder = (m.pointers == 0).then(|| t.name.clone());
+            uses.entry(base(&m.type_name))
+                .or_default()
+                .push((output(m) || m.pointers == 0, holder));
+        }
+        for e in &t.struct_extends {
+            uses.entry(t.name.clone())
+                .or_default()
+                .push((true, Some(base(e))));
+        }
+    }
+    let plain = |t: &crate::model::TypeDef| {
+        t.members.iter().all(|m| {
+            m.name == "pNext"
+                || m.name == "sType"
+                || (m.pointers == 0 && model.category(&m.type_name) != Some(Kind::Handle))
+        })
+    };
+    let mut written: BTreeSet<String> = structs
+        .iter()
+        .filter(|t| {
+            model.returned_only_in_reference.contains(&t.name)
+                && plain(t)
+                && uses.contains_key(&t.name)
+        })
+        .map(|t| t.name.clone())
+        .collect();
+    // Drop every struct with a use that reads it, until none is left to drop.
+    loop {
+        let returned = |n: &str| model.types.get(n).is_some_and(|t| t.returned_only);
+        let read: Vec<String> = written
+            .iter()
+            .filter(|n| {
+                uses[n.as_str()].iter().any(|(w, holder)| {
+                    !w || holder
+                        .as_deref()
+                        .is_some_and(|h| !written.contains(h) && !returned(h))
+                })
+            })
+            .cloned()
+            .collect();
+        if read.is_empty() {
+            return written;
+        }
+        for n in read {
+            written.remove(&n);
+        }
     }
 }
 

@@ -60,13 +60,6 @@ The caller upholds the rules that [`Self::acquire_performance_configuration_inte
     }
     /**`vkGetPerformanceParameterINTEL`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkPerformanceValueINTEL-type-parameter`: `type` must be a valid VkPerformanceValueTypeINTEL value
-- `VUID-VkPerformanceValueINTEL-valueString-parameter`: If `type` is `VK_PERFORMANCE_VALUE_TYPE_STRING_INTEL`, the `valueString` member of `data` must be a null-terminated UTF-8 string
-
 # Valid usage
 
 The rules of `vkGetPerformanceParameterINTEL` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPerformanceParameterINTEL.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -76,7 +69,7 @@ The rules of `vkGetPerformanceParameterINTEL` that apply to this crate's API ([r
 - `VUID-vkGetPerformanceParameterINTEL-pValue-parameter` (*by the types*): `pValue` must be a valid pointer to a VkPerformanceValueINTEL structure*/
     #[doc(alias = "vkGetPerformanceParameterINTEL")]
     #[inline]
-    pub unsafe fn get_performance_parameter_intel(
+    pub fn get_performance_parameter_intel(
         &self,
         parameter: vk::PerformanceParameterTypeINTEL,
     ) -> Result<vk::PerformanceValueINTEL> {

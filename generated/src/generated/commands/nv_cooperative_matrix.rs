@@ -6,16 +6,6 @@ use super::*;
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceCooperativeMatrixPropertiesNV`
 
-# Safety
-
-The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkCooperativeMatrixPropertiesNV-AType-parameter`: `AType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-BType-parameter`: `BType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-CType-parameter`: `CType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-DType-parameter`: `DType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-scope-parameter`: `scope` must be a valid VkScopeNV value
-
 # Valid usage
 
 The rules of `vkGetPhysicalDeviceCooperativeMatrixPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceCooperativeMatrixPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -25,7 +15,7 @@ The rules of `vkGetPhysicalDeviceCooperativeMatrixPropertiesNV` that apply to th
 - `VUID-vkGetPhysicalDeviceCooperativeMatrixPropertiesNV-pProperties-parameter` (*by the types*): If the value referenced by `pPropertyCount` is not `0`, and `pProperties` is not `NULL`, `pProperties` must be a valid pointer to an array of `pPropertyCount` VkCooperativeMatrixPropertiesNV …*/
     #[doc(alias = "vkGetPhysicalDeviceCooperativeMatrixPropertiesNV")]
     #[inline]
-    pub unsafe fn get_cooperative_matrix_properties_nv(
+    pub fn get_cooperative_matrix_properties_nv(
         &self,
     ) -> Result<Vec<vk::CooperativeMatrixPropertiesNV<'static>>> {
         let fp = self

@@ -35,14 +35,14 @@ for PhysicalDeviceGlobalPriorityQueryFeaturesKHR<'a> {}
 #[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
 unsafe impl<'a> Extends<DeviceCreateInfo<'a>>
 for PhysicalDeviceGlobalPriorityQueryFeaturesKHR<'a> {}
-/**Safe counterpart of [`vk::QueueFamilyGlobalPriorityPropertiesKHR`].
+/**Safe counterpart of [`vk::QueueFamilyGlobalPriorityPropertiesKHR`]. Vulkan writes it: pass one made with `default()` where a command or chain asks for it, and read the members it filled through `Deref`.
 
 # Valid usage
 
 The rules of `VkQueueFamilyGlobalPriorityPropertiesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkQueueFamilyGlobalPriorityPropertiesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkQueueFamilyGlobalPriorityPropertiesKHR-priorities-parameter` (*yours*; enum or flags value): Any given element of `priorities` must be a valid VkQueueGlobalPriorityKHR value
-- `VUID-VkQueueFamilyGlobalPriorityPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_GLOBAL_PRIORITY_PROPERTIES_KHR`*/
+- `VUID-VkQueueFamilyGlobalPriorityPropertiesKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_QUEUE_FAMILY_GLOBAL_PRIORITY_PROPERTIES_KHR`
+- `VUID-VkQueueFamilyGlobalPriorityPropertiesKHR-priorities-parameter` (*by the types*): Any given element of `priorities` must be a valid VkQueueGlobalPriorityKHR value*/
 #[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -54,24 +54,6 @@ safe_struct!(
     #[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
     QueueFamilyGlobalPriorityPropertiesKHR, 'a; zeroed chained
 );
-#[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
-impl<'a> QueueFamilyGlobalPriorityPropertiesKHR<'a> {
-    ///Sets `priorityCount`.
-    #[inline]
-    pub fn priority_count(mut self, value: u32) -> Self {
-        self.raw.priority_count = value;
-        self
-    }
-    ///Sets `priorities`.
-    #[inline]
-    pub fn priorities(
-        mut self,
-        value: [vk::QueueGlobalPriorityKHR; vk::MAX_GLOBAL_PRIORITY_SIZE_KHR],
-    ) -> Self {
-        self.raw.priorities = value;
-        self
-    }
-}
 #[cfg(any(feature = "ext_global_priority_query", feature = "khr_global_priority"))]
 unsafe impl<'a> Extends<QueueFamilyProperties2<'a>>
 for QueueFamilyGlobalPriorityPropertiesKHR<'a> {}

@@ -185,7 +185,7 @@ impl<'a> BufferCollectionImageCreateInfoFUCHSIA<'a> {
 #[cfg(feature = "fuchsia_buffer_collection")]
 unsafe impl<'a> Extends<ImageCreateInfo<'a>>
 for BufferCollectionImageCreateInfoFUCHSIA<'a> {}
-/**Safe counterpart of [`vk::BufferCollectionPropertiesFUCHSIA`].
+/**Safe counterpart of [`vk::BufferCollectionPropertiesFUCHSIA`]. Vulkan writes it: pass one made with `default()` where a command or chain asks for it, and read the members it filled through `Deref`.
 
 # Valid usage
 
@@ -210,97 +210,8 @@ pub struct BufferCollectionPropertiesFUCHSIA<'a> {
 }
 safe_struct!(
     #[cfg(feature = "fuchsia_buffer_collection")] BufferCollectionPropertiesFUCHSIA, 'a;
-    chained
+    zeroed chained
 );
-#[cfg(feature = "fuchsia_buffer_collection")]
-impl<'a> BufferCollectionPropertiesFUCHSIA<'a> {
-    /// A struct with the members that have no zero form set from the arguments (handles, nested structs and pointers, names) and every other member zero or empty, its `sType` set; set the rest with the setters.
-    #[inline]
-    pub fn new(sysmem_color_space_index: SysmemColorSpaceFUCHSIA<'a>) -> Self {
-        Self {
-            raw: vk::BufferCollectionPropertiesFUCHSIA {
-                sysmem_color_space_index: sysmem_color_space_index.raw,
-                ..Default::default()
-            },
-            _marker: PhantomData,
-        }
-    }
-    ///Sets `memoryTypeBits`.
-    #[inline]
-    pub fn memory_type_bits(mut self, value: u32) -> Self {
-        self.raw.memory_type_bits = value;
-        self
-    }
-    ///Sets `bufferCount`.
-    #[inline]
-    pub fn buffer_count(mut self, value: u32) -> Self {
-        self.raw.buffer_count = value;
-        self
-    }
-    ///Sets `createInfoIndex`.
-    #[inline]
-    pub fn create_info_index(mut self, value: u32) -> Self {
-        self.raw.create_info_index = value;
-        self
-    }
-    ///Sets `sysmemPixelFormat`.
-    #[inline]
-    pub fn sysmem_pixel_format(mut self, value: u64) -> Self {
-        self.raw.sysmem_pixel_format = value;
-        self
-    }
-    ///Sets `formatFeatures`.
-    #[inline]
-    pub fn format_features(mut self, value: vk::FormatFeatureFlags) -> Self {
-        self.raw.format_features = value;
-        self
-    }
-    ///Sets `sysmemColorSpaceIndex`.
-    #[inline]
-    pub fn sysmem_color_space_index(
-        mut self,
-        value: SysmemColorSpaceFUCHSIA<'a>,
-    ) -> Self {
-        self.raw.sysmem_color_space_index = value.raw;
-        self
-    }
-    ///Sets `samplerYcbcrConversionComponents`.
-    #[inline]
-    pub fn sampler_ycbcr_conversion_components(
-        mut self,
-        value: vk::ComponentMapping,
-    ) -> Self {
-        self.raw.sampler_ycbcr_conversion_components = value;
-        self
-    }
-    ///Sets `suggestedYcbcrModel`.
-    #[inline]
-    pub fn suggested_ycbcr_model(
-        mut self,
-        value: vk::SamplerYcbcrModelConversion,
-    ) -> Self {
-        self.raw.suggested_ycbcr_model = value;
-        self
-    }
-    ///Sets `suggestedYcbcrRange`.
-    #[inline]
-    pub fn suggested_ycbcr_range(mut self, value: vk::SamplerYcbcrRange) -> Self {
-        self.raw.suggested_ycbcr_range = value;
-        self
-    }
-    ///Sets `suggestedXChromaOffset`.
-    #[inline]
-    pub fn suggested_x_chroma_offset(mut self, value: vk::ChromaLocation) -> Self {
-        self.raw.suggested_x_chroma_offset = value;
-        self
-    }
-    ///Sets `suggestedYChromaOffset`.
-    #[inline]
-    pub fn suggested_y_chroma_offset(mut self, value: vk::ChromaLocation) -> Self {
-        self.raw.suggested_y_chroma_offset = value;
-        self
-    }
-}
 /**Safe counterpart of [`vk::BufferConstraintsInfoFUCHSIA`].
 
 # Valid usage

@@ -101,7 +101,7 @@ impl<'a> AccelerationStructureBuildGeometryInfoKHR<'a> {
         self
     }
 }
-/**Safe counterpart of [`vk::AccelerationStructureBuildSizesInfoKHR`].
+/**Safe counterpart of [`vk::AccelerationStructureBuildSizesInfoKHR`]. Vulkan writes it: pass one made with `default()` where a command or chain asks for it, and read the members it filled through `Deref`.
 
 # Valid usage
 
@@ -120,27 +120,6 @@ safe_struct!(
     #[cfg(feature = "khr_acceleration_structure")]
     AccelerationStructureBuildSizesInfoKHR, 'a; zeroed chained
 );
-#[cfg(feature = "khr_acceleration_structure")]
-impl<'a> AccelerationStructureBuildSizesInfoKHR<'a> {
-    ///Sets `accelerationStructureSize`.
-    #[inline]
-    pub fn acceleration_structure_size(mut self, value: vk::DeviceSize) -> Self {
-        self.raw.acceleration_structure_size = value;
-        self
-    }
-    ///Sets `updateScratchSize`.
-    #[inline]
-    pub fn update_scratch_size(mut self, value: vk::DeviceSize) -> Self {
-        self.raw.update_scratch_size = value;
-        self
-    }
-    ///Sets `buildScratchSize`.
-    #[inline]
-    pub fn build_scratch_size(mut self, value: vk::DeviceSize) -> Self {
-        self.raw.build_scratch_size = value;
-        self
-    }
-}
 /**Safe counterpart of [`vk::AccelerationStructureCreateInfoKHR`].
 
 # Valid usage

@@ -2,19 +2,19 @@
 
 //!The safe structs of `VK_NV_COOPERATIVE_MATRIX`.
 use super::*;
-/**Safe counterpart of [`vk::CooperativeMatrixPropertiesNV`].
+/**Safe counterpart of [`vk::CooperativeMatrixPropertiesNV`]. Vulkan writes it: pass one made with `default()` where a command or chain asks for it, and read the members it filled through `Deref`.
 
 # Valid usage
 
 The rules of `VkCooperativeMatrixPropertiesNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCooperativeMatrixPropertiesNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCooperativeMatrixPropertiesNV-AType-parameter` (*yours*; enum or flags value): `AType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-BType-parameter` (*yours*; enum or flags value): `BType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-CType-parameter` (*yours*; enum or flags value): `CType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-DType-parameter` (*yours*; enum or flags value): `DType` must be a valid VkComponentTypeNV value
-- `VUID-VkCooperativeMatrixPropertiesNV-scope-parameter` (*yours*; enum or flags value): `scope` must be a valid VkScopeNV value
 - `VUID-VkCooperativeMatrixPropertiesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COOPERATIVE_MATRIX_PROPERTIES_NV`
-- `VUID-VkCooperativeMatrixPropertiesNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
+- `VUID-VkCooperativeMatrixPropertiesNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
+- `VUID-VkCooperativeMatrixPropertiesNV-AType-parameter` (*by the types*): `AType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-BType-parameter` (*by the types*): `BType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-CType-parameter` (*by the types*): `CType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-DType-parameter` (*by the types*): `DType` must be a valid VkComponentTypeNV value
+- `VUID-VkCooperativeMatrixPropertiesNV-scope-parameter` (*by the types*): `scope` must be a valid VkScopeNV value*/
 #[cfg(feature = "nv_cooperative_matrix")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -26,57 +26,6 @@ safe_struct!(
     #[cfg(feature = "nv_cooperative_matrix")] CooperativeMatrixPropertiesNV, 'a; zeroed
     chained
 );
-#[cfg(feature = "nv_cooperative_matrix")]
-impl<'a> CooperativeMatrixPropertiesNV<'a> {
-    ///Sets `MSize`.
-    #[inline]
-    pub fn m_size(mut self, value: u32) -> Self {
-        self.raw.m_size = value;
-        self
-    }
-    ///Sets `NSize`.
-    #[inline]
-    pub fn n_size(mut self, value: u32) -> Self {
-        self.raw.n_size = value;
-        self
-    }
-    ///Sets `KSize`.
-    #[inline]
-    pub fn k_size(mut self, value: u32) -> Self {
-        self.raw.k_size = value;
-        self
-    }
-    ///Sets `AType`.
-    #[inline]
-    pub fn a_type(mut self, value: vk::ComponentTypeNV) -> Self {
-        self.raw.a_type = value;
-        self
-    }
-    ///Sets `BType`.
-    #[inline]
-    pub fn b_type(mut self, value: vk::ComponentTypeNV) -> Self {
-        self.raw.b_type = value;
-        self
-    }
-    ///Sets `CType`.
-    #[inline]
-    pub fn c_type(mut self, value: vk::ComponentTypeNV) -> Self {
-        self.raw.c_type = value;
-        self
-    }
-    ///Sets `DType`.
-    #[inline]
-    pub fn d_type(mut self, value: vk::ComponentTypeNV) -> Self {
-        self.raw.d_type = value;
-        self
-    }
-    ///Sets `scope`.
-    #[inline]
-    pub fn scope(mut self, value: vk::ScopeNV) -> Self {
-        self.raw.scope = value;
-        self
-    }
-}
 /**Safe counterpart of [`vk::PhysicalDeviceCooperativeMatrixFeaturesNV`].
 
 # Valid usage
