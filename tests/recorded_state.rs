@@ -224,6 +224,49 @@ fn surface_queries_name_a_family_and_a_surface_and_the_layer_agrees() {
     drop(window);
 }
 
+/// The Xlib presentation query takes the window's display connection as a
+/// `raw_window_handle::DisplayHandle`, so it is safe: a handle of another window
+/// system is refused, and a family past the count is refused as the layer refuses it.
+#[test]
+fn presentation_support_takes_a_display_handle_and_the_layer_agrees() {
+    use raw_window_handle::HasDisplayHandle;
+    let _serial = vulkan::serial();
+    let window = x11_window::X11Window::open(32, 32);
+    let s = setup_with(true, Wsi::Xlib);
+    let p = &s.physical;
+    let display = window.display_handle().expect("display handle");
+    // ash spells Xlib's `VisualID` as a 32-bit number; X11 IDs fit in 29 bits.
+    let visual = u32::try_from(window.visual_id()).expect("an X11 ID");
+    assert!(p
+        .get_xlib_presentation_support_khr(s.family, display, visual)
+        .expect("support"));
+    let families = p
+        .get_queue_family_properties()
+        .expect("queue families")
+        .len();
+    let absent = u32::try_from(families).expect("few families");
+    let past = "VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315";
+    assert_eq!(
+        vuid(p.get_xlib_presentation_support_khr(absent, display, visual)),
+        past
+    );
+    // A Wayland display is not an Xlib one: refused before Vulkan sees it.
+    let raw = raw_window_handle::WaylandDisplayHandle::new(std::ptr::NonNull::dangling());
+    // SAFETY: the handle is refused for its window system before anything reads it.
+    let wayland = unsafe { raw_window_handle::DisplayHandle::borrow_raw(raw.into()) };
+    assert!(matches!(
+        p.get_xlib_presentation_support_khr(s.family, wayland, visual),
+        Err(tuff::Error::Window(_))
+    ));
+    assert_silent(&s.messages);
+    layer_names(&s.messages, past, || {
+        // SAFETY: see the module docs.
+        drop(unsafe { p.get_xlib_presentation_support_khr_unchecked(absent, display, visual) });
+    });
+    drop(s);
+    drop(window);
+}
+
 #[test]
 fn an_index_buffer_is_bound_at_an_aligned_address_and_the_layer_agrees() {
     let _serial = vulkan::serial();

@@ -770,24 +770,24 @@ fn surfaces_keep_their_windows() {
     assert_silent(&headless.messages);
 }
 
-/// A command with a window-system parameter is emitted as an `unsafe` method that
-/// takes ash's raw type (`*mut vk::Display` here), with the rest of its rules settled
-/// as for any other: it answers as the driver does through ash.
+/// A command that takes a window system's display connection takes it as a
+/// `raw_window_handle::DisplayHandle` and is safe; the driver gets the window's own
+/// connection and answers as it does through ash.
 #[test]
-fn a_raw_window_system_parameter_reaches_the_driver_unchanged() {
+fn a_display_connection_reaches_the_driver_unchanged() {
+    use raw_window_handle::HasDisplayHandle;
     let _serial = vulkan::serial();
     let window = x11_window::X11Window::open(16, 16);
     let s = setup_with(true, Wsi::Xlib);
-    // X resource IDs fit in 29 bits; Vulkan's VisualID is 32.
+    // X resource IDs fit in 29 bits; ash's VisualID is 32.
     let visual = vk::VisualID::try_from(window.visual_id()).expect("a 32-bit visual ID");
-    // SAFETY: a live display connection and a visual of its default screen.
-    let supported = unsafe {
-        s.physical
-            .get_xlib_presentation_support_khr(s.family, window.display.cast(), visual)
-    }
-    .expect("the extension is enabled");
+    let display = window.display_handle().expect("display handle");
+    let supported = s
+        .physical
+        .get_xlib_presentation_support_khr(s.family, display, visual)
+        .expect("the extension is enabled");
     let loader = ash::khr::xlib_surface::Instance::new(s.instance.entry().fns(), s.instance.fns());
-    // SAFETY: as above, through ash.
+    // SAFETY: a live display connection and a visual of its default screen.
     let through_ash = unsafe {
         loader.get_physical_device_xlib_presentation_support(
             tuff::Handle::raw(&s.physical),
@@ -801,14 +801,9 @@ fn a_raw_window_system_parameter_reaches_the_driver_unchanged() {
     assert!(through_ash);
     // Without the extension the table is missing, and the call says so.
     let headless = setup(true);
-    // SAFETY: as above; the call is refused before Vulkan sees it.
-    let missing = unsafe {
-        headless.physical.get_xlib_presentation_support_khr(
-            headless.family,
-            window.display.cast(),
-            visual,
-        )
-    };
+    let missing = headless
+        .physical
+        .get_xlib_presentation_support_khr(headless.family, display, visual);
     assert!(matches!(
         missing,
         Err(tuff::Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))

@@ -11,7 +11,7 @@ use crate::model::LenEntry;
 use crate::names::{field_ident, ident, level, param, table, type_ident, Level, Table};
 use crate::plan::checks::Checker;
 use crate::plan::commands::{
-    parent_of, parent_param, recorded, Param, Plan, RecorderState, Transition,
+    parent_of, parent_param, recorded, DisplayKind, Param, Plan, RecorderState, Transition,
 };
 use crate::plan::hooks::{special, Call, Keeps};
 use crate::plan::shape::{struct_members, Member};
@@ -346,6 +346,30 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 let ty = crate::plan::types::raw_type(model, &cx.facts, p);
                 lifetimes |= names_a(&ty);
                 args.push(quote!(#name: #ty));
+                call_args.push(quote!(#name,));
+            }
+            Param::Display(kind) => {
+                let (variant, get, what) = match kind {
+                    DisplayKind::Xlib => (quote!(Xlib), quote!(h.display), "an Xlib `Display`"),
+                    DisplayKind::Xcb => (quote!(Xcb), quote!(h.connection), "an XCB connection"),
+                    DisplayKind::Wayland => (
+                        quote!(Wayland),
+                        quote!(Some(h.display)),
+                        "a Wayland display",
+                    ),
+                };
+                let msg = format!("`{}` is not {what}", param(&p.name));
+                let ty = crate::plan::types::raw_type(model, &cx.facts, p);
+                args.push(quote!(#name: raw_window_handle::DisplayHandle<'_>));
+                pre.push(quote! {
+                    let #name: #ty = match #name.as_raw() {
+                        raw_window_handle::RawDisplayHandle::#variant(h) => #get,
+                        _ => None,
+                    }
+                    .ok_or_else(|| Error::Window(#msg.into()))?
+                    .as_ptr()
+                    .cast();
+                });
                 call_args.push(quote!(#name,));
             }
             Param::Dispatch => call_args.push(receiver_raw.clone()),

@@ -48,6 +48,10 @@ pub enum Param {
     /// pointers, an array whose length is an expression or unknown): passed through
     /// as ash's raw type, which makes the method `unsafe`.
     Raw,
+    /// A window system's display connection (`Display*`, `xcb_connection_t*`,
+    /// `wl_display*`), taken as a `raw_window_handle::DisplayHandle`, which is valid
+    /// for as long as it is borrowed; the variant must be this window system's.
+    Display(DisplayKind),
     /// A C string.
     CStr {
         /// May be null.
@@ -66,6 +70,30 @@ pub enum Param {
     /// The count of an enumeration.
     EnumCount,
 }
+
+/// A window system whose display connection a command takes, with the
+/// `raw_window_handle` variant that holds it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DisplayKind {
+    /// Xlib's `Display*`: `RawDisplayHandle::Xlib`'s `display`.
+    Xlib,
+    /// `xcb_connection_t*`: `RawDisplayHandle::Xcb`'s `connection`.
+    Xcb,
+    /// `wl_display*`: `RawDisplayHandle::Wayland`'s `display`.
+    Wayland,
+}
+
+/// The display connections `raw_window_handle` carries, by the registry's type.
+/// DirectFB's `IDirectFB` and QNX's types have no variant there, so they stay raw.
+pub const DISPLAY_CONNECTIONS: &[(&str, DisplayKind)] = &[
+    ("Display", DisplayKind::Xlib),
+    ("xcb_connection_t", DisplayKind::Xcb),
+    ("wl_display", DisplayKind::Wayland),
+];
+
+/// X11 protocol IDs a command takes by value (a visual, a RandR output): plain
+/// numbers the X server looks up, so any value is one Vulkan may be given.
+pub const X11_IDS: &[&str] = &["VisualID", "xcb_visualid_t", "RROutput"];
 
 /// A command's plan, or why it has none.
 #[derive(Debug, Clone)]
@@ -263,7 +291,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 Param::Handle {
                     optional: optional && !required,
                 }
-            } else if category.is_some() || super::shape::is_c_scalar(&p.type_name) {
+            } else if category.is_some()
+                || super::shape::is_c_scalar(&p.type_name)
+                || X11_IDS.contains(&p.type_name.as_str())
+            {
                 if matches!(category, Some(Kind::Struct | Kind::Union))
                     && cx.facts.has_lifetime(&p.type_name)
                 {
@@ -307,6 +338,13 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 // object (`Display*`) is one the caller passes in.
                 (None, None) if super::shape::is_foreign_value(model, &p.type_name) => {
                     Param::Output
+                }
+                (None, None) if DISPLAY_CONNECTIONS.iter().any(|(t, _)| *t == p.type_name) => {
+                    let kind = DISPLAY_CONNECTIONS
+                        .iter()
+                        .find(|(t, _)| *t == p.type_name)
+                        .map(|(_, k)| *k);
+                    kind.map_or(Param::Raw, Param::Display)
                 }
                 (None, None)
                     if p.type_name != "void" && !super::shape::is_c_scalar(&p.type_name) =>

@@ -146,6 +146,8 @@ const TIMELINE_VALUES: &str =
 const LAYOUT: &str = "checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them)";
 const PRESENTED: &str = "checks each index against the images acquired from the swapchain and not presented since, and the image's layout against the one the device's submissions so far leave it in (the recorder follows every command that changes a layout)";
 const LAYOUT_PASS: &str = "checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, \"the render pass initial layout ... and the previous known layout of the attachment ... must match\")";
+const UNPROVEN_XCB: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests' windows are Xlib ones, and the Xlib query's check of the same count is the one the tests break";
+const UNPROVEN_WAYLAND: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests have no Wayland compositor";
 const UNPROVEN_SURFACE_SUPPORT: &str = "checked by the safe methods in every build (vkGetPhysicalDeviceSurfaceSupportKHR, asked once per swapchain and queue family), but no test breaks it: lavapipe's only queue family presents to every surface";
 const GROUP_PRESENT: &str = "checks the chained struct's count and each device mask against its mode and the device group's present masks (read once with vkGetDeviceGroupPresentCapabilitiesKHR), against the mask its image was acquired with (every physical device for vkAcquireNextImageKHR), and the mode against the modes the swapchain was created with (the 1.3.239 layer does not check these rules on a device of one physical device: the error alone proves them)";
 const COPY_REGION: &str = "checks each region against the image's type, format and texel blocks and the subresource it names, as the device recorded them at the image's creation";
@@ -1771,6 +1773,54 @@ pub const SPECIALS: &[Special] = &[
         settles: &[(
             "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269",
             How::Dynamic(FAMILY_COUNT),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPhysicalDeviceXlibPresentationSupportKHR",
+        check: call(
+            "hooks::queue_family_exists",
+            &[
+                "self",
+                "queue_family_index",
+                "\"VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315\"",
+            ],
+        ),
+        settles: &[(
+            "VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315",
+            How::Dynamic(FAMILY_COUNT),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPhysicalDeviceXcbPresentationSupportKHR",
+        check: call(
+            "hooks::queue_family_exists",
+            &[
+                "self",
+                "queue_family_index",
+                "\"VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312\"",
+            ],
+        ),
+        settles: &[(
+            "VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312",
+            How::User(UNPROVEN_XCB),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetPhysicalDeviceWaylandPresentationSupportKHR",
+        check: call(
+            "hooks::queue_family_exists",
+            &[
+                "self",
+                "queue_family_index",
+                "\"VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306\"",
+            ],
+        ),
+        settles: &[(
+            "VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306",
+            How::User(UNPROVEN_WAYLAND),
         )],
         ..NONE
     },

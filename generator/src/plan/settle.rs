@@ -418,6 +418,9 @@ fn param_settlement(p: &Param) -> Settlement {
             Settlement::Static("taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides".into())
         }
         Param::Allocator => Settlement::Static("always NULL".into()),
+        Param::Display(_) => Settlement::Static(
+            "taken as a `raw_window_handle::DisplayHandle`, a display connection valid while it is borrowed (a handle of another window system is refused)".into(),
+        ),
         Param::CStr { .. } => {
             Settlement::Static("taken as a `CStr`: a valid NUL-terminated string".into())
         }

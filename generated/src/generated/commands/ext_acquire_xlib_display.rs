@@ -6,25 +6,20 @@ use super::*;
 impl DisplayKHR {
     /**`vkAcquireXlibDisplayEXT`
 
-# Safety
-
-`dpy` is passed to Vulkan as ash's raw type: each must be what the specification of `vkAcquireXlibDisplayEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkAcquireXlibDisplayEXT-dpy-parameter`: `dpy` must be a valid pointer to a `Display` value
-
 # Valid usage
 
 The rules of `vkAcquireXlibDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkAcquireXlibDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkAcquireXlibDisplayEXT-dpy-parameter` (*yours*; passed as ash's raw type): `dpy` must be a valid pointer to a `Display` value
 - `VUID-vkAcquireXlibDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkAcquireXlibDisplayEXT-dpy-parameter` (*by the types*): `dpy` must be a valid pointer to a `Display` value
 - `VUID-vkAcquireXlibDisplayEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
 - `VUID-vkAcquireXlibDisplayEXT-display-parent` (*by the types*): `display` must have been created, allocated, or retrieved from `physicalDevice`*/
     #[doc(alias = "vkAcquireXlibDisplayEXT")]
     #[inline]
-    pub unsafe fn acquire_xlib_display_ext(&self, dpy: *mut vk::Display) -> Result<()> {
+    pub fn acquire_xlib_display_ext(
+        &self,
+        dpy: raw_window_handle::DisplayHandle<'_>,
+    ) -> Result<()> {
         let fp = self
             .parent()
             .parent()
@@ -33,6 +28,13 @@ The rules of `vkAcquireXlibDisplayEXT` that apply to this crate's API ([referenc
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_acquire_xlib_display"))?
             .acquire_xlib_display_ext;
+        let dpy: *mut vk::Display = match dpy.as_raw() {
+            raw_window_handle::RawDisplayHandle::Xlib(h) => h.display,
+            _ => None,
+        }
+            .ok_or_else(|| Error::Window("`dpy` is not an Xlib `Display`".into()))?
+            .as_ptr()
+            .cast();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe { fp(self.parent().raw(), dpy, self.raw()) };
         if r.as_raw() < 0 {
@@ -45,26 +47,18 @@ The rules of `vkAcquireXlibDisplayEXT` that apply to this crate's API ([referenc
 impl PhysicalDevice {
     /**`vkGetRandROutputDisplayEXT`
 
-# Safety
-
-`dpy`, `rr_output` are passed to Vulkan as ash's raw type: each must be what the specification of `vkGetRandROutputDisplayEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetRandROutputDisplayEXT-dpy-parameter`: `dpy` must be a valid pointer to a `Display` value
-
 # Valid usage
 
 The rules of `vkGetRandROutputDisplayEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetRandROutputDisplayEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetRandROutputDisplayEXT-dpy-parameter` (*yours*; passed as ash's raw type): `dpy` must be a valid pointer to a `Display` value
 - `VUID-vkGetRandROutputDisplayEXT-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetRandROutputDisplayEXT-dpy-parameter` (*by the types*): `dpy` must be a valid pointer to a `Display` value
 - `VUID-vkGetRandROutputDisplayEXT-pDisplay-parameter` (*by the types*): `pDisplay` must be a valid pointer to a VkDisplayKHR handle*/
     #[doc(alias = "vkGetRandROutputDisplayEXT")]
     #[inline]
-    pub unsafe fn get_rand_r_output_display_ext(
+    pub fn get_rand_r_output_display_ext(
         &self,
-        dpy: *mut vk::Display,
+        dpy: raw_window_handle::DisplayHandle<'_>,
         rr_output: vk::RROutput,
     ) -> Result<DisplayKHR> {
         let fp = self
@@ -74,6 +68,13 @@ The rules of `vkGetRandROutputDisplayEXT` that apply to this crate's API ([refer
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_acquire_xlib_display"))?
             .get_rand_r_output_display_ext;
+        let dpy: *mut vk::Display = match dpy.as_raw() {
+            raw_window_handle::RawDisplayHandle::Xlib(h) => h.display,
+            _ => None,
+        }
+            .ok_or_else(|| Error::Window("`dpy` is not an Xlib `Display`".into()))?
+            .as_ptr()
+            .cast();
         let mut out = vk::DisplayKHR::null();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe { fp(self.raw(), dpy, rr_output, &mut out) };

@@ -71,28 +71,44 @@ The caller upholds the rules that [`Self::create_wayland_surface_khr`] checks at
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceWaylandPresentationSupportKHR`
 
-# Safety
-
-`display` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetPhysicalDeviceWaylandPresentationSupportKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter`: `display` must be a valid pointer to a `wl_display` value
-
 # Valid usage
 
 The rules of `vkGetPhysicalDeviceWaylandPresentationSupportKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceWaylandPresentationSupportKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306` (*yours*; explicit rule): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter` (*yours*; passed as ash's raw type): `display` must be a valid pointer to a `wl_display` value
-- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle*/
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306` (*yours*; checked by the safe methods in every build): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-display-parameter` (*by the types*): `display` must be a valid pointer to a `wl_display` value*/
     #[doc(alias = "vkGetPhysicalDeviceWaylandPresentationSupportKHR")]
     #[inline]
-    pub unsafe fn get_wayland_presentation_support_khr(
+    pub fn get_wayland_presentation_support_khr(
         &self,
         queue_family_index: u32,
-        display: *mut vk::wl_display,
+        display: raw_window_handle::DisplayHandle<'_>,
+    ) -> Result<bool> {
+        crate::hooks::queue_family_exists(
+            self,
+            queue_family_index,
+            "VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306",
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_wayland_presentation_support_khr_unchecked(
+                queue_family_index,
+                display,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceWaylandPresentationSupportKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_wayland_presentation_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_wayland_presentation_support_khr_unchecked(
+        &self,
+        queue_family_index: u32,
+        display: raw_window_handle::DisplayHandle<'_>,
     ) -> Result<bool> {
         let fp = self
             .parent()
@@ -102,6 +118,15 @@ The rules of `vkGetPhysicalDeviceWaylandPresentationSupportKHR` that apply to th
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?
             .get_physical_device_wayland_presentation_support_khr;
         Ok({
+            let display: *mut vk::wl_display = match display.as_raw() {
+                raw_window_handle::RawDisplayHandle::Wayland(h) => Some(h.display),
+                _ => None,
+            }
+                .ok_or_else(|| Error::Window(
+                    "`display` is not a Wayland display".into(),
+                ))?
+                .as_ptr()
+                .cast();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             let r = unsafe { fp(self.raw(), queue_family_index, display) };
             r != vk::FALSE

@@ -71,28 +71,46 @@ The caller upholds the rules that [`Self::create_xcb_surface_khr`] checks at run
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceXcbPresentationSupportKHR`
 
-# Safety
-
-`connection`, `visual_id` are passed to Vulkan as ash's raw type: each must be what the specification of `vkGetPhysicalDeviceXcbPresentationSupportKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
-- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-connection-parameter`: `connection` must be a valid pointer to an `xcb_connection_t` value
-
 # Valid usage
 
 The rules of `vkGetPhysicalDeviceXcbPresentationSupportKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceXcbPresentationSupportKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312` (*yours*; explicit rule): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
-- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-connection-parameter` (*yours*; passed as ash's raw type): `connection` must be a valid pointer to an `xcb_connection_t` value
-- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle*/
+- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312` (*yours*; checked by the safe methods in every build): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-connection-parameter` (*by the types*): `connection` must be a valid pointer to an `xcb_connection_t` value*/
     #[doc(alias = "vkGetPhysicalDeviceXcbPresentationSupportKHR")]
     #[inline]
-    pub unsafe fn get_xcb_presentation_support_khr(
+    pub fn get_xcb_presentation_support_khr(
         &self,
         queue_family_index: u32,
-        connection: *mut vk::xcb_connection_t,
+        connection: raw_window_handle::DisplayHandle<'_>,
+        visual_id: vk::xcb_visualid_t,
+    ) -> Result<bool> {
+        crate::hooks::queue_family_exists(
+            self,
+            queue_family_index,
+            "VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312",
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_xcb_presentation_support_khr_unchecked(
+                queue_family_index,
+                connection,
+                visual_id,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceXcbPresentationSupportKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_xcb_presentation_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_xcb_presentation_support_khr_unchecked(
+        &self,
+        queue_family_index: u32,
+        connection: raw_window_handle::DisplayHandle<'_>,
         visual_id: vk::xcb_visualid_t,
     ) -> Result<bool> {
         let fp = self
@@ -103,6 +121,15 @@ The rules of `vkGetPhysicalDeviceXcbPresentationSupportKHR` that apply to this c
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?
             .get_physical_device_xcb_presentation_support_khr;
         Ok({
+            let connection: *mut vk::xcb_connection_t = match connection.as_raw() {
+                raw_window_handle::RawDisplayHandle::Xcb(h) => h.connection,
+                _ => None,
+            }
+                .ok_or_else(|| Error::Window(
+                    "`connection` is not an XCB connection".into(),
+                ))?
+                .as_ptr()
+                .cast();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             let r = unsafe { fp(self.raw(), queue_family_index, connection, visual_id) };
             r != vk::FALSE

@@ -71,28 +71,46 @@ The caller upholds the rules that [`Self::create_xlib_surface_khr`] checks at ru
 impl PhysicalDevice {
     /**`vkGetPhysicalDeviceXlibPresentationSupportKHR`
 
-# Safety
-
-`dpy`, `visual_id` are passed to Vulkan as ash's raw type: each must be what the specification of `vkGetPhysicalDeviceXlibPresentationSupportKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315`: `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
-- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-dpy-parameter`: `dpy` must be a valid pointer to a `Display` value
-
 # Valid usage
 
 The rules of `vkGetPhysicalDeviceXlibPresentationSupportKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetPhysicalDeviceXlibPresentationSupportKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315` (*yours*; explicit rule): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
-- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-dpy-parameter` (*yours*; passed as ash's raw type): `dpy` must be a valid pointer to a `Display` value
-- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle*/
+- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315` (*checked*): `queueFamilyIndex` must be less than `pQueueFamilyPropertyCount` returned by `vkGetPhysicalDeviceQueueFamilyProperties` for the given `physicalDevice`
+- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-physicalDevice-parameter` (*by the types*): `physicalDevice` must be a valid VkPhysicalDevice handle
+- `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-dpy-parameter` (*by the types*): `dpy` must be a valid pointer to a `Display` value*/
     #[doc(alias = "vkGetPhysicalDeviceXlibPresentationSupportKHR")]
     #[inline]
-    pub unsafe fn get_xlib_presentation_support_khr(
+    pub fn get_xlib_presentation_support_khr(
         &self,
         queue_family_index: u32,
-        dpy: *mut vk::Display,
+        dpy: raw_window_handle::DisplayHandle<'_>,
+        visual_id: vk::VisualID,
+    ) -> Result<bool> {
+        crate::hooks::queue_family_exists(
+            self,
+            queue_family_index,
+            "VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315",
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_xlib_presentation_support_khr_unchecked(
+                queue_family_index,
+                dpy,
+                visual_id,
+            )
+        }
+    }
+    /**`vkGetPhysicalDeviceXlibPresentationSupportKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_xlib_presentation_support_khr`] checks at run time: `VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_xlib_presentation_support_khr_unchecked(
+        &self,
+        queue_family_index: u32,
+        dpy: raw_window_handle::DisplayHandle<'_>,
         visual_id: vk::VisualID,
     ) -> Result<bool> {
         let fp = self
@@ -103,6 +121,13 @@ The rules of `vkGetPhysicalDeviceXlibPresentationSupportKHR` that apply to this 
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))?
             .get_physical_device_xlib_presentation_support_khr;
         Ok({
+            let dpy: *mut vk::Display = match dpy.as_raw() {
+                raw_window_handle::RawDisplayHandle::Xlib(h) => h.display,
+                _ => None,
+            }
+                .ok_or_else(|| Error::Window("`dpy` is not an Xlib `Display`".into()))?
+                .as_ptr()
+                .cast();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             let r = unsafe { fp(self.raw(), queue_family_index, dpy, visual_id) };
             r != vk::FALSE
