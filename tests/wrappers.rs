@@ -801,9 +801,10 @@ fn a_display_connection_reaches_the_driver_unchanged() {
     assert!(through_ash);
     // Without the extension the table is missing, and the call says so.
     let headless = setup(true);
-    let missing = headless
-        .physical
-        .get_xlib_presentation_support_khr(headless.family, display, visual);
+    let missing =
+        headless
+            .physical
+            .get_xlib_presentation_support_khr(headless.family, display, visual);
     assert!(matches!(
         missing,
         Err(tuff::Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))

@@ -917,11 +917,16 @@ impl Live {
 
     /// Lists a new object under its raw handle.
     pub(crate) fn add<H: vk::Handle>(&self, raw: H, object: &Retained, sync: &HostSync) {
-        let raw = raw.as_raw();
+        self.add_raw(H::TYPE, raw.as_raw(), object, sync);
+    }
+
+    // One body for every handle type: the generic `add` and `remove` would otherwise
+    // copy it once per type (a twentieth of the crate's machine code).
+    fn add_raw(&self, ty: vk::ObjectType, raw: u64, object: &Retained, sync: &HostSync) {
         self.objects
             .lock()
-            .insert((H::TYPE, raw), (Vrc::downgrade(object), sync.clone()));
-        if H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
+            .insert((ty, raw), (Vrc::downgrade(object), sync.clone()));
+        if ty == vk::ObjectType::DESCRIPTOR_SET {
             // A new set starts empty, even if its handle was a set's that a pool reset
             // freed while that set's wrapper lived on; released outside the lock.
             let stale = self.sets.lock().remove(&raw);
@@ -942,7 +947,11 @@ impl Live {
     /// the same handle took over (swapchain images are wrapped anew by every
     /// `get_swapchain_images_khr`) stays.
     pub(crate) fn remove<H: vk::Handle>(&self, raw: H) {
-        let key = (H::TYPE, raw.as_raw());
+        self.remove_raw(H::TYPE, raw.as_raw());
+    }
+
+    fn remove_raw(&self, ty: vk::ObjectType, raw: u64) {
+        let key = (ty, raw);
         let unlisted = {
             let mut objects = self.objects.lock();
             let gone = objects
@@ -953,23 +962,23 @@ impl Live {
             }
             gone
         };
-        if unlisted && H::TYPE == vk::ObjectType::DEVICE_MEMORY {
+        if unlisted && ty == vk::ObjectType::DEVICE_MEMORY {
             self.memories.lock().remove(&key.1);
         }
-        if unlisted && H::TYPE == vk::ObjectType::SEMAPHORE {
+        if unlisted && ty == vk::ObjectType::SEMAPHORE {
             self.timelines.lock().remove(&key.1);
             let state = self.binaries.lock().remove(&key.1);
             drop(state);
         }
-        if unlisted && H::TYPE == vk::ObjectType::EVENT {
+        if unlisted && ty == vk::ObjectType::EVENT {
             self.device_only_events.lock().remove(&key.1);
             self.event_uses.lock().remove(&key.1);
         }
-        if unlisted && H::TYPE == vk::ObjectType::RENDER_PASS {
+        if unlisted && ty == vk::ObjectType::RENDER_PASS {
             let gone = self.render_passes.lock().remove(&key.1);
             drop(gone);
         }
-        match H::TYPE {
+        match ty {
             _ if !unlisted => {}
             vk::ObjectType::BUFFER => {
                 let gone = self.buffers.lock().remove(&key.1);
@@ -1043,13 +1052,13 @@ impl Live {
             }
             _ => {}
         }
-        if unlisted && matches!(H::TYPE, vk::ObjectType::BUFFER | vk::ObjectType::IMAGE) {
+        if unlisted && matches!(ty, vk::ObjectType::BUFFER | vk::ObjectType::IMAGE) {
             // Released outside the lock: it may be the last reference to the memory.
             let memory = self.bound_memories.lock().remove(&key);
             drop(memory);
         }
         // A set whose handle a newer wrapper took over keeps that wrapper's contents.
-        if unlisted && H::TYPE == vk::ObjectType::DESCRIPTOR_SET {
+        if unlisted && ty == vk::ObjectType::DESCRIPTOR_SET {
             // Dropped outside the lock: releasing the last reference to a view or
             // buffer runs its Drop, which unlists it.
             let written = self.sets.lock().remove(&key.1);
@@ -1485,9 +1494,16 @@ impl Live {
         &self,
         read: impl FnOnce(&crate::validation::Features) -> R,
     ) -> R {
+        read(self.features_or_none())
+    }
+
+    // Out of the generic `with_features`, which every feature check instantiates: the
+    // features, or a set with none on, made once.
+    fn features_or_none(&self) -> &crate::validation::Features {
+        static NONE: std::sync::OnceLock<crate::validation::Features> = std::sync::OnceLock::new();
         match self.features.get() {
-            Some(f) => read(f),
-            None => read(&crate::validation::Features::default()),
+            Some(f) => f,
+            None => NONE.get_or_init(crate::validation::Features::default),
         }
     }
 

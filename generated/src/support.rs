@@ -20,14 +20,12 @@ use tuff_runtime::Vrc;
 /// }
 /// # }
 /// ```
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Error {
     /// A command returned an error code.
-    #[error("Vulkan returned {0}")]
     Vk(vk::Result),
     /// A dynamic check of a valid-usage rule failed before the command was called.
-    #[error("{vuid}: {message}")]
     Validation {
         /// The rule.
         vuid: &'static str,
@@ -36,41 +34,32 @@ pub enum Error {
     },
     /// A safe method was asked for something it cannot do while keeping its
     /// guarantees; the text says which method can.
-    #[error("{0}")]
     Misuse(&'static str),
     /// An extension command was called on an instance or device that did not enable
     /// the extension.
-    #[error("extension {0} is not enabled on this instance or device")]
     ExtensionNotEnabled(&'static str),
     /// A safe `create_instance` or `create_device` was asked to enable an extension
     /// that tuff does not emit. Its rules would then apply to calls no safe method
     /// checks them on; the `unsafe` `_unchecked` constructor enables it.
-    #[error("extension {0} is outside tuff's emitted API (`api_info::EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it")]
     ExtensionNotEmitted(String),
     /// A safe `create_instance` or `create_device` was asked to enable an emitted
     /// extension that brings rules to methods outside it which no check enforces
     /// (not in `api_info::CHECKED_EXTENSIONS`; `generated/VALIDATION.md` lists the
     /// rules); the `unsafe` `_unchecked` constructor enables it.
-    #[error("extension {0} brings rules to other methods that tuff does not check (it is not in `api_info::CHECKED_EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it")]
     ExtensionUnchecked(String),
     /// A mapped-memory access did not fit in the mapping, or its flush or
     /// invalidate range could not be formed.
-    #[error("mapped memory: {0}")]
     Map(tuff_runtime::MapError),
     /// A window gave no handle a surface can be made from: it has none now, or its
     /// window system has no surface extension in this build.
-    #[error("window: {0}")]
     Window(String),
     /// The Vulkan loader could not be found or opened.
-    #[error("cannot load the Vulkan loader: {0}")]
     Load(String),
     /// An allocator could not give memory; the text is its
     /// [`tuff_runtime::AllocError`]'s.
-    #[error("allocation failed: {0}")]
     Alloc(String),
     /// An instance or device could not be created because layers, extensions or
     /// features it asked for are not there; `names` says which.
-    #[error("{what} not present: {} ({result:?})", names.join(", "))]
     NotPresent {
         /// What the creation returned: `ERROR_LAYER_NOT_PRESENT`,
         /// `ERROR_EXTENSION_NOT_PRESENT` or `ERROR_FEATURE_NOT_PRESENT`.
@@ -82,6 +71,40 @@ pub enum Error {
         names: Vec<String>,
     },
 }
+
+// Written out rather than derived: thiserror's macro needs a syn of its own, which
+// cargo builds before ash and so delays the crate's build (scripts/compile-time.sh).
+impl core::fmt::Display for Error {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Error::Vk(r) => write!(f, "Vulkan returned {r}"),
+            Error::Validation { vuid, message } => write!(f, "{vuid}: {message}"),
+            Error::Misuse(what) => f.write_str(what),
+            Error::ExtensionNotEnabled(name) => {
+                write!(f, "extension {name} is not enabled on this instance or device")
+            }
+            Error::ExtensionNotEmitted(name) => write!(
+                f,
+                "extension {name} is outside tuff's emitted API (`api_info::EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it"
+            ),
+            Error::ExtensionUnchecked(name) => write!(
+                f,
+                "extension {name} brings rules to other methods that tuff does not check (it is not in `api_info::CHECKED_EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it"
+            ),
+            Error::Map(e) => write!(f, "mapped memory: {e}"),
+            Error::Window(what) => write!(f, "window: {what}"),
+            Error::Load(what) => write!(f, "cannot load the Vulkan loader: {what}"),
+            Error::Alloc(what) => write!(f, "allocation failed: {what}"),
+            Error::NotPresent {
+                result,
+                what,
+                names,
+            } => write!(f, "{what} not present: {} ({result:?})", names.join(", ")),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
 
 /// The result of a fallible wrapper call.
 ///

@@ -9,15 +9,11 @@
 /// let err = check_range(64, 60, 8).unwrap_err();
 /// assert_eq!(err, MapError::OutOfRange { offset: 60, size: 8, allocation_size: 64 });
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MapError {
     /// The allocation is not host-visible, so it has no mapping.
-    #[error("the allocation is not mapped (its memory is not host-visible)")]
     NotMapped,
     /// The access does not fit in the allocation.
-    #[error(
-        "{size} bytes at offset {offset} do not fit in an allocation of {allocation_size} bytes"
-    )]
     OutOfRange {
         /// Offset of the access inside the allocation.
         offset: u64,
@@ -27,7 +23,6 @@ pub enum MapError {
         allocation_size: u64,
     },
     /// An offset or size computation overflowed.
-    #[error("offset {offset} plus size {size} overflows")]
     Overflow {
         /// Offset of the access.
         offset: u64,
@@ -35,10 +30,8 @@ pub enum MapError {
         size: u64,
     },
     /// `nonCoherentAtomSize` is not a power of two (the specification requires one).
-    #[error("nonCoherentAtomSize {0} is not a power of two")]
     BadAtomSize(u64),
     /// The allocation does not lie inside its device memory.
-    #[error("allocation at {offset} of {size} bytes lies outside its device memory of {memory_size} bytes")]
     BadAllocation {
         /// Allocation offset inside the device memory.
         offset: u64,
@@ -48,9 +41,45 @@ pub enum MapError {
         memory_size: u64,
     },
     /// vkFlushMappedMemoryRanges or vkInvalidateMappedMemoryRanges failed.
-    #[error("flushing or invalidating mapped memory failed: {0}")]
     Vulkan(ash::vk::Result),
 }
+
+// Written out rather than derived: thiserror's macro needs a syn of its own, which
+// cargo builds before ash and so delays every build of tuff.
+impl core::fmt::Display for MapError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            MapError::NotMapped => {
+                f.write_str("the allocation is not mapped (its memory is not host-visible)")
+            }
+            MapError::OutOfRange {
+                offset,
+                size,
+                allocation_size,
+            } => write!(
+                f,
+                "{size} bytes at offset {offset} do not fit in an allocation of {allocation_size} bytes"
+            ),
+            MapError::Overflow { offset, size } => {
+                write!(f, "offset {offset} plus size {size} overflows")
+            }
+            MapError::BadAtomSize(n) => write!(f, "nonCoherentAtomSize {n} is not a power of two"),
+            MapError::BadAllocation {
+                offset,
+                size,
+                memory_size,
+            } => write!(
+                f,
+                "allocation at {offset} of {size} bytes lies outside its device memory of {memory_size} bytes"
+            ),
+            MapError::Vulkan(r) => {
+                write!(f, "flushing or invalidating mapped memory failed: {r}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for MapError {}
 
 /// Where an allocation lies inside its device memory.
 ///

@@ -541,7 +541,6 @@ tuff-runtime = { path = "../runtime" }
 bytemuck = "1"
 smallvec = "1"
 rustc-hash = "2"
-thiserror = "2"
 raw-window-handle = "0.6"
 
 [features]

@@ -131,10 +131,9 @@ impl AllocationRequest<'static> {
 /// let e = AllocError::NoSuitableMemoryType { memory_type_bits: 0, location: MemoryLocation::Upload };
 /// assert!(e.to_string().contains("no memory type"));
 /// ```
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug)]
 pub enum AllocError {
     /// No memory type allowed by the requirements has the needed properties.
-    #[error("no memory type in bits {memory_type_bits:#x} suits {location:?} memory")]
     NoSuitableMemoryType {
         /// `memoryTypeBits` of the requirements.
         memory_type_bits: u32,
@@ -142,7 +141,6 @@ pub enum AllocError {
         location: MemoryLocation,
     },
     /// A Vulkan call failed.
-    #[error("{call} failed: {result}")]
     Vulkan {
         /// Which call.
         call: &'static str,
@@ -150,12 +148,46 @@ pub enum AllocError {
         result: vk::Result,
     },
     /// gpu-allocator refused.
-    #[error("gpu-allocator: {0}")]
-    GpuAllocator(#[from] gpu_allocator::AllocationError),
+    GpuAllocator(gpu_allocator::AllocationError),
     /// The requirements are impossible: size 0, a size larger than the memory heap or
     /// one that overflows when rounded to the atom size.
-    #[error("invalid memory requirements: {0}")]
     InvalidRequirements(String),
+}
+
+// Written out rather than derived: thiserror's macro needs a syn of its own, which
+// cargo builds before ash and so delays every build of tuff.
+impl core::fmt::Display for AllocError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            AllocError::NoSuitableMemoryType {
+                memory_type_bits,
+                location,
+            } => write!(
+                f,
+                "no memory type in bits {memory_type_bits:#x} suits {location:?} memory"
+            ),
+            AllocError::Vulkan { call, result } => write!(f, "{call} failed: {result}"),
+            AllocError::GpuAllocator(e) => write!(f, "gpu-allocator: {e}"),
+            AllocError::InvalidRequirements(what) => {
+                write!(f, "invalid memory requirements: {what}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for AllocError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            AllocError::GpuAllocator(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<gpu_allocator::AllocationError> for AllocError {
+    fn from(e: gpu_allocator::AllocationError) -> Self {
+        AllocError::GpuAllocator(e)
+    }
 }
 
 /// Frees an allocation's memory. Each allocator gives its allocations a backing; the
