@@ -192,21 +192,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let (cx, checker): (&Context, &Checker) = (all.cx, &all.checker);
     let model = cx.model;
     let cmd = &model.commands[&plan.name];
-    // A command of several extensions (`vkGetRayTracingShaderGroupHandlesKHR`, also
-    // `VK_NV_ray_tracing`'s under another name) is called through one of their
-    // tables, so it exists only where that table's extension is enabled.
-    let condition = match table(model, &plan.name) {
-        Some(Table::Extension(e))
-            if !model.condition(&plan.name).implies(
-                &crate::model::Condition::parse(&e).expect("an extension name parses"),
-                &|set| super::feature_closure(model, set),
-            ) =>
-        {
-            crate::model::Condition::parse(&e).expect("an extension name parses")
-        }
-        _ => model.condition(&plan.name).clone(),
-    };
-    let cfg = crate::names::cfg_of(model, &condition);
+    let cfg = crate::names::cfg_of(model, &plan.condition);
     let f = ident(&cx.method(&plan.name));
     // Commands recorded into a command buffer go on the recorder; the others of a
     // command buffer (`vkResetCommandBuffer`) on the buffer itself, taken mutably,
@@ -277,7 +263,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
         None => return (quote!(), quote!(), None),
     };
-    let mut args: Vec<TokenStream> = Vec::new(); // method parameters
+    let mut args: Vec<Arg> = Vec::new(); // method parameters
     let mut pre: Vec<TokenStream> = Vec::new();
     let mut call_args: Vec<TokenStream> = Vec::new();
     // Handle arrays, taken as `impl Handles` (one wrapper or a `HandleSlice`, as struct
@@ -345,7 +331,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             Param::Raw => {
                 let ty = crate::plan::types::raw_type(model, &cx.facts, p);
                 lifetimes |= names_a(&ty);
-                args.push(quote!(#name: #ty));
+                args.push(Arg::new(&name, quote!(#ty)));
                 call_args.push(quote!(#name,));
             }
             Param::Display(kind) => {
@@ -360,7 +346,10 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 };
                 let msg = format!("`{}` is not {what}", param(&p.name));
                 let ty = crate::plan::types::raw_type(model, &cx.facts, p);
-                args.push(quote!(#name: raw_window_handle::DisplayHandle<'_>));
+                args.push(Arg::new(
+                    &name,
+                    quote!(raw_window_handle::DisplayHandle<'_>),
+                ));
                 pre.push(quote! {
                     let #name: #ty = match #name.as_raw() {
                         raw_window_handle::RawDisplayHandle::#variant(h) => #get,
@@ -405,26 +394,26 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             // body (and the hooks it calls) sees Vulkan's value.
             Param::Value if p.type_name == "VkBool32" => {
                 bools.push(name.to_string());
-                args.push(quote!(#name: bool));
+                args.push(Arg::new(&name, quote!(bool)));
                 pre.push(quote!(let #name = vk::Bool32::from(#name);));
                 call_args.push(quote!(#name,));
             }
             Param::Value => {
                 let ty = spelled(model, &cx.facts, &p.type_name);
-                args.push(quote!(#name: #ty));
+                args.push(Arg::new(&name, quote!(#ty)));
                 call_args.push(quote!(#name,));
             }
             Param::Array => {
                 let ty = spelled(model, &cx.facts, &p.type_name);
                 let n = crate::plan::types::array_size(p.static_array.as_deref().unwrap_or("1"));
-                args.push(quote!(#name: &[#ty; #n]));
+                args.push(Arg::new(&name, quote!(&[#ty; #n])));
                 call_args.push(quote!(#name,));
             }
             Param::Handle { optional } => {
                 let w = type_ident(&p.type_name);
                 if *optional {
                     {
-                        args.push(quote!(#name: Option<&#w>));
+                        args.push(Arg::new(&name, quote!(Option<&#w>)));
                         call_args.push(quote!(#name.map_or(vk::#w::null(), |h| h.raw()),));
                         if is_cmd {
                             retain.push(
@@ -434,7 +423,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                         continue;
                     }
                 }
-                args.push(quote!(#name: &#w));
+                args.push(Arg::new(&name, quote!(&#w)));
                 call_args.push(quote!(#name.raw(),));
                 if is_cmd {
                     retain.push(quote!(self.retain_with(#name.address(), || #name.retained());));
@@ -442,7 +431,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
             Param::HandleSlice => {
                 let w = type_ident(&p.type_name);
-                args.push(quote!(#name: &[&#w]));
+                args.push(Arg::new(&name, quote!(&[&#w])));
                 if is_cmd {
                     pre.push(quote!(for h in #name { self.retain(h.retained()); }));
                 }
@@ -450,17 +439,27 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 call_args.push(quote!(crate::Handles::raws(#given).as_ptr(),));
                 handle_arrays.push((name.clone(), w));
             }
+            Param::NumberRef { optional } => {
+                lifetimes = true;
+                let ty = spelled(model, &cx.facts, &p.type_name);
+                if *optional {
+                    args.push(Arg::new(&name, quote!(Option<&#ty>)));
+                    call_args.push(
+                        quote!(#name.map_or(core::ptr::null(), |s| s as *const #ty as *const _),),
+                    );
+                } else {
+                    args.push(Arg::new(&name, quote!(&#ty)));
+                    call_args.push(quote!(#name as *const #ty as *const _,));
+                }
+            }
             Param::StructRef { optional } => {
                 lifetimes = true;
-                let ty = match crate::plan::shape::is_c_scalar(&p.type_name) {
-                    true => spelled(model, &cx.facts, &p.type_name),
-                    false => safe_or_ash(cx, &p.type_name),
-                };
+                let ty = safe_or_ash(cx, &p.type_name);
                 let is_override = pool_override
                     .as_ref()
                     .is_some_and(|(pn, m)| pn == &p.name && m.is_some());
                 if *optional {
-                    args.push(quote!(#name: Option<&#ty>));
+                    args.push(Arg::new(&name, quote!(Option<&#ty>)));
                     call_args.push(
                         quote!(#name.map_or(core::ptr::null(), |s| s as *const #ty as *const _),),
                     );
@@ -468,8 +467,8 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     let kept_name = ident(&param(member));
                     let member = field_ident(member);
                     let kept_w = type_ident(kept_ty);
-                    args.push(quote!(#kept_name: &#kept_w));
-                    args.push(quote!(#name: &#ty));
+                    args.push(Arg::new(&kept_name, quote!(&#kept_w)));
+                    args.push(Arg::new(&name, quote!(&#ty)));
                     pre.push(quote! {
                         // Taken as a wrapper and written into the info, so the created
                         // object can keep it alive.
@@ -483,8 +482,8 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     let member = field_ident(&member.unwrap_or_default());
                     let parent_w = type_ident(&created_parent);
                     let parent_name = ident(&param(created_parent.trim_start_matches("Vk")));
-                    args.push(quote!(#parent_name: &#parent_w));
-                    args.push(quote!(#name: &#ty));
+                    args.push(Arg::new(&parent_name, quote!(&#parent_w)));
+                    args.push(Arg::new(&name, quote!(&#ty)));
                     pre.push(quote! {
                         // The parent is taken as a wrapper and written into the info, so
                         // the created objects can hold it.
@@ -494,7 +493,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     });
                     call_args.push(quote!(#name.as_raw(),));
                 } else {
-                    args.push(quote!(#name: &#ty));
+                    args.push(Arg::new(&name, quote!(&#ty)));
                     call_args.push(quote!(#name as *const #ty as *const _,));
                     if is_cmd {
                         retain.extend(struct_retains(cx, p, &name, false));
@@ -508,7 +507,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 } else {
                     spelled(model, &cx.facts, &p.type_name)
                 };
-                args.push(quote!(#name: &[#ty]));
+                args.push(Arg::new(&name, quote!(&[#ty])));
                 if optional_same_len(plan, &p.name) {
                     // An empty optional slice is NULL, not a dangling pointer.
                     call_args.push(quote!(if #name.is_empty() { core::ptr::null() } else { #name.as_ptr().cast() },));
@@ -520,32 +519,32 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 }
             }
             Param::Bytes => {
-                args.push(quote!(#name: &[u8]));
+                args.push(Arg::new(&name, quote!(&[u8])));
                 call_args.push(quote!(#name.as_ptr().cast(),));
             }
             Param::RawData => {
-                args.push(quote!(#name: *const core::ffi::c_void));
+                args.push(Arg::new(&name, quote!(*const core::ffi::c_void)));
                 call_args.push(quote!(#name,));
             }
             Param::BytesOut => {
-                args.push(quote!(#name: &mut [u8]));
+                args.push(Arg::new(&name, quote!(&mut [u8])));
                 call_args.push(quote!(#name.as_mut_ptr().cast(),));
             }
             Param::CStr { optional: true } => {
-                args.push(quote!(#name: Option<&core::ffi::CStr>));
+                args.push(Arg::new(&name, quote!(Option<&core::ffi::CStr>)));
                 call_args.push(quote!(#name.map_or(core::ptr::null(), |s| s.as_ptr()),));
             }
             Param::CStr { optional: false } => {
-                args.push(quote!(#name: &core::ffi::CStr));
+                args.push(Arg::new(&name, quote!(&core::ffi::CStr)));
                 call_args.push(quote!(#name.as_ptr(),));
             }
             Param::InOut => {
                 lifetimes = true;
                 let ty = safe_or_ash(cx, &p.type_name);
-                args.push(quote!(#name: &mut #ty));
+                args.push(Arg::new(&name, quote!(&mut #ty)));
                 call_args.push(quote!(#name as *mut #ty as *mut _,));
             }
-            Param::Output => {
+            Param::Output | Param::ForeignOutput => {
                 let ty = spelled(model, &cx.facts, &p.type_name);
                 let ty = if cx.facts.has_lifetime(&p.type_name) {
                     let id = type_ident(&p.type_name);
@@ -564,7 +563,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     pre.push(quote!(let mut out: *mut #ty = core::ptr::null_mut();));
                     call_args.push(quote!(core::ptr::addr_of_mut!(out).cast(),));
                     quote!(*mut #ty)
-                } else if crate::plan::shape::is_foreign_value(model, &p.type_name) {
+                } else if matches!(shape, Param::ForeignOutput) {
                     // ash spells these as the C typedefs (`*mut c_void`, `u32`), some
                     // without `Default`.
                     pre.push(quote! {
@@ -895,21 +894,15 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     // The methods' parameters: a handle array as `impl Handles`, where the body and
     // the checks see the slice `args` names.
     let inner_args = args.clone();
-    let args: Vec<TokenStream> = args
+    let args: Vec<Arg> = args
         .into_iter()
-        .map(|a| {
-            let first = a.clone().into_iter().next().map(|t| t.to_string());
-            match handle_arrays
-                .iter()
-                .find(|(n, _)| Some(n.to_string()) == first)
-            {
-                Some((name, w)) => quote!(#name: impl crate::Handles<'h, #w>),
-                None => a,
-            }
+        .map(|a| match handle_arrays.iter().find(|(n, _)| *n == a.name) {
+            Some((name, w)) => Arg::new(name, quote!(impl crate::Handles<'h, #w>)),
+            None => a,
         })
         .collect();
     // `'a` is declared only where a parameter or the result names it.
-    let names_lt_a = lifetimes && (args.iter().any(names_a) || names_a(&ret));
+    let names_lt_a = lifetimes && (args.iter().any(|a| names_a(&a.ty)) || names_a(&ret));
     let lt = match (names_lt_a, handle_arrays.is_empty()) {
         (true, true) => quote!(<'a>),
         (true, false) => quote!(<'a, 'h>),
@@ -1033,20 +1026,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
     } else {
         let unchecked = ident(&format!("{}_unchecked", f));
-        let names: Vec<TokenStream> = args
-            .iter()
-            .filter_map(|a| a.clone().into_iter().next())
-            .map(TokenStream::from)
-            .collect();
+        let names: Vec<&Ident> = args.iter().map(|a| &a.name).collect();
         // The `_unchecked` twin takes the handle arrays as they were given.
-        let call_names: Vec<TokenStream> = names
+        let call_names: Vec<Ident> = names
             .iter()
-            .map(
-                |n| match handle_arrays.iter().any(|(h, _)| *h == n.to_string()) {
-                    true => given_ident(&ident(&n.to_string())).into_token_stream(),
-                    false => n.clone(),
-                },
-            )
+            .map(|n| match handle_arrays.iter().any(|(h, _)| h == *n) {
+                true => given_ident(n),
+                false => (*n).clone(),
+            })
             .collect();
         let codes = checks.iter().map(super::checks::render);
         let scope = scope_expr(cx, plan, &device_path);
@@ -1106,30 +1093,36 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // The checks are a named method beside the command's, taking only the
         // arguments they read.
         let validate = ident(&format!("validate_{}", f));
-        let read: Vec<(&TokenStream, &TokenStream)> = inner_args
+        let read: Vec<&Arg> = inner_args
             .iter()
-            .zip(&names)
-            .filter(|(_, n)| checks.iter().any(|c| c.reads().contains(&n.to_string())))
+            .filter(|a| {
+                checks
+                    .iter()
+                    .any(|c| c.reads().contains(&a.name.to_string()))
+            })
             .collect();
         // The checks compare Vulkan's values: a `bool` argument reaches them as the
         // `VkBool32` the command passes on.
-        let is_bool = |n: &TokenStream| bools.contains(&n.to_string());
+        let is_bool = |n: &Ident| bools.contains(&n.to_string());
         let v_args: Vec<TokenStream> = read
             .iter()
-            .map(|(a, n)| match is_bool(n) {
-                true => quote!(#n: vk::Bool32),
-                false => (*a).clone(),
+            .map(|a| match is_bool(&a.name) {
+                true => Arg::new(&a.name, quote!(vk::Bool32)).into_token_stream(),
+                false => a.into_token_stream(),
             })
             .collect();
         let v_names: Vec<TokenStream> = read
             .iter()
-            .map(|(_, n)| match is_bool(n) {
-                true => quote!(vk::Bool32::from(#n)),
-                false => (*n).clone(),
+            .map(|a| {
+                let n = &a.name;
+                match is_bool(n) {
+                    true => quote!(vk::Bool32::from(#n)),
+                    false => quote!(#n),
+                }
             })
             .collect();
         // The checks see handle arrays as slices, so only `'a` can be theirs.
-        let v_lt = if read.iter().any(|(a, _)| names_a(a)) {
+        let v_lt = if read.iter().any(|a| names_a(&a.ty)) {
             quote!(<'a>)
         } else {
             quote!()
@@ -1258,6 +1251,29 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
 }
 
 /// The name a handle array's argument keeps once `name` is its slice of wrappers.
+/// A method parameter: its name, and the type the method takes it as.
+#[derive(Clone)]
+struct Arg {
+    name: Ident,
+    ty: TokenStream,
+}
+
+impl Arg {
+    fn new(name: &Ident, ty: TokenStream) -> Arg {
+        Arg {
+            name: name.clone(),
+            ty,
+        }
+    }
+}
+
+impl ToTokens for Arg {
+    fn to_tokens(&self, out: &mut TokenStream) {
+        let (name, ty) = (&self.name, &self.ty);
+        out.extend(quote!(#name: #ty));
+    }
+}
+
 fn given_ident(name: &proc_macro2::Ident) -> proc_macro2::Ident {
     ident(&format!("{name}_given"))
 }

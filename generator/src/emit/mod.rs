@@ -20,7 +20,7 @@ use crate::model::Model;
 use crate::names;
 use crate::plan::{Plans, Settlement};
 use proc_macro2::TokenStream;
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::path::PathBuf;
 /// One file of the output, relative to the output folder.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -404,114 +404,6 @@ pub fn emit(plans: &Plans) -> Emission {
     emission
 }
 
-/// The emitted extensions whose types the items of extension `ext` name (a member's
-/// or a parameter's type) where no core version defines them: `ext`'s feature
-/// turns theirs on, so that its items compile alone (`VkRayTracingPipelineCreateInfoKHR`
-/// points to `VkPipelineLibraryCreateInfoKHR`, which only `VK_KHR_pipeline_library`
-/// requires).
-/// The extensions whose features the feature of `ext` turns on: those its
-/// `depends` names, then those whose items its own items reference.
-pub(crate) fn feature_deps(model: &Model, ext: &str) -> Vec<String> {
-    let mut deps: Vec<String> = model
-        .extension_depends
-        .get(ext)
-        .map(|d| {
-            model
-                .enabled
-                .iter()
-                .filter(|e| !e.starts_with("VK_VERSION_") && *e != ext && d.contains(e.as_str()))
-                .cloned()
-                .collect()
-        })
-        .unwrap_or_default();
-    for e in referenced_extensions(model, ext) {
-        if !deps.contains(&e) {
-            deps.push(e);
-        }
-    }
-    deps
-}
-
-/// `exts` with every extension their features turn on, transitively.
-pub(crate) fn feature_closure(
-    model: &Model,
-    exts: &std::collections::BTreeSet<String>,
-) -> std::collections::BTreeSet<String> {
-    let mut on = exts.clone();
-    let mut todo: Vec<String> = exts.iter().cloned().collect();
-    while let Some(e) = todo.pop() {
-        for d in feature_deps(model, &e) {
-            if on.insert(d.clone()) {
-                todo.push(d);
-            }
-        }
-    }
-    on
-}
-
-fn referenced_extensions(model: &Model, ext: &str) -> Vec<String> {
-    // Items compiled whenever `ext`'s feature is on: one alternative of their
-    // condition needs `ext` and core versions alone.
-    let gated = |item: &str| {
-        let c = model.condition(item);
-        !c.is_core()
-            && c.expr()
-                .minimal_sets(&|_| None)
-                .unwrap_or_default()
-                .iter()
-                .any(|set| {
-                    set.contains(ext)
-                        && set.iter().all(|n| n == ext || n.starts_with("VK_VERSION_"))
-                })
-    };
-    let mut named: BTreeSet<&str> = BTreeSet::new();
-    for t in model
-        .types
-        .values()
-        .filter(|t| model.emitted.contains(&t.name))
-    {
-        if gated(&t.name) {
-            named.extend(t.members.iter().map(|m| m.type_name.as_str()));
-        }
-    }
-    for c in model
-        .commands
-        .values()
-        .filter(|c| model.emitted.contains(&c.name))
-    {
-        if gated(&c.name) {
-            named.extend(c.params.iter().map(|p| p.type_name.as_str()));
-        }
-    }
-    let mut out: BTreeSet<String> = BTreeSet::new();
-    for t in named {
-        if !model.emitted.contains(t) || !model.types.contains_key(t) {
-            continue;
-        }
-        let c = model.condition(t);
-        if c.is_core() {
-            continue;
-        }
-        let sets = c.expr().minimal_sets(&|_| None).unwrap_or_default();
-        // Defined by a core version, or by `ext` itself: nothing to add.
-        let free = sets
-            .iter()
-            .any(|set| set.iter().all(|n| n.starts_with("VK_VERSION_") || n == ext));
-        if free {
-            continue;
-        }
-        if let Some(smallest) = sets.iter().min_by_key(|set| set.len()) {
-            out.extend(
-                smallest
-                    .iter()
-                    .filter(|n| !n.starts_with("VK_VERSION_") && model.enabled.contains(*n))
-                    .cloned(),
-            );
-        }
-    }
-    out.into_iter().collect()
-}
-
 /// The generated crate's manifest, with one feature per extension (and the
 /// features of the extensions it depends on).
 fn cargo_toml(model: &Model) -> String {
@@ -572,7 +464,7 @@ all_extensions = ["#,
         .iter()
         .filter(|e| !e.starts_with("VK_VERSION_"))
     {
-        let deps: Vec<String> = feature_deps(model, ext)
+        let deps: Vec<String> = crate::plan::features::feature_deps(model, ext)
             .iter()
             .map(|e| format!("{:?}", names::feature(e)))
             .collect();

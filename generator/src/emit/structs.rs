@@ -461,22 +461,11 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
     }
 }
 
-/// The `#[cfg]` of a member's type where it is narrower than its struct's: the
-/// struct's condition does not imply the type's.
+/// The `#[cfg]` of a member's setter where its type's condition is narrower than its
+/// struct's ([`crate::plan::features::member_condition`]).
 fn member_gate(cx: &Context, struct_name: &str, m: &Field) -> Option<TokenStream> {
-    let model = cx.model;
-    let of_type = model.condition(&m.type_name);
-    // ash has every type whatever the features; only tuff's own (wrappers, safe
-    // structs) exist under their `cfg`.
-    let tuffs =
-        model.category(&m.type_name) == Some(Kind::Handle) || cx.facts.is_safe(&m.type_name);
-    if of_type.is_core() || !tuffs {
-        return None;
-    }
-    let of_struct = model.condition(struct_name);
-    (!of_struct.implies(of_type, &|set| super::feature_closure(model, set)))
-        .then(|| cfg_of(model, of_type))
-        .flatten()
+    crate::plan::features::member_condition(cx.model, &cx.facts, struct_name, &m.type_name)
+        .and_then(|c| cfg_of(cx.model, &c))
 }
 
 /// The generated safe type of a struct, or ash's when it has none.

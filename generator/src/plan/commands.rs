@@ -35,6 +35,11 @@ pub enum Param {
         /// May be null.
         optional: bool,
     },
+    /// One number by pointer (`pVertexOffset`): a reference to it.
+    NumberRef {
+        /// May be null.
+        optional: bool,
+    },
     /// An array of structs or values.
     Slice,
     /// Bytes sized by a count parameter.
@@ -61,6 +66,10 @@ pub enum Param {
     InOut,
     /// The value the command writes, returned.
     Output,
+    /// A window-system value the command writes (a Win32 `HANDLE`, a Zircon handle),
+    /// returned: ash spells these as C integers or pointers, some without `Default`,
+    /// so the storage starts as zero bytes.
+    ForeignOutput,
     /// The handle the command creates, returned as a wrapper.
     Created,
     /// Handles the command creates, one per element of an input array.
@@ -118,6 +127,9 @@ pub struct Plan {
     /// Externally synchronized member paths the wrappers cannot lock
     /// (`pNameInfo->object`): the method is `unsafe`, and its caller synchronizes them.
     pub unlocked: Vec<String>,
+    /// The condition the method is compiled under
+    /// ([`super::features::command_condition`]).
+    pub condition: crate::model::Condition,
 }
 
 impl Plan {
@@ -310,7 +322,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (None, Some(Kind::Struct)) => Param::StructRef { optional },
                 // One number by pointer (`pVertexOffset`): a reference, like a struct.
                 (None, None) if super::shape::is_c_scalar(&p.type_name) => {
-                    Param::StructRef { optional }
+                    Param::NumberRef { optional }
                 }
                 (None, Some(Kind::Union)) if cx.facts.union_is_plain(model, &p.type_name) => {
                     Param::StructRef { optional }
@@ -337,7 +349,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 // writes is returned like any output; a pointer to a window-system
                 // object (`Display*`) is one the caller passes in.
                 (None, None) if super::shape::is_foreign_value(model, &p.type_name) => {
-                    Param::Output
+                    Param::ForeignOutput
                 }
                 (None, None) if DISPLAY_CONNECTIONS.iter().any(|(t, _)| *t == p.type_name) => {
                     let kind = DISPLAY_CONNECTIONS
@@ -377,7 +389,11 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         .filter(|p| {
             matches!(
                 p,
-                Param::Output | Param::Created | Param::CreatedArray | Param::Enumerated
+                Param::Output
+                    | Param::ForeignOutput
+                    | Param::Created
+                    | Param::CreatedArray
+                    | Param::Enumerated
             )
         })
         .count();
@@ -459,6 +475,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         same_len,
         changes_draw_state,
         unlocked,
+        condition: super::features::command_condition(model, name),
     })
 }
 

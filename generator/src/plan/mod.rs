@@ -10,6 +10,7 @@
 
 pub mod checks;
 pub mod commands;
+pub mod features;
 pub mod hooks;
 pub mod methods;
 pub mod oracle;

@@ -425,6 +425,7 @@ fn param_settlement(p: &Param) -> Settlement {
             Settlement::Static("taken as a `CStr`: a valid NUL-terminated string".into())
         }
         Param::StructRef { .. }
+        | Param::NumberRef { .. }
         | Param::Slice
         | Param::Bytes
         | Param::BytesOut
@@ -432,7 +433,7 @@ fn param_settlement(p: &Param) -> Settlement {
         | Param::InOut => {
             Settlement::Static("taken as a reference or slice: a valid pointer with its length".into())
         }
-        Param::Output | Param::Enumerated | Param::EnumCount => {
+        Param::Output | Param::ForeignOutput | Param::Enumerated | Param::EnumCount => {
             Settlement::Static("written into storage the wrapper provides".into())
         }
         Param::Count => Settlement::Static("computed from the slice it sizes".into()),
