@@ -34,7 +34,7 @@ impl TypeFacts {
         facts
     }
 
-    /// Whether Vulkan only writes `name` in the emitted API (see [`written_only`]).
+    /// Whether Vulkan only writes `name` in the emitted API (see `written_only`).
     pub fn is_written(&self, name: &str) -> bool {
         self.written.contains(name)
     }
