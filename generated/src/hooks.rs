@@ -8480,3 +8480,45 @@ pub(crate) fn create_buffer_checks(
     }
     Ok(())
 }
+
+/// `pData` of a `vkGet*OpaqueCaptureDescriptorDataEXT` holds the capture data the
+/// device's descriptor-buffer properties size (`size` reads which), so the driver
+/// writes inside the slice.
+#[cfg(feature = "ext_descriptor_buffer")]
+pub(crate) fn capture_data_fits(
+    device: &Device,
+    data: &[u8],
+    size: fn(&vk::PhysicalDeviceDescriptorBufferPropertiesEXT) -> usize,
+    vuid: &'static str,
+) -> Result<()> {
+    if device.ext().ext_descriptor_buffer.is_none() {
+        // The call refuses the missing extension itself.
+        return Ok(());
+    }
+    let physical = device.parent();
+    let instance = physical.parent();
+    if !instance.exts().version(1) {
+        return Err(Error::Misuse(
+            "the capture data size is a Vulkan 1.1 property: make the instance with Vulkan 1.1 or later",
+        ));
+    }
+    let mut props = vk::PhysicalDeviceDescriptorBufferPropertiesEXT::default();
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut props);
+    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
+    unsafe {
+        instance
+            .fns()
+            .get_physical_device_properties2(physical.raw(), &mut p2)
+    };
+    let needed = size(&props);
+    if data.len() < needed {
+        refuse(
+            vuid,
+            format!(
+                "`data` must hold at least {needed} bytes (the device's capture data size), not {}",
+                data.len()
+            ),
+        )?;
+    }
+    Ok(())
+}

@@ -526,7 +526,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 args.push(Arg::new(&name, quote!(*const core::ffi::c_void)));
                 call_args.push(quote!(#name,));
             }
-            Param::BytesOut => {
+            Param::BytesOut | Param::BytesOutUnsized => {
                 args.push(Arg::new(&name, quote!(&mut [u8])));
                 call_args.push(quote!(#name.as_mut_ptr().cast(),));
             }

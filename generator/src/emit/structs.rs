@@ -292,6 +292,20 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
                     }
                 });
             }
+            Member::OpaqueBytes => {
+                let doc = format!(
+                    "Sets `{}`.\n\n# Safety\n\n`value` must hold what the specification of `{}` requires of it, and at least as many bytes as Vulkan reads from it.",
+                    m.name, name
+                );
+                setters.push(quote! {
+                    #[doc = #doc]
+                    #[inline]
+                    pub unsafe fn #setter(mut self, value: &'a [u8]) -> Self {
+                        self.raw.#f = value.as_ptr().cast();
+                        self
+                    }
+                });
+            }
             Member::FixedRef { size } => {
                 let factors = crate::plan::shape::constant_size(size).unwrap_or_default();
                 let len = factors

@@ -46,6 +46,10 @@ pub enum Param {
     Bytes,
     /// Bytes Vulkan writes, sized by a count parameter.
     BytesOut,
+    /// Bytes Vulkan writes, of a size no parameter gives (a device property does:
+    /// the opaque capture data of descriptor buffers), taken as a mutable byte
+    /// slice; the size rule is the method's own.
+    BytesOutUnsized,
     /// A `void*` whose layout another parameter describes (`pData` of an update
     /// template): passed through as a raw pointer, which makes the method `unsafe`.
     RawData,
@@ -373,6 +377,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (_, _) if enumerated => Param::Enumerated,
                 (None, Some(Kind::Struct)) if has_next(cx, &p.type_name) => Param::InOut,
                 (None, _) if p.type_name != "void" => Param::Output,
+                (None, None) => Param::BytesOutUnsized,
                 _ => Param::Raw,
             }
         } else if p.pointers == 2 && p.const_pointees == [false, false] && pp.len.is_empty() {

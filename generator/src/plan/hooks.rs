@@ -146,6 +146,7 @@ const TIMELINE_VALUES: &str =
 const LAYOUT: &str = "checks the layout named against the one the recording's earlier commands leave the subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the recorder follows every barrier, render pass and secondary that changes a layout, in the order the queue executes them)";
 const PRESENTED: &str = "checks each index against the images acquired from the swapchain and not presented since, and the image's layout against the one the device's submissions so far leave it in (the recorder follows every command that changes a layout)";
 const LAYOUT_PASS: &str = "checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, \"the render pass initial layout ... and the previous known layout of the attachment ... must match\")";
+const UNPROVEN_CAPTURE: &str = "checked by the safe methods in every build (the slice against the device's descriptor-buffer capture data size), but no test breaks it: lavapipe 22.3 has no VK_EXT_descriptor_buffer";
 const UNPROVEN_XCB: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests' windows are Xlib ones, and the Xlib query's check of the same count is the one the tests break";
 const UNPROVEN_WAYLAND: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests have no Wayland compositor";
 const UNPROVEN_SURFACE_SUPPORT: &str = "checked by the safe methods in every build (vkGetPhysicalDeviceSurfaceSupportKHR, asked once per swapchain and queue family), but no test breaks it: lavapipe's only queue family presents to every surface";
@@ -1774,6 +1775,76 @@ pub const SPECIALS: &[Special] = &[
             "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269",
             How::Dynamic(FAMILY_COUNT),
         )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetBufferOpaqueCaptureDescriptorDataEXT",
+        check: call(
+            "hooks::capture_data_fits",
+            &[
+                "self",
+                "data",
+                "|p| p.buffer_capture_replay_descriptor_data_size",
+                "\"VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-08073\"",
+            ],
+        ),
+        settles: &[("VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-08073", How::User(UNPROVEN_CAPTURE))],
+        ..NONE
+    },
+    Special {
+        command: "vkGetImageOpaqueCaptureDescriptorDataEXT",
+        check: call(
+            "hooks::capture_data_fits",
+            &[
+                "self",
+                "data",
+                "|p| p.image_capture_replay_descriptor_data_size",
+                "\"VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-08077\"",
+            ],
+        ),
+        settles: &[("VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-08077", How::User(UNPROVEN_CAPTURE))],
+        ..NONE
+    },
+    Special {
+        command: "vkGetImageViewOpaqueCaptureDescriptorDataEXT",
+        check: call(
+            "hooks::capture_data_fits",
+            &[
+                "self",
+                "data",
+                "|p| p.image_view_capture_replay_descriptor_data_size",
+                "\"VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-08081\"",
+            ],
+        ),
+        settles: &[("VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-08081", How::User(UNPROVEN_CAPTURE))],
+        ..NONE
+    },
+    Special {
+        command: "vkGetSamplerOpaqueCaptureDescriptorDataEXT",
+        check: call(
+            "hooks::capture_data_fits",
+            &[
+                "self",
+                "data",
+                "|p| p.sampler_capture_replay_descriptor_data_size",
+                "\"VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-08085\"",
+            ],
+        ),
+        settles: &[("VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-08085", How::User(UNPROVEN_CAPTURE))],
+        ..NONE
+    },
+    Special {
+        command: "vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT",
+        check: call(
+            "hooks::capture_data_fits",
+            &[
+                "self",
+                "data",
+                "|p| p.acceleration_structure_capture_replay_descriptor_data_size",
+                "\"VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089\"",
+            ],
+        ),
+        settles: &[("VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089", How::User(UNPROVEN_CAPTURE))],
         ..NONE
     },
     Special {

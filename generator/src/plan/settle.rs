@@ -381,6 +381,9 @@ fn member_settlement(shape: &Member) -> Settlement {
         Member::StructMut { .. } => Settlement::Static(
             "taken as a mutable borrow of the struct Vulkan writes (required where the pointer is), a valid pointer for as long as the struct lives".into(),
         ),
+        Member::OpaqueBytes => Settlement::Static(
+            "taken as a byte slice, a valid pointer (the setter is `unsafe` for what the bytes hold and how many Vulkan reads)".into(),
+        ),
         Member::FixedRef { .. } => Settlement::Static(
             "taken as a reference to an array of the length the registry gives".into(),
         ),
@@ -429,6 +432,7 @@ fn param_settlement(p: &Param) -> Settlement {
         | Param::Slice
         | Param::Bytes
         | Param::BytesOut
+        | Param::BytesOutUnsized
         | Param::Array
         | Param::InOut => {
             Settlement::Static("taken as a reference or slice: a valid pointer with its length".into())

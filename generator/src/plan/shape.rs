@@ -99,6 +99,10 @@ pub enum Member {
     },
     /// Opaque user data handed back to a callback; never dereferenced by Vulkan.
     UserData,
+    /// Bytes Vulkan reads, of a size no member gives (capture data, a driver's
+    /// private data): a byte slice through an `unsafe` setter, whose caller
+    /// vouches for the contents and their size.
+    OpaqueBytes,
     /// A pointer to a window-system object: set through an `unsafe` setter.
     Platform,
     /// A window-system value (an X11 `Window`, an `xcb_window_t`): set through an
@@ -208,7 +212,7 @@ pub fn struct_members(model: &Model, facts: &TypeFacts, name: &str) -> Vec<(Fiel
     t.members
         .iter()
         .map(|m| {
-            let shape = match member_shape(model, facts, m, &counts, &t.members) {
+            let shape = match member_shape(model, facts, &t.name, m, &counts, &t.members) {
                 Member::Handle { .. } if super::hooks::nullable(name, &m.name) => {
                     Member::Handle { optional: true }
                 }
@@ -233,9 +237,17 @@ fn math_count(math: &str) -> Option<String> {
         .then(|| math[start..end].to_owned())
 }
 
+/// `void*` members that point to a window-system object rather than to bytes:
+/// MoltenVK's view (an `NSView` or `CAMetalLayer`).
+const WINDOW_OBJECT_MEMBERS: &[(&str, &str)] = &[
+    ("VkMacOSSurfaceCreateInfoMVK", "pView"),
+    ("VkIOSSurfaceCreateInfoMVK", "pView"),
+];
+
 fn member_shape(
     model: &Model,
     facts: &TypeFacts,
+    owner: &str,
     m: &Field,
     counts: &[String],
     members: &[Field],
@@ -329,7 +341,9 @@ fn member_shape(
             ),
         };
     }
-    if category.is_none() && !is_c_scalar(&m.type_name) && m.type_name != "void" {
+    // A `void*` that names a window-system object (MoltenVK's `NSView`), not bytes.
+    let object = WINDOW_OBJECT_MEMBERS.contains(&(owner, m.name.as_str()));
+    if category.is_none() && !is_c_scalar(&m.type_name) && (m.type_name != "void" || object) {
         return Member::Platform;
     }
     if !m.is_const {
@@ -377,6 +391,9 @@ fn member_shape(
                     size: size.to_owned(),
                 };
             }
+        }
+        if first_len.is_none() && m.type_name == "void" && m.is_const {
+            return Member::OpaqueBytes;
         }
         return Member::Unsupported(
             "a pointer whose length the registry gives as an expression".into(),

@@ -269,27 +269,29 @@ The caller upholds the rules that [`Self::set_descriptor_buffer_offsets_ext`] ch
 impl Device {
     /**`vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT`
 
-# Safety
-
-`data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-None-08088` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
-- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`accelerationStructureCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089` (*yours*; checked by the safe methods in every build): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`accelerationStructureCaptureReplayDescriptorDataSize` bytes in size
 - `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-device-08090` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
 - `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkAccelerationStructureCaptureDescriptorDataInfoEXT structure*/
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkAccelerationStructureCaptureDescriptorDataInfoEXT structure
+- `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-parameter` (*by the types*): `pData` must be a pointer value*/
     #[doc(alias = "vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT")]
     #[inline]
-    pub unsafe fn get_acceleration_structure_opaque_capture_descriptor_data_ext<'a>(
+    pub fn get_acceleration_structure_opaque_capture_descriptor_data_ext<'a>(
         &self,
         info: &AccelerationStructureCaptureDescriptorDataInfoEXT<'a>,
-        data: *mut ::core::ffi::c_void,
+        data: &mut [u8],
     ) -> Result<()> {
+        crate::hooks::capture_data_fits(
+            self,
+            data,
+            |p| p.acceleration_structure_capture_replay_descriptor_data_size,
+            "VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089",
+        )?;
         {
             let r = self
                 .validate_get_acceleration_structure_opaque_capture_descriptor_data_ext(
@@ -310,14 +312,14 @@ The rules of `vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT` that app
 
 # Safety
 
-The caller upholds the rules that [`Self::get_acceleration_structure_opaque_capture_descriptor_data_ext`] checks at run time (those of the structs it takes). `data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.*/
+The caller upholds the rules that [`Self::get_acceleration_structure_opaque_capture_descriptor_data_ext`] checks at run time: `VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_acceleration_structure_opaque_capture_descriptor_data_ext_unchecked<
         'a,
     >(
         &self,
         info: &AccelerationStructureCaptureDescriptorDataInfoEXT<'a>,
-        data: *mut ::core::ffi::c_void,
+        data: &mut [u8],
     ) -> Result<()> {
         let fp = self
             .ext()
@@ -331,7 +333,7 @@ The caller upholds the rules that [`Self::get_acceleration_structure_opaque_capt
                 self.raw(),
                 info as *const AccelerationStructureCaptureDescriptorDataInfoEXT<'a>
                     as *const _,
-                data,
+                data.as_mut_ptr().cast(),
             )
         };
         if r.as_raw() < 0 {
@@ -344,26 +346,45 @@ The caller upholds the rules that [`Self::get_acceleration_structure_opaque_capt
 impl Device {
     /**`vkGetBufferOpaqueCaptureDescriptorDataEXT`
 
-# Safety
-
-`data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetBufferOpaqueCaptureDescriptorDataEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetBufferOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-None-08072` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
-- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-08073` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`bufferCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-08073` (*yours*; checked by the safe methods in every build): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`bufferCaptureReplayDescriptorDataSize` bytes in size
 - `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-device-08074` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
 - `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferCaptureDescriptorDataInfoEXT structure*/
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferCaptureDescriptorDataInfoEXT structure
+- `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-parameter` (*by the types*): `pData` must be a pointer value*/
     #[doc(alias = "vkGetBufferOpaqueCaptureDescriptorDataEXT")]
     #[inline]
-    pub unsafe fn get_buffer_opaque_capture_descriptor_data_ext<'a>(
+    pub fn get_buffer_opaque_capture_descriptor_data_ext<'a>(
         &self,
         info: &BufferCaptureDescriptorDataInfoEXT<'a>,
-        data: *mut ::core::ffi::c_void,
+        data: &mut [u8],
+    ) -> Result<()> {
+        crate::hooks::capture_data_fits(
+            self,
+            data,
+            |p| p.buffer_capture_replay_descriptor_data_size,
+            "VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-08073",
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_buffer_opaque_capture_descriptor_data_ext_unchecked(info, data)
+        }
+    }
+    /**`vkGetBufferOpaqueCaptureDescriptorDataEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_buffer_opaque_capture_descriptor_data_ext`] checks at run time: `VUID-vkGetBufferOpaqueCaptureDescriptorDataEXT-pData-08073`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_buffer_opaque_capture_descriptor_data_ext_unchecked<'a>(
+        &self,
+        info: &BufferCaptureDescriptorDataInfoEXT<'a>,
+        data: &mut [u8],
     ) -> Result<()> {
         let fp = self
             .ext()
@@ -376,7 +397,7 @@ The rules of `vkGetBufferOpaqueCaptureDescriptorDataEXT` that apply to this crat
             fp(
                 self.raw(),
                 info as *const BufferCaptureDescriptorDataInfoEXT<'a> as *const _,
-                data,
+                data.as_mut_ptr().cast(),
             )
         };
         if r.as_raw() < 0 {
@@ -547,26 +568,45 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_size_ext`] c
     }
     /**`vkGetImageOpaqueCaptureDescriptorDataEXT`
 
-# Safety
-
-`data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetImageOpaqueCaptureDescriptorDataEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetImageOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-None-08076` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
-- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-08077` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`imageCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-08077` (*yours*; checked by the safe methods in every build): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`imageCaptureReplayDescriptorDataSize` bytes in size
 - `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-device-08078` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
 - `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageCaptureDescriptorDataInfoEXT structure*/
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageCaptureDescriptorDataInfoEXT structure
+- `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-parameter` (*by the types*): `pData` must be a pointer value*/
     #[doc(alias = "vkGetImageOpaqueCaptureDescriptorDataEXT")]
     #[inline]
-    pub unsafe fn get_image_opaque_capture_descriptor_data_ext<'a>(
+    pub fn get_image_opaque_capture_descriptor_data_ext<'a>(
         &self,
         info: &ImageCaptureDescriptorDataInfoEXT<'a>,
-        data: *mut ::core::ffi::c_void,
+        data: &mut [u8],
+    ) -> Result<()> {
+        crate::hooks::capture_data_fits(
+            self,
+            data,
+            |p| p.image_capture_replay_descriptor_data_size,
+            "VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-08077",
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_image_opaque_capture_descriptor_data_ext_unchecked(info, data)
+        }
+    }
+    /**`vkGetImageOpaqueCaptureDescriptorDataEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_opaque_capture_descriptor_data_ext`] checks at run time: `VUID-vkGetImageOpaqueCaptureDescriptorDataEXT-pData-08077`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_image_opaque_capture_descriptor_data_ext_unchecked<'a>(
+        &self,
+        info: &ImageCaptureDescriptorDataInfoEXT<'a>,
+        data: &mut [u8],
     ) -> Result<()> {
         let fp = self
             .ext()
@@ -579,7 +619,7 @@ The rules of `vkGetImageOpaqueCaptureDescriptorDataEXT` that apply to this crate
             fp(
                 self.raw(),
                 info as *const ImageCaptureDescriptorDataInfoEXT<'a> as *const _,
-                data,
+                data.as_mut_ptr().cast(),
             )
         };
         if r.as_raw() < 0 {
@@ -589,26 +629,45 @@ The rules of `vkGetImageOpaqueCaptureDescriptorDataEXT` that apply to this crate
     }
     /**`vkGetImageViewOpaqueCaptureDescriptorDataEXT`
 
-# Safety
-
-`data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetImageViewOpaqueCaptureDescriptorDataEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetImageViewOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageViewOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-None-08080` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
-- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-08081` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`imageViewCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-08081` (*yours*; checked by the safe methods in every build): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`imageViewCaptureReplayDescriptorDataSize` bytes in size
 - `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-device-08082` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
 - `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageViewCaptureDescriptorDataInfoEXT structure*/
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkImageViewCaptureDescriptorDataInfoEXT structure
+- `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-parameter` (*by the types*): `pData` must be a pointer value*/
     #[doc(alias = "vkGetImageViewOpaqueCaptureDescriptorDataEXT")]
     #[inline]
-    pub unsafe fn get_image_view_opaque_capture_descriptor_data_ext<'a>(
+    pub fn get_image_view_opaque_capture_descriptor_data_ext<'a>(
         &self,
         info: &ImageViewCaptureDescriptorDataInfoEXT<'a>,
-        data: *mut ::core::ffi::c_void,
+        data: &mut [u8],
+    ) -> Result<()> {
+        crate::hooks::capture_data_fits(
+            self,
+            data,
+            |p| p.image_view_capture_replay_descriptor_data_size,
+            "VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-08081",
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_image_view_opaque_capture_descriptor_data_ext_unchecked(info, data)
+        }
+    }
+    /**`vkGetImageViewOpaqueCaptureDescriptorDataEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_view_opaque_capture_descriptor_data_ext`] checks at run time: `VUID-vkGetImageViewOpaqueCaptureDescriptorDataEXT-pData-08081`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_image_view_opaque_capture_descriptor_data_ext_unchecked<'a>(
+        &self,
+        info: &ImageViewCaptureDescriptorDataInfoEXT<'a>,
+        data: &mut [u8],
     ) -> Result<()> {
         let fp = self
             .ext()
@@ -621,7 +680,7 @@ The rules of `vkGetImageViewOpaqueCaptureDescriptorDataEXT` that apply to this c
             fp(
                 self.raw(),
                 info as *const ImageViewCaptureDescriptorDataInfoEXT<'a> as *const _,
-                data,
+                data.as_mut_ptr().cast(),
             )
         };
         if r.as_raw() < 0 {
@@ -631,26 +690,45 @@ The rules of `vkGetImageViewOpaqueCaptureDescriptorDataEXT` that apply to this c
     }
     /**`vkGetSamplerOpaqueCaptureDescriptorDataEXT`
 
-# Safety
-
-`data` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetSamplerOpaqueCaptureDescriptorDataEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkGetSamplerOpaqueCaptureDescriptorDataEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetSamplerOpaqueCaptureDescriptorDataEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-None-08084` (*yours*; explicit rule): The `descriptorBufferCaptureReplay` feature must be enabled
-- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-08085` (*yours*; explicit rule): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`samplerCaptureReplayDescriptorDataSize` bytes in size
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-08085` (*yours*; checked by the safe methods in every build): `pData` must point to a buffer that is at least VkPhysicalDeviceDescriptorBufferPropertiesEXT::`samplerCaptureReplayDescriptorDataSize` bytes in size
 - `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-device-08086` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-parameter` (*yours*; passed as ash's raw type): `pData` must be a pointer value
 - `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
-- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkSamplerCaptureDescriptorDataInfoEXT structure*/
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkSamplerCaptureDescriptorDataInfoEXT structure
+- `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-parameter` (*by the types*): `pData` must be a pointer value*/
     #[doc(alias = "vkGetSamplerOpaqueCaptureDescriptorDataEXT")]
     #[inline]
-    pub unsafe fn get_sampler_opaque_capture_descriptor_data_ext<'a>(
+    pub fn get_sampler_opaque_capture_descriptor_data_ext<'a>(
         &self,
         info: &SamplerCaptureDescriptorDataInfoEXT<'a>,
-        data: *mut ::core::ffi::c_void,
+        data: &mut [u8],
+    ) -> Result<()> {
+        crate::hooks::capture_data_fits(
+            self,
+            data,
+            |p| p.sampler_capture_replay_descriptor_data_size,
+            "VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-08085",
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_sampler_opaque_capture_descriptor_data_ext_unchecked(info, data)
+        }
+    }
+    /**`vkGetSamplerOpaqueCaptureDescriptorDataEXT` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_sampler_opaque_capture_descriptor_data_ext`] checks at run time: `VUID-vkGetSamplerOpaqueCaptureDescriptorDataEXT-pData-08085`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_sampler_opaque_capture_descriptor_data_ext_unchecked<'a>(
+        &self,
+        info: &SamplerCaptureDescriptorDataInfoEXT<'a>,
+        data: &mut [u8],
     ) -> Result<()> {
         let fp = self
             .ext()
@@ -663,7 +741,7 @@ The rules of `vkGetSamplerOpaqueCaptureDescriptorDataEXT` that apply to this cra
             fp(
                 self.raw(),
                 info as *const SamplerCaptureDescriptorDataInfoEXT<'a> as *const _,
-                data,
+                data.as_mut_ptr().cast(),
             )
         };
         if r.as_raw() < 0 {

@@ -85,7 +85,7 @@ The caller upholds the rules that [`Self::bind_optical_flow_session_image_nv`] c
 
 # Safety
 
-The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-VkOpticalFlowSessionCreateInfoNV-width-07581`: `width` must be greater than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::minWidth` and less than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::maxWidth`
 - `VUID-VkOpticalFlowSessionCreateInfoNV-height-07582`: `height` must be greater than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::minHeight` and less than or equal to `VkPhysicalDeviceOpticalFlowPropertiesNV::maxHeight`
@@ -99,7 +99,6 @@ The caller upholds these 13 rules that no check of this method enforces (its com
 - `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07590`: `VK_OPTICAL_FLOW_SESSION_CREATE_ENABLE_GLOBAL_FLOW_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::globalFlowSupported` is `VK_FALSE`
 - `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07591`: `VK_OPTICAL_FLOW_SESSION_CREATE_ALLOW_REGIONS_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::maxNumRegionsOfInterest` is 0
 - `VUID-VkOpticalFlowSessionCreateInfoNV-flags-07592`: `VK_OPTICAL_FLOW_SESSION_CREATE_BOTH_DIRECTIONS_BIT_NV` must not be set in `flags` if `VkPhysicalDeviceOpticalFlowPropertiesNV::bidirectionalFlowSupported` is `VK_FALSE`
-- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-pPrivateData-parameter`: `pPrivateData` must be a pointer value
 
 # Valid usage
 

@@ -526,8 +526,8 @@ impl<'a> ImageViewCaptureDescriptorDataInfoEXT<'a> {
 
 The rules of `VkOpaqueCaptureDescriptorDataCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpaqueCaptureDescriptorDataCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpaqueCaptureDescriptorDataCreateInfoEXT-opaqueCaptureDescriptorData-parameter` (*yours*; not settable safely): `opaqueCaptureDescriptorData` must be a pointer value
-- `VUID-VkOpaqueCaptureDescriptorDataCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPAQUE_CAPTURE_DESCRIPTOR_DATA_CREATE_INFO_EXT`*/
+- `VUID-VkOpaqueCaptureDescriptorDataCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPAQUE_CAPTURE_DESCRIPTOR_DATA_CREATE_INFO_EXT`
+- `VUID-VkOpaqueCaptureDescriptorDataCreateInfoEXT-opaqueCaptureDescriptorData-parameter` (*by the types*): `opaqueCaptureDescriptorData` must be a pointer value*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -539,6 +539,19 @@ safe_struct!(
     #[cfg(feature = "ext_descriptor_buffer")] OpaqueCaptureDescriptorDataCreateInfoEXT,
     'a; zeroed chained
 );
+#[cfg(feature = "ext_descriptor_buffer")]
+impl<'a> OpaqueCaptureDescriptorDataCreateInfoEXT<'a> {
+    /**Sets `opaqueCaptureDescriptorData`.
+
+# Safety
+
+`value` must hold what the specification of `VkOpaqueCaptureDescriptorDataCreateInfoEXT` requires of it, and at least as many bytes as Vulkan reads from it.*/
+    #[inline]
+    pub unsafe fn opaque_capture_descriptor_data(mut self, value: &'a [u8]) -> Self {
+        self.raw.opaque_capture_descriptor_data = value.as_ptr().cast();
+        self
+    }
+}
 #[cfg(feature = "ext_descriptor_buffer")]
 unsafe impl<'a> Extends<BufferCreateInfo<'a>>
 for OpaqueCaptureDescriptorDataCreateInfoEXT<'a> {}

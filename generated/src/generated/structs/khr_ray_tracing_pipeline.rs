@@ -354,4 +354,14 @@ impl<'a> RayTracingShaderGroupCreateInfoKHR<'a> {
         self.raw.intersection_shader = value;
         self
     }
+    /**Sets `pShaderGroupCaptureReplayHandle`.
+
+# Safety
+
+`value` must hold what the specification of `VkRayTracingShaderGroupCreateInfoKHR` requires of it, and at least as many bytes as Vulkan reads from it.*/
+    #[inline]
+    pub unsafe fn shader_group_capture_replay_handle(mut self, value: &'a [u8]) -> Self {
+        self.raw.p_shader_group_capture_replay_handle = value.as_ptr().cast();
+        self
+    }
 }

@@ -31,4 +31,14 @@ impl<'a> MacOSSurfaceCreateInfoMVK<'a> {
         self.raw.flags = value;
         self
     }
+    /**Sets `pView`.
+
+# Safety
+
+`value` must be a valid window-system object that outlives every Vulkan object created from this struct.*/
+    #[inline]
+    pub unsafe fn view(mut self, value: *const ::core::ffi::c_void) -> Self {
+        self.raw.p_view = value;
+        self
+    }
 }

@@ -197,8 +197,8 @@ impl<'a> OpticalFlowSessionCreateInfoNV<'a> {
 
 The rules of `VkOpticalFlowSessionCreatePrivateDataInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkOpticalFlowSessionCreatePrivateDataInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-pPrivateData-parameter` (*yours*; not settable safely): `pPrivateData` must be a pointer value
-- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPTICAL_FLOW_SESSION_CREATE_PRIVATE_DATA_INFO_NV`*/
+- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_OPTICAL_FLOW_SESSION_CREATE_PRIVATE_DATA_INFO_NV`
+- `VUID-VkOpticalFlowSessionCreatePrivateDataInfoNV-pPrivateData-parameter` (*by the types*): `pPrivateData` must be a pointer value*/
 #[cfg(feature = "nv_optical_flow")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -222,6 +222,16 @@ impl<'a> OpticalFlowSessionCreatePrivateDataInfoNV<'a> {
     #[inline]
     pub fn size(mut self, value: u32) -> Self {
         self.raw.size = value;
+        self
+    }
+    /**Sets `pPrivateData`.
+
+# Safety
+
+`value` must hold what the specification of `VkOpticalFlowSessionCreatePrivateDataInfoNV` requires of it, and at least as many bytes as Vulkan reads from it.*/
+    #[inline]
+    pub unsafe fn private_data(mut self, value: &'a [u8]) -> Self {
+        self.raw.p_private_data = value.as_ptr().cast();
         self
     }
 }
