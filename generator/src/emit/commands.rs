@@ -526,6 +526,17 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 args.push(Arg::new(&name, quote!(*const core::ffi::c_void)));
                 call_args.push(quote!(#name,));
             }
+            Param::SliceOfSlices => {
+                lifetimes = true;
+                let ty = spelled(model, &cx.facts, &p.type_name);
+                let ptrs = ident(&format!("{name}_ptrs"));
+                args.push(Arg::new(&name, quote!(&[&[#ty]])));
+                pre.push(quote! {
+                    let #ptrs: smallvec::SmallVec<[*const #ty; 4]> =
+                        #name.iter().map(|s| s.as_ptr()).collect();
+                });
+                call_args.push(quote!(#ptrs.as_ptr(),));
+            }
             Param::BytesOut | Param::BytesOutUnsized => {
                 args.push(Arg::new(&name, quote!(&mut [u8])));
                 call_args.push(quote!(#name.as_mut_ptr().cast(),));

@@ -42,6 +42,10 @@ pub enum Param {
     },
     /// An array of structs or values.
     Slice,
+    /// An array of pointers to arrays of plain structs or numbers
+    /// (`ppBuildRangeInfos`, one array per build info): a slice of slices, whose
+    /// pointers the method lays out for the call.
+    SliceOfSlices,
     /// Bytes sized by a count parameter.
     Bytes,
     /// Bytes Vulkan writes, sized by a count parameter.
@@ -380,6 +384,15 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (None, None) => Param::BytesOutUnsized,
                 _ => Param::Raw,
             }
+        } else if p.pointers == 2
+            && p.const_pointees == [true, true]
+            && matches!(pp.len.first(), Some(LenEntry::Reference(parts)) if parts.len() == 1)
+            && (super::shape::is_c_scalar(&p.type_name)
+                || (category == Some(Kind::Struct)
+                    && !cx.facts.is_safe(&p.type_name)
+                    && !cx.facts.has_lifetime(&p.type_name)))
+        {
+            Param::SliceOfSlices
         } else if p.pointers == 2 && p.const_pointees == [false, false] && pp.len.is_empty() {
             // A pointer the command writes (`AHardwareBuffer** pBuffer`, `void**
             // ppData` of a host mapping): returned as the raw pointer it is.
@@ -453,7 +466,11 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 q.parsed.len.first().and_then(LenEntry::other_param) == Some(count.as_str())
                     && matches!(
                         shape,
-                        Param::Slice | Param::HandleSlice | Param::Bytes | Param::BytesOut
+                        Param::Slice
+                            | Param::SliceOfSlices
+                            | Param::HandleSlice
+                            | Param::Bytes
+                            | Param::BytesOut
                     )
             })
             .map(|(q, _)| q)

@@ -147,6 +147,7 @@ const LAYOUT: &str = "checks the layout named against the one the recording's ea
 const PRESENTED: &str = "checks each index against the images acquired from the swapchain and not presented since, and the image's layout against the one the device's submissions so far leave it in (the recorder follows every command that changes a layout)";
 const LAYOUT_PASS: &str = "checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, \"the render pass initial layout ... and the previous known layout of the attachment ... must match\")";
 const UNPROVEN_CAPTURE: &str = "checked by the safe methods in every build (the slice against the device's descriptor-buffer capture data size), but no test breaks it: lavapipe 22.3 has no VK_EXT_descriptor_buffer";
+const UNPROVEN_ACCELERATION: &str = "checked by the safe methods in every build (each build info's range array against its geometry count), but no test breaks it: lavapipe 22.3 has no VK_KHR_acceleration_structure";
 const UNPROVEN_XCB: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests' windows are Xlib ones, and the Xlib query's check of the same count is the one the tests break";
 const UNPROVEN_WAYLAND: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests have no Wayland compositor";
 const UNPROVEN_SURFACE_SUPPORT: &str = "checked by the safe methods in every build (vkGetPhysicalDeviceSurfaceSupportKHR, asked once per swapchain and queue family), but no test breaks it: lavapipe's only queue family presents to every surface";
@@ -1845,6 +1846,32 @@ pub const SPECIALS: &[Special] = &[
             ],
         ),
         settles: &[("VUID-vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT-pData-08089", How::User(UNPROVEN_CAPTURE))],
+        ..NONE
+    },
+    Special {
+        command: "vkBuildAccelerationStructuresKHR",
+        check: call(
+            "hooks::per_geometry_fits",
+            &["infos", "build_range_infos", "Some(\"VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676\")"],
+        ),
+        settles: &[("VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676", How::User(UNPROVEN_ACCELERATION))],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBuildAccelerationStructuresKHR",
+        check: call(
+            "hooks::per_geometry_fits",
+            &["infos", "build_range_infos", "Some(\"VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676\")"],
+        ),
+        settles: &[("VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676", How::User(UNPROVEN_ACCELERATION))],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBuildAccelerationStructuresIndirectKHR",
+        check: call(
+            "hooks::per_geometry_fits",
+            &["infos", "max_primitive_counts", "None"],
+        ),
         ..NONE
     },
     Special {

@@ -433,6 +433,7 @@ fn param_settlement(p: &Param) -> Settlement {
         | Param::Bytes
         | Param::BytesOut
         | Param::BytesOutUnsized
+        | Param::SliceOfSlices
         | Param::Array
         | Param::InOut => {
             Settlement::Static("taken as a reference or slice: a valid pointer with its length".into())

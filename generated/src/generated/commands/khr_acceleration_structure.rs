@@ -6,10 +6,6 @@ use super::*;
 impl Device {
     /**`vkBuildAccelerationStructuresKHR`
 
-# Safety
-
-`build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBuildAccelerationStructuresKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -48,7 +44,7 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-firstVertex-03770` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, if the corresponding geometry uses indices, its `firstVertex` member must have the same value which was specified when …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03801` (*yours*; explicit rule): For each element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the corresponding `ppBuildRangeInfos`\[i\]\[j\].`primitiveCount` must …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03675` (*yours*; explicit rule): For each `pInfos`\[i\], `dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build …
-- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; explicit rule): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; checked by the safe methods in every build): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
 - `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
 - `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03722` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to host-visible device memory
@@ -63,11 +59,11 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03774` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.hostAddress` must be a valid host address
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03778` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, `geometry.instances.data.hostAddress` must be a valid host address
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03779` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each …
-- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*yours*; passed as ash's raw type): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03775` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to memory that was not allocated with multiple instances
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03776` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to memory that …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03777` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-04930` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR` with `VK_BUILD_ACCELERATION_STRUCTURE_MOTION_BIT_NV` set, each …
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*checked*): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
 - `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
 - `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
 - `VUID-vkBuildAccelerationStructuresKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
@@ -75,12 +71,26 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkAccelerationStructureBuildGeometryInfoKHR structures*/
     #[doc(alias = "vkBuildAccelerationStructuresKHR")]
     #[inline]
-    pub unsafe fn build_acceleration_structures_khr<'a>(
+    pub fn build_acceleration_structures_khr<'a>(
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
+        if build_range_infos.len() != infos.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter",
+                message: format!(
+                    "`build_range_infos` has {} elements where `infos` has {}",
+                    build_range_infos.len(), infos.len()
+                ),
+            });
+        }
+        crate::hooks::per_geometry_fits(
+            infos,
+            build_range_infos,
+            Some("VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676"),
+        )?;
         {
             let r = self
                 .validate_build_acceleration_structures_khr(deferred_operation, infos);
@@ -100,13 +110,13 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 
 # Safety
 
-The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_acceleration_structures_khr_unchecked<'a>(
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
@@ -114,6 +124,9 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
             .build_acceleration_structures_khr;
+        let build_range_infos_ptrs: smallvec::SmallVec<
+            [*const vk::AccelerationStructureBuildRangeInfoKHR; 4],
+        > = build_range_infos.iter().map(|s| s.as_ptr()).collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
@@ -121,7 +134,7 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
                 deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
                 infos.len() as u32,
                 infos.as_ptr().cast(),
-                build_range_infos,
+                build_range_infos_ptrs.as_ptr(),
             )
         };
         if r.as_raw() < 0 {
@@ -678,10 +691,6 @@ The caller upholds the rules that [`Self::write_acceleration_structures_properti
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBuildAccelerationStructuresIndirectKHR`
 
-# Safety
-
-`max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresIndirectKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
-
 # Valid usage
 
 The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBuildAccelerationStructuresIndirectKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -757,9 +766,9 @@ The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this cr
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-03651` (*yours*; explicit rule): Each VkAccelerationStructureBuildRangeInfoKHR structure referenced by any element of `pIndirectDeviceAddresses` must be a valid VkAccelerationStructureBuildRangeInfoKHR structure
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pInfos-03652` (*yours*; explicit rule): `pInfos`\[i\].`dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build operation, as …
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-ppMaxPrimitiveCounts-03653` (*yours*; explicit rule): Each `ppMaxPrimitiveCounts`\[i\]\[j\] must be greater than or equal to the the `primitiveCount` value specified by the VkAccelerationStructureBuildRangeInfoKHR structure located at …
-- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-ppMaxPrimitiveCounts-parameter` (*yours*; passed as ash's raw type): `ppMaxPrimitiveCounts` must be a valid pointer to an array of `infoCount` `uint32_t` values
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter` (*checked*): `pIndirectDeviceAddresses` must be a valid pointer to an array of `infoCount` VkDeviceAddress values
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter` (*checked*): `pIndirectStrides` must be a valid pointer to an array of `infoCount` `uint32_t` values
+- `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-ppMaxPrimitiveCounts-parameter` (*checked*): `ppMaxPrimitiveCounts` must be a valid pointer to an array of `infoCount` `uint32_t` values
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
@@ -769,12 +778,12 @@ The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this cr
 - `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBuildAccelerationStructuresIndirectKHR")]
     #[inline]
-    pub unsafe fn build_acceleration_structures_indirect_khr<'a>(
+    pub fn build_acceleration_structures_indirect_khr<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         indirect_device_addresses: &[vk::DeviceAddress],
         indirect_strides: &[u32],
-        max_primitive_counts: *const *const u32,
+        max_primitive_counts: &[&[u32]],
     ) -> Result<()> {
         if indirect_device_addresses.len() != infos.len() {
             return Err(Error::Validation {
@@ -794,6 +803,16 @@ The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this cr
                 ),
             });
         }
+        if max_primitive_counts.len() != infos.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-ppMaxPrimitiveCounts-parameter",
+                message: format!(
+                    "`max_primitive_counts` has {} elements where `infos` has {}",
+                    max_primitive_counts.len(), infos.len()
+                ),
+            });
+        }
+        crate::hooks::per_geometry_fits(infos, max_primitive_counts, None)?;
         {
             let r = self.validate_build_acceleration_structures_indirect_khr(infos);
             r?;
@@ -813,14 +832,14 @@ The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this cr
 
 # Safety
 
-The caller upholds the rules that [`Self::build_acceleration_structures_indirect_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter`, and those of the structs it takes. `max_primitive_counts` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresIndirectKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_indirect_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectDeviceAddresses-parameter`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-pIndirectStrides-parameter`, `VUID-vkCmdBuildAccelerationStructuresIndirectKHR-ppMaxPrimitiveCounts-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_acceleration_structures_indirect_khr_unchecked<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
         indirect_device_addresses: &[vk::DeviceAddress],
         indirect_strides: &[u32],
-        max_primitive_counts: *const *const u32,
+        max_primitive_counts: &[&[u32]],
     ) -> Result<()> {
         let fp = self
             .device()
@@ -830,6 +849,10 @@ The caller upholds the rules that [`Self::build_acceleration_structures_indirect
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
             .cmd_build_acceleration_structures_indirect_khr;
         {
+            let max_primitive_counts_ptrs: smallvec::SmallVec<[*const u32; 4]> = max_primitive_counts
+                .iter()
+                .map(|s| s.as_ptr())
+                .collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
@@ -838,7 +861,7 @@ The caller upholds the rules that [`Self::build_acceleration_structures_indirect
                     infos.as_ptr().cast(),
                     indirect_device_addresses.as_ptr().cast(),
                     indirect_strides.as_ptr().cast(),
-                    max_primitive_counts,
+                    max_primitive_counts_ptrs.as_ptr(),
                 )
             };
             self.state_changed();
@@ -864,10 +887,6 @@ The caller upholds the rules that [`Self::build_acceleration_structures_indirect
         Ok(())
     }
     /**`vkCmdBuildAccelerationStructuresKHR`
-
-# Safety
-
-`build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
 
 # Valid usage
 
@@ -935,8 +954,8 @@ The rules of `vkCmdBuildAccelerationStructuresKHR` that apply to this crate's AP
 - `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03814` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, if `geometry.instances.data.deviceAddress` is the address of a …
 - `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-06707` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each …
 - `VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03675` (*yours*; explicit rule): For each `pInfos`\[i\], `dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build …
-- `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; explicit rule): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
-- `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*yours*; passed as ash's raw type): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
+- `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; checked by the safe methods in every build): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
+- `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*checked*): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
 - `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
 - `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
 - `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
@@ -946,11 +965,25 @@ The rules of `vkCmdBuildAccelerationStructuresKHR` that apply to this crate's AP
 - `VUID-vkCmdBuildAccelerationStructuresKHR-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBuildAccelerationStructuresKHR")]
     #[inline]
-    pub unsafe fn build_acceleration_structures_khr<'a>(
+    pub fn build_acceleration_structures_khr<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
     ) -> Result<()> {
+        if build_range_infos.len() != infos.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter",
+                message: format!(
+                    "`build_range_infos` has {} elements where `infos` has {}",
+                    build_range_infos.len(), infos.len()
+                ),
+            });
+        }
+        crate::hooks::per_geometry_fits(
+            infos,
+            build_range_infos,
+            Some("VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676"),
+        )?;
         {
             let r = self.validate_build_acceleration_structures_khr(infos);
             r?;
@@ -965,12 +998,12 @@ The rules of `vkCmdBuildAccelerationStructuresKHR` that apply to this crate's AP
 
 # Safety
 
-The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkCmdBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676`, `VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_acceleration_structures_khr_unchecked<'a>(
         &mut self,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
     ) -> Result<()> {
         let fp = self
             .device()
@@ -980,13 +1013,16 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
             .cmd_build_acceleration_structures_khr;
         {
+            let build_range_infos_ptrs: smallvec::SmallVec<
+                [*const vk::AccelerationStructureBuildRangeInfoKHR; 4],
+            > = build_range_infos.iter().map(|s| s.as_ptr()).collect();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
                     self.raw(),
                     infos.len() as u32,
                     infos.as_ptr().cast(),
-                    build_range_infos,
+                    build_range_infos_ptrs.as_ptr(),
                 )
             };
             self.state_changed();
