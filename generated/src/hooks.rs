@@ -7271,8 +7271,8 @@ pub(crate) fn surface_supported<'s>(
 }
 
 /// As [`surface_supported`], for the device's physical device: tuff's devices have
-/// one.
-#[cfg(feature = "khr_surface")]
+/// one. (Only the device-group query of `VK_KHR_swapchain` asks.)
+#[cfg(feature = "khr_swapchain")]
 pub(crate) fn device_surface_supported(
     device: &Device,
     surface: &SurfaceKHR,
