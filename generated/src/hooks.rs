@@ -3090,20 +3090,11 @@ fn check_workgroup_subgroups(
 
 /// The device's default `subgroupSize` (Vulkan 1.1), or 0 where it cannot be asked.
 fn subgroup_size(device: &Device) -> u32 {
-    let physical = device.parent();
-    let instance = physical.parent();
-    let version = physical.get_properties().api_version;
-    if !instance.exts().version(1) || vk::api_version_minor(version) < 1 {
+    let version = device.parent().get_properties().api_version;
+    let mut subgroup = vk::PhysicalDeviceSubgroupProperties::default();
+    if vk::api_version_minor(version) < 1 || !ask_properties2(device, &mut subgroup) {
         return 0;
     }
-    let mut subgroup = vk::PhysicalDeviceSubgroupProperties::default();
-    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut subgroup);
-    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
-    unsafe {
-        instance
-            .fns()
-            .get_physical_device_properties2(physical.raw(), &mut p2)
-    };
     subgroup.subgroup_size
 }
 
@@ -7002,22 +6993,9 @@ fn descriptor_limits(
 /// The device's Vulkan 1.2 properties (the update-after-bind limits), where the
 /// instance can ask for them and the device has Vulkan 1.2.
 fn vulkan12_properties(device: &Device) -> Option<vk::PhysicalDeviceVulkan12Properties<'static>> {
-    let physical = device.parent();
-    let instance = physical.parent();
-    let version = physical.get_properties().api_version;
-    if !instance.exts().version(1) || vk::api_version_minor(version) < 2 {
-        return None;
-    }
+    let version = device.parent().get_properties().api_version;
     let mut p12 = vk::PhysicalDeviceVulkan12Properties::default();
-    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p12);
-    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
-    unsafe {
-        instance
-            .fns()
-            .get_physical_device_properties2(physical.raw(), &mut p2)
-    };
-    p12.p_next = std::ptr::null_mut();
-    Some(p12)
+    (vk::api_version_minor(version) >= 2 && ask_properties2(device, &mut p12)).then_some(p12)
 }
 
 /// Refuses a pipeline layout past the device's limits: more set layouts than
@@ -7165,22 +7143,9 @@ pub(crate) fn create_pipeline_layout_checks(
 /// The physical device's Vulkan 1.3 properties, where the instance and device have
 /// them.
 fn vulkan13_properties(device: &Device) -> Option<vk::PhysicalDeviceVulkan13Properties<'static>> {
-    let physical = device.parent();
-    let instance = physical.parent();
-    let version = physical.get_properties().api_version;
-    if !instance.exts().version(1) || vk::api_version_minor(version) < 3 {
-        return None;
-    }
+    let version = device.parent().get_properties().api_version;
     let mut p13 = vk::PhysicalDeviceVulkan13Properties::default();
-    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut p13);
-    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
-    unsafe {
-        instance
-            .fns()
-            .get_physical_device_properties2(physical.raw(), &mut p2)
-    };
-    p13.p_next = std::ptr::null_mut();
-    Some(p13)
+    (vk::api_version_minor(version) >= 3 && ask_properties2(device, &mut p13)).then_some(p13)
 }
 
 /// The number of queue families of a physical device.
@@ -8495,21 +8460,12 @@ pub(crate) fn capture_data_fits(
         // The call refuses the missing extension itself.
         return Ok(());
     }
-    let physical = device.parent();
-    let instance = physical.parent();
-    if !instance.exts().version(1) {
+    let mut props = vk::PhysicalDeviceDescriptorBufferPropertiesEXT::default();
+    if !ask_properties2(device, &mut props) {
         return Err(Error::Misuse(
             "the capture data size is a Vulkan 1.1 property: make the instance with Vulkan 1.1 or later",
         ));
     }
-    let mut props = vk::PhysicalDeviceDescriptorBufferPropertiesEXT::default();
-    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut props);
-    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
-    unsafe {
-        instance
-            .fns()
-            .get_physical_device_properties2(physical.raw(), &mut p2)
-    };
     let needed = size(&props);
     if data.len() < needed {
         refuse(
@@ -8548,4 +8504,27 @@ pub(crate) fn per_geometry_fits<T>(
         }
     }
     Ok(())
+}
+
+/// Fills `props` from the device's physical device through
+/// vkGetPhysicalDeviceProperties2: `false`, with `props` as it was, where the
+/// instance has no Vulkan 1.1 to ask with.
+pub(crate) fn ask_properties2<T: vk::ExtendsPhysicalDeviceProperties2>(
+    device: &Device,
+    props: &mut T,
+) -> bool {
+    let physical = device.parent();
+    let instance = physical.parent();
+    if !instance.exts().version(1) {
+        return false;
+    }
+    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(props);
+    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local
+    // and ends at `props`, whose `pNext` push_next left null.
+    unsafe {
+        instance
+            .fns()
+            .get_physical_device_properties2(physical.raw(), &mut p2)
+    };
+    true
 }

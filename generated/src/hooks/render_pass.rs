@@ -634,41 +634,17 @@ pub(super) fn multiview_view_count(device: &Device) -> Option<u32> {
 
 /// The device's `protectedNoFault` (false where the instance cannot ask for it).
 pub(crate) fn protected_no_fault(device: &Device) -> bool {
-    let physical = device.parent();
-    let instance = physical.parent();
-    if !instance.exts().version(1) {
-        return false;
-    }
     let mut protected = vk::PhysicalDeviceProtectedMemoryProperties::default();
-    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut protected);
-    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
-    unsafe {
-        instance
-            .fns()
-            .get_physical_device_properties2(physical.raw(), &mut p2)
-    };
-    protected.protected_no_fault == vk::TRUE
+    crate::hooks::ask_properties2(device, &mut protected)
+        && protected.protected_no_fault == vk::TRUE
 }
 
 /// The device's multiview limits, where the instance can ask for them (Vulkan 1.1).
 pub(super) fn multiview_properties(
     device: &Device,
 ) -> Option<vk::PhysicalDeviceMultiviewProperties<'static>> {
-    let physical = device.parent();
-    let instance = physical.parent();
-    if !instance.exts().version(1) {
-        return None;
-    }
     let mut multiview = vk::PhysicalDeviceMultiviewProperties::default();
-    let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut multiview);
-    // SAFETY: a live physical device of a Vulkan 1.1 instance; the chain is local.
-    unsafe {
-        instance
-            .fns()
-            .get_physical_device_properties2(physical.raw(), &mut p2)
-    };
-    multiview.p_next = std::ptr::null_mut();
-    Some(multiview)
+    crate::hooks::ask_properties2(device, &mut multiview).then_some(multiview)
 }
 
 /// The checks of `vkCreateRenderPass` that read the attachments its subpasses
