@@ -550,6 +550,14 @@ pub fn render(check: &Check) -> TokenStream {
                         name,
                         optional: false,
                         parent_is_ancestor: true,
+                    } if ancestor == "VkPhysicalDevice" => {
+                        let a = ident(name);
+                        quote!(if s.device.is_none_or(|d| #a.parent().raw() != d.parent().raw()) { #fail })
+                    }
+                    HandleAt::Arg {
+                        name,
+                        optional: false,
+                        parent_is_ancestor: true,
                     } => {
                         let a = ident(name);
                         quote!(if s.device.is_none_or(|d| #a.parent().raw() != d.raw()) { #fail })

@@ -948,7 +948,12 @@ impl<'c, 'm> Checker<'c, 'm> {
     ) -> Option<(CheckKind, String)> {
         let cmd = &self.cx.model.commands[&plan.name];
         let ancestor = rule.ancestor.clone()?;
-        owner_known(&ancestor)?;
+        // A physical device's objects (displays) name it as their parent, which the
+        // device the method is called on names too.
+        let physical = ancestor == "VkPhysicalDevice" && plan.receiver == "VkDevice";
+        if !physical {
+            owner_known(&ancestor)?;
+        }
         let mut handles = Vec::new();
         for name in &rule.related {
             let i = cmd.params.iter().position(|p| &p.name == name)?;
@@ -956,21 +961,39 @@ impl<'c, 'm> Checker<'c, 'm> {
             if matches!(shape, Param::Dispatch) {
                 continue;
             }
-            let msg =
-                format!("`{name}` does not come from the {ancestor} the command is called on");
+            let msg = match physical {
+                true => format!(
+                    "`{name}` does not come from the physical device of the device the command is called on"
+                ),
+                false => {
+                    format!("`{name}` does not come from the {ancestor} the command is called on")
+                }
+            };
             let mut at = handle_at(shape, param(name))?;
             if let HandleAt::Arg {
                 parent_is_ancestor, ..
             } = &mut at
             {
-                *parent_is_ancestor = ancestor == "VkDevice"
+                *parent_is_ancestor = (ancestor == "VkDevice" || physical)
                     && self
                         .cx
                         .model
                         .handles
                         .get(&cmd.params[i].type_name)
                         .and_then(|h| h.parent_chain.first())
-                        .is_some_and(|p| p == "VkDevice");
+                        .is_some_and(|p| *p == ancestor);
+            }
+            if physical
+                && !matches!(
+                    at,
+                    HandleAt::Arg {
+                        optional: false,
+                        parent_is_ancestor: true,
+                        ..
+                    }
+                )
+            {
+                return None;
             }
             handles.push((at, msg));
         }

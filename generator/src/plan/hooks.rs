@@ -148,6 +148,7 @@ const PRESENTED: &str = "checks each index against the images acquired from the 
 const LAYOUT_PASS: &str = "checks each attachment's initial layout against the one the recording's earlier commands leave its view's subresources in, and, for subresources the recording has not touched before, at submission against the one the device's earlier submissions leave (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-InvalidRenderpass, \"the render pass initial layout ... and the previous known layout of the attachment ... must match\")";
 const UNPROVEN_CAPTURE: &str = "checked by the safe methods in every build (the slice against the device's descriptor-buffer capture data size), but no test breaks it: lavapipe 22.3 has no VK_EXT_descriptor_buffer";
 const UNPROVEN_ACCELERATION: &str = "checked by the safe methods in every build (each build info's range array against its geometry count), but no test breaks it: lavapipe 22.3 has no VK_KHR_acceleration_structure";
+const UNPROVEN_DISPLAY: &str = "checked by the safe methods in every build (the display's physical device against the device's), but no test breaks it: lavapipe enumerates no display";
 const UNPROVEN_XCB: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests' windows are Xlib ones, and the Xlib query's check of the same count is the one the tests break";
 const UNPROVEN_WAYLAND: &str = "checked by the safe methods in every build (against the physical device's queue family count), but no test breaks it: the tests have no Wayland compositor";
 const UNPROVEN_SURFACE_SUPPORT: &str = "checked by the safe methods in every build (vkGetPhysicalDeviceSurfaceSupportKHR, asked once per swapchain and queue family), but no test breaks it: lavapipe's only queue family presents to every surface";
@@ -1872,6 +1873,20 @@ pub const SPECIALS: &[Special] = &[
             "hooks::per_geometry_fits",
             &["infos", "max_primitive_counts", "None"],
         ),
+        ..NONE
+    },
+    // The generated common-parent check compares the display's physical device with
+    // the device's.
+    Special {
+        command: "vkDisplayPowerControlEXT",
+        settles: &[("VUID-vkDisplayPowerControlEXT-commonparent", How::User(UNPROVEN_DISPLAY))],
+        ..NONE
+    },
+    // The generated common-parent check compares the display's physical device with
+    // the device's.
+    Special {
+        command: "vkRegisterDisplayEventEXT",
+        settles: &[("VUID-vkRegisterDisplayEventEXT-commonparent", How::User(UNPROVEN_DISPLAY))],
         ..NONE
     },
     Special {

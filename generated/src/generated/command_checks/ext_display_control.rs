@@ -7,9 +7,19 @@ impl Device {
     ///The dynamic checks of [`Self::display_power_control_ext`], run before the call.
     pub(crate) fn validate_display_power_control_ext<'a>(
         &self,
+        display: &DisplayKHR,
         display_power_info: &DisplayPowerInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        if s.device.is_none_or(|d| display.parent().raw() != d.parent().raw()) {
+            return Err(
+                fail(
+                    "VUID-vkDisplayPowerControlEXT-commonparent",
+                    "`display` does not come from the physical device of the device the command is called on"
+                        .into(),
+                ),
+            );
+        }
         crate::checks::check_display_power_info_ext(display_power_info, s)?;
         Ok(())
     }
@@ -47,9 +57,19 @@ impl Device {
     ///The dynamic checks of [`Self::register_display_event_ext`], run before the call.
     pub(crate) fn validate_register_display_event_ext<'a>(
         &self,
+        display: &DisplayKHR,
         display_event_info: &DisplayEventInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        if s.device.is_none_or(|d| display.parent().raw() != d.parent().raw()) {
+            return Err(
+                fail(
+                    "VUID-vkRegisterDisplayEventEXT-commonparent",
+                    "`display` does not come from the physical device of the device the command is called on"
+                        .into(),
+                ),
+            );
+        }
         crate::checks::check_display_event_info_ext(display_event_info, s)?;
         Ok(())
     }

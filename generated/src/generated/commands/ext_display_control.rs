@@ -10,7 +10,7 @@ impl Device {
 
 The rules of `vkDisplayPowerControlEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkDisplayPowerControlEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkDisplayPowerControlEXT-commonparent` (*yours*; `commonparent` rules are not checked yet): Both of `device`, and `display` must have been created, allocated, or retrieved from the same VkPhysicalDevice
+- `VUID-vkDisplayPowerControlEXT-commonparent` (*yours*; checked by the safe methods in every build): Both of `device`, and `display` must have been created, allocated, or retrieved from the same VkPhysicalDevice
 - `VUID-vkDisplayPowerControlEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkDisplayPowerControlEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
 - `VUID-vkDisplayPowerControlEXT-pDisplayPowerInfo-parameter` (*by the types*): `pDisplayPowerInfo` must be a valid pointer to a valid VkDisplayPowerInfoEXT structure*/
@@ -22,7 +22,7 @@ The rules of `vkDisplayPowerControlEXT` that apply to this crate's API ([referen
         display_power_info: &DisplayPowerInfoEXT<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_display_power_control_ext(display_power_info);
+            let r = self.validate_display_power_control_ext(display, display_power_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -33,7 +33,7 @@ The rules of `vkDisplayPowerControlEXT` that apply to this crate's API ([referen
 
 # Safety
 
-The caller upholds the rules that [`Self::display_power_control_ext`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::display_power_control_ext`] checks at run time: `VUID-vkDisplayPowerControlEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn display_power_control_ext_unchecked<'a>(
         &self,
@@ -172,7 +172,7 @@ The caller upholds the rules that [`Self::register_event_ext`] checks at run tim
 
 The rules of `vkRegisterDisplayEventEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkRegisterDisplayEventEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkRegisterDisplayEventEXT-commonparent` (*yours*; `commonparent` rules are not checked yet): Both of `device`, and `display` must have been created, allocated, or retrieved from the same VkPhysicalDevice
+- `VUID-vkRegisterDisplayEventEXT-commonparent` (*yours*; checked by the safe methods in every build): Both of `device`, and `display` must have been created, allocated, or retrieved from the same VkPhysicalDevice
 - `VUID-vkRegisterDisplayEventEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkRegisterDisplayEventEXT-display-parameter` (*by the types*): `display` must be a valid VkDisplayKHR handle
 - `VUID-vkRegisterDisplayEventEXT-pDisplayEventInfo-parameter` (*by the types*): `pDisplayEventInfo` must be a valid pointer to a valid VkDisplayEventInfoEXT structure
@@ -186,7 +186,8 @@ The rules of `vkRegisterDisplayEventEXT` that apply to this crate's API ([refere
         display_event_info: &DisplayEventInfoEXT<'a>,
     ) -> Result<Fence> {
         {
-            let r = self.validate_register_display_event_ext(display_event_info);
+            let r = self
+                .validate_register_display_event_ext(display, display_event_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -197,7 +198,7 @@ The rules of `vkRegisterDisplayEventEXT` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::register_display_event_ext`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::register_display_event_ext`] checks at run time: `VUID-vkRegisterDisplayEventEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn register_display_event_ext_unchecked<'a>(
         &self,
