@@ -44,7 +44,8 @@ pub enum Param {
     Slice,
     /// An array of pointers to arrays of plain structs or numbers
     /// (`ppBuildRangeInfos`, one array per build info): a slice of slices, whose
-    /// pointers the method lays out for the call.
+    /// pointers the method lays out for the call (so not where the command may
+    /// defer, and read them after it returns).
     SliceOfSlices,
     /// Bytes sized by a count parameter.
     Bytes,
@@ -386,6 +387,13 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             }
         } else if p.pointers == 2
             && p.const_pointees == [true, true]
+            // A command that may defer reads its pointers until the deferred
+            // operation completes: an array of pointers the method lays out itself
+            // would be gone by then, so the caller passes one it keeps.
+            && !cmd
+                .params
+                .iter()
+                .any(|q| q.type_name == "VkDeferredOperationKHR")
             && matches!(pp.len.first(), Some(LenEntry::Reference(parts)) if parts.len() == 1)
             && (super::shape::is_c_scalar(&p.type_name)
                 || (category == Some(Kind::Struct)

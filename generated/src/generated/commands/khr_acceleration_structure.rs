@@ -6,6 +6,10 @@ use super::*;
 impl Device {
     /**`vkBuildAccelerationStructuresKHR`
 
+# Safety
+
+`build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+
 # Valid usage
 
 The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBuildAccelerationStructuresKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -44,7 +48,7 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-firstVertex-03770` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, if the corresponding geometry uses indices, its `firstVertex` member must have the same value which was specified when …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03801` (*yours*; explicit rule): For each element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the corresponding `ppBuildRangeInfos`\[i\]\[j\].`primitiveCount` must …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03675` (*yours*; explicit rule): For each `pInfos`\[i\], `dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build …
-- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; checked by the safe methods in every build): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; explicit rule): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
 - `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
 - `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03722` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to host-visible device memory
@@ -59,11 +63,11 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03774` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.hostAddress` must be a valid host address
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03778` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, `geometry.instances.data.hostAddress` must be a valid host address
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03779` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each …
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*yours*; passed as ash's raw type): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03775` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to memory that was not allocated with multiple instances
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03776` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to memory that …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03777` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-04930` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR` with `VK_BUILD_ACCELERATION_STRUCTURE_MOTION_BIT_NV` set, each …
-- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*checked*): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
 - `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
 - `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
 - `VUID-vkBuildAccelerationStructuresKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
@@ -71,26 +75,12 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkAccelerationStructureBuildGeometryInfoKHR structures*/
     #[doc(alias = "vkBuildAccelerationStructuresKHR")]
     #[inline]
-    pub fn build_acceleration_structures_khr<'a>(
+    pub unsafe fn build_acceleration_structures_khr<'a>(
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
+        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
-        if build_range_infos.len() != infos.len() {
-            return Err(Error::Validation {
-                vuid: "VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter",
-                message: format!(
-                    "`build_range_infos` has {} elements where `infos` has {}",
-                    build_range_infos.len(), infos.len()
-                ),
-            });
-        }
-        crate::hooks::per_geometry_fits(
-            infos,
-            build_range_infos,
-            Some("VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676"),
-        )?;
         {
             let r = self
                 .validate_build_acceleration_structures_khr(deferred_operation, infos);
@@ -110,13 +100,13 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 
 # Safety
 
-The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_acceleration_structures_khr_unchecked<'a>(
         &self,
         deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
+        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
@@ -124,9 +114,6 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
             .build_acceleration_structures_khr;
-        let build_range_infos_ptrs: smallvec::SmallVec<
-            [*const vk::AccelerationStructureBuildRangeInfoKHR; 4],
-        > = build_range_infos.iter().map(|s| s.as_ptr()).collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
@@ -134,7 +121,7 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
                 deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
                 infos.len() as u32,
                 infos.as_ptr().cast(),
-                build_range_infos_ptrs.as_ptr(),
+                build_range_infos,
             )
         };
         if r.as_raw() < 0 {
