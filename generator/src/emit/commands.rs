@@ -537,6 +537,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 });
                 call_args.push(quote!(#ptrs.as_ptr(),));
             }
+            Param::SliceOut => {
+                let ty = spelled(model, &cx.facts, &p.type_name);
+                args.push(Arg::new(&name, quote!(&mut [#ty])));
+                call_args.push(quote!(#name.as_mut_ptr(),));
+            }
             Param::BytesOut | Param::BytesOutUnsized => {
                 args.push(Arg::new(&name, quote!(&mut [u8])));
                 call_args.push(quote!(#name.as_mut_ptr().cast(),));

@@ -51,6 +51,10 @@ pub enum Param {
     Bytes,
     /// Bytes Vulkan writes, sized by a count parameter.
     BytesOut,
+    /// Numbers Vulkan writes, one per element of the slice whose length sets their
+    /// count (`pTimestamps`, one per `pTimestampInfos`): a mutable slice the caller
+    /// gives, checked to be as long.
+    SliceOut,
     /// Bytes Vulkan writes, of a size no parameter gives (a device property does:
     /// the opaque capture data of descriptor buffers), taken as a mutable byte
     /// slice; the size rule is the method's own.
@@ -377,6 +381,13 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 {
                     Param::BytesOut
                 }
+                (Some(LenEntry::Reference(parts)), None)
+                    if super::shape::is_c_scalar(&p.type_name)
+                        && parts.len() == 1
+                        && !enumerated =>
+                {
+                    Param::SliceOut
+                }
                 (None, Some(Kind::Handle)) => Param::Created,
                 (_, Some(Kind::Handle)) if !enumerated => Param::CreatedArray,
                 (_, _) if enumerated => Param::Enumerated,
@@ -476,6 +487,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                         shape,
                         Param::Slice
                             | Param::SliceOfSlices
+                            | Param::SliceOut
                             | Param::HandleSlice
                             | Param::Bytes
                             | Param::BytesOut

@@ -434,6 +434,7 @@ fn param_settlement(p: &Param) -> Settlement {
         | Param::BytesOut
         | Param::BytesOutUnsized
         | Param::SliceOfSlices
+        | Param::SliceOut
         | Param::Array
         | Param::InOut => {
             Settlement::Static("taken as a reference or slice: a valid pointer with its length".into())

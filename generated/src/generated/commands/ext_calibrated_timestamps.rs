@@ -8,18 +8,15 @@ impl Device {
 
 # Safety
 
-`timestamps` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetCalibratedTimestampsEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetCalibratedTimestampsEXT-pTimestamps-parameter`: `pTimestamps` must be a valid pointer to an array of `timestampCount` `uint64_t` values
 - `VUID-VkCalibratedTimestampInfoEXT-timeDomain-02354`: `timeDomain` must be one of the VkTimeDomainEXT values returned by vkGetPhysicalDeviceCalibrateableTimeDomainsEXT
 
 # Valid usage
 
 The rules of `vkGetCalibratedTimestampsEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetCalibratedTimestampsEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetCalibratedTimestampsEXT-pTimestamps-parameter` (*yours*; passed as ash's raw type): `pTimestamps` must be a valid pointer to an array of `timestampCount` `uint64_t` values
+- `VUID-vkGetCalibratedTimestampsEXT-pTimestamps-parameter` (*checked*): `pTimestamps` must be a valid pointer to an array of `timestampCount` `uint64_t` values
 - `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength` (*checked*): `timestampCount` must be greater than `0`
 - `VUID-vkGetCalibratedTimestampsEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkGetCalibratedTimestampsEXT-pTimestampInfos-parameter` (*by the types*): `pTimestampInfos` must be a valid pointer to an array of `timestampCount` valid VkCalibratedTimestampInfoEXT structures
@@ -29,8 +26,17 @@ The rules of `vkGetCalibratedTimestampsEXT` that apply to this crate's API ([ref
     pub unsafe fn get_calibrated_timestamps_ext<'a>(
         &self,
         timestamp_infos: &[CalibratedTimestampInfoEXT<'a>],
-        timestamps: *mut u64,
+        timestamps: &mut [u64],
     ) -> Result<u64> {
+        if timestamps.len() != timestamp_infos.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkGetCalibratedTimestampsEXT-pTimestamps-parameter",
+                message: format!(
+                    "`timestamps` has {} elements where `timestamp_infos` has {}",
+                    timestamps.len(), timestamp_infos.len()
+                ),
+            });
+        }
         {
             let r = self.validate_get_calibrated_timestamps_ext(timestamp_infos);
             r?;
@@ -45,12 +51,12 @@ The rules of `vkGetCalibratedTimestampsEXT` that apply to this crate's API ([ref
 
 # Safety
 
-The caller upholds the rules that [`Self::get_calibrated_timestamps_ext`] checks at run time: `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength`, and those of the structs it takes. `timestamps` is passed to Vulkan as ash's raw type: each must be what the specification of `vkGetCalibratedTimestampsEXT` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_calibrated_timestamps_ext`] checks at run time: `VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength`, `VUID-vkGetCalibratedTimestampsEXT-pTimestamps-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_calibrated_timestamps_ext_unchecked<'a>(
         &self,
         timestamp_infos: &[CalibratedTimestampInfoEXT<'a>],
-        timestamps: *mut u64,
+        timestamps: &mut [u64],
     ) -> Result<u64> {
         let fp = self
             .ext()
@@ -65,7 +71,7 @@ The caller upholds the rules that [`Self::get_calibrated_timestamps_ext`] checks
                 self.raw(),
                 timestamp_infos.len() as u32,
                 timestamp_infos.as_ptr().cast(),
-                timestamps,
+                timestamps.as_mut_ptr(),
                 &mut out,
             )
         };
