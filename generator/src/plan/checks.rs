@@ -440,32 +440,19 @@ impl<'c, 'm> Checker<'c, 'm> {
 
     /// Structs whose checks a struct's checks call: members and chain extenders.
     fn nested(&self, name: &str) -> Vec<String> {
-        let model = self.cx.model;
-        let mut out: Vec<String> = struct_members(model, &self.cx.facts, name)
+        // The nested structs its checks call (members, and the structs of selected
+        // unions), read from the checks themselves.
+        let mut out: Vec<String> = self
+            .struct_cache
+            .get(name)
             .into_iter()
-            .filter(|(_, shape)| {
-                matches!(
-                    shape,
-                    Member::Value
-                        | Member::Nested
-                        | Member::StructRef { .. }
-                        | Member::Slice { .. }
-                )
+            .flatten()
+            .filter_map(|c| match &c.kind {
+                CheckKind::NestedStruct { ty, .. } => Some(ty.clone()),
+                _ => None,
             })
-            .map(|(m, _)| m.type_name)
-            .filter(|t| self.checked.contains(t))
             .collect();
-        // The structs a selected union's variants hold.
-        for c in self.struct_cache.get(name).into_iter().flatten() {
-            if let CheckKind::NestedStruct {
-                ty,
-                at: StructAt::Variant { .. },
-            } = &c.kind
-            {
-                out.push(ty.clone());
-            }
-        }
-        if let Some(ext) = model.extended_by.get(name) {
+        if let Some(ext) = self.cx.model.extended_by.get(name) {
             out.extend(ext.iter().filter(|e| self.checked.contains(*e)).cloned());
         }
         out

@@ -355,6 +355,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             }
         } else if p.pointers == 1 && !p.is_const {
             let len = pp.len.first();
+            let display = DISPLAY_CONNECTIONS
+                .iter()
+                .find(|(t, _)| *t == p.type_name)
+                .map(|(_, k)| *k);
             let enumerated = matches!(len, Some(LenEntry::Reference(parts))
                 if parts.len() == 1 && cmd.params.iter().any(|q| q.name == parts[0] && q.pointers == 1));
             match (len, category) {
@@ -364,13 +368,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (None, None) if super::shape::is_foreign_value(model, &p.type_name) => {
                     Param::ForeignOutput
                 }
-                (None, None) if DISPLAY_CONNECTIONS.iter().any(|(t, _)| *t == p.type_name) => {
-                    let kind = DISPLAY_CONNECTIONS
-                        .iter()
-                        .find(|(t, _)| *t == p.type_name)
-                        .map(|(_, k)| *k);
-                    kind.map_or(Param::Raw, Param::Display)
-                }
+                (None, None) if display.is_some() => display.map_or(Param::Raw, Param::Display),
                 (None, None)
                     if p.type_name != "void" && !super::shape::is_c_scalar(&p.type_name) =>
                 {
