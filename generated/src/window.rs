@@ -14,6 +14,8 @@
 use crate::handles::{Instance, SurfaceKHR};
 use crate::{Error, Result};
 use ash::vk;
+use core::ffi::c_void;
+use core::ptr::NonNull;
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle, RawDisplayHandle, RawWindowHandle};
 use tuff_runtime::{MaybeSendSync, Retained, Vrc};
 
@@ -71,10 +73,8 @@ impl Instance {
     ) -> Result<vk::SurfaceKHR> {
         match (display, handle) {
             #[cfg(feature = "khr_xlib_surface")]
-            (RawDisplayHandle::Xlib(d), RawWindowHandle::Xlib(w)) => {
-                let dpy = d.display.ok_or_else(|| {
-                    Error::Window("the Xlib display handle names no Display".into())
-                })?;
+            (RawDisplayHandle::Xlib(_), RawWindowHandle::Xlib(w)) => {
+                let dpy = xlib_display(display)?;
                 let fp = self
                     .ext()
                     .khr_xlib_surface
@@ -93,10 +93,8 @@ impl Instance {
                 created(r, out)
             }
             #[cfg(feature = "khr_xcb_surface")]
-            (RawDisplayHandle::Xcb(d), RawWindowHandle::Xcb(w)) => {
-                let connection = d.connection.ok_or_else(|| {
-                    Error::Window("the XCB display handle names no connection".into())
-                })?;
+            (RawDisplayHandle::Xcb(_), RawWindowHandle::Xcb(w)) => {
+                let connection = xcb_connection(display)?;
                 let fp = self
                     .ext()
                     .khr_xcb_surface
@@ -113,7 +111,8 @@ impl Instance {
                 created(r, out)
             }
             #[cfg(feature = "khr_wayland_surface")]
-            (RawDisplayHandle::Wayland(d), RawWindowHandle::Wayland(w)) => {
+            (RawDisplayHandle::Wayland(_), RawWindowHandle::Wayland(w)) => {
+                let wl_display = wayland_display(display)?;
                 let fp = self
                     .ext()
                     .khr_wayland_surface
@@ -121,7 +120,7 @@ impl Instance {
                     .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?
                     .create_wayland_surface_khr;
                 let info = vk::WaylandSurfaceCreateInfoKHR::default()
-                    .display(d.display.as_ptr())
+                    .display(wl_display.as_ptr())
                     .surface(w.surface.as_ptr());
                 let mut out = vk::SurfaceKHR::null();
                 // SAFETY: the display and surface pointers are the window's, valid
@@ -163,4 +162,40 @@ fn created(r: vk::Result, out: vk::SurfaceKHR) -> Result<vk::SurfaceKHR> {
         return Err(Error::Vk(r));
     }
     Ok(out)
+}
+
+/// The Xlib `Display` a display handle carries, for a surface or a command that takes
+/// one: [`Error::Window`] for a handle of another window system or one naming none.
+#[cfg(any(feature = "khr_xlib_surface", feature = "ext_acquire_xlib_display"))]
+pub(crate) fn xlib_display(display: RawDisplayHandle) -> Result<NonNull<c_void>> {
+    match display {
+        RawDisplayHandle::Xlib(d) => d
+            .display
+            .ok_or_else(|| Error::Window("the Xlib display handle names no Display".into())),
+        _ => Err(Error::Window(
+            "the display handle is not an Xlib one".into(),
+        )),
+    }
+}
+
+/// The XCB connection a display handle carries, as `xlib_display` does.
+#[cfg(feature = "khr_xcb_surface")]
+pub(crate) fn xcb_connection(display: RawDisplayHandle) -> Result<NonNull<c_void>> {
+    match display {
+        RawDisplayHandle::Xcb(d) => d
+            .connection
+            .ok_or_else(|| Error::Window("the XCB display handle names no connection".into())),
+        _ => Err(Error::Window("the display handle is not an XCB one".into())),
+    }
+}
+
+/// The Wayland display a display handle carries, as `xlib_display` does.
+#[cfg(feature = "khr_wayland_surface")]
+pub(crate) fn wayland_display(display: RawDisplayHandle) -> Result<NonNull<c_void>> {
+    match display {
+        RawDisplayHandle::Wayland(d) => Ok(d.display),
+        _ => Err(Error::Window(
+            "the display handle is not a Wayland one".into(),
+        )),
+    }
 }

@@ -335,29 +335,19 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 call_args.push(quote!(#name,));
             }
             Param::Display(kind) => {
-                let (variant, get, what) = match kind {
-                    DisplayKind::Xlib => (quote!(Xlib), quote!(h.display), "an Xlib `Display`"),
-                    DisplayKind::Xcb => (quote!(Xcb), quote!(h.connection), "an XCB connection"),
-                    DisplayKind::Wayland => (
-                        quote!(Wayland),
-                        quote!(Some(h.display)),
-                        "a Wayland display",
-                    ),
-                };
-                let msg = format!("`{}` is not {what}", param(&p.name));
+                // `window.rs` reads the connection out of the handle, as surfaces do.
+                let get = ident(match kind {
+                    DisplayKind::Xlib => "xlib_display",
+                    DisplayKind::Xcb => "xcb_connection",
+                    DisplayKind::Wayland => "wayland_display",
+                });
                 let ty = crate::plan::types::raw_type(model, &cx.facts, p);
                 args.push(Arg::new(
                     &name,
                     quote!(raw_window_handle::DisplayHandle<'_>),
                 ));
                 pre.push(quote! {
-                    let #name: #ty = match #name.as_raw() {
-                        raw_window_handle::RawDisplayHandle::#variant(h) => #get,
-                        _ => None,
-                    }
-                    .ok_or_else(|| Error::Window(#msg.into()))?
-                    .as_ptr()
-                    .cast();
+                    let #name: #ty = crate::window::#get(#name.as_raw())?.as_ptr().cast();
                 });
                 call_args.push(quote!(#name,));
             }

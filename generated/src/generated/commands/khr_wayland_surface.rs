@@ -118,13 +118,9 @@ The caller upholds the rules that [`Self::get_wayland_presentation_support_khr`]
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?
             .get_physical_device_wayland_presentation_support_khr;
         Ok({
-            let display: *mut vk::wl_display = match display.as_raw() {
-                raw_window_handle::RawDisplayHandle::Wayland(h) => Some(h.display),
-                _ => None,
-            }
-                .ok_or_else(|| Error::Window(
-                    "`display` is not a Wayland display".into(),
-                ))?
+            let display: *mut vk::wl_display = crate::window::wayland_display(
+                    display.as_raw(),
+                )?
                 .as_ptr()
                 .cast();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).

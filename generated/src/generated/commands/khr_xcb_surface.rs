@@ -121,13 +121,9 @@ The caller upholds the rules that [`Self::get_xcb_presentation_support_khr`] che
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?
             .get_physical_device_xcb_presentation_support_khr;
         Ok({
-            let connection: *mut vk::xcb_connection_t = match connection.as_raw() {
-                raw_window_handle::RawDisplayHandle::Xcb(h) => h.connection,
-                _ => None,
-            }
-                .ok_or_else(|| Error::Window(
-                    "`connection` is not an XCB connection".into(),
-                ))?
+            let connection: *mut vk::xcb_connection_t = crate::window::xcb_connection(
+                    connection.as_raw(),
+                )?
                 .as_ptr()
                 .cast();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).

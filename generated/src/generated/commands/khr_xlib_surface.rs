@@ -121,11 +121,7 @@ The caller upholds the rules that [`Self::get_xlib_presentation_support_khr`] ch
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))?
             .get_physical_device_xlib_presentation_support_khr;
         Ok({
-            let dpy: *mut vk::Display = match dpy.as_raw() {
-                raw_window_handle::RawDisplayHandle::Xlib(h) => h.display,
-                _ => None,
-            }
-                .ok_or_else(|| Error::Window("`dpy` is not an Xlib `Display`".into()))?
+            let dpy: *mut vk::Display = crate::window::xlib_display(dpy.as_raw())?
                 .as_ptr()
                 .cast();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
