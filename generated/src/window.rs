@@ -14,8 +14,6 @@
 use crate::handles::{Instance, SurfaceKHR};
 use crate::{Error, Result};
 use ash::vk;
-use core::ffi::c_void;
-use core::ptr::NonNull;
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle, RawDisplayHandle, RawWindowHandle};
 use tuff_runtime::{MaybeSendSync, Retained, Vrc};
 
@@ -167,7 +165,9 @@ fn created(r: vk::Result, out: vk::SurfaceKHR) -> Result<vk::SurfaceKHR> {
 /// The Xlib `Display` a display handle carries, for a surface or a command that takes
 /// one: [`Error::Window`] for a handle of another window system or one naming none.
 #[cfg(any(feature = "khr_xlib_surface", feature = "ext_acquire_xlib_display"))]
-pub(crate) fn xlib_display(display: RawDisplayHandle) -> Result<NonNull<c_void>> {
+pub(crate) fn xlib_display(
+    display: RawDisplayHandle,
+) -> Result<core::ptr::NonNull<core::ffi::c_void>> {
     match display {
         RawDisplayHandle::Xlib(d) => d
             .display
@@ -180,7 +180,9 @@ pub(crate) fn xlib_display(display: RawDisplayHandle) -> Result<NonNull<c_void>>
 
 /// The XCB connection a display handle carries, as `xlib_display` does.
 #[cfg(feature = "khr_xcb_surface")]
-pub(crate) fn xcb_connection(display: RawDisplayHandle) -> Result<NonNull<c_void>> {
+pub(crate) fn xcb_connection(
+    display: RawDisplayHandle,
+) -> Result<core::ptr::NonNull<core::ffi::c_void>> {
     match display {
         RawDisplayHandle::Xcb(d) => d
             .connection
@@ -191,7 +193,9 @@ pub(crate) fn xcb_connection(display: RawDisplayHandle) -> Result<NonNull<c_void
 
 /// The Wayland display a display handle carries, as `xlib_display` does.
 #[cfg(feature = "khr_wayland_surface")]
-pub(crate) fn wayland_display(display: RawDisplayHandle) -> Result<NonNull<c_void>> {
+pub(crate) fn wayland_display(
+    display: RawDisplayHandle,
+) -> Result<core::ptr::NonNull<core::ffi::c_void>> {
     match display {
         RawDisplayHandle::Wayland(d) => Ok(d.display),
         _ => Err(Error::Window(
