@@ -354,6 +354,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             Param::Dispatch => call_args.push(receiver_raw.clone()),
             Param::Receiver => call_args.push(quote!(self.raw(),)),
             Param::Allocator => call_args.push(quote!(core::ptr::null(),)),
+            Param::NotDeferred => call_args.push(quote!(vk::DeferredOperationKHR::null(),)),
             Param::Count => {
                 // The length of the first slice that names this count.
                 let user = cmd
@@ -1004,8 +1005,16 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         Some(crate::names::receiver_type(model, &plan.name)),
         "Called",
     );
+    // Where the deferred operation went: the method runs the command to completion.
+    let not_deferred = if plan.params.contains(&Param::NotDeferred) {
+        "\n\nThe command completes before the method returns: the method passes no \
+         deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends \
+         Vulkan lives only for the call."
+    } else {
+        ""
+    };
     let doc = format!(
-        "`{}`{safety}{owned_doc}{example}{}",
+        "`{}`{not_deferred}{safety}{owned_doc}{example}{}",
         plan.name,
         super::doc_rules(all, &plan.name)
     );

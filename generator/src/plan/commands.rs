@@ -14,6 +14,12 @@ pub enum Param {
     Dispatch,
     /// `pAllocator`: always NULL.
     Allocator,
+    /// The `VkDeferredOperationKHR` a command may defer its work onto: always
+    /// `VK_NULL_HANDLE`, so the command completes before the method returns. A
+    /// deferred command reads its arguments and writes its outputs until the
+    /// operation completes, after the method's own storage (the arrays it lays out,
+    /// the handles it wraps) is gone and while nothing retains what it reads.
+    NotDeferred,
     /// A count that a slice argument fills in.
     Count,
     /// A plain value.
@@ -44,8 +50,8 @@ pub enum Param {
     Slice,
     /// An array of pointers to arrays of plain structs or numbers
     /// (`ppBuildRangeInfos`, one array per build info): a slice of slices, whose
-    /// pointers the method lays out for the call (so not where the command may
-    /// defer, and read them after it returns).
+    /// pointers the method lays out for the call (which never defers, so Vulkan
+    /// reads them before it returns).
     SliceOfSlices,
     /// Bytes sized by a count parameter.
     Bytes,
@@ -303,6 +309,10 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             Param::Receiver
         } else if p.type_name == "VkAllocationCallbacks" {
             Param::Allocator
+        } else if p.type_name == "VkDeferredOperationKHR" && p.pointers == 0 && optional {
+            // The optional one is the command's deferral; the operation's own
+            // commands take it as a required handle.
+            Param::NotDeferred
         } else if is_count && p.pointers == 0 {
             Param::Count
         } else if is_count && p.pointers == 1 && !p.is_const {
@@ -396,13 +406,6 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             }
         } else if p.pointers == 2
             && p.const_pointees == [true, true]
-            // A command that may defer reads its pointers until the deferred
-            // operation completes: an array of pointers the method lays out itself
-            // would be gone by then, so the caller passes one it keeps.
-            && !cmd
-                .params
-                .iter()
-                .any(|q| q.type_name == "VkDeferredOperationKHR")
             && matches!(pp.len.first(), Some(LenEntry::Reference(parts)) if parts.len() == 1)
             && (super::shape::is_c_scalar(&p.type_name)
                 || (category == Some(Kind::Struct)

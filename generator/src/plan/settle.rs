@@ -99,6 +99,10 @@ fn param_shape(
     }
 }
 
+/// How the rules about a command's deferred operation are settled.
+const NOT_DEFERRED: &str =
+    "the wrappers pass no deferred operation (VK_NULL_HANDLE): the command completes before the method returns";
+
 fn explicit(vuid: &str, text: &str, param: &dyn Fn(&str) -> Option<Param>) -> Settlement {
     // Plain text without code marks: `If no `VkAllocationCallbacks` were provided`
     // reads as `if no vkallocationcallbacks were provided`.
@@ -119,6 +123,13 @@ fn explicit(vuid: &str, text: &str, param: &dyn Fn(&str) -> Option<Param>) -> Se
         Settlement::Static(how.into())
     } else if t.contains("vkallocationcallbacks were provided when") {
         Settlement::Static("the wrappers never pass allocation callbacks".into())
+    } else if t.contains("deferredoperation")
+        && matches!(param("deferredoperation"), Some(Param::NotDeferred))
+    {
+        // Each such rule holds of a non-null operation only (`If deferredOperation
+        // is not VK_NULL_HANDLE`, `the previous deferred operation associated with
+        // deferredOperation`).
+        Settlement::Static(NOT_DEFERRED.into())
     } else {
         Settlement::User("explicit rule; the wrappers do not check it".into())
     }
@@ -273,6 +284,16 @@ fn implicit(
                     "the method is called on the handle, and passes the handle's own parent as the command's first parameter".into(),
                 )
             }
+            // No deferred operation is passed, so none has a parent to check.
+            K::Parent
+                if model.commands[&d.item]
+                    .params
+                    .iter()
+                    .zip(&plan.params)
+                    .any(|(p, s)| Some(&p.name) == d.field.as_ref() && *s == Param::NotDeferred) =>
+            {
+                Settlement::Static(NOT_DEFERRED.into())
+            }
             _ => Settlement::User(format!("`{}` rules are not checked yet", d.kind.tag())),
         };
     }
@@ -421,6 +442,7 @@ fn param_settlement(p: &Param) -> Settlement {
             Settlement::Static("taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides".into())
         }
         Param::Allocator => Settlement::Static("always NULL".into()),
+        Param::NotDeferred => Settlement::Static(NOT_DEFERRED.into()),
         Param::Display(_) => Settlement::Static(
             "taken as a `raw_window_handle::DisplayHandle`, a display connection valid while it is borrowed (a handle of another window system is refused)".into(),
         ),

@@ -7,7 +7,6 @@ impl Device {
     ///The dynamic checks of [`Self::build_micromaps_ext`], run before the call.
     pub(crate) fn validate_build_micromaps_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<()> {
         let s = &self.scope();
@@ -19,16 +18,6 @@ impl Device {
                 ),
             );
         }
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkBuildMicromapsEXT-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         for x in infos.iter() {
             crate::checks::check_micromap_build_info_ext(x, s)?;
         }
@@ -37,60 +26,27 @@ impl Device {
     ///The dynamic checks of [`Self::copy_memory_to_micromap_ext`], run before the call.
     pub(crate) fn validate_copy_memory_to_micromap_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         crate::checks::check_copy_memory_to_micromap_info_ext(info, s)?;
         Ok(())
     }
     ///The dynamic checks of [`Self::copy_micromap_ext`], run before the call.
     pub(crate) fn validate_copy_micromap_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyMicromapEXT-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         crate::checks::check_copy_micromap_info_ext(info, s)?;
         Ok(())
     }
     ///The dynamic checks of [`Self::copy_micromap_to_memory_ext`], run before the call.
     pub(crate) fn validate_copy_micromap_to_memory_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         crate::checks::check_copy_micromap_to_memory_info_ext(info, s)?;
         Ok(())
     }

@@ -7,7 +7,6 @@ impl Device {
     ///The dynamic checks of [`Self::build_acceleration_structures_khr`], run before the call.
     pub(crate) fn validate_build_acceleration_structures_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
     ) -> Result<()> {
         let s = &self.scope();
@@ -19,16 +18,6 @@ impl Device {
                 ),
             );
         }
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         for x in infos.iter() {
             crate::checks::check_acceleration_structure_build_geometry_info_khr(x, s)?;
         }
@@ -37,60 +26,27 @@ impl Device {
     ///The dynamic checks of [`Self::copy_acceleration_structure_khr`], run before the call.
     pub(crate) fn validate_copy_acceleration_structure_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         crate::checks::check_copy_acceleration_structure_info_khr(info, s)?;
         Ok(())
     }
     ///The dynamic checks of [`Self::copy_acceleration_structure_to_memory_khr`], run before the call.
     pub(crate) fn validate_copy_acceleration_structure_to_memory_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         crate::checks::check_copy_acceleration_structure_to_memory_info_khr(info, s)?;
         Ok(())
     }
     ///The dynamic checks of [`Self::copy_memory_to_acceleration_structure_khr`], run before the call.
     pub(crate) fn validate_copy_memory_to_acceleration_structure_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
-        }
         crate::checks::check_copy_memory_to_acceleration_structure_info_khr(info, s)?;
         Ok(())
     }

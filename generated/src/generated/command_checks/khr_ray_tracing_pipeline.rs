@@ -59,7 +59,6 @@ impl Device {
     ///The dynamic checks of [`Self::create_ray_tracing_pipelines_khr`], run before the call.
     pub(crate) fn validate_create_ray_tracing_pipelines_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[RayTracingPipelineCreateInfoKHR<'a>],
     ) -> Result<()> {
@@ -71,16 +70,6 @@ impl Device {
                     "`createInfoCount` is 0".into(),
                 ),
             );
-        }
-        if let Some(h) = deferred_operation {
-            if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parent",
-                        "`deferredOperation` does not come from `device`".into(),
-                    ),
-                );
-            }
         }
         if let Some(h) = pipeline_cache {
             if !s.owned_by_device(h.raw()) {

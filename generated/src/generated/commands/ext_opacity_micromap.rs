@@ -6,6 +6,8 @@ use super::*;
 impl Device {
     /**`vkBuildMicromapsEXT`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Safety
 
 The caller upholds these 19 rules that no check of this method enforces (its command's and those of the structs it takes):
@@ -48,34 +50,32 @@ The rules of `vkBuildMicromapsEXT` that apply to this crate's API ([reference pa
 - `VUID-vkBuildMicromapsEXT-pInfos-07556` (*yours*; explicit rule): If `pInfos`\[i\].`mode` is `VK_BUILD_MICROMAP_MODE_BUILD_EXT`, all addresses between `pInfos`\[i\].`scratchData.hostAddress` and `pInfos`\[i\].`scratchData.hostAddress` + N - 1 must be valid host memory, …
 - `VUID-vkBuildMicromapsEXT-pInfos-07557` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstMicromap` member must be bound to memory that was not allocated with multiple instances
 - `VUID-vkBuildMicromapsEXT-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
-- `VUID-vkBuildMicromapsEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
 - `VUID-vkBuildMicromapsEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkBuildMicromapsEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkBuildMicromapsEXT-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkMicromapBuildInfoEXT structures*/
+- `VUID-vkBuildMicromapsEXT-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkMicromapBuildInfoEXT structures
+- `VUID-vkBuildMicromapsEXT-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkBuildMicromapsEXT")]
     #[inline]
     pub unsafe fn build_micromaps_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
-            let r = self.validate_build_micromaps_ext(deferred_operation, infos);
+            let r = self.validate_build_micromaps_ext(infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.build_micromaps_ext_unchecked(deferred_operation, infos) }
+        unsafe { self.build_micromaps_ext_unchecked(infos) }
     }
     /**`vkBuildMicromapsEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run time: `VUID-vkBuildMicromapsEXT-infoCount-arraylength`, `VUID-vkBuildMicromapsEXT-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run time: `VUID-vkBuildMicromapsEXT-infoCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_micromaps_ext_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
@@ -88,7 +88,7 @@ The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run ti
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 infos.len() as u32,
                 infos.as_ptr().cast(),
             )
@@ -101,12 +101,12 @@ The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run ti
     }
     /**`vkCopyMemoryToMicromapEXT`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Safety
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03677`: If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03678`: Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMemoryToMicromapEXT-pInfo-07563`: `pInfo->src.hostAddress` must be a valid host pointer
 - `VUID-vkCopyMemoryToMicromapEXT-pInfo-07564`: `pInfo->src.hostAddress` must be aligned to 16 bytes
 - `VUID-vkCopyMemoryToMicromapEXT-buffer-07565`: The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
@@ -120,41 +120,39 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 
 The rules of `vkCopyMemoryToMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMemoryToMicromapEXT-pInfo-07563` (*yours*; explicit rule): `pInfo->src.hostAddress` must be a valid host pointer
 - `VUID-vkCopyMemoryToMicromapEXT-pInfo-07564` (*yours*; explicit rule): `pInfo->src.hostAddress` must be aligned to 16 bytes
 - `VUID-vkCopyMemoryToMicromapEXT-buffer-07565` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
 - `VUID-vkCopyMemoryToMicromapEXT-micromapHostCommands-07566` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
 - `VUID-vkCopyMemoryToMicromapEXT-buffer-07567` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
-- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMemoryToMicromapEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkCopyMemoryToMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToMicromapInfoEXT structure*/
+- `VUID-vkCopyMemoryToMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToMicromapInfoEXT structure
+- `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkCopyMemoryToMicromapEXT")]
     #[inline]
     pub unsafe fn copy_memory_to_micromap_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
-            let r = self.validate_copy_memory_to_micromap_ext(deferred_operation, info);
+            let r = self.validate_copy_memory_to_micromap_ext(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.copy_memory_to_micromap_ext_unchecked(deferred_operation, info) }
+        unsafe { self.copy_memory_to_micromap_ext_unchecked(info) }
     }
     /**`vkCopyMemoryToMicromapEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks at run time: `VUID-vkCopyMemoryToMicromapEXT-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn copy_memory_to_micromap_ext_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
@@ -167,7 +165,7 @@ The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks a
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 info as *const CopyMemoryToMicromapInfoEXT<'a> as *const _,
             )
         };
@@ -179,12 +177,12 @@ The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks a
     }
     /**`vkCopyMicromapEXT`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Safety
 
-The caller upholds these 11 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCopyMicromapEXT-deferredOperation-03677`: If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyMicromapEXT-deferredOperation-03678`: Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMicromapEXT-buffer-07558`: The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
 - `VUID-vkCopyMicromapEXT-buffer-07559`: The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
 - `VUID-vkCopyMicromapEXT-micromapHostCommands-07560`: The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
@@ -199,41 +197,39 @@ The caller upholds these 11 rules that no check of this method enforces (its com
 
 The rules of `vkCopyMicromapEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMicromapEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMicromapEXT-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyMicromapEXT-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMicromapEXT-buffer-07558` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
 - `VUID-vkCopyMicromapEXT-buffer-07559` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
 - `VUID-vkCopyMicromapEXT-micromapHostCommands-07560` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
 - `VUID-vkCopyMicromapEXT-buffer-07561` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
 - `VUID-vkCopyMicromapEXT-buffer-07562` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
-- `VUID-vkCopyMicromapEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMicromapEXT-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMicromapEXT-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMicromapEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCopyMicromapEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkCopyMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapInfoEXT structure*/
+- `VUID-vkCopyMicromapEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapInfoEXT structure
+- `VUID-vkCopyMicromapEXT-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkCopyMicromapEXT")]
     #[inline]
     pub unsafe fn copy_micromap_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
-            let r = self.validate_copy_micromap_ext(deferred_operation, info);
+            let r = self.validate_copy_micromap_ext(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.copy_micromap_ext_unchecked(deferred_operation, info) }
+        unsafe { self.copy_micromap_ext_unchecked(info) }
     }
     /**`vkCopyMicromapEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time: `VUID-vkCopyMicromapEXT-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn copy_micromap_ext_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
@@ -246,7 +242,7 @@ The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 info as *const CopyMicromapInfoEXT<'a> as *const _,
             )
         };
@@ -258,12 +254,12 @@ The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time
     }
     /**`vkCopyMicromapToMemoryEXT`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Safety
 
-The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
 
-- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03677`: If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03678`: Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMicromapToMemoryEXT-buffer-07568`: The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
 - `VUID-vkCopyMicromapToMemoryEXT-pInfo-07569`: `pInfo->dst.hostAddress` must be a valid host pointer
 - `VUID-vkCopyMicromapToMemoryEXT-pInfo-07570`: `pInfo->dst.hostAddress` must be aligned to 16 bytes
@@ -276,41 +272,39 @@ The caller upholds these 9 rules that no check of this method enforces (its comm
 
 The rules of `vkCopyMicromapToMemoryEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMicromapToMemoryEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMicromapToMemoryEXT-buffer-07568` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
 - `VUID-vkCopyMicromapToMemoryEXT-pInfo-07569` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be a valid host pointer
 - `VUID-vkCopyMicromapToMemoryEXT-pInfo-07570` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be aligned to 16 bytes
 - `VUID-vkCopyMicromapToMemoryEXT-micromapHostCommands-07571` (*yours*; explicit rule): The `VkPhysicalDeviceOpacityMicromapFeaturesEXT::micromapHostCommands` feature must be enabled
 - `VUID-vkCopyMicromapToMemoryEXT-buffer-07572` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
-- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMicromapToMemoryEXT-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkCopyMicromapToMemoryEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapToMemoryInfoEXT structure*/
+- `VUID-vkCopyMicromapToMemoryEXT-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMicromapToMemoryInfoEXT structure
+- `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkCopyMicromapToMemoryEXT")]
     #[inline]
     pub unsafe fn copy_micromap_to_memory_ext<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
-            let r = self.validate_copy_micromap_to_memory_ext(deferred_operation, info);
+            let r = self.validate_copy_micromap_to_memory_ext(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe { self.copy_micromap_to_memory_ext_unchecked(deferred_operation, info) }
+        unsafe { self.copy_micromap_to_memory_ext_unchecked(info) }
     }
     /**`vkCopyMicromapToMemoryEXT` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks at run time: `VUID-vkCopyMicromapToMemoryEXT-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn copy_micromap_to_memory_ext_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
@@ -323,7 +317,7 @@ The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks a
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 info as *const CopyMicromapToMemoryInfoEXT<'a> as *const _,
             )
         };

@@ -6,9 +6,7 @@ use super::*;
 impl Device {
     /**`vkBuildAccelerationStructuresKHR`
 
-# Safety
-
-`build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call.
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
 
 # Valid usage
 
@@ -49,8 +47,6 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03801` (*yours*; explicit rule): For each element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the corresponding `ppBuildRangeInfos`\[i\]\[j\].`primitiveCount` must …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03675` (*yours*; explicit rule): For each `pInfos`\[i\], `dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build …
 - `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; explicit rule): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
-- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03722` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to host-visible device memory
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03723` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to host-visible …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03724` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
@@ -63,50 +59,54 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03774` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_AABBS_KHR`, `geometry.aabbs.data.hostAddress` must be a valid host address
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03778` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, `geometry.instances.data.hostAddress` must be a valid host address
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03779` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, each …
-- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*yours*; passed as ash's raw type): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03775` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to memory that was not allocated with multiple instances
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03776` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to memory that …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03777` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-04930` (*yours*; explicit rule): For any element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR` with `VK_BUILD_ACCELERATION_STRUCTURE_MOTION_BIT_NV` set, each …
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter` (*checked*): `ppBuildRangeInfos` must be a valid pointer to an array of `infoCount` VkAccelerationStructureBuildRangeInfoKHR structures
 - `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength` (*checked*): `infoCount` must be greater than `0`
-- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkBuildAccelerationStructuresKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkBuildAccelerationStructuresKHR-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkAccelerationStructureBuildGeometryInfoKHR structures*/
+- `VUID-vkBuildAccelerationStructuresKHR-pInfos-parameter` (*by the types*): `pInfos` must be a valid pointer to an array of `infoCount` valid VkAccelerationStructureBuildGeometryInfoKHR structures
+- `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkBuildAccelerationStructuresKHR")]
     #[inline]
-    pub unsafe fn build_acceleration_structures_khr<'a>(
+    pub fn build_acceleration_structures_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
+        if build_range_infos.len() != infos.len() {
+            return Err(Error::Validation {
+                vuid: "VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter",
+                message: format!(
+                    "`build_range_infos` has {} elements where `infos` has {}",
+                    build_range_infos.len(), infos.len()
+                ),
+            });
+        }
         {
-            let r = self
-                .validate_build_acceleration_structures_khr(deferred_operation, infos);
+            let r = self.validate_build_acceleration_structures_khr(infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.build_acceleration_structures_khr_unchecked(
-                deferred_operation,
-                infos,
-                build_range_infos,
-            )
+            self.build_acceleration_structures_khr_unchecked(infos, build_range_infos)
         }
     }
     /**`vkBuildAccelerationStructuresKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-deferredOperation-parent`, and those of the structs it takes. `build_range_infos` is passed to Vulkan as ash's raw type: each must be what the specification of `vkBuildAccelerationStructuresKHR` requires of it (a valid pointer to as many elements as it says, a live window-system object or handle), for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_acceleration_structures_khr_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
-        build_range_infos: *const *const vk::AccelerationStructureBuildRangeInfoKHR,
+        build_range_infos: &[&[vk::AccelerationStructureBuildRangeInfoKHR]],
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
             .ext()
@@ -114,14 +114,17 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_acceleration_structure"))?
             .build_acceleration_structures_khr;
+        let build_range_infos_ptrs: smallvec::SmallVec<
+            [*const vk::AccelerationStructureBuildRangeInfoKHR; 4],
+        > = build_range_infos.iter().map(|s| s.as_ptr()).collect();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 infos.len() as u32,
                 infos.as_ptr().cast(),
-                build_range_infos,
+                build_range_infos_ptrs.as_ptr(),
             )
         };
         if r.as_raw() < 0 {
@@ -132,48 +135,45 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
     }
     /**`vkCopyAccelerationStructureKHR`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Valid usage
 
 The rules of `vkCopyAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyAccelerationStructureKHR-buffer-03727` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
 - `VUID-vkCopyAccelerationStructureKHR-buffer-03728` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
 - `VUID-vkCopyAccelerationStructureKHR-accelerationStructureHostCommands-03582` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
 - `VUID-vkCopyAccelerationStructureKHR-buffer-03780` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
 - `VUID-vkCopyAccelerationStructureKHR-buffer-03781` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
-- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyAccelerationStructureKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkCopyAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureInfoKHR structure*/
+- `VUID-vkCopyAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureInfoKHR structure
+- `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkCopyAccelerationStructureKHR")]
     #[inline]
     pub fn copy_acceleration_structure_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
-            let r = self
-                .validate_copy_acceleration_structure_khr(deferred_operation, info);
+            let r = self.validate_copy_acceleration_structure_khr(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.copy_acceleration_structure_khr_unchecked(deferred_operation, info)
-        }
+        unsafe { self.copy_acceleration_structure_khr_unchecked(info) }
     }
     /**`vkCopyAccelerationStructureKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] checks at run time: `VUID-vkCopyAccelerationStructureKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn copy_acceleration_structure_khr_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
@@ -186,7 +186,7 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 info as *const CopyAccelerationStructureInfoKHR<'a> as *const _,
             )
         };
@@ -198,54 +198,45 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
     }
     /**`vkCopyAccelerationStructureToMemoryKHR`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Valid usage
 
 The rules of `vkCopyAccelerationStructureToMemoryKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyAccelerationStructureToMemoryKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-buffer-03731` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to host-visible device memory
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-03732` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be a valid host pointer
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-03751` (*yours*; explicit rule): `pInfo->dst.hostAddress` must be aligned to 16 bytes
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-accelerationStructureHostCommands-03584` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-buffer-03783` (*yours*; explicit rule): The `buffer` used to create `pInfo->src` must be bound to memory that was not allocated with multiple instances
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureToMemoryInfoKHR structure*/
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyAccelerationStructureToMemoryInfoKHR structure
+- `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkCopyAccelerationStructureToMemoryKHR")]
     #[inline]
     pub fn copy_acceleration_structure_to_memory_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
-            let r = self
-                .validate_copy_acceleration_structure_to_memory_khr(
-                    deferred_operation,
-                    info,
-                );
+            let r = self.validate_copy_acceleration_structure_to_memory_khr(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.copy_acceleration_structure_to_memory_khr_unchecked(
-                deferred_operation,
-                info,
-            )
-        }
+        unsafe { self.copy_acceleration_structure_to_memory_khr_unchecked(info) }
     }
     /**`vkCopyAccelerationStructureToMemoryKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_khr`] checks at run time: `VUID-vkCopyAccelerationStructureToMemoryKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn copy_acceleration_structure_to_memory_khr_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
@@ -258,7 +249,7 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 info as *const CopyAccelerationStructureToMemoryInfoKHR<'a> as *const _,
             )
         };
@@ -270,54 +261,45 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
     }
     /**`vkCopyMemoryToAccelerationStructureKHR`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Valid usage
 
 The rules of `vkCopyMemoryToAccelerationStructureKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCopyMemoryToAccelerationStructureKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-03729` (*yours*; explicit rule): `pInfo->src.hostAddress` must be a valid host pointer
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-03750` (*yours*; explicit rule): `pInfo->src.hostAddress` must be aligned to 16 bytes
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-buffer-03730` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to host-visible device memory
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-accelerationStructureHostCommands-03583` (*yours*; explicit rule): The `VkPhysicalDeviceAccelerationStructureFeaturesKHR::accelerationStructureHostCommands` feature must be enabled
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-buffer-03782` (*yours*; explicit rule): The `buffer` used to create `pInfo->dst` must be bound to memory that was not allocated with multiple instances
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
-- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToAccelerationStructureInfoKHR structure*/
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkCopyMemoryToAccelerationStructureInfoKHR structure
+- `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`*/
     #[doc(alias = "vkCopyMemoryToAccelerationStructureKHR")]
     #[inline]
     pub fn copy_memory_to_acceleration_structure_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         {
-            let r = self
-                .validate_copy_memory_to_acceleration_structure_khr(
-                    deferred_operation,
-                    info,
-                );
+            let r = self.validate_copy_memory_to_acceleration_structure_khr(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
-        unsafe {
-            self.copy_memory_to_acceleration_structure_khr_unchecked(
-                deferred_operation,
-                info,
-            )
-        }
+        unsafe { self.copy_memory_to_acceleration_structure_khr_unchecked(info) }
     }
     /**`vkCopyMemoryToAccelerationStructureKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_khr`] checks at run time: `VUID-vkCopyMemoryToAccelerationStructureKHR-deferredOperation-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_khr`] checks at run time (those of the structs it takes).*/
     #[inline]
     pub unsafe fn copy_memory_to_acceleration_structure_khr_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<crate::status::SuccessOperationDeferredOrOperationNotDeferred> {
         let fp = self
@@ -330,7 +312,7 @@ The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 info as *const CopyMemoryToAccelerationStructureInfoKHR<'a> as *const _,
             )
         };

@@ -414,32 +414,33 @@ The caller upholds the rules that [`Self::trace_rays_khr`] checks at run time: `
 impl Device {
     /**`vkCreateRayTracingPipelinesKHR`
 
+The command completes before the method returns: the method passes no deferred operation (`deferredOperation` is `VK_NULL_HANDLE`), as what it lends Vulkan lives only for the call.
+
 # Valid usage
 
 The rules of `vkCreateRayTracingPipelinesKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateRayTracingPipelinesKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkCreateRayTracingPipelinesKHR-flags-03415` (*yours*; explicit rule): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, and the `basePipelineIndex` member of that same element is not `-1`, `basePipelineIndex` …
 - `VUID-vkCreateRayTracingPipelinesKHR-flags-03416` (*yours*; explicit rule): If the `flags` member of any element of `pCreateInfos` contains the `VK_PIPELINE_CREATE_DERIVATIVE_BIT` flag, the base pipeline must have been created with the …
-- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03677` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
-- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03678` (*yours*; explicit rule): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCreateRayTracingPipelinesKHR-rayTracingPipeline-03586` (*yours*; explicit rule): The `rayTracingPipeline` feature must be enabled
 - `VUID-vkCreateRayTracingPipelinesKHR-flags-03816` (*yours*; explicit rule): `flags` must not contain the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
 - `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-02903` (*yours*; explicit rule): If `pipelineCache` was created with `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`, host access to `pipelineCache` must be externally synchronized
-- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03587` (*yours*; explicit rule): If `deferredOperation` is not VK_NULL_HANDLE, the `flags` member of elements of `pCreateInfos` must not include `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT`
 - `VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength` (*checked*): `createInfoCount` must be greater than `0`
-- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parent` (*checked*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
 - `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent` (*checked*): If `pipelineCache` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03677` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, it must be a valid VkDeferredOperationKHR object
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03678` (*by the types*): Any previous deferred operation that was associated with `deferredOperation` must be complete
 - `VUID-vkCreateRayTracingPipelinesKHR-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parameter` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, `deferredOperation` must be a valid VkDeferredOperationKHR handle
 - `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parameter` (*by the types*): If `pipelineCache` is not VK_NULL_HANDLE, `pipelineCache` must be a valid VkPipelineCache handle
 - `VUID-vkCreateRayTracingPipelinesKHR-pCreateInfos-parameter` (*by the types*): `pCreateInfos` must be a valid pointer to an array of `createInfoCount` valid VkRayTracingPipelineCreateInfoKHR structures
 - `VUID-vkCreateRayTracingPipelinesKHR-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
-- `VUID-vkCreateRayTracingPipelinesKHR-pPipelines-parameter` (*by the types*): `pPipelines` must be a valid pointer to an array of `createInfoCount` VkPipeline handles*/
+- `VUID-vkCreateRayTracingPipelinesKHR-pPipelines-parameter` (*by the types*): `pPipelines` must be a valid pointer to an array of `createInfoCount` VkPipeline handles
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parent` (*by the types*): If `deferredOperation` is a valid handle, it must have been created, allocated, or retrieved from `device`
+- `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-03587` (*by the types*): If `deferredOperation` is not VK_NULL_HANDLE, the `flags` member of elements of `pCreateInfos` must not include `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT`*/
     #[doc(alias = "vkCreateRayTracingPipelinesKHR")]
     #[inline]
     pub fn create_ray_tracing_pipelines_khr<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[RayTracingPipelineCreateInfoKHR<'a>],
     ) -> Result<
@@ -450,32 +451,23 @@ The rules of `vkCreateRayTracingPipelinesKHR` that apply to this crate's API ([r
     > {
         {
             let r = self
-                .validate_create_ray_tracing_pipelines_khr(
-                    deferred_operation,
-                    pipeline_cache,
-                    create_infos,
-                );
+                .validate_create_ray_tracing_pipelines_khr(pipeline_cache, create_infos);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
-            self.create_ray_tracing_pipelines_khr_unchecked(
-                deferred_operation,
-                pipeline_cache,
-                create_infos,
-            )
+            self.create_ray_tracing_pipelines_khr_unchecked(pipeline_cache, create_infos)
         }
     }
     /**`vkCreateRayTracingPipelinesKHR` without its dynamic checks.
 
 # Safety
 
-The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] checks at run time: `VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength`, `VUID-vkCreateRayTracingPipelinesKHR-deferredOperation-parent`, `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] checks at run time: `VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength`, `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_ray_tracing_pipelines_khr_unchecked<'a>(
         &self,
-        deferred_operation: Option<&DeferredOperationKHR>,
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[RayTracingPipelineCreateInfoKHR<'a>],
     ) -> Result<
@@ -495,7 +487,7 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] che
         let r = unsafe {
             fp(
                 self.raw(),
-                deferred_operation.map_or(vk::DeferredOperationKHR::null(), |h| h.raw()),
+                vk::DeferredOperationKHR::null(),
                 pipeline_cache.map_or(vk::PipelineCache::null(), |h| h.raw()),
                 create_infos.len() as u32,
                 create_infos.as_ptr().cast(),
