@@ -227,6 +227,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     // receiver (and the call fails when the extension is not enabled); for core,
     // alike, which keeps the call on one line.
     let the_table = table(model, &plan.name);
+    // A transition's missing extension table poisons the recorder.
+    let poisons_without_table =
+        plan.transition.is_some() && matches!(the_table, Some(Table::Extension(_)));
     let field = the_table
         .as_ref()
         .map(|t| crate::names::fn_field(model, &plan.name, t));
@@ -270,8 +273,16 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     // members take them) and seen by the body as a slice of wrappers: name, wrapper.
     let mut handle_arrays: Vec<(proc_macro2::Ident, proc_macro2::Ident)> = Vec::new();
     let mut retain: Vec<TokenStream> = Vec::new();
+    // What the method returns besides errors: its type and the expression that
+    // makes it, `()` until a parameter or the result gives a value (`has_value`).
     let mut ret_ty = quote!(());
     let mut ret_expr = quote!(());
+    let mut has_value = false;
+    // The enumerated elements are returned as the two calls fill them.
+    let mut items_as_is = false;
+    // The body records on the recorder (retains a handle, poisons it, hands it to a
+    // hook), so a transition's unchecked method takes it mutably.
+    let mut uses_recorder = poisons_without_table;
     let mut post: Vec<TokenStream> = Vec::new();
     let mut two_call = None;
     // The element type of a second array the same two calls fill.
@@ -372,7 +383,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 match user {
                     Some(u) => {
                         let ty = ash_type(model, &cx.facts, &p.type_name).unwrap_or(quote!(u32));
-                        if ty.to_string() == "usize" {
+                        if p.type_name == "size_t" {
                             call_args.push(quote!(#u.len(),));
                         } else {
                             call_args.push(quote!(#u.len() as #ty,));
@@ -425,6 +436,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 args.push(Arg::new(&name, quote!(&[&#w])));
                 if is_cmd {
                     pre.push(quote!(for h in #name { self.retain(h.retained()); }));
+                    uses_recorder = true;
                 }
                 let given = given_ident(&name);
                 call_args.push(quote!(crate::Handles::raws(#given).as_ptr(),));
@@ -585,6 +597,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     ty
                 };
                 // `bool` where Vulkan writes a `VkBool32`, as for inputs.
+                has_value = true;
                 (ret_ty, ret_expr) = match p.type_name.as_str() {
                     "VkBool32" => (quote!(bool), quote!(out != vk::FALSE)),
                     _ => (ty, quote!(out)),
@@ -609,6 +622,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 if matches!(shape, Param::Created) {
                     pre.push(quote!(let mut out = vk::#w::null();));
                     call_args.push(quote!(&mut out,));
+                    has_value = true;
                     ret_ty = quote!(#w);
                     ret_expr = match special.map_or(Keeps::Reached, |s| s.keeps) {
                         Keeps::Member(member, _) => {
@@ -664,6 +678,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     };
                     pre.push(quote!(let mut out = vec![vk::#w::null(); #count];));
                     call_args.push(quote!(out.as_mut_ptr(),));
+                    has_value = true;
                     ret_ty = quote!(Vec<#w>);
                     // One create info per created object (pipelines): each keeps what
                     // its own info names.
@@ -728,9 +743,12 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                         Some(k) => quote!(Some(#k.retained())),
                         None => quote!(None),
                     };
+                    has_value = true;
                     ret_ty = quote!(Vec<#w>);
                     ret_expr = quote!(items.into_iter().map(|raw| #w::from_raw(raw, self, #keep, false)).collect());
                 } else {
+                    has_value = true;
+                    items_as_is = true;
                     ret_ty = quote!(Vec<#elem>);
                     ret_expr = quote!(items);
                 }
@@ -740,8 +758,13 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     if let Some(sp) = special {
         pre.extend(sp.before.as_ref().map(hook_stmt));
         post.extend(sp.after.as_ref().map(hook_stmt));
+        uses_recorder |= [&sp.before, &sp.after]
+            .into_iter()
+            .flatten()
+            .any(|c| c.args.contains(&"&mut self"));
         if let Some(c) = sp.created {
             ret_expr = hook(&c, &ret_expr);
+            items_as_is = false;
         }
     }
     // A command that moves the recorder to another state hands on a new one, which
@@ -789,7 +812,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 }
             },
         };
-        if ret_expr.to_string() == "items" {
+        if items_as_is {
             quote!(#(#pre)* #safety #enumerate)
         } else {
             quote! {
@@ -808,7 +831,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // A code outside the command's success codes is the driver's error; what
         // the call made is still retained above, and dropped with the error.
         let ok = match &status {
-            Some(s) if ret_ty.to_string() == "()" => {
+            Some(s) if !has_value => {
                 // Nothing else to return: the status alone (`Suboptimal`, say).
                 ret_ty = quote!(crate::status::#s);
                 quote!(crate::status::#s::from_code(r).ok_or(Error::Vk(r)))
@@ -822,6 +845,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             }
             None => quote!(Ok(#ret_expr)),
         };
+        has_value |= status.is_some();
         quote! {
             #(#pre)*
             __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
@@ -835,7 +859,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
     } else if cmd.return_type == "void" {
         // A unit result is left out, as hand-written code would.
-        let unit_free_ret = (ret_expr.to_string() != "()").then_some(&ret_expr);
+        let unit_free_ret = has_value.then_some(&ret_expr);
         quote! {
             #(#pre)*
             __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
@@ -851,6 +875,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             t => (spelled(model, &cx.facts, t), quote!(r)),
         };
         ret_ty = rt;
+        has_value = true;
         quote! {
             #(#pre)*
             __safety!("live wrappers' handles, borrowed pointers and counts (module docs).");
@@ -889,7 +914,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     });
     let as_slices = quote!(#(#as_slices)*);
     let body = if fallible && cmd.return_type != "VkResult" && two_call.is_none() {
-        if ret_ty.to_string() == "()" {
+        if !has_value {
             // A unit result is not passed through `Ok(..)`.
             quote!(#as_slices #host_sync #load_fp { #body } Ok(()))
         } else {
@@ -927,6 +952,8 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         Some(Transition::End(_)) => Some(ident(RecorderState::Outside.type_name())),
         Some(Transition::Within(_)) | None => None,
     };
+    // Nothing returned at all, not even a `Result` or the next recorder.
+    let returns_unit = !has_value && !fallible && transition.is_none();
     let (ret, body) = match &transition {
         Some(state) => {
             self_ref = quote!(mut self);
@@ -994,7 +1021,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     };
     let owned_doc = owned_rules_doc(owned, safety.is_empty());
     // No `-> ()`: a unit return is left out, as hand-written code would.
-    let ret_arrow = if ret.to_string() == "()" {
+    let ret_arrow = if returns_unit {
         quote!()
     } else {
         quote!(-> #ret)
@@ -1199,7 +1226,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             _ => {
                 let call = if fallible {
                     quote!(unsafe { self.#unchecked(#(#call_names),*) })
-                } else if ret.to_string() == "()" {
+                } else if returns_unit {
                     quote!(unsafe { self.#unchecked(#(#call_names),*) }; Ok(()))
                 } else {
                     quote!(Ok(unsafe { self.#unchecked(#(#call_names),*) }))
@@ -1214,16 +1241,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         };
         // A transition that keeps nothing (the ends of a render pass) does not
         // change the recorder it consumes before handing it on.
-        let unchecked_self = if transition.is_some()
-            && !body.to_string().contains("self . accept")
-            && !body.to_string().contains("self . retain")
-            && !body.to_string().contains("& mut self")
-        {
+        let unchecked_self = if transition.is_some() && !uses_recorder && retain.is_empty() {
             quote!(self)
         } else {
             self_ref.clone()
         };
-        let checked_arrow = if ret_checked.to_string() == "()" {
+        // Only a recorded command's checks poison the recorder rather than return
+        // an error, so only it can return nothing.
+        let checked_arrow = if is_cmd && returns_unit {
             quote!()
         } else {
             quote!(-> #ret_checked)
