@@ -433,7 +433,8 @@ pub fn render(r: &Recognised) -> TokenStream {
     let key = r
         .key
         .as_deref()
-        .and_then(|k| crate::model::expr::Expr::parse(k).ok());
+        .and_then(|k| crate::model::expr::Expr::parse(k).ok())
+        .map(|e| e.simplified());
     match (key, &r.check.each) {
         // A rule about each element: the loop runs only where the rule applies.
         (Some(e), Some(_)) => {

@@ -65,6 +65,37 @@ impl Expr {
         }
     }
 
+    /// The same expression with nested operands of the same kind flattened
+    /// (`A,(B,A)` is `A,B,A`), repeated operands dropped (`A,B`) and a lone operand
+    /// standing for its group: validusage.json's keys repeat the version a rule's
+    /// item belongs to inside the alternatives of its extension.
+    pub fn simplified(&self) -> Expr {
+        match self {
+            Expr::Name(_) => self.clone(),
+            Expr::Not(e) => Expr::Not(Box::new(e.simplified())),
+            Expr::All(v) | Expr::Any(v) => {
+                let any = matches!(self, Expr::Any(_));
+                let mut flat: Vec<Expr> = Vec::new();
+                for e in v.iter().map(Expr::simplified) {
+                    let inner = match (&e, any) {
+                        (Expr::Any(w), true) | (Expr::All(w), false) => w.clone(),
+                        _ => vec![e],
+                    };
+                    for e in inner {
+                        if !flat.contains(&e) {
+                            flat.push(e);
+                        }
+                    }
+                }
+                match (flat.len(), any) {
+                    (1, _) => flat.pop().expect("one operand"),
+                    (_, true) => Expr::Any(flat),
+                    (_, false) => Expr::All(flat),
+                }
+            }
+        }
+    }
+
     /// The names the expression mentions.
     pub fn names(&self) -> BTreeSet<&str> {
         let mut out = BTreeSet::new();
@@ -293,6 +324,35 @@ mod tests {
         assert!(eval("(A,C)+C", &en));
         assert!(eval("C+!(A,B)", &en));
         assert!(!eval("!(C)", &en));
+    }
+
+    #[test]
+    fn simplified_flattens_and_drops_repeats_without_changing_the_value() {
+        let simple = |e: &str| Expr::parse(e).expect("parses").simplified();
+        let p = |e: &str| Expr::parse(e).expect("parses");
+        assert_eq!(simple("V13,(SYNC2,V13)"), p("V13,SYNC2"));
+        assert_eq!(simple("(A+B)+(B+C)"), p("A+B+C"));
+        assert_eq!(simple("(A,A)+B"), p("A+B"));
+        assert_eq!(simple("!((A,A))"), p("!(A)"));
+        // Groups of the other kind stay whole.
+        assert_eq!(simple("A,(B+A)"), p("A,B+A"));
+        for e in [
+            "V13,(SYNC2,V13)",
+            "(A+B)+(B+C)",
+            "A,(B+A),!(C,C)",
+            "(A,(B,(C+D)))+A",
+        ] {
+            let (before, after) = (p(e), simple(e));
+            for bits in 0..64u32 {
+                let en: BTreeSet<String> = ["A", "B", "C", "D", "V13", "SYNC2"]
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| bits & (1 << i) != 0)
+                    .map(|(_, n)| n.to_string())
+                    .collect();
+                assert_eq!(before.eval(&en), after.eval(&en), "{e} with {en:?}");
+            }
+        }
     }
 
     #[test]

@@ -105,8 +105,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
-                || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                    || s.exts.has(origin::VK_VERSION_1_3))))
+                || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && !s.feature(|f| f.v13.synchronization2)
             && matches!(pipeline_stage.as_raw(), 0)
         {

@@ -41,8 +41,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
-                || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                    || s.exts.has(origin::VK_VERSION_1_3))))
+                || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0
         {
             return Err(
@@ -57,8 +56,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
-                || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                    || s.exts.has(origin::VK_VERSION_1_3))))
+                || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0
         {
             return Err(
@@ -73,8 +71,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
-                || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                    || s.exts.has(origin::VK_VERSION_1_3))))
+                || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -86,8 +83,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
-                || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                    || s.exts.has(origin::VK_VERSION_1_3))))
+                || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && s
                 .buffer(dst_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
@@ -102,8 +98,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
-                || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                    || s.exts.has(origin::VK_VERSION_1_3))))
+                || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && s
                 .buffer(dst_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -118,8 +113,7 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
-                || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                    || s.exts.has(origin::VK_VERSION_1_3)))) && dst_offset % 4 != 0
+                || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))) && dst_offset % 4 != 0
         {
             return Err(
                 fail(

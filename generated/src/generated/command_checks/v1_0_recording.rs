@@ -331,8 +331,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
             && matches!(pipeline_stage.as_raw(), 0)
         {
@@ -1807,9 +1806,7 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
-        if s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
-                || s.exts.has(origin::VK_VERSION_1_1))
+        if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
         {
             for (i, e) in regions.iter().enumerate() {
                 if s
@@ -1833,9 +1830,7 @@ impl<'c> Recorder<'c, Outside> {
                 }
             }
         }
-        if s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
-                || s.exts.has(origin::VK_VERSION_1_1))
+        if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
         {
             for (i, e) in regions.iter().enumerate() {
                 if s

@@ -57,8 +57,7 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_SAMPLER_YCBCR_CONVERSION)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_SAMPLER_YCBCR_CONVERSION))
             && !s.feature(|f| f.v11.sampler_ycbcr_conversion)
         {
             return Err(

@@ -24,8 +24,7 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -43,8 +42,7 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -62,8 +60,7 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -100,8 +97,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
-                || s.exts.has(origin::VK_VERSION_1_1))) && device_mask == 0
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP)) && device_mask == 0
         {
             return Err(
                 fail(

@@ -17,8 +17,7 @@ impl Device {
         let s = &self.scope();
         if ((s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)
-            || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !(s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
@@ -35,8 +34,7 @@ impl Device {
     pub(crate) fn validate_get_buffer_opaque_capture_address(&self) -> Result<()> {
         let s = &self.scope();
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
             return Err(
@@ -54,8 +52,7 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
             return Err(
@@ -98,8 +95,7 @@ impl Device {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_EXT_HOST_QUERY_RESET)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_EXT_HOST_QUERY_RESET))
             && !s.feature(|f| f.v12.host_query_reset)
         {
             return Err(

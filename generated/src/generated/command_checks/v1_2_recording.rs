@@ -76,8 +76,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -91,8 +90,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -106,8 +104,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2))) && offset % 4 != 0
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
         {
             return Err(
                 fail(
@@ -119,8 +116,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -134,8 +130,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -149,8 +144,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2))) && count_buffer_offset % 4 != 0
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            && count_buffer_offset % 4 != 0
         {
             return Err(
                 fail(
@@ -204,8 +199,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -219,8 +213,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -234,8 +227,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2))) && offset % 4 != 0
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
         {
             return Err(
                 fail(
@@ -247,8 +239,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -262,8 +253,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && s
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
@@ -277,8 +267,8 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)
-                || s.exts.has(origin::VK_VERSION_1_2))) && count_buffer_offset % 4 != 0
+            || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
+            && count_buffer_offset % 4 != 0
         {
             return Err(
                 fail(

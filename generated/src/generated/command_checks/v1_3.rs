@@ -10,8 +10,7 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_EXT_PRIVATE_DATA)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_EXT_PRIVATE_DATA))
             && !s.feature(|f| f.v13.private_data)
         {
             return Err(
@@ -120,8 +119,7 @@ impl Queue {
             }
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(

@@ -22,8 +22,7 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
             && !s.feature(|f| f.v13.dynamic_rendering)
         {
             return Err(
@@ -203,8 +202,7 @@ impl<'c, S: State> Recorder<'c, S> {
             }
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_EXT_EXTENDED_DYNAMIC_STATE)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_EXT_EXTENDED_DYNAMIC_STATE))
             && s
                 .limits()
                 .is_some_and(|l| {
@@ -589,8 +587,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -642,8 +639,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             }
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -692,8 +688,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0
         {
             return Err(
@@ -707,8 +702,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0
         {
             return Err(
@@ -722,8 +716,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -771,8 +764,7 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0
         {
             return Err(
@@ -786,8 +778,7 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.tessellation_shader)
             && (stage_mask.as_raw() & 48) != 0
         {
@@ -802,8 +793,7 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(
@@ -814,8 +804,7 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && (stage_mask.as_raw() & 16384) != 0
         {
             return Err(
@@ -859,8 +848,7 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3)))
+            || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
             return Err(

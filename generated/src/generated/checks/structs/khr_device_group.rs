@@ -36,8 +36,7 @@ pub fn check_acquire_next_image_info_khr(
     }
     if (s.exts.has(origin::VK_KHR_SURFACE) && s.exts.has(origin::VK_KHR_SWAPCHAIN)
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
-                || s.exts.has(origin::VK_VERSION_1_1)))) && v.device_mask == 0
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))) && v.device_mask == 0
     {
         return Err(
             fail(

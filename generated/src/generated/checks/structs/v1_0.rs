@@ -190,9 +190,7 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-            || s.exts.has(origin::VK_VERSION_1_1)))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -209,9 +207,7 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-            || s.exts.has(origin::VK_VERSION_1_1)))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -229,8 +225,7 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -245,8 +240,7 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -261,8 +255,7 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -280,8 +273,7 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -299,8 +291,7 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -318,8 +309,7 @@ pub fn check_attachment_description(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -388,8 +378,7 @@ pub fn check_attachment_reference(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
@@ -570,8 +559,7 @@ pub fn check_buffer_create_info(
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
         || s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)
-        || (s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
         && !(s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)))
         && (v.flags.as_raw() & 16) != 0
         && !s.feature(|f| f.v12.buffer_device_address_capture_replay)
@@ -978,8 +966,7 @@ pub fn check_compute_pipeline_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
@@ -1162,8 +1149,7 @@ pub fn check_descriptor_pool_size(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.ty.as_raw(), 1000138000) && v.descriptor_count % 4 != 0
     {
         return Err(
@@ -1231,8 +1217,7 @@ pub fn check_descriptor_set_layout_binding(
         "VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && !s.feature(|f| f.v13.inline_uniform_block)
         && matches!(v.descriptor_type.as_raw(), 1000138000)
     {
@@ -1247,8 +1232,7 @@ pub fn check_descriptor_set_layout_binding(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {
@@ -1559,8 +1543,7 @@ pub fn check_framebuffer_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_IMAGELESS_FRAMEBUFFER)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_IMAGELESS_FRAMEBUFFER))
         && !s.feature(|f| f.v12.imageless_framebuffer) && (v.flags.as_raw() & 1) != 0
     {
         return Err(
@@ -1634,8 +1617,7 @@ pub fn check_graphics_pipeline_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
@@ -2129,10 +2111,8 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
-            || s.exts.has(origin::VK_VERSION_1_1))) && (v.flags.as_raw() & 32) != 0
-        && !matches!(v.image_type.as_raw(), 2)
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1))
+        && (v.flags.as_raw() & 32) != 0 && !matches!(v.image_type.as_raw(), 2)
     {
         return Err(
             fail(
@@ -2155,10 +2135,8 @@ pub fn check_image_create_info(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-            || s.exts.has(origin::VK_VERSION_1_1))) && (v.flags.as_raw() & 128) != 0
-        && (v.flags.as_raw() & 8) == 0
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
+        && (v.flags.as_raw() & 128) != 0 && (v.flags.as_raw() & 8) == 0
     {
         return Err(
             fail(
@@ -2272,8 +2250,7 @@ pub fn check_image_memory_barrier(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -2288,8 +2265,7 @@ pub fn check_image_memory_barrier(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -2602,8 +2578,7 @@ pub fn check_pipeline_cache_create_info(
         "VUID-VkPipelineCacheCreateInfo-flags-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_PIPELINE_CREATION_CACHE_CONTROL))
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 1) != 0
     {
@@ -3851,8 +3826,7 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MULTIVIEW) || s.exts.has(origin::VK_VERSION_1_1)))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
         return Err(
@@ -3865,8 +3839,7 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MULTIVIEW) || s.exts.has(origin::VK_VERSION_1_1)))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
         return Err(
@@ -3969,10 +3942,7 @@ pub fn check_subpass_description(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-            || s.exts.has(origin::VK_VERSION_1_1))
-    {
+    if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_color_attachments, v.color_attachment_count) }
@@ -3995,10 +3965,7 @@ pub fn check_subpass_description(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-            || s.exts.has(origin::VK_VERSION_1_1))
-    {
+    if s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
@@ -4022,8 +3989,7 @@ pub fn check_subpass_description(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -4048,8 +4014,7 @@ pub fn check_subpass_description(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -4074,8 +4039,7 @@ pub fn check_subpass_description(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-            || s.exts.has(origin::VK_VERSION_1_2))
+        || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -4399,9 +4363,7 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
-            || s.exts.has(origin::VK_VERSION_1_1))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
         || s.exts.has(origin::VK_AMD_NEGATIVE_VIEWPORT_HEIGHT)) && (v.y as f64).is_nan()
         || s.limits().is_some_and(|l| (v.y as f64) > (l.viewport_bounds_range[1] as f64))
     {
@@ -4415,9 +4377,7 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
-            || s.exts.has(origin::VK_VERSION_1_1))
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1)
         || s.exts.has(origin::VK_AMD_NEGATIVE_VIEWPORT_HEIGHT))
         && s
             .limits()
@@ -4507,8 +4467,7 @@ pub fn check_write_descriptor_set(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.dst_array_element % 4 != 0
     {
@@ -4523,8 +4482,7 @@ pub fn check_write_descriptor_set(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {

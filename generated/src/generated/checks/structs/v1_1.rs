@@ -159,9 +159,8 @@ pub fn check_device_group_command_buffer_begin_info(
     v: &vk::DeviceGroupCommandBufferBeginInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
-            || s.exts.has(origin::VK_VERSION_1_1))) && v.device_mask == 0
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+        && v.device_mask == 0
     {
         return Err(
             fail(
@@ -179,9 +178,8 @@ pub fn check_device_group_render_pass_begin_info(
     v: &vk::DeviceGroupRenderPassBeginInfo<'_>,
     s: &Scope<'_>,
 ) -> Result<()> {
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_DEVICE_GROUP)
-            || s.exts.has(origin::VK_VERSION_1_1))) && v.device_mask == 0
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+        && v.device_mask == 0
     {
         return Err(
             fail(
@@ -355,9 +353,8 @@ pub fn check_input_attachment_aspect_reference(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_1)
-        || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-            || s.exts.has(origin::VK_VERSION_1_1))) && (v.aspect_mask.as_raw() & 8) != 0
+    if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
+        && (v.aspect_mask.as_raw() & 8) != 0
     {
         return Err(
             fail(

@@ -53,8 +53,7 @@ pub fn check_attachment_description2(
         "VUID-VkAttachmentDescription2-finalLayout-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::COLOR)
@@ -73,8 +72,7 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && matches!(v.final_layout.as_raw(), 0 | 8)
     {
         return Err(
@@ -88,8 +86,7 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -107,8 +104,7 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -126,8 +122,7 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -145,8 +140,7 @@ pub fn check_attachment_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -164,11 +158,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-                || s.exts.has(origin::VK_VERSION_1_1))))
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -186,11 +178,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-                || s.exts.has(origin::VK_VERSION_1_1))))
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -208,11 +198,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -227,11 +215,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
@@ -246,11 +232,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -268,11 +252,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 !a.contains(vk::ImageAspectFlags::DEPTH)
@@ -290,11 +272,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -312,11 +292,9 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && crate::formats::aspects(v.format)
             .is_some_and(|a| {
                 a.contains(vk::ImageAspectFlags::DEPTH)
@@ -334,8 +312,7 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
             || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
@@ -352,8 +329,7 @@ pub fn check_attachment_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
             || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
@@ -393,11 +369,9 @@ pub fn check_attachment_description_stencil_layout(
         "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-parameter",
     )?;
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(
             v.stencil_initial_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
             1000241000 | 1000241001
@@ -414,11 +388,9 @@ pub fn check_attachment_description_stencil_layout(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(
             v.stencil_final_layout.as_raw(), 2..= 4 | 1000117000 | 1000117001 |
             1000241000 | 1000241001
@@ -435,11 +407,9 @@ pub fn check_attachment_description_stencil_layout(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(v.stencil_final_layout.as_raw(), 0 | 8)
     {
         return Err(
@@ -465,8 +435,7 @@ pub fn check_attachment_reference2(
         "VUID-VkAttachmentReference2-layout-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2))) && v.attachment != u32::MAX
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)) && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 0 | 8 | 1000001002)
     {
         return Err(
@@ -480,11 +449,9 @@ pub fn check_attachment_reference2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
@@ -500,8 +467,7 @@ pub fn check_attachment_reference2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
             || s.exts.has(origin::VK_VERSION_1_3)))
         && !s.feature(|f| f.v13.synchronization2)
@@ -536,11 +502,9 @@ pub fn check_attachment_reference_stencil_layout(
         "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-parameter",
     )?;
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2))))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(
             v.stencil_layout.as_raw(), 0 | 2..= 4 | 8 | 1000001002 | 1000117000 |
             1000117001 | 1000241000 | 1000241001
@@ -653,8 +617,7 @@ pub fn check_image_stencil_usage_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_EXT_SEPARATE_STENCIL_USAGE)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_EXT_SEPARATE_STENCIL_USAGE))
         && (v.stencil_usage.as_raw() & 64) != 0
         && (v.stencil_usage.as_raw() & 3997471) != 0
     {
@@ -731,8 +694,7 @@ pub fn check_semaphore_type_create_info(
         "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE))
         && !s.feature(|f| f.v12.timeline_semaphore)
         && matches!(v.semaphore_type.as_raw(), 1)
     {
@@ -747,8 +709,7 @@ pub fn check_semaphore_type_create_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE))
         && matches!(v.semaphore_type.as_raw(), 0) && v.initial_value != 0
     {
         return Err(
@@ -826,8 +787,7 @@ pub fn check_subpass_dependency2(
         "VUID-VkSubpassDependency2-dependencyFlags-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -841,8 +801,7 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -857,8 +816,7 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -872,8 +830,7 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -888,8 +845,7 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
         return Err(
@@ -903,8 +859,7 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
         return Err(
@@ -918,8 +873,7 @@ pub fn check_subpass_dependency2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) == 0 && v.view_offset != 0
     {
         return Err(
@@ -956,8 +910,7 @@ pub fn check_subpass_description2(
         "VUID-VkSubpassDescription2-pipelineBindPoint-parameter",
     )?;
     if s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -980,8 +933,7 @@ pub fn check_subpass_description2(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1004,8 +956,7 @@ pub fn check_subpass_description2(
         }
     }
     if s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1028,8 +979,7 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && s
             .limits()
             .is_some_and(|l| {
@@ -1047,11 +997,9 @@ pub fn check_subpass_description2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1076,11 +1024,9 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE2)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_MAINTENANCE2))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1105,11 +1051,9 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1134,11 +1078,9 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1163,11 +1105,9 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_VERSION_1_2)
-            || (s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)
-                || s.exts.has(origin::VK_VERSION_1_2)))
+            || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -1192,8 +1132,7 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
             || s.exts.has(origin::VK_VERSION_1_3))
     {
@@ -1218,8 +1157,7 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
             || s.exts.has(origin::VK_VERSION_1_3))
     {
@@ -1244,8 +1182,7 @@ pub fn check_subpass_description2(
         }
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
             || s.exts.has(origin::VK_VERSION_1_3))
     {
@@ -1270,8 +1207,7 @@ pub fn check_subpass_description2(
         }
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !(s.exts.has(origin::VK_HUAWEI_SUBPASS_SHADING)))
         && !matches!(v.pipeline_bind_point.as_raw(), 0)
     {
@@ -1286,11 +1222,8 @@ pub fn check_subpass_description2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_2)
-        || (s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)
-            || s.exts.has(origin::VK_VERSION_1_2)))
-        && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MULTIVIEW)
-                || s.exts.has(origin::VK_VERSION_1_1))))
+        || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
+        && (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW)))
         && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
         return Err(

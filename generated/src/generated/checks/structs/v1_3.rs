@@ -41,9 +41,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -54,9 +52,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -69,9 +65,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -82,9 +76,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -97,10 +89,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -126,10 +115,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -155,10 +141,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -187,10 +170,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -219,10 +199,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -249,10 +226,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -279,10 +253,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -327,10 +298,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -375,10 +343,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -423,10 +388,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -471,10 +433,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -519,10 +478,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -567,9 +523,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -583,9 +537,7 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -611,9 +563,8 @@ pub fn check_buffer_image_copy2(
     s: &Scope<'_>,
 ) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.image_extent.width == 0
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+        && v.image_extent.width == 0
     {
         return Err(
             fail(
@@ -625,9 +576,8 @@ pub fn check_buffer_image_copy2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.image_extent.height == 0
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+        && v.image_extent.height == 0
     {
         return Err(
             fail(
@@ -639,9 +589,8 @@ pub fn check_buffer_image_copy2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.image_extent.depth == 0
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+        && v.image_extent.depth == 0
     {
         return Err(
             fail(
@@ -688,8 +637,7 @@ pub fn check_buffer_memory_barrier2(
         "VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -703,8 +651,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -719,8 +666,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
@@ -735,8 +681,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -751,8 +696,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -767,8 +711,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -783,8 +726,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -799,8 +741,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -815,8 +756,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -831,8 +771,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -847,8 +786,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -863,8 +801,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -879,8 +816,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -895,8 +831,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -911,8 +846,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -927,8 +861,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -943,8 +876,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -959,8 +891,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -975,8 +906,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -991,8 +921,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -1006,8 +935,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -1022,8 +950,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
@@ -1038,8 +965,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -1054,8 +980,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -1070,8 +995,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -1086,8 +1010,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1102,8 +1025,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1118,8 +1040,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1134,8 +1055,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1150,8 +1070,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -1166,8 +1085,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -1182,8 +1100,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -1198,8 +1115,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -1214,8 +1130,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -1230,8 +1145,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -1246,8 +1160,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -1262,8 +1175,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -1278,8 +1190,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -1294,8 +1205,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128))
     {
         return Err(
@@ -1309,8 +1219,8 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.size != u64::MAX && v.size == 0
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)) && v.size != u64::MAX
+        && v.size == 0
     {
         return Err(
             fail(
@@ -1323,8 +1233,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.size != u64::MAX
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)) && v.size != u64::MAX
         && s
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.size as i128) > (r.size as i128))
@@ -1340,8 +1249,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
@@ -1353,8 +1261,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
@@ -1370,8 +1277,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
@@ -1387,8 +1293,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
@@ -1404,8 +1309,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
@@ -1421,8 +1325,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
@@ -1438,8 +1341,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
@@ -1455,8 +1357,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
@@ -1472,8 +1373,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
@@ -1489,8 +1389,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -1506,8 +1405,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -1523,8 +1421,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -1540,8 +1437,7 @@ pub fn check_buffer_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -1592,9 +1488,8 @@ pub fn check_command_buffer_inheritance_rendering_info(
         "VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
-            || s.exts.has(origin::VK_VERSION_1_3))) && !s.feature(|f| f.v11.multiview)
-        && v.view_mask != 0
+        || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
+        && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
         return Err(
             fail(
@@ -1639,10 +1534,7 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1666,10 +1558,7 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1693,10 +1582,7 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1722,10 +1608,7 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1751,9 +1634,7 @@ pub fn check_copy_buffer_info2(
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -1764,9 +1645,7 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .buffer(v.src_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1779,9 +1658,7 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -1792,9 +1669,7 @@ pub fn check_copy_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .buffer(v.dst_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1845,9 +1720,7 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -1858,9 +1731,7 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .buffer(v.src_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1873,9 +1744,7 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -1886,9 +1755,7 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1901,10 +1768,7 @@ pub fn check_copy_buffer_to_image_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1930,10 +1794,7 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1962,10 +1823,7 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2011,10 +1869,7 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2060,10 +1915,7 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2109,10 +1961,7 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2139,9 +1988,7 @@ pub fn check_copy_buffer_to_image_info2(
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -2199,10 +2046,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2228,10 +2072,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2257,10 +2098,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2289,10 +2127,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2321,10 +2156,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2351,10 +2183,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2381,10 +2210,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2430,10 +2256,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2479,10 +2302,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2529,10 +2349,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2555,10 +2372,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2581,10 +2395,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2630,10 +2441,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2679,10 +2487,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2729,12 +2534,9 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_MAINTENANCE1))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -2761,12 +2563,9 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && (s.exts.has(origin::VK_VERSION_1_1)
-            || (s.exts.has(origin::VK_KHR_MAINTENANCE1)
-                || s.exts.has(origin::VK_VERSION_1_1)))
+            || s.exts.has(origin::VK_KHR_MAINTENANCE1))
     {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
@@ -2793,9 +2592,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -2809,9 +2606,7 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -2867,9 +2662,7 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -2880,9 +2673,7 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -2895,9 +2686,7 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -2908,9 +2697,7 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .buffer(v.dst_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -2923,10 +2710,7 @@ pub fn check_copy_image_to_buffer_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2952,10 +2736,7 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -2984,10 +2765,7 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -3033,10 +2811,7 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -3082,10 +2857,7 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -3131,10 +2903,7 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -3161,9 +2930,7 @@ pub fn check_copy_image_to_buffer_info2(
             }
         }
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -3253,9 +3020,8 @@ pub fn check_image_blit2(v: &vk::ImageBlit2<'_>, s: &Scope<'_>) -> Result<()> {
 pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.extent.width == 0
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+        && v.extent.width == 0
     {
         return Err(
             fail(
@@ -3267,9 +3033,8 @@ pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.extent.height == 0
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+        && v.extent.height == 0
     {
         return Err(
             fail(
@@ -3281,9 +3046,8 @@ pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.extent.depth == 0
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
+        && v.extent.depth == 0
     {
         return Err(
             fail(
@@ -3336,8 +3100,7 @@ pub fn check_image_memory_barrier2(
     )?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -3351,8 +3114,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -3367,8 +3129,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
@@ -3383,8 +3144,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -3399,8 +3159,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -3415,8 +3174,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -3431,8 +3189,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3447,8 +3204,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3463,8 +3219,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3479,8 +3234,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3495,8 +3249,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3511,8 +3264,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -3527,8 +3279,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -3543,8 +3294,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -3559,8 +3309,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -3575,8 +3324,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -3591,8 +3339,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -3607,8 +3354,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -3623,8 +3369,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -3639,8 +3384,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -3654,8 +3398,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -3670,8 +3413,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
@@ -3686,8 +3428,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -3702,8 +3443,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -3718,8 +3458,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -3734,8 +3473,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3750,8 +3488,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3766,8 +3503,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3782,8 +3518,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3798,8 +3533,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -3814,8 +3548,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -3830,8 +3563,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -3846,8 +3578,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -3862,8 +3593,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -3878,8 +3608,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -3894,8 +3623,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -3910,8 +3638,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -3926,8 +3653,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -3942,8 +3668,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s
             .image(v.image)
             .is_some_and(|r| {
@@ -3961,8 +3686,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && v.subresource_range.level_count != u32::MAX
         && s
             .image(v.image)
@@ -3982,8 +3706,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s
             .image(v.image)
             .is_some_and(|r| {
@@ -4002,8 +3725,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && v.subresource_range.layer_count != u32::MAX
         && s
             .image(v.image)
@@ -4023,8 +3745,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
         return Err(
@@ -4036,8 +3757,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
@@ -4053,8 +3773,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
@@ -4070,8 +3789,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
@@ -4087,8 +3805,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
@@ -4104,8 +3821,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
@@ -4121,8 +3837,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
@@ -4138,8 +3853,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
@@ -4155,8 +3869,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
@@ -4172,8 +3885,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -4189,8 +3901,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -4206,8 +3917,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -4223,8 +3933,7 @@ pub fn check_image_memory_barrier2(
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -4239,12 +3948,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
-        && (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3))))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
@@ -4258,12 +3963,8 @@ pub fn check_image_memory_barrier2(
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
-        && (s.exts.has(origin::VK_VERSION_1_3)
-            || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-                || s.exts.has(origin::VK_VERSION_1_3))))
+    if (s.exts.has(origin::VK_VERSION_1_3)
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {

@@ -25,8 +25,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         "VUID-VkMemoryBarrier2-dstAccessMask-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -40,8 +39,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
@@ -56,8 +54,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
@@ -72,8 +69,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -88,8 +84,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -104,8 +99,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -120,8 +114,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -136,8 +129,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -152,8 +144,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -168,8 +159,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -184,8 +174,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -200,8 +189,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -216,8 +204,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
@@ -232,8 +219,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -248,8 +234,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
@@ -264,8 +249,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -280,8 +264,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -296,8 +279,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -312,8 +294,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
@@ -328,8 +309,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -343,8 +323,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
@@ -359,8 +338,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
@@ -375,8 +353,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
@@ -391,8 +368,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
@@ -407,8 +383,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
@@ -423,8 +398,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -439,8 +413,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -455,8 +428,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -471,8 +443,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -487,8 +458,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
@@ -503,8 +473,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -519,8 +488,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
@@ -535,8 +503,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -551,8 +518,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
@@ -567,8 +533,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
@@ -583,8 +548,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
@@ -599,8 +563,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -615,8 +578,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
@@ -631,8 +593,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
@@ -648,8 +609,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
@@ -665,8 +625,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
@@ -682,8 +641,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
@@ -699,8 +657,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
@@ -716,8 +673,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_EXT_OPACITY_MICROMAP))
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
@@ -733,8 +689,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
@@ -750,8 +705,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !(s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)))
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
@@ -767,8 +721,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -784,8 +737,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
@@ -801,8 +753,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -818,8 +769,7 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.exts.has(origin::VK_NV_OPTICAL_FLOW))
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
@@ -911,8 +861,7 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
         "VUID-VkRenderingInfo-flags-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.view_mask == 0
+        || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)) && v.view_mask == 0
         && v.layer_count == 0
     {
         return Err(
@@ -926,9 +875,8 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)
-            || s.exts.has(origin::VK_VERSION_1_3))) && !s.feature(|f| f.v11.multiview)
-        && v.view_mask != 0
+        || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
+        && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
         return Err(
             fail(
@@ -1007,9 +955,7 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1022,9 +968,7 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
@@ -1037,10 +981,7 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1066,10 +1007,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1095,10 +1033,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1127,10 +1062,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1159,10 +1091,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1208,10 +1137,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1257,10 +1183,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1306,10 +1229,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1355,10 +1275,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1404,10 +1321,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3))
-    {
+    if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
         for (i, e) in {
             // SAFETY: the safe setter stored this array and its count.
             unsafe { members(v.p_regions, v.region_count) }
@@ -1453,9 +1367,7 @@ pub fn check_resolve_image_info2(
             }
         }
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
         return Err(
@@ -1466,9 +1378,7 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
         return Err(
@@ -1479,9 +1389,7 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
@@ -1495,9 +1403,7 @@ pub fn check_resolve_image_info2(
             ),
         );
     }
-    if ((s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_COPY_COMMANDS2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+    if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
@@ -1528,8 +1434,7 @@ pub fn check_semaphore_submit_info(
         "VUID-VkSemaphoreSubmitInfo-stageMask-parameter",
     )?;
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.stage_mask.as_raw() & 64) != 0
     {
         return Err(
@@ -1543,8 +1448,7 @@ pub fn check_semaphore_submit_info(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-            || s.exts.has(origin::VK_VERSION_1_3)))
+        || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader) && (v.stage_mask.as_raw() & 48) != 0
     {
         return Err(
@@ -1594,8 +1498,7 @@ pub fn check_write_descriptor_set_inline_uniform_block(
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
-        || (s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)
-            || s.exts.has(origin::VK_VERSION_1_3))) && v.data_size % 4 != 0
+        || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)) && v.data_size % 4 != 0
     {
         return Err(
             fail(
