@@ -272,27 +272,22 @@ fn implicit(
                 }
             }
             K::ArrayLength => Settlement::User("a slice may be empty; not checked".into()),
-            // The method is called on the child, and passes its own parent.
-            K::Parent
-                if model.commands[&d.item]
+            K::Parent => {
+                let shape = model.commands[&d.item]
                     .params
                     .iter()
                     .zip(&plan.params)
-                    .any(|(p, s)| Some(&p.name) == d.field.as_ref() && *s == Param::Receiver) =>
-            {
-                Settlement::Static(
-                    "the method is called on the handle, and passes the handle's own parent as the command's first parameter".into(),
-                )
-            }
-            // No deferred operation is passed, so none has a parent to check.
-            K::Parent
-                if model.commands[&d.item]
-                    .params
-                    .iter()
-                    .zip(&plan.params)
-                    .any(|(p, s)| Some(&p.name) == d.field.as_ref() && *s == Param::NotDeferred) =>
-            {
-                Settlement::Static(NOT_DEFERRED.into())
+                    .find(|(p, _)| Some(&p.name) == d.field.as_ref())
+                    .map(|(_, s)| s);
+                match shape {
+                    // The method is called on the child, and passes its own parent.
+                    Some(Param::Receiver) => Settlement::Static(
+                        "the method is called on the handle, and passes the handle's own parent as the command's first parameter".into(),
+                    ),
+                    // No deferred operation is passed, so none has a parent to check.
+                    Some(Param::NotDeferred) => Settlement::Static(NOT_DEFERRED.into()),
+                    _ => Settlement::User(format!("`{}` rules are not checked yet", d.kind.tag())),
+                }
             }
             _ => Settlement::User(format!("`{}` rules are not checked yet", d.kind.tag())),
         };
