@@ -411,6 +411,13 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 || (category == Some(Kind::Struct)
                     && !cx.facts.is_safe(&p.type_name)
                     && !cx.facts.has_lifetime(&p.type_name)))
+            // The registry gives the inner lengths only in prose (`pInfos[i].geometryCount`),
+            // so a slice of slices needs a special-case check of them; without one the
+            // caller passes raw pointers.
+            && super::hooks::special(name).is_some_and(|s| {
+                s.check
+                    .is_some_and(|c| c.args.contains(&crate::names::param(&p.name).as_str()))
+            })
         {
             Param::SliceOfSlices
         } else if p.pointers == 2 && p.const_pointees == [false, false] && pp.len.is_empty() {

@@ -1859,6 +1859,15 @@ pub const SPECIALS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkBuildAccelerationStructuresKHR",
+        check: call(
+            "hooks::per_geometry_fits",
+            &["infos", "build_range_infos", "Some(\"VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676\")"],
+        ),
+        settles: &[("VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676", How::User(UNPROVEN_ACCELERATION))],
+        ..NONE
+    },
+    Special {
         command: "vkCmdBuildAccelerationStructuresIndirectKHR",
         check: call(
             "hooks::per_geometry_fits",

@@ -46,7 +46,7 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 - `VUID-vkBuildAccelerationStructuresKHR-firstVertex-03770` (*yours*; explicit rule): For each `VkAccelerationStructureBuildRangeInfoKHR` referenced by this command, if the corresponding geometry uses indices, its `firstVertex` member must have the same value which was specified when …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03801` (*yours*; explicit rule): For each element of `pInfos`\[i\].`pGeometries` or `pInfos`\[i\].`ppGeometries` with a `geometryType` of `VK_GEOMETRY_TYPE_INSTANCES_KHR`, the corresponding `ppBuildRangeInfos`\[i\]\[j\].`primitiveCount` must …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03675` (*yours*; explicit rule): For each `pInfos`\[i\], `dstAccelerationStructure` must have been created with a value of VkAccelerationStructureCreateInfoKHR::`size` greater than or equal to the memory size required by the build …
-- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; explicit rule): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
+- `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676` (*yours*; checked by the safe methods in every build): Each element of `ppBuildRangeInfos`\[i\] must be a valid pointer to an array of `pInfos`\[i\].`geometryCount` `VkAccelerationStructureBuildRangeInfoKHR` structures
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03722` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create its `dstAccelerationStructure` member must be bound to host-visible device memory
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03723` (*yours*; explicit rule): For each element of `pInfos`, if its `mode` member is `VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR` the `buffer` used to create its `srcAccelerationStructure` member must be bound to host-visible …
 - `VUID-vkBuildAccelerationStructuresKHR-pInfos-03724` (*yours*; explicit rule): For each element of `pInfos`, the `buffer` used to create each acceleration structure referenced by the `geometry.instances.data` member of any element of `pGeometries` or `ppGeometries` with a …
@@ -87,6 +87,11 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
                 ),
             });
         }
+        crate::hooks::per_geometry_fits(
+            infos,
+            build_range_infos,
+            Some("VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676"),
+        )?;
         {
             let r = self.validate_build_acceleration_structures_khr(infos);
             r?;
@@ -101,7 +106,7 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
 
 # Safety
 
-The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structures_khr`] checks at run time: `VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676`, `VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_acceleration_structures_khr_unchecked<'a>(
         &self,
