@@ -51,7 +51,8 @@ pub enum Param {
     /// An array of pointers to arrays of plain structs or numbers
     /// (`ppBuildRangeInfos`, one array per build info): a slice of slices, whose
     /// pointers the method lays out for the call (which never defers, so Vulkan
-    /// reads them before it returns).
+    /// reads them before it returns), where the command's special-case check reads
+    /// the inner lengths.
     SliceOfSlices,
     /// Bytes sized by a count parameter.
     Bytes,
@@ -63,7 +64,7 @@ pub enum Param {
     SliceOut,
     /// Bytes Vulkan writes, of a size no parameter gives (a device property does:
     /// the opaque capture data of descriptor buffers), taken as a mutable byte
-    /// slice; the size rule is the method's own.
+    /// slice, where the command's special-case check compares it with that size.
     BytesOutUnsized,
     /// A `void*` whose layout another parameter describes (`pData` of an update
     /// template): passed through as a raw pointer, which makes the method `unsafe`.
@@ -122,6 +123,17 @@ pub const DISPLAY_CONNECTIONS: &[(&str, DisplayKind)] = &[
 /// X11 protocol IDs a command takes by value (a visual, a RandR output): plain
 /// numbers the X server looks up, so any value is one Vulkan may be given.
 pub const X11_IDS: &[&str] = &["VisualID", "xcb_visualid_t", "RROutput"];
+
+/// Whether the special-case check of `command` takes `param`: the shapes whose
+/// lengths the registry does not give (a slice of slices, bytes sized by a device
+/// property) are safe only with such a check; without one the caller passes the raw
+/// pointer through an `unsafe` method.
+fn sized_by_special(command: &str, param: &str) -> bool {
+    super::hooks::special(command).is_some_and(|s| {
+        s.check
+            .is_some_and(|c| c.args.contains(&crate::names::param(param).as_str()))
+    })
+}
 
 /// A command's plan, or why it has none.
 #[derive(Debug, Clone)]
@@ -401,7 +413,8 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 (_, _) if enumerated => Param::Enumerated,
                 (None, Some(Kind::Struct)) if has_next(cx, &p.type_name) => Param::InOut,
                 (None, _) if p.type_name != "void" => Param::Output,
-                (None, None) => Param::BytesOutUnsized,
+                // No parameter gives the size (a device property does).
+                (None, None) if sized_by_special(name, &p.name) => Param::BytesOutUnsized,
                 _ => Param::Raw,
             }
         } else if p.pointers == 2
@@ -411,13 +424,8 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
                 || (category == Some(Kind::Struct)
                     && !cx.facts.is_safe(&p.type_name)
                     && !cx.facts.has_lifetime(&p.type_name)))
-            // The registry gives the inner lengths only in prose (`pInfos[i].geometryCount`),
-            // so a slice of slices needs a special-case check of them; without one the
-            // caller passes raw pointers.
-            && super::hooks::special(name).is_some_and(|s| {
-                s.check
-                    .is_some_and(|c| c.args.contains(&crate::names::param(&p.name).as_str()))
-            })
+            // The registry gives the inner lengths only in prose (`pInfos[i].geometryCount`).
+            && sized_by_special(name, &p.name)
         {
             Param::SliceOfSlices
         } else if p.pointers == 2 && p.const_pointees == [false, false] && pp.len.is_empty() {
