@@ -185,7 +185,6 @@ mod allocation;
 #[cfg(feature = "ext_debug_utils")]
 mod debug_log;
 mod frames;
-mod hooks;
 mod layouts;
 mod mapping;
 mod physical;
@@ -194,6 +193,7 @@ pub mod recorder;
 mod retention;
 mod setup;
 mod single;
+mod special;
 mod spirv;
 mod submission;
 mod support;

@@ -122,7 +122,7 @@ pub(crate) struct Live {
     queue_families: Vutex<HashMap<u64, u32>>,
     /// Each live command pool's queue family: its flags and image transfer
     /// granularity, and whether the pool is protected.
-    pools: Vutex<HashMap<u64, crate::hooks::PoolFamily>>,
+    pools: Vutex<HashMap<u64, crate::special::PoolFamily>>,
     /// Each bound buffer's and image's memory, offset and size there.
     bindings: Vutex<HashMap<(vk::ObjectType, u64), Binding>>,
     /// The format properties asked of the physical device, by format.
@@ -1770,12 +1770,12 @@ impl Live {
     }
 
     /// Records a new command pool's queue family.
-    pub(crate) fn pool_created(&self, raw: vk::CommandPool, family: crate::hooks::PoolFamily) {
+    pub(crate) fn pool_created(&self, raw: vk::CommandPool, family: crate::special::PoolFamily) {
         self.pools.lock().insert(raw.as_raw(), family);
     }
 
     /// The queue family of a live command pool made through the wrappers.
-    pub(crate) fn pool_family(&self, raw: vk::CommandPool) -> Option<crate::hooks::PoolFamily> {
+    pub(crate) fn pool_family(&self, raw: vk::CommandPool) -> Option<crate::special::PoolFamily> {
         self.pools.lock().get(&raw.as_raw()).copied()
     }
 

@@ -121,7 +121,7 @@ impl Queue {
     /// ```
     pub fn family_index(&self) -> u32 {
         // Every queue wrapper comes from `get_queue` or `get_queue2`,
-        // which record its family (`hooks::queue_got`).
+        // which record its family (`special::queue::queue_got`).
         self.parent()
             .live()
             .queue_family(self.raw())

@@ -83,7 +83,7 @@ impl<'a> Scope<'a> {
     /// The limits of the scope's physical device, where the scope has a device.
     #[inline]
     pub(crate) fn limits(&self) -> Option<&'a vk::PhysicalDeviceLimits> {
-        self.device.map(crate::hooks::limits)
+        self.device.map(crate::special::limits)
     }
 
     /// Whether `raw` was created, allocated or retrieved from the scope's device.
@@ -249,19 +249,21 @@ mod tests {
         let range = vk::AccelerationStructureBuildRangeInfoKHR::default();
         let vuid03676 = "VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676";
         assert_eq!(
-            vuid(crate::hooks::per_geometry_fits(
+            vuid(crate::special::acceleration::per_geometry_fits(
                 &infos,
                 &[&[range][..]],
                 Some(vuid03676)
             )),
             Some(vuid03676)
         );
-        assert!(
-            crate::hooks::per_geometry_fits(&infos, &[&[range, range][..]], Some(vuid03676))
-                .is_ok()
-        );
+        assert!(crate::special::acceleration::per_geometry_fits(
+            &infos,
+            &[&[range, range][..]],
+            Some(vuid03676)
+        )
+        .is_ok());
         assert!(matches!(
-            crate::hooks::per_geometry_fits(&infos, &[&[7u32][..]], None),
+            crate::special::acceleration::per_geometry_fits(&infos, &[&[7u32][..]], None),
             Err(Error::Misuse(_))
         ));
     }

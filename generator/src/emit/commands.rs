@@ -13,17 +13,17 @@ use crate::plan::checks::Checker;
 use crate::plan::commands::{
     parent_of, parent_param, recorded, DisplayKind, Param, Plan, RecorderState, Transition,
 };
-use crate::plan::hooks::{special, Call, Keeps};
 use crate::plan::shape::{struct_members, Member};
+use crate::plan::special::{special, Call, Keeps};
 use crate::plan::types::{ash_type, spelled};
 use crate::plan::Context;
 use crate::plan::Plans;
 use proc_macro2::{Ident, TokenStream};
 use quote::{quote, ToTokens};
 
-/// A call of a hand-written hook of the special-case table: `crate::path(args)`, with
-/// `created` standing for the value the method would return without the hook.
-fn hook(c: &Call, created: &TokenStream) -> TokenStream {
+/// A call of a hand-written function of the special-case table: `crate::path(args)`, with
+/// `created` standing for the value the method would return without the special case.
+fn special_call(c: &Call, created: &TokenStream) -> TokenStream {
     let path = c.path.split("::").map(ident);
     // A binding is named; anything else (a path, a string literal) is Rust as written.
     let args = c.args.iter().map(|a| match *a {
@@ -32,7 +32,7 @@ fn hook(c: &Call, created: &TokenStream) -> TokenStream {
         a if a.chars().all(|c| c.is_alphanumeric() || c == '_') => ident(a).into_token_stream(),
         a => a
             .parse()
-            .unwrap_or_else(|_| quote!(compile_error!("a hook argument is not Rust"))),
+            .unwrap_or_else(|_| quote!(compile_error!("a special-case argument is not Rust"))),
     });
     let call = quote!(crate::#(#path)::*(#(#args),*));
     match c.promise {
@@ -78,12 +78,12 @@ fn same_len_checks(plan: &Plan) -> Vec<TokenStream> {
         .collect()
 }
 
-/// A hook called as a statement.
-fn hook_stmt(c: &Call) -> TokenStream {
+/// A special-case function called as a statement.
+fn special_stmt(c: &Call) -> TokenStream {
     match c.promise {
         Some(promise) => {
             let safety = super::safety(promise);
-            let call = hook(
+            let call = special_call(
                 &Call {
                     promise: None,
                     ..*c
@@ -93,7 +93,7 @@ fn hook_stmt(c: &Call) -> TokenStream {
             quote!(#safety unsafe { #call };)
         }
         None => {
-            let call = hook(c, &quote!());
+            let call = special_call(c, &quote!());
             quote!(#call;)
         }
     }
@@ -281,7 +281,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     // The enumerated elements are returned as the two calls fill them.
     let mut items_as_is = false;
     // The body records on the recorder (retains a handle, poisons it, hands it to a
-    // hook), so a transition's unchecked method takes it mutably.
+    // special case), so a transition's unchecked method takes it mutably.
     let mut uses_recorder = poisons_without_table;
     let mut post: Vec<TokenStream> = Vec::new();
     let mut two_call = None;
@@ -393,7 +393,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 }
             }
             // Rust's `bool` where Vulkan has `VkBool32`, as ash's own wrappers do; the
-            // body (and the hooks it calls) sees Vulkan's value.
+            // body (and the special-case functions it calls) sees Vulkan's value.
             Param::Value if p.type_name == "VkBool32" => {
                 bools.push(name.to_string());
                 args.push(Arg::new(&name, quote!(bool)));
@@ -756,14 +756,14 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         }
     }
     if let Some(sp) = special {
-        pre.extend(sp.before.as_ref().map(hook_stmt));
-        post.extend(sp.after.as_ref().map(hook_stmt));
+        pre.extend(sp.before.as_ref().map(special_stmt));
+        post.extend(sp.after.as_ref().map(special_stmt));
         uses_recorder |= [&sp.before, &sp.after]
             .into_iter()
             .flatten()
             .any(|c| c.args.contains(&"&mut self"));
         if let Some(c) = sp.created {
-            ret_expr = hook(&c, &ret_expr);
+            ret_expr = special_call(&c, &ret_expr);
             items_as_is = false;
         }
     }
@@ -825,7 +825,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     } else if cmd.return_type == "VkResult" {
         // A creation that lacks a layer, extension or feature names what it lacks.
         let error = match special.and_then(|s| s.error) {
-            Some(c) => hook(&c, &ret_expr),
+            Some(c) => special_call(&c, &ret_expr),
             None => quote!(Error::Vk(r)),
         };
         // A code outside the command's success codes is the driver's error; what
@@ -1083,7 +1083,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // recorder keeps.
         let moves = plan.transition.is_some();
         let always_code = always.map(|c| {
-            let c = hook(&c, &ret_expr);
+            let c = special_call(&c, &ret_expr);
             if moves {
                 quote!(let always: Result<()> = #c;)
             } else {
@@ -1092,11 +1092,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         });
         let always_code = quote!(#(#same_len)* #always_code);
         let last_code = last.map(|c| {
-            let c = hook(&c, &ret_expr);
+            let c = special_call(&c, &ret_expr);
             quote!(#c?;)
         });
         let hold_code = special.and_then(|s| s.hold).map(|c| {
-            let c = hook(&c, &ret_expr);
+            let c = special_call(&c, &ret_expr);
             quote!(let _held = #c?;)
         });
         let always_vuids = special
@@ -1402,7 +1402,7 @@ impl ImplBlocks {
 /// its instance and device.
 fn scope_expr(cx: &Context, plan: &Plan, device_path: &TokenStream) -> TokenStream {
     if let Some(c) = special(&plan.name).and_then(|s| s.scope) {
-        return hook(&c, &quote!());
+        return special_call(&c, &quote!());
     }
     match level(cx.model, &plan.name) {
         Level::Entry => quote!(crate::validation::Scope {

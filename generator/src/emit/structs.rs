@@ -434,7 +434,7 @@ fn emit_struct(plans: &Plans, name: &str) -> TokenStream {
         .struct_extends
         .iter()
         .filter(|head| cx.model.emitted.contains(*head) && cx.facts.is_safe(head))
-        .filter(|head| !crate::plan::hooks::unchained(name, head))
+        .filter(|head| !crate::plan::special::unchained(name, head))
         .map(|head| {
             let h = type_ident(model.spelling(head));
             let head_cfg = cfg_of(model, model.condition(head));

@@ -340,7 +340,7 @@ impl<'c, 'm> Checker<'c, 'm> {
             .validity
             .recognised
             .iter()
-            .filter(|r| super::hooks::settled(&r.vuid).is_none())
+            .filter(|r| super::special::settled(&r.vuid).is_none())
         {
             explicit.entry(r.item.as_str()).or_default().push(r);
         }

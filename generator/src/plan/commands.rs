@@ -129,7 +129,7 @@ pub const X11_IDS: &[&str] = &["VisualID", "xcb_visualid_t", "RROutput"];
 /// property) are safe only with such a check; without one the caller passes the raw
 /// pointer through an `unsafe` method.
 fn sized_by_special(command: &str, param: &str) -> bool {
-    super::hooks::special(command).is_some_and(|s| {
+    super::special::special(command).is_some_and(|s| {
         s.check
             .is_some_and(|c| c.args.contains(&crate::names::param(param).as_str()))
     })
@@ -153,7 +153,7 @@ pub struct Plan {
     /// Whether recording the command may change what a draw's or dispatch's checks
     /// read (bound objects, dynamic state, layouts, the render pass instance), so the
     /// recorder must check the next one again: every recorded command but those of
-    /// [`super::hooks::KEEPS_DRAW_STATE`].
+    /// [`super::special::KEEPS_DRAW_STATE`].
     pub changes_draw_state: bool,
     /// Externally synchronized member paths the wrappers cannot lock
     /// (`pNameInfo->object`): the method is `unsafe`, and its caller synchronizes them.
@@ -333,7 +333,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             if p.static_array.is_some() {
                 Param::Array
             } else if category == Some(Kind::Handle) {
-                let required = super::hooks::special(name)
+                let required = super::special::special(name)
                     .is_some_and(|s| s.required.contains(&p.name.as_str()));
                 Param::Handle {
                     optional: optional && !required,
@@ -524,7 +524,7 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     }
     let changes_draw_state = receiver == "VkCommandBuffer"
         && name.starts_with("vkCmd")
-        && !super::hooks::KEEPS_DRAW_STATE.contains(&name);
+        && !super::special::KEEPS_DRAW_STATE.contains(&name);
     Ok(Plan {
         name: name.to_owned(),
         receiver,

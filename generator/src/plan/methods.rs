@@ -1,6 +1,6 @@
 //! The rules that apply to each emitted method: its command's own and those of every
 //! struct it takes, through members and `pNext` chains (but those the safe structs
-//! refuse, `hooks::UNCHAINED`), for the report's per-method table and the safety
+//! refuse, `special::UNCHAINED`), for the report's per-method table and the safety
 //! decision.
 
 use super::commands::Plan;
@@ -56,7 +56,7 @@ pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
                         .get(&t)
                         .into_iter()
                         .flatten()
-                        .filter(|e| !super::hooks::unchained(e, &t))
+                        .filter(|e| !super::special::unchained(e, &t))
                         .cloned(),
                 );
             }

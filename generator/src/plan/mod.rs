@@ -3,7 +3,7 @@
 //! members' shapes ([`shape`]); the dynamic checks of commands and structs
 //! ([`checks::Checker`]); the host synchronization of each call ([`sync`]); which
 //! structs can reach a handle ([`reach`]); the special cases of commands, in one
-//! table ([`hooks`]); which methods are safe ([`safety`]); the typed results of
+//! table ([`special`]); which methods are safe ([`safety`]); the typed results of
 //! commands with several success codes ([`status`]); and for every rule of the emitted API how
 //! it is settled ([`settle`]). Renderers (`emit`) and the report are functions of
 //! [`Plans`]; nothing here imports them.
@@ -11,13 +11,13 @@
 pub mod checks;
 pub mod commands;
 pub mod features;
-pub mod hooks;
 pub mod methods;
 pub mod oracle;
 pub mod reach;
 pub mod safety;
 pub mod settle;
 pub mod shape;
+pub mod special;
 pub mod status;
 pub mod sync;
 pub mod types;

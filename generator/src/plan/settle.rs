@@ -3,8 +3,8 @@
 
 use super::checks::Checker;
 use super::commands::{handled_elsewhere, Param, Plan};
-use super::hooks::How;
 use super::shape::{struct_members, Member};
+use super::special::How;
 use super::{Context, Record, Settlement};
 use crate::model::{Kind, LenEntry};
 use crate::validity::{Category, ImplicitKind};
@@ -34,8 +34,8 @@ pub fn records(
         let settlement = match (rule.category, derived.get(rule.vuid.as_str())) {
             // A special case that settles an implicit rule the derivation cannot
             // (a pointer Vulkan writes through, in a struct without a setter for it).
-            (Category::Implicit, _) if super::hooks::settled(&rule.vuid).is_some() => {
-                super::hooks::settled(&rule.vuid)
+            (Category::Implicit, _) if super::special::settled(&rule.vuid).is_some() => {
+                super::special::settled(&rule.vuid)
                     .map_or_else(|| Settlement::User(String::new()), from_table)
             }
             (Category::Implicit, _) if checker.dynamic(&rule.vuid).is_some() => {
@@ -109,7 +109,7 @@ fn explicit(vuid: &str, text: &str, param: &dyn Fn(&str) -> Option<Param>) -> Se
     let t = crate::validity::explicit::plain(text)
         .replace('`', "")
         .to_lowercase();
-    if let Some(how) = super::hooks::settled(vuid) {
+    if let Some(how) = super::special::settled(vuid) {
         from_table(how)
     } else if t.contains("all submitted commands that refer to") {
         Settlement::Static(

@@ -213,7 +213,7 @@ pub fn struct_members(model: &Model, facts: &TypeFacts, name: &str) -> Vec<(Fiel
         .iter()
         .map(|m| {
             let shape = match member_shape(model, facts, &t.name, m, &counts, &t.members) {
-                Member::Handle { .. } if super::hooks::nullable(name, &m.name) => {
+                Member::Handle { .. } if super::special::nullable(name, &m.name) => {
                     Member::Handle { optional: true }
                 }
                 // Only a safe struct's constructor can require the union's variant; a

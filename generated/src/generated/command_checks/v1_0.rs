@@ -686,7 +686,7 @@ impl PhysicalDevice {
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<()> {
-        let s = &crate::hooks::create_device_scope(self, create_info);
+        let s = &crate::special::device::create_device_scope(self, create_info);
         crate::checks::check_device_create_info(create_info, s)?;
         Ok(())
     }
@@ -800,7 +800,7 @@ impl Entry {
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<()> {
-        let s = &crate::hooks::create_instance_scope(create_info);
+        let s = &crate::special::device::create_instance_scope(create_info);
         crate::checks::check_instance_create_info(create_info, s)?;
         Ok(())
     }

@@ -286,7 +286,7 @@ The rules of `vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT` that app
         info: &AccelerationStructureCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
-        crate::hooks::capture_data_fits(
+        crate::special::descriptors::capture_data_fits(
             self,
             data,
             |p| p.acceleration_structure_capture_replay_descriptor_data_size,
@@ -363,7 +363,7 @@ The rules of `vkGetBufferOpaqueCaptureDescriptorDataEXT` that apply to this crat
         info: &BufferCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
-        crate::hooks::capture_data_fits(
+        crate::special::descriptors::capture_data_fits(
             self,
             data,
             |p| p.buffer_capture_replay_descriptor_data_size,
@@ -585,7 +585,7 @@ The rules of `vkGetImageOpaqueCaptureDescriptorDataEXT` that apply to this crate
         info: &ImageCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
-        crate::hooks::capture_data_fits(
+        crate::special::descriptors::capture_data_fits(
             self,
             data,
             |p| p.image_capture_replay_descriptor_data_size,
@@ -646,7 +646,7 @@ The rules of `vkGetImageViewOpaqueCaptureDescriptorDataEXT` that apply to this c
         info: &ImageViewCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
-        crate::hooks::capture_data_fits(
+        crate::special::descriptors::capture_data_fits(
             self,
             data,
             |p| p.image_view_capture_replay_descriptor_data_size,
@@ -707,7 +707,7 @@ The rules of `vkGetSamplerOpaqueCaptureDescriptorDataEXT` that apply to this cra
         info: &SamplerCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
-        crate::hooks::capture_data_fits(
+        crate::special::descriptors::capture_data_fits(
             self,
             data,
             |p| p.sampler_capture_replay_descriptor_data_size,

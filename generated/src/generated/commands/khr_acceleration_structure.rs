@@ -87,7 +87,7 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
                 ),
             });
         }
-        crate::hooks::per_geometry_fits(
+        crate::special::acceleration::per_geometry_fits(
             infos,
             build_range_infos,
             Some("VUID-vkBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676"),
@@ -786,7 +786,11 @@ The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this cr
                 ),
             });
         }
-        crate::hooks::per_geometry_fits(infos, max_primitive_counts, None)?;
+        crate::special::acceleration::per_geometry_fits(
+            infos,
+            max_primitive_counts,
+            None,
+        )?;
         {
             let r = self.validate_build_acceleration_structures_indirect_khr(infos);
             r?;
@@ -953,7 +957,7 @@ The rules of `vkCmdBuildAccelerationStructuresKHR` that apply to this crate's AP
                 ),
             });
         }
-        crate::hooks::per_geometry_fits(
+        crate::special::acceleration::per_geometry_fits(
             infos,
             build_range_infos,
             Some("VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676"),

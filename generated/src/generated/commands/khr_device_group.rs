@@ -29,7 +29,7 @@ The rules of `vkAcquireNextImage2KHR` that apply to this crate's API ([reference
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
     ) -> Result<(u32, crate::status::SuccessTimeoutNotReadyOrSuboptimal)> {
-        crate::hooks::acquire_next_image2_khr_checks(self, acquire_info)?;
+        crate::special::swapchain::acquire_next_image2_khr_checks(self, acquire_info)?;
         {
             let r = self.validate_acquire_next_image2_khr(acquire_info);
             r?;
@@ -66,7 +66,12 @@ The caller upholds the rules that [`Self::acquire_next_image2_khr`] checks at ru
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::acquire_next_image2_khr_done(self, acquire_info, out, r);
+        crate::special::swapchain::acquire_next_image2_khr_done(
+            self,
+            acquire_info,
+            out,
+            r,
+        );
         let status = crate::status::SuccessTimeoutNotReadyOrSuboptimal::from_code(r)
             .ok_or(Error::Vk(r))?;
         Ok((out, status))
@@ -131,7 +136,7 @@ The rules of `vkGetDeviceGroupSurfacePresentModesKHR` that apply to this crate's
             let r = self.validate_get_group_surface_present_modes_khr(surface);
             r?;
         }
-        crate::hooks::device_surface_supported(
+        crate::special::swapchain::device_surface_supported(
             self,
             surface,
             "VUID-vkGetDeviceGroupSurfacePresentModesKHR-surface-06212",
@@ -202,7 +207,7 @@ The rules of `vkGetPhysicalDevicePresentRectanglesKHR` that apply to this crate'
             let r = self.validate_get_present_rectangles_khr(surface);
             r?;
         }
-        crate::hooks::surface_supported(
+        crate::special::surface::surface_supported(
             self,
             surface,
             "VUID-vkGetPhysicalDevicePresentRectanglesKHR-surface-06211",

@@ -34,7 +34,7 @@ The rules of `vkGetPhysicalDeviceSurfaceCapabilitiesKHR` that apply to this crat
             let r = self.validate_get_surface_capabilities_khr(surface);
             r?;
         }
-        crate::hooks::surface_supported(
+        crate::special::surface::surface_supported(
             self,
             surface,
             "VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-surface-06211",
@@ -102,7 +102,7 @@ The rules of `vkGetPhysicalDeviceSurfaceFormatsKHR` that apply to this crate's A
             let r = self.validate_get_surface_formats_khr(surface);
             r?;
         }
-        crate::hooks::surface_supported(
+        crate::special::surface::surface_supported(
             self,
             surface,
             "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-surface-06211",
@@ -168,7 +168,7 @@ The rules of `vkGetPhysicalDeviceSurfacePresentModesKHR` that apply to this crat
             let r = self.validate_get_surface_present_modes_khr(surface);
             r?;
         }
-        crate::hooks::surface_supported(
+        crate::special::surface::surface_supported(
             self,
             surface,
             "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-surface-06211",
@@ -237,7 +237,7 @@ The rules of `vkGetPhysicalDeviceSurfaceSupportKHR` that apply to this crate's A
         queue_family_index: u32,
         surface: &SurfaceKHR,
     ) -> Result<bool> {
-        crate::hooks::queue_family_exists(
+        crate::special::surface::queue_family_exists(
             self,
             queue_family_index,
             "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269",

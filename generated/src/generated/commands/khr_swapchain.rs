@@ -60,7 +60,7 @@ The rules of `vkAcquireNextImageKHR` that apply to this crate's API ([reference 
             }
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::acquire_next_image_khr_checks(
+        crate::special::swapchain::acquire_next_image_khr_checks(
             self,
             swapchain,
             timeout,
@@ -123,7 +123,7 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::acquire_next_image_khr_done(
+        crate::special::swapchain::acquire_next_image_khr_done(
             self,
             swapchain,
             semaphore,
@@ -179,7 +179,7 @@ The rules of `vkCreateSwapchainKHR` that apply to this crate's API ([reference p
             let r = self.validate_create_swapchain_khr(create_info);
             r?;
         }
-        crate::hooks::create_swapchain_checks(self, surface, create_info)?;
+        crate::special::swapchain::create_swapchain_checks(self, surface, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_swapchain_khr_unchecked(surface, create_info) }
@@ -220,7 +220,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
         create_info.as_raw_mut().surface = surface.raw();
         let create_info = &create_info;
         let mut out = vk::SwapchainKHR::null();
-        crate::hooks::swapchain_retires(self, create_info);
+        crate::special::swapchain::swapchain_retires(self, create_info);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(self.raw(), create_info.as_raw(), core::ptr::null(), &mut out)
@@ -229,7 +229,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::swapchain_created(
+            crate::special::swapchain::swapchain_created(
                 self,
                 SwapchainKHR::from_raw(out, self, Some(surface.retained()), true),
                 surface,
@@ -297,7 +297,7 @@ The caller upholds the rules that [`Self::get_swapchain_images_khr`] checks at r
             ))
         }?;
         Ok(
-            crate::hooks::swapchain_images(
+            crate::special::swapchain::swapchain_images(
                 self,
                 items
                     .into_iter()
@@ -388,12 +388,15 @@ The rules of `vkQueuePresentKHR` that apply to this crate's API ([reference page
             }
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::queue_present_khr_checks(self, present_info)?;
+        crate::special::swapchain::queue_present_khr_checks(self, present_info)?;
         {
             let r = self.validate_present_khr(present_info);
             r?;
         }
-        let _held = crate::hooks::queue_present_khr_gate(self, present_info)?;
+        let _held = crate::special::swapchain::queue_present_khr_hold(
+            self,
+            present_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.present_khr_unchecked(present_info) }
@@ -454,7 +457,7 @@ The caller upholds the rules that [`Self::present_khr`] checks at run time: `VUI
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_swapchain"))?
             .queue_present_khr;
-        crate::hooks::queue_present_khr_before(self, present_info);
+        crate::special::swapchain::queue_present_khr_before(self, present_info);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         let r = unsafe {
             fp(self.raw(), present_info as *const PresentInfoKHR<'a> as *const _)

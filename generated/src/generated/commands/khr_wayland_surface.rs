@@ -85,7 +85,7 @@ The rules of `vkGetPhysicalDeviceWaylandPresentationSupportKHR` that apply to th
         queue_family_index: u32,
         display: raw_window_handle::DisplayHandle<'_>,
     ) -> Result<bool> {
-        crate::hooks::queue_family_exists(
+        crate::special::surface::queue_family_exists(
             self,
             queue_family_index,
             "VUID-vkGetPhysicalDeviceWaylandPresentationSupportKHR-queueFamilyIndex-01306",

@@ -76,7 +76,7 @@ The rules of `vkGetPhysicalDeviceWin32PresentationSupportKHR` that apply to this
         &self,
         queue_family_index: u32,
     ) -> Result<bool> {
-        crate::hooks::queue_family_exists(
+        crate::special::surface::queue_family_exists(
             self,
             queue_family_index,
             "VUID-vkGetPhysicalDeviceWin32PresentationSupportKHR-queueFamilyIndex-01309",

@@ -86,7 +86,7 @@ The rules of `vkGetPhysicalDeviceXcbPresentationSupportKHR` that apply to this c
         connection: raw_window_handle::DisplayHandle<'_>,
         visual_id: vk::xcb_visualid_t,
     ) -> Result<bool> {
-        crate::hooks::queue_family_exists(
+        crate::special::surface::queue_family_exists(
             self,
             queue_family_index,
             "VUID-vkGetPhysicalDeviceXcbPresentationSupportKHR-queueFamilyIndex-01312",

@@ -86,7 +86,7 @@ The rules of `vkGetPhysicalDeviceXlibPresentationSupportKHR` that apply to this 
         dpy: raw_window_handle::DisplayHandle<'_>,
         visual_id: vk::VisualID,
     ) -> Result<bool> {
-        crate::hooks::queue_family_exists(
+        crate::special::surface::queue_family_exists(
             self,
             queue_family_index,
             "VUID-vkGetPhysicalDeviceXlibPresentationSupportKHR-queueFamilyIndex-01315",

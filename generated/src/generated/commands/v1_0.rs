@@ -65,7 +65,7 @@ The caller upholds the rules that [`Self::allocate_command_buffers`] checks at r
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::command_buffers_allocated(
+            crate::special::command_buffers::command_buffers_allocated(
                 self,
                 out
                     .into_iter()
@@ -110,12 +110,12 @@ The rules of `vkAllocateDescriptorSets` that apply to this crate's API ([referen
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::allocate_descriptor_sets_checks(allocate_info)?;
+        crate::special::descriptors::allocate_descriptor_sets_checks(allocate_info)?;
         {
             let r = self.validate_allocate_descriptor_sets(allocate_info);
             r?;
         }
-        crate::hooks::allocate_descriptor_sets_layouts(
+        crate::special::descriptors::allocate_descriptor_sets_layouts(
             self,
             descriptor_pool,
             allocate_info,
@@ -157,7 +157,7 @@ The caller upholds the rules that [`Self::allocate_descriptor_sets`] checks at r
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::descriptor_sets_allocated(
+            crate::special::descriptors::descriptor_sets_allocated(
                 self,
                 out
                     .into_iter()
@@ -192,8 +192,8 @@ The rules of `vkAllocateMemory` that apply to this crate's API ([reference page]
             let r = self.validate_allocate_memory(allocate_info);
             r?;
         }
-        crate::hooks::allocate_memory_checks(self, allocate_info)?;
-        let _held = crate::hooks::allocate_memory_gate(self)?;
+        crate::special::memory::allocate_memory_checks(self, allocate_info)?;
+        let _held = crate::special::memory::allocate_memory_hold(self)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.allocate_memory_unchecked(allocate_info) }
@@ -223,7 +223,7 @@ The caller upholds the rules that [`Self::allocate_memory`] checks at run time: 
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::memory_allocated(
+            crate::special::memory::memory_allocated(
                 self,
                 DeviceMemory::from_raw(out, self, None, true),
                 out,
@@ -275,7 +275,12 @@ The rules of `vkBindBufferMemory` that apply to this crate's API ([reference pag
             syncs.push(buffer.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::bind_buffer_memory_checks(self, buffer, memory, memory_offset)?;
+        crate::special::memory::bind_buffer_memory_checks(
+            self,
+            buffer,
+            memory,
+            memory_offset,
+        )?;
         {
             let r = self.validate_bind_buffer_memory(buffer, memory);
             r?;
@@ -308,7 +313,12 @@ The caller upholds the rules that [`Self::bind_buffer_memory`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::bind_buffer_memory_done(self, buffer, memory, memory_offset);
+        crate::special::memory::bind_buffer_memory_done(
+            self,
+            buffer,
+            memory,
+            memory_offset,
+        );
         Ok(())
     }
     /**`vkBindImageMemory`
@@ -357,7 +367,12 @@ The rules of `vkBindImageMemory` that apply to this crate's API ([reference page
             syncs.push(image.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::bind_image_memory_checks(self, image, memory, memory_offset)?;
+        crate::special::memory::bind_image_memory_checks(
+            self,
+            image,
+            memory,
+            memory_offset,
+        )?;
         {
             let r = self.validate_bind_image_memory(image, memory);
             r?;
@@ -390,7 +405,12 @@ The caller upholds the rules that [`Self::bind_image_memory`] checks at run time
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::bind_image_memory_done(self, image, memory, memory_offset);
+        crate::special::memory::bind_image_memory_done(
+            self,
+            image,
+            memory,
+            memory_offset,
+        );
         Ok(())
     }
     /**`vkCreateBuffer`
@@ -415,8 +435,8 @@ The rules of `vkCreateBuffer` that apply to this crate's API ([reference page](h
             let r = self.validate_create_buffer(create_info);
             r?;
         }
-        crate::hooks::create_buffer_checks(self, create_info)?;
-        let _held = crate::hooks::sparse_buffer_gate(self, create_info)?;
+        crate::special::buffer::create_buffer_checks(self, create_info)?;
+        let _held = crate::special::buffer::sparse_buffer_hold(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_buffer_unchecked(create_info) }
@@ -446,7 +466,7 @@ The caller upholds the rules that [`Self::create_buffer`] checks at run time: `V
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::buffer_created(
+            crate::special::buffer::buffer_created(
                 self,
                 Buffer::from_raw(
                     out,
@@ -537,7 +557,7 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::buffer_view_created(
+            crate::special::view::buffer_view_created(
                 self,
                 BufferView::from_raw(
                     out,
@@ -582,7 +602,7 @@ The rules of `vkCreateCommandPool` that apply to this crate's API ([reference pa
         &self,
         create_info: &CommandPoolCreateInfo<'a>,
     ) -> Result<CommandPool> {
-        crate::hooks::create_command_pool_checks(self, create_info)?;
+        crate::special::command_buffers::create_command_pool_checks(self, create_info)?;
         {
             let r = self.validate_create_command_pool(create_info);
             r?;
@@ -616,7 +636,7 @@ The caller upholds the rules that [`Self::create_command_pool`] checks at run ti
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::command_pool_created(
+            crate::special::command_buffers::command_pool_created(
                 self,
                 CommandPool::from_raw(out, self, None, true),
                 create_info,
@@ -646,12 +666,12 @@ The rules of `vkCreateComputePipelines` that apply to this crate's API ([referen
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
-        crate::hooks::create_compute_pipelines_checks(self, create_infos)?;
+        crate::special::pipeline::create_compute_pipelines_checks(self, create_infos)?;
         {
             let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
             r?;
         }
-        let _held = crate::hooks::pipeline_cache_gate(self, pipeline_cache)?;
+        let _held = crate::special::pipeline::pipeline_cache_hold(self, pipeline_cache)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_compute_pipelines_unchecked(pipeline_cache, create_infos) }
@@ -686,7 +706,7 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
         let status = crate::status::SuccessOrPipelineCompileRequired::from_code(r)
             .ok_or(Error::Vk(r))?;
         Ok((
-            crate::hooks::compute_pipelines_created(
+            crate::special::pipeline::compute_pipelines_created(
                 self,
                 out
                     .into_iter()
@@ -784,7 +804,7 @@ The caller upholds the rules that [`Self::create_descriptor_pool`] checks at run
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::descriptor_pool_created(
+            crate::special::descriptors::descriptor_pool_created(
                 DescriptorPool::from_raw(out, self, None, true),
                 create_info,
             ),
@@ -820,7 +840,10 @@ The rules of `vkCreateDescriptorSetLayout` that apply to this crate's API ([refe
             let r = self.validate_create_descriptor_set_layout(create_info);
             r?;
         }
-        crate::hooks::descriptor_set_layout_checks(self, create_info)?;
+        crate::special::descriptor_set_layout::descriptor_set_layout_checks(
+            self,
+            create_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_descriptor_set_layout_unchecked(create_info) }
@@ -850,7 +873,7 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::descriptor_set_layout_created(
+            crate::special::descriptor_set_layout::descriptor_set_layout_created(
                 self,
                 DescriptorSetLayout::from_raw(
                     out,
@@ -925,7 +948,7 @@ The caller upholds the rules that [`Self::create_event`] checks at run time (tho
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::event_created(
+            crate::special::sync::event_created(
                 self,
                 Event::from_raw(out, self, None, true),
                 create_info,
@@ -949,7 +972,7 @@ The rules of `vkCreateFence` that apply to this crate's API ([reference page](ht
             let r = self.validate_create_fence(create_info);
             r?;
         }
-        crate::hooks::create_fence_checks(self, create_info)?;
+        crate::special::sync::create_fence_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_fence_unchecked(create_info) }
@@ -1015,7 +1038,7 @@ The rules of `vkCreateFramebuffer` that apply to this crate's API ([reference pa
             let r = self.validate_create_framebuffer(create_info);
             r?;
         }
-        crate::hooks::create_framebuffer_checks(self, create_info)?;
+        crate::special::framebuffer::create_framebuffer_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_framebuffer_unchecked(create_info) }
@@ -1045,7 +1068,7 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::framebuffer_created(
+            crate::special::framebuffer::framebuffer_created(
                 self,
                 Framebuffer::from_raw(
                     out,
@@ -1104,14 +1127,14 @@ The rules of `vkCreateGraphicsPipelines` that apply to this crate's API ([refere
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
-        crate::hooks::create_graphics_pipelines_checks(self, create_infos)?;
+        crate::special::pipeline::create_graphics_pipelines_checks(self, create_infos)?;
         {
             let r = self
                 .validate_create_graphics_pipelines(pipeline_cache, create_infos);
             r?;
         }
-        crate::hooks::graphics_pipeline_state_checks(self, create_infos)?;
-        let _held = crate::hooks::pipeline_cache_gate(self, pipeline_cache)?;
+        crate::special::pipeline::graphics_pipeline_state_checks(self, create_infos)?;
+        let _held = crate::special::pipeline::pipeline_cache_hold(self, pipeline_cache)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_graphics_pipelines_unchecked(pipeline_cache, create_infos) }
@@ -1146,7 +1169,7 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
         let status = crate::status::SuccessOrPipelineCompileRequired::from_code(r)
             .ok_or(Error::Vk(r))?;
         Ok((
-            crate::hooks::graphics_pipelines_created(
+            crate::special::pipeline::graphics_pipelines_created(
                 self,
                 out
                     .into_iter()
@@ -1198,8 +1221,8 @@ The rules of `vkCreateImage` that apply to this crate's API ([reference page](ht
             let r = self.validate_create_image(create_info);
             r?;
         }
-        crate::hooks::create_image_checks(self, create_info)?;
-        let _held = crate::hooks::sparse_image_gate(self, create_info)?;
+        crate::special::image::create_image_checks(self, create_info)?;
+        let _held = crate::special::image::sparse_image_hold(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_image_unchecked(create_info) }
@@ -1229,7 +1252,7 @@ The caller upholds the rules that [`Self::create_image`] checks at run time: `VU
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::image_created(
+            crate::special::image::image_created(
                 self,
                 Image::from_raw(
                     out,
@@ -1290,7 +1313,7 @@ The rules of `vkCreateImageView` that apply to this crate's API ([reference page
             let r = self.validate_create_image_view(create_info);
             r?;
         }
-        crate::hooks::image_view_checks(self, create_info)?;
+        crate::special::view::image_view_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_image_view_unchecked(create_info) }
@@ -1320,7 +1343,7 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::image_view_created(
+            crate::special::view::image_view_created(
                 self,
                 ImageView::from_raw(
                     out,
@@ -1437,7 +1460,10 @@ The rules of `vkCreatePipelineLayout` that apply to this crate's API ([reference
             let r = self.validate_create_pipeline_layout(create_info);
             r?;
         }
-        crate::hooks::create_pipeline_layout_checks(self, create_info)?;
+        crate::special::pipeline_layout::create_pipeline_layout_checks(
+            self,
+            create_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_pipeline_layout_unchecked(create_info) }
@@ -1467,7 +1493,7 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::pipeline_layout_created(
+            crate::special::pipeline_layout::pipeline_layout_created(
                 self,
                 PipelineLayout::from_raw(
                     out,
@@ -1511,7 +1537,7 @@ The rules of `vkCreateQueryPool` that apply to this crate's API ([reference page
         &self,
         create_info: &QueryPoolCreateInfo<'a>,
     ) -> Result<QueryPool> {
-        crate::hooks::create_query_pool_checks(create_info)?;
+        crate::special::query::create_query_pool_checks(create_info)?;
         {
             let r = self.validate_create_query_pool(create_info);
             r?;
@@ -1545,7 +1571,7 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::query_pool_created(
+            crate::special::query::query_pool_created(
                 self,
                 QueryPool::from_raw(out, self, None, true),
                 create_info,
@@ -1581,12 +1607,12 @@ The rules of `vkCreateRenderPass` that apply to this crate's API ([reference pag
         &self,
         create_info: &RenderPassCreateInfo<'a>,
     ) -> Result<RenderPass> {
-        crate::hooks::create_render_pass_checks(create_info)?;
+        crate::special::render_pass::create_render_pass_checks(create_info)?;
         {
             let r = self.validate_create_render_pass(create_info);
             r?;
         }
-        crate::hooks::render_pass_reference_checks(self, create_info)?;
+        crate::special::render_pass::render_pass_reference_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_render_pass_unchecked(create_info) }
@@ -1616,7 +1642,7 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::render_pass_created(
+            crate::special::render_pass::render_pass_created(
                 self,
                 RenderPass::from_raw(out, self, None, true),
                 create_info,
@@ -1670,7 +1696,7 @@ The rules of `vkCreateSampler` that apply to this crate's API ([reference page](
             let r = self.validate_create_sampler(create_info);
             r?;
         }
-        crate::hooks::sampler_checks(self, create_info)?;
+        crate::special::sampler::sampler_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_sampler_unchecked(create_info) }
@@ -1700,7 +1726,7 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time: `
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::sampler_created(
+            crate::special::sampler::sampler_created(
                 self,
                 Sampler::from_raw(
                     out,
@@ -1757,7 +1783,7 @@ The rules of `vkCreateSemaphore` that apply to this crate's API ([reference page
             let r = self.validate_create_semaphore(create_info);
             r?;
         }
-        crate::hooks::create_semaphore_checks(self, create_info)?;
+        crate::special::sync::create_semaphore_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_semaphore_unchecked(create_info) }
@@ -1787,7 +1813,7 @@ The caller upholds the rules that [`Self::create_semaphore`] checks at run time:
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::semaphore_created(
+            crate::special::sync::semaphore_created(
                 self,
                 Semaphore::from_raw(out, self, None, true),
                 create_info,
@@ -1866,7 +1892,7 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::shader_module_created(
+            crate::special::shader::shader_module_created(
                 self,
                 ShaderModule::from_raw(
                     out,
@@ -1926,7 +1952,7 @@ The rules of `vkDeviceWaitIdle` that apply to this crate's API ([reference page]
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::device_wait_idle_done(self);
+        crate::special::queue::device_wait_idle_done(self);
         Ok(())
     }
     /**`vkFlushMappedMemoryRanges`
@@ -2040,7 +2066,7 @@ The rules of `vkGetDeviceMemoryCommitment` that apply to this crate's API ([refe
         &self,
         memory: &DeviceMemory,
     ) -> Result<vk::DeviceSize> {
-        crate::hooks::lazily_allocated(self, memory)?;
+        crate::special::memory::lazily_allocated(self, memory)?;
         {
             let r = self.validate_get_device_memory_commitment(memory);
             r?;
@@ -2087,7 +2113,11 @@ The rules of `vkGetDeviceQueue` that apply to this crate's API ([reference page]
     #[doc(alias = "vkGetDeviceQueue")]
     #[inline]
     pub fn get_queue(&self, queue_family_index: u32, queue_index: u32) -> Result<Queue> {
-        crate::hooks::get_device_queue_checks(self, queue_family_index, queue_index)?;
+        crate::special::queue::get_device_queue_checks(
+            self,
+            queue_family_index,
+            queue_index,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         Ok(unsafe { self.get_queue_unchecked(queue_family_index, queue_index) })
@@ -2107,7 +2137,7 @@ The caller upholds the rules that [`Self::get_queue`] checks at run time: `VUID-
         let mut out = vk::Queue::null();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), queue_family_index, queue_index, &mut out) };
-        crate::hooks::queue_got(
+        crate::special::queue::queue_got(
             self,
             Queue::from_raw(out, self, None, true),
             queue_family_index,
@@ -2129,7 +2159,11 @@ The rules of `vkGetEventStatus` that apply to this crate's API ([reference page]
         &self,
         event: &Event,
     ) -> Result<crate::status::EventSetOrEventReset> {
-        crate::hooks::host_event(self, event, "VUID-vkGetEventStatus-event-03940")?;
+        crate::special::sync::host_event(
+            self,
+            event,
+            "VUID-vkGetEventStatus-event-03940",
+        )?;
         {
             let r = self.validate_get_event_status(event);
             r?;
@@ -2195,7 +2229,7 @@ The caller upholds the rules that [`Self::get_fence_status`] checks at run time:
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::get_fence_status_done(fence, r);
+        crate::special::sync::get_fence_status_done(fence, r);
         crate::status::SuccessOrNotReady::from_code(r).ok_or(Error::Vk(r))
     }
     /**`vkGetImageMemoryRequirements`
@@ -2216,7 +2250,7 @@ The rules of `vkGetImageMemoryRequirements` that apply to this crate's API ([ref
         &self,
         image: &Image,
     ) -> Result<vk::MemoryRequirements> {
-        crate::hooks::whole_image_requirements(self, image)?;
+        crate::special::memory::whole_image_requirements(self, image)?;
         {
             let r = self.validate_get_image_memory_requirements(image);
             r?;
@@ -2450,7 +2484,7 @@ The rules of `vkGetQueryPoolResults` that apply to this crate's API ([reference 
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) -> Result<crate::status::SuccessOrNotReady> {
-        crate::hooks::get_query_pool_results_checks(
+        crate::special::query::get_query_pool_results_checks(
             self,
             query_pool,
             first_query,
@@ -2633,7 +2667,7 @@ The rules of `vkMergePipelineCaches` that apply to this crate's API ([reference 
             syncs.push(dst_cache.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::merge_pipeline_caches_checks(dst_cache, src_caches)?;
+        crate::special::pipeline::merge_pipeline_caches_checks(dst_cache, src_caches)?;
         {
             let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
             r?;
@@ -2701,7 +2735,7 @@ The rules of `vkResetCommandPool` that apply to this crate's API ([reference pag
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::reset_command_pool_checks(self, command_pool)?;
+        crate::special::command_buffers::reset_command_pool_checks(self, command_pool)?;
         {
             let r = self.validate_reset_command_pool(command_pool, flags);
             r?;
@@ -2733,7 +2767,7 @@ The caller upholds the rules that [`Self::reset_command_pool`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::reset_command_pool_done(command_pool);
+        crate::special::command_buffers::reset_command_pool_done(command_pool);
         Ok(())
     }
     /**`vkResetDescriptorPool`
@@ -2760,7 +2794,7 @@ The rules of `vkResetDescriptorPool` that apply to this crate's API ([reference 
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::reset_descriptor_pool_checks(descriptor_pool)?;
+        crate::special::descriptors::reset_descriptor_pool_checks(descriptor_pool)?;
         {
             let r = self.validate_reset_descriptor_pool(descriptor_pool, flags);
             r?;
@@ -2792,7 +2826,7 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::reset_descriptor_pool_done(descriptor_pool);
+        crate::special::descriptors::reset_descriptor_pool_done(descriptor_pool);
         Ok(())
     }
     /**`vkResetEvent`
@@ -2823,7 +2857,7 @@ The rules of `vkResetEvent` that apply to this crate's API ([reference page](htt
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::host_event(self, event, "VUID-vkResetEvent-event-03823")?;
+        crate::special::sync::host_event(self, event, "VUID-vkResetEvent-event-03823")?;
         {
             let r = self.validate_reset_event(event);
             r?;
@@ -2881,7 +2915,7 @@ The rules of `vkResetFences` that apply to this crate's API ([reference page](ht
             }
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::reset_fences_checks(self, fences)?;
+        crate::special::sync::reset_fences_checks(self, fences)?;
         {
             let r = self.validate_reset_fences(fences);
             r?;
@@ -2944,7 +2978,7 @@ The rules of `vkSetEvent` that apply to this crate's API ([reference page](https
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::host_event(self, event, "VUID-vkSetEvent-event-03941")?;
+        crate::special::sync::host_event(self, event, "VUID-vkSetEvent-event-03941")?;
         {
             let r = self.validate_set_event(event);
             r?;
@@ -3011,7 +3045,7 @@ The rules of `vkUpdateDescriptorSets` that apply to this crate's API ([reference
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
     ) -> Result<()> {
-        crate::hooks::update_descriptor_sets_checks(
+        crate::special::descriptors::update_descriptor_sets_checks(
             self,
             descriptor_writes,
             descriptor_copies,
@@ -3021,7 +3055,7 @@ The rules of `vkUpdateDescriptorSets` that apply to this crate's API ([reference
                 .validate_update_descriptor_sets(descriptor_writes, descriptor_copies);
             r?;
         }
-        let _held = crate::hooks::update_descriptor_sets_gate(
+        let _held = crate::special::descriptors::update_descriptor_sets_hold(
             self,
             descriptor_writes,
             descriptor_copies,
@@ -3055,7 +3089,7 @@ The caller upholds the rules that [`Self::update_descriptor_sets`] checks at run
                 descriptor_copies.as_ptr().cast(),
             )
         };
-        crate::hooks::update_descriptor_sets_done(
+        crate::special::descriptors::update_descriptor_sets_done(
             self,
             descriptor_writes,
             descriptor_copies,
@@ -3120,7 +3154,7 @@ The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::wait_for_fences_done(self, fences, wait_all, r);
+        crate::special::sync::wait_for_fences_done(self, fences, wait_all, r);
         crate::status::SuccessOrTimeout::from_code(r).ok_or(Error::Vk(r))
     }
 }

@@ -29,12 +29,12 @@ The rules of `vkCreateDevice` that apply to this crate's API ([reference page](h
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
-        crate::hooks::device_extensions_emitted(create_info)?;
+        crate::special::device::device_extensions_emitted(create_info)?;
         {
             let r = self.validate_create_device(create_info);
             r?;
         }
-        crate::hooks::create_device_checks(self, create_info)?;
+        crate::special::device::create_device_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_device_unchecked(create_info) }
@@ -63,7 +63,7 @@ The caller upholds the rules that [`Self::create_device`] checks at run time: `V
         if r.as_raw() < 0 {
             return Err(crate::presence::device_error(self, create_info, r));
         }
-        Ok(crate::hooks::device_created(self, out, create_info))
+        Ok(crate::special::device::device_created(self, out, create_info))
     }
     /**`vkEnumerateDeviceExtensionProperties`
 
@@ -349,7 +349,7 @@ The rules of `vkGetPhysicalDeviceSparseImageFormatProperties` that apply to this
                 );
             r?;
         }
-        crate::hooks::sparse_samples(
+        crate::special::image::sparse_samples(
             self,
             (format, ty, samples, usage, tiling),
             "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-samples-01094",
@@ -442,7 +442,7 @@ The rules of `vkCreateInstance` that apply to this crate's API ([reference page]
         &self,
         create_info: &InstanceCreateInfo<'a>,
     ) -> Result<Instance> {
-        crate::hooks::create_instance_first(create_info)?;
+        crate::special::device::create_instance_first(create_info)?;
         {
             let r = self.validate_create_instance(create_info);
             r?;
@@ -474,7 +474,7 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time: 
         if r.as_raw() < 0 {
             return Err(crate::presence::instance_error(self, create_info, r));
         }
-        Ok(crate::hooks::instance_created(self, out, create_info))
+        Ok(crate::special::device::instance_created(self, out, create_info))
     }
     /**`vkEnumerateInstanceExtensionProperties`
 
@@ -630,12 +630,12 @@ The rules of `vkQueueBindSparse` that apply to this crate's API ([reference page
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::queue_bind_sparse_checks(self, bind_info, fence)?;
+        crate::special::queue::queue_bind_sparse_checks(self, bind_info, fence)?;
         {
             let r = self.validate_bind_sparse(bind_info, fence);
             r?;
         }
-        let _held = crate::hooks::queue_bind_sparse_gate(self, bind_info)?;
+        let _held = crate::special::queue::queue_bind_sparse_hold(self, bind_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.bind_sparse_unchecked(bind_info, fence) }
@@ -671,7 +671,7 @@ The caller upholds the rules that [`Self::bind_sparse`] checks at run time: `VUI
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::queue_bind_sparse_done(self, bind_info, fence);
+        crate::special::queue::queue_bind_sparse_done(self, bind_info, fence);
         Ok(())
     }
     /**`vkQueueSubmit`
@@ -718,12 +718,12 @@ The rules of `vkQueueSubmit` that apply to this crate's API ([reference page](ht
             }
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::queue_submit_checks(self, submits, fence)?;
+        crate::special::queue::queue_submit_checks(self, submits, fence)?;
         {
             let r = self.validate_submit(submits, fence);
             r?;
         }
-        let _held = crate::hooks::queue_submit_gate(self, submits)?;
+        let _held = crate::special::queue::queue_submit_hold(self, submits)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.submit_unchecked(submits, fence) }
@@ -761,7 +761,7 @@ The caller upholds the rules that [`Self::submit`] checks at run time: `VUID-vkQ
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::queue_submit_done(self, submits, fence);
+        crate::special::queue::queue_submit_done(self, submits, fence);
         Ok(())
     }
     /**`vkQueueWaitIdle`
@@ -786,7 +786,7 @@ The rules of `vkQueueWaitIdle` that apply to this crate's API ([reference page](
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::queue_wait_idle_done(self);
+        crate::special::queue::queue_wait_idle_done(self);
         Ok(())
     }
 }
@@ -811,7 +811,7 @@ The rules of `vkResetCommandBuffer` that apply to this crate's API ([reference p
             syncs.push(self.parent().host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::reset_command_buffer_checks(self)?;
+        crate::special::command_buffers::reset_command_buffer_checks(self)?;
         {
             let r = self.validate_reset(flags);
             r?;
@@ -843,7 +843,7 @@ The caller upholds the rules that [`Self::reset`] checks at run time: `VUID-vkRe
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::reset_command_buffer_done(self);
+        crate::special::command_buffers::reset_command_buffer_done(self);
         Ok(())
     }
 }

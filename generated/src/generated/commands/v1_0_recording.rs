@@ -64,7 +64,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
         query: u32,
         flags: vk::QueryControlFlags,
     ) -> Result<()> {
-        crate::hooks::begin_query_checks(self, query_pool, query)?;
+        crate::special::query::begin_query_checks(self, query_pool, query)?;
         {
             let r = self.validate_begin_query(query_pool, flags);
             r?;
@@ -89,7 +89,7 @@ The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUI
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), query_pool.raw(), query, flags) };
-            crate::hooks::begin_query_done(self, query_pool, query);
+            crate::special::query::begin_query_done(self, query_pool, query);
             self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
         }
@@ -127,7 +127,7 @@ The rules of `vkCmdEndQuery` that apply to this crate's API ([reference page](ht
         query_pool: &QueryPool,
         query: u32,
     ) -> Result<()> {
-        crate::hooks::end_query_checks(self, query_pool, query)?;
+        crate::special::query::end_query_checks(self, query_pool, query)?;
         {
             let r = self.validate_end_query(query_pool);
             r?;
@@ -151,7 +151,7 @@ The caller upholds the rules that [`Self::end_query`] checks at run time: `VUID-
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), query_pool.raw(), query) };
-            crate::hooks::end_query_done(self, query_pool, query);
+            crate::special::query::end_query_done(self, query_pool, query);
             self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
         }
@@ -237,7 +237,7 @@ The rules of `vkCmdPipelineBarrier` that apply to this crate's API ([reference p
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) -> Result<()> {
-        crate::hooks::pipeline_barrier_checks(
+        crate::special::barriers::pipeline_barrier_checks(
             self,
             src_stage_mask,
             dst_stage_mask,
@@ -303,7 +303,10 @@ The caller upholds the rules that [`Self::pipeline_barrier`] checks at run time:
                     image_memory_barriers.as_ptr().cast(),
                 )
             };
-            crate::hooks::cmd_pipeline_barrier_done(self, image_memory_barriers);
+            crate::special::image_layouts::cmd_pipeline_barrier_done(
+                self,
+                image_memory_barriers,
+            );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();
@@ -424,7 +427,7 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
         let events_given = events;
         #[allow(unused_variables)]
         let events = crate::Handles::wrappers(&events_given);
-        crate::hooks::wait_events_checks(
+        crate::special::sync::wait_events_checks(
             self,
             buffer_memory_barriers,
             image_memory_barriers,
@@ -493,7 +496,7 @@ The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUI
                     image_memory_barriers.as_ptr().cast(),
                 )
             };
-            crate::hooks::wait_events_done(self, events, image_memory_barriers);
+            crate::special::sync::wait_events_done(self, events, image_memory_barriers);
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let live = self.device().live();

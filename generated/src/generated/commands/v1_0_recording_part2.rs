@@ -52,10 +52,10 @@ The rules of `vkCmdBeginRenderPass` that apply to this crate's API ([reference p
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
     ) -> Recorder<'c, InRenderPass> {
-        let always: Result<()> = crate::hooks::begin_render_pass_checks(
+        let always: Result<()> = crate::special::pass_instance::begin_render_pass_checks(
             &self,
             render_pass_begin,
-            &crate::hooks::BEGIN,
+            &crate::special::pass_instance::BEGIN,
         );
         {
             let r = always
@@ -92,7 +92,7 @@ The caller upholds the rules that [`Self::begin_render_pass`] checks at run time
                 contents,
             )
         };
-        crate::hooks::render_pass_begun(
+        crate::special::pass_instance::render_pass_begun(
             &mut self,
             render_pass_begin,
             "VUID-vkCmdBeginRenderPass-initialLayout-00900",
@@ -219,9 +219,9 @@ The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](h
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::BlitImage(
+            crate::special::image_layouts::Names::BlitImage(
                 src_image.raw(),
                 src_image_layout,
                 dst_image.raw(),
@@ -284,9 +284,9 @@ The caller upholds the rules that [`Self::blit_image`] checks at run time: `VUID
                     filter,
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::BlitImage(
+                crate::special::image_layouts::Names::BlitImage(
                     src_image.raw(),
                     src_image_layout,
                     dst_image.raw(),
@@ -355,9 +355,13 @@ The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference p
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges),
+            crate::special::image_layouts::Names::ClearColor(
+                image.raw(),
+                image_layout,
+                ranges,
+            ),
         )?;
         {
             let r = self.validate_clear_color_image(image, image_layout, ranges);
@@ -393,9 +397,13 @@ The caller upholds the rules that [`Self::clear_color_image`] checks at run time
                     ranges.as_ptr().cast(),
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::ClearColor(image.raw(), image_layout, ranges),
+                crate::special::image_layouts::Names::ClearColor(
+                    image.raw(),
+                    image_layout,
+                    ranges,
+                ),
             );
             self.state_changed();
             self.retain_with(image.address(), || image.retained());
@@ -464,9 +472,13 @@ The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([refe
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::ClearDepthStencil(image.raw(), image_layout, ranges),
+            crate::special::image_layouts::Names::ClearDepthStencil(
+                image.raw(),
+                image_layout,
+                ranges,
+            ),
         )?;
         {
             let r = self
@@ -515,9 +527,13 @@ The caller upholds the rules that [`Self::clear_depth_stencil_image`] checks at 
                     ranges.as_ptr().cast(),
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::ClearDepthStencil(image.raw(), image_layout, ranges),
+                crate::special::image_layouts::Names::ClearDepthStencil(
+                    image.raw(),
+                    image_layout,
+                    ranges,
+                ),
             );
             self.state_changed();
             self.retain_with(image.address(), || image.retained());
@@ -568,7 +584,12 @@ The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
     ) -> Result<()> {
-        crate::hooks::cmd_copy_buffer_checks(self, src_buffer, dst_buffer, regions)?;
+        crate::special::copies::cmd_copy_buffer_checks(
+            self,
+            src_buffer,
+            dst_buffer,
+            regions,
+        )?;
         {
             let r = self.validate_copy_buffer(src_buffer, dst_buffer, regions);
             r?;
@@ -684,9 +705,9 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::BufferToImage(
+            crate::special::image_layouts::Names::BufferToImage(
                 dst_image.raw(),
                 dst_image_layout,
                 regions,
@@ -702,7 +723,7 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
                 );
             r?;
         }
-        crate::hooks::cmd_copy_buffer_to_image_checks(
+        crate::special::copies::cmd_copy_buffer_to_image_checks(
             self,
             src_buffer,
             dst_image,
@@ -745,9 +766,9 @@ The caller upholds the rules that [`Self::copy_buffer_to_image`] checks at run t
                     regions.as_ptr().cast(),
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::BufferToImage(
+                crate::special::image_layouts::Names::BufferToImage(
                     dst_image.raw(),
                     dst_image_layout,
                     regions,
@@ -913,9 +934,9 @@ The rules of `vkCmdCopyImage` that apply to this crate's API ([reference page](h
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::CopyImage(
+            crate::special::image_layouts::Names::CopyImage(
                 src_image.raw(),
                 src_image_layout,
                 dst_image.raw(),
@@ -974,9 +995,9 @@ The caller upholds the rules that [`Self::copy_image`] checks at run time: `VUID
                     regions.as_ptr().cast(),
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::CopyImage(
+                crate::special::image_layouts::Names::CopyImage(
                     src_image.raw(),
                     src_image_layout,
                     dst_image.raw(),
@@ -1081,9 +1102,9 @@ The rules of `vkCmdCopyImageToBuffer` that apply to this crate's API ([reference
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::ImageToBuffer(
+            crate::special::image_layouts::Names::ImageToBuffer(
                 src_image.raw(),
                 src_image_layout,
                 regions,
@@ -1099,7 +1120,7 @@ The rules of `vkCmdCopyImageToBuffer` that apply to this crate's API ([reference
                 );
             r?;
         }
-        crate::hooks::cmd_copy_image_to_buffer_checks(
+        crate::special::copies::cmd_copy_image_to_buffer_checks(
             self,
             src_image,
             dst_buffer,
@@ -1142,9 +1163,9 @@ The caller upholds the rules that [`Self::copy_image_to_buffer`] checks at run t
                     regions.as_ptr().cast(),
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::ImageToBuffer(
+                crate::special::image_layouts::Names::ImageToBuffer(
                     src_image.raw(),
                     src_image_layout,
                     regions,
@@ -1359,7 +1380,7 @@ The rules of `vkCmdDispatch` that apply to this crate's API ([reference page](ht
         group_count_y: u32,
         group_count_z: u32,
     ) -> Result<()> {
-        crate::hooks::dispatch_checks(
+        crate::special::draw::dispatch_checks(
             self,
             "VUID-vkCmdDispatch-None-02700",
             "VUID-vkCmdDispatch-None-02697",
@@ -1412,7 +1433,10 @@ The caller upholds the rules that [`Self::dispatch`] checks at run time: `VUID-v
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), group_count_x, group_count_y, group_count_z) };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::COMPUTE);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::COMPUTE,
+            );
         }
         Ok(())
     }
@@ -1502,7 +1526,7 @@ The rules of `vkCmdDispatchIndirect` that apply to this crate's API ([reference 
         buffer: &Buffer,
         offset: vk::DeviceSize,
     ) -> Result<()> {
-        crate::hooks::dispatch_checks(
+        crate::special::draw::dispatch_checks(
             self,
             "VUID-vkCmdDispatchIndirect-None-02700",
             "VUID-vkCmdDispatchIndirect-None-02697",
@@ -1554,7 +1578,10 @@ The caller upholds the rules that [`Self::dispatch_indirect`] checks at run time
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset) };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::COMPUTE);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::COMPUTE,
+            );
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())
@@ -1598,7 +1625,12 @@ The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](
         size: vk::DeviceSize,
         data: u32,
     ) -> Result<()> {
-        crate::hooks::cmd_fill_buffer_checks(self, dst_buffer, dst_offset, size)?;
+        crate::special::copies::cmd_fill_buffer_checks(
+            self,
+            dst_buffer,
+            dst_offset,
+            size,
+        )?;
         {
             let r = self.validate_fill_buffer(dst_buffer);
             r?;
@@ -1660,7 +1692,7 @@ The rules of `vkCmdResetQueryPool` that apply to this crate's API ([reference pa
         first_query: u32,
         query_count: u32,
     ) -> Result<()> {
-        crate::hooks::cmd_reset_query_pool_range(
+        crate::special::query::cmd_reset_query_pool_range(
             self,
             query_pool,
             first_query,
@@ -1784,9 +1816,9 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::ResolveImage(
+            crate::special::image_layouts::Names::ResolveImage(
                 src_image.raw(),
                 src_image_layout,
                 dst_image.raw(),
@@ -1845,9 +1877,9 @@ The caller upholds the rules that [`Self::resolve_image`] checks at run time: `V
                     regions.as_ptr().cast(),
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::ResolveImage(
+                crate::special::image_layouts::Names::ResolveImage(
                     src_image.raw(),
                     src_image_layout,
                     dst_image.raw(),
@@ -1900,7 +1932,12 @@ The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page
         dst_offset: vk::DeviceSize,
         data: &[u8],
     ) -> Result<()> {
-        crate::hooks::cmd_update_buffer_checks(self, dst_buffer, dst_offset, data)?;
+        crate::special::copies::cmd_update_buffer_checks(
+            self,
+            dst_buffer,
+            dst_offset,
+            data,
+        )?;
         {
             let r = self.validate_update_buffer(dst_buffer, data);
             r?;

@@ -52,7 +52,7 @@ The rules of `vkCmdBindDescriptorSets` that apply to this crate's API ([referenc
         let descriptor_sets_given = descriptor_sets;
         #[allow(unused_variables)]
         let descriptor_sets = crate::Handles::wrappers(&descriptor_sets_given);
-        crate::hooks::cmd_bind_descriptor_sets_checks(
+        crate::special::draw_state::cmd_bind_descriptor_sets_checks(
             self,
             pipeline_bind_point,
             layout,
@@ -116,7 +116,7 @@ The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run t
                     dynamic_offsets.as_ptr().cast(),
                 )
             };
-            crate::hooks::cmd_bind_descriptor_sets_done(
+            crate::special::draw_state::cmd_bind_descriptor_sets_done(
                 self,
                 pipeline_bind_point,
                 first_set,
@@ -162,7 +162,12 @@ The rules of `vkCmdBindIndexBuffer` that apply to this crate's API ([reference p
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
     ) -> Result<()> {
-        crate::hooks::cmd_bind_index_buffer_checks(self, buffer, offset, index_type)?;
+        crate::special::draw_state::cmd_bind_index_buffer_checks(
+            self,
+            buffer,
+            offset,
+            index_type,
+        )?;
         {
             let r = self.validate_bind_index_buffer(buffer, index_type);
             r?;
@@ -187,7 +192,12 @@ The caller upholds the rules that [`Self::bind_index_buffer`] checks at run time
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset, index_type) };
-            crate::hooks::cmd_bind_index_buffer_done(self, buffer, offset, index_type);
+            crate::special::draw_state::cmd_bind_index_buffer_done(
+                self,
+                buffer,
+                offset,
+                index_type,
+            );
             self.state_changed();
             self.retain_with(buffer.address(), || buffer.retained());
         }
@@ -241,7 +251,11 @@ The rules of `vkCmdBindPipeline` that apply to this crate's API ([reference page
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
     ) -> Result<()> {
-        crate::hooks::cmd_bind_pipeline_checks(self, pipeline_bind_point, pipeline)?;
+        crate::special::draw_state::cmd_bind_pipeline_checks(
+            self,
+            pipeline_bind_point,
+            pipeline,
+        )?;
         {
             let r = self.validate_bind_pipeline(pipeline_bind_point, pipeline);
             r?;
@@ -265,7 +279,11 @@ The caller upholds the rules that [`Self::bind_pipeline`] checks at run time: `V
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), pipeline_bind_point, pipeline.raw()) };
-            crate::hooks::cmd_bind_pipeline_done(self, pipeline_bind_point, pipeline);
+            crate::special::draw_state::cmd_bind_pipeline_done(
+                self,
+                pipeline_bind_point,
+                pipeline,
+            );
             self.state_changed();
             self.retain_with(pipeline.address(), || pipeline.retained());
         }
@@ -320,7 +338,7 @@ The rules of `vkCmdBindVertexBuffers` that apply to this crate's API ([reference
                 ),
             });
         }
-        crate::hooks::cmd_bind_vertex_buffers_checks(
+        crate::special::draw_state::cmd_bind_vertex_buffers_checks(
             self,
             first_binding,
             buffers,
@@ -366,7 +384,7 @@ The caller upholds the rules that [`Self::bind_vertex_buffers`] checks at run ti
                     offsets.as_ptr().cast(),
                 )
             };
-            crate::hooks::cmd_bind_vertex_buffers_done(
+            crate::special::draw_state::cmd_bind_vertex_buffers_done(
                 self,
                 first_binding,
                 buffers,
@@ -492,7 +510,10 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
         let command_buffers_given = command_buffers;
         #[allow(unused_variables)]
         let command_buffers = crate::Handles::wrappers(&command_buffers_given);
-        crate::hooks::cmd_execute_commands_checks(self, command_buffers)?;
+        crate::special::command_buffers::cmd_execute_commands_checks(
+            self,
+            command_buffers,
+        )?;
         {
             let r = self.validate_execute_commands(command_buffers);
             r?;
@@ -519,7 +540,10 @@ The caller upholds the rules that [`Self::execute_commands`] checks at run time:
             for h in command_buffers {
                 self.retain(h.retained());
             }
-            crate::hooks::cmd_execute_commands_before(self, command_buffers);
+            crate::special::command_buffers::cmd_execute_commands_before(
+                self,
+                command_buffers,
+            );
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe {
                 fp(
@@ -528,7 +552,7 @@ The caller upholds the rules that [`Self::execute_commands`] checks at run time:
                     crate::Handles::raws(command_buffers_given).as_ptr(),
                 )
             };
-            crate::hooks::execute_layouts_done(self, command_buffers);
+            crate::special::image_layouts::execute_layouts_done(self, command_buffers);
             self.state_changed();
         }
         Ok(())
@@ -577,7 +601,7 @@ The rules of `vkCmdPushConstants` that apply to this crate's API ([reference pag
         offset: u32,
         values: &[u8],
     ) -> Result<()> {
-        crate::hooks::cmd_push_constants_checks(
+        crate::special::draw_state::cmd_push_constants_checks(
             self,
             layout,
             stage_flags,
@@ -618,7 +642,12 @@ The caller upholds the rules that [`Self::push_constants`] checks at run time: `
                     values.as_ptr().cast(),
                 )
             };
-            crate::hooks::cmd_push_constants_done(self, layout, offset, values);
+            crate::special::draw_state::cmd_push_constants_done(
+                self,
+                layout,
+                offset,
+                values,
+            );
             self.retain_with(layout.address(), || layout.retained());
         }
         Ok(())
@@ -659,7 +688,7 @@ The caller upholds the rules that [`Self::set_blend_constants`] checks at run ti
         let fp = self.device().fns().fp_v1_0().cmd_set_blend_constants;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), blend_constants) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS),
         );
@@ -722,7 +751,7 @@ The caller upholds the rules that [`Self::set_depth_bias`] checks at run time: `
                 depth_bias_slope_factor,
             )
         };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS),
         );
@@ -769,7 +798,7 @@ The caller upholds the rules that [`Self::set_depth_bounds`] checks at run time:
         let fp = self.device().fns().fp_v1_0().cmd_set_depth_bounds;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), min_depth_bounds, max_depth_bounds) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS),
         );
@@ -809,7 +838,7 @@ The caller upholds the rules that [`Self::set_line_width`] checks at run time: `
         let fp = self.device().fns().fp_v1_0().cmd_set_line_width;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), line_width) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::LINE_WIDTH),
         );
@@ -849,7 +878,11 @@ The rules of `vkCmdSetScissor` that apply to this crate's API ([reference page](
         first_scissor: u32,
         scissors: &[vk::Rect2D],
     ) -> Result<()> {
-        crate::hooks::cmd_set_scissor_checks(self, first_scissor, scissors)?;
+        crate::special::draw_state::cmd_set_scissor_checks(
+            self,
+            first_scissor,
+            scissors,
+        )?;
         {
             let r = self.validate_set_scissor(scissors);
             r?;
@@ -880,7 +913,7 @@ The caller upholds the rules that [`Self::set_scissor`] checks at run time: `VUI
                     scissors.as_ptr().cast(),
                 )
             };
-            crate::hooks::dynamic_state_set(
+            crate::special::draw_state::dynamic_state_set(
                 self,
                 crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR),
             );
@@ -931,7 +964,7 @@ The caller upholds the rules that [`Self::set_stencil_compare_mask`] checks at r
         let fp = self.device().fns().fp_v1_0().cmd_set_stencil_compare_mask;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), face_mask, compare_mask) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK),
         );
@@ -980,7 +1013,7 @@ The caller upholds the rules that [`Self::set_stencil_reference`] checks at run 
         let fp = self.device().fns().fp_v1_0().cmd_set_stencil_reference;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), face_mask, reference) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE),
         );
@@ -1029,7 +1062,7 @@ The caller upholds the rules that [`Self::set_stencil_write_mask`] checks at run
         let fp = self.device().fns().fp_v1_0().cmd_set_stencil_write_mask;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), face_mask, write_mask) };
-        crate::hooks::depth_stencil_set(
+        crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::WriteMask(face_mask, write_mask),
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK),
@@ -1077,7 +1110,11 @@ The rules of `vkCmdSetViewport` that apply to this crate's API ([reference page]
         first_viewport: u32,
         viewports: &[vk::Viewport],
     ) -> Result<()> {
-        crate::hooks::cmd_set_viewport_checks(self, first_viewport, viewports)?;
+        crate::special::draw_state::cmd_set_viewport_checks(
+            self,
+            first_viewport,
+            viewports,
+        )?;
         {
             let r = self.validate_set_viewport(viewports);
             r?;
@@ -1108,7 +1145,7 @@ The caller upholds the rules that [`Self::set_viewport`] checks at run time: `VU
                     viewports.as_ptr().cast(),
                 )
             };
-            crate::hooks::dynamic_state_set(
+            crate::special::draw_state::dynamic_state_set(
                 self,
                 crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT),
             );

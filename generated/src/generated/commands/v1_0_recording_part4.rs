@@ -304,7 +304,7 @@ The rules of `vkCmdDraw` that apply to this crate's API ([reference page](https:
         first_vertex: u32,
         first_instance: u32,
     ) -> Result<()> {
-        crate::hooks::draw_checks(
+        crate::special::draw::draw_checks(
             self,
             "VUID-vkCmdDraw-None-02700",
             "VUID-vkCmdDraw-None-02697",
@@ -318,20 +318,32 @@ The rules of `vkCmdDraw` that apply to this crate's API ([reference page](https:
                 "VUID-vkCmdDraw-maxMultiviewInstanceIndex-02688",
             )),
             {
-                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                const RULES: crate::special::draw::DrawRules = crate::special::draw::DrawRules {
                     render_pass: "VUID-vkCmdDraw-renderPass-02684",
                     subpass: "VUID-vkCmdDraw-subpass-02685",
                     dynamic_set: "VUID-vkCmdDraw-commandBuffer-02701",
                     static_unset: "VUID-vkCmdDraw-None-02859",
                     named: [
                         (
-                            crate::hooks::NAMED_STATES[0],
+                            crate::special::draw::NAMED_STATES[0],
                             "VUID-vkCmdDraw-primitiveTopology-03420",
                         ),
-                        (crate::hooks::NAMED_STATES[1], "VUID-vkCmdDraw-pStrides-04884"),
-                        (crate::hooks::NAMED_STATES[2], "VUID-vkCmdDraw-None-04876"),
-                        (crate::hooks::NAMED_STATES[3], "VUID-vkCmdDraw-None-04877"),
-                        (crate::hooks::NAMED_STATES[4], "VUID-vkCmdDraw-None-04879"),
+                        (
+                            crate::special::draw::NAMED_STATES[1],
+                            "VUID-vkCmdDraw-pStrides-04884",
+                        ),
+                        (
+                            crate::special::draw::NAMED_STATES[2],
+                            "VUID-vkCmdDraw-None-04876",
+                        ),
+                        (
+                            crate::special::draw::NAMED_STATES[3],
+                            "VUID-vkCmdDraw-None-04877",
+                        ),
+                        (
+                            crate::special::draw::NAMED_STATES[4],
+                            "VUID-vkCmdDraw-None-04879",
+                        ),
                     ],
                     rendering: [
                         "VUID-vkCmdDraw-viewMask-06178",
@@ -433,7 +445,10 @@ The caller upholds the rules that [`Self::draw`] checks at run time: `VUID-vkCmd
                     first_instance,
                 )
             };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::GRAPHICS,
+            );
         }
         Ok(())
     }
@@ -660,7 +675,7 @@ The rules of `vkCmdDrawIndexed` that apply to this crate's API ([reference page]
         vertex_offset: i32,
         first_instance: u32,
     ) -> Result<()> {
-        crate::hooks::indexed_draw_checks(
+        crate::special::draw::indexed_draw_checks(
             self,
             "VUID-vkCmdDrawIndexed-None-02700",
             "VUID-vkCmdDrawIndexed-None-02697",
@@ -677,30 +692,30 @@ The rules of `vkCmdDrawIndexed` that apply to this crate's API ([reference page]
                 "VUID-vkCmdDrawIndexed-None-02721",
             )),
             {
-                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                const RULES: crate::special::draw::DrawRules = crate::special::draw::DrawRules {
                     render_pass: "VUID-vkCmdDrawIndexed-renderPass-02684",
                     subpass: "VUID-vkCmdDrawIndexed-subpass-02685",
                     dynamic_set: "VUID-vkCmdDrawIndexed-commandBuffer-02701",
                     static_unset: "VUID-vkCmdDrawIndexed-None-02859",
                     named: [
                         (
-                            crate::hooks::NAMED_STATES[0],
+                            crate::special::draw::NAMED_STATES[0],
                             "VUID-vkCmdDrawIndexed-primitiveTopology-03420",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[1],
+                            crate::special::draw::NAMED_STATES[1],
                             "VUID-vkCmdDrawIndexed-pStrides-04884",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[2],
+                            crate::special::draw::NAMED_STATES[2],
                             "VUID-vkCmdDrawIndexed-None-04876",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[3],
+                            crate::special::draw::NAMED_STATES[3],
                             "VUID-vkCmdDrawIndexed-None-04877",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[4],
+                            crate::special::draw::NAMED_STATES[4],
                             "VUID-vkCmdDrawIndexed-None-04879",
                         ),
                     ],
@@ -807,7 +822,10 @@ The caller upholds the rules that [`Self::draw_indexed`] checks at run time: `VU
                     first_instance,
                 )
             };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::GRAPHICS,
+            );
         }
         Ok(())
     }
@@ -1044,7 +1062,7 @@ The rules of `vkCmdDrawIndexedIndirect` that apply to this crate's API ([referen
         draw_count: u32,
         stride: u32,
     ) -> Result<()> {
-        crate::hooks::indexed_draw_checks(
+        crate::special::draw::indexed_draw_checks(
             self,
             "VUID-vkCmdDrawIndexedIndirect-None-02700",
             "VUID-vkCmdDrawIndexedIndirect-None-02697",
@@ -1052,30 +1070,30 @@ The rules of `vkCmdDrawIndexedIndirect` that apply to this crate's API ([referen
             "VUID-vkCmdDrawIndexedIndirect-None-04007",
             None,
             {
-                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                const RULES: crate::special::draw::DrawRules = crate::special::draw::DrawRules {
                     render_pass: "VUID-vkCmdDrawIndexedIndirect-renderPass-02684",
                     subpass: "VUID-vkCmdDrawIndexedIndirect-subpass-02685",
                     dynamic_set: "VUID-vkCmdDrawIndexedIndirect-commandBuffer-02701",
                     static_unset: "VUID-vkCmdDrawIndexedIndirect-None-02859",
                     named: [
                         (
-                            crate::hooks::NAMED_STATES[0],
+                            crate::special::draw::NAMED_STATES[0],
                             "VUID-vkCmdDrawIndexedIndirect-primitiveTopology-03420",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[1],
+                            crate::special::draw::NAMED_STATES[1],
                             "VUID-vkCmdDrawIndexedIndirect-pStrides-04884",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[2],
+                            crate::special::draw::NAMED_STATES[2],
                             "VUID-vkCmdDrawIndexedIndirect-None-04876",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[3],
+                            crate::special::draw::NAMED_STATES[3],
                             "VUID-vkCmdDrawIndexedIndirect-None-04877",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[4],
+                            crate::special::draw::NAMED_STATES[4],
                             "VUID-vkCmdDrawIndexedIndirect-None-04879",
                         ),
                     ],
@@ -1166,7 +1184,10 @@ The caller upholds the rules that [`Self::draw_indexed_indirect`] checks at run 
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset, draw_count, stride) };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::GRAPHICS,
+            );
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())
@@ -1401,37 +1422,37 @@ The rules of `vkCmdDrawIndirect` that apply to this crate's API ([reference page
         draw_count: u32,
         stride: u32,
     ) -> Result<()> {
-        crate::hooks::draw_checks(
+        crate::special::draw::draw_checks(
             self,
             "VUID-vkCmdDrawIndirect-None-02700",
             "VUID-vkCmdDrawIndirect-None-02697",
             "VUID-vkCmdDrawIndirect-None-04007",
             None,
             {
-                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                const RULES: crate::special::draw::DrawRules = crate::special::draw::DrawRules {
                     render_pass: "VUID-vkCmdDrawIndirect-renderPass-02684",
                     subpass: "VUID-vkCmdDrawIndirect-subpass-02685",
                     dynamic_set: "VUID-vkCmdDrawIndirect-commandBuffer-02701",
                     static_unset: "VUID-vkCmdDrawIndirect-None-02859",
                     named: [
                         (
-                            crate::hooks::NAMED_STATES[0],
+                            crate::special::draw::NAMED_STATES[0],
                             "VUID-vkCmdDrawIndirect-primitiveTopology-03420",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[1],
+                            crate::special::draw::NAMED_STATES[1],
                             "VUID-vkCmdDrawIndirect-pStrides-04884",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[2],
+                            crate::special::draw::NAMED_STATES[2],
                             "VUID-vkCmdDrawIndirect-None-04876",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[3],
+                            crate::special::draw::NAMED_STATES[3],
                             "VUID-vkCmdDrawIndirect-None-04877",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[4],
+                            crate::special::draw::NAMED_STATES[4],
                             "VUID-vkCmdDrawIndirect-None-04879",
                         ),
                     ],
@@ -1520,7 +1541,10 @@ The caller upholds the rules that [`Self::draw_indirect`] checks at run time: `V
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), buffer.raw(), offset, draw_count, stride) };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::GRAPHICS,
+            );
             self.retain_with(buffer.address(), || buffer.retained());
         }
         Ok(())

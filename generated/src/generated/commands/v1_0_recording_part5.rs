@@ -30,7 +30,7 @@ The rules of `vkCmdEndRenderPass` that apply to this crate's API ([reference pag
     #[doc(alias = "vkCmdEndRenderPass")]
     #[inline]
     pub fn end_render_pass(mut self) -> Recorder<'c, Outside> {
-        let always: Result<()> = crate::hooks::end_render_pass_checks(
+        let always: Result<()> = crate::special::pass_instance::end_render_pass_checks(
             &mut self,
             ("VUID-vkCmdEndRenderPass-None-00910", "VUID-vkCmdEndRenderPass-None-07004"),
         );
@@ -55,7 +55,7 @@ The caller upholds the rules that [`Self::end_render_pass`] checks at run time: 
         let fp = self.device().fns().fp_v1_0().cmd_end_render_pass;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw()) };
-        crate::hooks::instance_ended(&mut self);
+        crate::special::pass_instance::instance_ended(&mut self);
         self.into_state()
     }
     /**`vkCmdNextSubpass`
@@ -76,7 +76,7 @@ The rules of `vkCmdNextSubpass` that apply to this crate's API ([reference page]
     #[doc(alias = "vkCmdNextSubpass")]
     #[inline]
     pub fn next_subpass(&mut self, contents: vk::SubpassContents) {
-        let always: Result<()> = crate::hooks::next_subpass_checks(
+        let always: Result<()> = crate::special::pass_instance::next_subpass_checks(
             self,
             "VUID-vkCmdNextSubpass-None-00909",
         );
@@ -104,7 +104,7 @@ The caller upholds the rules that [`Self::next_subpass`] checks at run time: `VU
         let fp = self.device().fns().fp_v1_0().cmd_next_subpass;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), contents) };
-        crate::hooks::next_subpass_done(self);
+        crate::special::pass_instance::next_subpass_done(self);
         self.state_changed();
     }
 }
@@ -180,7 +180,7 @@ The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUI
         let fp = self.device().fns().fp_v1_0().cmd_reset_event;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
-        crate::hooks::event_recorded(self, event);
+        crate::special::sync::event_recorded(self, event);
         self.state_changed();
         self.retain_with(event.address(), || event.retained());
     }
@@ -251,7 +251,7 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
         let fp = self.device().fns().fp_v1_0().cmd_set_event;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), event.raw(), stage_mask) };
-        crate::hooks::event_recorded(self, event);
+        crate::special::sync::event_recorded(self, event);
         self.state_changed();
         self.retain_with(event.address(), || event.retained());
     }

@@ -33,7 +33,7 @@ The rules of `vkBindBufferMemory2` that apply to this crate's API ([reference pa
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
-        crate::hooks::bind_buffer_memory2_checks(self, bind_infos)?;
+        crate::special::memory::bind_buffer_memory2_checks(self, bind_infos)?;
         {
             let r = self.validate_bind_buffer_memory2(bind_infos);
             r?;
@@ -60,7 +60,7 @@ The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run ti
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::bind_buffer_memory2_done(self, bind_infos);
+        crate::special::memory::bind_buffer_memory2_done(self, bind_infos);
         Ok(())
     }
     /**`vkBindImageMemory2`
@@ -115,7 +115,7 @@ The rules of `vkBindImageMemory2` that apply to this crate's API ([reference pag
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
-        crate::hooks::bind_image_memory2_checks(self, bind_infos)?;
+        crate::special::memory::bind_image_memory2_checks(self, bind_infos)?;
         {
             let r = self.validate_bind_image_memory2(bind_infos);
             r?;
@@ -142,7 +142,7 @@ The caller upholds the rules that [`Self::bind_image_memory2`] checks at run tim
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::bind_image_memory2_done(self, bind_infos);
+        crate::special::memory::bind_image_memory2_done(self, bind_infos);
         Ok(())
     }
     /**`vkCreateDescriptorUpdateTemplate`
@@ -204,7 +204,7 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::descriptor_update_template_created(
+            crate::special::descriptors::descriptor_update_template_created(
                 DescriptorUpdateTemplate::from_raw(
                     out,
                     self,
@@ -299,7 +299,7 @@ The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] chec
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::conversion_created(
+            crate::special::view::conversion_created(
                 self,
                 SamplerYcbcrConversion::from_raw(out, self, None, true),
                 create_info,
@@ -452,7 +452,7 @@ The rules of `vkGetDeviceQueue2` that apply to this crate's API ([reference page
     #[doc(alias = "vkGetDeviceQueue2")]
     #[inline]
     pub fn get_queue2<'a>(&self, queue_info: &DeviceQueueInfo2<'a>) -> Result<Queue> {
-        crate::hooks::get_device_queue2_checks(self, queue_info)?;
+        crate::special::queue::get_device_queue2_checks(self, queue_info)?;
         {
             let r = self.validate_get_queue2(queue_info);
             r?;
@@ -481,7 +481,7 @@ The caller upholds the rules that [`Self::get_queue2`] checks at run time: `VUID
                 &mut out,
             )
         };
-        crate::hooks::queue2_got(
+        crate::special::queue::queue2_got(
             self,
             Queue::from_raw(out, self, None, true),
             queue_info,
@@ -503,7 +503,7 @@ The rules of `vkGetImageMemoryRequirements2` that apply to this crate's API ([re
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
-        crate::hooks::image_requirements2_planes(self, info)?;
+        crate::special::memory::image_requirements2_planes(self, info)?;
         {
             let r = self
                 .validate_get_image_memory_requirements2(info, memory_requirements);
@@ -692,7 +692,7 @@ The caller upholds the rules that [`Self::update_descriptor_set_with_template`] 
         // SAFETY: the caller of this unsafe method vouches that `data` is laid out as the
         // template's entries describe.
         unsafe {
-            crate::hooks::update_descriptor_set_with_template_done(
+            crate::special::descriptors::update_descriptor_set_with_template_done(
                 self,
                 descriptor_set,
                 descriptor_update_template,
@@ -1178,7 +1178,7 @@ The rules of `vkGetPhysicalDeviceSparseImageFormatProperties2` that apply to thi
             let r = self.validate_get_sparse_image_format_properties2(format_info);
             r?;
         }
-        crate::hooks::sparse_samples2(self, format_info)?;
+        crate::special::image::sparse_samples2(self, format_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_sparse_image_format_properties2_unchecked(format_info) }

@@ -99,7 +99,7 @@ The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page
         group_count_y: u32,
         group_count_z: u32,
     ) -> Result<()> {
-        crate::hooks::dispatch_checks(
+        crate::special::draw::dispatch_checks(
             self,
             "VUID-vkCmdDispatchBase-None-02700",
             "VUID-vkCmdDispatchBase-None-02697",
@@ -175,7 +175,10 @@ The caller upholds the rules that [`Self::dispatch_base`] checks at run time: `V
                     group_count_z,
                 )
             };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::COMPUTE);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::COMPUTE,
+            );
         }
         Ok(())
     }

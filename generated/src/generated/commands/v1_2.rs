@@ -71,12 +71,12 @@ The rules of `vkCreateRenderPass2` that apply to this crate's API ([reference pa
         &self,
         create_info: &RenderPassCreateInfo2<'a>,
     ) -> Result<RenderPass> {
-        crate::hooks::create_render_pass2_checks(create_info)?;
+        crate::special::render_pass::create_render_pass2_checks(create_info)?;
         {
             let r = self.validate_create_render_pass2(create_info);
             r?;
         }
-        crate::hooks::render_pass2_reference_checks(self, create_info)?;
+        crate::special::render_pass::render_pass2_reference_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_render_pass2_unchecked(create_info) }
@@ -106,7 +106,7 @@ The caller upholds the rules that [`Self::create_render_pass2`] checks at run ti
             return Err(Error::Vk(r));
         }
         Ok(
-            crate::hooks::render_pass2_created(
+            crate::special::render_pass::render_pass2_created(
                 self,
                 RenderPass::from_raw(out, self, None, true),
                 create_info,
@@ -271,7 +271,7 @@ The rules of `vkGetSemaphoreCounterValue` that apply to this crate's API ([refer
     #[doc(alias = "vkGetSemaphoreCounterValue")]
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
-        crate::hooks::get_semaphore_counter_value_checks(self, semaphore)?;
+        crate::special::sync::get_semaphore_counter_value_checks(self, semaphore)?;
         {
             let r = self.validate_get_semaphore_counter_value(semaphore);
             r?;
@@ -297,7 +297,7 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::semaphore_value_seen(self, semaphore, out);
+        crate::special::sync::semaphore_value_seen(self, semaphore, out);
         Ok(out)
     }
     /**`vkResetQueryPool`
@@ -378,7 +378,7 @@ The rules of `vkSignalSemaphore` that apply to this crate's API ([reference page
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
-        crate::hooks::signal_semaphore_checks(self, signal_info)?;
+        crate::special::sync::signal_semaphore_checks(self, signal_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.signal_semaphore_unchecked(signal_info) }
@@ -401,7 +401,7 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::signal_semaphore_done(self, signal_info);
+        crate::special::sync::signal_semaphore_done(self, signal_info);
         Ok(())
     }
     /**`vkWaitSemaphores`
@@ -433,7 +433,7 @@ The rules of `vkWaitSemaphores` that apply to this crate's API ([reference page]
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
     ) -> Result<crate::status::SuccessOrTimeout> {
-        crate::hooks::wait_semaphores_checks(self, wait_info)?;
+        crate::special::sync::wait_semaphores_checks(self, wait_info)?;
         {
             let r = self.validate_wait_semaphores(wait_info);
             r?;
@@ -465,7 +465,7 @@ The caller upholds the rules that [`Self::wait_semaphores`] checks at run time: 
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::wait_semaphores_done(self, wait_info, r);
+        crate::special::sync::wait_semaphores_done(self, wait_info, r);
         crate::status::SuccessOrTimeout::from_code(r).ok_or(Error::Vk(r))
     }
 }

@@ -38,10 +38,10 @@ The rules of `vkCmdBeginRenderPass2` that apply to this crate's API ([reference 
         render_pass_begin: &RenderPassBeginInfo<'a>,
         subpass_begin_info: &SubpassBeginInfo<'a>,
     ) -> Recorder<'c, InRenderPass> {
-        let always: Result<()> = crate::hooks::begin_render_pass_checks(
+        let always: Result<()> = crate::special::pass_instance::begin_render_pass_checks(
             &self,
             render_pass_begin,
-            &crate::hooks::BEGIN2,
+            &crate::special::pass_instance::BEGIN2,
         );
         {
             let r = always
@@ -84,7 +84,7 @@ The caller upholds the rules that [`Self::begin_render_pass2`] checks at run tim
                 subpass_begin_info as *const SubpassBeginInfo<'a> as *const _,
             )
         };
-        crate::hooks::render_pass_begun(
+        crate::special::pass_instance::render_pass_begun(
             &mut self,
             render_pass_begin,
             "VUID-vkCmdBeginRenderPass2-initialLayout-03100",
@@ -352,7 +352,7 @@ The rules of `vkCmdDrawIndexedIndirectCount` that apply to this crate's API ([re
         max_draw_count: u32,
         stride: u32,
     ) -> Result<()> {
-        crate::hooks::indexed_draw_checks(
+        crate::special::draw::indexed_draw_checks(
             self,
             "VUID-vkCmdDrawIndexedIndirectCount-None-02700",
             "VUID-vkCmdDrawIndexedIndirectCount-None-02697",
@@ -360,30 +360,30 @@ The rules of `vkCmdDrawIndexedIndirectCount` that apply to this crate's API ([re
             "VUID-vkCmdDrawIndexedIndirectCount-None-04007",
             None,
             {
-                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                const RULES: crate::special::draw::DrawRules = crate::special::draw::DrawRules {
                     render_pass: "VUID-vkCmdDrawIndexedIndirectCount-renderPass-02684",
                     subpass: "VUID-vkCmdDrawIndexedIndirectCount-subpass-02685",
                     dynamic_set: "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-02701",
                     static_unset: "VUID-vkCmdDrawIndexedIndirectCount-None-02859",
                     named: [
                         (
-                            crate::hooks::NAMED_STATES[0],
+                            crate::special::draw::NAMED_STATES[0],
                             "VUID-vkCmdDrawIndexedIndirectCount-primitiveTopology-03420",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[1],
+                            crate::special::draw::NAMED_STATES[1],
                             "VUID-vkCmdDrawIndexedIndirectCount-pStrides-04884",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[2],
+                            crate::special::draw::NAMED_STATES[2],
                             "VUID-vkCmdDrawIndexedIndirectCount-None-04876",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[3],
+                            crate::special::draw::NAMED_STATES[3],
                             "VUID-vkCmdDrawIndexedIndirectCount-None-04877",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[4],
+                            crate::special::draw::NAMED_STATES[4],
                             "VUID-vkCmdDrawIndexedIndirectCount-None-04879",
                         ),
                     ],
@@ -499,7 +499,10 @@ The caller upholds the rules that [`Self::draw_indexed_indirect_count`] checks a
                     stride,
                 )
             };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::GRAPHICS,
+            );
             self.retain_with(buffer.address(), || buffer.retained());
             self.retain_with(count_buffer.address(), || count_buffer.retained());
         }
@@ -747,37 +750,37 @@ The rules of `vkCmdDrawIndirectCount` that apply to this crate's API ([reference
         max_draw_count: u32,
         stride: u32,
     ) -> Result<()> {
-        crate::hooks::draw_checks(
+        crate::special::draw::draw_checks(
             self,
             "VUID-vkCmdDrawIndirectCount-None-02700",
             "VUID-vkCmdDrawIndirectCount-None-02697",
             "VUID-vkCmdDrawIndirectCount-None-04007",
             None,
             {
-                const RULES: crate::hooks::DrawRules = crate::hooks::DrawRules {
+                const RULES: crate::special::draw::DrawRules = crate::special::draw::DrawRules {
                     render_pass: "VUID-vkCmdDrawIndirectCount-renderPass-02684",
                     subpass: "VUID-vkCmdDrawIndirectCount-subpass-02685",
                     dynamic_set: "VUID-vkCmdDrawIndirectCount-commandBuffer-02701",
                     static_unset: "VUID-vkCmdDrawIndirectCount-None-02859",
                     named: [
                         (
-                            crate::hooks::NAMED_STATES[0],
+                            crate::special::draw::NAMED_STATES[0],
                             "VUID-vkCmdDrawIndirectCount-primitiveTopology-03420",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[1],
+                            crate::special::draw::NAMED_STATES[1],
                             "VUID-vkCmdDrawIndirectCount-pStrides-04884",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[2],
+                            crate::special::draw::NAMED_STATES[2],
                             "VUID-vkCmdDrawIndirectCount-None-04876",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[3],
+                            crate::special::draw::NAMED_STATES[3],
                             "VUID-vkCmdDrawIndirectCount-None-04877",
                         ),
                         (
-                            crate::hooks::NAMED_STATES[4],
+                            crate::special::draw::NAMED_STATES[4],
                             "VUID-vkCmdDrawIndirectCount-None-04879",
                         ),
                     ],
@@ -893,7 +896,10 @@ The caller upholds the rules that [`Self::draw_indirect_count`] checks at run ti
                     stride,
                 )
             };
-            crate::hooks::descriptor_layouts_used(self, vk::PipelineBindPoint::GRAPHICS);
+            crate::special::draw::descriptor_layouts_used(
+                self,
+                vk::PipelineBindPoint::GRAPHICS,
+            );
             self.retain_with(buffer.address(), || buffer.retained());
             self.retain_with(count_buffer.address(), || count_buffer.retained());
         }
@@ -924,7 +930,7 @@ The rules of `vkCmdEndRenderPass2` that apply to this crate's API ([reference pa
         mut self,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) -> Recorder<'c, Outside> {
-        let always: Result<()> = crate::hooks::end_render_pass_checks(
+        let always: Result<()> = crate::special::pass_instance::end_render_pass_checks(
             &mut self,
             (
                 "VUID-vkCmdEndRenderPass2-None-03103",
@@ -958,7 +964,7 @@ The caller upholds the rules that [`Self::end_render_pass2`] checks at run time:
         unsafe {
             fp(self.raw(), subpass_end_info as *const SubpassEndInfo<'a> as *const _)
         };
-        crate::hooks::instance_ended(&mut self);
+        crate::special::pass_instance::instance_ended(&mut self);
         self.into_state()
     }
     /**`vkCmdNextSubpass2`
@@ -984,7 +990,7 @@ The rules of `vkCmdNextSubpass2` that apply to this crate's API ([reference page
         subpass_begin_info: &SubpassBeginInfo<'a>,
         subpass_end_info: &SubpassEndInfo<'a>,
     ) {
-        let always: Result<()> = crate::hooks::next_subpass_checks(
+        let always: Result<()> = crate::special::pass_instance::next_subpass_checks(
             self,
             "VUID-vkCmdNextSubpass2-None-03102",
         );
@@ -1025,7 +1031,7 @@ The caller upholds the rules that [`Self::next_subpass2`] checks at run time: `V
                 subpass_end_info as *const SubpassEndInfo<'a> as *const _,
             )
         };
-        crate::hooks::next_subpass_done(self);
+        crate::special::pass_instance::next_subpass_done(self);
         self.state_changed();
     }
 }

@@ -252,7 +252,11 @@ The rules of `vkGetPrivateData` that apply to this crate's API ([reference page]
         object_handle: u64,
         private_data_slot: &PrivateDataSlot,
     ) -> Result<u64> {
-        crate::hooks::get_private_data_checks(self, object_type, object_handle)?;
+        crate::special::device::get_private_data_checks(
+            self,
+            object_type,
+            object_handle,
+        )?;
         {
             let r = self.validate_get_private_data(object_type, private_data_slot);
             r?;
@@ -308,7 +312,11 @@ The rules of `vkSetPrivateData` that apply to this crate's API ([reference page]
         private_data_slot: &PrivateDataSlot,
         data: u64,
     ) -> Result<()> {
-        crate::hooks::set_private_data_checks(self, object_type, object_handle)?;
+        crate::special::device::set_private_data_checks(
+            self,
+            object_type,
+            object_handle,
+        )?;
         {
             let r = self.validate_set_private_data(object_type, private_data_slot);
             r?;
@@ -438,12 +446,12 @@ The rules of `vkQueueSubmit2` that apply to this crate's API ([reference page](h
             }
             tuff_runtime::lock_all(syncs)
         };
-        crate::hooks::queue_submit2_checks(self, submits, fence)?;
+        crate::special::queue::queue_submit2_checks(self, submits, fence)?;
         {
             let r = self.validate_submit2(submits, fence);
             r?;
         }
-        let _held = crate::hooks::queue_submit2_gate(self, submits)?;
+        let _held = crate::special::queue::queue_submit2_hold(self, submits)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.submit2_unchecked(submits, fence) }
@@ -481,7 +489,7 @@ The caller upholds the rules that [`Self::submit2`] checks at run time: `VUID-vk
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
-        crate::hooks::queue_submit2_done(self, submits, fence);
+        crate::special::queue::queue_submit2_done(self, submits, fence);
         Ok(())
     }
 }

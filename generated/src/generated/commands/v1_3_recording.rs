@@ -79,7 +79,7 @@ The rules of `vkCmdBeginRendering` that apply to this crate's API ([reference pa
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
-        let always: Result<()> = crate::hooks::begin_rendering_checks(
+        let always: Result<()> = crate::special::pass_instance::begin_rendering_checks(
             &self,
             rendering_info,
         );
@@ -110,7 +110,7 @@ The caller upholds the rules that [`Self::begin_rendering`] checks at run time: 
         unsafe {
             fp(self.raw(), rendering_info as *const RenderingInfo<'a> as *const _)
         };
-        crate::hooks::rendering_begun(&mut self, rendering_info);
+        crate::special::pass_instance::rendering_begun(&mut self, rendering_info);
         let kept: Vec<tuff_runtime::Retained> = {
             let live = self.device().live();
             let mut kept = Vec::new();
@@ -175,9 +175,9 @@ The rules of `vkCmdBlitImage2` that apply to this crate's API ([reference page](
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::BlitImage2(blit_image_info),
+            crate::special::image_layouts::Names::BlitImage2(blit_image_info),
         )?;
         {
             let r = self.validate_blit_image2(blit_image_info);
@@ -203,9 +203,9 @@ The caller upholds the rules that [`Self::blit_image2`] checks at run time: `VUI
             unsafe {
                 fp(self.raw(), blit_image_info as *const BlitImageInfo2<'a> as *const _)
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::BlitImage2(blit_image_info),
+                crate::special::image_layouts::Names::BlitImage2(blit_image_info),
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
@@ -322,15 +322,20 @@ The rules of `vkCmdCopyBufferToImage2` that apply to this crate's API ([referenc
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info),
+            crate::special::image_layouts::Names::BufferToImage2(
+                copy_buffer_to_image_info,
+            ),
         )?;
         {
             let r = self.validate_copy_buffer_to_image2(copy_buffer_to_image_info);
             r?;
         }
-        crate::hooks::cmd_copy_buffer_to_image2_checks(self, copy_buffer_to_image_info)?;
+        crate::special::copies::cmd_copy_buffer_to_image2_checks(
+            self,
+            copy_buffer_to_image_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.copy_buffer_to_image2_unchecked(copy_buffer_to_image_info) }
@@ -355,9 +360,11 @@ The caller upholds the rules that [`Self::copy_buffer_to_image2`] checks at run 
                         as *const _,
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::BufferToImage2(copy_buffer_to_image_info),
+                crate::special::image_layouts::Names::BufferToImage2(
+                    copy_buffer_to_image_info,
+                ),
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
@@ -452,9 +459,9 @@ The rules of `vkCmdCopyImage2` that apply to this crate's API ([reference page](
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::CopyImage2(copy_image_info),
+            crate::special::image_layouts::Names::CopyImage2(copy_image_info),
         )?;
         {
             let r = self.validate_copy_image2(copy_image_info);
@@ -480,9 +487,9 @@ The caller upholds the rules that [`Self::copy_image2`] checks at run time: `VUI
             unsafe {
                 fp(self.raw(), copy_image_info as *const CopyImageInfo2<'a> as *const _)
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::CopyImage2(copy_image_info),
+                crate::special::image_layouts::Names::CopyImage2(copy_image_info),
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
@@ -525,15 +532,20 @@ The rules of `vkCmdCopyImageToBuffer2` that apply to this crate's API ([referenc
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info),
+            crate::special::image_layouts::Names::ImageToBuffer2(
+                copy_image_to_buffer_info,
+            ),
         )?;
         {
             let r = self.validate_copy_image_to_buffer2(copy_image_to_buffer_info);
             r?;
         }
-        crate::hooks::cmd_copy_image_to_buffer2_checks(self, copy_image_to_buffer_info)?;
+        crate::special::copies::cmd_copy_image_to_buffer2_checks(
+            self,
+            copy_image_to_buffer_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.copy_image_to_buffer2_unchecked(copy_image_to_buffer_info) }
@@ -558,9 +570,11 @@ The caller upholds the rules that [`Self::copy_image_to_buffer2`] checks at run 
                         as *const _,
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::ImageToBuffer2(copy_image_to_buffer_info),
+                crate::special::image_layouts::Names::ImageToBuffer2(
+                    copy_image_to_buffer_info,
+                ),
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
@@ -628,9 +642,9 @@ The rules of `vkCmdResolveImage2` that apply to this crate's API ([reference pag
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) -> Result<()> {
-        crate::hooks::image_layout_checks(
+        crate::special::image_layouts::image_layout_checks(
             self,
-            crate::hooks::Names::ResolveImage2(resolve_image_info),
+            crate::special::image_layouts::Names::ResolveImage2(resolve_image_info),
         )?;
         {
             let r = self.validate_resolve_image2(resolve_image_info);
@@ -659,9 +673,9 @@ The caller upholds the rules that [`Self::resolve_image2`] checks at run time: `
                     resolve_image_info as *const ResolveImageInfo2<'a> as *const _,
                 )
             };
-            crate::hooks::image_layouts_named(
+            crate::special::image_layouts::image_layouts_named(
                 self,
-                crate::hooks::Names::ResolveImage2(resolve_image_info),
+                crate::special::image_layouts::Names::ResolveImage2(resolve_image_info),
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
@@ -755,7 +769,7 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
                 ),
             });
         }
-        crate::hooks::cmd_bind_vertex_buffers2_checks(
+        crate::special::draw_state::cmd_bind_vertex_buffers2_checks(
             self,
             first_binding,
             buffers,
@@ -820,7 +834,7 @@ The caller upholds the rules that [`Self::bind_vertex_buffers2`] checks at run t
                     },
                 )
             };
-            crate::hooks::cmd_bind_vertex_buffers2_done(
+            crate::special::draw_state::cmd_bind_vertex_buffers2_done(
                 self,
                 first_binding,
                 buffers,
@@ -866,7 +880,7 @@ The caller upholds the rules that [`Self::set_cull_mode`] checks at run time: `V
         let fp = self.device().fns().fp_v1_3().cmd_set_cull_mode;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), cull_mode) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE),
         );
@@ -907,7 +921,7 @@ The caller upholds the rules that [`Self::set_depth_bias_enable`] checks at run 
         let depth_bias_enable = vk::Bool32::from(depth_bias_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_bias_enable) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE),
         );
@@ -951,7 +965,7 @@ The caller upholds the rules that [`Self::set_depth_bounds_test_enable`] checks 
         let depth_bounds_test_enable = vk::Bool32::from(depth_bounds_test_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_bounds_test_enable) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE),
         );
@@ -995,7 +1009,7 @@ The caller upholds the rules that [`Self::set_depth_compare_op`] checks at run t
         let fp = self.device().fns().fp_v1_3().cmd_set_depth_compare_op;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_compare_op) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP),
         );
@@ -1036,7 +1050,7 @@ The caller upholds the rules that [`Self::set_depth_test_enable`] checks at run 
         let depth_test_enable = vk::Bool32::from(depth_test_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_test_enable) };
-        crate::hooks::depth_stencil_set(
+        crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::DepthTest(depth_test_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
@@ -1078,7 +1092,7 @@ The caller upholds the rules that [`Self::set_depth_write_enable`] checks at run
         let depth_write_enable = vk::Bool32::from(depth_write_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), depth_write_enable) };
-        crate::hooks::depth_stencil_set(
+        crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::DepthWrite(depth_write_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
@@ -1120,7 +1134,7 @@ The caller upholds the rules that [`Self::set_front_face`] checks at run time: `
         let fp = self.device().fns().fp_v1_3().cmd_set_front_face;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), front_face) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE),
         );
@@ -1164,7 +1178,7 @@ The caller upholds the rules that [`Self::set_primitive_restart_enable`] checks 
         let primitive_restart_enable = vk::Bool32::from(primitive_restart_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), primitive_restart_enable) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE),
         );
@@ -1208,7 +1222,7 @@ The caller upholds the rules that [`Self::set_primitive_topology`] checks at run
         let fp = self.device().fns().fp_v1_3().cmd_set_primitive_topology;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), primitive_topology) };
-        crate::hooks::dynamic_state_set(
+        crate::special::draw_state::dynamic_state_set(
             self,
             crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY),
         );
@@ -1254,7 +1268,7 @@ The caller upholds the rules that [`Self::set_rasterizer_discard_enable`] checks
         let rasterizer_discard_enable = vk::Bool32::from(rasterizer_discard_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), rasterizer_discard_enable) };
-        crate::hooks::depth_stencil_set(
+        crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::Discard(rasterizer_discard_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
@@ -1283,7 +1297,7 @@ The rules of `vkCmdSetScissorWithCount` that apply to this crate's API ([referen
     #[doc(alias = "vkCmdSetScissorWithCount")]
     #[inline]
     pub fn set_scissor_with_count(&mut self, scissors: &[vk::Rect2D]) -> Result<()> {
-        crate::hooks::cmd_set_scissor_with_count_checks(self, scissors)?;
+        crate::special::draw_state::cmd_set_scissor_with_count_checks(self, scissors)?;
         {
             let r = self.validate_set_scissor_with_count(scissors);
             r?;
@@ -1306,7 +1320,7 @@ The caller upholds the rules that [`Self::set_scissor_with_count`] checks at run
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), scissors.len() as u32, scissors.as_ptr().cast()) };
-            crate::hooks::viewport_count_set(
+            crate::special::draw_state::viewport_count_set(
                 self,
                 scissors.len(),
                 crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
@@ -1386,7 +1400,7 @@ The caller upholds the rules that [`Self::set_stencil_op`] checks at run time: `
         unsafe {
             fp(self.raw(), face_mask, fail_op, pass_op, depth_fail_op, compare_op)
         };
-        crate::hooks::depth_stencil_set(
+        crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::StencilOp(
                 face_mask,
@@ -1434,7 +1448,7 @@ The caller upholds the rules that [`Self::set_stencil_test_enable`] checks at ru
         let stencil_test_enable = vk::Bool32::from(stencil_test_enable);
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), stencil_test_enable) };
-        crate::hooks::depth_stencil_set(
+        crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::StencilTest(stencil_test_enable),
             crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
@@ -1460,7 +1474,7 @@ The rules of `vkCmdSetViewportWithCount` that apply to this crate's API ([refere
     #[doc(alias = "vkCmdSetViewportWithCount")]
     #[inline]
     pub fn set_viewport_with_count(&mut self, viewports: &[vk::Viewport]) -> Result<()> {
-        crate::hooks::cmd_set_viewport_with_count_checks(self, viewports)?;
+        crate::special::draw_state::cmd_set_viewport_with_count_checks(self, viewports)?;
         {
             let r = self.validate_set_viewport_with_count(viewports);
             r?;
@@ -1483,7 +1497,7 @@ The caller upholds the rules that [`Self::set_viewport_with_count`] checks at ru
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), viewports.len() as u32, viewports.as_ptr().cast()) };
-            crate::hooks::viewport_count_set(
+            crate::special::draw_state::viewport_count_set(
                 self,
                 viewports.len(),
                 crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
@@ -1512,7 +1526,9 @@ The rules of `vkCmdEndRendering` that apply to this crate's API ([reference page
     #[doc(alias = "vkCmdEndRendering")]
     #[inline]
     pub fn end_rendering(mut self) -> Recorder<'c, Outside> {
-        let always: Result<()> = crate::hooks::end_rendering_checks(&mut self);
+        let always: Result<()> = crate::special::pass_instance::end_rendering_checks(
+            &mut self,
+        );
         {
             let r = always.and_then(|()| self.validate_end_rendering());
             let _ = self.accept(r);
@@ -1534,345 +1550,7 @@ The caller upholds the rules that [`Self::end_rendering`] checks at run time: `V
         let fp = self.device().fns().fp_v1_3().cmd_end_rendering;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw()) };
-        crate::hooks::instance_ended(&mut self);
+        crate::special::pass_instance::instance_ended(&mut self);
         self.into_state()
-    }
-}
-impl<'c, S: Scope> Recorder<'c, S> {
-    /**`vkCmdPipelineBarrier2`
-
-# Safety
-
-The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdPipelineBarrier2-pDependencies-02285`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must have been created with at least one VkSubpassDependency instance in `VkRenderPassCreateInfo::pDependencies` that expresses a dependency from the current subpass to itself, with synchronization scopes and access scopes that are all supersets of the scopes defined in this command
-- `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, it must not include any buffer memory barriers
-- `VUID-vkCmdPipelineBarrier2-image-04073`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `image` member of any image memory barrier included in this command must be an attachment used in the current subpass both as an input attachment, and as either a color or depth/stencil attachment
-- `VUID-vkCmdPipelineBarrier2-oldLayout-01181`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `oldLayout` and `newLayout` members of any image memory barrier included in this command must be equal
-- `VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members of any image memory barrier included in this command must be equal
-- `VUID-vkCmdPipelineBarrier2-srcStageMask-03849`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdPipelineBarrier2-dstStageMask-03850`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186`: If fname:vkCmdPipelineBarrier2 is called outside of a render pass instance, `VK_DEPENDENCY_VIEW_LOCAL_BIT` must not be included in the dependency flags
-- `VUID-vkCmdPipelineBarrier2-None-06191`: If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must not have been started with vkCmdBeginRendering
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
-- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkBufferMemoryBarrier2-buffer-04088`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
-- `VUID-VkBufferMemoryBarrier2-buffer-04089`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL`, `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL`, `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-image-04071`: If `image` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
-- `VUID-VkImageMemoryBarrier2-image-04072`: If `image` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-image-01671`: If `image` has a single-plane color format or is not disjoint, then the `aspectMask` member of `subresourceRange` must be `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageMemoryBarrier2-image-01672`: If `image` has a multi-planar format and the image is disjoint, then the `aspectMask` member of `subresourceRange` must include either at least one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, and `VK_IMAGE_ASPECT_PLANE_2_BIT`; or must include `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-
-# Valid usage
-
-The rules of `vkCmdPipelineBarrier2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdPipelineBarrier2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
-
-- `VUID-vkCmdPipelineBarrier2-pDependencies-02285` (*yours*; explicit rule): If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must have been created with at least one VkSubpassDependency instance in `VkRenderPassCreateInfo::pDependencies` …
-- `VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178` (*yours*; explicit rule): If fname:vkCmdPipelineBarrier2 is called within a render pass instance, it must not include any buffer memory barriers
-- `VUID-vkCmdPipelineBarrier2-image-04073` (*yours*; explicit rule): If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `image` member of any image memory barrier included in this command must be an attachment used in the current subpass both …
-- `VUID-vkCmdPipelineBarrier2-oldLayout-01181` (*yours*; explicit rule): If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `oldLayout` and `newLayout` members of any image memory barrier included in this command must be equal
-- `VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182` (*yours*; explicit rule): If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members of any image memory barrier included in this command must be equal
-- `VUID-vkCmdPipelineBarrier2-srcStageMask-03849` (*yours*; explicit rule): The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue …
-- `VUID-vkCmdPipelineBarrier2-dstStageMask-03850` (*yours*; explicit rule): The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue …
-- `VUID-vkCmdPipelineBarrier2-dependencyFlags-01186` (*yours*; explicit rule): If fname:vkCmdPipelineBarrier2 is called outside of a render pass instance, `VK_DEPENDENCY_VIEW_LOCAL_BIT` must not be included in the dependency flags
-- `VUID-vkCmdPipelineBarrier2-None-06191` (*yours*; explicit rule): If fname:vkCmdPipelineBarrier2 is called within a render pass instance, the render pass must not have been started with vkCmdBeginRendering
-- `VUID-vkCmdPipelineBarrier2-synchronization2-03848` (*checked*): The `synchronization2` feature must be enabled
-- `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, compute, decode, or encode operations
-- `VUID-vkCmdPipelineBarrier2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
-- `VUID-vkCmdPipelineBarrier2-pDependencyInfo-parameter` (*by the types*): `pDependencyInfo` must be a valid pointer to a valid VkDependencyInfo structure
-- `VUID-vkCmdPipelineBarrier2-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
-    #[doc(alias = "vkCmdPipelineBarrier2")]
-    #[inline]
-    pub unsafe fn pipeline_barrier2<'a>(
-        &mut self,
-        dependency_info: &DependencyInfo<'a>,
-    ) -> Result<()> {
-        crate::hooks::dependency_checks(self, core::slice::from_ref(dependency_info))?;
-        {
-            let r = self.validate_pipeline_barrier2(dependency_info);
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.pipeline_barrier2_unchecked(dependency_info) }
-    }
-    /**`vkCmdPipelineBarrier2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::pipeline_barrier2`] checks at run time: `VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool`, `VUID-vkCmdPipelineBarrier2-synchronization2-03848`, `VUID-VkImageMemoryBarrier2-oldLayout-01197`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn pipeline_barrier2_unchecked<'a>(
-        &mut self,
-        dependency_info: &DependencyInfo<'a>,
-    ) -> Result<()> {
-        let fp = self.device().fns().fp_v1_3().cmd_pipeline_barrier2;
-        {
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe {
-                fp(self.raw(), dependency_info as *const DependencyInfo<'a> as *const _)
-            };
-            crate::hooks::dependency_done(self, core::slice::from_ref(dependency_info));
-            self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
-                for e in core::iter::once(dependency_info) {
-                    // SAFETY: the safe structs store every pointer with its length.
-                    unsafe {
-                        crate::reach::dependency_info(e.as_raw(), live, &mut kept)
-                    };
-                }
-                kept
-            };
-            for o in kept {
-                self.retain(o);
-            }
-        }
-        Ok(())
-    }
-    /**`vkCmdWaitEvents2`
-
-# Safety
-
-The caller upholds these 38 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdWaitEvents2-pEvents-03837`: Members of `pEvents` must not have been signaled by vkCmdSetEvent
-- `VUID-vkCmdWaitEvents2-pEvents-03838`: For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
-- `VUID-vkCmdWaitEvents2-pEvents-03839`: For any element i of `pEvents`, if that event is signaled by vkSetEvent, barriers in the ith element of `pDependencyInfos` must include only host operations in their first synchronization scope
-- `VUID-vkCmdWaitEvents2-pEvents-03840`: For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` include only host operations, the ith element of `pEvents` must be signaled before vkCmdWaitEvents2 is executed
-- `VUID-vkCmdWaitEvents2-pEvents-03841`: For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` do not include host operations, the ith element of `pEvents` must be signaled by a corresponding vkCmdSetEvent2 that occurred earlier in submission order
-- `VUID-vkCmdWaitEvents2-srcStageMask-03842`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must either include only pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from, or include only `VK_PIPELINE_STAGE_2_HOST_BIT`
-- `VUID-vkCmdWaitEvents2-dstStageMask-03843`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWaitEvents2-dependencyFlags-03844`: If `vkCmdWaitEvents2` is being called inside a render pass instance, the `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must not include `VK_PIPELINE_STAGE_2_HOST_BIT`
-- `VUID-vkCmdWaitEvents2-commandBuffer-03846`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
-- `VUID-VkBufferMemoryBarrier2-srcStageMask-03851`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
-- `VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkBufferMemoryBarrier2-buffer-04088`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
-- `VUID-VkBufferMemoryBarrier2-buffer-04089`: If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-oldLayout-01208`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01209`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01210`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01211`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_SAMPLED_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01212`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01213`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT`
-- `VUID-VkImageMemoryBarrier2-newLayout-01198`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `newLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED`
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03854`: If either `srcStageMask` or `dstStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must be equal
-- `VUID-VkImageMemoryBarrier2-srcStageMask-03855`: If `srcStageMask` includes `VK_PIPELINE_STAGE_2_HOST_BIT`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, `oldLayout` must be one of `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_UNDEFINED`, or `VK_IMAGE_LAYOUT_GENERAL`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01658`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-oldLayout-01659`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` then `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` then `image` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` set
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL`, `image` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939`: If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL`, `image` must have been created with at least one of `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_SAMPLED_BIT`, or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT`
-- `VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070`: If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-image-04071`: If `image` was created with a sharing mode of `VK_SHARING_MODE_CONCURRENT`, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, and one of `srcQueueFamilyIndex` and `dstQueueFamilyIndex` is one of the special queue family values reserved for external memory transfers, the other must be `VK_QUEUE_FAMILY_IGNORED`
-- `VUID-VkImageMemoryBarrier2-image-04072`: If `image` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both be valid queue families, or one of the special queue family values reserved for external memory transfers, as described in Queue Family Ownership Transfer
-- `VUID-VkImageMemoryBarrier2-image-01671`: If `image` has a single-plane color format or is not disjoint, then the `aspectMask` member of `subresourceRange` must be `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageMemoryBarrier2-image-01672`: If `image` has a multi-planar format and the image is disjoint, then the `aspectMask` member of `subresourceRange` must include either at least one of `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, and `VK_IMAGE_ASPECT_PLANE_2_BIT`; or must include `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageMemoryBarrier2-image-01673`: If `image` has a multi-planar format with only two planes, then the `aspectMask` member of `subresourceRange` must not include `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-VkImageMemoryBarrier2-image-03319`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-VkImageMemoryBarrier2-image-03320`: If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both `VK_IMAGE_ASPECT_DEPTH_BIT` and `VK_IMAGE_ASPECT_STENCIL_BIT`
-
-# Valid usage
-
-The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWaitEvents2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
-
-- `VUID-vkCmdWaitEvents2-pEvents-03837` (*yours*; explicit rule): Members of `pEvents` must not have been signaled by vkCmdSetEvent
-- `VUID-vkCmdWaitEvents2-pEvents-03838` (*yours*; explicit rule): For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
-- `VUID-vkCmdWaitEvents2-pEvents-03839` (*yours*; explicit rule): For any element i of `pEvents`, if that event is signaled by vkSetEvent, barriers in the ith element of `pDependencyInfos` must include only host operations in their first synchronization scope
-- `VUID-vkCmdWaitEvents2-pEvents-03840` (*yours*; explicit rule): For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` include only host operations, the ith element of `pEvents` must be signaled before vkCmdWaitEvents2 is executed
-- `VUID-vkCmdWaitEvents2-pEvents-03841` (*yours*; explicit rule): For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` do not include host operations, the ith element of `pEvents` must be signaled by a corresponding vkCmdSetEvent2 …
-- `VUID-vkCmdWaitEvents2-srcStageMask-03842` (*yours*; explicit rule): The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must either include only pipeline stages valid for …
-- `VUID-vkCmdWaitEvents2-dstStageMask-03843` (*yours*; explicit rule): The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must only include pipeline stages valid for the …
-- `VUID-vkCmdWaitEvents2-dependencyFlags-03844` (*yours*; explicit rule): If `vkCmdWaitEvents2` is being called inside a render pass instance, the `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of …
-- `VUID-vkCmdWaitEvents2-commandBuffer-03846` (*yours*; explicit rule): `commandBuffer`&#8217;s current device mask must include exactly one physical device
-- `VUID-vkCmdWaitEvents2-synchronization2-03836` (*checked*): The `synchronization2` feature must be enabled
-- `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter` (*checked*): `pDependencyInfos` must be a valid pointer to an array of `eventCount` valid VkDependencyInfo structures
-- `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, decode, or encode operations
-- `VUID-vkCmdWaitEvents2-eventCount-arraylength` (*checked*): `eventCount` must be greater than `0`
-- `VUID-vkCmdWaitEvents2-commonparent` (*checked*): Both of `commandBuffer`, and the elements of `pEvents` must have been created, allocated, or retrieved from the same VkDevice
-- `VUID-vkCmdWaitEvents2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
-- `VUID-vkCmdWaitEvents2-pEvents-parameter` (*by the types*): `pEvents` must be a valid pointer to an array of `eventCount` valid VkEvent handles
-- `VUID-vkCmdWaitEvents2-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
-    #[doc(alias = "vkCmdWaitEvents2")]
-    #[inline]
-    pub unsafe fn wait_events2<'a, 'h>(
-        &mut self,
-        events: impl crate::Handles<'h, Event>,
-        dependency_infos: &[DependencyInfo<'a>],
-    ) -> Result<()> {
-        let events_given = events;
-        #[allow(unused_variables)]
-        let events = crate::Handles::wrappers(&events_given);
-        if dependency_infos.len() != events.len() {
-            return Err(Error::Validation {
-                vuid: "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter",
-                message: format!(
-                    "`dependency_infos` has {} elements where `events` has {}",
-                    dependency_infos.len(), events.len()
-                ),
-            });
-        }
-        crate::hooks::dependency_checks(self, dependency_infos)?;
-        {
-            let r = self.validate_wait_events2(events, dependency_infos);
-            r?;
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.wait_events2_unchecked(events_given, dependency_infos) }
-    }
-    /**`vkCmdWaitEvents2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn wait_events2_unchecked<'a, 'h>(
-        &mut self,
-        events: impl crate::Handles<'h, Event>,
-        dependency_infos: &[DependencyInfo<'a>],
-    ) -> Result<()> {
-        let events_given = events;
-        #[allow(unused_variables)]
-        let events = crate::Handles::wrappers(&events_given);
-        let fp = self.device().fns().fp_v1_3().cmd_wait_events2;
-        {
-            for h in events {
-                self.retain(h.retained());
-            }
-            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-            unsafe {
-                fp(
-                    self.raw(),
-                    events.len() as u32,
-                    crate::Handles::raws(events_given).as_ptr(),
-                    dependency_infos.as_ptr().cast(),
-                )
-            };
-            crate::hooks::wait_events2_done(self, events, dependency_infos);
-            self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
-                for e in dependency_infos.iter() {
-                    // SAFETY: the safe structs store every pointer with its length.
-                    unsafe {
-                        crate::reach::dependency_info(e.as_raw(), live, &mut kept)
-                    };
-                }
-                kept
-            };
-            for o in kept {
-                self.retain(o);
-            }
-        }
-        Ok(())
-    }
-    /**`vkCmdWriteTimestamp2`
-
-# Safety
-
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdWriteTimestamp2-stage-03859`: `stage` must only include a single pipeline stage
-- `VUID-vkCmdWriteTimestamp2-stage-03860`: `stage` must only include stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWriteTimestamp2-queryPool-03861`: `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
-- `VUID-vkCmdWriteTimestamp2-queryPool-03862`: The query identified by `queryPool` and `query` must be unavailable
-- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`: The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
-- `VUID-vkCmdWriteTimestamp2-query-04903`: `query` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdWriteTimestamp2-None-03864`: All queries used by the command must be unavailable
-- `VUID-vkCmdWriteTimestamp2-query-03865`: If `vkCmdWriteTimestamp2` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries in `queryPool`
-
-# Valid usage
-
-The rules of `vkCmdWriteTimestamp2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
-
-- `VUID-vkCmdWriteTimestamp2-stage-03929` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT`
-- `VUID-vkCmdWriteTimestamp2-stage-03930` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT`
-- `VUID-vkCmdWriteTimestamp2-stage-03859` (*yours*; explicit rule): `stage` must only include a single pipeline stage
-- `VUID-vkCmdWriteTimestamp2-stage-03860` (*yours*; explicit rule): `stage` must only include stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWriteTimestamp2-queryPool-03861` (*yours*; explicit rule): `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
-- `VUID-vkCmdWriteTimestamp2-queryPool-03862` (*yours*; explicit rule): The query identified by `queryPool` and `query` must be unavailable
-- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863` (*yours*; explicit rule): The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
-- `VUID-vkCmdWriteTimestamp2-query-04903` (*yours*; explicit rule): `query` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdWriteTimestamp2-stage-03931` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_CONDITIONAL_RENDERING_BIT_EXT`
-- `VUID-vkCmdWriteTimestamp2-stage-03932` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
-- `VUID-vkCmdWriteTimestamp2-stage-03933` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT`
-- `VUID-vkCmdWriteTimestamp2-stage-03934` (*yours*; explicit rule): If the `meshShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT`
-- `VUID-vkCmdWriteTimestamp2-stage-03935` (*yours*; explicit rule): If the `taskShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TASK_SHADER_BIT_EXT`
-- `VUID-vkCmdWriteTimestamp2-stage-04956` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_SHADING_RATE_IMAGE_BIT_NV`
-- `VUID-vkCmdWriteTimestamp2-stage-07316` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
-- `VUID-vkCmdWriteTimestamp2-stage-07317` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
-- `VUID-vkCmdWriteTimestamp2-stage-04957` (*yours*; explicit rule): If the `subpassShading` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`
-- `VUID-vkCmdWriteTimestamp2-stage-04995` (*yours*; explicit rule): If the `invocationMask` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_INVOCATION_MASK_BIT_HUAWEI`
-- `VUID-vkCmdWriteTimestamp2-None-03864` (*yours*; explicit rule): All queries used by the command must be unavailable
-- `VUID-vkCmdWriteTimestamp2-query-03865` (*yours*; explicit rule): If `vkCmdWriteTimestamp2` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of …
-- `VUID-vkCmdWriteTimestamp2-synchronization2-03858` (*checked*): The `synchronization2` feature must be enabled
-- `VUID-vkCmdWriteTimestamp2-stage-parameter` (*checked*): `stage` must be a valid combination of VkPipelineStageFlagBits2 values
-- `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, compute, decode, or encode operations
-- `VUID-vkCmdWriteTimestamp2-commonparent` (*checked*): Both of `commandBuffer`, and `queryPool` must have been created, allocated, or retrieved from the same VkDevice
-- `VUID-vkCmdWriteTimestamp2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
-- `VUID-vkCmdWriteTimestamp2-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle
-- `VUID-vkCmdWriteTimestamp2-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
-    #[doc(alias = "vkCmdWriteTimestamp2")]
-    #[inline]
-    pub unsafe fn write_timestamp2(
-        &mut self,
-        stage: vk::PipelineStageFlags2,
-        query_pool: &QueryPool,
-        query: u32,
-    ) {
-        {
-            let r = self.validate_write_timestamp2(stage, query_pool);
-            if !self.accept(r) {
-                return;
-            }
-        }
-        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
-        // docs).
-        unsafe { self.write_timestamp2_unchecked(stage, query_pool, query) }
-    }
-    /**`vkCmdWriteTimestamp2` without its dynamic checks.
-
-# Safety
-
-The caller upholds the rules that [`Self::write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
-    #[inline]
-    pub unsafe fn write_timestamp2_unchecked(
-        &mut self,
-        stage: vk::PipelineStageFlags2,
-        query_pool: &QueryPool,
-        query: u32,
-    ) {
-        let fp = self.device().fns().fp_v1_3().cmd_write_timestamp2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), stage, query_pool.raw(), query) };
-        self.state_changed();
-        self.retain_with(query_pool.address(), || query_pool.retained());
     }
 }

@@ -3,13 +3,14 @@
 //! transfers between, and a pipeline barrier's stages and access types against
 //! each other, the queue family and the render pass instance it is recorded in.
 
-use super::{pool_family, refuse, stages};
+use super::{pool_family, refuse};
 use crate::recorder::{Recorder, Scope};
 use crate::structs::{BufferMemoryBarrier, ImageMemoryBarrier, MemoryBarrier};
 use crate::Result;
 use ash::vk;
 
 type L = vk::ImageLayout;
+
 type U = vk::ImageUsageFlags;
 
 /// For each layout whose transition needs a usage: the layouts, the usage bits of
@@ -323,7 +324,7 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
         // The host stage needs no queue capability (the specification's table of
         // supported stages); a barrier may name it.
         if let Some(s) =
-            stages::unsupported_stage(mask & !vk::PipelineStageFlags::HOST, family.flags)
+            super::stages::unsupported_stage(mask & !vk::PipelineStageFlags::HOST, family.flags)
         {
             refuse(
                 unsupported,
@@ -335,7 +336,7 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
         }
     }
     let access = |access: vk::AccessFlags, stages: vk::PipelineStageFlags, vuid, at: &str| {
-        match stages::unsupported_access(access, stages) {
+        match super::stages::unsupported_access(access, stages) {
             Some(a) => refuse(
                 vuid,
                 format!("{at} includes {a:?}, which no stage of {stages:?} supports"),
@@ -441,8 +442,10 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
                 .fold(vk::AccessFlags::empty(), |a, b| a | b);
             let fits = record.self_dependencies.iter().any(|d| {
                 d.subpass == instance.subpass
-                    && stages::expand(d.stages.0).contains(stages::expand(src_stage_mask))
-                    && stages::expand(d.stages.1).contains(stages::expand(dst_stage_mask))
+                    && super::stages::expand(d.stages.0)
+                        .contains(super::stages::expand(src_stage_mask))
+                    && super::stages::expand(d.stages.1)
+                        .contains(super::stages::expand(dst_stage_mask))
                     && d.access.0.contains(src_access)
                     && d.access.1.contains(dst_access)
             });
@@ -516,16 +519,5 @@ pub(crate) fn pipeline_barrier_checks<S: Scope>(
         image_memory_barriers,
     )?;
     check_barrier_structs(recorder, buffer_memory_barriers, image_memory_barriers)?;
-    super::cmd_pipeline_barrier_checks(recorder, image_memory_barriers)
-}
-
-/// The checks of an event wait's barriers, and the layouts its image barriers move
-/// from.
-pub(crate) fn wait_events_checks<S: Scope>(
-    recorder: &Recorder<'_, S>,
-    buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
-    image_memory_barriers: &[ImageMemoryBarrier<'_>],
-) -> Result<()> {
-    check_barrier_structs(recorder, buffer_memory_barriers, image_memory_barriers)?;
-    super::cmd_pipeline_barrier_checks(recorder, image_memory_barriers)
+    super::image_layouts::cmd_pipeline_barrier_checks(recorder, image_memory_barriers)
 }

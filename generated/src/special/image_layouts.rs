@@ -2,18 +2,19 @@
 //! what the recording's earlier commands leave, and recorded by every method for
 //! the submission that checks the rest ([`crate::layouts`]).
 
-use crate::handles::{CommandBuffer, Device, Framebuffer};
+use crate::handles::CommandBuffer;
 use crate::layouts::Sel;
 use crate::recorder::{Recorder, Scope};
 use crate::structs::{
     BlitImageInfo2, CopyBufferToImageInfo2, CopyImageInfo2, CopyImageToBufferInfo2, DependencyInfo,
-    FramebufferCreateInfo, ImageMemoryBarrier, RenderPassBeginInfo, ResolveImageInfo2,
+    ImageMemoryBarrier, RenderPassBeginInfo, ResolveImageInfo2,
 };
-use crate::{Handle, Result};
+use crate::Result;
 use ash::vk;
 
 /// The rule of a barrier's `oldLayout` (`VkImageMemoryBarrier`).
 pub(crate) const BARRIER: &str = "VUID-VkImageMemoryBarrier-oldLayout-01197";
+
 /// As [`BARRIER`], for `VkImageMemoryBarrier2`.
 pub(crate) const BARRIER2: &str = "VUID-VkImageMemoryBarrier2-oldLayout-01197";
 
@@ -34,7 +35,7 @@ fn acquires(src: u32, dst: u32, ours: u32) -> bool {
     src != dst && src != vk::QUEUE_FAMILY_IGNORED && dst != vk::QUEUE_FAMILY_IGNORED && src != ours
 }
 
-fn barrier(b: &vk::ImageMemoryBarrier<'_>, ours: u32) -> Named {
+pub(super) fn barrier(b: &vk::ImageMemoryBarrier<'_>, ours: u32) -> Named {
     let old = if acquires(b.src_queue_family_index, b.dst_queue_family_index, ours) {
         vk::ImageLayout::UNDEFINED
     } else {
@@ -93,7 +94,7 @@ fn check<S: Scope>(recorder: &Recorder<'_, S>, named: &[Named]) -> Result<()> {
 }
 
 /// Records what the layouts need and become.
-fn record<S: Scope>(recorder: &mut Recorder<'_, S>, named: &[Named]) {
+pub(super) fn record<S: Scope>(recorder: &mut Recorder<'_, S>, named: &[Named]) {
     let (live, layouts) = recorder.layouts_mut();
     for (image, sel, need, leave, vuid) in named {
         layouts.require(live, *image, *sel, *need, vuid);
@@ -147,7 +148,7 @@ pub(crate) fn dependency_done<S: Scope>(
 }
 
 /// What a command that reads or writes an image in a layout it names needs.
-fn uses(
+pub(super) fn uses(
     image: vk::Image,
     layout: vk::ImageLayout,
     sels: impl Iterator<Item = Sel>,
@@ -394,66 +395,6 @@ pub(crate) fn execute_layouts_done<S: Scope>(
     recorder.depth_stencil = Default::default();
 }
 
-/// The device remembers a framebuffer's attachments, whose layouts each render
-/// pass instance on it needs and leaves.
-pub(crate) fn framebuffer_created(
-    device: &Device,
-    framebuffer: Framebuffer,
-    create_info: &FramebufferCreateInfo<'_>,
-) -> Framebuffer {
-    let info = create_info.as_raw();
-    let views = if info.flags.contains(vk::FramebufferCreateFlags::IMAGELESS) {
-        &[][..]
-    } else {
-        // SAFETY: the safe setter stores the attachments with their count.
-        unsafe { crate::retention::raw_slice(info.p_attachments, info.attachment_count) }
-    };
-    device.live().framebuffer_created(
-        framebuffer.raw(),
-        views,
-        [info.width, info.height, info.layers],
-    );
-    device
-        .live()
-        .framebuffer_pass(framebuffer.raw(), info.render_pass);
-    // SAFETY: the chain of a safe struct, and the type its sType names.
-    let images: Option<&vk::FramebufferAttachmentsCreateInfo<'_>> = unsafe {
-        super::chained(
-            info.p_next,
-            vk::StructureType::FRAMEBUFFER_ATTACHMENTS_CREATE_INFO,
-        )
-    };
-    if let (true, Some(images)) = (
-        info.flags.contains(vk::FramebufferCreateFlags::IMAGELESS),
-        images,
-    ) {
-        // SAFETY: the safe setters store each array with its count.
-        let infos = unsafe {
-            crate::retention::raw_slice(
-                images.p_attachment_image_infos,
-                images.attachment_image_info_count,
-            )
-        }
-        .iter()
-        .map(|i| {
-            // SAFETY: as above.
-            let mut formats =
-                unsafe { crate::retention::raw_slice(i.p_view_formats, i.view_format_count) }
-                    .to_vec();
-            formats.sort_by_key(|f| f.as_raw());
-            crate::retention::AttachmentImage {
-                flags: i.flags,
-                usage: i.usage,
-                size: [i.width, i.height, i.layer_count],
-                formats,
-            }
-        })
-        .collect();
-        device.live().imageless_created(framebuffer.raw(), infos);
-    }
-    framebuffer
-}
-
 /// The image views a render pass instance renders to: its framebuffer's, or those
 /// an imageless framebuffer's begin info chains.
 pub(crate) fn pass_views(
@@ -481,7 +422,7 @@ pub(crate) fn pass_views(
 /// The layouts a render pass instance needs its attachments in (`vuid` names the
 /// rule) and leaves them in: each attachment's view, split by aspect where the
 /// stencil aspect has layouts of its own.
-fn attachments(
+pub(super) fn attachments(
     live: &crate::retention::Live,
     render_pass_begin: &RenderPassBeginInfo<'_>,
     vuid: &'static str,

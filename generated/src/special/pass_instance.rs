@@ -1,14 +1,259 @@
-//! The begin of a render pass instance: its render area against the framebuffer,
-//! its clear values against the attachments it clears, and each layout the render
-//! pass gives an attachment against the usage of the framebuffer's view.
+//! Render pass instances: beginning a render pass or dynamic rendering (attachments,
+//! views, clear values, device groups), moving to the next subpass, and ending.
 
 use super::refuse;
 use crate::recorder::{Recorder, Scope};
-use crate::structs::RenderPassBeginInfo;
-use crate::Result;
+use crate::structs::{RenderPassBeginInfo, *};
+use crate::{Error, Result};
 use ash::vk;
+use tuff_runtime::Vrc;
+
+/// The recorder enters subpass 0 of the render pass it begins.
+pub(crate) fn render_pass_begun<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    render_pass_begin: &RenderPassBeginInfo<'_>,
+    layout_vuid: &'static str,
+) {
+    super::image_layouts::render_pass_layouts(recorder, render_pass_begin, layout_vuid);
+    let live = recorder.device().live();
+    let images = super::image_layouts::pass_views(live, render_pass_begin)
+        .iter()
+        .map(|v| live.view(*v).map_or(vk::Image::null(), |r| r.image))
+        .collect();
+    recorder.pass_images = images;
+    let record = recorder
+        .device()
+        .live()
+        .render_pass(render_pass_begin.as_raw().render_pass);
+    recorder.instance = Some(crate::recorder::PassInstance {
+        subpass: 0,
+        render_pass: render_pass_begin.as_raw().render_pass,
+        subpasses: record.as_ref().map_or(0, |r| r.view_masks.len() as u32),
+        view_mask: record
+            .as_ref()
+            .and_then(|r| r.view_masks.first().copied())
+            .unwrap_or(0),
+        no_attachments: record
+            .as_ref()
+            .and_then(|r| r.no_attachments.first().copied())
+            .unwrap_or(false),
+        samples: None,
+        dynamic: false,
+        record,
+        rendering: None,
+        rendering_layouts: None,
+        rendering_samples: None,
+        rendering_images: None,
+    });
+}
+
+/// Refuses a render pass instance that suspends or resumes: which commands run
+/// between a suspended instance and the one that resumes it, across command buffers
+/// and batches, is not followed, so a submission could not check its rules.
+pub(crate) fn begin_rendering_checks<S: Scope>(
+    _recorder: &Recorder<'_, S>,
+    rendering_info: &RenderingInfo<'_>,
+) -> Result<()> {
+    let flags = vk::RenderingFlags::SUSPENDING | vk::RenderingFlags::RESUMING;
+    if rendering_info.flags.intersects(flags) {
+        return Err(Error::Misuse(
+            "the safe begin_rendering does not suspend or resume render pass instances (their submission rules are not followed); use begin_rendering_unchecked, and keep VUID-VkSubmitInfo-pCommandBuffers-06014 to 06016 and 06193",
+        ));
+    }
+    Ok(())
+}
+
+/// The recorder enters dynamic rendering (one subpass, the info's view mask).
+pub(crate) fn rendering_begun<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    rendering_info: &RenderingInfo<'_>,
+) {
+    let raw = rendering_info.as_raw();
+    // SAFETY: the safe setters stored the color attachments with their count and the
+    // depth and stencil ones as references that outlive the info.
+    let (color, depth, stencil) = unsafe {
+        (
+            crate::retention::raw_slice(raw.p_color_attachments, raw.color_attachment_count),
+            raw.p_depth_attachment.as_ref(),
+            raw.p_stencil_attachment.as_ref(),
+        )
+    };
+    let no_attachments = color
+        .iter()
+        .chain(depth)
+        .chain(stencil)
+        .all(|a| a.image_view == vk::ImageView::null());
+    let live = recorder.device().live();
+    let format = |a: Option<&vk::RenderingAttachmentInfo<'_>>| {
+        a.and_then(|a| live.view(a.image_view))
+            .map_or(vk::Format::UNDEFINED, |v| v.format)
+    };
+    let rendering = crate::retention::RenderingFormats {
+        view_mask: raw.view_mask,
+        colors: color.iter().map(|a| format(Some(a))).collect(),
+        depth: format(depth),
+        stencil: format(stencil),
+    };
+    let layout = |a: Option<&vk::RenderingAttachmentInfo<'_>>| {
+        a.filter(|a| a.image_view != vk::ImageView::null())
+            .map(|a| a.image_layout)
+    };
+    // The sample count of the first attachment with a view (they must agree).
+    let samples = color
+        .iter()
+        .chain(depth)
+        .chain(stencil)
+        .filter_map(|a| live.view(a.image_view))
+        .find_map(|v| live.image(v.image))
+        .map(|i| i.samples);
+    let images = color
+        .iter()
+        .chain(depth)
+        .chain(stencil)
+        .flat_map(|a| [a.image_view, a.resolve_image_view])
+        .filter_map(|v| live.view(v))
+        .map(|v| v.image)
+        .collect();
+    recorder.instance = Some(crate::recorder::PassInstance {
+        view_mask: raw.view_mask,
+        no_attachments,
+        dynamic: true,
+        rendering_images: Some(images),
+        rendering: Some(Vrc::new(rendering)),
+        rendering_layouts: Some((layout(depth), layout(stencil))),
+        rendering_samples: samples,
+        ..Default::default()
+    });
+}
+
+/// A next subpass exists.
+pub(crate) fn next_subpass_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    vuid: &'static str,
+) -> Result<()> {
+    match &recorder.instance {
+        Some(i) if i.subpasses != 0 && i.subpass + 1 >= i.subpasses => refuse(
+            vuid,
+            format!(
+                "The current subpass index must be less than the number of subpasses in the \
+                 render pass minus one (subpass {} of {})",
+                i.subpass, i.subpasses
+            ),
+        ),
+        _ => Ok(()),
+    }
+}
+
+/// The recorder moves to the next subpass.
+pub(crate) fn next_subpass_done<S: Scope>(recorder: &mut Recorder<'_, S>) {
+    let Some(i) = recorder.instance.take() else {
+        return;
+    };
+    let record = i.record.clone();
+    let next = i.subpass + 1;
+    let view_mask = record
+        .as_ref()
+        .and_then(|r| r.view_masks.get(next as usize).copied())
+        .unwrap_or(0);
+    let no_attachments = record
+        .and_then(|r| r.no_attachments.get(next as usize).copied())
+        .unwrap_or(false);
+    recorder.instance = Some(crate::recorder::PassInstance {
+        subpass: next,
+        view_mask,
+        no_attachments,
+        samples: None,
+        ..i
+    });
+}
+
+/// Ends, before the render pass instance's end is recorded, what a refused end
+/// would leave broken: the queries begun inside the instance, and the subpasses not
+/// yet visited. The recorder is poisoned by then, so the buffer is not submittable,
+/// but the driver only ever sees a valid end.
+fn repair_instance_end<S: Scope>(recorder: &mut Recorder<'_, S>, next_subpasses: bool) {
+    let raw = recorder.raw();
+    let fns = recorder.device().fns().fp_v1_0().clone();
+    let inside: Vec<crate::recorder::ActiveQuery> = recorder
+        .queries
+        .iter()
+        .filter(|q| q.subpass.is_some())
+        .copied()
+        .collect();
+    for q in &inside {
+        // SAFETY: the query was begun in this recording, inside this instance, and is
+        // still active.
+        unsafe { (fns.cmd_end_query)(raw, q.pool, q.query) };
+    }
+    recorder.queries.retain(|q| q.subpass.is_none());
+    if let Some(i) = recorder.instance.as_mut().filter(|_| next_subpasses) {
+        while i.subpasses != 0 && i.subpass + 1 < i.subpasses {
+            // SAFETY: a next subpass exists in the render pass begun in this recording;
+            // nothing is recorded in it.
+            unsafe { (fns.cmd_next_subpass)(raw, vk::SubpassContents::INLINE) };
+            i.subpass += 1;
+        }
+    }
+}
+
+/// A render pass instance ends in its last subpass, with every query begun inside
+/// it ended; where not, the recorder is refused and repaired
+/// ([`repair_instance_end`]).
+pub(crate) fn end_render_pass_checks<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    (last, queries): (&'static str, &'static str),
+) -> Result<()> {
+    let Some(i) = &recorder.instance else {
+        return Ok(());
+    };
+    let r = if i.subpasses != 0 && i.subpass + 1 != i.subpasses {
+        refuse(
+            last,
+            format!(
+                "The current subpass index must be equal to the number of subpasses in the \
+                 render pass minus one (subpass {} of {})",
+                i.subpass, i.subpasses
+            ),
+        )
+    } else if recorder.queries.iter().any(|q| q.subpass.is_some()) {
+        refuse(
+            queries,
+            "If `vkCmdBeginQuery`* was called within a subpass of the render pass, the \
+             corresponding `vkCmdEndQuery`* must have been called subsequently within the same \
+             subpass"
+                .into(),
+        )
+    } else {
+        Ok(())
+    };
+    if r.is_err() {
+        repair_instance_end(recorder, true);
+    }
+    r
+}
+
+/// Dynamic rendering ends with every query begun inside it ended (repaired as
+/// [`end_render_pass_checks`] repairs).
+pub(crate) fn end_rendering_checks<S: Scope>(recorder: &mut Recorder<'_, S>) -> Result<()> {
+    if recorder.queries.iter().any(|q| q.subpass.is_some()) {
+        repair_instance_end(recorder, false);
+        return refuse(
+            "VUID-vkCmdEndRendering-None-06999",
+            "If `vkCmdBeginQuery`* was called within the render pass, the corresponding \
+             `vkCmdEndQuery`* must have been called subsequently within the same subpass"
+                .into(),
+        );
+    }
+    Ok(())
+}
+
+/// The recorder leaves the render pass instance.
+pub(crate) fn instance_ended<S: Scope>(recorder: &mut Recorder<'_, S>) {
+    recorder.instance = None;
+}
 
 type L = vk::ImageLayout;
+
 type U = vk::ImageUsageFlags;
 
 /// The rules of one command that begins a render pass instance.
@@ -32,22 +277,28 @@ pub(crate) struct BeginRules {
     pub same_device: &'static str,
 }
 
-const COLOR: &[L] = &[L::COLOR_ATTACHMENT_OPTIMAL];
-const READ: &[L] = &[L::SHADER_READ_ONLY_OPTIMAL];
+pub(super) const COLOR: &[L] = &[L::COLOR_ATTACHMENT_OPTIMAL];
+
+pub(super) const READ: &[L] = &[L::SHADER_READ_ONLY_OPTIMAL];
+
 const SRC: &[L] = &[L::TRANSFER_SRC_OPTIMAL];
+
 const DST: &[L] = &[L::TRANSFER_DST_OPTIMAL];
+
 const DEPTH_STENCIL: &[L] = &[
     L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL,
     L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL,
     L::DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
     L::DEPTH_STENCIL_READ_ONLY_OPTIMAL,
 ];
+
 const SEPARATE: &[L] = &[
     L::DEPTH_ATTACHMENT_OPTIMAL,
     L::DEPTH_READ_ONLY_OPTIMAL,
     L::STENCIL_ATTACHMENT_OPTIMAL,
     L::STENCIL_READ_ONLY_OPTIMAL,
 ];
+
 const SAMPLED_OR_INPUT: U = U::from_raw(U::SAMPLED.as_raw() | U::INPUT_ATTACHMENT.as_raw());
 
 /// `vkCmdBeginRenderPass`.
@@ -140,7 +391,7 @@ pub(crate) const BEGIN2: BeginRules = BeginRules {
 
 /// The checks of a render pass instance's begin: the render area inside the
 /// framebuffer, enough clear values, the usage each attachment's layouts need,
-/// and (through [`super::layouts`]) the attachments' current layouts.
+/// and (through [`super::image_layouts`]) the attachments' current layouts.
 pub(crate) fn begin_render_pass_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
@@ -201,7 +452,11 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
         }
     }
     let Some(pass) = live.render_pass(raw.render_pass) else {
-        return super::render_pass_layout_checks(recorder, render_pass_begin, rules.initial);
+        return super::image_layouts::render_pass_layout_checks(
+            recorder,
+            render_pass_begin,
+            rules.initial,
+        );
     };
     if raw.clear_value_count < pass.clear_count {
         refuse(
@@ -235,7 +490,7 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
         }
     }
     check_attachment_views(live, render_pass_begin, &pass)?;
-    let views = super::layouts::pass_views(live, render_pass_begin);
+    let views = super::image_layouts::pass_views(live, render_pass_begin);
     check_aliasing(live, &views, &pass, rules.alias)?;
     for (n, (view, taken)) in views.iter().zip(&pass.taken).enumerate() {
         let Some(v) = live.view(*view) else {
@@ -265,7 +520,7 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
             }
         }
     }
-    super::render_pass_layout_checks(recorder, render_pass_begin, rules.initial)
+    super::image_layouts::render_pass_layout_checks(recorder, render_pass_begin, rules.initial)
 }
 
 /// The rules of a chained `VkDeviceGroupRenderPassBeginInfo`: its device mask

@@ -1,20 +1,240 @@
-//! Descriptor updates. Every write and copy stays inside its sets' bindings (drivers
-//! index their descriptor arrays with the binding, element and count), and every
-//! descriptor written names objects of this device that fit its type: usage, view
-//! shape and aspects, layout, offset alignment and range limits, and the chained
-//! inline data. The device's descriptor gate makes the host access to the sets
-//! externally synchronized; under it, a binding that a submission may still read is
-//! not rewritten, and an update leaves the command buffers that bound the set
-//! invalid (their submission is refused), so no recorded command reads a descriptor
-//! whose objects the update let go.
+//! Descriptor pools and sets: allocation, updates (each write and copy against its
+//! set's layout), resets, update templates and descriptor-buffer capture data.
 
+#[cfg(feature = "ext_descriptor_buffer")]
+use super::ask_properties2;
 use super::{chained, limits, refuse};
 use crate::handles::*;
 use crate::retention::{raw_slice, BindingRecord, Live, SetLayoutRecord};
 use crate::structs::*;
-use crate::{Error, Result};
+use crate::{Error, Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
+use tuff_runtime::Vrc;
+
+/// Refuses a pool whose sets are still alive.
+pub(crate) fn reset_descriptor_pool_checks(descriptor_pool: &DescriptorPool) -> Result<()> {
+    if descriptor_pool.has_sets() {
+        return Err(Error::Validation {
+            vuid: "VUID-vkResetDescriptorPool-descriptorPool-00313",
+            message: "sets allocated from the pool are still alive (held by the program, or by a command buffer or submission that uses them); drop them before the pool is reset".into(),
+        });
+    }
+    Ok(())
+}
+
+/// The pool's sets are gone: it forgets those whose free it deferred.
+pub(crate) fn reset_descriptor_pool_done(descriptor_pool: &DescriptorPool) {
+    descriptor_pool.forget_deferred();
+}
+
+/// The set remembers what the template wrote into it.
+///
+/// # Safety
+///
+/// `data` is laid out as the template's entries describe (the promise of the
+/// `unsafe` method that calls this).
+pub(crate) unsafe fn update_descriptor_set_with_template_done(
+    device: &Device,
+    descriptor_set: &DescriptorSet,
+    descriptor_update_template: &DescriptorUpdateTemplate,
+    data: *const core::ffi::c_void,
+) {
+    // Which bindings the template writes is not looked at: the update counts as one
+    // that invalidates the command buffers that bound the set.
+    device.live().set_invalidated(descriptor_set.raw());
+    // SAFETY: the caller's promise, passed on.
+    unsafe {
+        device.live().write_template(
+            descriptor_set.raw(),
+            descriptor_update_template.entries(),
+            data,
+        )
+    };
+}
+
+/// The pool remembers its flags (whether its sets may be freed one by one).
+pub(crate) fn descriptor_pool_created(
+    pool: DescriptorPool,
+    create_info: &DescriptorPoolCreateInfo<'_>,
+) -> DescriptorPool {
+    pool.with_flags(create_info.flags)
+}
+
+/// The template remembers its entries, which say how to read the data of an update.
+pub(crate) fn descriptor_update_template_created(
+    template: DescriptorUpdateTemplate,
+    create_info: &DescriptorUpdateTemplateCreateInfo<'_>,
+) -> DescriptorUpdateTemplate {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stored the entries with their count.
+    template.with_entries(unsafe {
+        crate::retention::raw_slice(
+            raw.p_descriptor_update_entries,
+            raw.descriptor_update_entry_count,
+        )
+    })
+}
+
+/// Each set holds a token of its pool, which counts the sets alive, and the device
+/// remembers its layout, which writes to it are checked against.
+pub(crate) fn descriptor_sets_allocated(
+    device: &Device,
+    sets: Vec<DescriptorSet>,
+    descriptor_pool: &DescriptorPool,
+    allocate_info: &DescriptorSetAllocateInfo<'_>,
+) -> Vec<DescriptorSet> {
+    let raw = allocate_info.as_raw();
+    // SAFETY: the safe setter stored the layouts with their count.
+    let layouts =
+        unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
+    let counts = variable_counts(allocate_info);
+    for (i, (set, layout)) in sets.iter().zip(layouts).enumerate() {
+        let mut record = device.live().set_layout(*layout).unwrap_or_default();
+        // A variable-count binding has, in this set, the count the allocation gave
+        // it (0 without one), which writes to the set are checked against.
+        if let Some(variable) = record.variable {
+            let count = counts.get(i).copied().unwrap_or(0);
+            let mut own = (*record).clone();
+            if let Some(b) = own.bindings.iter_mut().find(|b| b.binding == variable) {
+                b.count = count;
+            }
+            record = Vrc::new(own);
+        }
+        device.live().set_allocated(set.raw(), record);
+        device.live().set_pool_update_after_bind(
+            set.raw(),
+            descriptor_pool
+                .pool_flags()
+                .contains(vk::DescriptorPoolCreateFlags::UPDATE_AFTER_BIND),
+        );
+    }
+    sets.into_iter()
+        .map(|set| set.with_token(descriptor_pool.set_token()))
+        .collect()
+}
+
+/// The check of `vkAllocateDescriptorSets` on a chained
+/// `VkDescriptorSetVariableDescriptorCountAllocateInfo`: drivers read one count per
+/// set from it.
+/// The descriptor counts of an allocation's variable-count bindings, one per set, or
+/// none.
+fn variable_counts<'a>(allocate_info: &'a DescriptorSetAllocateInfo<'_>) -> &'a [u32] {
+    let raw = allocate_info.as_raw();
+    // SAFETY: `raw` is a safe struct's.
+    let variable: Option<&vk::DescriptorSetVariableDescriptorCountAllocateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::DESCRIPTOR_SET_VARIABLE_DESCRIPTOR_COUNT_ALLOCATE_INFO,
+        )
+    };
+    // SAFETY: the safe setter stored the counts with their count.
+    variable.map_or(&[], |v| unsafe {
+        crate::retention::raw_slice(v.p_descriptor_counts, v.descriptor_set_count)
+    })
+}
+
+/// Sets of update-after-bind layouts come from an update-after-bind pool, and a
+/// variable-count binding gets at most the count its layout was created with.
+pub(crate) fn allocate_descriptor_sets_layouts(
+    device: &Device,
+    descriptor_pool: &DescriptorPool,
+    allocate_info: &DescriptorSetAllocateInfo<'_>,
+) -> Result<()> {
+    let raw = allocate_info.as_raw();
+    // SAFETY: the safe setter stored the layouts with their count.
+    let layouts =
+        unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
+    let counts = variable_counts(allocate_info);
+    let pool_uab = descriptor_pool
+        .pool_flags()
+        .contains(vk::DescriptorPoolCreateFlags::UPDATE_AFTER_BIND);
+    for (i, layout) in layouts.iter().enumerate() {
+        let Some(record) = device.live().set_layout(*layout) else {
+            continue;
+        };
+        if record.update_after_bind && !pool_uab {
+            refuse(
+                "VUID-VkDescriptorSetAllocateInfo-pSetLayouts-03044",
+                format!(
+                    "`pSetLayouts[{i}]` was created with \
+                     `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT`, so \
+                     `descriptorPool` must have been created with \
+                     `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT`"
+                ),
+            )?;
+        }
+        let variable = record
+            .variable
+            .and_then(|v| record.bindings.iter().find(|b| b.binding == v));
+        if let (Some(b), Some(&count)) = (variable, counts.get(i)) {
+            if count > b.count {
+                refuse(
+                    "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-pSetLayouts-03046",
+                    format!(
+                        "`pDescriptorCounts[{i}]` ({count}) must be less than or equal to the \
+                         descriptor count of the variable-sized binding {} of its layout ({})",
+                        b.binding, b.count
+                    ),
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+pub(crate) fn allocate_descriptor_sets_checks(
+    allocate_info: &DescriptorSetAllocateInfo<'_>,
+) -> Result<()> {
+    let raw = allocate_info.as_raw();
+    // SAFETY: `raw` is a safe struct's.
+    let variable: Option<&vk::DescriptorSetVariableDescriptorCountAllocateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::DESCRIPTOR_SET_VARIABLE_DESCRIPTOR_COUNT_ALLOCATE_INFO,
+        )
+    };
+    match variable {
+        Some(v) if v.descriptor_set_count != 0 && v.descriptor_set_count != raw.descriptor_set_count => refuse(
+            "VUID-VkDescriptorSetVariableDescriptorCountAllocateInfo-descriptorSetCount-03045",
+            format!("the chained variable-count info's descriptorSetCount ({}) must be 0 or the allocation's ({})", v.descriptor_set_count, raw.descriptor_set_count),
+        ),
+        _ => Ok(()),
+    }
+}
+
+/// `pData` of a `vkGet*OpaqueCaptureDescriptorDataEXT` holds the capture data the
+/// device's descriptor-buffer properties size (`size` reads which), so the driver
+/// writes inside the slice.
+#[cfg(feature = "ext_descriptor_buffer")]
+pub(crate) fn capture_data_fits(
+    device: &Device,
+    data: &[u8],
+    size: fn(&vk::PhysicalDeviceDescriptorBufferPropertiesEXT) -> usize,
+    vuid: &'static str,
+) -> Result<()> {
+    if device.ext().ext_descriptor_buffer.is_none() {
+        // The call refuses the missing extension itself.
+        return Ok(());
+    }
+    let mut props = vk::PhysicalDeviceDescriptorBufferPropertiesEXT::default();
+    if !ask_properties2(device, &mut props) {
+        return Err(Error::Misuse(
+            "the capture data size is a Vulkan 1.1 property: make the instance with Vulkan 1.1 or later",
+        ));
+    }
+    let needed = size(&props);
+    if data.len() < needed {
+        refuse(
+            vuid,
+            format!(
+                "`data` must hold at least {needed} bytes (the device's capture data size), not {}",
+                data.len()
+            ),
+        )?;
+    }
+    Ok(())
+}
 
 /// The safe structs as ash's, which they are transparent over.
 fn raw_writes<'s>(writes: &'s [WriteDescriptorSet<'_>]) -> &'s [vk::WriteDescriptorSet<'s>] {
@@ -107,14 +327,17 @@ pub(crate) fn update_descriptor_sets_checks(
 
 /// The rules a binding lookup breaks: (no such binding, a binding of no descriptors).
 type BindingRules = (&'static str, &'static str);
+
 const WRITE_BINDING: BindingRules = (
     "VUID-VkWriteDescriptorSet-dstBinding-00315",
     "VUID-VkWriteDescriptorSet-dstBinding-00316",
 );
+
 const COPY_SRC_BINDING: BindingRules = (
     "VUID-VkCopyDescriptorSet-srcBinding-00345",
     "VUID-VkCopyDescriptorSet-srcBinding-00345",
 );
+
 const COPY_DST_BINDING: BindingRules = (
     "VUID-VkCopyDescriptorSet-dstBinding-00347",
     "VUID-VkCopyDescriptorSet-dstBinding-00347",
@@ -131,6 +354,7 @@ type SpanRules = (
     &'static str,
     &'static str,
 );
+
 const WRITE_SPAN: SpanRules = (
     "VUID-VkWriteDescriptorSet-dstArrayElement-00321",
     "VUID-VkWriteDescriptorSet-descriptorCount-00317",
@@ -138,6 +362,7 @@ const WRITE_SPAN: SpanRules = (
     "VUID-VkWriteDescriptorSet-descriptorType-02220",
     "VUID-VkWriteDescriptorSet-descriptorCount-00318",
 );
+
 const COPY_SRC_SPAN: SpanRules = (
     "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
     "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
@@ -145,6 +370,7 @@ const COPY_SRC_SPAN: SpanRules = (
     "VUID-VkCopyDescriptorSet-srcBinding-02225",
     "VUID-VkCopyDescriptorSet-srcArrayElement-00346",
 );
+
 const COPY_DST_SPAN: SpanRules = (
     "VUID-VkCopyDescriptorSet-dstArrayElement-00348",
     "VUID-VkCopyDescriptorSet-dstArrayElement-00348",
@@ -688,7 +914,7 @@ fn check_copy(
 
 /// The position of element `element` of the binding at `index` among every element
 /// of the set, in binding order: where consecutive binding updates run.
-fn flat(layout: &SetLayoutRecord, index: usize, element: u32) -> u64 {
+pub(super) fn flat(layout: &SetLayoutRecord, index: usize, element: u32) -> u64 {
     layout.bindings[..index]
         .iter()
         .map(|b| u64::from(b.count))
@@ -780,7 +1006,7 @@ fn written_sets(
 /// it writes is externally synchronized), and refuses to rewrite a binding of a set
 /// that a submission which may still be executing bound, unless the binding allows
 /// it: the descriptor may be read by that submission as it is rewritten.
-pub(crate) fn update_descriptor_sets_gate<'d>(
+pub(crate) fn update_descriptor_sets_hold<'d>(
     device: &'d Device,
     descriptor_writes: &[WriteDescriptorSet<'_>],
     descriptor_copies: &[CopyDescriptorSet<'_>],

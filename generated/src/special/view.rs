@@ -1,8 +1,23 @@
-//! Checks of an image view's creation against the image it views: its type, range
-//! and format against the image's recorded creation parameters, and its usage
-//! against the format features the physical device reports.
+//! Image and buffer views: each view's creation against the image or buffer it views.
 
-use super::*;
+use super::{chained, refuse};
+use crate::handles::*;
+use crate::structs::*;
+use crate::{Handle, Result};
+use ash::vk;
+
+/// The device remembers the buffer and format of a new buffer view.
+pub(crate) fn buffer_view_created(
+    device: &Device,
+    view: BufferView,
+    create_info: &BufferViewCreateInfo<'_>,
+) -> BufferView {
+    let info = create_info.as_raw();
+    device
+        .live()
+        .buffer_view_created(view.raw(), info.buffer, info.format);
+    view
+}
 
 /// The usage a view has: a chained `VkImageViewUsageCreateInfo`'s, or the image's
 /// (its stencil usage for a stencil-only view, and both for a view of depth and
@@ -248,7 +263,7 @@ fn view_format_checks(
     }
     if block_texel {
         let size = |f| crate::formats::block(f, color).map(|b| b.0);
-        let size_compatible = !super::creation::compressed(format)
+        let size_compatible = !super::image::compressed(format)
             && size(format).is_some()
             && size(format) == size(image.format);
         if !same_class(format, image.format) && !size_compatible {
@@ -260,7 +275,7 @@ fn view_format_checks(
                 ),
             )?;
         }
-        if !super::creation::compressed(format) && (r.level_count != 1 || r.layer_count != 1) {
+        if !super::image::compressed(format) && (r.level_count != 1 || r.layer_count != 1) {
             refuse(
                 "VUID-VkImageViewCreateInfo-image-07072",
                 format!("an uncompressed view of a block-texel-view-compatible image has one level and one layer, not {} and {}", r.level_count, r.layer_count),
@@ -520,287 +535,4 @@ pub(crate) fn image_view_created(
         );
     }
     view
-}
-
-/// The usage bit each role of an attachment needs, with its rules for a framebuffer
-/// with image views and for an imageless one.
-const ROLE_USAGE: [(u8, vk::ImageUsageFlags, &str, &str); 5] = [
-    (
-        crate::retention::USED_COLOR,
-        vk::ImageUsageFlags::COLOR_ATTACHMENT,
-        "VUID-VkFramebufferCreateInfo-pAttachments-00877",
-        "VUID-VkFramebufferCreateInfo-flags-03201",
-    ),
-    (
-        crate::retention::USED_RESOLVE,
-        vk::ImageUsageFlags::COLOR_ATTACHMENT,
-        "VUID-VkFramebufferCreateInfo-pAttachments-00877",
-        "VUID-VkFramebufferCreateInfo-flags-03201",
-    ),
-    (
-        crate::retention::USED_DEPTH,
-        vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
-        "VUID-VkFramebufferCreateInfo-pAttachments-02633",
-        "VUID-VkFramebufferCreateInfo-flags-03202",
-    ),
-    (
-        crate::retention::USED_INPUT,
-        vk::ImageUsageFlags::INPUT_ATTACHMENT,
-        "VUID-VkFramebufferCreateInfo-pAttachments-00879",
-        "VUID-VkFramebufferCreateInfo-flags-03204",
-    ),
-    (
-        crate::retention::USED_DEPTH_RESOLVE,
-        vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
-        "VUID-VkFramebufferCreateInfo-pAttachments-02634",
-        "VUID-VkFramebufferCreateInfo-flags-03202",
-    ),
-];
-
-/// The checks of `vkCreateFramebuffer` against its render pass's attachments and
-/// view masks and, for each attachment, the view's or the imageless info's
-/// recorded parameters.
-pub(crate) fn create_framebuffer_checks(
-    device: &Device,
-    create_info: &FramebufferCreateInfo<'_>,
-) -> Result<()> {
-    let info = create_info.as_raw();
-    let Some(pass) = device.live().render_pass(info.render_pass) else {
-        return Ok(());
-    };
-    if info.attachment_count as usize != pass.attachments.len() {
-        refuse(
-            "VUID-VkFramebufferCreateInfo-attachmentCount-00876",
-            format!(
-                "attachmentCount ({}) is not the render pass's {}",
-                info.attachment_count,
-                pass.attachments.len()
-            ),
-        )?;
-    }
-    let masks: u32 = pass.view_masks.iter().fold(0, |a, m| a | m);
-    let multiview = masks != 0;
-    if multiview && info.layers != 1 {
-        refuse(
-            "VUID-VkFramebufferCreateInfo-renderPass-02531",
-            format!(
-                "the render pass has view masks, so layers must be 1, not {}",
-                info.layers
-            ),
-        )?;
-    }
-    let views_needed = 32 - masks.leading_zeros();
-    let attachment_roles = crate::retention::USED_COLOR
-        | crate::retention::USED_RESOLVE
-        | crate::retention::USED_DEPTH
-        | crate::retention::USED_INPUT;
-    if info.flags.contains(vk::FramebufferCreateFlags::IMAGELESS) {
-        return imageless_checks(info, &pass.attachments, multiview, views_needed);
-    }
-    // SAFETY: the safe setter stores the views with their count.
-    let views = unsafe { crate::retention::raw_slice(info.p_attachments, info.attachment_count) };
-    for (i, raw) in views.iter().enumerate() {
-        let at = format!("pAttachments[{i}]");
-        let Some(view) = device.live().view(*raw) else {
-            return refuse(
-                "VUID-vkCreateFramebuffer-pCreateInfo-02777",
-                format!("{at} is not an image view of this device"),
-            );
-        };
-        let Some(&(format, samples, roles)) = pass.attachments.get(i) else {
-            continue;
-        };
-        let image = device.live().image(view.image);
-        for (role, bit, vuid, _) in ROLE_USAGE {
-            if roles & role != 0 && !view.usage.contains(bit) {
-                refuse(vuid, format!("{at} is used as an attachment that needs {bit:?}, which its usage ({:?}) lacks", view.usage))?;
-            }
-        }
-        if view.format != format {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-pAttachments-00880",
-                format!(
-                    "{at}'s format ({:?}) is not the render pass attachment's ({format:?})",
-                    view.format
-                ),
-            )?;
-        }
-        if let Some(image) = image {
-            if image.samples != samples {
-                refuse(
-                    "VUID-VkFramebufferCreateInfo-pAttachments-00881",
-                    format!(
-                        "{at}'s image has {:?}, the render pass attachment {samples:?}",
-                        image.samples
-                    ),
-                )?;
-            }
-        }
-        if view.levels != 1 {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-pAttachments-00883",
-                format!("{at} has {} mip levels, not one", view.levels),
-            )?;
-        }
-        if !view.identity {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-pAttachments-00884",
-                format!("{at} does not have the identity swizzle"),
-            )?;
-        }
-        if view.view_type == vk::ImageViewType::TYPE_3D {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-flags-04113",
-                format!("{at} is a 3D view"),
-            )?;
-        }
-        if let Some(image) = image {
-            let depth_stencil = crate::formats::aspects(view.format).is_some_and(|a| {
-                a.intersects(vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL)
-            });
-            if image.image_type == vk::ImageType::TYPE_3D && depth_stencil {
-                refuse(
-                    "VUID-VkFramebufferCreateInfo-pAttachments-00891",
-                    format!("{at} is a 2D view of a 3D image in a depth/stencil format"),
-                )?;
-            }
-            if roles & attachment_roles != 0 {
-                if image.extent.width < info.width {
-                    refuse(
-                        "VUID-VkFramebufferCreateInfo-flags-04533",
-                        format!(
-                            "{at}'s image is {} wide, less than the framebuffer's {}",
-                            image.extent.width, info.width
-                        ),
-                    )?;
-                }
-                if image.extent.height < info.height {
-                    refuse(
-                        "VUID-VkFramebufferCreateInfo-flags-04534",
-                        format!(
-                            "{at}'s image is {} high, less than the framebuffer's {}",
-                            image.extent.height, info.height
-                        ),
-                    )?;
-                }
-            }
-        }
-        if roles & attachment_roles != 0 {
-            if view.layers < info.layers {
-                refuse(
-                    "VUID-VkFramebufferCreateInfo-flags-04535",
-                    format!(
-                        "{at} has {} layers, fewer than the framebuffer's {}",
-                        view.layers, info.layers
-                    ),
-                )?;
-            }
-            if multiview && view.layers < views_needed {
-                refuse(
-                    "VUID-VkFramebufferCreateInfo-renderPass-04536",
-                    format!(
-                        "{at} has {} layers, but the view masks name view {}",
-                        view.layers,
-                        views_needed - 1
-                    ),
-                )?;
-            }
-        }
-    }
-    Ok(())
-}
-
-/// An imageless framebuffer's chained attachment infos against its render pass.
-fn imageless_checks(
-    info: &vk::FramebufferCreateInfo<'_>,
-    attachments: &[(vk::Format, vk::SampleCountFlags, u8)],
-    multiview: bool,
-    views_needed: u32,
-) -> Result<()> {
-    // SAFETY: the `pNext` of a safe struct, and the type the sType names.
-    let chained: Option<&vk::FramebufferAttachmentsCreateInfo<'_>> = unsafe {
-        chained(
-            info.p_next,
-            vk::StructureType::FRAMEBUFFER_ATTACHMENTS_CREATE_INFO,
-        )
-    };
-    let Some(chained) = chained else {
-        return refuse(
-            "VUID-VkFramebufferCreateInfo-flags-03190",
-            "an imageless framebuffer chains no VkFramebufferAttachmentsCreateInfo".into(),
-        );
-    };
-    let count = chained.attachment_image_info_count;
-    if count != 0 && count != info.attachment_count {
-        refuse(
-            "VUID-VkFramebufferCreateInfo-flags-03191",
-            format!(
-                "attachmentImageInfoCount ({count}) is neither 0 nor attachmentCount ({})",
-                info.attachment_count
-            ),
-        )?;
-    }
-    // SAFETY: the safe setter stores the infos with their count.
-    let images = unsafe { crate::retention::raw_slice(chained.p_attachment_image_infos, count) };
-    let roles_any = crate::retention::USED_COLOR
-        | crate::retention::USED_RESOLVE
-        | crate::retention::USED_DEPTH
-        | crate::retention::USED_INPUT;
-    for (i, (a, &(format, _, roles))) in images.iter().zip(attachments).enumerate() {
-        let at = format!("pAttachmentImageInfos[{i}]");
-        for (role, bit, _, vuid) in ROLE_USAGE {
-            if roles & role != 0 && !a.usage.contains(bit) {
-                refuse(vuid, format!("{at} is used as an attachment that needs {bit:?}, which its usage ({:?}) lacks", a.usage))?;
-            }
-        }
-        // SAFETY: the safe setter stores the formats with their count.
-        let formats = unsafe { crate::retention::raw_slice(a.p_view_formats, a.view_format_count) };
-        if !formats.contains(&format) {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-flags-03205",
-                format!("{at}'s view formats ({formats:?}) do not include the render pass attachment's {format:?}"),
-            )?;
-        }
-        if roles & roles_any == 0 {
-            continue;
-        }
-        if a.width < info.width {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-flags-04541",
-                format!(
-                    "{at} is {} wide, less than the framebuffer's {}",
-                    a.width, info.width
-                ),
-            )?;
-        }
-        if a.height < info.height {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-flags-04542",
-                format!(
-                    "{at} is {} high, less than the framebuffer's {}",
-                    a.height, info.height
-                ),
-            )?;
-        }
-        if multiview && a.layer_count < views_needed {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-renderPass-03198",
-                format!(
-                    "{at} has {} layers, but the view masks name view {}",
-                    a.layer_count,
-                    views_needed - 1
-                ),
-            )?;
-        }
-        if !multiview && a.layer_count < info.layers {
-            refuse(
-                "VUID-VkFramebufferCreateInfo-renderPass-04546",
-                format!(
-                    "{at} has {} layers, fewer than the framebuffer's {}",
-                    a.layer_count, info.layers
-                ),
-            )?;
-        }
-    }
-    Ok(())
 }

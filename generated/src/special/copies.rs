@@ -1,12 +1,390 @@
-//! Copies between buffers and images: each region against the image's type,
-//! format, texel blocks and subresources, the buffer's range and the queue
-//! family's capabilities, one table of rules per command.
+//! Transfer commands: buffer and image copies, fills and updates, each region against
+//! the resources it names, their usage, formats and protection.
 
-use super::{refuse, PoolFamily};
-use crate::handles::Device;
+use super::buffer::{buffer_record, check_buffer_use, used_buffer};
+use super::{pool_family, refuse, PoolFamily};
+use crate::handles::{Device, *};
+use crate::recorder::{Recorder, Scope};
 use crate::retention::ImageRecord;
-use crate::Result;
+use crate::structs::*;
+use crate::{Handle, Result};
 use ash::vk;
+use smallvec::SmallVec;
+
+/// The checks of `vkCmdFillBuffer` that keep the fill inside the buffer.
+pub(crate) fn cmd_fill_buffer_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    dst_buffer: &Buffer,
+    dst_offset: vk::DeviceSize,
+    size: vk::DeviceSize,
+) -> Result<()> {
+    let dst = used_buffer(
+        recorder,
+        dst_buffer,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        (
+            "VUID-vkCmdFillBuffer-dstBuffer-00029",
+            "VUID-vkCmdFillBuffer-dstBuffer-00031",
+        ),
+        &"dstBuffer",
+    )?;
+    if dst_offset >= dst.size {
+        refuse("VUID-vkCmdFillBuffer-dstOffset-00024", format!("dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+    }
+    if dst_offset % 4 != 0 {
+        refuse(
+            "VUID-vkCmdFillBuffer-dstOffset-00025",
+            format!("dstOffset must be a multiple of 4 (dstOffset = {dst_offset})"),
+        )?;
+    }
+    if size != vk::WHOLE_SIZE {
+        if size == 0 {
+            refuse(
+                "VUID-vkCmdFillBuffer-size-00026",
+                "size must be greater than 0 (size = 0)".into(),
+            )?;
+        }
+        if size > dst.size - dst_offset {
+            refuse("VUID-vkCmdFillBuffer-size-00027", format!("size must be at most the size of dstBuffer minus dstOffset (size = {size}, dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+        }
+        if size % 4 != 0 {
+            refuse(
+                "VUID-vkCmdFillBuffer-size-00028",
+                format!("size must be a multiple of 4 (size = {size})"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdUpdateBuffer` that keep the update inside the buffer.
+pub(crate) fn cmd_update_buffer_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    dst_buffer: &Buffer,
+    dst_offset: vk::DeviceSize,
+    data: &[u8],
+) -> Result<()> {
+    let dst = used_buffer(
+        recorder,
+        dst_buffer,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        (
+            "VUID-vkCmdUpdateBuffer-dstBuffer-00034",
+            "VUID-vkCmdUpdateBuffer-dstBuffer-00035",
+        ),
+        &"dstBuffer",
+    )?;
+    let len = data.len() as u64;
+    if dst_offset >= dst.size {
+        refuse("VUID-vkCmdUpdateBuffer-dstOffset-00032", format!("dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+    }
+    if len > dst.size - dst_offset {
+        refuse("VUID-vkCmdUpdateBuffer-dataSize-00033", format!("dataSize must be at most the size of dstBuffer minus dstOffset (dataSize = {len}, dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
+    }
+    if dst_offset % 4 != 0 {
+        refuse(
+            "VUID-vkCmdUpdateBuffer-dstOffset-00036",
+            format!("dstOffset must be a multiple of 4 (dstOffset = {dst_offset})"),
+        )?;
+    }
+    if len > 65536 {
+        refuse(
+            "VUID-vkCmdUpdateBuffer-dataSize-00037",
+            format!("dataSize must be at most 65536 (dataSize = {len})"),
+        )?;
+    }
+    if len % 4 != 0 {
+        refuse(
+            "VUID-vkCmdUpdateBuffer-dataSize-00038",
+            format!("dataSize must be a multiple of 4 (dataSize = {len})"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkCmdCopyBuffer` that keep the copy inside both buffers: a copy out
+/// of range reads or writes memory the buffers do not own.
+pub(crate) fn cmd_copy_buffer_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    src_buffer: &Buffer,
+    dst_buffer: &Buffer,
+    regions: &[vk::BufferCopy],
+) -> Result<()> {
+    let device = recorder.device();
+    let src = buffer_record(device, src_buffer)?;
+    let dst = buffer_record(device, dst_buffer)?;
+    check_buffer_use(
+        &src,
+        vk::BufferUsageFlags::TRANSFER_SRC,
+        (
+            "VUID-vkCmdCopyBuffer-srcBuffer-00118",
+            "VUID-vkCmdCopyBuffer-srcBuffer-00119",
+        ),
+        &"srcBuffer",
+    )?;
+    check_buffer_use(
+        &dst,
+        vk::BufferUsageFlags::TRANSFER_DST,
+        (
+            "VUID-vkCmdCopyBuffer-dstBuffer-00120",
+            "VUID-vkCmdCopyBuffer-dstBuffer-00121",
+        ),
+        &"dstBuffer",
+    )?;
+    for (i, r) in regions.iter().enumerate() {
+        if r.size == 0 {
+            refuse(
+                "VUID-VkBufferCopy-size-01988",
+                format!("pRegions[{i}].size must be greater than 0 (size = 0)"),
+            )?;
+        }
+        if r.src_offset >= src.size {
+            refuse(
+                "VUID-vkCmdCopyBuffer-srcOffset-00113",
+                format!("pRegions[{i}].srcOffset must be less than the size of srcBuffer (srcOffset = {}, size of srcBuffer = {})", r.src_offset, src.size),
+            )?;
+        }
+        if r.dst_offset >= dst.size {
+            refuse(
+                "VUID-vkCmdCopyBuffer-dstOffset-00114",
+                format!("pRegions[{i}].dstOffset must be less than the size of dstBuffer (dstOffset = {}, size of dstBuffer = {})", r.dst_offset, dst.size),
+            )?;
+        }
+        if r.size > src.size - r.src_offset {
+            refuse(
+                "VUID-vkCmdCopyBuffer-size-00115",
+                format!("pRegions[{i}].size must be at most the size of srcBuffer minus srcOffset (size = {}, srcOffset = {}, size of srcBuffer = {})", r.size, r.src_offset, src.size),
+            )?;
+        }
+        if r.size > dst.size - r.dst_offset {
+            refuse(
+                "VUID-vkCmdCopyBuffer-size-00116",
+                format!("pRegions[{i}].size must be at most the size of dstBuffer minus dstOffset (size = {}, dstOffset = {}, size of dstBuffer = {})", r.size, r.dst_offset, dst.size),
+            )?;
+        }
+    }
+    if src_buffer.raw() == dst_buffer.raw() {
+        // Every source range against every destination range, the region's own
+        // included; the offsets and sizes are in range, so the ends do not overflow.
+        for (i, a) in regions.iter().enumerate() {
+            for (j, b) in regions.iter().enumerate() {
+                let (a0, a1) = (a.src_offset, a.src_offset + a.size);
+                let (b0, b1) = (b.dst_offset, b.dst_offset + b.size);
+                if a0 < b1 && b0 < a1 {
+                    refuse(
+                        "VUID-vkCmdCopyBuffer-pRegions-00117",
+                        format!("the source of pRegions[{i}] ({a0}..{a1}) overlaps the destination of pRegions[{j}] ({b0}..{b1}) in the same buffer"),
+                    )?;
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The byte just past the last one that a buffer-image copy region reaches in its
+/// buffer, by Buffer and Image Addressing: rows of `bufferRowLength` (or the
+/// extent's width) texels, `bufferImageHeight` (or its height) rows a slice, one
+/// slice per depth and per layer, in texel blocks of the aspect's size. `None` when
+/// the format or aspect is not one the registry describes (an aspect mask of more
+/// than one aspect), which another rule refuses.
+#[allow(clippy::too_many_arguments)]
+fn buffer_image_end(
+    format: vk::Format,
+    aspect: vk::ImageAspectFlags,
+    offset: vk::DeviceSize,
+    row_length: u32,
+    image_height: u32,
+    extent: vk::Extent3D,
+    layers: u32,
+) -> Option<u64> {
+    let (bytes, [bw, bh, bd]) = crate::formats::block(format, aspect)?;
+    let blocks = |texels: u32, per: u32| u64::from(texels).div_ceil(u64::from(per.max(1)));
+    let row = blocks(
+        if row_length == 0 {
+            extent.width
+        } else {
+            row_length
+        },
+        bw,
+    );
+    let height = blocks(
+        if image_height == 0 {
+            extent.height
+        } else {
+            image_height
+        },
+        bh,
+    );
+    let (w, h) = (blocks(extent.width, bw), blocks(extent.height, bh));
+    let slices = blocks(extent.depth, bd).saturating_mul(u64::from(layers));
+    if w == 0 || h == 0 || slices == 0 {
+        return Some(offset);
+    }
+    // A sum past u64 is past any buffer.
+    let last_row = (slices - 1)
+        .checked_mul(height)
+        .and_then(|r| r.checked_add(h - 1))?;
+    let texels = last_row.checked_mul(row).and_then(|t| t.checked_add(w));
+    Some(
+        texels
+            .and_then(|t| t.checked_mul(u64::from(bytes)))
+            .and_then(|b| b.checked_add(offset))
+            .unwrap_or(u64::MAX),
+    )
+}
+
+/// Refuses a buffer-image copy whose regions reach past the buffer's end (the
+/// buffer's size and the image's format as the device recorded them).
+#[allow(clippy::too_many_arguments)]
+fn check_buffer_image_regions(
+    device: &Device,
+    buffer: vk::Buffer,
+    image: vk::Image,
+    regions: impl Iterator<Item = (u64, u32, u32, vk::ImageSubresourceLayers, vk::Extent3D)>,
+    vuid: &'static str,
+) -> Result<()> {
+    let (Some(b), Some(i)) = (device.live().buffer(buffer), device.live().image(image)) else {
+        return Ok(());
+    };
+    for (n, (offset, row_length, image_height, subresource, extent)) in regions.enumerate() {
+        let end = buffer_image_end(
+            i.format,
+            subresource.aspect_mask,
+            offset,
+            row_length,
+            image_height,
+            extent,
+            subresource.layer_count,
+        );
+        if let Some(end) = end.filter(|e| *e > b.size) {
+            refuse(
+                vuid,
+                format!(
+                    "pRegions[{n}] reaches byte {end} of a buffer of {} bytes (bufferOffset = {offset}, bufferRowLength = {row_length}, bufferImageHeight = {image_height}, imageExtent = {}x{}x{}, layerCount = {})",
+                    b.size, extent.width, extent.height, extent.depth, subresource.layer_count
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of a copy between `buffer` and `image` that memory safety needs:
+/// each region against the image (its type, format, texel blocks, subresources,
+/// the queue family's granularity), protected memory, the overlap of the two
+/// bindings, and the buffer's end (`range_vuid`).
+fn check_buffer_image_copy<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    (buffer, image): (vk::Buffer, vk::Image),
+    regions: &[Region],
+    (rules, range_vuid, to_image): (&Rules, &'static str, bool),
+) -> Result<()> {
+    let device = recorder.device();
+    let family = pool_family(recorder);
+    if let Some(record) = device.live().image(image) {
+        check_regions(device, &record, family, regions.iter().copied(), rules)?;
+    }
+    check_protection(device, family, (buffer, image), to_image, rules)?;
+    check_overlap(device, (buffer, image), regions, rules)?;
+    check_buffer_image_regions(
+        device,
+        buffer,
+        image,
+        regions.iter().map(|r| {
+            (
+                r.offset,
+                r.row_length,
+                r.image_height,
+                r.subresource,
+                r.extent,
+            )
+        }),
+        range_vuid,
+    )
+}
+
+/// Refuses a copy from a buffer into an image that breaks a rule of its regions.
+pub(crate) fn cmd_copy_buffer_to_image_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    src_buffer: &Buffer,
+    dst_image: &Image,
+    regions: &[vk::BufferImageCopy],
+) -> Result<()> {
+    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (src_buffer.raw(), dst_image.raw()),
+        &regions,
+        (
+            &TO_IMAGE,
+            "VUID-vkCmdCopyBufferToImage-pRegions-00171",
+            true,
+        ),
+    )
+}
+
+/// Refuses a copy from an image into a buffer that breaks a rule of its regions.
+pub(crate) fn cmd_copy_image_to_buffer_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    src_image: &Image,
+    dst_buffer: &Buffer,
+    regions: &[vk::BufferImageCopy],
+) -> Result<()> {
+    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (dst_buffer.raw(), src_image.raw()),
+        &regions,
+        (
+            &TO_BUFFER,
+            "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
+            false,
+        ),
+    )
+}
+
+/// As [`cmd_copy_buffer_to_image_checks`], for `vkCmdCopyBufferToImage2`.
+pub(crate) fn cmd_copy_buffer_to_image2_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    info: &CopyBufferToImageInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
+    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (raw.src_buffer, raw.dst_image),
+        &regions,
+        (
+            &TO_IMAGE2,
+            "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
+            true,
+        ),
+    )
+}
+
+/// As [`cmd_copy_image_to_buffer_checks`], for `vkCmdCopyImageToBuffer2`.
+pub(crate) fn cmd_copy_image_to_buffer2_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    info: &CopyImageToBufferInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
+    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
+    check_buffer_image_copy(
+        recorder,
+        (raw.dst_buffer, raw.src_image),
+        &regions,
+        (
+            &TO_BUFFER2,
+            "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
+            false,
+        ),
+    )
+}
 
 /// The rules of one buffer-image copy command, by what they check; `""` where the
 /// command has no such rule.
@@ -643,7 +1021,7 @@ pub(crate) fn check_overlap(
         return Ok(());
     }
     for (n, r) in regions.iter().enumerate() {
-        let Some(end) = super::buffer_image_end(
+        let Some(end) = buffer_image_end(
             record.format,
             r.subresource.aspect_mask,
             r.offset,

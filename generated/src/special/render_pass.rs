@@ -1,10 +1,240 @@
-//! The checks of render pass creation over what each subpass references: the
-//! attachments' formats, sample counts and layouts, preserved attachments, and the
-//! view masks. Both create infos are first read into one shape ([`Pass`]), so each
-//! rule is written once with its two VUIDs (`VkSubpassDescription` and
-//! `VkSubpassDescription2`, or the two create infos).
+//! Render passes: `vkCreateRenderPass` and `vkCreateRenderPass2` read into one `Pass`,
+//! whose rules are each written once.
 
-use super::*;
+use super::subpass_dependencies::subpass_dependency_checks;
+use super::{chained, refuse};
+use crate::handles::*;
+use crate::retention::RenderPassRecord;
+use crate::structs::*;
+use crate::{Handle, Result};
+use ash::vk;
+
+/// The checks of `vkCreateRenderPass` that keep the driver inside the render pass's
+/// arrays: attachment indices, dependency subpasses, and the chained multiview and
+/// input-attachment-aspect infos.
+pub(crate) fn create_render_pass_checks(create_info: &RenderPassCreateInfo<'_>) -> Result<()> {
+    let raw = create_info.as_raw();
+    let (attachments, subpass_count) = (raw.attachment_count, raw.subpass_count);
+    // SAFETY: the safe setters store each array with its count.
+    let (subpasses, dependencies) = unsafe {
+        (
+            crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count),
+            crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count),
+        )
+    };
+    let used = |a: u32| a != vk::ATTACHMENT_UNUSED && a >= attachments;
+    for (i, s) in subpasses.iter().enumerate() {
+        // SAFETY: the safe setters store each array with its count (and the resolve
+        // array with the color attachments' count).
+        let refs = unsafe {
+            let mut refs: Vec<u32> = Vec::new();
+            refs.extend(
+                crate::retention::raw_slice(s.p_input_attachments, s.input_attachment_count)
+                    .iter()
+                    .map(|r| r.attachment),
+            );
+            refs.extend(
+                crate::retention::raw_slice(s.p_color_attachments, s.color_attachment_count)
+                    .iter()
+                    .map(|r| r.attachment),
+            );
+            if !s.p_resolve_attachments.is_null() {
+                refs.extend(
+                    crate::retention::raw_slice(s.p_resolve_attachments, s.color_attachment_count)
+                        .iter()
+                        .map(|r| r.attachment),
+                );
+            }
+            refs.extend(s.p_depth_stencil_attachment.as_ref().map(|r| r.attachment));
+            refs.extend(crate::retention::raw_slice(
+                s.p_preserve_attachments,
+                s.preserve_attachment_count,
+            ));
+            refs
+        };
+        if let Some(a) = refs.into_iter().find(|a| used(*a)) {
+            refuse(
+                "VUID-VkRenderPassCreateInfo-attachment-00834",
+                format!(
+                    "pSubpasses[{i}] names attachment {a}, but the render pass has {attachments}"
+                ),
+            )?;
+        }
+    }
+    for (i, d) in dependencies.iter().enumerate() {
+        for (vuid, s, what) in [
+            (
+                "VUID-VkRenderPassCreateInfo-pDependencies-06866",
+                d.src_subpass,
+                "srcSubpass",
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo-pDependencies-06867",
+                d.dst_subpass,
+                "dstSubpass",
+            ),
+        ] {
+            if s != vk::SUBPASS_EXTERNAL && s >= subpass_count {
+                refuse(vuid, format!("pDependencies[{i}].{what} ({s}) must be less than subpassCount ({subpass_count})"))?;
+            }
+        }
+    }
+    // SAFETY: `raw` is a safe struct's.
+    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
+        )
+    };
+    if let Some(m) = multiview.filter(|m| m.subpass_count != 0 && m.subpass_count != subpass_count)
+    {
+        refuse(
+            "VUID-VkRenderPassCreateInfo-pNext-01928",
+            format!("the chained VkRenderPassMultiviewCreateInfo's subpassCount ({}) must be 0 or the render pass's ({subpass_count})", m.subpass_count),
+        )?;
+    }
+    // SAFETY: as above.
+    let aspects: Option<&vk::RenderPassInputAttachmentAspectCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_INPUT_ATTACHMENT_ASPECT_CREATE_INFO,
+        )
+    };
+    if let Some(a) = aspects {
+        // SAFETY: the safe setter stores the references with their count.
+        let refs =
+            unsafe { crate::retention::raw_slice(a.p_aspect_references, a.aspect_reference_count) };
+        for (i, r) in refs.iter().enumerate() {
+            let Some(s) = subpasses.get(r.subpass as usize) else {
+                return refuse(
+                    "VUID-VkRenderPassCreateInfo-pNext-01926",
+                    format!("pAspectReferences[{i}].subpass ({}) must be less than subpassCount ({subpass_count})", r.subpass),
+                );
+            };
+            if r.input_attachment_index >= s.input_attachment_count {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo-pNext-01927",
+                    format!("pAspectReferences[{i}].inputAttachmentIndex ({}) must be less than subpass {}'s inputAttachmentCount ({})", r.input_attachment_index, r.subpass, s.input_attachment_count),
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Whether a subpass description (of either version) uses no attachment: every
+/// input, color, resolve and depth/stencil reference it has is unused.
+macro_rules! no_attachment {
+    ($d:expr) => {{
+        let d = $d;
+        // SAFETY: the safe setters stored every array with its count; resolve
+        // attachments, if any, are one per color attachment, and the depth/stencil
+        // reference outlives the create info.
+        let (input, color, resolve, depth) = unsafe {
+            (
+                crate::retention::raw_slice(d.p_input_attachments, d.input_attachment_count),
+                crate::retention::raw_slice(d.p_color_attachments, d.color_attachment_count),
+                crate::retention::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
+                d.p_depth_stencil_attachment.as_ref(),
+            )
+        };
+        input
+            .iter()
+            .chain(color)
+            .chain(resolve)
+            .chain(depth)
+            .all(|r| r.attachment == vk::ATTACHMENT_UNUSED)
+    }};
+}
+
+/// The device remembers a render pass's subpasses and their view masks (from a
+/// chained `VkRenderPassMultiviewCreateInfo`).
+pub(crate) fn render_pass_created(
+    device: &Device,
+    render_pass: RenderPass,
+    create_info: &RenderPassCreateInfo<'_>,
+) -> RenderPass {
+    let raw = create_info.as_raw();
+    // SAFETY: `raw` is a safe struct's.
+    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
+        chained(
+            raw.p_next,
+            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
+        )
+    };
+    // SAFETY: the safe setter stored the masks with their count.
+    let masks = multiview.map_or(&[][..], |m| unsafe {
+        crate::retention::raw_slice(m.p_view_masks, m.subpass_count)
+    });
+    let view_masks = (0..raw.subpass_count as usize)
+        .map(|i| masks.get(i).copied().unwrap_or(0))
+        .collect();
+    // SAFETY: the safe setter stored the subpasses with their count.
+    let no_attachments = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) }
+        .iter()
+        .map(|d| no_attachment!(d))
+        .collect();
+    let (color_formats, depth_formats) = subpass_formats(create_info);
+    device.live().render_pass_created(
+        render_pass.raw(),
+        RenderPassRecord {
+            attachments: attachment_uses(create_info),
+            view_masks,
+            no_attachments,
+            color_formats,
+            depth_formats,
+            depth_layouts: subpass_depth_layouts(create_info),
+            subpass_samples: subpass_samples(create_info),
+            layouts: attachment_layouts(create_info),
+            used: used_attachments(create_info),
+            inputs: subpass_inputs(create_info),
+            self_dependencies: super::subpass_dependencies::self_dependencies(create_info),
+            clear_count: clears(create_info),
+            taken: layouts_taken(create_info),
+            stencil_taken: Vec::new(),
+            may_alias: may_alias(create_info),
+            dependency_stages: super::subpass_dependencies::dependency_stages(create_info),
+        },
+    );
+    render_pass
+}
+
+/// As [`render_pass_created`], for `vkCreateRenderPass2`, whose subpasses carry
+/// their view masks.
+pub(crate) fn render_pass2_created(
+    device: &Device,
+    render_pass: RenderPass,
+    create_info: &RenderPassCreateInfo2<'_>,
+) -> RenderPass {
+    let raw = create_info.as_raw();
+    // SAFETY: the safe setter stored the subpasses with their count.
+    let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
+    let view_masks = subpasses.iter().map(|s| s.view_mask).collect();
+    let no_attachments = subpasses.iter().map(|d| no_attachment!(d)).collect();
+    let (color_formats, depth_formats) = subpass_formats2(create_info);
+    device.live().render_pass_created(
+        render_pass.raw(),
+        RenderPassRecord {
+            attachments: attachment_uses2(create_info),
+            view_masks,
+            no_attachments,
+            color_formats,
+            depth_formats,
+            depth_layouts: subpass_depth_layouts2(create_info),
+            subpass_samples: subpass_samples2(create_info),
+            layouts: attachment_layouts2(create_info),
+            used: used_attachments2(create_info),
+            inputs: subpass_inputs2(create_info),
+            self_dependencies: super::subpass_dependencies::self_dependencies2(create_info),
+            clear_count: clears2(create_info),
+            taken: layouts_taken2(create_info),
+            stencil_taken: stencil_layouts2(create_info),
+            may_alias: may_alias2(create_info),
+            dependency_stages: super::subpass_dependencies::dependency_stages2(create_info),
+        },
+    );
+    render_pass
+}
 
 /// One attachment reference: the attachment, its layout, and (for
 /// `VkAttachmentReference2`) the aspects an input attachment reads.
@@ -65,54 +295,67 @@ const PRESERVE_UNUSED: Rule = (
     "VUID-VkSubpassDescription-attachment-00853",
     "VUID-VkSubpassDescription2-attachment-03073",
 );
+
 const PRESERVE_USED: Rule = (
     "VUID-VkSubpassDescription-pPreserveAttachments-00854",
     "VUID-VkSubpassDescription2-pPreserveAttachments-03074",
 );
+
 const RESOLVE_COLOR_UNUSED: Rule = (
     "VUID-VkSubpassDescription-pResolveAttachments-00847",
     "VUID-VkSubpassDescription2-pResolveAttachments-03065",
 );
+
 const RESOLVE_COLOR_SINGLE: Rule = (
     "VUID-VkSubpassDescription-pResolveAttachments-00848",
     "VUID-VkSubpassDescription2-pResolveAttachments-03066",
 );
+
 const RESOLVE_MULTI: Rule = (
     "VUID-VkSubpassDescription-pResolveAttachments-00849",
     "VUID-VkSubpassDescription2-pResolveAttachments-03067",
 );
+
 const RESOLVE_FORMAT: Rule = (
     "VUID-VkSubpassDescription-pResolveAttachments-00850",
     "VUID-VkSubpassDescription2-pResolveAttachments-03068",
 );
+
 const INPUT_FEATURES: Rule = (
     "VUID-VkSubpassDescription-pInputAttachments-02647",
     "VUID-VkSubpassDescription2-pInputAttachments-02897",
 );
+
 const COLOR_FEATURES: Rule = (
     "VUID-VkSubpassDescription-pColorAttachments-02648",
     "VUID-VkSubpassDescription2-pColorAttachments-02898",
 );
+
 const RESOLVE_FEATURES: Rule = (
     "VUID-VkSubpassDescription-pResolveAttachments-02649",
     "VUID-VkSubpassDescription2-pResolveAttachments-02899",
 );
+
 const DEPTH_FEATURES: Rule = (
     "VUID-VkSubpassDescription-pDepthStencilAttachment-02650",
     "VUID-VkSubpassDescription2-pDepthStencilAttachment-02900",
 );
+
 const COLOR_SAMPLES: Rule = (
     "VUID-VkSubpassDescription-pColorAttachments-06868",
     "VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872",
 );
+
 const DEPTH_SAMPLES: Rule = (
     "VUID-VkSubpassDescription-pDepthStencilAttachment-01418",
     "VUID-VkSubpassDescription2-multisampledRenderToSingleSampled-06872",
 );
+
 const SAME_LAYOUT: Rule = (
     "VUID-VkSubpassDescription-layout-02519",
     "VUID-VkSubpassDescription2-layout-02528",
 );
+
 const DEPTH_IS_COLOR: Rule = (
     "VUID-VkSubpassDescription-pDepthStencilAttachment-04438",
     "VUID-VkSubpassDescription2-pDepthStencilAttachment-04440",
@@ -635,7 +878,7 @@ pub(super) fn multiview_view_count(device: &Device) -> Option<u32> {
 /// The device's `protectedNoFault` (false where the instance cannot ask for it).
 pub(crate) fn protected_no_fault(device: &Device) -> bool {
     let mut protected = vk::PhysicalDeviceProtectedMemoryProperties::default();
-    crate::hooks::ask_properties2(device, &mut protected)
+    crate::special::ask_properties2(device, &mut protected)
         && protected.protected_no_fault == vk::TRUE
 }
 
@@ -644,7 +887,7 @@ pub(super) fn multiview_properties(
     device: &Device,
 ) -> Option<vk::PhysicalDeviceMultiviewProperties<'static>> {
     let mut multiview = vk::PhysicalDeviceMultiviewProperties::default();
-    crate::hooks::ask_properties2(device, &mut multiview).then_some(multiview)
+    crate::special::ask_properties2(device, &mut multiview).then_some(multiview)
 }
 
 /// The checks of `vkCreateRenderPass` that read the attachments its subpasses
@@ -813,7 +1056,7 @@ pub(crate) fn attachment_layouts2(
 
 /// One more than the largest attachment index a render pass instance clears: a
 /// `loadOp` of CLEAR, or a `stencilLoadOp` of CLEAR for a depth/stencil format.
-fn clear_count(
+pub(super) fn clear_count(
     attachments: impl Iterator<Item = (vk::Format, vk::AttachmentLoadOp, vk::AttachmentLoadOp)>,
 ) -> u32 {
     let depth_stencil = |f| {
@@ -940,43 +1183,6 @@ pub(crate) fn may_alias2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<bool> {
         .collect()
 }
 
-/// The union of the source and of the destination stage masks of the
-/// dependencies of `vkCreateRenderPass`'s create info.
-pub(crate) fn dependency_stages(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> (vk::PipelineStageFlags, vk::PipelineStageFlags) {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
-        .iter()
-        .fold(Default::default(), |(s, d), x| {
-            (s | x.src_stage_mask, d | x.dst_stage_mask)
-        })
-}
-
-/// [`dependency_stages`] for `vkCreateRenderPass2` (a chained `VkMemoryBarrier2`'s
-/// masks, their first 32 bits, in place of the dependency's).
-pub(crate) fn dependency_stages2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> (vk::PipelineStageFlags, vk::PipelineStageFlags) {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
-        .iter()
-        .map(|d| {
-            // SAFETY: the `pNext` of a safe struct, and the type the sType names.
-            let barrier: Option<&vk::MemoryBarrier2<'_>> =
-                unsafe { chained(d.p_next, vk::StructureType::MEMORY_BARRIER_2) };
-            barrier.map_or((d.src_stage_mask, d.dst_stage_mask), |b| {
-                (
-                    vk::PipelineStageFlags::from_raw(b.src_stage_mask.as_raw() as u32),
-                    vk::PipelineStageFlags::from_raw(b.dst_stage_mask.as_raw() as u32),
-                )
-            })
-        })
-        .fold(Default::default(), |(s, d), (x, y)| (s | x, d | y))
-}
-
 /// The attachments each subpass of `vkCreateRenderPass`'s create info uses (input,
 /// color, resolve and depth/stencil references).
 pub(crate) fn used_attachments(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<u32>> {
@@ -1007,57 +1213,6 @@ pub(crate) fn used_attachments2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<
         }
     }
     used
-}
-
-/// The dependencies of `vkCreateRenderPass`'s create info from a subpass to itself.
-pub(crate) fn self_dependencies(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<crate::retention::SelfDependency> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
-        .iter()
-        .filter(|d| d.src_subpass == d.dst_subpass && d.src_subpass != vk::SUBPASS_EXTERNAL)
-        .map(|d| crate::retention::SelfDependency {
-            subpass: d.src_subpass,
-            stages: (d.src_stage_mask, d.dst_stage_mask),
-            access: (d.src_access_mask, d.dst_access_mask),
-        })
-        .collect()
-}
-
-/// [`self_dependencies`] for `vkCreateRenderPass2` (a chained `VkMemoryBarrier2`'s
-/// stages and access types replace the dependency's, their first 32 bits read).
-pub(crate) fn self_dependencies2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<crate::retention::SelfDependency> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
-        .iter()
-        .filter(|d| d.src_subpass == d.dst_subpass && d.src_subpass != vk::SUBPASS_EXTERNAL)
-        .map(|d| {
-            // SAFETY: the `pNext` of a safe struct, and the type the sType names.
-            let barrier: Option<&vk::MemoryBarrier2<'_>> =
-                unsafe { chained(d.p_next, vk::StructureType::MEMORY_BARRIER_2) };
-            let low = |v: u64| v as u32;
-            crate::retention::SelfDependency {
-                subpass: d.src_subpass,
-                stages: barrier.map_or((d.src_stage_mask, d.dst_stage_mask), |b| {
-                    (
-                        vk::PipelineStageFlags::from_raw(low(b.src_stage_mask.as_raw())),
-                        vk::PipelineStageFlags::from_raw(low(b.dst_stage_mask.as_raw())),
-                    )
-                }),
-                access: barrier.map_or((d.src_access_mask, d.dst_access_mask), |b| {
-                    (
-                        vk::AccessFlags::from_raw(low(b.src_access_mask.as_raw())),
-                        vk::AccessFlags::from_raw(low(b.dst_access_mask.as_raw())),
-                    )
-                }),
-            }
-        })
-        .collect()
 }
 
 /// [`attachment_uses`] for `vkCreateRenderPass2`, whose subpasses may chain a
@@ -1265,180 +1420,8 @@ fn render_pass_description_checks(
             )?;
         }
     }
-    dependency_checks(device, raw, dependencies)?;
+    subpass_dependency_checks(device, raw, dependencies)?;
     input_aspect_checks(raw, attachments, subpasses)
-}
-
-/// The dependencies of `vkCreateRenderPass`, and a chained
-/// `VkRenderPassMultiviewCreateInfo`'s masks and offsets.
-fn dependency_checks(
-    device: &Device,
-    raw: &vk::RenderPassCreateInfo<'_>,
-    dependencies: &[vk::SubpassDependency],
-) -> Result<()> {
-    let external = vk::SUBPASS_EXTERNAL;
-    let sync2 = device.live().with_features(|f| f.v13.synchronization2) != vk::FALSE;
-    // SAFETY: `raw` is a safe struct's.
-    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
-        chained(
-            raw.p_next,
-            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
-        )
-    };
-    // SAFETY: the safe setters store each array with its count.
-    let (masks, offsets, correlations) =
-        multiview.map_or((&[][..], &[][..], &[][..]), |m| unsafe {
-            (
-                crate::retention::raw_slice(m.p_view_masks, m.subpass_count),
-                crate::retention::raw_slice(m.p_view_offsets, m.dependency_count),
-                crate::retention::raw_slice(m.p_correlation_masks, m.correlation_mask_count),
-            )
-        });
-    let graphics = super::stages::GRAPHICS
-        | vk::PipelineStageFlags::ALL_GRAPHICS
-        | vk::PipelineStageFlags::ALL_COMMANDS;
-    let fb = super::stages::FRAMEBUFFER_SPACE;
-    for (i, d) in dependencies.iter().enumerate() {
-        let at = format!("pDependencies[{i}]");
-        if d.src_subpass == external && d.dst_subpass == external {
-            refuse(
-                "VUID-VkSubpassDependency-srcSubpass-00865",
-                format!("{at} has VK_SUBPASS_EXTERNAL at both ends"),
-            )?;
-        }
-        if d.src_subpass != external && d.dst_subpass != external && d.src_subpass > d.dst_subpass {
-            refuse(
-                "VUID-VkSubpassDependency-srcSubpass-00864",
-                format!(
-                    "{at}'s srcSubpass ({}) is after its dstSubpass ({})",
-                    d.src_subpass, d.dst_subpass
-                ),
-            )?;
-        }
-        if !sync2 && d.src_stage_mask.is_empty() {
-            refuse(
-                "VUID-VkSubpassDependency-srcStageMask-03937",
-                format!("{at}'s srcStageMask is 0, and synchronization2 is not enabled"),
-            )?;
-        }
-        if !sync2 && d.dst_stage_mask.is_empty() {
-            refuse(
-                "VUID-VkSubpassDependency-dstStageMask-03937",
-                format!("{at}'s dstStageMask is 0, and synchronization2 is not enabled"),
-            )?;
-        }
-        if d.src_subpass != external && !graphics.contains(d.src_stage_mask) {
-            refuse(
-                "VUID-VkRenderPassCreateInfo-pDependencies-00837",
-                format!(
-                    "{at}'s srcStageMask ({:?}) names a stage a graphics pipeline has not",
-                    d.src_stage_mask
-                ),
-            )?;
-        }
-        if d.dst_subpass != external && !graphics.contains(d.dst_stage_mask) {
-            refuse(
-                "VUID-VkRenderPassCreateInfo-pDependencies-00838",
-                format!(
-                    "{at}'s dstStageMask ({:?}) names a stage a graphics pipeline has not",
-                    d.dst_stage_mask
-                ),
-            )?;
-        }
-        if let Some(a) = super::stages::unsupported_access(d.src_access_mask, d.src_stage_mask) {
-            refuse(
-                "VUID-VkSubpassDependency-srcAccessMask-00868",
-                format!("{at}'s srcAccessMask has {a:?}, which no stage of its srcStageMask ({:?}) supports", d.src_stage_mask),
-            )?;
-        }
-        if let Some(a) = super::stages::unsupported_access(d.dst_access_mask, d.dst_stage_mask) {
-            refuse(
-                "VUID-VkSubpassDependency-dstAccessMask-00869",
-                format!("{at}'s dstAccessMask has {a:?}, which no stage of its dstStageMask ({:?}) supports", d.dst_stage_mask),
-            )?;
-        }
-        if d.src_subpass == d.dst_subpass && d.src_subpass != external {
-            let (src, dst) = (
-                super::stages::expand(d.src_stage_mask),
-                super::stages::expand(d.dst_stage_mask),
-            );
-            let logical =
-                vk::PipelineStageFlags::TOP_OF_PIPE | vk::PipelineStageFlags::BOTTOM_OF_PIPE;
-            if src.intersects(fb) && !fb.contains(dst & !logical) {
-                refuse(
-                    "VUID-VkSubpassDependency-srcSubpass-06809",
-                    format!("{at} is a self-dependency whose srcStageMask has a framebuffer-space stage, but its dstStageMask ({:?}) has others", d.dst_stage_mask),
-                )?;
-            }
-            if src.intersects(fb)
-                && dst.intersects(fb)
-                && !d.dependency_flags.contains(vk::DependencyFlags::BY_REGION)
-            {
-                refuse(
-                    "VUID-VkSubpassDependency-srcSubpass-02243",
-                    format!("{at} is a self-dependency between framebuffer-space stages without VK_DEPENDENCY_BY_REGION_BIT"),
-                )?;
-            }
-            let views = masks
-                .get(d.src_subpass as usize)
-                .map_or(0, |m| m.count_ones());
-            if views > 1 && !d.dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
-                refuse(
-                    "VUID-VkSubpassDependency-srcSubpass-00872",
-                    format!("{at} is a self-dependency of a subpass of {views} views without VK_DEPENDENCY_VIEW_LOCAL_BIT"),
-                )?;
-            }
-        }
-        if let Some(&offset) = offsets.get(i) {
-            if offset != 0 && d.src_subpass == d.dst_subpass {
-                refuse(
-                    "VUID-VkRenderPassCreateInfo-pNext-01930",
-                    format!("{at} has view offset {offset} but the same subpass at both ends"),
-                )?;
-            }
-            if offset != 0 && !d.dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
-                refuse(
-                    "VUID-VkRenderPassCreateInfo-pNext-02512",
-                    format!("{at} has view offset {offset} but is not view-local"),
-                )?;
-            }
-        }
-    }
-    let multiview_on = device.live().with_features(|f| f.v11.multiview) != vk::FALSE;
-    let max = if masks.iter().any(|m| *m != 0) {
-        multiview_view_count(device)
-    } else {
-        None
-    };
-    for (i, m) in masks.iter().enumerate() {
-        if *m != 0 && !multiview_on {
-            refuse(
-                "VUID-VkRenderPassMultiviewCreateInfo-multiview-06555",
-                format!("pViewMasks[{i}] is {m:#x}, but the multiview feature is not enabled"),
-            )?;
-        }
-        let highest = 32 - m.leading_zeros();
-        if let Some(max) = max.filter(|max| *m != 0 && highest > *max) {
-            refuse(
-                "VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697",
-                format!(
-                    "pViewMasks[{i}] ({m:#x}) names view {}, past maxMultiviewViewCount ({max})",
-                    highest - 1
-                ),
-            )?;
-        }
-    }
-    let mut seen = 0u32;
-    for (i, c) in correlations.iter().enumerate() {
-        if seen & c != 0 {
-            refuse(
-                "VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841",
-                format!("pCorrelationMasks[{i}] ({c:#x}) shares a view with an earlier mask"),
-            )?;
-        }
-        seen |= c;
-    }
-    Ok(())
 }
 
 /// A chained `VkRenderPassInputAttachmentAspectCreateInfo` names only aspects the

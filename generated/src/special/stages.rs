@@ -6,8 +6,9 @@
 
 use ash::vk;
 
-type S = vk::PipelineStageFlags;
-type A = vk::AccessFlags;
+pub(super) type S = vk::PipelineStageFlags;
+
+pub(super) type A = vk::AccessFlags;
 
 /// The shader stages of a graphics or compute pipeline.
 const SHADERS: S = S::from_raw(

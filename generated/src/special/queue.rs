@@ -1,0 +1,657 @@
+//! Queue submissions: batches of command buffers, semaphores and fences checked
+//! before they reach the queue, and the bookkeeping after (pending state, timelines,
+//! queue families).
+
+use super::sync::timeline_difference;
+use super::{chained, refuse};
+use crate::handles::*;
+use crate::structs::*;
+use crate::submission::{self, SubmitRules};
+use crate::{Handle, Result};
+use ash::vk;
+use smallvec::SmallVec;
+
+/// The raw command buffers of `vkQueueSubmit` batches.
+fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
+    submits
+        .iter()
+        // SAFETY: the safe structs store every array with its length.
+        .flat_map(|s| unsafe {
+            crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+        })
+        .copied()
+        .collect()
+}
+
+/// The raw command buffers of `vkQueueSubmit2` batches.
+fn submit2_command_buffers(submits: &[SubmitInfo2<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
+    submits
+        .iter()
+        // SAFETY: the safe structs store every array with its length.
+        .flat_map(|s| unsafe {
+            crate::retention::raw_slice(s.p_command_buffer_infos, s.command_buffer_info_count)
+        })
+        .map(|i| i.command_buffer)
+        .collect()
+}
+
+/// Refuses timeline semaphores of a batch without one value each.
+///
+/// # Safety
+///
+/// The arrays and chain come from a safe struct: each array stored with its length,
+/// and only structs pushed through `push_next` chained.
+unsafe fn check_batch(
+    queue: &Queue,
+    waits: *const vk::Semaphore,
+    wait_count: u32,
+    signals: *const vk::Semaphore,
+    signal_count: u32,
+    next: *const core::ffi::c_void,
+    rules: &submission::TimelineRules,
+) -> Result<()> {
+    // SAFETY: the caller's promise, passed on.
+    unsafe {
+        submission::check_timeline_batch(
+            queue.parent().live(),
+            crate::retention::raw_slice(waits, wait_count),
+            crate::retention::raw_slice(signals, signal_count),
+            next,
+            rules,
+        )
+    }
+}
+
+/// The checks of `vkQueueSubmit` that memory safety needs: the fence, the command
+/// buffers' states and the batches' timeline values.
+pub(crate) fn queue_submit_checks(
+    queue: &Queue,
+    submits: &[SubmitInfo<'_>],
+    fence: Option<&Fence>,
+) -> Result<()> {
+    submit_checks(
+        queue,
+        fence,
+        &submit_command_buffers(submits),
+        &submission::SUBMIT,
+    )?;
+    for (i, b) in submits.iter().enumerate() {
+        check_device_group_submit(i, b)?;
+        check_group_indices(queue.parent(), i, b)?;
+        check_wait_stages(queue, i, b)?;
+        check_pools(queue, i, b)?;
+    }
+    for b in submits {
+        // SAFETY: `b` is a safe struct.
+        unsafe {
+            check_batch(
+                queue,
+                b.p_wait_semaphores,
+                b.wait_semaphore_count,
+                b.p_signal_semaphores,
+                b.signal_semaphore_count,
+                b.p_next,
+                &submission::SUBMIT_TIMELINE,
+            )
+        }?;
+    }
+    Ok(())
+}
+
+/// Refuses a batch whose command buffers come from a pool of another queue family
+/// than the queue's (00074), a protected batch on a queue that is not protected
+/// (06448), and command buffers whose pool's protection differs from the batch's
+/// (04120, 04148).
+fn check_pools(queue: &Queue, i: usize, batch: &SubmitInfo<'_>) -> Result<()> {
+    let device = queue.parent();
+    let live = device.live();
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    let protected_info: Option<&vk::ProtectedSubmitInfo<'_>> =
+        unsafe { chained(batch.p_next, vk::StructureType::PROTECTED_SUBMIT_INFO) };
+    let protected = protected_info.is_some_and(|p| p.protected_submit == vk::TRUE);
+    if protected && !live.is_protected_queue(queue.raw()) {
+        refuse(
+            "VUID-vkQueueSubmit-queue-06448",
+            format!(
+                "pSubmits[{i}] is a protected submission, and the queue was not created protected"
+            ),
+        )?;
+    }
+    let family = live.queue_family(queue.raw());
+    // SAFETY: the safe struct stores the array with its length.
+    let cbs =
+        unsafe { crate::retention::raw_slice(batch.p_command_buffers, batch.command_buffer_count) };
+    for (j, raw) in cbs.iter().enumerate() {
+        let Some((pool_family, pool_protected)) =
+            device.command_buffer_uses(*raw).and_then(|u| u.pool())
+        else {
+            continue;
+        };
+        if family.is_some_and(|f| f != pool_family) {
+            refuse(
+                "VUID-vkQueueSubmit-pCommandBuffers-00074",
+                format!("pSubmits[{i}].pCommandBuffers[{j}] comes from a pool of queue family {pool_family}, not the queue's"),
+            )?;
+        }
+        if protected && !pool_protected {
+            refuse(
+                "VUID-VkSubmitInfo-pNext-04148",
+                format!("pSubmits[{i}] is protected, and pCommandBuffers[{j}] is not a protected command buffer"),
+            )?;
+        }
+        if !protected && pool_protected {
+            refuse(
+                "VUID-VkSubmitInfo-pNext-04120",
+                format!("pSubmits[{i}] is not protected, and pCommandBuffers[{j}] is a protected command buffer"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Takes the device's descriptor gate for `vkQueueSubmit` and refuses command
+/// buffers that an update of a set they bind left invalid.
+pub(crate) fn queue_submit_hold<'q>(
+    queue: &'q Queue,
+    submits: &[SubmitInfo<'_>],
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    let device = queue.parent();
+    let cbs = submit_command_buffers(submits);
+    let gate = submission::sets_gate(device, &cbs, submission::SUBMIT.executable)?;
+    // What other queues' submissions use and leave (events, semaphores) is checked
+    // under the gate, which every submission holds until it has recorded its own.
+    submission::check_events(
+        device,
+        queue.raw(),
+        &cbs,
+        "VUID-vkQueueSubmit-pCommandBuffers-00065",
+    )?;
+    submission::check_binary_ops(
+        device,
+        queue.raw(),
+        &submit_semaphore_ops(submits),
+        &submission::SUBMIT_BINARY,
+    )?;
+    submission::check_timeline_values(
+        device.live(),
+        &submission::submit_timeline_ops(device.live(), submits),
+        timeline_difference(device),
+        submission::SUBMIT_TIMELINE_VALUES,
+    )?;
+    Ok(gate)
+}
+
+/// As [`queue_submit_hold`], for `vkQueueSubmit2`.
+pub(crate) fn queue_submit2_hold<'q>(
+    queue: &'q Queue,
+    submits: &[SubmitInfo2<'_>],
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    let device = queue.parent();
+    let gate = submission::sets_gate(
+        device,
+        &submit2_command_buffers(submits),
+        submission::SUBMIT2.executable,
+    )?;
+    submission::check_binary_ops(
+        device,
+        queue.raw(),
+        &submit2_semaphore_ops(submits),
+        &submission::SUBMIT2_BINARY,
+    )?;
+    Ok(gate)
+}
+
+/// Takes the device's gate for `vkQueueBindSparse` and checks its binary semaphore
+/// operations again under it, so no submission on another queue changes their
+/// states between this check and the bookkeeping of the call.
+pub(crate) fn queue_bind_sparse_hold<'q>(
+    queue: &'q Queue,
+    bind_info: &[BindSparseInfo<'_>],
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    let gate = queue.parent().live().descriptor_gate();
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &bind_sparse_semaphore_ops(bind_info),
+        &submission::BIND_SPARSE_BINARY,
+    )?;
+    Ok(gate)
+}
+
+/// The checks of `vkQueueSubmit2`: the fence and the command buffers' states.
+pub(crate) fn queue_submit2_checks(
+    queue: &Queue,
+    submits: &[SubmitInfo2<'_>],
+    fence: Option<&Fence>,
+) -> Result<()> {
+    submit_checks(
+        queue,
+        fence,
+        &submit2_command_buffers(submits),
+        &submission::SUBMIT2,
+    )
+}
+
+/// The semaphore operations of `vkQueueSubmit`'s batches, in order.
+fn submit_semaphore_ops(submits: &[SubmitInfo<'_>]) -> Vec<submission::SemOp> {
+    submission::batch_ops(submits.iter().map(|b| {
+        // SAFETY: the safe struct stores each array with its length.
+        unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
+                crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
+            )
+        }
+    }))
+}
+
+/// The semaphore operations of `vkQueueSubmit2`'s batches, in order.
+fn submit2_semaphore_ops(submits: &[SubmitInfo2<'_>]) -> Vec<submission::SemOp> {
+    let mut ops = Vec::new();
+    for b in submits {
+        // SAFETY: the safe struct stores each array with its length.
+        let (waits, signals) = unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+                crate::retention::raw_slice(
+                    b.p_signal_semaphore_infos,
+                    b.signal_semaphore_info_count,
+                ),
+            )
+        };
+        ops.extend(waits.iter().map(|w| submission::SemOp::Wait(w.semaphore)));
+        ops.extend(
+            signals
+                .iter()
+                .map(|s| submission::SemOp::Signal(s.semaphore)),
+        );
+    }
+    ops
+}
+
+/// The semaphore operations of `vkQueueBindSparse`'s batches, in order.
+fn bind_sparse_semaphore_ops(bind_info: &[BindSparseInfo<'_>]) -> Vec<submission::SemOp> {
+    submission::batch_ops(bind_info.iter().map(|b| {
+        // SAFETY: the safe struct stores each array with its length.
+        unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
+                crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
+            )
+        }
+    }))
+}
+
+/// The checks of `vkQueueBindSparse`: the fence and the batches' timeline values.
+pub(crate) fn queue_bind_sparse_checks(
+    queue: &Queue,
+    bind_info: &[BindSparseInfo<'_>],
+    fence: &Fence,
+) -> Result<()> {
+    submission::check_fence(fence, &submission::BIND_SPARSE)?;
+    submission::check_binary_ops(
+        queue.parent(),
+        queue.raw(),
+        &bind_sparse_semaphore_ops(bind_info),
+        &submission::BIND_SPARSE_BINARY,
+    )?;
+    for b in bind_info {
+        // SAFETY: `b` is a safe struct.
+        unsafe {
+            check_batch(
+                queue,
+                b.p_wait_semaphores,
+                b.wait_semaphore_count,
+                b.p_signal_semaphores,
+                b.signal_semaphore_count,
+                b.p_next,
+                &submission::BIND_SPARSE_TIMELINE,
+            )
+        }?;
+    }
+    Ok(())
+}
+
+fn submit_checks(
+    queue: &Queue,
+    fence: Option<&Fence>,
+    cbs: &[vk::CommandBuffer],
+    rules: &SubmitRules,
+) -> Result<()> {
+    if let Some(fence) = fence {
+        submission::check_fence(fence, rules)?;
+    }
+    submission::check_command_buffers(queue.parent(), cbs, rules)?;
+    submission::check_layouts(queue.parent(), cbs)
+}
+
+/// After `vkQueueSubmit`: the fence holds everything the submission names (its
+/// command buffers, which keep what their recordings use, its semaphores, and whatever
+/// else its structs reach) until the submission is known complete; without a fence,
+/// the queue does, until a later fence of the queue or an idle wait shows it complete.
+pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence: Option<&Fence>) {
+    let device = queue.parent();
+    let mut kept = Vec::new();
+    for s in submits {
+        // SAFETY: the safe structs store every array with its length.
+        unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
+    }
+    let batches = submission::submit_timeline_batches(device.live(), submits);
+    let cbs = submit_command_buffers(submits);
+    let sub = submission::submitted(device, queue.raw(), fence, &cbs, kept, batches);
+    let ops = submit_semaphore_ops(submits);
+    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
+    let values = submission::submit_timeline_ops(device.live(), submits);
+    submission::record_timeline_values(device.live(), &values, &sub);
+    if fence.is_none() {
+        queue.hold(sub);
+    }
+}
+
+/// After `vkQueueSubmit2`, as after `vkQueueSubmit`.
+pub(crate) fn queue_submit2_done(
+    queue: &Queue,
+    submits: &[SubmitInfo2<'_>],
+    fence: Option<&Fence>,
+) {
+    let device = queue.parent();
+    let mut kept = Vec::new();
+    for s in submits {
+        // SAFETY: the safe structs store every array with its length.
+        unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
+    }
+    let batches = submission::submit2_timeline_batches(device.live(), submits);
+    let cbs = submit2_command_buffers(submits);
+    let sub = submission::submitted(device, queue.raw(), fence, &cbs, kept, batches);
+    let ops = submit2_semaphore_ops(submits);
+    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
+    let live = device.live();
+    let mut values = Vec::new();
+    for b in submits {
+        // SAFETY: the safe struct stores each array with its length.
+        let (waits, signals) = unsafe {
+            (
+                crate::retention::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+                crate::retention::raw_slice(
+                    b.p_signal_semaphore_infos,
+                    b.signal_semaphore_info_count,
+                ),
+            )
+        };
+        let ops = waits
+            .iter()
+            .map(|w| (w, false))
+            .chain(signals.iter().map(|s| (s, true)))
+            .filter(|(i, _)| live.is_timeline(i.semaphore))
+            .map(|(i, signal)| (i.semaphore, i.value, signal));
+        values.extend(ops);
+    }
+    submission::record_timeline_values(live, &values, &sub);
+    if fence.is_none() {
+        queue.hold(sub);
+    }
+}
+
+/// After `vkQueueBindSparse`: the fence holds what the binds name (a timeline signal
+/// tells nothing of sparse binds yet).
+pub(crate) fn queue_bind_sparse_done(
+    queue: &Queue,
+    bind_info: &[BindSparseInfo<'_>],
+    fence: &Fence,
+) {
+    let device = queue.parent();
+    let mut kept = Vec::new();
+    for s in bind_info {
+        // SAFETY: the safe structs store every array with its length.
+        unsafe { crate::reach::bind_sparse_info(s.as_raw(), device.live(), &mut kept) };
+    }
+    let sub = submission::submitted(device, queue.raw(), Some(fence), &[], kept, Vec::new());
+    let ops = bind_sparse_semaphore_ops(bind_info);
+    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
+    let mut values = Vec::new();
+    for b in bind_info {
+        // SAFETY: a safe struct's arrays and chain.
+        unsafe {
+            submission::timeline_ops(
+                device.live(),
+                b.p_wait_semaphores,
+                b.wait_semaphore_count,
+                b.p_signal_semaphores,
+                b.signal_semaphore_count,
+                b.p_next,
+                &mut values,
+            )
+        };
+    }
+    submission::record_timeline_values(device.live(), &values, &sub);
+}
+
+/// Every queue operation of the queue is complete.
+pub(crate) fn queue_wait_idle_done(queue: &Queue) {
+    queue.parent().live().ledger().retire_queue(queue.raw());
+}
+
+/// Every queue operation of the device is complete.
+pub(crate) fn device_wait_idle_done(device: &Device) {
+    device.live().ledger().retire_all();
+}
+
+/// The queue remembers its family's flags for the `queuetype` checks.
+pub(crate) fn queue_got(device: &Device, queue: Queue, queue_family_index: u32) -> Queue {
+    device
+        .live()
+        .queue_family_of(queue.raw(), queue_family_index);
+    queue.with_queue_flags(crate::validation::family_flags(device, queue_family_index))
+}
+
+/// As [`queue_got`], for `vkGetDeviceQueue2`.
+pub(crate) fn queue2_got(
+    device: &Device,
+    queue: Queue,
+    queue_info: &DeviceQueueInfo2<'_>,
+) -> Queue {
+    if queue_info
+        .flags
+        .contains(vk::DeviceQueueCreateFlags::PROTECTED)
+    {
+        device.live().queue_protected(queue.raw());
+    }
+    queue_got(device, queue, queue_info.queue_family_index)
+}
+
+/// A queue is got as the device was created with it: from a family it has queues
+/// of, created without flags (those are got through `get_queue2`), at an
+/// index below their count.
+pub(crate) fn get_device_queue_checks(device: &Device, family: u32, index: u32) -> Result<()> {
+    let infos = device.live().queue_infos();
+    if !infos.iter().any(|q| q.0 == family) {
+        refuse(
+            "VUID-vkGetDeviceQueue-queueFamilyIndex-00384",
+            format!("the device was created with no queue of family {family}"),
+        )?;
+    }
+    let Some(&(_, count, _)) = infos.iter().find(|q| q.0 == family && q.2.is_empty()) else {
+        return refuse(
+            "VUID-vkGetDeviceQueue-flags-01841",
+            format!(
+                "the queues of family {family} were created with flags; get them with \
+                 `get_queue2`"
+            ),
+        );
+    };
+    if index >= count {
+        refuse(
+            "VUID-vkGetDeviceQueue-queueIndex-00385",
+            format!(
+                "queue index {index} is not below the {count} queues of family {family} the \
+                 device was created with"
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// As [`get_device_queue_checks`], for the queues of a family created with the
+/// info's flags.
+pub(crate) fn get_device_queue2_checks(
+    device: &Device,
+    queue_info: &crate::structs::DeviceQueueInfo2<'_>,
+) -> Result<()> {
+    let (family, flags, index) = (
+        queue_info.queue_family_index,
+        queue_info.flags,
+        queue_info.queue_index,
+    );
+    let infos = device.live().queue_infos();
+    if !infos.iter().any(|q| q.0 == family) {
+        refuse(
+            "VUID-VkDeviceQueueInfo2-queueFamilyIndex-01842",
+            format!("the device was created with no queue of family {family}"),
+        )?;
+    }
+    let Some(&(_, count, _)) = infos.iter().find(|q| q.0 == family && q.2 == flags) else {
+        return refuse(
+            "VUID-VkDeviceQueueInfo2-flags-06225",
+            format!(
+                "the device was created with no queues of family {family} with flags {flags:?}"
+            ),
+        );
+    };
+    if index >= count {
+        refuse(
+            "VUID-VkDeviceQueueInfo2-queueIndex-01843",
+            format!(
+                "queue index {index} is not below the {count} queues of family {family} with \
+                 flags {flags:?} the device was created with"
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks of `vkQueueSubmit` on a chained `VkDeviceGroupSubmitInfo`: drivers read
+/// one device mask and index per command buffer and semaphore of the batch from it.
+/// A batch's wait stage masks: no host stage, none without the feature it needs,
+/// not 0 without synchronization2, and each stage one the queue's capabilities
+/// support.
+fn check_wait_stages(queue: &Queue, i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
+    // SAFETY: the safe setter stores the masks with the wait semaphores' count.
+    let masks =
+        unsafe { crate::retention::raw_slice(b.p_wait_dst_stage_mask, b.wait_semaphore_count) };
+    if masks.is_empty() {
+        return Ok(());
+    }
+    let device = queue.parent();
+    let f = device.live().features();
+    let sync2 = device.live().with_features(|f| f.v13.synchronization2) != vk::FALSE;
+    type S = vk::PipelineStageFlags;
+    for (k, m) in masks.iter().enumerate() {
+        let at = format!("pSubmits[{i}].pWaitDstStageMask[{k}]");
+        if m.contains(S::HOST) {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-00078",
+                format!("{at} includes VK_PIPELINE_STAGE_HOST_BIT"),
+            )?;
+        }
+        if m.contains(S::GEOMETRY_SHADER) && f.geometry_shader == vk::FALSE {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-04090",
+                format!(
+                    "{at} includes the geometry shader stage, and geometryShader is not enabled"
+                ),
+            )?;
+        }
+        if m.intersects(S::TESSELLATION_CONTROL_SHADER | S::TESSELLATION_EVALUATION_SHADER)
+            && f.tessellation_shader == vk::FALSE
+        {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-04091",
+                format!(
+                    "{at} includes a tessellation stage, and tessellationShader is not enabled"
+                ),
+            )?;
+        }
+        if m.is_empty() && !sync2 {
+            refuse(
+                "VUID-VkSubmitInfo-pWaitDstStageMask-03937",
+                format!("{at} is 0, and synchronization2 is not enabled"),
+            )?;
+        }
+        if let Some(s) = super::stages::unsupported_stage(*m, queue.queue_flags()) {
+            refuse(
+                "VUID-vkQueueSubmit-pWaitDstStageMask-00066",
+                format!(
+                    "{at} includes {s:?}, which the queue's capabilities ({:?}) do not support",
+                    queue.queue_flags()
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// A chained `VkDeviceGroupSubmitInfo`'s device indices and masks name only the
+/// device's physical devices.
+fn check_group_indices(device: &Device, i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
+    // SAFETY: `b` is a safe struct's.
+    let group: Option<&vk::DeviceGroupSubmitInfo<'_>> =
+        unsafe { chained(b.p_next, vk::StructureType::DEVICE_GROUP_SUBMIT_INFO) };
+    let Some(g) = group else { return Ok(()) };
+    let count = device.live().physical_count();
+    // SAFETY: the safe setters store each array with its count.
+    let (waits, signals, masks) = unsafe {
+        (
+            crate::retention::raw_slice(g.p_wait_semaphore_device_indices, g.wait_semaphore_count),
+            crate::retention::raw_slice(
+                g.p_signal_semaphore_device_indices,
+                g.signal_semaphore_count,
+            ),
+            crate::retention::raw_slice(g.p_command_buffer_device_masks, g.command_buffer_count),
+        )
+    };
+    if let Some(d) = waits.iter().chain(signals).find(|d| **d >= count) {
+        refuse(
+            "VUID-VkDeviceGroupSubmitInfo-pWaitSemaphoreDeviceIndices-00085",
+            format!("pSubmits[{i}]'s device group info names device index {d}; the device has {count} physical devices"),
+        )?;
+    }
+    if let Some(m) = masks.iter().find(|m| count < 32 && **m >> count != 0) {
+        refuse(
+            "VUID-VkDeviceGroupSubmitInfo-pCommandBufferDeviceMasks-00086",
+            format!("pSubmits[{i}]'s device group info has device mask {m:#x}; the device has {count} physical devices"),
+        )?;
+    }
+    Ok(())
+}
+
+fn check_device_group_submit(i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
+    // SAFETY: `b` is a safe struct's.
+    let group: Option<&vk::DeviceGroupSubmitInfo<'_>> =
+        unsafe { chained(b.p_next, vk::StructureType::DEVICE_GROUP_SUBMIT_INFO) };
+    let Some(g) = group else { return Ok(()) };
+    for (vuid, theirs, ours, what) in [
+        (
+            "VUID-VkDeviceGroupSubmitInfo-waitSemaphoreCount-00082",
+            g.wait_semaphore_count,
+            b.wait_semaphore_count,
+            "waitSemaphoreCount",
+        ),
+        (
+            "VUID-VkDeviceGroupSubmitInfo-commandBufferCount-00083",
+            g.command_buffer_count,
+            b.command_buffer_count,
+            "commandBufferCount",
+        ),
+        (
+            "VUID-VkDeviceGroupSubmitInfo-signalSemaphoreCount-00084",
+            g.signal_semaphore_count,
+            b.signal_semaphore_count,
+            "signalSemaphoreCount",
+        ),
+    ] {
+        if theirs != ours {
+            refuse(vuid, format!("pSubmits[{i}]: the chained VkDeviceGroupSubmitInfo's {what} ({theirs}) must equal the batch's ({ours})"))?;
+        }
+    }
+    Ok(())
+}

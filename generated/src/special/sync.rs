@@ -1,0 +1,364 @@
+//! Fences, semaphores and events: their creation, host waits and signals, timeline
+//! values, and events set, reset and waited on in recordings.
+
+use super::barriers::check_barrier_structs;
+use super::image_layouts::{cmd_pipeline_barrier_done, dependency_done};
+use super::{chained, refuse, vulkan12_properties};
+use crate::handles::*;
+use crate::recorder::{Recorder, Scope};
+use crate::structs::{BufferMemoryBarrier, ImageMemoryBarrier, *};
+use crate::submission::{self};
+use crate::{Error, Handle, Result};
+use ash::vk;
+use ash::vk::Handle as _;
+
+/// Refuses a fence whose queue operation may still be executing.
+pub(crate) fn reset_fences_checks(device: &Device, fences: &[&Fence]) -> Result<()> {
+    for f in fences {
+        if f.submission().is_some_and(|sub| !sub.poll(device)) {
+            return Err(Error::Validation {
+                vuid: "VUID-vkResetFences-pFences-01123",
+                message: "a fence is reset while the queue operation that signals it may still be executing".into(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a binary semaphore.
+pub(crate) fn get_semaphore_counter_value_checks(
+    device: &Device,
+    semaphore: &Semaphore,
+) -> Result<()> {
+    submission::check_semaphore_type(
+        device.live(),
+        &[semaphore.raw()],
+        true,
+        "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
+    )
+}
+
+/// A timeline value seen on the host: the batches that signal it are done.
+pub(crate) fn semaphore_value_seen(device: &Device, semaphore: &Semaphore, value: u64) {
+    timeline_seen(device, semaphore.raw(), value, false);
+}
+
+/// The host saw (or set) a timeline semaphore's value: the batches that signal it
+/// are done, and the device knows the semaphore reached it.
+fn timeline_seen(device: &Device, semaphore: vk::Semaphore, value: u64, host_signal: bool) {
+    if let Some(t) = device.live().timelines().get_mut(&semaphore.as_raw()) {
+        t.seen(value, host_signal);
+    }
+    device.live().ledger().reached(semaphore, value);
+}
+
+/// After `vkSignalSemaphore`: the semaphore has the value.
+pub(crate) fn signal_semaphore_done(device: &Device, signal_info: &SemaphoreSignalInfo<'_>) {
+    timeline_seen(device, signal_info.semaphore, signal_info.value, true);
+}
+
+/// The physical device's `maxTimelineSemaphoreValueDifference`, read once per device
+/// (no limit is known below Vulkan 1.2, where the device has no timeline semaphores).
+pub(super) fn timeline_difference(device: &Device) -> u64 {
+    device.live().timeline_difference(|| {
+        vulkan12_properties(device).map_or(u64::MAX, |p| p.max_timeline_semaphore_value_difference)
+    })
+}
+
+/// Refuses binary semaphores.
+pub(crate) fn wait_semaphores_checks(
+    device: &Device,
+    wait_info: &SemaphoreWaitInfo<'_>,
+) -> Result<()> {
+    // SAFETY: the safe struct stores the array with its length.
+    let semaphores =
+        unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+    submission::check_semaphore_type(
+        device.live(),
+        semaphores,
+        true,
+        "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
+    )
+}
+
+/// After `vkWaitSemaphores`: only a wait for all of them says each reached its value.
+pub(crate) fn wait_semaphores_done(
+    device: &Device,
+    wait_info: &SemaphoreWaitInfo<'_>,
+    r: vk::Result,
+) {
+    if r != vk::Result::SUCCESS || wait_info.flags.contains(vk::SemaphoreWaitFlags::ANY) {
+        return;
+    }
+    // SAFETY: the safe struct stores both arrays with their one length.
+    let semaphores =
+        unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+    // SAFETY: the same length, from the same safe struct.
+    let values =
+        unsafe { crate::retention::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
+    for (s, v) in semaphores.iter().zip(values) {
+        timeline_seen(device, *s, *v, false);
+    }
+}
+
+/// Refuses a binary semaphore.
+pub(crate) fn signal_semaphore_checks(
+    device: &Device,
+    signal_info: &SemaphoreSignalInfo<'_>,
+) -> Result<()> {
+    submission::check_semaphore_type(
+        device.live(),
+        &[signal_info.semaphore],
+        true,
+        "VUID-VkSemaphoreSignalInfo-semaphore-03257",
+    )
+}
+
+/// A signalled fence's queue operation is complete.
+pub(crate) fn get_fence_status_done(fence: &Fence, r: vk::Result) {
+    if r == vk::Result::SUCCESS {
+        fence.completed();
+    }
+}
+
+/// After a successful wait, the fences known signalled are complete.
+pub(crate) fn wait_for_fences_done(
+    device: &Device,
+    fences: &[&Fence],
+    wait_all: vk::Bool32,
+    r: vk::Result,
+) {
+    if r != vk::Result::SUCCESS {
+        return;
+    }
+    if wait_all == vk::TRUE || fences.len() == 1 {
+        for f in fences {
+            f.completed();
+        }
+    } else {
+        // One fence at least is signalled; ask each which.
+        for f in fences {
+            if let Some(sub) = f.submission() {
+                sub.poll(device);
+            }
+        }
+    }
+}
+
+/// The device remembers which semaphores are timeline semaphores.
+pub(crate) fn semaphore_created(
+    device: &Device,
+    semaphore: Semaphore,
+    create_info: &SemaphoreCreateInfo<'_>,
+) -> Semaphore {
+    if let Some(initial) = submission::timeline_initial(create_info) {
+        device.live().set_timeline(semaphore.raw(), initial);
+    }
+    semaphore
+}
+
+/// The recording names `event` in an event command: its submission is checked
+/// against pending submissions to other queues that name it too.
+pub(crate) fn event_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, event: &Event) {
+    let raw = event.raw().as_raw();
+    if !recorder.events.contains(&raw) {
+        recorder.events.push(raw);
+    }
+}
+
+/// After `vkCmdWaitEvents`: the events it names, and the layouts its barriers leave.
+pub(crate) fn wait_events_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    events: &[&Event],
+    image_memory_barriers: &[ImageMemoryBarrier<'_>],
+) {
+    for e in events {
+        event_recorded(recorder, e);
+    }
+    cmd_pipeline_barrier_done(recorder, image_memory_barriers);
+}
+
+/// After `vkCmdWaitEvents2`: the events it names, and the layouts its dependencies
+/// leave.
+pub(crate) fn wait_events2_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    events: &[&Event],
+    dependency_infos: &[DependencyInfo<'_>],
+) {
+    for e in events {
+        event_recorded(recorder, e);
+    }
+    dependency_done(recorder, dependency_infos);
+}
+
+/// Exportable handle types a fence's creation asks for: each one the physical device
+/// The first handle type of `wanted` that the physical device cannot export, or
+/// whose compatible types leave out one of `wanted`, as `query` reports a type:
+/// (exportable, compatible types). `None` when every one can be exported together.
+fn unexportable(wanted: u32, query: impl Fn(u32) -> (bool, u32)) -> Option<(u32, bool, u32)> {
+    (0..32)
+        .map(|i| 1u32 << i)
+        .filter(|b| wanted & b != 0)
+        .map(|bit| {
+            let (exportable, compatible) = query(bit);
+            (bit, exportable, compatible)
+        })
+        .find(|&(_, exportable, compatible)| !exportable || compatible & wanted != wanted)
+}
+
+/// Exportable handle types a fence's creation asks for: each one the physical device
+/// can export, and all of them compatible with each other.
+pub(crate) fn create_fence_checks(
+    device: &Device,
+    create_info: &FenceCreateInfo<'_>,
+) -> Result<()> {
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let Some(export) = (unsafe {
+        chained::<vk::ExportFenceCreateInfo<'_>>(
+            create_info.as_raw().p_next,
+            vk::StructureType::EXPORT_FENCE_CREATE_INFO,
+        )
+    }) else {
+        return Ok(());
+    };
+    let physical = device.parent();
+    let wanted = export.handle_types;
+    let failed = unexportable(wanted.as_raw(), |bit| {
+        let info = vk::PhysicalDeviceExternalFenceInfo::default()
+            .handle_type(vk::ExternalFenceHandleTypeFlags::from_raw(bit));
+        let mut props = vk::ExternalFenceProperties::default();
+        // SAFETY: a live physical device of its instance, a valid info and an output
+        // it owns; the fence struct is core 1.1, which the implicit checks required.
+        unsafe {
+            physical
+                .parent()
+                .fns()
+                .get_physical_device_external_fence_properties(physical.raw(), &info, &mut props)
+        };
+        (
+            props
+                .external_fence_features
+                .contains(vk::ExternalFenceFeatureFlags::EXPORTABLE),
+            props.compatible_handle_types.as_raw(),
+        )
+    });
+    match failed {
+        Some(f) => refuse(
+            "VUID-VkExportFenceCreateInfo-handleTypes-01446",
+            unexportable_message("VkExternalFenceProperties", wanted.as_raw(), f),
+        ),
+        None => Ok(()),
+    }
+}
+
+/// The refusal of [`unexportable`]'s finding.
+fn unexportable_message(
+    what: &str,
+    wanted: u32,
+    (bit, exportable, compatible): (u32, bool, u32),
+) -> String {
+    format!(
+        "The bits in `handleTypes` must be supported and compatible, as reported by {what} \
+         (`handleTypes` = {wanted:#x}; handle type {bit:#x} is {}exportable, compatible with \
+         {compatible:#x})",
+        if exportable { "" } else { "not " }
+    )
+}
+
+/// As [`create_fence_checks`], for a semaphore (of the type it is created with).
+pub(crate) fn create_semaphore_checks(
+    device: &Device,
+    create_info: &SemaphoreCreateInfo<'_>,
+) -> Result<()> {
+    let next = create_info.as_raw().p_next;
+    // SAFETY: the `pNext` of a safe struct, and the types their sTypes name.
+    let (export, ty) = unsafe {
+        (
+            chained::<vk::ExportSemaphoreCreateInfo<'_>>(
+                next,
+                vk::StructureType::EXPORT_SEMAPHORE_CREATE_INFO,
+            ),
+            chained::<vk::SemaphoreTypeCreateInfo<'_>>(
+                next,
+                vk::StructureType::SEMAPHORE_TYPE_CREATE_INFO,
+            ),
+        )
+    };
+    let Some(export) = export else {
+        return Ok(());
+    };
+    let semaphore_type = ty.map(|t| t.semaphore_type);
+    let physical = device.parent();
+    let wanted = export.handle_types;
+    let failed = unexportable(wanted.as_raw(), |bit| {
+        let mut ty =
+            semaphore_type.map(|t| vk::SemaphoreTypeCreateInfo::default().semaphore_type(t));
+        let mut info = vk::PhysicalDeviceExternalSemaphoreInfo::default()
+            .handle_type(vk::ExternalSemaphoreHandleTypeFlags::from_raw(bit));
+        if let Some(t) = ty.as_mut() {
+            info = info.push_next(t);
+        }
+        let mut props = vk::ExternalSemaphoreProperties::default();
+        // SAFETY: as in `create_fence_checks`; the type struct chained is a local copy.
+        unsafe {
+            physical
+                .parent()
+                .fns()
+                .get_physical_device_external_semaphore_properties(
+                    physical.raw(),
+                    &info,
+                    &mut props,
+                )
+        };
+        (
+            props
+                .external_semaphore_features
+                .contains(vk::ExternalSemaphoreFeatureFlags::EXPORTABLE),
+            props.compatible_handle_types.as_raw(),
+        )
+    });
+    match failed {
+        Some(f) => refuse(
+            "VUID-VkExportSemaphoreCreateInfo-handleTypes-01124",
+            unexportable_message("VkExternalSemaphoreProperties", wanted.as_raw(), f),
+        ),
+        None => Ok(()),
+    }
+}
+
+/// An event the host sets, resets or reads was not created device-only.
+pub(crate) fn host_event(device: &Device, event: &Event, vuid: &'static str) -> Result<()> {
+    if device.live().is_device_only(event.raw()) {
+        refuse(
+            vuid,
+            "`event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`".into(),
+        )?;
+    }
+    Ok(())
+}
+
+/// The device remembers a device-only event, which the host may not touch.
+pub(crate) fn event_created(
+    device: &Device,
+    event: Event,
+    create_info: &EventCreateInfo<'_>,
+) -> Event {
+    if create_info
+        .flags
+        .contains(vk::EventCreateFlags::DEVICE_ONLY)
+    {
+        device.live().set_device_only(event.raw());
+    }
+    event
+}
+
+/// The checks of an event wait's barriers, and the layouts its image barriers move
+/// from.
+pub(crate) fn wait_events_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
+    image_memory_barriers: &[ImageMemoryBarrier<'_>],
+) -> Result<()> {
+    check_barrier_structs(recorder, buffer_memory_barriers, image_memory_barriers)?;
+    super::image_layouts::cmd_pipeline_barrier_checks(recorder, image_memory_barriers)
+}

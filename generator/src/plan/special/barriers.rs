@@ -1,0 +1,222 @@
+//! The special-case rows of one concern; their functions are the `tuff` crate's
+//! `special/barriers.rs`, and a row here calls no other (but the image-layout tracker).
+//!
+//! Pipeline barriers: each buffer and image barrier against the stages, accesses,
+//! queue families and layouts it names.
+
+use super::{call, How, Special, LAYOUT_BARRIER, NONE};
+
+const BARRIER: &str = "checks the barrier against the resource it names (its usage, format and sharing mode, as the device recorded them), the queue families it names, and the barrier's stages, access types and render pass instance";
+const BARRIER_ALONE: &str = "checks the barrier against the resource it names and the queue families it names, as the device recorded them (the 1.3.239 layer does not check it: the error alone proves it)";
+const BARRIER_ACCESS: &str = "checks each access type against the table of the stages that support it (the 1.3.239 layer names the rule by srcAccessMask-02815 or dstAccessMask-02816, the memory barriers' rules)";
+const BARRIER_CONCURRENT: &str = "checked by the safe methods in every build, but no test breaks it: a concurrent resource needs two queue families, and lavapipe has one";
+const BARRIER_PLANES: &str = "checked by the safe methods in every build, but no test breaks it: no test makes a disjoint multi-planar image yet";
+const BARRIER_FAMILY: &str = "checked by the safe methods in every build (the specification's table of the stages each queue capability supports), but no test breaks it: lavapipe's only queue family supports every stage";
+
+/// The rows of this concern.
+pub(super) const ROWS: &[Special] = &[Special {
+    command: "vkCmdPipelineBarrier",
+    check: call(
+        "special::barriers::pipeline_barrier_checks",
+        &[
+            "self",
+            "src_stage_mask",
+            "dst_stage_mask",
+            "dependency_flags",
+            "memory_barriers",
+            "buffer_memory_barriers",
+            "image_memory_barriers",
+        ],
+    ),
+    after: call(
+        "special::image_layouts::cmd_pipeline_barrier_done",
+        &["self", "image_memory_barriers"],
+    ),
+    settles: &[
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01197",
+            How::Dynamic(LAYOUT_BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-pDependencies-02285",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-image-04073",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01208",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01209",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01210",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01211",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01212",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01213",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01658",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-oldLayout-01659",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-newLayout-01198",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-image-01671",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-image-03319",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-image-03320",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-image-04072",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03938",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03939",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04066",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04067",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04068",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier-buffer-04089",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-srcAccessMask-02815",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-dstAccessMask-02816",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-dependencyFlags-01186",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-oldLayout-01181",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-None-06191",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-srcStageMask-03937",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-dstStageMask-03937",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817",
+            How::Dynamic(BARRIER_ACCESS),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818",
+            How::Dynamic(BARRIER_ACCESS),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819",
+            How::Dynamic(BARRIER_ACCESS),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820",
+            How::Dynamic(BARRIER_ACCESS),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-image-04071",
+            How::User(BARRIER_CONCURRENT),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-synchronization2-03857",
+            How::User(BARRIER_CONCURRENT),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier-buffer-04088",
+            How::User(BARRIER_CONCURRENT),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier-synchronization2-03853",
+            How::User(BARRIER_CONCURRENT),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-image-01672",
+            How::User(BARRIER_PLANES),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier-image-01673",
+            How::User(BARRIER_PLANES),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-srcStageMask-06461",
+            How::User(BARRIER_FAMILY),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier-dstStageMask-06462",
+            How::User(BARRIER_FAMILY),
+        ),
+    ],
+    ..NONE
+}];

@@ -1,0 +1,100 @@
+//! The special-case rows of one concern; their functions are the `tuff` crate's
+//! `special/command_buffers.rs`, and a row here calls no other (but the image-layout tracker).
+//!
+//! Command pools and command buffers: their creation, allocation, resets, and the
+//! execution of secondaries from a primary.
+
+use super::{call, How, Special, ACTIVE_QUERIES, NONE};
+
+const POOL_FAMILY: &str =
+    "checks the family against the queue create infos the device recorded at its creation";
+const RECORDING: &str =
+    "`Recorder::end` exists only on a recorder, which only `CommandBuffer::begin` makes";
+const OUTSIDE: &str = "`Recorder::end` exists only on a recorder outside a render pass instance, or on a continuing secondary";
+const POOL_PROTECTED: &str =
+    "checks the protectedMemory feature the device recorded at its creation";
+
+/// The rows of this concern.
+pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkCmdExecuteCommands",
+        check: call("special::command_buffers::cmd_execute_commands_checks", &["self", "command_buffers"]),
+        before: call("special::command_buffers::cmd_execute_commands_before", &["self", "command_buffers"]),
+        after: call("special::image_layouts::execute_layouts_done", &["self", "command_buffers"]),
+        settles: &[(
+            "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
+            How::Dynamic("refuses a secondary without SIMULTANEOUS_USE that a submission may still be executing"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkResetCommandBuffer",
+        check: call("special::command_buffers::reset_command_buffer_checks", &["self"]),
+        after: call("special::command_buffers::reset_command_buffer_done", &["self"]),
+        settles: &[
+            (
+                "VUID-vkResetCommandBuffer-commandBuffer-00045",
+                How::Dynamic("refuses a buffer that a submission may still be executing"),
+            ),
+            (
+                "VUID-vkResetCommandBuffer-commandBuffer-00046",
+                How::Dynamic("refuses a buffer whose pool was created without RESET_COMMAND_BUFFER"),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkResetCommandPool",
+        check: call("special::command_buffers::reset_command_pool_checks", &["self", "command_pool"]),
+        after: call("special::command_buffers::reset_command_pool_done", &["command_pool"]),
+        settles: &[(
+            "VUID-vkResetCommandPool-commandPool-00040",
+            How::Dynamic("refuses a pool one of whose buffers a submission may still be executing"),
+        )],
+        ..NONE
+    },
+    // `Recorder::end`, written by hand in `recorder.rs`.
+    Special {
+        command: "vkEndCommandBuffer",
+        settles: &[
+            ("VUID-vkEndCommandBuffer-commandBuffer-00059", How::Static(RECORDING)),
+            ("VUID-vkEndCommandBuffer-commandBuffer-00060", How::Static(OUTSIDE)),
+            ("VUID-vkEndCommandBuffer-commandBuffer-00061", How::Dynamic(ACTIVE_QUERIES)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateCommandPool",
+        check: call("special::command_buffers::create_command_pool_checks", &["self", "create_info"]),
+        created: call("special::command_buffers::command_pool_created", &["self", "created", "create_info"]),
+        settles: &[
+            ("VUID-vkCreateCommandPool-queueFamilyIndex-01937", How::Dynamic(POOL_FAMILY)),
+            ("VUID-VkCommandPoolCreateInfo-flags-02860", How::Dynamic(POOL_PROTECTED)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkAllocateCommandBuffers",
+        created: call(
+            "special::command_buffers::command_buffers_allocated",
+            &["self", "created", "command_pool", "allocate_info"],
+        ),
+        ..NONE
+    },
+    // Rules settled by the hand-written parts of the crate that these commands
+    // live in rather than by a generated method.
+    Special {
+        command: "vkBeginCommandBuffer",
+        settles: &[
+            (
+                "VUID-vkBeginCommandBuffer-commandBuffer-00049",
+                How::Dynamic("`CommandBuffer::begin` refuses a buffer that a submission may still be executing; a recording holds the buffer mutably, so none is under way"),
+            ),
+            (
+                "VUID-vkBeginCommandBuffer-commandBuffer-00050",
+                How::Dynamic("`CommandBuffer::begin` refuses a buffer begun before when its pool was created without RESET_COMMAND_BUFFER"),
+            ),
+        ],
+        ..NONE
+    },
+];

@@ -1,0 +1,96 @@
+//! The special-case rows of one concern; their functions are the `tuff` crate's
+//! `special/image_layouts.rs`, and a row here calls no other (but the image-layout tracker).
+//!
+//! The image layouts recorded commands name, checked against those the recording
+//! and the device's submissions leave.
+
+use super::{call, How, Special, LAYOUT, LAYOUT_BARRIER, NONE};
+
+/// The rows of this concern.
+pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkCmdCopyImage",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        settles: &[
+            ("VUID-vkCmdCopyImage-srcImageLayout-00128", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdCopyImage-dstImageLayout-00133", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBlitImage",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::BlitImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::BlitImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        settles: &[
+            ("VUID-vkCmdBlitImage-srcImageLayout-00221", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdBlitImage-dstImageLayout-00226", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResolveImage",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ResolveImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ResolveImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
+        settles: &[
+            ("VUID-vkCmdResolveImage-srcImageLayout-00260", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdResolveImage-dstImageLayout-00262", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdCopyImage2",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::CopyImage2(copy_image_info)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::CopyImage2(copy_image_info)"]),
+        settles: &[
+            ("VUID-VkCopyImageInfo2-srcImageLayout-00128", How::Dynamic(LAYOUT)),
+            ("VUID-VkCopyImageInfo2-dstImageLayout-00133", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBlitImage2",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::BlitImage2(blit_image_info)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::BlitImage2(blit_image_info)"]),
+        settles: &[
+            ("VUID-VkBlitImageInfo2-srcImageLayout-00221", How::Dynamic(LAYOUT)),
+            ("VUID-VkBlitImageInfo2-dstImageLayout-00226", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResolveImage2",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ResolveImage2(resolve_image_info)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ResolveImage2(resolve_image_info)"]),
+        settles: &[
+            ("VUID-VkResolveImageInfo2-srcImageLayout-00260", How::Dynamic(LAYOUT)),
+            ("VUID-VkResolveImageInfo2-dstImageLayout-00262", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdClearColorImage",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ClearColor(image.raw(), image_layout, ranges)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ClearColor(image.raw(), image_layout, ranges)"]),
+        settles: &[
+            ("VUID-vkCmdClearColorImage-imageLayout-00004", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdClearDepthStencilImage",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
+        settles: &[
+            ("VUID-vkCmdClearDepthStencilImage-imageLayout-00011", How::Dynamic(LAYOUT)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdPipelineBarrier2",
+        check: call("special::image_layouts::dependency_checks", &["self", "core::slice::from_ref(dependency_info)"]),
+        after: call("special::image_layouts::dependency_done", &["self", "core::slice::from_ref(dependency_info)"]),
+        settles: &[("VUID-VkImageMemoryBarrier2-oldLayout-01197", How::Dynamic(LAYOUT_BARRIER))],
+        ..NONE
+    },
+];

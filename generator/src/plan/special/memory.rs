@@ -1,0 +1,387 @@
+//! The special-case rows of one concern; their functions are the `tuff` crate's
+//! `special/memory.rs`, and a row here calls no other (but the image-layout tracker).
+//!
+//! Device memory: allocation (counts, types, dedicated and exported memory), the
+//! binding of buffers and images to it, and the memory requirements it is checked against.
+
+use super::{call, How, Keeps, Special, NONE, UNPROVEN};
+
+const MEMORY_KIND: &str = "checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to";
+const UNPROVEN_DEDICATED: &str = "checked by the safe methods in every build (VkMemoryDedicatedRequirements, queried at the bind, against the allocation's dedicated object), but no test breaks it: lavapipe requires no dedicated allocation";
+const UNPROVEN_PROTECTED: &str = "checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory";
+const NO_IMPORT: &str = "memory is imported only through structs of extensions tuff does not emit (VK_KHR_external_memory_fd and the like), which no safe allocate info can chain";
+const LAZY: &str = "checks the memory's type, kept from its allocation, is lazily allocated";
+const PLANES: &str = "checks a chained plane info against the image's create flags and format, kept from its creation";
+const UNPROVEN_DISJOINT: &str = "checked by the safe methods in every build (the image's create flags are kept from its creation), but no test breaks it yet: lavapipe has no format that supports disjoint planes";
+const DEVICE_MASK: &str = "checks the mask is not zero and names only the physical devices the device was created with (a chained device group create info's count, recorded at creation)";
+const UNPROVEN_ALLOCATION_COUNT: &str = "checked by the safe methods in every build (the live allocations the device lists against maxMemoryAllocationCount, under a lock held until the new memory is listed), but no test breaks it: lavapipe allows 4,294,967,295 allocations";
+const UNPROVEN_PROTECTED_TYPE: &str = "checked by the safe methods in every build (the memory type's flags against protectedMemory), but no test breaks it: lavapipe has no protected memory type";
+const UNPROVEN_SPARSE_DEDICATED: &str = "checked by the safe methods in every build (the object's recorded creation flags), but no test breaks it: lavapipe 22.3 has no sparseBinding, so no sparse object can be named";
+const UNPROVEN_DISJOINT_DEDICATED: &str = "checked by the safe methods in every build (the image's recorded creation flags), but no test breaks it: the tests make no disjoint image";
+const DEDICATED: &str = "checks the dedicated image or buffer against its recorded creation flags (not sparse, not disjoint), one of the two named, and the allocation size against its memory requirements";
+const EXPORT: &str = "checks the exported handle types against the external memory properties the physical device reports for the dedicated image or buffer (exportable, compatible with each other); an export without a dedicated object is refused (`Error::Misuse`)";
+const MEMORY_TYPES: &str = "checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features";
+const BIND_BOUND: &str = "refuses an object the device recorded as bound (and one an earlier info of the same call binds)";
+const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
+const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
+
+/// The rows of this concern.
+pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkBindBufferMemory",
+        check: call(
+            "special::memory::bind_buffer_memory_checks",
+            &["self", "buffer", "memory", "memory_offset"],
+        ),
+        after: call(
+            "special::memory::bind_buffer_memory_done",
+            &["self", "buffer", "memory", "memory_offset"],
+        ),
+        settles: &[
+            (
+                "VUID-vkBindBufferMemory-buffer-07459",
+                How::Dynamic(BIND_BOUND),
+            ),
+            ("VUID-vkBindBufferMemory-buffer-01030", How::User(UNPROVEN)),
+            (
+                "VUID-vkBindBufferMemory-memoryOffset-01031",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            ("VUID-vkBindBufferMemory-memory-01035", How::User(UNPROVEN)),
+            (
+                "VUID-vkBindBufferMemory-memoryOffset-01036",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-vkBindBufferMemory-size-01037",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-vkBindBufferMemory-buffer-01444",
+                How::User(UNPROVEN_DEDICATED),
+            ),
+            (
+                "VUID-vkBindBufferMemory-memory-01508",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-vkBindBufferMemory-None-01898",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-vkBindBufferMemory-None-01899",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-vkBindBufferMemory-memory-02726",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-vkBindBufferMemory-memory-02727",
+                How::Static(NO_IMPORT),
+            ),
+            (
+                "VUID-vkBindBufferMemory-bufferDeviceAddress-03339",
+                How::Dynamic(MEMORY_KIND),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkBindBufferMemory2",
+        check: call(
+            "special::memory::bind_buffer_memory2_checks",
+            &["self", "bind_infos"],
+        ),
+        after: call(
+            "special::memory::bind_buffer_memory2_done",
+            &["self", "bind_infos"],
+        ),
+        settles: &[
+            (
+                "VUID-VkBindBufferMemoryInfo-buffer-07459",
+                How::Dynamic(BIND_BOUND),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-buffer-01030",
+                How::User(UNPROVEN),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-memoryOffset-01031",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-memory-01035",
+                How::User(UNPROVEN),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-memoryOffset-01036",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-size-01037",
+                How::Dynamic(BIND_MEMORY),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkBindImageMemory2",
+        check: call(
+            "special::memory::bind_image_memory2_checks",
+            &["self", "bind_infos"],
+        ),
+        after: call(
+            "special::memory::bind_image_memory2_done",
+            &["self", "bind_infos"],
+        ),
+        settles: &[
+            (
+                "VUID-VkBindImageMemoryInfo-image-07460",
+                How::Dynamic(BIND_BOUND),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-image-01045",
+                How::User(UNPROVEN),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-memoryOffset-01046",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01615",
+                How::User(UNPROVEN),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01616",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01617",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01618",
+                How::User(UNPROVEN),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkGetDeviceMemoryCommitment",
+        check: call("special::memory::lazily_allocated", &["self", "memory"]),
+        settles: &[(
+            "VUID-vkGetDeviceMemoryCommitment-memory-00690",
+            How::Dynamic(LAZY),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetImageMemoryRequirements2",
+        check: call(
+            "special::memory::image_requirements2_planes",
+            &["self", "info"],
+        ),
+        settles: &[
+            (
+                "VUID-VkImageMemoryRequirementsInfo2-image-01589",
+                How::User(UNPROVEN_DISJOINT),
+            ),
+            (
+                "VUID-VkImageMemoryRequirementsInfo2-image-01590",
+                How::Dynamic(PLANES),
+            ),
+            (
+                "VUID-VkImageMemoryRequirementsInfo2-image-01591",
+                How::User(UNPROVEN_DISJOINT),
+            ),
+            (
+                "VUID-VkImagePlaneMemoryRequirementsInfo-planeAspect-02281",
+                How::User(UNPROVEN_DISJOINT),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkGetImageMemoryRequirements",
+        check: call(
+            "special::memory::whole_image_requirements",
+            &["self", "image"],
+        ),
+        settles: &[(
+            "VUID-vkGetImageMemoryRequirements-image-01588",
+            How::User(UNPROVEN_DISJOINT),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkBindImageMemory",
+        check: call(
+            "special::memory::bind_image_memory_checks",
+            &["self", "image", "memory", "memory_offset"],
+        ),
+        after: call(
+            "special::memory::bind_image_memory_done",
+            &["self", "image", "memory", "memory_offset"],
+        ),
+        settles: &[
+            (
+                "VUID-vkBindImageMemory-image-07460",
+                How::Dynamic(BIND_BOUND),
+            ),
+            ("VUID-vkBindImageMemory-image-01045", How::User(UNPROVEN)),
+            (
+                "VUID-vkBindImageMemory-memoryOffset-01046",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            ("VUID-vkBindImageMemory-memory-01047", How::User(UNPROVEN)),
+            (
+                "VUID-vkBindImageMemory-memoryOffset-01048",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-vkBindImageMemory-size-01049",
+                How::Dynamic(BIND_MEMORY),
+            ),
+            ("VUID-vkBindImageMemory-image-01608", How::User(UNPROVEN)),
+            (
+                "VUID-vkBindImageMemory-image-01445",
+                How::User(UNPROVEN_DEDICATED),
+            ),
+            (
+                "VUID-vkBindImageMemory-memory-01509",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-vkBindImageMemory-None-01901",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-vkBindImageMemory-None-01902",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-vkBindImageMemory-memory-02728",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-vkBindImageMemory-memory-02729",
+                How::Static(NO_IMPORT),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkAllocateMemory",
+        check_last: call(
+            "special::memory::allocate_memory_checks",
+            &["self", "allocate_info"],
+        ),
+        hold: call("special::memory::allocate_memory_hold", &["self"]),
+        keeps: Keeps::Nothing,
+        created: call(
+            "special::memory::memory_allocated",
+            &["self", "created", "out", "allocate_info"],
+        ),
+        settles: &[
+            (
+                "VUID-vkAllocateMemory-pAllocateInfo-01714",
+                How::Dynamic(MEMORY_TYPES),
+            ),
+            (
+                "VUID-vkAllocateMemory-pAllocateInfo-01713",
+                How::Dynamic(MEMORY_TYPES),
+            ),
+            (
+                "VUID-VkMemoryAllocateInfo-flags-03330",
+                How::Dynamic(MEMORY_TYPES),
+            ),
+            (
+                "VUID-VkMemoryAllocateInfo-flags-03331",
+                How::Dynamic(MEMORY_TYPES),
+            ),
+            (
+                "VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03329",
+                How::Dynamic(MEMORY_TYPES),
+            ),
+            (
+                "VUID-VkMemoryAllocateInfo-memoryTypeIndex-01872",
+                How::User(UNPROVEN_PROTECTED_TYPE),
+            ),
+            (
+                "VUID-VkMemoryAllocateFlagsInfo-deviceMask-00675",
+                How::Dynamic(DEVICE_MASK),
+            ),
+            (
+                "VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676",
+                How::Dynamic(DEVICE_MASK),
+            ),
+            (
+                "VUID-vkAllocateMemory-maxMemoryAllocationCount-04101",
+                How::User(UNPROVEN_ALLOCATION_COUNT),
+            ),
+            (
+                "VUID-VkMemoryDedicatedAllocateInfo-image-01432",
+                How::Dynamic(DEDICATED),
+            ),
+            (
+                "VUID-VkMemoryDedicatedAllocateInfo-image-01433",
+                How::Dynamic(DEDICATED),
+            ),
+            (
+                "VUID-VkMemoryDedicatedAllocateInfo-buffer-01435",
+                How::Dynamic(DEDICATED),
+            ),
+            (
+                "VUID-VkMemoryDedicatedAllocateInfo-image-01434",
+                How::User(UNPROVEN_SPARSE_DEDICATED),
+            ),
+            (
+                "VUID-VkMemoryDedicatedAllocateInfo-buffer-01436",
+                How::User(UNPROVEN_SPARSE_DEDICATED),
+            ),
+            (
+                "VUID-VkMemoryDedicatedAllocateInfo-image-01797",
+                How::User(UNPROVEN_DISJOINT_DEDICATED),
+            ),
+            (
+                "VUID-VkExportMemoryAllocateInfo-handleTypes-00656",
+                How::Dynamic(EXPORT),
+            ),
+            (
+                "VUID-VkMemoryAllocateInfo-None-06657",
+                How::Static(NO_IMPORT),
+            ),
+            (
+                "VUID-VkMemoryAllocateInfo-opaqueCaptureAddress-03333",
+                How::Static(NO_IMPORT),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkMapMemory",
+        settles: &[
+            (
+                "VUID-vkMapMemory-memory-00678",
+                How::Dynamic("`DeviceMemory::map` refuses memory that a live `MappedMemory` maps"),
+            ),
+            (
+                "VUID-vkMapMemory-memory-00682",
+                How::Dynamic("`DeviceMemory::map` refuses memory whose type is not HOST_VISIBLE"),
+            ),
+            ("VUID-vkMapMemory-offset-00679", How::Static(WHOLE)),
+            ("VUID-vkMapMemory-size-00680", How::Static(WHOLE)),
+            ("VUID-vkMapMemory-size-00681", How::Static(WHOLE)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkUnmapMemory",
+        settles: &[(
+            "VUID-vkUnmapMemory-memory-00689",
+            How::Static("only a `MappedMemory` guard unmaps, once, the memory it mapped"),
+        )],
+        ..NONE
+    },
+];

@@ -1,0 +1,161 @@
+//! The special-case rows of one concern; their functions are the `tuff` crate's
+//! `special/query.rs`, and a row here calls no other (but the image-layout tracker).
+//!
+//! Query pools and queries: creation, results, resets, and the begin and end of each
+//! query in a recording.
+
+use super::{call, How, Special, ACTIVE_QUERIES, ACTIVE_QUERIES_ALONE, NONE, UNPROVEN_FAMILY};
+
+const UNPROVEN_QUERIES: &str = "checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet";
+const QUERY_POOL: &str =
+    "checks the query against the pool's type and count, kept from its creation";
+const QUERY_RANGE: &str = "checks the queries against the pool's count, kept from its creation";
+const STATISTICS: &str = "checks the statistics bits against those the API defines (the 1.3.239 layer does not check it: proven by the error alone)";
+const QUERIES: &str = "checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride";
+
+/// The rows of this concern.
+pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkCreateQueryPool",
+        check: call("special::query::create_query_pool_checks", &["create_info"]),
+        created: call(
+            "special::query::query_pool_created",
+            &["self", "created", "create_info"],
+        ),
+        settles: &[(
+            "VUID-VkQueryPoolCreateInfo-queryType-00792",
+            How::Dynamic(STATISTICS),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdBeginQuery",
+        check: call(
+            "special::query::begin_query_checks",
+            &["self", "query_pool", "query"],
+        ),
+        after: call(
+            "special::query::begin_query_done",
+            &["self", "query_pool", "query"],
+        ),
+        settles: &[
+            (
+                "VUID-vkCmdBeginQuery-queryType-02804",
+                How::Dynamic(QUERY_POOL),
+            ),
+            ("VUID-vkCmdBeginQuery-query-00802", How::Dynamic(QUERY_POOL)),
+            (
+                "VUID-vkCmdBeginQuery-queryType-00803",
+                How::User(UNPROVEN_FAMILY),
+            ),
+            (
+                "VUID-vkCmdBeginQuery-queryType-00804",
+                How::User(UNPROVEN_FAMILY),
+            ),
+            (
+                "VUID-vkCmdBeginQuery-queryType-00805",
+                How::User(UNPROVEN_FAMILY),
+            ),
+            (
+                "VUID-vkCmdBeginQuery-queryPool-01922",
+                How::Dynamic(ACTIVE_QUERIES),
+            ),
+            (
+                "VUID-vkCmdBeginQuery-query-00808",
+                How::User(UNPROVEN_QUERIES),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdEndQuery",
+        check: call(
+            "special::query::end_query_checks",
+            &["self", "query_pool", "query"],
+        ),
+        after: call(
+            "special::query::end_query_done",
+            &["self", "query_pool", "query"],
+        ),
+        settles: &[
+            ("VUID-vkCmdEndQuery-query-00810", How::Dynamic(QUERY_POOL)),
+            (
+                "VUID-vkCmdEndQuery-None-01923",
+                How::Dynamic(ACTIVE_QUERIES),
+            ),
+            (
+                "VUID-vkCmdEndQuery-None-07007",
+                How::Dynamic(ACTIVE_QUERIES_ALONE),
+            ),
+            (
+                "VUID-vkCmdEndQuery-None-07008",
+                How::Dynamic(ACTIVE_QUERIES_ALONE),
+            ),
+            (
+                "VUID-vkCmdEndQuery-query-00812",
+                How::User(UNPROVEN_QUERIES),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResetQueryPool",
+        check: call(
+            "special::query::cmd_reset_query_pool_range",
+            &["self", "query_pool", "first_query", "query_count"],
+        ),
+        settles: &[
+            (
+                "VUID-vkCmdResetQueryPool-firstQuery-00796",
+                How::Dynamic(QUERY_RANGE),
+            ),
+            (
+                "VUID-vkCmdResetQueryPool-firstQuery-00797",
+                How::Dynamic(QUERY_RANGE),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkGetQueryPoolResults",
+        check: call(
+            "special::query::get_query_pool_results_checks",
+            &[
+                "self",
+                "query_pool",
+                "first_query",
+                "query_count",
+                "data",
+                "stride",
+                "flags",
+            ],
+        ),
+        settles: &[
+            (
+                "VUID-vkGetQueryPoolResults-firstQuery-00813",
+                How::Dynamic(QUERIES),
+            ),
+            (
+                "VUID-vkGetQueryPoolResults-firstQuery-00816",
+                How::Dynamic(QUERIES),
+            ),
+            (
+                "VUID-vkGetQueryPoolResults-flags-00815",
+                How::Dynamic(QUERIES),
+            ),
+            (
+                "VUID-vkGetQueryPoolResults-flags-02827",
+                How::Dynamic(QUERIES),
+            ),
+            (
+                "VUID-vkGetQueryPoolResults-dataSize-00817",
+                How::Dynamic(QUERIES),
+            ),
+            (
+                "VUID-vkGetQueryPoolResults-queryType-00818",
+                How::Dynamic(QUERIES),
+            ),
+        ],
+        ..NONE
+    },
+];

@@ -1,0 +1,169 @@
+//! The special-case rows of one concern; their functions are the `tuff` crate's
+//! `special/sync.rs`, and a row here calls no other (but the image-layout tracker).
+//!
+//! Fences, semaphores and events: their creation, host waits and signals, timeline
+//! values, and events set, reset and waited on in recordings.
+
+use super::{call, How, Special, NONE, SEMAPHORE_TYPE};
+
+const DEVICE_ONLY: &str =
+    "checks the event was not created device-only, which the device records at its creation";
+const EXPORTABLE: &str = "checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone)";
+
+/// The rows of this concern.
+pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkResetFences",
+        check: call("special::sync::reset_fences_checks", &["self", "fences"]),
+        settles: &[(
+            "VUID-vkResetFences-pFences-01123",
+            How::Dynamic("refuses a fence whose queue operation may still be executing (asks the fence when the wrappers have not seen it signalled)"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkGetSemaphoreCounterValue",
+        check: call("special::sync::get_semaphore_counter_value_checks", &["self", "semaphore"]),
+        after: call("special::sync::semaphore_value_seen", &["self", "semaphore", "out"]),
+        settles: &[(
+            "VUID-vkGetSemaphoreCounterValue-semaphore-03255",
+            How::Dynamic(SEMAPHORE_TYPE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkWaitSemaphores",
+        check: call("special::sync::wait_semaphores_checks", &["self", "wait_info"]),
+        after: call("special::sync::wait_semaphores_done", &["self", "wait_info", "r"]),
+        settles: &[(
+            "VUID-VkSemaphoreWaitInfo-pSemaphores-03256",
+            How::Dynamic(SEMAPHORE_TYPE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkSignalSemaphore",
+        check: call("special::sync::signal_semaphore_checks", &["self", "signal_info"]),
+        after: call("special::sync::signal_semaphore_done", &["self", "signal_info"]),
+        settles: &[(
+            "VUID-VkSemaphoreSignalInfo-semaphore-03257",
+            How::Dynamic(SEMAPHORE_TYPE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateEvent",
+        created: call("special::sync::event_created", &["self", "created", "create_info"]),
+        ..NONE
+    },
+    Special {
+        command: "vkSetEvent",
+        check: call(
+            "special::sync::host_event",
+            &["self", "event", "\"VUID-vkSetEvent-event-03941\""],
+        ),
+        settles: &[("VUID-vkSetEvent-event-03941", How::Dynamic(DEVICE_ONLY))],
+        ..NONE
+    },
+    Special {
+        command: "vkResetEvent",
+        check: call(
+            "special::sync::host_event",
+            &["self", "event", "\"VUID-vkResetEvent-event-03823\""],
+        ),
+        settles: &[("VUID-vkResetEvent-event-03823", How::Dynamic(DEVICE_ONLY))],
+        ..NONE
+    },
+    Special {
+        command: "vkGetEventStatus",
+        check: call(
+            "special::sync::host_event",
+            &["self", "event", "\"VUID-vkGetEventStatus-event-03940\""],
+        ),
+        settles: &[("VUID-vkGetEventStatus-event-03940", How::Dynamic(DEVICE_ONLY))],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateFence",
+        check_last: call("special::sync::create_fence_checks", &["self", "create_info"]),
+        settles: &[(
+            "VUID-VkExportFenceCreateInfo-handleTypes-01446",
+            How::Dynamic(EXPORTABLE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdWaitEvents",
+        check: call(
+            "special::sync::wait_events_checks",
+            &["self", "buffer_memory_barriers", "image_memory_barriers"],
+        ),
+        after: call(
+            "special::sync::wait_events_done",
+            &["self", "events", "image_memory_barriers"],
+        ),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdWaitEvents2",
+        check: call("special::image_layouts::dependency_checks", &["self", "dependency_infos"]),
+        after: call("special::sync::wait_events2_done", &["self", "events", "dependency_infos"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetEvent",
+        after: call("special::sync::event_recorded", &["self", "event"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResetEvent",
+        after: call("special::sync::event_recorded", &["self", "event"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdSetEvent2",
+        after: call("special::sync::event_recorded", &["self", "event"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCmdResetEvent2",
+        after: call("special::sync::event_recorded", &["self", "event"]),
+        ..NONE
+    },
+    Special {
+        command: "vkGetFenceStatus",
+        after: call("special::sync::get_fence_status_done", &["fence", "r"]),
+        ..NONE
+    },
+    Special {
+        command: "vkWaitForFences",
+        after: call("special::sync::wait_for_fences_done", &["self", "fences", "wait_all", "r"]),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateSemaphore",
+        check_last: call("special::sync::create_semaphore_checks", &["self", "create_info"]),
+        created: call("special::sync::semaphore_created", &["self", "created", "create_info"]),
+        settles: &[(
+            "VUID-VkExportSemaphoreCreateInfo-handleTypes-01124",
+            How::Dynamic(EXPORTABLE),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkDestroyFence",
+        settles: &[(
+            "VUID-vkDestroyFence-fence-01120",
+            How::Static("a fence whose queue operation may still be executing waits for it before it is destroyed"),
+        )],
+        ..NONE
+    },
+    Special {
+        command: "vkDestroySemaphore",
+        settles: &[(
+            "VUID-vkDestroySemaphore-semaphore-01137",
+            How::Static("every queue operation holds the semaphores it names until it is known complete (its fence, a later fence of its queue, or an idle wait)"),
+        )],
+        ..NONE
+    },
+];

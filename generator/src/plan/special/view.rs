@@ -1,0 +1,198 @@
+//! The special-case rows of one concern; their functions are the `tuff` crate's
+//! `special/view.rs`, and a row here calls no other (but the image-layout tracker).
+//!
+//! Image and buffer views: each view's creation against the image or buffer it views.
+
+use super::{call, How, Special, NONE};
+
+const UNPROVEN_VIEW_PLANES: &str = "checked by the safe methods in every build (against the image's format, its planes and chroma from vk.xml's <formats>, and a chained conversion's recorded format), but no test breaks it: lavapipe 22.3 supports no multi-planar or Y'CbCr format";
+const UNPROVEN_SPARSE_VIEW: &str = "checked by the safe methods in every build (the image's recorded flags), but no test breaks it: lavapipe 22.3 has no sparseBinding";
+const UNPROVEN_CUBE_ARRAY: &str = "checked by the safe methods in every build (the layers left from the base layer), but no test breaks it: the tests' device does not enable imageCubeArray, so a cube array view is refused for the feature first";
+const UNPROVEN_VIEW_FEATURES: &str = "checked by the safe methods in every build (the view's usage against the format features the physical device reports for the image's tiling), but no test breaks it: no compatible view format the tests found lacks the feature its usage needs on lavapipe where the image's own format has it";
+const VIEW_RANGE: &str = "checks the subresource range's aspects, levels and layers against the image's type, flags, extent and layer count, recorded at its creation";
+const VIEW_TYPE: &str = "checks the view type against the image's type, flags, usage and sample count, recorded at its creation";
+const VIEW_FORMAT: &str = "checks the view's format against the image's (its compatibility class, block size, plane formats and listed view formats, recorded at its creation, from vk.xml's <formats>), its chroma against the image's extent, and a chained Y'CbCr conversion's format and the swizzle";
+const VIEW_USAGE: &str = "checks the view's usage (chained, or the image's or its stencil usage, as the specification derives it) against the image's and against the format features the physical device reports for the image's tiling";
+
+/// The rows of this concern.
+pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkCreateBufferView",
+        created: call(
+            "special::view::buffer_view_created",
+            &["self", "created", "create_info"],
+        ),
+        ..NONE
+    },
+    Special {
+        command: "vkCreateImageView",
+        check_last: call("special::view::image_view_checks", &["self", "create_info"]),
+        created: call(
+            "special::view::image_view_created",
+            &["self", "created", "create_info"],
+        ),
+        settles: &[
+            (
+                "VUID-VkImageSubresourceRange-aspectMask-01670",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-subresourceRange-07818",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-01003",
+                How::Dynamic(VIEW_TYPE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-04441",
+                How::Dynamic(VIEW_TYPE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-subResourceRange-01021",
+                How::Dynamic(VIEW_TYPE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-06723",
+                How::Dynamic(VIEW_TYPE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-06727",
+                How::Dynamic(VIEW_TYPE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-04970",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-04971",
+                How::User(UNPROVEN_SPARSE_VIEW),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-04972",
+                How::Dynamic(VIEW_TYPE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-02724",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-subresourceRange-02725",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-01482",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-subresourceRange-01483",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-imageViewType-04973",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-imageViewType-04974",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-viewType-02962",
+                How::Dynamic(VIEW_RANGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-viewType-02963",
+                How::User(UNPROVEN_CUBE_ARRAY),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-01761",
+                How::Dynamic(VIEW_FORMAT),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-01583",
+                How::Dynamic(VIEW_FORMAT),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-07072",
+                How::Dynamic(VIEW_FORMAT),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-pNext-01585",
+                How::Dynamic(VIEW_FORMAT),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-01586",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-image-01762",
+                How::Dynamic(VIEW_FORMAT),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-format-04714",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-format-04715",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-pNext-01970",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-pNext-06658",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-format-06415",
+                How::User(UNPROVEN_VIEW_PLANES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-pNext-02662",
+                How::Dynamic(VIEW_USAGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-pNext-02663",
+                How::Dynamic(VIEW_USAGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-pNext-02664",
+                How::Dynamic(VIEW_USAGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-None-02273",
+                How::User(UNPROVEN_VIEW_FEATURES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-usage-02274",
+                How::User(UNPROVEN_VIEW_FEATURES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-usage-02275",
+                How::Dynamic(VIEW_USAGE),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-usage-02276",
+                How::User(UNPROVEN_VIEW_FEATURES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-usage-02277",
+                How::User(UNPROVEN_VIEW_FEATURES),
+            ),
+            (
+                "VUID-VkImageViewCreateInfo-usage-02652",
+                How::User(UNPROVEN_VIEW_FEATURES),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCreateSamplerYcbcrConversion",
+        created: call(
+            "special::view::conversion_created",
+            &["self", "created", "create_info"],
+        ),
+        ..NONE
+    },
+];
