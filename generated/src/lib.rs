@@ -1,3 +1,16 @@
+// The `tuff` crate: part emitted by tuff-gen, part written by hand.
+//
+// Emitted (do not edit; regenerate with `cargo run -p tuff-gen`): everything under
+// `src/generated/`, each file starting with an `@generated` line, and beside `src/`
+// the manifest, VALIDATION.md, validation.json, validation.svg, emitted-items.txt
+// and oracle_cases.rs.
+//
+// Written by hand: every other module under `src/`. `special/` holds what a command
+// does beyond its parameters' shapes, one file per concern, each called from the
+// generator's special-case table (`generator/src/plan/special/`); the files beside it
+// are the records, recording, submission and convenience layers the emitted methods
+// call.
+
 //! tuff: safe Vulkan wrappers over `ash`, generated from the Khronos registry by
 //! `tuff-gen`.
 //!
