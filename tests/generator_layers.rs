@@ -239,8 +239,6 @@ const MOST_LINES: usize = 1_500;
 /// keep until it is split: a file here may shrink, never grow, and a file not here
 /// may not pass the bound.
 const STILL_OVER: &[(&str, usize)] = &[
-    // The device's records and side tables: to become `state/`, one file per object.
-    ("generated/src/retention.rs", 2_373),
     ("generator/src/validity/explicit.rs", 1_681),
     ("generator/src/emit/commands.rs", 1_503),
 ];

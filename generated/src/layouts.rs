@@ -10,7 +10,7 @@
 //! left ([`Overlay`]), in submission order, and records the layouts it leaves in
 //! turn: the order in which a queue executes its submissions.
 
-use crate::retention::{ImageRecord, Live};
+use crate::state::{ImageRecord, Live};
 use crate::{Error, Result};
 use ash::vk::{self, Handle as _};
 // Looked up on every command that names an image layout: a fast hash for handles.

@@ -203,11 +203,11 @@ mod mapping;
 mod physical;
 mod presence;
 pub mod recorder;
-mod retention;
 mod setup;
 mod single;
 mod special;
 mod spirv;
+mod state;
 mod submission;
 mod support;
 #[cfg(feature = "khr_swapchain")]

@@ -30,7 +30,7 @@ pub(crate) struct MemoryRecord {
     /// first map.
     pub(crate) host: Option<(vk::MemoryPropertyFlags, u64)>,
     /// What its chained infos asked for, which binds are checked against.
-    pub(crate) asked: crate::retention::MemoryAsked,
+    pub(crate) asked: crate::state::MemoryAsked,
 }
 
 /// A device memory mapped for host access; unmapped when dropped.

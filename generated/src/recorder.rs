@@ -85,15 +85,15 @@ impl Drop for Alive {
 #[derive(Default)]
 pub(crate) struct Bound {
     /// The pipeline's record.
-    pub pipeline: Option<crate::retention::PipelineRecord>,
+    pub pipeline: Option<crate::state::PipelineRecord>,
     /// The set layouts of the sets bound, by set number.
-    pub sets: Vec<Option<Vrc<crate::retention::SetLayoutRecord>>>,
+    pub sets: Vec<Option<Vrc<crate::state::SetLayoutRecord>>>,
     /// The image descriptors of the sets bound when they were bound, by set number:
     /// an update after that leaves the recording invalid, so they stay what a draw
     /// or dispatch reads.
-    pub images: Vec<Option<crate::retention::SetImages>>,
+    pub images: Vec<Option<crate::state::SetImages>>,
     /// The written slots of the sets bound when they were bound, by set number.
-    pub written: Vec<crate::retention::SetWritten>,
+    pub written: Vec<crate::state::SetWritten>,
     /// The index buffer bound (graphics only): its size, the offset and index type.
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
     /// The vertex-buffer bindings bound (graphics only; the first 64), one bit each.
@@ -127,7 +127,7 @@ impl Bound {
 pub(crate) struct Pushed {
     /// The layout they were pushed with: they are the values of every layout with
     /// the same push-constant ranges (compatible for push constants).
-    pub layout: Vrc<crate::retention::LayoutRecord>,
+    pub layout: Vrc<crate::state::LayoutRecord>,
     /// The bytes set, one bit each.
     bytes: Vec<u64>,
     /// The last push (layout, offset, size): a repeat of it sets nothing new.
@@ -136,7 +136,7 @@ pub(crate) struct Pushed {
 
 impl Pushed {
     /// No bytes pushed yet with `layout`.
-    pub(crate) fn new(layout: Vrc<crate::retention::LayoutRecord>) -> Self {
+    pub(crate) fn new(layout: Vrc<crate::state::LayoutRecord>) -> Self {
         Pushed {
             layout,
             bytes: Vec::new(),
@@ -313,11 +313,11 @@ pub(crate) struct PassInstance {
     /// secondary: whether it inherits dynamic rendering).
     pub dynamic: bool,
     /// The render pass's record, which a draw's pipeline must be compatible with.
-    pub record: Option<Vrc<crate::retention::RenderPassRecord>>,
+    pub record: Option<Vrc<crate::state::RenderPassRecord>>,
     /// In dynamic rendering (begun in this recording, or the one a continuing
     /// secondary inherits): its view mask and attachment formats, which a draw's
     /// pipeline must have been made for.
-    pub rendering: Option<Vrc<crate::retention::RenderingFormats>>,
+    pub rendering: Option<Vrc<crate::state::RenderingFormats>>,
     /// In dynamic rendering begun in this recording: the layouts of its depth and
     /// stencil attachments that have a view (`None` in a continuing secondary,
     /// whose inheritance info does not give them).
@@ -413,7 +413,7 @@ pub struct Recorder<'c, S: Scope> {
     /// The record of the pipeline layout last used, so a run of push constants on
     /// one layout looks it up once. The recording keeps the layout alive, so its raw
     /// handle names it for the whole recording.
-    layout: Option<(vk::PipelineLayout, Vrc<crate::retention::LayoutRecord>)>,
+    layout: Option<(vk::PipelineLayout, Vrc<crate::state::LayoutRecord>)>,
     /// The last push-constant write that passed its checks (layout, stages, offset,
     /// size): the checks depend on nothing else, so a run of equal writes (one before
     /// every draw) is checked once.
@@ -577,7 +577,7 @@ impl CommandBuffer {
         let rendering = inherited.map(|r| {
             // SAFETY: as above.
             Vrc::new(unsafe {
-                crate::retention::RenderingFormats::from_raw(
+                crate::state::RenderingFormats::from_raw(
                     r.view_mask,
                     r.p_color_attachment_formats,
                     r.color_attachment_count,
@@ -771,9 +771,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
 
     /// The device's records and the recording's image layouts, borrowed together
     /// for a command that changes the layouts.
-    pub(crate) fn layouts_mut(
-        &mut self,
-    ) -> (&crate::retention::Live, &mut crate::layouts::Recording) {
+    pub(crate) fn layouts_mut(&mut self) -> (&crate::state::Live, &mut crate::layouts::Recording) {
         (self.device.live(), &mut self.layouts)
     }
 
@@ -787,7 +785,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
     pub(crate) fn layout_record(
         &mut self,
         layout: &crate::PipelineLayout,
-    ) -> Result<Vrc<crate::retention::LayoutRecord>> {
+    ) -> Result<Vrc<crate::state::LayoutRecord>> {
         if let Some((raw, record)) = &self.layout {
             if *raw == layout.raw() {
                 return Ok(record.clone());

@@ -817,7 +817,7 @@ pub(crate) const BIND_SPARSE_TIMELINE: TimelineRules = TimelineRules {
 ///
 /// `next` is a chain built by `push_next` on a safe struct.
 pub(crate) unsafe fn check_timeline_batch(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     waits: &[vk::Semaphore],
     signals: &[vk::Semaphore],
     next: *const core::ffi::c_void,
@@ -965,7 +965,7 @@ pub(crate) const SUBMIT_TIMELINE_VALUES: TimelineValueRules = (
 /// `max_difference` of the semaphore's possible current values and of the values of
 /// its pending operations, including those earlier in the same call.
 pub(crate) fn check_timeline_values(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     ops: &[TimelineOp],
     max_difference: u64,
     rules: TimelineValueRules,
@@ -1010,7 +1010,7 @@ pub(crate) fn check_timeline_values(
 
 /// Records timeline operations that `sub` submitted.
 pub(crate) fn record_timeline_values(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     ops: &[TimelineOp],
     sub: &Vrc<Submission>,
 ) {
@@ -1031,7 +1031,7 @@ pub(crate) fn record_timeline_values(
 
 /// The timeline operations of `vkQueueSubmit`'s batches, in order.
 pub(crate) fn submit_timeline_ops(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     submits: &[crate::structs::SubmitInfo<'_>],
 ) -> Vec<TimelineOp> {
     let mut ops = Vec::new();
@@ -1060,7 +1060,7 @@ pub(crate) fn submit_timeline_ops(
 ///
 /// The arrays hold their counts of elements, and `next` is a valid chain.
 pub(crate) unsafe fn timeline_ops(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     waits: *const vk::Semaphore,
     wait_count: u32,
     signals: *const vk::Semaphore,
@@ -1071,8 +1071,8 @@ pub(crate) unsafe fn timeline_ops(
     // SAFETY: the caller's promise.
     let (waits, signals) = unsafe {
         (
-            crate::retention::raw_slice(waits, wait_count),
-            crate::retention::raw_slice(signals, signal_count),
+            crate::state::raw_slice(waits, wait_count),
+            crate::state::raw_slice(signals, signal_count),
         )
     };
     if !waits.iter().chain(signals).any(|s| live.is_timeline(*s)) {
@@ -1090,11 +1090,11 @@ pub(crate) unsafe fn timeline_ops(
     // SAFETY: a safe struct's arrays, stored with their counts.
     let (wait_values, signal_values) = unsafe {
         (
-            crate::retention::raw_slice(
+            crate::state::raw_slice(
                 info.p_wait_semaphore_values,
                 info.wait_semaphore_value_count,
             ),
-            crate::retention::raw_slice(
+            crate::state::raw_slice(
                 info.p_signal_semaphore_values,
                 info.signal_semaphore_value_count,
             ),
@@ -1114,7 +1114,7 @@ pub(crate) unsafe fn timeline_ops(
 
 /// Refuses a semaphore of the wrong type for a command that takes only one type.
 pub(crate) fn check_semaphore_type(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     semaphores: &[vk::Semaphore],
     timeline: bool,
     vuid: &'static str,
@@ -1181,7 +1181,7 @@ pub(crate) fn named_object_sync(
 /// its timeline semaphores in its chained `VkTimelineSemaphoreSubmitInfo` (checked to
 /// be one per semaphore before the call). Every signal covers the whole batch.
 pub(crate) fn submit_timeline_batches(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     submits: &[crate::structs::SubmitInfo<'_>],
 ) -> Vec<Vec<(vk::Semaphore, u64)>> {
     submits
@@ -1189,9 +1189,8 @@ pub(crate) fn submit_timeline_batches(
         .map(|b| {
             // SAFETY: the safe struct stores each array with its length and chains
             // only structs pushed through `push_next`; the sType says what the node is.
-            let signals = unsafe {
-                crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count)
-            };
+            let signals =
+                unsafe { crate::state::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count) };
             let values = unsafe { crate::support::chain_nodes(b.p_next) }
                 .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
                 .map(|n| unsafe {
@@ -1200,7 +1199,7 @@ pub(crate) fn submit_timeline_batches(
                 })
                 .filter(|t| !t.p_signal_semaphore_values.is_null())
                 .map(|t| unsafe {
-                    crate::retention::raw_slice(
+                    crate::state::raw_slice(
                         t.p_signal_semaphore_values,
                         t.signal_semaphore_value_count,
                     )
@@ -1219,7 +1218,7 @@ pub(crate) fn submit_timeline_batches(
 /// For each batch of a `vkQueueSubmit2`, the timeline values it signals once all of
 /// its commands are done (a stage mask of ALL_COMMANDS; a narrower one says less).
 pub(crate) fn submit2_timeline_batches(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     submits: &[crate::structs::SubmitInfo2<'_>],
 ) -> Vec<Vec<(vk::Semaphore, u64)>> {
     submits
@@ -1227,10 +1226,7 @@ pub(crate) fn submit2_timeline_batches(
         .map(|b| {
             // SAFETY: the safe struct stores the array with its length.
             unsafe {
-                crate::retention::raw_slice(
-                    b.p_signal_semaphore_infos,
-                    b.signal_semaphore_info_count,
-                )
+                crate::state::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count)
             }
             .iter()
             .filter(|i| {

@@ -70,13 +70,13 @@ impl<'a> Scope<'a> {
 
     /// The record of a buffer made through the wrappers on the scope's device.
     #[inline]
-    pub(crate) fn buffer(&self, raw: vk::Buffer) -> Option<crate::retention::BufferRecord> {
+    pub(crate) fn buffer(&self, raw: vk::Buffer) -> Option<crate::state::BufferRecord> {
         self.device.and_then(|d| d.live().buffer(raw))
     }
 
     /// The record of an image made through the wrappers on the scope's device.
     #[inline]
-    pub(crate) fn image(&self, raw: vk::Image) -> Option<crate::retention::ImageRecord> {
+    pub(crate) fn image(&self, raw: vk::Image) -> Option<crate::state::ImageRecord> {
         self.device.and_then(|d| d.live().image(raw))
     }
 

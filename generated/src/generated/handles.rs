@@ -1577,7 +1577,7 @@ struct DeviceInner {
     command_buffers: Vutex<
         std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>,
     >,
-    live: crate::retention::Live,
+    live: crate::state::Live,
     exts: crate::checks::Exts,
     objects: crate::validation::Objects,
 }
@@ -2492,7 +2492,7 @@ impl Device {
     /// The live objects of this device by raw handle, and what its descriptor
     /// sets refer to.
     #[inline]
-    pub(crate) fn live(&self) -> &crate::retention::Live {
+    pub(crate) fn live(&self) -> &crate::state::Live {
         &self.inner.live
     }
     /// How many objects of this device are alive (queues, command

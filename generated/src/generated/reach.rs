@@ -3,7 +3,7 @@
 //! What a struct names: the walks that keep objects alive. Every reaching
 //! struct has one, whether or not a command of this build uses it yet.
 #![allow(dead_code, unused_unsafe, clippy::missing_safety_doc)]
-use crate::retention::Live;
+use crate::state::Live;
 use ash::vk;
 use tuff_runtime::Retained;
 /// The live objects the structs of a `pNext` chain name.
@@ -501,7 +501,7 @@ pub(crate) unsafe fn acceleration_structure_info_nv(
     out: &mut Vec<Retained>,
 ) {
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_geometries, x.geometry_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_geometries, x.geometry_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::geometry_nv(y, live, out) };
     }
@@ -632,27 +632,23 @@ pub(crate) unsafe fn bind_sparse_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
+                crate::state::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
             }),
     );
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe {
-        crate::retention::raw_slice(x.p_buffer_binds, x.buffer_bind_count)
-    } {
+    for y in unsafe { crate::state::raw_slice(x.p_buffer_binds, x.buffer_bind_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_buffer_memory_bind_info(y, live, out) };
     }
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(x.p_image_opaque_binds, x.image_opaque_bind_count)
+        crate::state::raw_slice(x.p_image_opaque_binds, x.image_opaque_bind_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_image_opaque_memory_bind_info(y, live, out) };
     }
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe {
-        crate::retention::raw_slice(x.p_image_binds, x.image_bind_count)
-    } {
+    for y in unsafe { crate::state::raw_slice(x.p_image_binds, x.image_bind_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_image_memory_bind_info(y, live, out) };
     }
@@ -660,10 +656,7 @@ pub(crate) unsafe fn bind_sparse_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(
-                    x.p_signal_semaphores,
-                    x.signal_semaphore_count,
-                )
+                crate::state::raw_slice(x.p_signal_semaphores, x.signal_semaphore_count)
             }),
     );
 }
@@ -1165,7 +1158,7 @@ pub(crate) unsafe fn dependency_info(
 ) {
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(
+        crate::state::raw_slice(
             x.p_buffer_memory_barriers,
             x.buffer_memory_barrier_count,
         )
@@ -1175,10 +1168,7 @@ pub(crate) unsafe fn dependency_info(
     }
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(
-            x.p_image_memory_barriers,
-            x.image_memory_barrier_count,
-        )
+        crate::state::raw_slice(x.p_image_memory_barriers, x.image_memory_barrier_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::image_memory_barrier2(y, live, out) };
@@ -1261,7 +1251,7 @@ pub(crate) unsafe fn descriptor_set_allocate_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_set_layouts, x.descriptor_set_count)
+                crate::state::raw_slice(x.p_set_layouts, x.descriptor_set_count)
             }),
     );
 }
@@ -1296,7 +1286,7 @@ pub(crate) unsafe fn descriptor_set_layout_binding(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_immutable_samplers, x.descriptor_count)
+                crate::state::raw_slice(x.p_immutable_samplers, x.descriptor_count)
             }),
     );
 }
@@ -1313,7 +1303,7 @@ pub(crate) unsafe fn descriptor_set_layout_create_info(
     out: &mut Vec<Retained>,
 ) {
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_bindings, x.binding_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_bindings, x.binding_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::descriptor_set_layout_binding(y, live, out) };
     }
@@ -1382,10 +1372,7 @@ pub(crate) unsafe fn device_group_device_create_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(
-                    x.p_physical_devices,
-                    x.physical_device_count,
-                )
+                crate::state::raw_slice(x.p_physical_devices, x.physical_device_count)
             }),
     );
 }
@@ -1693,7 +1680,7 @@ pub(crate) unsafe fn framebuffer_create_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_attachments, x.attachment_count)
+                crate::state::raw_slice(x.p_attachments, x.attachment_count)
             }),
     );
 }
@@ -1713,7 +1700,7 @@ pub(crate) unsafe fn generated_commands_info_nv(
     out.extend(live.get(x.pipeline));
     out.extend(live.get(x.indirect_commands_layout));
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_streams, x.stream_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_streams, x.stream_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::indirect_commands_stream_nv(y, live, out) };
     }
@@ -1818,7 +1805,7 @@ pub(crate) unsafe fn graphics_pipeline_create_info(
     // SAFETY: the chain was built by `push_next` from live safe structs.
     unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_stages, x.stage_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
     }
@@ -1840,16 +1827,13 @@ pub(crate) unsafe fn graphics_pipeline_shader_groups_create_info_nv(
     out: &mut Vec<Retained>,
 ) {
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_groups, x.group_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_groups, x.group_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::graphics_shader_group_create_info_nv(y, live, out) };
     }
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live
-            .keep(unsafe {
-                crate::retention::raw_slice(x.p_pipelines, x.pipeline_count)
-            }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_pipelines, x.pipeline_count) }),
     );
 }
 ///The live objects a `VkGraphicsShaderGroupCreateInfoNV` names, directly or through what it points to.
@@ -1866,7 +1850,7 @@ pub(crate) unsafe fn graphics_shader_group_create_info_nv(
     out: &mut Vec<Retained>,
 ) {
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_stages, x.stage_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
     }
@@ -1901,7 +1885,7 @@ pub(crate) unsafe fn image_constraints_info_fuchsia(
 ) {
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(x.p_format_constraints, x.format_constraints_count)
+        crate::state::raw_slice(x.p_format_constraints, x.format_constraints_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::image_format_constraints_info_fuchsia(y, live, out) };
@@ -2160,7 +2144,7 @@ pub(crate) unsafe fn indirect_commands_layout_create_info_nv(
     out: &mut Vec<Retained>,
 ) {
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_tokens, x.token_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_tokens, x.token_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::indirect_commands_layout_token_nv(y, live, out) };
     }
@@ -2410,7 +2394,7 @@ pub(crate) unsafe fn pipeline_layout_create_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_set_layouts, x.set_layout_count)
+                crate::state::raw_slice(x.p_set_layouts, x.set_layout_count)
             }),
     );
 }
@@ -2429,7 +2413,7 @@ pub(crate) unsafe fn pipeline_library_create_info_khr(
 ) {
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live.keep(unsafe { crate::retention::raw_slice(x.p_libraries, x.library_count) }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_libraries, x.library_count) }),
     );
 }
 ///The live objects a `VkPipelineShaderStageCreateInfo` names, directly or through what it points to.
@@ -2467,15 +2451,12 @@ pub(crate) unsafe fn present_info_khr(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
+                crate::state::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
             }),
     );
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live
-            .keep(unsafe {
-                crate::retention::raw_slice(x.p_swapchains, x.swapchain_count)
-            }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_swapchains, x.swapchain_count) }),
     );
 }
 ///The live objects a `VkRayTracingPipelineCreateInfoKHR` names, directly or through what it points to.
@@ -2492,7 +2473,7 @@ pub(crate) unsafe fn ray_tracing_pipeline_create_info_khr(
     out: &mut Vec<Retained>,
 ) {
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_stages, x.stage_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
     }
@@ -2518,7 +2499,7 @@ pub(crate) unsafe fn ray_tracing_pipeline_create_info_nv(
     out: &mut Vec<Retained>,
 ) {
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_stages, x.stage_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_stages, x.stage_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::pipeline_shader_stage_create_info(y, live, out) };
     }
@@ -2556,7 +2537,7 @@ pub(crate) unsafe fn render_pass_attachment_begin_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_attachments, x.attachment_count)
+                crate::state::raw_slice(x.p_attachments, x.attachment_count)
             }),
     );
 }
@@ -2638,7 +2619,7 @@ pub(crate) unsafe fn rendering_info(
     unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(x.p_color_attachments, x.color_attachment_count)
+        crate::state::raw_slice(x.p_color_attachments, x.color_attachment_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::rendering_attachment_info(y, live, out) };
@@ -2800,10 +2781,7 @@ pub(crate) unsafe fn semaphore_wait_info(
 ) {
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live
-            .keep(unsafe {
-                crate::retention::raw_slice(x.p_semaphores, x.semaphore_count)
-            }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_semaphores, x.semaphore_count) }),
     );
 }
 ///The live objects a `VkShaderModuleCreateInfo` names, directly or through what it points to.
@@ -2850,7 +2828,7 @@ pub(crate) unsafe fn sparse_buffer_memory_bind_info(
 ) {
     out.extend(live.get(x.buffer));
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_binds, x.bind_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_binds, x.bind_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_memory_bind(y, live, out) };
     }
@@ -2883,7 +2861,7 @@ pub(crate) unsafe fn sparse_image_memory_bind_info(
 ) {
     out.extend(live.get(x.image));
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_binds, x.bind_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_binds, x.bind_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_image_memory_bind(y, live, out) };
     }
@@ -2902,7 +2880,7 @@ pub(crate) unsafe fn sparse_image_opaque_memory_bind_info(
 ) {
     out.extend(live.get(x.image));
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_binds, x.bind_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_binds, x.bind_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::sparse_memory_bind(y, live, out) };
     }
@@ -2939,24 +2917,21 @@ pub(crate) unsafe fn submit_info(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
+                crate::state::raw_slice(x.p_wait_semaphores, x.wait_semaphore_count)
             }),
     );
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_command_buffers, x.command_buffer_count)
+                crate::state::raw_slice(x.p_command_buffers, x.command_buffer_count)
             }),
     );
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(
-                    x.p_signal_semaphores,
-                    x.signal_semaphore_count,
-                )
+                crate::state::raw_slice(x.p_signal_semaphores, x.signal_semaphore_count)
             }),
     );
 }
@@ -2976,27 +2951,21 @@ pub(crate) unsafe fn submit_info2(
     unsafe { next(x.p_next, live, out) };
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(
-            x.p_wait_semaphore_infos,
-            x.wait_semaphore_info_count,
-        )
+        crate::state::raw_slice(x.p_wait_semaphore_infos, x.wait_semaphore_info_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::semaphore_submit_info(y, live, out) };
     }
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(
-            x.p_command_buffer_infos,
-            x.command_buffer_info_count,
-        )
+        crate::state::raw_slice(x.p_command_buffer_infos, x.command_buffer_info_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::command_buffer_submit_info(y, live, out) };
     }
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(
+        crate::state::raw_slice(
             x.p_signal_semaphore_infos,
             x.signal_semaphore_info_count,
         )
@@ -3051,7 +3020,7 @@ pub(crate) unsafe fn swapchain_present_fence_info_ext(
 ) {
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live.keep(unsafe { crate::retention::raw_slice(x.p_fences, x.swapchain_count) }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_fences, x.swapchain_count) }),
     );
 }
 ///The live objects a `VkVideoBeginCodingInfoKHR` names, directly or through what it points to.
@@ -3071,7 +3040,7 @@ pub(crate) unsafe fn video_begin_coding_info_khr(
     out.extend(live.get(x.video_session_parameters));
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(x.p_reference_slots, x.reference_slot_count)
+        crate::state::raw_slice(x.p_reference_slots, x.reference_slot_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::video_reference_slot_info_khr(y, live, out) };
@@ -3102,7 +3071,7 @@ pub(crate) unsafe fn video_decode_info_khr(
     }
     // SAFETY: the safe setter stored this array with its length.
     for y in unsafe {
-        crate::retention::raw_slice(x.p_reference_slots, x.reference_slot_count)
+        crate::state::raw_slice(x.p_reference_slots, x.reference_slot_count)
     } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::video_reference_slot_info_khr(y, live, out) };
@@ -3173,17 +3142,11 @@ pub(crate) unsafe fn win32_keyed_mutex_acquire_release_info_khr(
 ) {
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live
-            .keep(unsafe {
-                crate::retention::raw_slice(x.p_acquire_syncs, x.acquire_count)
-            }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_acquire_syncs, x.acquire_count) }),
     );
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live
-            .keep(unsafe {
-                crate::retention::raw_slice(x.p_release_syncs, x.release_count)
-            }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_release_syncs, x.release_count) }),
     );
 }
 ///The live objects a `VkWin32KeyedMutexAcquireReleaseInfoNV` names, directly or through what it points to.
@@ -3201,17 +3164,11 @@ pub(crate) unsafe fn win32_keyed_mutex_acquire_release_info_nv(
 ) {
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live
-            .keep(unsafe {
-                crate::retention::raw_slice(x.p_acquire_syncs, x.acquire_count)
-            }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_acquire_syncs, x.acquire_count) }),
     );
     // SAFETY: the safe setter stored this array with its length.
     out.extend(
-        live
-            .keep(unsafe {
-                crate::retention::raw_slice(x.p_release_syncs, x.release_count)
-            }),
+        live.keep(unsafe { crate::state::raw_slice(x.p_release_syncs, x.release_count) }),
     );
 }
 ///The live objects a `VkWriteDescriptorSet` names, directly or through what it points to.
@@ -3230,14 +3187,12 @@ pub(crate) unsafe fn write_descriptor_set(
     unsafe { next(x.p_next, live, out) };
     out.extend(live.get(x.dst_set));
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe { crate::retention::raw_slice(x.p_image_info, x.descriptor_count) } {
+    for y in unsafe { crate::state::raw_slice(x.p_image_info, x.descriptor_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::descriptor_image_info(y, live, out) };
     }
     // SAFETY: the safe setter stored this array with its length.
-    for y in unsafe {
-        crate::retention::raw_slice(x.p_buffer_info, x.descriptor_count)
-    } {
+    for y in unsafe { crate::state::raw_slice(x.p_buffer_info, x.descriptor_count) } {
         // SAFETY: `y` is a live safe struct, as the walk requires.
         unsafe { crate::reach::descriptor_buffer_info(y, live, out) };
     }
@@ -3245,7 +3200,7 @@ pub(crate) unsafe fn write_descriptor_set(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(x.p_texel_buffer_view, x.descriptor_count)
+                crate::state::raw_slice(x.p_texel_buffer_view, x.descriptor_count)
             }),
     );
 }
@@ -3266,7 +3221,7 @@ pub(crate) unsafe fn write_descriptor_set_acceleration_structure_khr(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     x.p_acceleration_structures,
                     x.acceleration_structure_count,
                 )
@@ -3290,7 +3245,7 @@ pub(crate) unsafe fn write_descriptor_set_acceleration_structure_nv(
     out.extend(
         live
             .keep(unsafe {
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     x.p_acceleration_structures,
                     x.acceleration_structure_count,
                 )

@@ -5,7 +5,7 @@ use super::image::external_handle_types;
 use super::{chained, family_count, limits, refuse, vulkan13_properties};
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
-use crate::retention::BufferRecord;
+use crate::state::BufferRecord;
 use crate::structs::*;
 use crate::{Error, Handle, Result};
 use ash::vk;
@@ -199,7 +199,7 @@ pub(crate) fn create_buffer_checks(
     if raw.sharing_mode == vk::SharingMode::CONCURRENT {
         // SAFETY: the safe setter stored the indices with their count.
         let families = unsafe {
-            crate::retention::raw_slice(raw.p_queue_family_indices, raw.queue_family_index_count)
+            crate::state::raw_slice(raw.p_queue_family_indices, raw.queue_family_index_count)
         };
         concurrent_families(
             device.parent(),

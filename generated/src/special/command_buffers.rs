@@ -2,9 +2,10 @@
 //! execution of secondaries from a primary.
 
 use super::image_layouts::execute_layout_checks;
-use super::{refuse, PoolFamily};
+use super::refuse;
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
+use crate::state::PoolFamily;
 use crate::structs::*;
 use crate::submission::{self};
 use crate::{Error, Handle, Result};

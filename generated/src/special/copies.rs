@@ -2,10 +2,11 @@
 //! the resources it names, their usage, formats and protection.
 
 use super::buffer::{buffer_record, check_buffer_use, used_buffer};
-use super::{pool_family, refuse, PoolFamily};
+use super::{pool_family, refuse};
 use crate::handles::{Device, *};
 use crate::recorder::{Recorder, Scope};
-use crate::retention::ImageRecord;
+use crate::state::ImageRecord;
+use crate::state::PoolFamily;
 use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
@@ -351,7 +352,7 @@ pub(crate) fn cmd_copy_buffer_to_image2_checks<S: Scope>(
 ) -> Result<()> {
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
-    let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
+    let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
     let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
     check_buffer_image_copy(
         recorder,
@@ -372,7 +373,7 @@ pub(crate) fn cmd_copy_image_to_buffer2_checks<S: Scope>(
 ) -> Result<()> {
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
-    let regions = unsafe { crate::retention::raw_slice(raw.p_regions, raw.region_count) };
+    let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
     let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
     check_buffer_image_copy(
         recorder,

@@ -3,7 +3,7 @@
 
 use super::{chained, refuse, vulkan13_properties};
 use crate::handles::*;
-use crate::retention::{BindingRecord, SetLayoutRecord};
+use crate::state::{BindingRecord, SetLayoutRecord};
 use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
@@ -16,7 +16,7 @@ pub(crate) fn descriptor_set_layout_created(
 ) -> DescriptorSetLayout {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stored the bindings with their count.
-    let bindings = unsafe { crate::retention::raw_slice(raw.p_bindings, raw.binding_count) };
+    let bindings = unsafe { crate::state::raw_slice(raw.p_bindings, raw.binding_count) };
     // SAFETY: `raw` is a safe struct's.
     let flags: Option<&vk::DescriptorSetLayoutBindingFlagsCreateInfo<'_>> = unsafe {
         chained(
@@ -27,7 +27,7 @@ pub(crate) fn descriptor_set_layout_created(
     // SAFETY: the safe setter stored the flags with their count (its checks made that
     // count 0 or the bindings').
     let flags = flags.map_or(&[][..], |f| unsafe {
-        crate::retention::raw_slice(f.p_binding_flags, f.binding_count)
+        crate::state::raw_slice(f.p_binding_flags, f.binding_count)
     });
     let variable = bindings
         .iter()
@@ -43,7 +43,7 @@ pub(crate) fn descriptor_set_layout_created(
             } else {
                 // SAFETY: the safe setter stores the samplers with the binding's
                 // count.
-                unsafe { crate::retention::raw_slice(b.p_immutable_samplers, b.descriptor_count) }
+                unsafe { crate::state::raw_slice(b.p_immutable_samplers, b.descriptor_count) }
             };
             let record = BindingRecord {
                 binding: b.binding,
@@ -129,7 +129,7 @@ pub(crate) fn descriptor_set_layout_checks(
 ) -> Result<()> {
     let info = create_info.as_raw();
     // SAFETY: the safe setter stores the bindings with their count.
-    let bindings = unsafe { crate::retention::raw_slice(info.p_bindings, info.binding_count) };
+    let bindings = unsafe { crate::state::raw_slice(info.p_bindings, info.binding_count) };
     // The stages of the emitted API: the graphics stages and compute.
     let stages = vk::ShaderStageFlags::ALL_GRAPHICS | vk::ShaderStageFlags::COMPUTE;
     for (i, b) in bindings.iter().enumerate() {
@@ -182,7 +182,7 @@ pub(crate) fn descriptor_set_layout_checks(
     };
     // SAFETY: the safe setter stores the flags with their count.
     let all_flags = unsafe {
-        crate::retention::raw_slice(binding_flags.p_binding_flags, binding_flags.binding_count)
+        crate::state::raw_slice(binding_flags.p_binding_flags, binding_flags.binding_count)
     };
     let dynamic = [
         vk::DescriptorType::UNIFORM_BUFFER_DYNAMIC,
@@ -240,7 +240,7 @@ pub(crate) fn descriptor_set_layout_checks(
     }
     // SAFETY: the safe setter stores the flags with their count.
     let flags = unsafe {
-        crate::retention::raw_slice(binding_flags.p_binding_flags, binding_flags.binding_count)
+        crate::state::raw_slice(binding_flags.p_binding_flags, binding_flags.binding_count)
     };
     let (v12, v13) = device.live().with_features(|f| (f.v12, f.v13));
     let on = |b: vk::Bool32| b == vk::TRUE;

@@ -5,7 +5,7 @@
 use super::ask_properties2;
 use super::{chained, limits, refuse};
 use crate::handles::*;
-use crate::retention::{raw_slice, BindingRecord, Live, SetLayoutRecord};
+use crate::state::{raw_slice, BindingRecord, Live, SetLayoutRecord};
 use crate::structs::*;
 use crate::{Error, Handle, Result};
 use ash::vk;
@@ -69,7 +69,7 @@ pub(crate) fn descriptor_update_template_created(
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stored the entries with their count.
     template.with_entries(unsafe {
-        crate::retention::raw_slice(
+        crate::state::raw_slice(
             raw.p_descriptor_update_entries,
             raw.descriptor_update_entry_count,
         )
@@ -86,8 +86,7 @@ pub(crate) fn descriptor_sets_allocated(
 ) -> Vec<DescriptorSet> {
     let raw = allocate_info.as_raw();
     // SAFETY: the safe setter stored the layouts with their count.
-    let layouts =
-        unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
+    let layouts = unsafe { crate::state::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
     let counts = variable_counts(allocate_info);
     for (i, (set, layout)) in sets.iter().zip(layouts).enumerate() {
         let mut record = device.live().set_layout(*layout).unwrap_or_default();
@@ -130,7 +129,7 @@ fn variable_counts<'a>(allocate_info: &'a DescriptorSetAllocateInfo<'_>) -> &'a 
     };
     // SAFETY: the safe setter stored the counts with their count.
     variable.map_or(&[], |v| unsafe {
-        crate::retention::raw_slice(v.p_descriptor_counts, v.descriptor_set_count)
+        crate::state::raw_slice(v.p_descriptor_counts, v.descriptor_set_count)
     })
 }
 
@@ -143,8 +142,7 @@ pub(crate) fn allocate_descriptor_sets_layouts(
 ) -> Result<()> {
     let raw = allocate_info.as_raw();
     // SAFETY: the safe setter stored the layouts with their count.
-    let layouts =
-        unsafe { crate::retention::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
+    let layouts = unsafe { crate::state::raw_slice(raw.p_set_layouts, raw.descriptor_set_count) };
     let counts = variable_counts(allocate_info);
     let pool_uab = descriptor_pool
         .pool_flags()
@@ -259,7 +257,7 @@ pub(crate) fn update_descriptor_sets_checks(
     descriptor_copies: &[CopyDescriptorSet<'_>],
 ) -> Result<()> {
     let writes = raw_writes(descriptor_writes);
-    crate::retention::Live::check_writes(writes)?;
+    crate::state::Live::check_writes(writes)?;
     let live = device.live();
     let layout_of = |set: vk::DescriptorSet| {
         live.set_layout_of(set).ok_or(Error::Misuse(
@@ -989,13 +987,13 @@ fn written_sets(
                 // it, which a pending submission did before the rewrite: rewriting
                 // one under it is refused even where the binding allows updates
                 // while pending.
-                guarded |= !b.flags.intersects(while_pending)
-                    || crate::retention::names_image_layout(b.ty);
+                guarded |=
+                    !b.flags.intersects(while_pending) || crate::state::names_image_layout(b.ty);
                 // A recording follows the layouts of the image descriptors its sets
                 // held when it bound them: rewriting one leaves it invalid even in a
                 // binding updatable after bind.
                 invalidates |=
-                    !b.flags.contains(after_bind) || crate::retention::names_image_layout(b.ty);
+                    !b.flags.contains(after_bind) || crate::state::names_image_layout(b.ty);
             }
             (set, guarded, invalidates)
         })

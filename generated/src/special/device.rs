@@ -394,9 +394,8 @@ pub(crate) fn create_device_checks(
     let families = physical.get_queue_family_properties()?;
     let protected_memory = enabled_features(create_info).v11.protected_memory == vk::TRUE;
     // SAFETY: the safe setter stores the queue create infos with their count.
-    let queues = unsafe {
-        crate::retention::raw_slice(info.p_queue_create_infos, info.queue_create_info_count)
-    };
+    let queues =
+        unsafe { crate::state::raw_slice(info.p_queue_create_infos, info.queue_create_info_count) };
     for (i, q) in queues.iter().enumerate() {
         let at = format!("pQueueCreateInfos[{i}]");
         let Some(family) = families.get(q.queue_family_index as usize) else {
@@ -415,8 +414,7 @@ pub(crate) fn create_device_checks(
             )?;
         }
         // SAFETY: the safe setter stores the priorities with their count.
-        let priorities =
-            unsafe { crate::retention::raw_slice(q.p_queue_priorities, q.queue_count) };
+        let priorities = unsafe { crate::state::raw_slice(q.p_queue_priorities, q.queue_count) };
         if let Some(p) = priorities.iter().find(|p| !(0.0..=1.0).contains(*p)) {
             refuse(
                 "VUID-VkDeviceQueueCreateInfo-pQueuePriorities-00383",
@@ -554,9 +552,8 @@ fn device_group_members(physical: &PhysicalDevice, next: *const core::ffi::c_voi
         return Ok(());
     };
     // SAFETY: the safe setter stores the wrappers' handles with their count.
-    let members = unsafe {
-        crate::retention::raw_slice(group.p_physical_devices, group.physical_device_count)
-    };
+    let members =
+        unsafe { crate::state::raw_slice(group.p_physical_devices, group.physical_device_count) };
     if let Some(i) = (1..members.len()).find(|&i| members[..i].contains(&members[i])) {
         refuse(
             "VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375",

@@ -7,7 +7,7 @@ use super::draw_descriptors::{
 };
 use super::refuse;
 use crate::recorder::{Recorder, Scope};
-use crate::retention::{PipelineRecord, SetLayoutRecord};
+use crate::state::{PipelineRecord, SetLayoutRecord};
 use crate::{Error, Result};
 use ash::vk;
 use ash::vk::Handle as _;
@@ -404,8 +404,8 @@ fn count_checks(
 /// view mask, color attachment count or formats (`UNDEFINED` where the instance's
 /// attachment has no view), or depth or stencil format differ.
 fn rendering_checks(
-    made_for: &crate::retention::RenderingFormats,
-    current: &crate::retention::RenderingFormats,
+    made_for: &crate::state::RenderingFormats,
+    current: &crate::state::RenderingFormats,
     rules: &[&'static str; 8],
 ) -> Result<()> {
     let undefined = vk::Format::UNDEFINED;
@@ -510,20 +510,20 @@ pub(crate) fn descriptor_layouts_used<S: Scope>(
     let bound = &recorder.bound[i];
     let n = bound.pipeline.as_ref().map_or(0, |p| p.layout.sets.len());
     // Most draws read no image descriptor: nothing to collect.
-    let image = |l: &crate::retention::SetImages| {
+    let image = |l: &crate::state::SetImages| {
         l.iter()
-            .any(|(_, d)| d.kind == crate::retention::SlotKind::Image)
+            .any(|(_, d)| d.kind == crate::state::SlotKind::Image)
     };
     if !bound.images.iter().take(n).flatten().any(image) {
         return;
     }
-    let lists: SmallVec<[crate::retention::SetImages; 4]> =
+    let lists: SmallVec<[crate::state::SetImages; 4]> =
         bound.images.iter().take(n).flatten().cloned().collect();
     let (live, layouts) = recorder.layouts_mut();
     let images = lists
         .iter()
         .flat_map(|l| l.iter().map(|(_, d)| d))
-        .filter(|d| d.kind == crate::retention::SlotKind::Image);
+        .filter(|d| d.kind == crate::state::SlotKind::Image);
     for d in images {
         layouts.require(live, d.image, d.sel, d.layout, DESCRIPTOR_LAYOUT);
     }
@@ -636,7 +636,7 @@ fn attachment_images<S: Scope>(recorder: &Recorder<'_, S>) -> Option<Vec<vk::Ima
 }
 
 /// Whether two bindings of memory overlap.
-pub(super) fn overlaps(a: &crate::retention::Binding, b: &crate::retention::Binding) -> bool {
+pub(super) fn overlaps(a: &crate::state::Binding, b: &crate::state::Binding) -> bool {
     let ((memory_a, offset_a, size_a), (memory_b, offset_b, size_b)) = (*a, *b);
     memory_a == memory_b
         && offset_a < offset_b.saturating_add(size_b)
@@ -654,8 +654,8 @@ pub(super) fn overlaps(a: &crate::retention::Binding, b: &crate::retention::Bind
 /// secondary continuing an instance without its framebuffer), a draw whose shaders
 /// declare a descriptor of memory is refused.
 fn attachment_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &AttachmentRules) -> Result<()> {
-    use crate::retention::SlotKind;
     use crate::spirv::ResourceKind as K;
+    use crate::state::SlotKind;
     let (Some(instance), Some(pipeline)) = (&recorder.instance, &recorder.bound[0].pipeline) else {
         return Ok(());
     };

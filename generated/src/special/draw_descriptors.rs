@@ -6,7 +6,7 @@ use super::draw::ShaderRules;
 use super::refuse;
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
-use crate::retention::PipelineRecord;
+use crate::state::PipelineRecord;
 use crate::{Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
@@ -21,7 +21,7 @@ pub(super) const DESCRIPTOR_LAYOUT: &str = "VUID-VkDescriptorImageInfo-imageLayo
 #[inline]
 fn used_images(
     bound: &crate::recorder::Bound,
-) -> impl Iterator<Item = &crate::retention::ImageDescriptor> {
+) -> impl Iterator<Item = &crate::state::ImageDescriptor> {
     let n = bound.pipeline.as_ref().map_or(0, |p| p.layout.sets.len());
     bound
         .images
@@ -29,7 +29,7 @@ fn used_images(
         .take(n)
         .flatten()
         .flat_map(|images| images.iter().map(|(_, d)| d))
-        .filter(|d| d.kind == crate::retention::SlotKind::Image)
+        .filter(|d| d.kind == crate::state::SlotKind::Image)
 }
 
 /// The features of `format` as `VkFormatProperties3` gives them (where the device
@@ -93,7 +93,7 @@ fn format_features2(device: &Device, format: vk::Format) -> Result<[vk::FormatFe
 /// ([`format_features2`]).
 fn view_features2(
     device: &Device,
-    d: &crate::retention::ImageDescriptor,
+    d: &crate::state::ImageDescriptor,
 ) -> Result<vk::FormatFeatureFlags2> {
     let linear = device
         .live()
@@ -148,7 +148,7 @@ pub(super) fn protected_checks<S: Scope>(
 /// `STORAGE_IMAGE_ATOMIC`.
 fn atomic_checks(
     device: &Device,
-    d: &crate::retention::ImageDescriptor,
+    d: &crate::state::ImageDescriptor,
     at: &dyn Fn() -> String,
     vuid: &'static str,
 ) -> Result<()> {
@@ -282,11 +282,11 @@ pub(super) fn bound_descriptor_checks(
         };
         for ((_, element), d) in images.iter().filter(|((b, _), _)| *b == binding) {
             let at = || format!("set {set} binding {binding} element {element}");
-            if d.kind == crate::retention::SlotKind::TexelBuffer {
+            if d.kind == crate::state::SlotKind::TexelBuffer {
                 texel_buffer_checks(device, r, shape, d, &at, rules)?;
                 continue;
             }
-            if d.kind != crate::retention::SlotKind::Image {
+            if d.kind != crate::state::SlotKind::Image {
                 continue;
             }
             let samplers = if r.kind == crate::spirv::ResourceKind::CombinedImageSampler {
@@ -365,7 +365,7 @@ pub(super) fn bound_descriptor_checks(
     Ok(())
 }
 
-/// What the samplers at binding `binding` of set `set` do ([`crate::retention::sampler_bits`]):
+/// What the samplers at binding `binding` of set `set` do ([`crate::state::sampler_bits`]):
 /// the binding's immutable samplers, and `own` (a combined image sampler's) or,
 /// without it, every sampler written there.
 fn slot_sampler_bits(
@@ -395,7 +395,7 @@ fn slot_sampler_bits(
 }
 
 /// Refuses a draw or dispatch whose shaders sample the image view of `d` with
-/// samplers (`samplers`, their [`crate::retention::sampler_bits`]) it does not allow:
+/// samplers (`samplers`, their [`crate::state::sampler_bits`]) it does not allow:
 /// linear filtering or linear mipmaps where the view's format features lack
 /// `SAMPLED_IMAGE_FILTER_LINEAR` (04553, 04770); unnormalized coordinates on a view
 /// of a type other than 1D or 2D (02702), with implicit-LOD, depth-comparison or
@@ -405,15 +405,15 @@ fn slot_sampler_bits(
 fn sampled_view_checks(
     device: &Device,
     r: &crate::spirv::Resource,
-    d: &crate::retention::ImageDescriptor,
+    d: &crate::state::ImageDescriptor,
     samplers: u8,
     at: &dyn Fn() -> String,
     rules: &ShaderRules,
 ) -> Result<()> {
-    use crate::retention::{
+    use crate::spirv::ops;
+    use crate::state::{
         SAMPLER_LINEAR, SAMPLER_MIPMAP_LINEAR, SAMPLER_UNNORMALIZED, SAMPLER_YCBCR,
     };
-    use crate::spirv::ops;
     let sampled = r.ops & ops::SAMPLE != 0;
     if sampled && samplers & (SAMPLER_LINEAR | SAMPLER_MIPMAP_LINEAR) != 0 {
         let linear = view_features2(device, d)?
@@ -499,7 +499,7 @@ fn texel_buffer_checks(
     device: &Device,
     r: &crate::spirv::Resource,
     shape: crate::spirv::ImageShape,
-    d: &crate::retention::ImageDescriptor,
+    d: &crate::state::ImageDescriptor,
     at: &dyn Fn() -> String,
     rules: &ShaderRules,
 ) -> Result<()> {

@@ -5,7 +5,7 @@ use super::buffer::used_buffer;
 use super::{limits, refuse};
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
-use crate::retention::{LayoutRecord, SetLayoutRecord};
+use crate::state::{LayoutRecord, SetLayoutRecord};
 use crate::{Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;

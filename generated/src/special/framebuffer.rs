@@ -11,31 +11,31 @@ use ash::vk;
 /// with image views and for an imageless one.
 const ROLE_USAGE: [(u8, vk::ImageUsageFlags, &str, &str); 5] = [
     (
-        crate::retention::USED_COLOR,
+        crate::state::USED_COLOR,
         vk::ImageUsageFlags::COLOR_ATTACHMENT,
         "VUID-VkFramebufferCreateInfo-pAttachments-00877",
         "VUID-VkFramebufferCreateInfo-flags-03201",
     ),
     (
-        crate::retention::USED_RESOLVE,
+        crate::state::USED_RESOLVE,
         vk::ImageUsageFlags::COLOR_ATTACHMENT,
         "VUID-VkFramebufferCreateInfo-pAttachments-00877",
         "VUID-VkFramebufferCreateInfo-flags-03201",
     ),
     (
-        crate::retention::USED_DEPTH,
+        crate::state::USED_DEPTH,
         vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
         "VUID-VkFramebufferCreateInfo-pAttachments-02633",
         "VUID-VkFramebufferCreateInfo-flags-03202",
     ),
     (
-        crate::retention::USED_INPUT,
+        crate::state::USED_INPUT,
         vk::ImageUsageFlags::INPUT_ATTACHMENT,
         "VUID-VkFramebufferCreateInfo-pAttachments-00879",
         "VUID-VkFramebufferCreateInfo-flags-03204",
     ),
     (
-        crate::retention::USED_DEPTH_RESOLVE,
+        crate::state::USED_DEPTH_RESOLVE,
         vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
         "VUID-VkFramebufferCreateInfo-pAttachments-02634",
         "VUID-VkFramebufferCreateInfo-flags-03202",
@@ -75,15 +75,15 @@ pub(crate) fn create_framebuffer_checks(
         )?;
     }
     let views_needed = 32 - masks.leading_zeros();
-    let attachment_roles = crate::retention::USED_COLOR
-        | crate::retention::USED_RESOLVE
-        | crate::retention::USED_DEPTH
-        | crate::retention::USED_INPUT;
+    let attachment_roles = crate::state::USED_COLOR
+        | crate::state::USED_RESOLVE
+        | crate::state::USED_DEPTH
+        | crate::state::USED_INPUT;
     if info.flags.contains(vk::FramebufferCreateFlags::IMAGELESS) {
         return imageless_checks(info, &pass.attachments, multiview, views_needed);
     }
     // SAFETY: the safe setter stores the views with their count.
-    let views = unsafe { crate::retention::raw_slice(info.p_attachments, info.attachment_count) };
+    let views = unsafe { crate::state::raw_slice(info.p_attachments, info.attachment_count) };
     for (i, raw) in views.iter().enumerate() {
         let at = format!("pAttachments[{i}]");
         let Some(view) = device.live().view(*raw) else {
@@ -226,11 +226,11 @@ fn imageless_checks(
         )?;
     }
     // SAFETY: the safe setter stores the infos with their count.
-    let images = unsafe { crate::retention::raw_slice(chained.p_attachment_image_infos, count) };
-    let roles_any = crate::retention::USED_COLOR
-        | crate::retention::USED_RESOLVE
-        | crate::retention::USED_DEPTH
-        | crate::retention::USED_INPUT;
+    let images = unsafe { crate::state::raw_slice(chained.p_attachment_image_infos, count) };
+    let roles_any = crate::state::USED_COLOR
+        | crate::state::USED_RESOLVE
+        | crate::state::USED_DEPTH
+        | crate::state::USED_INPUT;
     for (i, (a, &(format, _, roles))) in images.iter().zip(attachments).enumerate() {
         let at = format!("pAttachmentImageInfos[{i}]");
         for (role, bit, _, vuid) in ROLE_USAGE {
@@ -239,7 +239,7 @@ fn imageless_checks(
             }
         }
         // SAFETY: the safe setter stores the formats with their count.
-        let formats = unsafe { crate::retention::raw_slice(a.p_view_formats, a.view_format_count) };
+        let formats = unsafe { crate::state::raw_slice(a.p_view_formats, a.view_format_count) };
         if !formats.contains(&format) {
             refuse(
                 "VUID-VkFramebufferCreateInfo-flags-03205",
@@ -302,7 +302,7 @@ pub(crate) fn framebuffer_created(
         &[][..]
     } else {
         // SAFETY: the safe setter stores the attachments with their count.
-        unsafe { crate::retention::raw_slice(info.p_attachments, info.attachment_count) }
+        unsafe { crate::state::raw_slice(info.p_attachments, info.attachment_count) }
     };
     device.live().framebuffer_created(
         framebuffer.raw(),
@@ -325,7 +325,7 @@ pub(crate) fn framebuffer_created(
     ) {
         // SAFETY: the safe setters store each array with its count.
         let infos = unsafe {
-            crate::retention::raw_slice(
+            crate::state::raw_slice(
                 images.p_attachment_image_infos,
                 images.attachment_image_info_count,
             )
@@ -334,10 +334,9 @@ pub(crate) fn framebuffer_created(
         .map(|i| {
             // SAFETY: as above.
             let mut formats =
-                unsafe { crate::retention::raw_slice(i.p_view_formats, i.view_format_count) }
-                    .to_vec();
+                unsafe { crate::state::raw_slice(i.p_view_formats, i.view_format_count) }.to_vec();
             formats.sort_by_key(|f| f.as_raw());
-            crate::retention::AttachmentImage {
+            crate::state::AttachmentImage {
                 flags: i.flags,
                 usage: i.usage,
                 size: [i.width, i.height, i.layer_count],

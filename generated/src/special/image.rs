@@ -5,7 +5,7 @@ use super::buffer::concurrent_families;
 use super::memory::{each_bit, external_image_properties};
 use super::{chained, limits, refuse, vulkan13_properties};
 use crate::handles::*;
-use crate::retention::ImageRecord;
+use crate::state::ImageRecord;
 use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
@@ -41,7 +41,7 @@ pub(crate) fn image_created(
     };
     // SAFETY: the safe setter stores the formats with their count.
     let views = list.map_or(&[][..], |l| unsafe {
-        crate::retention::raw_slice(l.p_view_formats, l.view_format_count)
+        crate::state::raw_slice(l.p_view_formats, l.view_format_count)
     });
     device.live().image_created(
         image.raw(),
@@ -76,7 +76,7 @@ pub(super) fn family_bits(sharing: vk::SharingMode, info: &vk::ImageCreateInfo<'
     }
     // SAFETY: the safe setter stores the indices with their count.
     let families = unsafe {
-        crate::retention::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
+        crate::state::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
     };
     families
         .iter()
@@ -628,8 +628,7 @@ pub(crate) fn image_create_rules(device: &Device, create_info: &ImageCreateInfo<
             )?;
         }
         // SAFETY: the safe setter stores the formats with their count.
-        let views =
-            unsafe { crate::retention::raw_slice(list.p_view_formats, list.view_format_count) };
+        let views = unsafe { crate::state::raw_slice(list.p_view_formats, list.view_format_count) };
         let class = crate::formats::class(info.format);
         let block_texel = flags.contains(vk::ImageCreateFlags::BLOCK_TEXEL_VIEW_COMPATIBLE);
         let size = crate::formats::block(info.format, vk::ImageAspectFlags::COLOR).map(|b| b.0);
@@ -674,7 +673,7 @@ fn swapchain_image_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> Res
     let Some(implied) = device.live().swapchain(swapchain) else {
         return Ok(());
     };
-    let made = crate::retention::ImageRecord {
+    let made = crate::state::ImageRecord {
         flags: info.flags,
         image_type: info.image_type,
         format: info.format,
@@ -718,7 +717,7 @@ fn sharing_and_group_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> R
     if info.sharing_mode == vk::SharingMode::CONCURRENT {
         // SAFETY: the safe setter stores the indices with their count.
         let families = unsafe {
-            crate::retention::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
+            crate::state::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
         };
         concurrent_families(
             device.parent(),

@@ -78,7 +78,7 @@ fn dependency_barriers<'i>(
         .flat_map(|d| {
             // SAFETY: the safe struct stores the array with its length.
             unsafe {
-                crate::retention::raw_slice(d.p_image_memory_barriers, d.image_memory_barrier_count)
+                crate::state::raw_slice(d.p_image_memory_barriers, d.image_memory_barrier_count)
             }
         })
         .map(|b| barrier2(b, ours))
@@ -250,7 +250,7 @@ impl Names<'_> {
                     i.dst_image_layout,
                     "VUID-VkCopyImageInfo2-dstImageLayout-00133",
                 ),
-                unsafe { crate::retention::raw_slice(i.p_regions, i.region_count) },
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) },
                 |r| (r.src_subresource, r.dst_subresource),
             ),
             Names::BlitImage2(i) => two_images(
@@ -264,7 +264,7 @@ impl Names<'_> {
                     i.dst_image_layout,
                     "VUID-VkBlitImageInfo2-dstImageLayout-00226",
                 ),
-                unsafe { crate::retention::raw_slice(i.p_regions, i.region_count) },
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) },
                 |r| (r.src_subresource, r.dst_subresource),
             ),
             Names::ResolveImage2(i) => two_images(
@@ -278,7 +278,7 @@ impl Names<'_> {
                     i.dst_image_layout,
                     "VUID-VkResolveImageInfo2-dstImageLayout-00262",
                 ),
-                unsafe { crate::retention::raw_slice(i.p_regions, i.region_count) },
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) },
                 |r| (r.src_subresource, r.dst_subresource),
             ),
             Names::BufferToImage(image, layout, r) => uses(
@@ -298,7 +298,7 @@ impl Names<'_> {
             Names::BufferToImage2(i) => uses(
                 i.dst_image,
                 i.dst_image_layout,
-                unsafe { crate::retention::raw_slice(i.p_regions, i.region_count) }
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) }
                     .iter()
                     .map(|r| Sel::layers(&r.image_subresource)),
                 "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180",
@@ -307,7 +307,7 @@ impl Names<'_> {
             Names::ImageToBuffer2(i) => uses(
                 i.src_image,
                 i.src_image_layout,
-                unsafe { crate::retention::raw_slice(i.p_regions, i.region_count) }
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) }
                     .iter()
                     .map(|r| Sel::layers(&r.image_subresource)),
                 "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00189",
@@ -398,7 +398,7 @@ pub(crate) fn execute_layouts_done<S: Scope>(
 /// The image views a render pass instance renders to: its framebuffer's, or those
 /// an imageless framebuffer's begin info chains.
 pub(crate) fn pass_views(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     render_pass_begin: &RenderPassBeginInfo<'_>,
 ) -> Vec<vk::ImageView> {
     let raw = render_pass_begin.as_raw();
@@ -415,7 +415,7 @@ pub(crate) fn pass_views(
     };
     imageless.map_or(Vec::new(), |i| {
         // SAFETY: the safe setter stores the views with their count.
-        unsafe { crate::retention::raw_slice(i.p_attachments, i.attachment_count) }.to_vec()
+        unsafe { crate::state::raw_slice(i.p_attachments, i.attachment_count) }.to_vec()
     })
 }
 
@@ -423,7 +423,7 @@ pub(crate) fn pass_views(
 /// rule) and leaves them in: each attachment's view, split by aspect where the
 /// stencil aspect has layouts of its own.
 pub(super) fn attachments(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     render_pass_begin: &RenderPassBeginInfo<'_>,
     vuid: &'static str,
 ) -> Vec<Named> {

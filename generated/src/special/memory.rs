@@ -97,7 +97,7 @@ pub(crate) fn memory_allocated(
             None
         }
     });
-    let asked = crate::retention::MemoryAsked {
+    let asked = crate::state::MemoryAsked {
         dedicated,
         export: export.map_or(vk::ExternalMemoryHandleTypeFlags::empty(), |e| {
             e.handle_types

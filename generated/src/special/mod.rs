@@ -50,25 +50,13 @@ pub(crate) mod view;
 
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
+use crate::state::PoolFamily;
 use crate::{Error, Handle, Result};
 use ash::vk;
 
 /// A refusal naming the rule, what it says, and the values that break it.
 pub(super) fn refuse(vuid: &'static str, message: String) -> Result<()> {
     Err(Error::Validation { vuid, message })
-}
-
-/// What the checks of recorded commands need of a command pool's queue family.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct PoolFamily {
-    /// The family's index.
-    pub index: u32,
-    /// Its queue flags.
-    pub flags: vk::QueueFlags,
-    /// Its `minImageTransferGranularity`.
-    pub granularity: vk::Extent3D,
-    /// Whether the pool was created with `VK_COMMAND_POOL_CREATE_PROTECTED_BIT`.
-    pub protected: bool,
 }
 
 /// The queue family of the recorder's command pool, as its pool's creation

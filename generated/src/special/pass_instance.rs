@@ -73,7 +73,7 @@ pub(crate) fn rendering_begun<S: Scope>(
     // depth and stencil ones as references that outlive the info.
     let (color, depth, stencil) = unsafe {
         (
-            crate::retention::raw_slice(raw.p_color_attachments, raw.color_attachment_count),
+            crate::state::raw_slice(raw.p_color_attachments, raw.color_attachment_count),
             raw.p_depth_attachment.as_ref(),
             raw.p_stencil_attachment.as_ref(),
         )
@@ -88,7 +88,7 @@ pub(crate) fn rendering_begun<S: Scope>(
         a.and_then(|a| live.view(a.image_view))
             .map_or(vk::Format::UNDEFINED, |v| v.format)
     };
-    let rendering = crate::retention::RenderingFormats {
+    let rendering = crate::state::RenderingFormats {
         view_mask: raw.view_mask,
         colors: color.iter().map(|a| format(Some(a))).collect(),
         depth: format(depth),
@@ -564,7 +564,7 @@ fn check_device_group<S: Scope>(
     let limits = super::limits(device);
     // SAFETY: the safe setter stores the areas with their count.
     let areas =
-        unsafe { crate::retention::raw_slice(g.p_device_render_areas, g.device_render_area_count) };
+        unsafe { crate::state::raw_slice(g.p_device_render_areas, g.device_render_area_count) };
     let end = |offset: i32, extent: u32| i64::from(offset) + i64::from(extent);
     for (n, a) in areas.iter().enumerate() {
         let (x, y) = (
@@ -613,9 +613,9 @@ fn check_device_group<S: Scope>(
 /// info, each matching it and the render pass's attachment, a single level with
 /// the identity swizzle, and no 3D view.
 fn check_attachment_views(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     render_pass_begin: &RenderPassBeginInfo<'_>,
-    pass: &crate::retention::RenderPassRecord,
+    pass: &crate::state::RenderPassRecord,
 ) -> Result<()> {
     let raw = render_pass_begin.as_raw();
     // SAFETY: the chain of a safe struct, and the type its sType names.
@@ -627,7 +627,7 @@ fn check_attachment_views(
     };
     // SAFETY: the safe setter stores the views with their count.
     let views = chained.map_or(&[][..], |c| unsafe {
-        crate::retention::raw_slice(c.p_attachments, c.attachment_count)
+        crate::state::raw_slice(c.p_attachments, c.attachment_count)
     });
     let Some(infos) = live.imageless(raw.framebuffer) else {
         if !views.is_empty() {
@@ -691,14 +691,14 @@ fn check_attachment_views(
 /// views share memory (the same subresources of one image, or bindings that
 /// overlap) unless both have MAY_ALIAS.
 fn check_aliasing(
-    live: &crate::retention::Live,
+    live: &crate::state::Live,
     views: &[vk::ImageView],
-    pass: &crate::retention::RenderPassRecord,
+    pass: &crate::state::RenderPassRecord,
     vuid: &'static str,
 ) -> Result<()> {
-    use crate::retention::{USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_RESOLVE};
+    use crate::state::{USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_RESOLVE};
     let written = USED_COLOR | USED_RESOLVE | USED_DEPTH | USED_DEPTH_RESOLVE;
-    let used: Vec<(usize, crate::retention::ViewRecord, u8)> = views
+    let used: Vec<(usize, crate::state::ViewRecord, u8)> = views
         .iter()
         .enumerate()
         .filter_map(|(i, v)| {

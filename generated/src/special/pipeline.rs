@@ -15,7 +15,7 @@ use super::shader::{
 };
 use super::{chained, limits, refuse};
 use crate::handles::*;
-use crate::retention::{LayoutRecord, PipelineRecord};
+use crate::state::{LayoutRecord, PipelineRecord};
 use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
@@ -131,7 +131,7 @@ pub(crate) fn create_graphics_pipelines_checks(
             &format_args!("pCreateInfos[{i}]"),
         )?;
         // SAFETY: the safe setter stores the stages with their count.
-        let stages = unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) };
+        let stages = unsafe { crate::state::raw_slice(raw.p_stages, raw.stage_count) };
         for (j, stage) in stages.iter().enumerate() {
             // Before the stage's module is read for the stage: a stage no graphics
             // pipeline state has (compute, say) is refused as such.
@@ -176,7 +176,7 @@ pub(crate) fn create_graphics_pipelines_checks(
             (
                 raw.p_viewport_state.as_ref(),
                 raw.p_dynamic_state.as_ref().map_or(&[][..], |d| {
-                    crate::retention::raw_slice(d.p_dynamic_states, d.dynamic_state_count)
+                    crate::state::raw_slice(d.p_dynamic_states, d.dynamic_state_count)
                 }),
                 raw.p_rasterization_state.as_ref(),
             )
@@ -337,10 +337,10 @@ fn pipeline_record(
 pub(super) fn vertex_bindings(
     device: &Device,
     info: &vk::GraphicsPipelineCreateInfo<'_>,
-) -> (u64, Vec<crate::retention::VertexRead>) {
+) -> (u64, Vec<crate::state::VertexRead>) {
     // SAFETY: the safe struct stores every array with its length, and a stage's
     // module and name from wrappers and C strings that outlive the create info.
-    let stages = unsafe { crate::retention::raw_slice(info.p_stages, info.stage_count) };
+    let stages = unsafe { crate::state::raw_slice(info.p_stages, info.stage_count) };
     let Some(vertex) = stages
         .iter()
         .find(|s| s.stage == vk::ShaderStageFlags::VERTEX)
@@ -359,11 +359,11 @@ pub(super) fn vertex_bindings(
     // SAFETY: as above.
     let (attributes, bindings) = unsafe {
         (
-            crate::retention::raw_slice(
+            crate::state::raw_slice(
                 input.p_vertex_attribute_descriptions,
                 input.vertex_attribute_description_count,
             ),
-            crate::retention::raw_slice(
+            crate::state::raw_slice(
                 input.p_vertex_binding_descriptions,
                 input.vertex_binding_description_count,
             ),
@@ -379,7 +379,7 @@ pub(super) fn vertex_bindings(
         .fold(0, |mask, a| mask | 1 << a.binding);
     // What each binding's read attributes reach, past the start of a vertex: an
     // attribute of a format the registry does not describe reaches past any buffer.
-    let mut reads: Vec<crate::retention::VertexRead> = Vec::new();
+    let mut reads: Vec<crate::state::VertexRead> = Vec::new();
     for a in read {
         let size = crate::formats::block(a.format, vk::ImageAspectFlags::COLOR)
             .map_or(u64::MAX, |(bytes, _)| u64::from(bytes));
@@ -387,7 +387,7 @@ pub(super) fn vertex_bindings(
         if let Some(r) = reads.iter_mut().find(|r| r.binding == a.binding) {
             r.end = r.end.max(end);
         } else if let Some(b) = bindings.iter().find(|b| b.binding == a.binding) {
-            reads.push(crate::retention::VertexRead {
+            reads.push(crate::state::VertexRead {
                 binding: a.binding,
                 stride: b.stride,
                 instance: b.input_rate == vk::VertexInputRate::INSTANCE,
@@ -430,7 +430,7 @@ pub(crate) fn graphics_pipelines_created(
             .map_or(vk::SampleCountFlags::empty(), |m| m.rasterization_samples);
         // SAFETY: as above, and the state's array with its count.
         let dynamic = unsafe { raw.p_dynamic_state.as_ref() }.map_or(0, |d| {
-            unsafe { crate::retention::raw_slice(d.p_dynamic_states, d.dynamic_state_count) }
+            unsafe { crate::state::raw_slice(d.p_dynamic_states, d.dynamic_state_count) }
                 .iter()
                 .fold(0, |bits, s| bits | crate::recorder::dynamic_bit(*s))
         });
@@ -449,7 +449,7 @@ pub(crate) fn graphics_pipelines_created(
             };
             // SAFETY: the safe setter stores the formats with their count.
             Vrc::new(info.map_or_else(Default::default, |i| unsafe {
-                crate::retention::RenderingFormats::from_raw(
+                crate::state::RenderingFormats::from_raw(
                     i.view_mask,
                     i.p_color_attachment_formats,
                     i.color_attachment_count,
@@ -475,7 +475,7 @@ pub(crate) fn graphics_pipelines_created(
                 // SAFETY: the safe setter stores a reference that outlives the info,
                 // and the attachments with their count.
                 blend: unsafe { raw.p_color_blend_state.as_ref() }.map_or(0, |c| {
-                    unsafe { crate::retention::raw_slice(c.p_attachments, c.attachment_count) }
+                    unsafe { crate::state::raw_slice(c.p_attachments, c.attachment_count) }
                         .iter()
                         .take(32)
                         .enumerate()
@@ -487,8 +487,7 @@ pub(crate) fn graphics_pipelines_created(
                     raw.flags,
                     declared_resources(
                         device,
-                        unsafe { crate::retention::raw_slice(raw.p_stages, raw.stage_count) }
-                            .iter(),
+                        unsafe { crate::state::raw_slice(raw.p_stages, raw.stage_count) }.iter(),
                     ),
                 )
             }
@@ -537,7 +536,7 @@ impl<'a> States<'a> {
         unsafe {
             let blend = raw.p_color_blend_state.as_ref();
             States {
-                stages: crate::retention::raw_slice(raw.p_stages, raw.stage_count),
+                stages: crate::state::raw_slice(raw.p_stages, raw.stage_count),
                 vertex_input: raw.p_vertex_input_state.as_ref(),
                 assembly: raw.p_input_assembly_state.as_ref(),
                 tessellation: raw.p_tessellation_state.as_ref(),
@@ -547,10 +546,10 @@ impl<'a> States<'a> {
                 depth_stencil: raw.p_depth_stencil_state.as_ref(),
                 blend,
                 blend_attachments: blend.map_or(&[][..], |b| {
-                    crate::retention::raw_slice(b.p_attachments, b.attachment_count)
+                    crate::state::raw_slice(b.p_attachments, b.attachment_count)
                 }),
                 dynamic: raw.p_dynamic_state.as_ref().map_or(&[][..], |d| {
-                    crate::retention::raw_slice(d.p_dynamic_states, d.dynamic_state_count)
+                    crate::state::raw_slice(d.p_dynamic_states, d.dynamic_state_count)
                 }),
             }
         }
@@ -706,11 +705,11 @@ fn check_state_structs(device: &Device, states: &States<'_>, at: &str) -> Result
         // SAFETY: the safe setters store each array with its count.
         let (bindings, attributes) = unsafe {
             (
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     v.p_vertex_binding_descriptions,
                     v.vertex_binding_description_count,
                 ),
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     v.p_vertex_attribute_descriptions,
                     v.vertex_attribute_description_count,
                 ),
@@ -843,8 +842,7 @@ fn check_specialization_names(
             continue;
         };
         // SAFETY: the safe setter stores the entries with their count.
-        let entries =
-            unsafe { crate::retention::raw_slice(spec.p_map_entries, spec.map_entry_count) };
+        let entries = unsafe { crate::state::raw_slice(spec.p_map_entries, spec.map_entry_count) };
         if let Some(i) = (1..entries.len()).find(|&i| {
             entries[..i]
                 .iter()

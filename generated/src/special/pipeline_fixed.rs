@@ -116,9 +116,8 @@ pub(super) fn rendering_targets(
         }
     }
     // SAFETY: the safe setter stores the formats with their count.
-    let colors = unsafe {
-        crate::retention::raw_slice(r.p_color_attachment_formats, r.color_attachment_count)
-    };
+    let colors =
+        unsafe { crate::state::raw_slice(r.p_color_attachment_formats, r.color_attachment_count) };
     let (depth, stencil) = (r.depth_attachment_format, r.stencil_attachment_format);
     // Values of the API first: the format queries below hand them to the driver.
     let scope = device.scope();
@@ -347,7 +346,7 @@ pub(super) fn check_viewport_state(device: &Device, states: &States<'_>, at: &st
     }
     if !scissors_counted && !states.dynamic(vk::DynamicState::SCISSOR) && !v.p_scissors.is_null() {
         // SAFETY: the safe setter stores the scissors with their count.
-        let scissors = unsafe { crate::retention::raw_slice(v.p_scissors, v.scissor_count) };
+        let scissors = unsafe { crate::state::raw_slice(v.p_scissors, v.scissor_count) };
         check_scissors(
             scissors,
             (

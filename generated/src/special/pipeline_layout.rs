@@ -3,7 +3,7 @@
 
 use super::{refuse, vulkan12_properties, vulkan13_properties};
 use crate::handles::*;
-use crate::retention::{LayoutRecord, SetLayoutRecord};
+use crate::state::{LayoutRecord, SetLayoutRecord};
 use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
@@ -20,8 +20,8 @@ pub(crate) fn pipeline_layout_created(
     // SAFETY: the safe setters stored both arrays with their counts.
     let (ranges, sets) = unsafe {
         (
-            crate::retention::raw_slice(raw.p_push_constant_ranges, raw.push_constant_range_count),
-            crate::retention::raw_slice(raw.p_set_layouts, raw.set_layout_count),
+            crate::state::raw_slice(raw.p_push_constant_ranges, raw.push_constant_range_count),
+            crate::state::raw_slice(raw.p_set_layouts, raw.set_layout_count),
         )
     };
     let sets: Vec<Vrc<SetLayoutRecord>> = sets
@@ -316,8 +316,8 @@ pub(crate) fn create_pipeline_layout_checks(
     // SAFETY: the safe setters stored both arrays with their counts.
     let (ranges, sets) = unsafe {
         (
-            crate::retention::raw_slice(raw.p_push_constant_ranges, raw.push_constant_range_count),
-            crate::retention::raw_slice(raw.p_set_layouts, raw.set_layout_count),
+            crate::state::raw_slice(raw.p_push_constant_ranges, raw.push_constant_range_count),
+            crate::state::raw_slice(raw.p_set_layouts, raw.set_layout_count),
         )
     };
     for (i, r) in ranges.iter().enumerate() {

@@ -373,7 +373,7 @@ pub(super) fn check_stage_interfaces(
 /// aspect. A variable that spans several input indices is held to each; one whose
 /// count or numeric type is not known, to every reference from its index on.
 fn check_input_aspects(
-    record: &crate::retention::RenderPassRecord,
+    record: &crate::state::RenderPassRecord,
     inputs: &[(u32, vk::ImageAspectFlags)],
     r: &crate::spirv::Resource,
     at: &str,
@@ -637,7 +637,7 @@ pub(super) fn check_stage_resources(
 /// the descriptors of the limited kinds in its set layouts without
 /// `UPDATE_AFTER_BIND_POOL` that the stage can see.
 pub(super) fn limited_resources(
-    layout: &crate::retention::LayoutRecord,
+    layout: &crate::state::LayoutRecord,
     stage: vk::ShaderStageFlags,
 ) -> u64 {
     use vk::DescriptorType as T;

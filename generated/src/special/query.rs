@@ -4,7 +4,7 @@
 use super::refuse;
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
-use crate::retention::QueryPoolRecord;
+use crate::state::QueryPoolRecord;
 use crate::structs::*;
 use crate::{Error, Handle, Result};
 use ash::vk;

@@ -17,7 +17,7 @@ fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBu
         .iter()
         // SAFETY: the safe structs store every array with its length.
         .flat_map(|s| unsafe {
-            crate::retention::raw_slice(s.p_command_buffers, s.command_buffer_count)
+            crate::state::raw_slice(s.p_command_buffers, s.command_buffer_count)
         })
         .copied()
         .collect()
@@ -29,7 +29,7 @@ fn submit2_command_buffers(submits: &[SubmitInfo2<'_>]) -> SmallVec<[vk::Command
         .iter()
         // SAFETY: the safe structs store every array with its length.
         .flat_map(|s| unsafe {
-            crate::retention::raw_slice(s.p_command_buffer_infos, s.command_buffer_info_count)
+            crate::state::raw_slice(s.p_command_buffer_infos, s.command_buffer_info_count)
         })
         .map(|i| i.command_buffer)
         .collect()
@@ -54,8 +54,8 @@ unsafe fn check_batch(
     unsafe {
         submission::check_timeline_batch(
             queue.parent().live(),
-            crate::retention::raw_slice(waits, wait_count),
-            crate::retention::raw_slice(signals, signal_count),
+            crate::state::raw_slice(waits, wait_count),
+            crate::state::raw_slice(signals, signal_count),
             next,
             rules,
         )
@@ -120,7 +120,7 @@ fn check_pools(queue: &Queue, i: usize, batch: &SubmitInfo<'_>) -> Result<()> {
     let family = live.queue_family(queue.raw());
     // SAFETY: the safe struct stores the array with its length.
     let cbs =
-        unsafe { crate::retention::raw_slice(batch.p_command_buffers, batch.command_buffer_count) };
+        unsafe { crate::state::raw_slice(batch.p_command_buffers, batch.command_buffer_count) };
     for (j, raw) in cbs.iter().enumerate() {
         let Some((pool_family, pool_protected)) =
             device.command_buffer_uses(*raw).and_then(|u| u.pool())
@@ -238,8 +238,8 @@ fn submit_semaphore_ops(submits: &[SubmitInfo<'_>]) -> Vec<submission::SemOp> {
         // SAFETY: the safe struct stores each array with its length.
         unsafe {
             (
-                crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
-                crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
+                crate::state::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
+                crate::state::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
             )
         }
     }))
@@ -252,11 +252,8 @@ fn submit2_semaphore_ops(submits: &[SubmitInfo2<'_>]) -> Vec<submission::SemOp> 
         // SAFETY: the safe struct stores each array with its length.
         let (waits, signals) = unsafe {
             (
-                crate::retention::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
-                crate::retention::raw_slice(
-                    b.p_signal_semaphore_infos,
-                    b.signal_semaphore_info_count,
-                ),
+                crate::state::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+                crate::state::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count),
             )
         };
         ops.extend(waits.iter().map(|w| submission::SemOp::Wait(w.semaphore)));
@@ -275,8 +272,8 @@ fn bind_sparse_semaphore_ops(bind_info: &[BindSparseInfo<'_>]) -> Vec<submission
         // SAFETY: the safe struct stores each array with its length.
         unsafe {
             (
-                crate::retention::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
-                crate::retention::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
+                crate::state::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
+                crate::state::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
             )
         }
     }))
@@ -371,11 +368,8 @@ pub(crate) fn queue_submit2_done(
         // SAFETY: the safe struct stores each array with its length.
         let (waits, signals) = unsafe {
             (
-                crate::retention::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
-                crate::retention::raw_slice(
-                    b.p_signal_semaphore_infos,
-                    b.signal_semaphore_info_count,
-                ),
+                crate::state::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+                crate::state::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count),
             )
         };
         let ops = waits
@@ -536,8 +530,7 @@ pub(crate) fn get_device_queue2_checks(
 /// support.
 fn check_wait_stages(queue: &Queue, i: usize, b: &vk::SubmitInfo<'_>) -> Result<()> {
     // SAFETY: the safe setter stores the masks with the wait semaphores' count.
-    let masks =
-        unsafe { crate::retention::raw_slice(b.p_wait_dst_stage_mask, b.wait_semaphore_count) };
+    let masks = unsafe { crate::state::raw_slice(b.p_wait_dst_stage_mask, b.wait_semaphore_count) };
     if masks.is_empty() {
         return Ok(());
     }
@@ -601,12 +594,12 @@ fn check_group_indices(device: &Device, i: usize, b: &vk::SubmitInfo<'_>) -> Res
     // SAFETY: the safe setters store each array with its count.
     let (waits, signals, masks) = unsafe {
         (
-            crate::retention::raw_slice(g.p_wait_semaphore_device_indices, g.wait_semaphore_count),
-            crate::retention::raw_slice(
+            crate::state::raw_slice(g.p_wait_semaphore_device_indices, g.wait_semaphore_count),
+            crate::state::raw_slice(
                 g.p_signal_semaphore_device_indices,
                 g.signal_semaphore_count,
             ),
-            crate::retention::raw_slice(g.p_command_buffer_device_masks, g.command_buffer_count),
+            crate::state::raw_slice(g.p_command_buffer_device_masks, g.command_buffer_count),
         )
     };
     if let Some(d) = waits.iter().chain(signals).find(|d| **d >= count) {

@@ -4,7 +4,7 @@
 use super::subpass_dependencies::subpass_dependency_checks;
 use super::{chained, refuse};
 use crate::handles::*;
-use crate::retention::RenderPassRecord;
+use crate::state::RenderPassRecord;
 use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
@@ -18,8 +18,8 @@ pub(crate) fn create_render_pass_checks(create_info: &RenderPassCreateInfo<'_>) 
     // SAFETY: the safe setters store each array with its count.
     let (subpasses, dependencies) = unsafe {
         (
-            crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count),
-            crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count),
+            crate::state::raw_slice(raw.p_subpasses, raw.subpass_count),
+            crate::state::raw_slice(raw.p_dependencies, raw.dependency_count),
         )
     };
     let used = |a: u32| a != vk::ATTACHMENT_UNUSED && a >= attachments;
@@ -29,24 +29,24 @@ pub(crate) fn create_render_pass_checks(create_info: &RenderPassCreateInfo<'_>) 
         let refs = unsafe {
             let mut refs: Vec<u32> = Vec::new();
             refs.extend(
-                crate::retention::raw_slice(s.p_input_attachments, s.input_attachment_count)
+                crate::state::raw_slice(s.p_input_attachments, s.input_attachment_count)
                     .iter()
                     .map(|r| r.attachment),
             );
             refs.extend(
-                crate::retention::raw_slice(s.p_color_attachments, s.color_attachment_count)
+                crate::state::raw_slice(s.p_color_attachments, s.color_attachment_count)
                     .iter()
                     .map(|r| r.attachment),
             );
             if !s.p_resolve_attachments.is_null() {
                 refs.extend(
-                    crate::retention::raw_slice(s.p_resolve_attachments, s.color_attachment_count)
+                    crate::state::raw_slice(s.p_resolve_attachments, s.color_attachment_count)
                         .iter()
                         .map(|r| r.attachment),
                 );
             }
             refs.extend(s.p_depth_stencil_attachment.as_ref().map(|r| r.attachment));
-            refs.extend(crate::retention::raw_slice(
+            refs.extend(crate::state::raw_slice(
                 s.p_preserve_attachments,
                 s.preserve_attachment_count,
             ));
@@ -103,7 +103,7 @@ pub(crate) fn create_render_pass_checks(create_info: &RenderPassCreateInfo<'_>) 
     if let Some(a) = aspects {
         // SAFETY: the safe setter stores the references with their count.
         let refs =
-            unsafe { crate::retention::raw_slice(a.p_aspect_references, a.aspect_reference_count) };
+            unsafe { crate::state::raw_slice(a.p_aspect_references, a.aspect_reference_count) };
         for (i, r) in refs.iter().enumerate() {
             let Some(s) = subpasses.get(r.subpass as usize) else {
                 return refuse(
@@ -132,9 +132,9 @@ macro_rules! no_attachment {
         // reference outlives the create info.
         let (input, color, resolve, depth) = unsafe {
             (
-                crate::retention::raw_slice(d.p_input_attachments, d.input_attachment_count),
-                crate::retention::raw_slice(d.p_color_attachments, d.color_attachment_count),
-                crate::retention::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
+                crate::state::raw_slice(d.p_input_attachments, d.input_attachment_count),
+                crate::state::raw_slice(d.p_color_attachments, d.color_attachment_count),
+                crate::state::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
                 d.p_depth_stencil_attachment.as_ref(),
             )
         };
@@ -164,13 +164,13 @@ pub(crate) fn render_pass_created(
     };
     // SAFETY: the safe setter stored the masks with their count.
     let masks = multiview.map_or(&[][..], |m| unsafe {
-        crate::retention::raw_slice(m.p_view_masks, m.subpass_count)
+        crate::state::raw_slice(m.p_view_masks, m.subpass_count)
     });
     let view_masks = (0..raw.subpass_count as usize)
         .map(|i| masks.get(i).copied().unwrap_or(0))
         .collect();
     // SAFETY: the safe setter stored the subpasses with their count.
-    let no_attachments = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) }
+    let no_attachments = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) }
         .iter()
         .map(|d| no_attachment!(d))
         .collect();
@@ -208,7 +208,7 @@ pub(crate) fn render_pass2_created(
 ) -> RenderPass {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stored the subpasses with their count.
-    let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
+    let subpasses = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) };
     let view_masks = subpasses.iter().map(|s| s.view_mask).collect();
     let no_attachments = subpasses.iter().map(|d| no_attachment!(d)).collect();
     let (color_formats, depth_formats) = subpass_formats2(create_info);
@@ -369,7 +369,7 @@ impl Pass {
         // attachments one per color attachment; a depth/stencil reference outlives
         // the create info.
         unsafe {
-            let attachments = crate::retention::raw_slice(raw.p_attachments, raw.attachment_count)
+            let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count)
                 .iter()
                 .map(|a| (a.format, a.samples))
                 .collect();
@@ -379,11 +379,11 @@ impl Pass {
                 stencil_layout: r.layout,
                 aspect_mask: vk::ImageAspectFlags::empty(),
             };
-            let subpasses = crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count)
+            let subpasses = crate::state::raw_slice(raw.p_subpasses, raw.subpass_count)
                 .iter()
                 .map(|s| {
                     let list = |p, n| {
-                        crate::retention::raw_slice(p, n)
+                        crate::state::raw_slice(p, n)
                             .iter()
                             .map(plain)
                             .collect::<Vec<_>>()
@@ -394,7 +394,7 @@ impl Pass {
                         resolves: (!s.p_resolve_attachments.is_null())
                             .then(|| list(s.p_resolve_attachments, s.color_attachment_count)),
                         depth: s.p_depth_stencil_attachment.as_ref().map(plain),
-                        preserve: crate::retention::raw_slice(
+                        preserve: crate::state::raw_slice(
                             s.p_preserve_attachments,
                             s.preserve_attachment_count,
                         )
@@ -410,7 +410,7 @@ impl Pass {
                 vk::StructureType::RENDER_PASS_INPUT_ATTACHMENT_ASPECT_CREATE_INFO,
             );
             if let Some(aspects) = aspects {
-                let references = crate::retention::raw_slice(
+                let references = crate::state::raw_slice(
                     aspects.p_aspect_references,
                     aspects.aspect_reference_count,
                 );
@@ -440,7 +440,7 @@ impl Pass {
         let raw = create_info.as_raw();
         // SAFETY: as in `of`.
         unsafe {
-            let attachments = crate::retention::raw_slice(raw.p_attachments, raw.attachment_count)
+            let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count)
                 .iter()
                 .map(|a| (a.format, a.samples))
                 .collect();
@@ -457,11 +457,11 @@ impl Pass {
                     aspect_mask: r.aspect_mask,
                 }
             };
-            let subpasses = crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count)
+            let subpasses = crate::state::raw_slice(raw.p_subpasses, raw.subpass_count)
                 .iter()
                 .map(|s| {
                     let list = |p, n| {
-                        crate::retention::raw_slice(p, n)
+                        crate::state::raw_slice(p, n)
                             .iter()
                             .map(plain)
                             .collect::<Vec<_>>()
@@ -472,7 +472,7 @@ impl Pass {
                         resolves: (!s.p_resolve_attachments.is_null())
                             .then(|| list(s.p_resolve_attachments, s.color_attachment_count)),
                         depth: s.p_depth_stencil_attachment.as_ref().map(plain),
-                        preserve: crate::retention::raw_slice(
+                        preserve: crate::state::raw_slice(
                             s.p_preserve_attachments,
                             s.preserve_attachment_count,
                         )
@@ -512,9 +512,7 @@ impl Pass {
         &self,
         depth_resolves: &[u32],
     ) -> Vec<(vk::Format, vk::SampleCountFlags, u8)> {
-        use crate::retention::{
-            USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
-        };
+        use crate::state::{USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE};
         let mut out: Vec<_> = self.attachments.iter().map(|&(f, s)| (f, s, 0u8)).collect();
         let mut mark = |a: u32, bit: u8| {
             if let Some(e) = out.get_mut(a as usize) {
@@ -919,8 +917,8 @@ pub(crate) fn render_pass_reference_checks(
     // SAFETY: the safe setters store each array with its count.
     let (masks, dependencies) = unsafe {
         (
-            crate::retention::raw_slice(m.p_view_masks, m.subpass_count),
-            crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count),
+            crate::state::raw_slice(m.p_view_masks, m.subpass_count),
+            crate::state::raw_slice(raw.p_dependencies, raw.dependency_count),
         )
     };
     let flags: Vec<_> = dependencies.iter().map(|d| d.dependency_flags).collect();
@@ -944,8 +942,8 @@ pub(crate) fn render_pass2_reference_checks(
     // SAFETY: the safe setters store each array with its count.
     let (subpasses, dependencies) = unsafe {
         (
-            crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count),
-            crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count),
+            crate::state::raw_slice(raw.p_subpasses, raw.subpass_count),
+            crate::state::raw_slice(raw.p_dependencies, raw.dependency_count),
         )
     };
     let masks: Vec<_> = subpasses.iter().map(|s| s.view_mask).collect();
@@ -1013,12 +1011,12 @@ pub(crate) fn attachment_uses(
 /// aspect's are the same).
 pub(crate) fn attachment_layouts(
     create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<crate::retention::AttachmentLayouts> {
+) -> Vec<crate::state::AttachmentLayouts> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
         .iter()
-        .map(|a| crate::retention::AttachmentLayouts {
+        .map(|a| crate::state::AttachmentLayouts {
             initial: a.initial_layout,
             last: a.final_layout,
             stencil_initial: a.initial_layout,
@@ -1031,10 +1029,10 @@ pub(crate) fn attachment_layouts(
 /// their stencil aspect's layouts.
 pub(crate) fn attachment_layouts2(
     create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<crate::retention::AttachmentLayouts> {
+) -> Vec<crate::state::AttachmentLayouts> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
         .iter()
         .map(|a| {
             // SAFETY: the chain of a safe struct, and the type its sType names.
@@ -1044,7 +1042,7 @@ pub(crate) fn attachment_layouts2(
                     vk::StructureType::ATTACHMENT_DESCRIPTION_STENCIL_LAYOUT,
                 )
             };
-            crate::retention::AttachmentLayouts {
+            crate::state::AttachmentLayouts {
                 initial: a.initial_layout,
                 last: a.final_layout,
                 stencil_initial: stencil.map_or(a.initial_layout, |s| s.stencil_initial_layout),
@@ -1079,7 +1077,7 @@ pub(super) fn clear_count(
 pub(crate) fn clears(create_info: &RenderPassCreateInfo<'_>) -> u32 {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the attachments with their count.
-    let a = unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) };
+    let a = unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) };
     clear_count(a.iter().map(|a| (a.format, a.load_op, a.stencil_load_op)))
 }
 
@@ -1087,16 +1085,13 @@ pub(crate) fn clears(create_info: &RenderPassCreateInfo<'_>) -> u32 {
 pub(crate) fn clears2(create_info: &RenderPassCreateInfo2<'_>) -> u32 {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the attachments with their count.
-    let a = unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) };
+    let a = unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) };
     clear_count(a.iter().map(|a| (a.format, a.load_op, a.stencil_load_op)))
 }
 
 /// Every layout each attachment takes: its initial and final layouts (and its
 /// stencil aspect's) and those of the references to it.
-fn taken(
-    pass: &Pass,
-    layouts: &[crate::retention::AttachmentLayouts],
-) -> Vec<Vec<vk::ImageLayout>> {
+fn taken(pass: &Pass, layouts: &[crate::state::AttachmentLayouts]) -> Vec<Vec<vk::ImageLayout>> {
     let mut out: Vec<Vec<vk::ImageLayout>> = layouts
         .iter()
         .map(|l| vec![l.initial, l.last, l.stencil_initial, l.stencil_last])
@@ -1131,7 +1126,7 @@ pub(crate) fn stencil_layouts2(
     // reference outlives the create info; each chain is a safe struct's, and the
     // type each sType names.
     unsafe {
-        let attachments = crate::retention::raw_slice(raw.p_attachments, raw.attachment_count);
+        let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count);
         let mut out: Vec<Vec<vk::ImageLayout>> = attachments
             .iter()
             .map(|a| {
@@ -1144,11 +1139,10 @@ pub(crate) fn stencil_layouts2(
                 })
             })
             .collect();
-        for sub in crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) {
-            let refs =
-                crate::retention::raw_slice(sub.p_input_attachments, sub.input_attachment_count)
-                    .iter()
-                    .chain(sub.p_depth_stencil_attachment.as_ref());
+        for sub in crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) {
+            let refs = crate::state::raw_slice(sub.p_input_attachments, sub.input_attachment_count)
+                .iter()
+                .chain(sub.p_depth_stencil_attachment.as_ref());
             for r in refs {
                 let s: Option<&vk::AttachmentReferenceStencilLayout<'_>> = chained(
                     r.p_next,
@@ -1167,7 +1161,7 @@ pub(crate) fn stencil_layouts2(
 pub(crate) fn may_alias(create_info: &RenderPassCreateInfo<'_>) -> Vec<bool> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
         .iter()
         .map(|a| a.flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS))
         .collect()
@@ -1177,7 +1171,7 @@ pub(crate) fn may_alias(create_info: &RenderPassCreateInfo<'_>) -> Vec<bool> {
 pub(crate) fn may_alias2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<bool> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::retention::raw_slice(raw.p_attachments, raw.attachment_count) }
+    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
         .iter()
         .map(|a| a.flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS))
         .collect()
@@ -1194,7 +1188,7 @@ pub(crate) fn used_attachments(create_info: &RenderPassCreateInfo<'_>) -> Vec<Ve
 pub(crate) fn used_attachments2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec<u32>> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the subpasses with their count.
-    let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
+    let subpasses = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) };
     let mut used = Pass::of2(create_info).used();
     for (u, s) in used.iter_mut().zip(subpasses) {
         // SAFETY: the `pNext` of a safe struct, and the type the sType names; its
@@ -1222,7 +1216,7 @@ pub(crate) fn attachment_uses2(
 ) -> Vec<(vk::Format, vk::SampleCountFlags, u8)> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the subpasses with their count.
-    let subpasses = unsafe { crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count) };
+    let subpasses = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) };
     let resolves: Vec<u32> = subpasses
         .iter()
         .filter_map(|s| {
@@ -1271,9 +1265,9 @@ fn render_pass_description_checks(
     // SAFETY: the safe setters store each array with its count.
     let (attachments, subpasses, dependencies) = unsafe {
         (
-            crate::retention::raw_slice(raw.p_attachments, raw.attachment_count),
-            crate::retention::raw_slice(raw.p_subpasses, raw.subpass_count),
-            crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count),
+            crate::state::raw_slice(raw.p_attachments, raw.attachment_count),
+            crate::state::raw_slice(raw.p_subpasses, raw.subpass_count),
+            crate::state::raw_slice(raw.p_dependencies, raw.dependency_count),
         )
     };
     for (i, a) in attachments.iter().enumerate() {
@@ -1317,21 +1311,16 @@ fn render_pass_description_checks(
             // SAFETY: the safe setters store each array with its count (the resolve
             // array with the color count).
             unsafe {
-                for r in
-                    crate::retention::raw_slice(s.p_input_attachments, s.input_attachment_count)
-                {
+                for r in crate::state::raw_slice(s.p_input_attachments, s.input_attachment_count) {
                     refs.push((r.attachment, r.layout, true));
                 }
-                for r in
-                    crate::retention::raw_slice(s.p_color_attachments, s.color_attachment_count)
-                {
+                for r in crate::state::raw_slice(s.p_color_attachments, s.color_attachment_count) {
                     refs.push((r.attachment, r.layout, false));
                 }
                 if !s.p_resolve_attachments.is_null() {
-                    for r in crate::retention::raw_slice(
-                        s.p_resolve_attachments,
-                        s.color_attachment_count,
-                    ) {
+                    for r in
+                        crate::state::raw_slice(s.p_resolve_attachments, s.color_attachment_count)
+                    {
                         refs.push((r.attachment, r.layout, false));
                     }
                 }
@@ -1443,7 +1432,7 @@ fn input_aspect_checks(
     };
     // SAFETY: the safe setter stores the array with its count.
     let references = unsafe {
-        crate::retention::raw_slice(aspects.p_aspect_references, aspects.aspect_reference_count)
+        crate::state::raw_slice(aspects.p_aspect_references, aspects.aspect_reference_count)
     };
     for (k, r) in references.iter().enumerate() {
         let Some(s) = subpasses.get(r.subpass as usize) else {
@@ -1451,7 +1440,7 @@ fn input_aspect_checks(
         };
         // SAFETY: the safe setter stores the array with its count.
         let inputs =
-            unsafe { crate::retention::raw_slice(s.p_input_attachments, s.input_attachment_count) };
+            unsafe { crate::state::raw_slice(s.p_input_attachments, s.input_attachment_count) };
         let Some(input) = inputs.get(r.input_attachment_index as usize) else {
             continue;
         };

@@ -24,7 +24,7 @@ pub(crate) fn sampler_created(
     };
     device.live().sampler_created(
         sampler.raw(),
-        crate::retention::sampler_bits(info, conversion.is_some()),
+        crate::state::sampler_bits(info, conversion.is_some()),
     );
     sampler
 }

@@ -19,7 +19,7 @@ pub(super) fn check_specialization_data(
         return Ok(());
     };
     // SAFETY: the safe setter stores the entries with their count.
-    let entries = unsafe { crate::retention::raw_slice(info.p_map_entries, info.map_entry_count) };
+    let entries = unsafe { crate::state::raw_slice(info.p_map_entries, info.map_entry_count) };
     let size = info.data_size as u64;
     for (i, e) in entries.iter().enumerate() {
         let offset = u64::from(e.offset);
@@ -308,7 +308,7 @@ pub(super) fn check_constant_sizes(
         return Ok(());
     };
     // SAFETY: the safe setter stores the entries with their count.
-    let entries = unsafe { crate::retention::raw_slice(info.p_map_entries, info.map_entry_count) };
+    let entries = unsafe { crate::state::raw_slice(info.p_map_entries, info.map_entry_count) };
     for (k, e) in entries.iter().enumerate() {
         let declared = interface
             .spec_constants
@@ -334,7 +334,7 @@ pub(crate) fn shader_module_created(
 ) -> ShaderModule {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the code slice with its size in bytes.
-    let words = unsafe { crate::retention::raw_slice(raw.p_code, (raw.code_size / 4) as u32) };
+    let words = unsafe { crate::state::raw_slice(raw.p_code, (raw.code_size / 4) as u32) };
     device
         .live()
         .shader_module_created(module.raw(), crate::spirv::interface(words));

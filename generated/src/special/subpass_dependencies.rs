@@ -15,7 +15,7 @@ pub(crate) fn dependency_stages(
 ) -> (vk::PipelineStageFlags, vk::PipelineStageFlags) {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+    unsafe { crate::state::raw_slice(raw.p_dependencies, raw.dependency_count) }
         .iter()
         .fold(Default::default(), |(s, d), x| {
             (s | x.src_stage_mask, d | x.dst_stage_mask)
@@ -29,7 +29,7 @@ pub(crate) fn dependency_stages2(
 ) -> (vk::PipelineStageFlags, vk::PipelineStageFlags) {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+    unsafe { crate::state::raw_slice(raw.p_dependencies, raw.dependency_count) }
         .iter()
         .map(|d| {
             // SAFETY: the `pNext` of a safe struct, and the type the sType names.
@@ -48,13 +48,13 @@ pub(crate) fn dependency_stages2(
 /// The dependencies of `vkCreateRenderPass`'s create info from a subpass to itself.
 pub(crate) fn self_dependencies(
     create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<crate::retention::SelfDependency> {
+) -> Vec<crate::state::SelfDependency> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+    unsafe { crate::state::raw_slice(raw.p_dependencies, raw.dependency_count) }
         .iter()
         .filter(|d| d.src_subpass == d.dst_subpass && d.src_subpass != vk::SUBPASS_EXTERNAL)
-        .map(|d| crate::retention::SelfDependency {
+        .map(|d| crate::state::SelfDependency {
             subpass: d.src_subpass,
             stages: (d.src_stage_mask, d.dst_stage_mask),
             access: (d.src_access_mask, d.dst_access_mask),
@@ -66,10 +66,10 @@ pub(crate) fn self_dependencies(
 /// stages and access types replace the dependency's, their first 32 bits read).
 pub(crate) fn self_dependencies2(
     create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<crate::retention::SelfDependency> {
+) -> Vec<crate::state::SelfDependency> {
     let raw = create_info.as_raw();
     // SAFETY: the safe setter stores the dependencies with their count.
-    unsafe { crate::retention::raw_slice(raw.p_dependencies, raw.dependency_count) }
+    unsafe { crate::state::raw_slice(raw.p_dependencies, raw.dependency_count) }
         .iter()
         .filter(|d| d.src_subpass == d.dst_subpass && d.src_subpass != vk::SUBPASS_EXTERNAL)
         .map(|d| {
@@ -77,7 +77,7 @@ pub(crate) fn self_dependencies2(
             let barrier: Option<&vk::MemoryBarrier2<'_>> =
                 unsafe { chained(d.p_next, vk::StructureType::MEMORY_BARRIER_2) };
             let low = |v: u64| v as u32;
-            crate::retention::SelfDependency {
+            crate::state::SelfDependency {
                 subpass: d.src_subpass,
                 stages: barrier.map_or((d.src_stage_mask, d.dst_stage_mask), |b| {
                     (
@@ -116,9 +116,9 @@ pub(super) fn subpass_dependency_checks(
     let (masks, offsets, correlations) =
         multiview.map_or((&[][..], &[][..], &[][..]), |m| unsafe {
             (
-                crate::retention::raw_slice(m.p_view_masks, m.subpass_count),
-                crate::retention::raw_slice(m.p_view_offsets, m.dependency_count),
-                crate::retention::raw_slice(m.p_correlation_masks, m.correlation_mask_count),
+                crate::state::raw_slice(m.p_view_masks, m.subpass_count),
+                crate::state::raw_slice(m.p_view_offsets, m.dependency_count),
+                crate::state::raw_slice(m.p_correlation_masks, m.correlation_mask_count),
             )
         });
     let graphics = super::stages::GRAPHICS

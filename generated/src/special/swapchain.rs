@@ -7,7 +7,7 @@ use super::image::family_bits;
 use super::surface::surface_supported;
 use super::{chained, refuse};
 use crate::handles::*;
-use crate::retention::ImageRecord;
+use crate::state::ImageRecord;
 use crate::structs::*;
 use crate::submission::{self};
 use crate::{Error, Handle, Result};
@@ -23,7 +23,7 @@ pub(crate) fn queue_present_khr_hold<'q>(
     let gate = queue.parent().live().descriptor_gate();
     // SAFETY: the safe struct stores the array with its length.
     let waits = unsafe {
-        crate::retention::raw_slice(
+        crate::state::raw_slice(
             present_info.p_wait_semaphores,
             present_info.wait_semaphore_count,
         )
@@ -46,7 +46,7 @@ pub(crate) fn queue_present_khr_checks(
 ) -> Result<()> {
     // SAFETY: the safe struct stores the array with its length.
     let waits = unsafe {
-        crate::retention::raw_slice(
+        crate::state::raw_slice(
             present_info.p_wait_semaphores,
             present_info.wait_semaphore_count,
         )
@@ -78,9 +78,8 @@ fn check_surface_support(queue: &Queue, present_info: &PresentInfoKHR<'_>) -> Re
         return Ok(());
     };
     // SAFETY: the safe setter stores the array with its count.
-    let swapchains = unsafe {
-        crate::retention::raw_slice(present_info.p_swapchains, present_info.swapchain_count)
-    };
+    let swapchains =
+        unsafe { crate::state::raw_slice(present_info.p_swapchains, present_info.swapchain_count) };
     for (n, swapchain) in swapchains.iter().enumerate() {
         if device.live().presents_from(*swapchain, family) {
             continue;
@@ -159,9 +158,9 @@ fn check_device_group_present(device: &Device, present_info: &PresentInfoKHR<'_>
     // SAFETY: the safe setters store each array with its count.
     let (masks, swapchains, indices) = unsafe {
         (
-            crate::retention::raw_slice(group.p_device_masks, group.swapchain_count),
-            crate::retention::raw_slice(info.p_swapchains, info.swapchain_count),
-            crate::retention::raw_slice(info.p_image_indices, info.swapchain_count),
+            crate::state::raw_slice(group.p_device_masks, group.swapchain_count),
+            crate::state::raw_slice(info.p_swapchains, info.swapchain_count),
+            crate::state::raw_slice(info.p_image_indices, info.swapchain_count),
         )
     };
     let present = present_masks(device)?;
@@ -235,8 +234,8 @@ fn check_presented_images(device: &Device, present_info: &PresentInfoKHR<'_>) ->
     // SAFETY: the safe setter stores both arrays with the one count.
     let (swapchains, indices) = unsafe {
         (
-            crate::retention::raw_slice(info.p_swapchains, info.swapchain_count),
-            crate::retention::raw_slice(info.p_image_indices, info.swapchain_count),
+            crate::state::raw_slice(info.p_swapchains, info.swapchain_count),
+            crate::state::raw_slice(info.p_image_indices, info.swapchain_count),
         )
     };
     for (n, (swapchain, index)) in swapchains.iter().zip(indices).enumerate() {
@@ -274,7 +273,7 @@ pub(crate) fn queue_present_khr_before(queue: &Queue, present_info: &PresentInfo
     let sub = submission::submitted(device, queue.raw(), None, &[], kept, Vec::new());
     // SAFETY: the safe struct stores the array with its length.
     let waits = unsafe {
-        crate::retention::raw_slice(
+        crate::state::raw_slice(
             present_info.p_wait_semaphores,
             present_info.wait_semaphore_count,
         )
@@ -286,8 +285,8 @@ pub(crate) fn queue_present_khr_before(queue: &Queue, present_info: &PresentInfo
     // SAFETY: the safe setter stores both arrays with the one count.
     let (swapchains, indices) = unsafe {
         (
-            crate::retention::raw_slice(info.p_swapchains, info.swapchain_count),
-            crate::retention::raw_slice(info.p_image_indices, info.swapchain_count),
+            crate::state::raw_slice(info.p_swapchains, info.swapchain_count),
+            crate::state::raw_slice(info.p_image_indices, info.swapchain_count),
         )
     };
     for (swapchain, index) in swapchains.iter().zip(indices) {
@@ -346,7 +345,7 @@ pub(crate) fn swapchain_created(
                 &vk::ImageCreateInfo::default().queue_family_indices(
                     // SAFETY: the safe setter stores the indices with their count.
                     unsafe {
-                        crate::retention::raw_slice(
+                        crate::state::raw_slice(
                             create_info.p_queue_family_indices,
                             create_info.queue_family_index_count,
                         )
@@ -528,7 +527,7 @@ pub(crate) fn create_swapchain_checks(
     if info.image_sharing_mode == vk::SharingMode::CONCURRENT {
         // SAFETY: the safe setter stores the indices with their count.
         let families = unsafe {
-            crate::retention::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
+            crate::state::raw_slice(info.p_queue_family_indices, info.queue_family_index_count)
         };
         concurrent_families(
             physical,

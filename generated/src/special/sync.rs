@@ -72,7 +72,7 @@ pub(crate) fn wait_semaphores_checks(
 ) -> Result<()> {
     // SAFETY: the safe struct stores the array with its length.
     let semaphores =
-        unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+        unsafe { crate::state::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
     submission::check_semaphore_type(
         device.live(),
         semaphores,
@@ -92,10 +92,9 @@ pub(crate) fn wait_semaphores_done(
     }
     // SAFETY: the safe struct stores both arrays with their one length.
     let semaphores =
-        unsafe { crate::retention::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
+        unsafe { crate::state::raw_slice(wait_info.p_semaphores, wait_info.semaphore_count) };
     // SAFETY: the same length, from the same safe struct.
-    let values =
-        unsafe { crate::retention::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
+    let values = unsafe { crate::state::raw_slice(wait_info.p_values, wait_info.semaphore_count) };
     for (s, v) in semaphores.iter().zip(values) {
         timeline_seen(device, *s, *v, false);
     }

@@ -23,7 +23,7 @@ pub(crate) fn buffer_view_created(
 /// (its stencil usage for a stencil-only view, and both for a view of depth and
 /// stencil), as the specification derives it.
 fn view_usage(
-    record: &crate::retention::ImageRecord,
+    record: &crate::state::ImageRecord,
     aspect: vk::ImageAspectFlags,
     chained: Option<vk::ImageUsageFlags>,
 ) -> vk::ImageUsageFlags {
@@ -240,7 +240,7 @@ pub(crate) fn image_view_checks(
 fn view_format_checks(
     device: &Device,
     info: &vk::ImageViewCreateInfo<'_>,
-    image: &crate::retention::ImageRecord,
+    image: &crate::state::ImageRecord,
 ) -> Result<()> {
     let (format, r) = (info.format, info.subresource_range);
     let flags = image.flags;
@@ -509,7 +509,7 @@ pub(crate) fn image_view_created(
         let c = info.components;
         device.live().view_created(
             view.raw(),
-            crate::retention::ViewRecord {
+            crate::state::ViewRecord {
                 image: info.image,
                 format: info.format,
                 view_type: info.view_type,

@@ -1453,7 +1453,7 @@ fn keep_expr(
                 let c = field_ident(&count);
                 parts.push(quote! {
                     __safety!("the safe setter stored this array with its length.");
-                    kept.extend(live.keep(unsafe { crate::retention::raw_slice(#var.as_raw().#f, #var.as_raw().#c) }));
+                    kept.extend(live.keep(unsafe { crate::state::raw_slice(#var.as_raw().#f, #var.as_raw().#c) }));
                 });
             }
             _ => {}

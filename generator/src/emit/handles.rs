@@ -269,7 +269,7 @@ fn emit_device(cx: &Context) -> TokenStream {
             fns: ash::Device,
             ext: DeviceExtensions,
             command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>>,
-            live: crate::retention::Live,
+            live: crate::state::Live,
             exts: crate::checks::Exts,
             objects: crate::validation::Objects,
         }
@@ -328,7 +328,7 @@ fn emit_device(cx: &Context) -> TokenStream {
             /// The live objects of this device by raw handle, and what its descriptor
             /// sets refer to.
             #[inline]
-            pub(crate) fn live(&self) -> &crate::retention::Live {
+            pub(crate) fn live(&self) -> &crate::state::Live {
                 &self.inner.live
             }
             /// How many objects of this device are alive (queues, command

@@ -47,7 +47,7 @@ pub fn emit(cx: &Context) -> TokenStream {
                     let c = field_ident(&count);
                     parts.push(quote! {
                         __safety!("the safe setter stored this array with its length.");
-                        out.extend(live.keep(unsafe { crate::retention::raw_slice(x.#field, x.#c) }));
+                        out.extend(live.keep(unsafe { crate::state::raw_slice(x.#field, x.#c) }));
                     });
                 }
                 Member::StructRef { .. } if found.contains(&m.type_name) => {
@@ -65,7 +65,7 @@ pub fn emit(cx: &Context) -> TokenStream {
                     let g = inner();
                     parts.push(quote! {
                         __safety!("the safe setter stored this array with its length.");
-                        for y in unsafe { crate::retention::raw_slice(x.#field, x.#c) } {
+                        for y in unsafe { crate::state::raw_slice(x.#field, x.#c) } {
                             __safety!("`y` is a live safe struct, as the walk requires.");
                             unsafe { #g(y, live, out) };
                         }
@@ -119,7 +119,7 @@ pub fn emit(cx: &Context) -> TokenStream {
         //! What a struct names: the walks that keep objects alive. Every reaching
         //! struct has one, whether or not a command of this build uses it yet.
         #![allow(dead_code, unused_unsafe, clippy::missing_safety_doc)]
-        use crate::retention::Live;
+        use crate::state::Live;
         use ash::vk;
         use tuff_runtime::Retained;
 

@@ -31,13 +31,13 @@ pub(crate) fn member(command: &str, path: &str) -> Option<TokenStream> {
         },
         ("vkQueuePresentKHR", "pPresentInfo->pWaitSemaphores[]") => quote! {
             __safety!("the safe struct stores each array with its length.");
-            for s in unsafe { crate::retention::raw_slice(present_info.p_wait_semaphores, present_info.wait_semaphore_count) } {
+            for s in unsafe { crate::state::raw_slice(present_info.p_wait_semaphores, present_info.wait_semaphore_count) } {
                 syncs.extend(self.parent().live().sync_of(vk::ObjectType::SEMAPHORE, vk::Handle::as_raw(*s)));
             }
         },
         ("vkQueuePresentKHR", "pPresentInfo->pSwapchains[]") => quote! {
             __safety!("the safe struct stores each array with its length.");
-            for s in unsafe { crate::retention::raw_slice(present_info.p_swapchains, present_info.swapchain_count) } {
+            for s in unsafe { crate::state::raw_slice(present_info.p_swapchains, present_info.swapchain_count) } {
                 syncs.extend(self.parent().live().sync_of(vk::ObjectType::SWAPCHAIN_KHR, vk::Handle::as_raw(*s)));
             }
         },

@@ -355,7 +355,7 @@ The rules of `vkQueuePresentKHR` that apply to this crate's API ([reference page
             syncs.push(self.host_sync().clone());
             // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     present_info.p_wait_semaphores,
                     present_info.wait_semaphore_count,
                 )
@@ -370,7 +370,7 @@ The rules of `vkQueuePresentKHR` that apply to this crate's API ([reference page
             }
             // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     present_info.p_swapchains,
                     present_info.swapchain_count,
                 )
@@ -417,7 +417,7 @@ The caller upholds the rules that [`Self::present_khr`] checks at run time: `VUI
             syncs.push(self.host_sync().clone());
             // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     present_info.p_wait_semaphores,
                     present_info.wait_semaphore_count,
                 )
@@ -432,7 +432,7 @@ The caller upholds the rules that [`Self::present_khr`] checks at run time: `VUI
             }
             // SAFETY: the safe struct stores each array with its length.
             for s in unsafe {
-                crate::retention::raw_slice(
+                crate::state::raw_slice(
                     present_info.p_swapchains,
                     present_info.swapchain_count,
                 )

@@ -1,0 +1,71 @@
+//! What the device records of its objects, one file per kind of object (buffer,
+//! image, memory, render pass, pipeline, descriptors, query, swapchain, queue, ...),
+//! below the checks: `special/` reads these records to check a command, and nothing
+//! here reads `special/`.
+//!
+//! `live.rs` holds [`Live`], one per device, with every side table; each table's
+//! methods sit in the file of the object it records. The raw reads of arrays that
+//! Vulkan structs point to, which the records and the emitted methods share, are here.
+
+mod buffer;
+mod command_pool;
+mod descriptors;
+mod framebuffer;
+mod image;
+mod live;
+mod memory;
+mod pipeline;
+mod query;
+mod queue;
+mod render_pass;
+mod sampler;
+mod swapchain;
+mod sync;
+mod view;
+
+pub(crate) use self::buffer::BufferRecord;
+pub(crate) use self::command_pool::PoolFamily;
+pub(crate) use self::descriptors::{
+    names_image_layout, sampler_bits, BindingRecord, ImageDescriptor, SetImages, SetLayoutRecord,
+    SetWritten, SlotKind, SAMPLER_LINEAR, SAMPLER_MIPMAP_LINEAR, SAMPLER_UNNORMALIZED,
+    SAMPLER_YCBCR,
+};
+pub(crate) use self::framebuffer::AttachmentImage;
+pub(crate) use self::image::ImageRecord;
+pub(crate) use self::live::Live;
+pub(crate) use self::memory::{Binding, MemoryAsked};
+pub(crate) use self::pipeline::{LayoutRecord, PipelineRecord, RenderingFormats, VertexRead};
+pub(crate) use self::query::QueryPoolRecord;
+pub(crate) use self::render_pass::{
+    AttachmentLayouts, RenderPassRecord, SelfDependency, USED_COLOR, USED_DEPTH,
+    USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
+};
+pub(crate) use self::view::ViewRecord;
+
+/// The array a raw struct member points to.
+///
+/// # Safety
+///
+/// `ptr` points to `count` elements that outlive `'a`, or `count` is 0.
+pub(crate) unsafe fn raw_slice<'a, T>(ptr: *const T, count: u32) -> &'a [T] {
+    if count == 0 || ptr.is_null() {
+        &[]
+    } else {
+        // SAFETY: the caller vouches for `count` elements at `ptr`.
+        unsafe { core::slice::from_raw_parts(ptr, count as usize) }
+    }
+}
+
+/// Element `i` of a raw array, or a zeroed one (null handles) when the array is null.
+///
+/// # Safety
+///
+/// A non-null `ptr` points to more than `i` elements.
+pub(super) unsafe fn read<T: Copy + Default>(ptr: *const T, i: usize) -> T {
+    if ptr.is_null() {
+        T::default()
+    } else {
+        // SAFETY: the caller vouches for element `i`.
+        unsafe { *ptr.add(i) }
+    }
+}

@@ -1,0 +1,127 @@
+//! What the device records of render passes: each subpass's attachments, layouts and
+//! self-dependencies.
+
+use super::live::Live;
+use ash::vk::{self, Handle as _};
+use tuff_runtime::Vrc;
+
+/// A live render pass's subpasses, which the recorder follows an instance of it
+/// through.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct RenderPassRecord {
+    /// Each attachment's format, sample count and the roles the subpasses give it
+    /// (`USED_*` bits).
+    pub attachments: Vec<(vk::Format, vk::SampleCountFlags, u8)>,
+    /// Each subpass's view mask (0 without multiview), in order.
+    pub view_masks: Vec<u32>,
+    /// Whether each subpass uses no attachment (every reference unused, or none).
+    pub no_attachments: Vec<bool>,
+    /// Each subpass's color attachments' formats (`UNDEFINED` for an unused one).
+    pub color_formats: Vec<Vec<vk::Format>>,
+    /// Each subpass's depth/stencil attachment's format, if it uses one.
+    pub depth_formats: Vec<Option<vk::Format>>,
+    /// Each subpass's color and depth/stencil attachments' sample count, if it uses
+    /// any (its creation checks they agree).
+    pub subpass_samples: Vec<Option<vk::SampleCountFlags>>,
+    /// Each subpass's depth/stencil reference's layouts (depth aspect, stencil
+    /// aspect), if it uses one.
+    pub depth_layouts: Vec<Option<(vk::ImageLayout, vk::ImageLayout)>>,
+    /// Each attachment's initial and final layouts, and those of its stencil
+    /// aspect (the same unless a `VkAttachmentDescriptionStencilLayout` says
+    /// otherwise).
+    pub layouts: Vec<AttachmentLayouts>,
+    /// The attachments each subpass references.
+    pub used: Vec<Vec<u32>>,
+    /// Each subpass's input attachment references: the attachment each names
+    /// (`VK_ATTACHMENT_UNUSED` for an unused one), and the aspects the fragment
+    /// shader may read through it (empty: every aspect of its format).
+    pub inputs: Vec<Vec<(u32, vk::ImageAspectFlags)>>,
+    /// Its dependencies from a subpass to itself.
+    pub self_dependencies: Vec<SelfDependency>,
+    /// One more than the largest attachment index that a render pass instance
+    /// clears (0: none), the `clearValueCount` it needs at least.
+    pub clear_count: u32,
+    /// Every layout each attachment takes: initial, final, and in each reference.
+    pub taken: Vec<Vec<vk::ImageLayout>>,
+    /// The layouts each attachment's stencil aspect takes through
+    /// `VkAttachmentDescriptionStencilLayout` and `VkAttachmentReferenceStencilLayout`.
+    pub stencil_taken: Vec<Vec<vk::ImageLayout>>,
+    /// Each attachment's `VK_ATTACHMENT_DESCRIPTION_MAY_ALIAS_BIT`.
+    pub may_alias: Vec<bool>,
+    /// The union of the source and of the destination stage masks of its
+    /// dependencies.
+    pub dependency_stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
+}
+
+impl RenderPassRecord {
+    /// Whether two render passes are compatible: their attachments agree in format
+    /// and sample count, and their subpasses in the attachments they use, their
+    /// formats and view masks.
+    pub(crate) fn compatible(&self, other: &RenderPassRecord) -> bool {
+        self.attachments.len() == other.attachments.len()
+            && self
+                .attachments
+                .iter()
+                .zip(&other.attachments)
+                .all(|(a, b)| a.0 == b.0 && a.1 == b.1)
+            && self.view_masks == other.view_masks
+            && self.color_formats == other.color_formats
+            && self.depth_formats == other.depth_formats
+            && self.used == other.used
+    }
+}
+
+/// A render pass's dependency from a subpass to itself, which a pipeline barrier
+/// inside the subpass must fit in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct SelfDependency {
+    /// The subpass.
+    pub subpass: u32,
+    /// Its source and destination stage masks.
+    pub stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
+    /// Its source and destination access masks.
+    pub access: (vk::AccessFlags, vk::AccessFlags),
+}
+
+/// The layouts a render pass instance needs an attachment in and leaves it in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct AttachmentLayouts {
+    /// `initialLayout`.
+    pub initial: vk::ImageLayout,
+    /// `finalLayout`.
+    pub last: vk::ImageLayout,
+    /// The stencil aspect's `initialLayout`.
+    pub stencil_initial: vk::ImageLayout,
+    /// The stencil aspect's `finalLayout`.
+    pub stencil_last: vk::ImageLayout,
+}
+
+/// An attachment's role in some subpass: color, resolve, depth/stencil, input, or
+/// depth/stencil resolve.
+pub(crate) const USED_COLOR: u8 = 1;
+
+/// See [`USED_COLOR`].
+pub(crate) const USED_RESOLVE: u8 = 2;
+
+/// See [`USED_COLOR`].
+pub(crate) const USED_DEPTH: u8 = 4;
+
+/// See [`USED_COLOR`].
+pub(crate) const USED_INPUT: u8 = 8;
+
+/// See [`USED_COLOR`].
+pub(crate) const USED_DEPTH_RESOLVE: u8 = 16;
+
+impl Live {
+    /// Records a new render pass's subpasses.
+    pub(crate) fn render_pass_created(&self, raw: vk::RenderPass, record: RenderPassRecord) {
+        self.render_passes
+            .lock()
+            .insert(raw.as_raw(), Vrc::new(record));
+    }
+
+    /// The record of a live render pass made through the wrappers.
+    pub(crate) fn render_pass(&self, raw: vk::RenderPass) -> Option<Vrc<RenderPassRecord>> {
+        self.render_passes.lock().get(&raw.as_raw()).cloned()
+    }
+}
