@@ -198,7 +198,7 @@ mod allocation;
 #[cfg(feature = "ext_debug_utils")]
 mod debug_log;
 mod frames;
-mod layouts;
+
 mod mapping;
 mod physical;
 mod presence;

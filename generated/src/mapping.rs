@@ -18,21 +18,6 @@ use ash::vk;
 use core::ptr::NonNull;
 use tuff_runtime::mapped::{check_range, flush_range, Placement};
 
-/// What mapping needs to know of a device memory allocated through the wrappers.
-pub(crate) struct MemoryRecord {
-    /// `allocationSize`.
-    pub(crate) size: u64,
-    /// `memoryTypeIndex`.
-    pub(crate) memory_type_index: u32,
-    /// Whether a [`MappedMemory`] of it lives.
-    pub(crate) mapped: bool,
-    /// Its type's property flags and the device's `nonCoherentAtomSize`, read at the
-    /// first map.
-    pub(crate) host: Option<(vk::MemoryPropertyFlags, u64)>,
-    /// What its chained infos asked for, which binds are checked against.
-    pub(crate) asked: crate::state::MemoryAsked,
-}
-
 /// A device memory mapped for host access; unmapped when dropped.
 ///
 /// ```no_run

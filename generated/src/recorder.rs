@@ -5,6 +5,7 @@
 //! alive by the command buffer, and by the fence of every submission of it.
 
 use crate::handles::{CommandBuffer, Device};
+use crate::state::{dynamic_bit, DepthStencil};
 use crate::structs::CommandBufferBeginInfo;
 use crate::submission::Uses;
 use crate::{Error, Handle, Result};
@@ -181,24 +182,6 @@ pub(crate) enum Set {
     Discard(vk::Bool32),
 }
 
-/// The state that decides whether a draw writes its depth/stencil attachment: a
-/// pipeline's static values, or the values a recording set.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct DepthStencil {
-    /// Depth test enabled.
-    pub depth_test: bool,
-    /// Depth writes enabled.
-    pub depth_write: bool,
-    /// Stencil test enabled.
-    pub stencil_test: bool,
-    /// The fail, pass and depth-fail operations of the front and back faces.
-    pub ops: [[vk::StencilOp; 3]; 2],
-    /// The front and back write masks.
-    pub masks: [u32; 2],
-    /// Rasterizer discard enabled.
-    pub discard: bool,
-}
-
 impl Default for DepthStencil {
     /// Values that write both aspects: what a check assumes of a value not set.
     fn default() -> Self {
@@ -362,21 +345,6 @@ impl PassInstance {
     }
 }
 
-/// The dynamic states the recorder follows, one bit each: those of Vulkan 1.0
-/// (0 to 8) and 1.3 (9 to 23); any other state has no bit (0).
-pub(crate) const fn dynamic_bit(state: vk::DynamicState) -> u32 {
-    let n = state.as_raw();
-    let index = match n {
-        0..=8 => n,
-        1000267000..=1000267011 => 9 + n - 1000267000,
-        1000377001 => 21,
-        1000377002 => 22,
-        1000377004 => 23,
-        _ => return 0,
-    };
-    1 << index
-}
-
 /// A query begun in the recording and not yet ended.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ActiveQuery {
@@ -434,7 +402,7 @@ pub struct Recorder<'c, S: Scope> {
     /// The queries begun and not yet ended.
     pub(crate) queries: Vec<ActiveQuery>,
     /// The image layouts the recording needs at its start and leaves so far.
-    pub(crate) layouts: crate::layouts::Recording,
+    pub(crate) layouts: crate::state::layouts::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
     pub(crate) pass_images: Vec<vk::Image>,
     /// The descriptor sets bound so far, each with its generation then: an update
@@ -771,7 +739,9 @@ impl<'c, S: Scope> Recorder<'c, S> {
 
     /// The device's records and the recording's image layouts, borrowed together
     /// for a command that changes the layouts.
-    pub(crate) fn layouts_mut(&mut self) -> (&crate::state::Live, &mut crate::layouts::Recording) {
+    pub(crate) fn layouts_mut(
+        &mut self,
+    ) -> (&crate::state::Live, &mut crate::state::layouts::Recording) {
         (self.device.live(), &mut self.layouts)
     }
 

@@ -10,213 +10,11 @@
 //! without a fence (a presentation) is held by the queue wrapper that made it.
 
 use crate::handles::Device;
+use crate::state::{Binary, Submission};
 use crate::{Error, Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
 use tuff_runtime::{Retained, Vrc, Vutex, Vweak};
-
-/// One queue operation and everything it uses.
-pub(crate) struct Submission {
-    queue: vk::Queue,
-    /// Position in the device's submission order.
-    seq: u64,
-    /// The fence it signals, or null.
-    fence: vk::Fence,
-    state: Vutex<SubmissionState>,
-}
-
-struct SubmissionState {
-    /// What it uses; `None` once it is known complete, or once every batch is known
-    /// to have finished executing (its timeline signal was seen).
-    kept: Option<Vec<Retained>>,
-    /// Known complete: its fence (or a later one of the queue) was seen signalled or
-    /// the queue went idle. A timeline signal alone does not tell this: the fence
-    /// may still be waiting to signal.
-    complete: bool,
-    /// For each batch that has not been seen finished, the timeline values whose
-    /// signal shows that it did (a signal that covers all of the batch's commands).
-    /// A batch without one keeps the submission's objects until it completes.
-    batches: Vec<Vec<(vk::Semaphore, u64)>>,
-}
-
-impl Submission {
-    /// Whether the submission is known complete.
-    pub(crate) fn is_complete(&self) -> bool {
-        self.state.lock().complete
-    }
-
-    /// Marks the submission complete and releases what it used.
-    fn complete(&self) {
-        let kept = {
-            let mut state = self.state.lock();
-            state.complete = true;
-            state.batches.clear();
-            state.kept.take()
-        };
-        // Released outside the lock: the last reference to an object runs its Drop.
-        drop(kept);
-    }
-
-    /// Timeline semaphore `semaphore` reached `value`: the batches that signal it
-    /// with a value no greater have finished, and once every batch has, what the
-    /// submission used goes (the submission itself stays incomplete until its fence
-    /// is seen).
-    fn reached(&self, semaphore: vk::Semaphore, value: u64) {
-        let kept = {
-            let mut state = self.state.lock();
-            if state.kept.is_none() || state.batches.is_empty() {
-                return;
-            }
-            state
-                .batches
-                .retain(|signals| !signals.iter().any(|(s, v)| *s == semaphore && *v <= value));
-            if !state.batches.is_empty() {
-                return;
-            }
-            state.kept.take()
-        };
-        drop(kept);
-    }
-
-    /// Keeps `objects` too, until the submission completes (nothing, once it has).
-    pub(crate) fn keep_also(&self, objects: &[Retained]) {
-        if let Some(kept) = self.state.lock().kept.as_mut() {
-            kept.extend(objects.iter().cloned());
-        }
-    }
-
-    /// Whether the submission is complete, asking its fence when tuff has not seen
-    /// it signalled; a signalled fence retires the submission on `device`.
-    pub(crate) fn poll(&self, device: &Device) -> bool {
-        let signalled = {
-            let state = self.state.lock();
-            if state.complete {
-                return true;
-            }
-            if self.fence == vk::Fence::null() {
-                return false;
-            }
-            // SAFETY: the fence lives while this submission is incomplete: its wrapper
-            // completes the submission before it destroys the fence, and that takes
-            // this lock, which is held here.
-            let r = unsafe { (device.fns().fp_v1_0().get_fence_status)(device.raw(), self.fence) };
-            r == vk::Result::SUCCESS
-        };
-        if signalled {
-            device.live().ledger().retire(self);
-        }
-        signalled
-    }
-}
-
-/// A device's submissions in submission order, held weakly.
-pub(crate) struct Ledger {
-    state: Vutex<LedgerState>,
-}
-
-impl Default for Ledger {
-    fn default() -> Self {
-        Ledger {
-            state: Vutex::new(LedgerState::default()),
-        }
-    }
-}
-
-#[derive(Default)]
-struct LedgerState {
-    next: u64,
-    subs: Vec<Vweak<Submission>>,
-}
-
-impl Ledger {
-    /// Records a submission to `queue` that signals `fence` (or none) and uses `kept`.
-    pub(crate) fn record(
-        &self,
-        queue: vk::Queue,
-        fence: vk::Fence,
-        kept: Vec<Retained>,
-        batches: Vec<Vec<(vk::Semaphore, u64)>>,
-    ) -> Vrc<Submission> {
-        let mut state = self.state.lock();
-        state.next += 1;
-        // A batch without a timeline signal can only finish with the fence.
-        let batches = if batches.iter().any(Vec::is_empty) {
-            Vec::new()
-        } else {
-            batches
-        };
-        let sub = Vrc::new(Submission {
-            queue,
-            seq: state.next,
-            fence,
-            state: Vutex::new(SubmissionState {
-                kept: Some(kept),
-                complete: false,
-                batches,
-            }),
-        });
-        // A weak entry whose submission is gone or complete is dropped here, so the
-        // ledger stays as long as the work in flight.
-        state
-            .subs
-            .retain(|w| w.upgrade().is_some_and(|s| !s.is_complete()));
-        state.subs.push(Vrc::downgrade(&sub));
-        sub
-    }
-
-    /// `done` is complete, and so is every earlier submission to its queue: a fence
-    /// signal covers every command submitted before it to that queue.
-    pub(crate) fn retire(&self, done: &Submission) {
-        let (queue, seq) = (done.queue, done.seq);
-        // An acquire's fence (no queue) tells nothing of other acquires.
-        if queue != vk::Queue::null() {
-            self.retire_where(|s| s.queue == queue && s.seq <= seq);
-        }
-        done.complete();
-    }
-
-    /// Timeline semaphore `semaphore` was seen at `value` (a wait returned, or its
-    /// counter was read): the batches that signal it with a value no greater have
-    /// finished executing, and submissions whose batches all have release what they
-    /// use. A semaphore signal covers only its own batch, so nothing earlier on the
-    /// queue is released by it.
-    pub(crate) fn reached(&self, semaphore: vk::Semaphore, value: u64) {
-        let subs: Vec<Vrc<Submission>> = {
-            let state = self.state.lock();
-            state.subs.iter().filter_map(Vweak::upgrade).collect()
-        };
-        for s in subs {
-            s.reached(semaphore, value);
-        }
-    }
-
-    /// Every submission to `queue` is complete (`vkQueueWaitIdle` returned).
-    pub(crate) fn retire_queue(&self, queue: vk::Queue) {
-        self.retire_where(|s| s.queue == queue);
-    }
-
-    /// Every submission is complete (`vkDeviceWaitIdle` returned), but for acquires,
-    /// which the presentation engine, not a queue, completes.
-    pub(crate) fn retire_all(&self) {
-        self.retire_where(|s| s.queue != vk::Queue::null());
-    }
-
-    fn retire_where(&self, done: impl Fn(&Submission) -> bool) {
-        let finished: Vec<Vrc<Submission>> = {
-            let state = self.state.lock();
-            state
-                .subs
-                .iter()
-                .filter_map(Vweak::upgrade)
-                .filter(|s| done(s))
-                .collect()
-        };
-        // Completed outside the ledger's lock, since releasing objects runs their Drop.
-        for s in &finished {
-            s.complete();
-        }
-    }
-}
 
 /// The lifecycle state of a command buffer, shared with the device's registry so a
 /// submission naming the raw handle finds it.
@@ -259,7 +57,7 @@ struct UsesState {
     secondaries: Vec<(Vrc<Uses>, u64, u64)>,
     /// The image layouts the last recording needs at its start and leaves at its
     /// end; `None` while recording, or when it names none.
-    layouts: Option<Vrc<crate::layouts::Recording>>,
+    layouts: Option<Vrc<crate::state::layouts::Recording>>,
     /// The descriptor sets the last recording bound, each with its generation then.
     sets: Vec<(u64, u64)>,
     /// The queue family of the buffer's pool and whether the pool is protected, as
@@ -407,13 +205,13 @@ impl Uses {
     }
 
     /// The image layouts of the recording that just ended.
-    pub(crate) fn set_layouts(&self, layouts: crate::layouts::Recording) {
+    pub(crate) fn set_layouts(&self, layouts: crate::state::layouts::Recording) {
         let layouts = (!layouts.is_empty()).then(|| Vrc::new(layouts));
         self.state.lock().layouts = layouts;
     }
 
     /// The image layouts the last recording needs at its start and leaves.
-    pub(crate) fn layouts(&self) -> Option<Vrc<crate::layouts::Recording>> {
+    pub(crate) fn layouts(&self) -> Option<Vrc<crate::state::layouts::Recording>> {
         self.state.lock().layouts.clone()
     }
 
@@ -655,7 +453,7 @@ pub(crate) fn check_command_buffers(
 /// those the device's earlier submissions and the command buffers before them in
 /// `cbs` leave (the rule of the command that named the layout).
 pub(crate) fn check_layouts(device: &Device, cbs: &[vk::CommandBuffer]) -> Result<()> {
-    let mut overlay = crate::layouts::Overlay::new(device.live());
+    let mut overlay = crate::state::layouts::Overlay::new(device.live());
     for raw in cbs {
         if let Some(layouts) = device.command_buffer_uses(*raw).and_then(|u| u.layouts()) {
             overlay.check(&layouts)?;
@@ -725,7 +523,7 @@ pub(crate) fn sets_gate<'d>(
 
 /// Records the image layouts that `cbs`, submitted in this order, leave.
 fn record_layouts(device: &Device, cbs: &[vk::CommandBuffer]) {
-    let mut overlay = crate::layouts::Overlay::new(device.live());
+    let mut overlay = crate::state::layouts::Overlay::new(device.live());
     for raw in cbs {
         if let Some(layouts) = device.command_buffer_uses(*raw).and_then(|u| u.layouts()) {
             overlay.apply(&layouts);
@@ -891,54 +689,6 @@ pub(crate) fn timeline_initial(info: &crate::structs::SemaphoreCreateInfo<'_>) -
             };
             (t.semaphore_type == vk::SemaphoreType::TIMELINE).then_some(t.initial_value)
         })
-}
-
-/// What the device knows of a timeline semaphore's value: a value it has reached,
-/// and the operations submitted on it that may not have executed yet. Its value when
-/// an operation executes lies between the two.
-#[derive(Debug)]
-pub(crate) struct Timeline {
-    /// A value it is known to have reached (its initial value, one the host read,
-    /// waited for or signalled, or one a completed submission signalled).
-    known: u64,
-    /// The largest value any signal operation submitted, or the host, gives it.
-    max_signal: u64,
-    /// The wait (`false`) and signal (`true`) operations submitted and not known
-    /// complete, with their values.
-    pending: Vec<(u64, bool, Vweak<Submission>)>,
-}
-
-impl Timeline {
-    /// A new timeline semaphore's state.
-    pub(crate) fn new(initial: u64) -> Self {
-        Timeline {
-            known: initial,
-            max_signal: initial,
-            pending: Vec::new(),
-        }
-    }
-
-    /// Drops the operations of submissions known complete; their signals were
-    /// reached.
-    fn prune(&mut self) {
-        let mut known = self.known;
-        self.pending.retain(|(value, signal, sub)| {
-            let done = sub.upgrade().is_none_or(|s| s.is_complete());
-            if done && *signal {
-                known = known.max(*value);
-            }
-            !done
-        });
-        self.known = known;
-    }
-
-    /// The host saw the semaphore at `value` (or signalled it to `value`).
-    pub(crate) fn seen(&mut self, value: u64, host_signal: bool) {
-        self.known = self.known.max(value);
-        if host_signal {
-            self.max_signal = self.max_signal.max(value);
-        }
-    }
 }
 
 /// One timeline operation of a submission: the semaphore, its value, and whether
@@ -1237,21 +987,6 @@ pub(crate) fn submit2_timeline_batches(
             .collect()
         })
         .collect()
-}
-
-/// What a binary semaphore has had submitted that still matters. A semaphore the
-/// device does not list is unsignaled, with no signal or wait pending.
-pub(crate) enum Binary {
-    /// A signal operation was submitted (by a queue batch or an acquire), and no
-    /// wait since: the semaphore is signaled, or will be.
-    Signaled,
-    /// A wait was submitted to `queue` by `by`; once that operation completes the
-    /// semaphore is unsignaled (a submission no longer held is complete: an
-    /// incomplete one is held by its fence or its queue).
-    Waited {
-        queue: vk::Queue,
-        by: Vweak<Submission>,
-    },
 }
 
 /// A binary semaphore's state, as a check reads it.

@@ -7,6 +7,7 @@
 
 use crate::checks::Exts;
 use crate::handles::{Device, Instance};
+use crate::state::Features;
 use crate::{Error, Handle};
 use ash::vk;
 use rustc_hash::FxHashMap;
@@ -83,7 +84,7 @@ impl<'a> Scope<'a> {
     /// The limits of the scope's physical device, where the scope has a device.
     #[inline]
     pub(crate) fn limits(&self) -> Option<&'a vk::PhysicalDeviceLimits> {
-        self.device.map(crate::special::limits)
+        self.device.map(crate::state::limits)
     }
 
     /// Whether `raw` was created, allocated or retrieved from the scope's device.
@@ -119,27 +120,6 @@ impl Device {
         }
     }
 }
-
-/// The core features a device was created with, from its create info's
-/// `pEnabledFeatures` and every features struct of its chain (each copied without
-/// its `pNext`).
-#[derive(Clone, Copy, Default)]
-pub(crate) struct Features {
-    /// Vulkan 1.0's.
-    pub v10: vk::PhysicalDeviceFeatures,
-    /// Vulkan 1.1's.
-    pub v11: vk::PhysicalDeviceVulkan11Features<'static>,
-    /// Vulkan 1.2's.
-    pub v12: vk::PhysicalDeviceVulkan12Features<'static>,
-    /// Vulkan 1.3's.
-    pub v13: vk::PhysicalDeviceVulkan13Features<'static>,
-}
-
-// SAFETY: the `pNext` of each struct stays null: the features are copied member
-// by member, and nothing dereferences the pointer.
-unsafe impl Send for Features {}
-// SAFETY: as above; the struct is plain data.
-unsafe impl Sync for Features {}
 
 /// The error of a failed check.
 #[cold]
@@ -234,38 +214,6 @@ mod tests {
             )),
             Some("VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexFormat-parameter")
         );
-    }
-
-    // The build-range arrays a safe build takes are checked against each build
-    // info's geometry count, which is what Vulkan reads from them.
-    #[test]
-    fn build_ranges_hold_a_range_per_geometry() {
-        let geometry =
-            AccelerationStructureGeometryKHR::new(AccelerationStructureGeometryDataKHR::Triangles(
-                AccelerationStructureGeometryTrianglesDataKHR::default(),
-            ));
-        let geometries = [geometry, geometry];
-        let infos = [AccelerationStructureBuildGeometryInfoKHR::default().geometries(&geometries)];
-        let range = vk::AccelerationStructureBuildRangeInfoKHR::default();
-        let vuid03676 = "VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676";
-        assert_eq!(
-            vuid(crate::special::acceleration::per_geometry_fits(
-                &infos,
-                &[&[range][..]],
-                Some(vuid03676)
-            )),
-            Some(vuid03676)
-        );
-        assert!(crate::special::acceleration::per_geometry_fits(
-            &infos,
-            &[&[range, range][..]],
-            Some(vuid03676)
-        )
-        .is_ok());
-        assert!(matches!(
-            crate::special::acceleration::per_geometry_fits(&infos, &[&[7u32][..]], None),
-            Err(Error::Misuse(_))
-        ));
     }
 
     #[test]

@@ -2,7 +2,7 @@
 
 //! Which core feature each struct of a device create info's chain enables.
 use ash::vk;
-use crate::validation::Features;
+use crate::state::Features;
 /// Adds the features one struct of a `VkDeviceCreateInfo` chain enables to
 /// `f`: a core version's features struct, `VkPhysicalDeviceFeatures2`, or a
 /// struct whose features a core version took over. Other structs add nothing.

@@ -2787,7 +2787,7 @@ pub struct Fence {
 struct FenceInner {
     raw: vk::Fence,
     parent: Device,
-    submission: Vutex<Option<Vrc<crate::submission::Submission>>>,
+    submission: Vutex<Option<Vrc<crate::state::Submission>>>,
     keep: Option<Retained>,
     destroy: bool,
     sync: tuff_runtime::HostSync,
@@ -2822,13 +2822,13 @@ impl Fence {
     }
     /// Holds the queue operation that signals this fence until it is
     /// known complete.
-    pub(crate) fn track(&self, sub: Vrc<crate::submission::Submission>) {
+    pub(crate) fn track(&self, sub: Vrc<crate::state::Submission>) {
         let old = self.inner.submission.lock().replace(sub);
         drop(old);
     }
     /// The queue operation that signals this fence, while it is not known
     /// complete.
-    pub(crate) fn submission(&self) -> Option<Vrc<crate::submission::Submission>> {
+    pub(crate) fn submission(&self) -> Option<Vrc<crate::state::Submission>> {
         self.inner.submission.lock().clone().filter(|s| !s.is_complete())
     }
     /// The fence was seen signalled: its queue operation, and every one
@@ -4230,7 +4230,7 @@ struct QueueInner {
     raw: vk::Queue,
     parent: Device,
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
-    unfenced: Vutex<Vec<Vrc<crate::submission::Submission>>>,
+    unfenced: Vutex<Vec<Vrc<crate::state::Submission>>>,
     keep: Option<Retained>,
     destroy: bool,
     sync: tuff_runtime::HostSync,
@@ -4276,7 +4276,7 @@ impl Queue {
     /// Holds a queue operation without a fence (a presentation, or a submission
     /// without one) until it is known complete.
     #[allow(dead_code)]
-    pub(crate) fn hold(&self, sub: Vrc<crate::submission::Submission>) {
+    pub(crate) fn hold(&self, sub: Vrc<crate::state::Submission>) {
         let done: Vec<_> = {
             let mut held = self.inner.unfenced.lock();
             let (done, open): (Vec<_>, Vec<_>) = held

@@ -28,3 +28,39 @@ pub(crate) fn per_geometry_fits<T>(
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::per_geometry_fits;
+    use crate::*;
+
+    fn vuid(r: crate::Result<()>) -> Option<&'static str> {
+        match r {
+            Err(Error::Validation { vuid, .. }) => Some(vuid),
+            _ => None,
+        }
+    }
+
+    // The build-range arrays a safe build takes are checked against each build
+    // info's geometry count, which is what Vulkan reads from them.
+    #[test]
+    fn build_ranges_hold_a_range_per_geometry() {
+        let geometry =
+            AccelerationStructureGeometryKHR::new(AccelerationStructureGeometryDataKHR::Triangles(
+                AccelerationStructureGeometryTrianglesDataKHR::default(),
+            ));
+        let geometries = [geometry, geometry];
+        let infos = [AccelerationStructureBuildGeometryInfoKHR::default().geometries(&geometries)];
+        let range = vk::AccelerationStructureBuildRangeInfoKHR::default();
+        let vuid03676 = "VUID-vkCmdBuildAccelerationStructuresKHR-ppBuildRangeInfos-03676";
+        assert_eq!(
+            vuid(per_geometry_fits(&infos, &[&[range][..]], Some(vuid03676))),
+            Some(vuid03676)
+        );
+        assert!(per_geometry_fits(&infos, &[&[range, range][..]], Some(vuid03676)).is_ok());
+        assert!(matches!(
+            per_geometry_fits(&infos, &[&[7u32][..]], None),
+            Err(Error::Misuse(_))
+        ));
+    }
+}

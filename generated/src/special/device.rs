@@ -269,9 +269,9 @@ pub(crate) fn create_device_scope<'p>(
 /// The core features a device create info enables (given directly, in a chained
 /// `VkPhysicalDeviceFeatures2`, a core version's features struct, or the struct of
 /// the extension a core feature came from).
-pub(crate) fn enabled_features(create_info: &DeviceCreateInfo<'_>) -> crate::validation::Features {
+pub(crate) fn enabled_features(create_info: &DeviceCreateInfo<'_>) -> crate::state::Features {
     let info = create_info.as_raw();
-    let mut features = crate::validation::Features::default();
+    let mut features = crate::state::Features::default();
     // SAFETY: the safe setter stores a reference that outlives the create info.
     if let Some(v10) = unsafe { info.p_enabled_features.as_ref() } {
         features.v10 = *v10;

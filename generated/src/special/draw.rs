@@ -101,7 +101,7 @@ fn vertex_fetch_checks<S: Scope>(
     };
     let bound = &recorder.bound[0];
     let dynamic_stride = pipeline.dynamic
-        & crate::recorder::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE)
+        & crate::state::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE)
         != 0;
     if pipeline.vertex_reads.is_empty() {
         return Ok(());
@@ -197,7 +197,7 @@ pub(crate) type ShaderRules = [&'static str; 21];
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
 /// depth bias enable and primitive restart enable.
 pub(crate) const NAMED_STATES: [u32; 5] = {
-    use crate::recorder::dynamic_bit;
+    use crate::state::dynamic_bit;
     use vk::DynamicState as D;
     [
         dynamic_bit(D::PRIMITIVE_TOPOLOGY),
@@ -278,7 +278,7 @@ fn draw_state_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
 fn draw_values<S: Scope>(
     recorder: &Recorder<'_, S>,
     pipeline: &PipelineRecord,
-) -> crate::recorder::DepthStencil {
+) -> crate::state::DepthStencil {
     let mut values = pipeline.depth_stencil;
     values.take(&recorder.depth_stencil, pipeline.dynamic);
     values
@@ -377,7 +377,7 @@ fn count_checks(
     pipeline: &PipelineRecord,
     rules: &[&'static str; 3],
 ) -> Result<()> {
-    use crate::recorder::dynamic_bit;
+    use crate::state::dynamic_bit;
     let with = |state| pipeline.dynamic & dynamic_bit(state) != 0;
     let (static_viewports, static_scissors) = pipeline.viewports;
     match (

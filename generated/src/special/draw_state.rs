@@ -595,7 +595,7 @@ pub(crate) fn cmd_bind_vertex_buffers2_done<S: Scope>(
     if !strides.is_empty() {
         dynamic_state_set(
             recorder,
-            crate::recorder::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE),
+            crate::state::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE),
         );
     }
 }
@@ -608,7 +608,7 @@ pub(crate) fn viewport_count_set<S: Scope>(
     bits: u32,
 ) {
     let count = u32::try_from(count).unwrap_or(u32::MAX);
-    if bits == crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT) {
+    if bits == crate::state::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT) {
         recorder.counts.0 = Some(count);
     } else {
         recorder.counts.1 = Some(count);

@@ -1,10 +1,10 @@
 //! The image layouts recorded commands name: checked by the safe methods against
 //! what the recording's earlier commands leave, and recorded by every method for
-//! the submission that checks the rest ([`crate::layouts`]).
+//! the submission that checks the rest ([`crate::state::layouts`]).
 
 use crate::handles::CommandBuffer;
-use crate::layouts::Sel;
 use crate::recorder::{Recorder, Scope};
+use crate::state::layouts::Sel;
 use crate::structs::{
     BlitImageInfo2, CopyBufferToImageInfo2, CopyImageInfo2, CopyImageToBufferInfo2, DependencyInfo,
     ImageMemoryBarrier, RenderPassBeginInfo, ResolveImageInfo2,

@@ -50,6 +50,7 @@ pub(crate) mod view;
 
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
+pub(crate) use crate::state::limits;
 use crate::state::PoolFamily;
 use crate::{Error, Handle, Result};
 use ash::vk;
@@ -77,13 +78,6 @@ pub(crate) fn pool_family<S: Scope>(recorder: &Recorder<'_, S>) -> PoolFamily {
             },
             protected: false,
         })
-}
-
-/// The physical device's limits, read once per device.
-pub(crate) fn limits(device: &Device) -> &vk::PhysicalDeviceLimits {
-    device
-        .live()
-        .limits(|| device.parent().get_properties().limits)
 }
 
 /// The struct of type `ty` in a safe struct's `pNext` chain, if it has one.

@@ -270,7 +270,7 @@ fn pipelines_created(
 
 /// The depth/stencil state of a pipeline that writes neither aspect (a compute
 /// pipeline's).
-const NO_DEPTH_STENCIL_WRITES: crate::recorder::DepthStencil = crate::recorder::DepthStencil {
+const NO_DEPTH_STENCIL_WRITES: crate::state::DepthStencil = crate::state::DepthStencil {
     depth_test: false,
     depth_write: false,
     stencil_test: false,
@@ -281,7 +281,7 @@ const NO_DEPTH_STENCIL_WRITES: crate::recorder::DepthStencil = crate::recorder::
 
 /// A graphics pipeline's static depth/stencil and rasterizer discard state (no
 /// depth/stencil state: neither test).
-fn static_depth_stencil(raw: &vk::GraphicsPipelineCreateInfo<'_>) -> crate::recorder::DepthStencil {
+fn static_depth_stencil(raw: &vk::GraphicsPipelineCreateInfo<'_>) -> crate::state::DepthStencil {
     // SAFETY: the safe setters store references that outlive the create info.
     let (ds, raster) = unsafe {
         (
@@ -290,7 +290,7 @@ fn static_depth_stencil(raw: &vk::GraphicsPipelineCreateInfo<'_>) -> crate::reco
         )
     };
     let ops = |s: &vk::StencilOpState| [s.fail_op, s.pass_op, s.depth_fail_op];
-    crate::recorder::DepthStencil {
+    crate::state::DepthStencil {
         depth_test: ds.is_some_and(|d| d.depth_test_enable != vk::FALSE),
         depth_write: ds.is_some_and(|d| d.depth_write_enable != vk::FALSE),
         stencil_test: ds.is_some_and(|d| d.stencil_test_enable != vk::FALSE),
@@ -432,7 +432,7 @@ pub(crate) fn graphics_pipelines_created(
         let dynamic = unsafe { raw.p_dynamic_state.as_ref() }.map_or(0, |d| {
             unsafe { crate::state::raw_slice(d.p_dynamic_states, d.dynamic_state_count) }
                 .iter()
-                .fold(0, |bits, s| bits | crate::recorder::dynamic_bit(*s))
+                .fold(0, |bits, s| bits | crate::state::dynamic_bit(*s))
         });
         let pass = device
             .live()

@@ -240,7 +240,7 @@ fn check_presented_images(device: &Device, present_info: &PresentInfoKHR<'_>) ->
     };
     for (n, (swapchain, index)) in swapchains.iter().zip(indices).enumerate() {
         match device.live().acquired_image(*swapchain, *index) {
-            Ok((image, _)) => crate::layouts::check_device_layout(
+            Ok((image, _)) => crate::state::layouts::check_device_layout(
                 device.live(),
                 image,
                 &[

@@ -36,7 +36,7 @@ pub(super) struct SetUse {
     pub(super) generation: u64,
     /// The submissions of command buffers that bound the set, weakly; those known
     /// complete are pruned as new ones come.
-    pub(super) subs: Vec<Vweak<crate::submission::Submission>>,
+    pub(super) subs: Vec<Vweak<crate::state::Submission>>,
     /// Whether the set's pool was created with `UPDATE_AFTER_BIND`.
     pub(super) pool_update_after_bind: bool,
     /// The image descriptors the set holds (none: `None`), replaced as a whole by
@@ -69,7 +69,7 @@ pub(crate) struct ImageDescriptor {
     /// The image view was created with a sampler Y'CbCr conversion.
     pub ycbcr: bool,
     /// The view's subresources.
-    pub sel: crate::layouts::Sel,
+    pub sel: crate::state::layouts::Sel,
     /// The descriptor's `imageLayout`.
     pub layout: vk::ImageLayout,
     /// The view's type.
@@ -275,7 +275,7 @@ impl Live {
             buffer: vk::Buffer::null(),
             sampler: 0,
             ycbcr: false,
-            sel: crate::layouts::Sel {
+            sel: crate::state::layouts::Sel {
                 aspect: vk::ImageAspectFlags::empty(),
                 mips: (0, 0),
                 layers: (0, 0),
@@ -344,7 +344,7 @@ impl Live {
             buffer: vk::Buffer::null(),
             sampler: 0,
             ycbcr: view.ycbcr,
-            sel: crate::layouts::Sel {
+            sel: crate::state::layouts::Sel {
                 aspect: view.aspect,
                 mips: (view.base_level, view.base_level.saturating_add(view.levels)),
                 layers,
@@ -415,11 +415,7 @@ impl Live {
     }
 
     /// `sub` submits command buffers that bound `sets`.
-    pub(crate) fn sets_submitted(
-        &self,
-        sets: &[(u64, u64)],
-        sub: &Vrc<crate::submission::Submission>,
-    ) {
+    pub(crate) fn sets_submitted(&self, sets: &[(u64, u64)], sub: &Vrc<crate::state::Submission>) {
         let mut uses = self.set_uses.lock();
         for (set, _) in sets {
             if let Some(u) = uses.get_mut(set) {
@@ -435,7 +431,7 @@ impl Live {
     pub(crate) fn set_submissions(
         &self,
         raw: vk::DescriptorSet,
-    ) -> Vec<Vrc<crate::submission::Submission>> {
+    ) -> Vec<Vrc<crate::state::Submission>> {
         self.set_uses
             .lock()
             .get(&raw.as_raw())

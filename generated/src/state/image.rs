@@ -71,7 +71,7 @@ impl Live {
     /// Records that a new image's subresources start `PREINITIALIZED`.
     pub(crate) fn image_preinitialized(&self, image: vk::Image) {
         if let Some(record) = self.image(image) {
-            let len = crate::layouts::Shape::of(&record).len();
+            let len = crate::state::layouts::Shape::of(&record).len();
             self.layouts
                 .lock()
                 .insert(image.as_raw(), vec![vk::ImageLayout::PREINITIALIZED; len]);

@@ -40,7 +40,7 @@ pub(crate) struct Live {
     /// binding's dynamic offset is checked against.
     pub(super) dynamic_ranges: Vutex<HashMap<u64, SetRanges>>,
     /// Each device memory's size, type and whether it is mapped now.
-    pub(super) memories: Vutex<HashMap<u64, crate::mapping::MemoryRecord>>,
+    pub(super) memories: Vutex<HashMap<u64, super::memory::MemoryRecord>>,
     /// Each live image view's parameters.
     pub(super) views: Vutex<HashMap<u64, ViewRecord>>,
     /// Each live framebuffer's attachments (none for an imageless one) and its
@@ -59,7 +59,7 @@ pub(crate) struct Live {
     /// allows.
     pub(super) allocating: Vutex<()>,
     /// The device's queue operations that may still be executing.
-    pub(super) ledger: crate::submission::Ledger,
+    pub(super) ledger: crate::state::Ledger,
     /// The host synchronization of each queue of the device.
     pub(super) queues: Vutex<HashMap<u64, HostSync>>,
     /// The queue family of each queue got through the wrappers.
@@ -75,10 +75,10 @@ pub(crate) struct Live {
     #[cfg_attr(not(feature = "khr_swapchain"), allow(dead_code))]
     pub(super) present_masks: Vutex<Option<[u32; vk::MAX_DEVICE_GROUP_SIZE]>>,
     /// The device's timeline semaphores (the others are binary).
-    pub(super) timelines: Vutex<HashMap<u64, crate::submission::Timeline>>,
+    pub(super) timelines: Vutex<HashMap<u64, crate::state::Timeline>>,
     /// The binary semaphores with a signal or wait submitted that may matter still
     /// (an unlisted one is unsignaled with nothing pending).
-    pub(super) binaries: Vutex<HashMap<u64, crate::submission::Binary>>,
+    pub(super) binaries: Vutex<HashMap<u64, crate::state::Binary>>,
     /// The live events created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`, which the
     /// host may not set, reset or read.
     pub(super) device_only_events: Vutex<std::collections::HashSet<u64>>,
@@ -98,7 +98,7 @@ pub(crate) struct Live {
     /// What the checks of commands and structs that name an image need to know of it.
     pub(super) images: Vutex<HashMap<u64, ImageRecord>>,
     /// The layout of each subresource of an image (numbered as
-    /// [`crate::layouts::Shape`] does) as the submissions so far leave it; an
+    /// [`crate::state::layouts::Shape`] does) as the submissions so far leave it; an
     /// unlisted image is wholly `UNDEFINED`.
     pub(super) layouts: Vutex<HashMap<u64, Vec<vk::ImageLayout>>>,
     /// Each swapchain's images, as one record: what `get_swapchain_images_khr`
@@ -127,7 +127,7 @@ pub(crate) struct Live {
     /// The physical device's `maxBufferSize`, read once (none below Vulkan 1.3).
     pub(super) max_buffer_size: std::sync::OnceLock<Option<u64>>,
     /// The core features the device was created with.
-    pub(super) features: std::sync::OnceLock<crate::validation::Features>,
+    pub(super) features: std::sync::OnceLock<super::features::Features>,
     /// The queue families the device was created with, each with its queue count
     /// and create flags, one per `VkDeviceQueueCreateInfo`.
     pub(super) queue_infos: std::sync::OnceLock<Vec<(u32, u32, vk::DeviceQueueCreateFlags)>>,
@@ -395,7 +395,7 @@ impl Live {
         self.physical_count.get().copied().unwrap_or(1)
     }
 
-    pub(crate) fn set_features(&self, features: crate::validation::Features) {
+    pub(crate) fn set_features(&self, features: super::features::Features) {
         let _ = self.features.set(features);
     }
 
@@ -406,20 +406,17 @@ impl Live {
 
     /// Runs `read` on the core features the device was created with (none, before
     /// they are recorded).
-    pub(crate) fn with_features<R>(
-        &self,
-        read: impl FnOnce(&crate::validation::Features) -> R,
-    ) -> R {
+    pub(crate) fn with_features<R>(&self, read: impl FnOnce(&super::features::Features) -> R) -> R {
         read(self.features_or_none())
     }
 
     // Out of the generic `with_features`, which every feature check instantiates: the
     // features, or a set with none on, made once.
-    pub(super) fn features_or_none(&self) -> &crate::validation::Features {
-        static NONE: std::sync::OnceLock<crate::validation::Features> = std::sync::OnceLock::new();
+    pub(super) fn features_or_none(&self) -> &super::features::Features {
+        static NONE: std::sync::OnceLock<super::features::Features> = std::sync::OnceLock::new();
         match self.features.get() {
             Some(f) => f,
-            None => NONE.get_or_init(crate::validation::Features::default),
+            None => NONE.get_or_init(super::features::Features::default),
         }
     }
 
@@ -489,4 +486,11 @@ impl Live {
     pub(crate) fn keep<H: vk::Handle + Copy>(&self, raws: &[H]) -> Vec<Retained> {
         raws.iter().filter_map(|r| self.get(*r)).collect()
     }
+}
+
+/// The physical device's limits, read once per device.
+pub(crate) fn limits(device: &crate::handles::Device) -> &vk::PhysicalDeviceLimits {
+    device
+        .live()
+        .limits(|| device.parent().get_properties().limits)
 }

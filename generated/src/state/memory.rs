@@ -4,6 +4,22 @@
 use super::live::Live;
 use ash::vk::{self, Handle as _};
 
+/// What the device records of a device memory allocated through the wrappers, which
+/// mapping and binds read.
+pub(crate) struct MemoryRecord {
+    /// `allocationSize`.
+    pub(crate) size: u64,
+    /// `memoryTypeIndex`.
+    pub(crate) memory_type_index: u32,
+    /// Whether a [`MappedMemory`] of it lives.
+    pub(crate) mapped: bool,
+    /// Its type's property flags and the device's `nonCoherentAtomSize`, read at the
+    /// first map.
+    pub(crate) host: Option<(vk::MemoryPropertyFlags, u64)>,
+    /// What its chained infos asked for, which binds are checked against.
+    pub(crate) asked: MemoryAsked,
+}
+
 /// Where a buffer or image is bound: the raw memory, the offset there and the
 /// bytes it takes.
 pub(crate) type Binding = (u64, u64, u64);
@@ -107,7 +123,7 @@ impl Live {
     ) {
         self.memories.lock().insert(
             raw.as_raw(),
-            crate::mapping::MemoryRecord {
+            MemoryRecord {
                 size,
                 memory_type_index,
                 mapped: false,
@@ -130,7 +146,7 @@ impl Live {
     pub(crate) fn memory<R>(
         &self,
         raw: vk::DeviceMemory,
-        f: impl FnOnce(&mut crate::mapping::MemoryRecord) -> R,
+        f: impl FnOnce(&mut MemoryRecord) -> R,
     ) -> Option<R> {
         self.memories.lock().get_mut(&raw.as_raw()).map(f)
     }

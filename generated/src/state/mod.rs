@@ -10,8 +10,10 @@
 mod buffer;
 mod command_pool;
 mod descriptors;
+mod features;
 mod framebuffer;
 mod image;
+pub(crate) mod layouts;
 mod live;
 mod memory;
 mod pipeline;
@@ -30,16 +32,21 @@ pub(crate) use self::descriptors::{
     SetWritten, SlotKind, SAMPLER_LINEAR, SAMPLER_MIPMAP_LINEAR, SAMPLER_UNNORMALIZED,
     SAMPLER_YCBCR,
 };
+pub(crate) use self::features::Features;
 pub(crate) use self::framebuffer::AttachmentImage;
 pub(crate) use self::image::ImageRecord;
-pub(crate) use self::live::Live;
+pub(crate) use self::live::{limits, Live};
 pub(crate) use self::memory::{Binding, MemoryAsked};
-pub(crate) use self::pipeline::{LayoutRecord, PipelineRecord, RenderingFormats, VertexRead};
+pub(crate) use self::pipeline::{
+    dynamic_bit, DepthStencil, LayoutRecord, PipelineRecord, RenderingFormats, VertexRead,
+};
 pub(crate) use self::query::QueryPoolRecord;
+pub(crate) use self::queue::{Ledger, Submission};
 pub(crate) use self::render_pass::{
     AttachmentLayouts, RenderPassRecord, SelfDependency, USED_COLOR, USED_DEPTH,
     USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
 };
+pub(crate) use self::sync::{Binary, Timeline};
 pub(crate) use self::view::ViewRecord;
 
 /// The array a raw struct member points to.

@@ -7,6 +7,39 @@ use super::render_pass::RenderPassRecord;
 use ash::vk::{self, Handle as _};
 use tuff_runtime::Vrc;
 
+/// The state that decides whether a draw writes its depth/stencil attachment: a
+/// pipeline's static values, or the values a recording set.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DepthStencil {
+    /// Depth test enabled.
+    pub depth_test: bool,
+    /// Depth writes enabled.
+    pub depth_write: bool,
+    /// Stencil test enabled.
+    pub stencil_test: bool,
+    /// The fail, pass and depth-fail operations of the front and back faces.
+    pub ops: [[vk::StencilOp; 3]; 2],
+    /// The front and back write masks.
+    pub masks: [u32; 2],
+    /// Rasterizer discard enabled.
+    pub discard: bool,
+}
+
+/// The dynamic states the recorder follows, one bit each: those of Vulkan 1.0
+/// (0 to 8) and 1.3 (9 to 23); any other state has no bit (0).
+pub(crate) const fn dynamic_bit(state: vk::DynamicState) -> u32 {
+    let n = state.as_raw();
+    let index = match n {
+        0..=8 => n,
+        1000267000..=1000267011 => 9 + n - 1000267000,
+        1000377001 => 21,
+        1000377002 => 22,
+        1000377004 => 23,
+        _ => return 0,
+    };
+    1 << index
+}
+
 /// A live pipeline layout's push-constant ranges and the dynamic descriptors of its
 /// sets, which the recorder checks push constants and bound sets against.
 #[derive(Clone, Debug)]
@@ -54,7 +87,7 @@ pub(crate) struct PipelineRecord {
     /// The render pass it was created for, with the subpass (none for a compute
     /// pipeline, or one made for dynamic rendering).
     pub pass: Option<(Vrc<RenderPassRecord>, u32)>,
-    /// Its dynamic states, as [`crate::recorder::dynamic_bit`] bits.
+    /// Its dynamic states, as [`dynamic_bit`] bits.
     pub dynamic: u32,
     /// For a graphics pipeline made for dynamic rendering, the view mask and
     /// attachment formats its chained `VkPipelineRenderingCreateInfo` gives.
@@ -67,7 +100,7 @@ pub(crate) struct PipelineRecord {
     /// Its viewport state's viewport and scissor counts (0 without one).
     pub viewports: (u32, u32),
     /// Its depth/stencil and rasterizer discard state, where static.
-    pub depth_stencil: crate::recorder::DepthStencil,
+    pub depth_stencil: DepthStencil,
     /// The color attachments (the first 32) its color blend state enables blending
     /// for, one bit each.
     pub blend: u32,

@@ -868,14 +868,14 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
         "VkQueue" => {
             let (f, i, fns) = queue_flags_state("the queue's family, for the `queuetype` checks");
             (
-                quote!(#f unfenced: Vutex<Vec<Vrc<crate::submission::Submission>>>,),
+                quote!(#f unfenced: Vutex<Vec<Vrc<crate::state::Submission>>>,),
                 quote!(#i unfenced: Vutex::new(Vec::new()),),
                 quote! {
                     #fns
                     /// Holds a queue operation without a fence (a presentation, or a submission
                     /// without one) until it is known complete.
                     #[allow(dead_code)]
-                    pub(crate) fn hold(&self, sub: Vrc<crate::submission::Submission>) {
+                    pub(crate) fn hold(&self, sub: Vrc<crate::state::Submission>) {
                         let done: Vec<_> = {
                             let mut held = self.inner.unfenced.lock();
                             let (done, open): (Vec<_>, Vec<_>) = held.drain(..).partition(|s| s.is_complete());
@@ -889,18 +889,18 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
             )
         }
         "VkFence" => (
-            quote!(submission: Vutex<Option<Vrc<crate::submission::Submission>>>,),
+            quote!(submission: Vutex<Option<Vrc<crate::state::Submission>>>,),
             quote!(submission: Vutex::new(None),),
             quote! {
                 /// Holds the queue operation that signals this fence until it is
                 /// known complete.
-                pub(crate) fn track(&self, sub: Vrc<crate::submission::Submission>) {
+                pub(crate) fn track(&self, sub: Vrc<crate::state::Submission>) {
                     let old = self.inner.submission.lock().replace(sub);
                     drop(old);
                 }
                 /// The queue operation that signals this fence, while it is not known
                 /// complete.
-                pub(crate) fn submission(&self) -> Option<Vrc<crate::submission::Submission>> {
+                pub(crate) fn submission(&self) -> Option<Vrc<crate::state::Submission>> {
                     self.inner.submission.lock().clone().filter(|s| !s.is_complete())
                 }
                 /// The fence was seen signalled: its queue operation, and every one

@@ -690,7 +690,7 @@ The caller upholds the rules that [`Self::set_blend_constants`] checks at run ti
         unsafe { fp(self.raw(), blend_constants) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS),
+            crate::state::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS),
         );
         self.state_changed();
     }
@@ -753,7 +753,7 @@ The caller upholds the rules that [`Self::set_depth_bias`] checks at run time: `
         };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS),
+            crate::state::dynamic_bit(vk::DynamicState::DEPTH_BIAS),
         );
         self.state_changed();
     }
@@ -800,7 +800,7 @@ The caller upholds the rules that [`Self::set_depth_bounds`] checks at run time:
         unsafe { fp(self.raw(), min_depth_bounds, max_depth_bounds) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS),
+            crate::state::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS),
         );
         self.state_changed();
     }
@@ -840,7 +840,7 @@ The caller upholds the rules that [`Self::set_line_width`] checks at run time: `
         unsafe { fp(self.raw(), line_width) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::LINE_WIDTH),
+            crate::state::dynamic_bit(vk::DynamicState::LINE_WIDTH),
         );
         self.state_changed();
     }
@@ -915,7 +915,7 @@ The caller upholds the rules that [`Self::set_scissor`] checks at run time: `VUI
             };
             crate::special::draw_state::dynamic_state_set(
                 self,
-                crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR),
+                crate::state::dynamic_bit(vk::DynamicState::SCISSOR),
             );
             self.state_changed();
         }
@@ -966,7 +966,7 @@ The caller upholds the rules that [`Self::set_stencil_compare_mask`] checks at r
         unsafe { fp(self.raw(), face_mask, compare_mask) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK),
+            crate::state::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK),
         );
         self.state_changed();
     }
@@ -1015,7 +1015,7 @@ The caller upholds the rules that [`Self::set_stencil_reference`] checks at run 
         unsafe { fp(self.raw(), face_mask, reference) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE),
+            crate::state::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE),
         );
         self.state_changed();
     }
@@ -1065,7 +1065,7 @@ The caller upholds the rules that [`Self::set_stencil_write_mask`] checks at run
         crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::WriteMask(face_mask, write_mask),
-            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK),
+            crate::state::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK),
         );
         self.state_changed();
     }
@@ -1147,7 +1147,7 @@ The caller upholds the rules that [`Self::set_viewport`] checks at run time: `VU
             };
             crate::special::draw_state::dynamic_state_set(
                 self,
-                crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT),
+                crate::state::dynamic_bit(vk::DynamicState::VIEWPORT),
             );
             self.state_changed();
         }

@@ -882,7 +882,7 @@ The caller upholds the rules that [`Self::set_cull_mode`] checks at run time: `V
         unsafe { fp(self.raw(), cull_mode) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE),
+            crate::state::dynamic_bit(vk::DynamicState::CULL_MODE),
         );
         self.state_changed();
     }
@@ -923,7 +923,7 @@ The caller upholds the rules that [`Self::set_depth_bias_enable`] checks at run 
         unsafe { fp(self.raw(), depth_bias_enable) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE),
+            crate::state::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE),
         );
         self.state_changed();
     }
@@ -967,7 +967,7 @@ The caller upholds the rules that [`Self::set_depth_bounds_test_enable`] checks 
         unsafe { fp(self.raw(), depth_bounds_test_enable) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE),
+            crate::state::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE),
         );
         self.state_changed();
     }
@@ -1011,7 +1011,7 @@ The caller upholds the rules that [`Self::set_depth_compare_op`] checks at run t
         unsafe { fp(self.raw(), depth_compare_op) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP),
+            crate::state::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP),
         );
         self.state_changed();
     }
@@ -1053,7 +1053,7 @@ The caller upholds the rules that [`Self::set_depth_test_enable`] checks at run 
         crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::DepthTest(depth_test_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
+            crate::state::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE),
         );
         self.state_changed();
     }
@@ -1095,7 +1095,7 @@ The caller upholds the rules that [`Self::set_depth_write_enable`] checks at run
         crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::DepthWrite(depth_write_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
+            crate::state::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE),
         );
         self.state_changed();
     }
@@ -1136,7 +1136,7 @@ The caller upholds the rules that [`Self::set_front_face`] checks at run time: `
         unsafe { fp(self.raw(), front_face) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE),
+            crate::state::dynamic_bit(vk::DynamicState::FRONT_FACE),
         );
         self.state_changed();
     }
@@ -1180,7 +1180,7 @@ The caller upholds the rules that [`Self::set_primitive_restart_enable`] checks 
         unsafe { fp(self.raw(), primitive_restart_enable) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE),
+            crate::state::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE),
         );
         self.state_changed();
     }
@@ -1224,7 +1224,7 @@ The caller upholds the rules that [`Self::set_primitive_topology`] checks at run
         unsafe { fp(self.raw(), primitive_topology) };
         crate::special::draw_state::dynamic_state_set(
             self,
-            crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY),
+            crate::state::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY),
         );
         self.state_changed();
     }
@@ -1271,7 +1271,7 @@ The caller upholds the rules that [`Self::set_rasterizer_discard_enable`] checks
         crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::Discard(rasterizer_discard_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
+            crate::state::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE),
         );
         self.state_changed();
     }
@@ -1323,7 +1323,7 @@ The caller upholds the rules that [`Self::set_scissor_with_count`] checks at run
             crate::special::draw_state::viewport_count_set(
                 self,
                 scissors.len(),
-                crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
+                crate::state::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT),
             );
             self.state_changed();
         }
@@ -1406,7 +1406,7 @@ The caller upholds the rules that [`Self::set_stencil_op`] checks at run time: `
                 face_mask,
                 [fail_op, pass_op, depth_fail_op],
             ),
-            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP),
+            crate::state::dynamic_bit(vk::DynamicState::STENCIL_OP),
         );
         self.state_changed();
     }
@@ -1451,7 +1451,7 @@ The caller upholds the rules that [`Self::set_stencil_test_enable`] checks at ru
         crate::special::draw_state::depth_stencil_set(
             self,
             crate::recorder::Set::StencilTest(stencil_test_enable),
-            crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
+            crate::state::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE),
         );
         self.state_changed();
     }
@@ -1500,7 +1500,7 @@ The caller upholds the rules that [`Self::set_viewport_with_count`] checks at ru
             crate::special::draw_state::viewport_count_set(
                 self,
                 viewports.len(),
-                crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
+                crate::state::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT),
             );
             self.state_changed();
         }

@@ -139,102 +139,102 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetLineWidth",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::LINE_WIDTH)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::LINE_WIDTH)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthBias",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::DEPTH_BIAS)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetBlendConstants",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::BLEND_CONSTANTS)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthBounds",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetStencilCompareMask",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::STENCIL_COMPARE_MASK)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetStencilWriteMask",
-        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::WriteMask(face_mask, write_mask)", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK)"]),
+        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::WriteMask(face_mask, write_mask)", "crate::state::dynamic_bit(vk::DynamicState::STENCIL_WRITE_MASK)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetStencilReference",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::STENCIL_REFERENCE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetCullMode",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::CULL_MODE)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::CULL_MODE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetFrontFace",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::FRONT_FACE)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::FRONT_FACE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetPrimitiveTopology",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::PRIMITIVE_TOPOLOGY)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthTestEnable",
-        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::DepthTest(depth_test_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE)"]),
+        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::DepthTest(depth_test_enable)", "crate::state::dynamic_bit(vk::DynamicState::DEPTH_TEST_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthWriteEnable",
-        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::DepthWrite(depth_write_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE)"]),
+        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::DepthWrite(depth_write_enable)", "crate::state::dynamic_bit(vk::DynamicState::DEPTH_WRITE_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthCompareOp",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::DEPTH_COMPARE_OP)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthBoundsTestEnable",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::DEPTH_BOUNDS_TEST_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetStencilTestEnable",
-        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::StencilTest(stencil_test_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE)"]),
+        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::StencilTest(stencil_test_enable)", "crate::state::dynamic_bit(vk::DynamicState::STENCIL_TEST_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetStencilOp",
-        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::StencilOp(face_mask, [fail_op, pass_op, depth_fail_op])", "crate::recorder::dynamic_bit(vk::DynamicState::STENCIL_OP)"]),
+        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::StencilOp(face_mask, [fail_op, pass_op, depth_fail_op])", "crate::state::dynamic_bit(vk::DynamicState::STENCIL_OP)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetRasterizerDiscardEnable",
-        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::Discard(rasterizer_discard_enable)", "crate::recorder::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE)"]),
+        after: call("special::draw_state::depth_stencil_set", &["self", "crate::recorder::Set::Discard(rasterizer_discard_enable)", "crate::state::dynamic_bit(vk::DynamicState::RASTERIZER_DISCARD_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetDepthBiasEnable",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::DEPTH_BIAS_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetPrimitiveRestartEnable",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::PRIMITIVE_RESTART_ENABLE)"]),
         ..NONE
     },
     Special {
         command: "vkCmdSetViewport",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::VIEWPORT)"]),
         check: call("special::draw_state::cmd_set_viewport_checks", &["self", "first_viewport", "viewports"]),
         settles: &[
             ("VUID-vkCmdSetViewport-firstViewport-01223", How::Dynamic(VIEWPORTS)),
@@ -245,7 +245,7 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetScissor",
-        after: call("special::draw_state::dynamic_state_set", &["self", "crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR)"]),
+        after: call("special::draw_state::dynamic_state_set", &["self", "crate::state::dynamic_bit(vk::DynamicState::SCISSOR)"]),
         check: call("special::draw_state::cmd_set_scissor_checks", &["self", "first_scissor", "scissors"]),
         settles: &[
             ("VUID-vkCmdSetScissor-firstScissor-00592", How::Dynamic(VIEWPORTS)),
@@ -259,7 +259,7 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetViewportWithCount",
-        after: call("special::draw_state::viewport_count_set", &["self", "viewports.len()", "crate::recorder::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT)"]),
+        after: call("special::draw_state::viewport_count_set", &["self", "viewports.len()", "crate::state::dynamic_bit(vk::DynamicState::VIEWPORT_WITH_COUNT)"]),
         check: call("special::draw_state::cmd_set_viewport_with_count_checks", &["self", "viewports"]),
         settles: &[
             ("VUID-vkCmdSetViewportWithCount-viewportCount-03394", How::Dynamic(VIEWPORTS)),
@@ -269,7 +269,7 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetScissorWithCount",
-        after: call("special::draw_state::viewport_count_set", &["self", "scissors.len()", "crate::recorder::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT)"]),
+        after: call("special::draw_state::viewport_count_set", &["self", "scissors.len()", "crate::state::dynamic_bit(vk::DynamicState::SCISSOR_WITH_COUNT)"]),
         check: call("special::draw_state::cmd_set_scissor_with_count_checks", &["self", "scissors"]),
         settles: &[
             ("VUID-vkCmdSetScissorWithCount-scissorCount-03397", How::Dynamic(VIEWPORTS)),
