@@ -25,6 +25,7 @@
 //! # Ok(()) }
 //! ```
 
+use crate::support::refuse;
 use crate::{Buffer, BufferCreateInfo, Device, Error, Handle, Image, ImageCreateInfo, Result};
 use ash::vk;
 use tuff_runtime::{Allocation, AllocationRequest, Allocator, DeviceOwner, Vrc, Vutex};
@@ -134,172 +135,160 @@ impl Device {
     }
 
     crate::helpers::as_safe_as! { vkCreateBuffer,
-        /// Creates a buffer and binds memory from `allocator` at `location` to it.
-        ///
-        /// Fails with the rule's VUID when the buffer needs memory no allocator of the
-        /// runtime gives (sparse, protected, device-address or external memory) or when the
-        /// allocation does not fit the buffer, and with [`Error::Alloc`] when the allocator
-        /// fails.
-        ///
-        /// # Safety
-        ///
-        /// This method is `unsafe` exactly when [`Device::create_buffer`] is: with the
-        /// emitted API of this crate (core 1.0-1.3, WSI, debug utils) it is safe; a
-        /// crate generated from more of the registry, or a newer one, may leave it
-        /// rules, and the caller then upholds those its `# Safety` section lists for
-        /// `info`, except those this method refuses above.
-        ///
-        /// ```no_run
-        /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-        /// use tuff::{vk, MemoryLocation};
-        /// let info = tuff::BufferCreateInfo::new()
-        ///     .size(64)
-        ///     .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
-        /// let uniforms = device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload)?;
-        /// uniforms.memory().write(0, &[1.0f32; 16])?;
-        /// # Ok(()) }
-        /// ```
-        pub fn create_buffer_in<A: Allocator + ?Sized>(
-            &self,
-            info: &BufferCreateInfo<'_>,
-            allocator: &A,
-            location: MemoryLocation,
-        ) -> Result<Bound<Buffer>> {
-            let raw = info.as_raw();
-            let sparse = vk::BufferCreateFlags::SPARSE_BINDING
-                | vk::BufferCreateFlags::SPARSE_RESIDENCY
-                | vk::BufferCreateFlags::SPARSE_ALIASED;
-            refuse(
-                raw.flags.intersects(sparse),
-                "VUID-vkBindBufferMemory-buffer-01030",
-                "a sparse buffer is bound with vkQueueBindSparse, not to one allocation",
-            )?;
-            refuse(
-                raw.flags.contains(vk::BufferCreateFlags::PROTECTED),
-                "VUID-vkBindBufferMemory-None-01898",
-                "a protected buffer needs protected memory, which the allocators do not give",
-            )?;
-            refuse(
-                raw.usage
-                    .contains(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS),
-                "VUID-vkBindBufferMemory-bufferDeviceAddress-03339",
-                "a buffer with a device address needs memory allocated with \
-                 VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT, which the allocators do not ask for",
-            )?;
-            refuse_chain(raw.p_next, "VUID-vkBindBufferMemory-buffer-01444")?;
-            // `create_buffer` is safe in the pinned configuration and `unsafe` in wider
-            // ones.
-            #[allow(unused_unsafe)]
-            // SAFETY: where `create_buffer` is `unsafe`, so is this method, and its caller
-            // upholds the rules it lists.
-            let buffer = unsafe { self.create_buffer(info) }?;
-            let requirements = self.get_buffer_memory_requirements(&buffer)?;
-            let allocation = allocator
-                .allocate(&AllocationRequest::new(requirements, location))
-                .map_err(alloc_error)?;
-            fits(self, &allocation, &requirements, BUFFER_RULES)?;
-            // SAFETY: the buffer is new and unbound, not sparse; the allocation is memory
-            // of this device of an allowed type, aligned, large enough, and not protected.
-            unsafe {
-                self.fns()
-                    .bind_buffer_memory(buffer.raw(), allocation.memory(), allocation.offset())
-            }?;
-            self.live()
-                .buffer_bound(buffer.raw(), allocation.memory(), allocation.offset());
-            let memory = BoundMemory::new(allocation);
-            buffer.retain_memory(memory.cell.clone());
-            Ok(Bound {
-                resource: buffer,
-                memory,
-            })
-        }
+            /// Creates a buffer and binds memory from `allocator` at `location` to it.
+            ///
+            /// Fails with the rule's VUID when the buffer needs memory no allocator of the
+            /// runtime gives (sparse, protected, device-address or external memory) or when the
+            /// allocation does not fit the buffer, and with [`Error::Alloc`] when the allocator
+            /// fails.
+            ///
+            /// # Safety
+            ///
+            /// This method is `unsafe` exactly when [`Device::create_buffer`] is: with the
+            /// emitted API of this crate (core 1.0-1.3, WSI, debug utils) it is safe; a
+            /// crate generated from more of the registry, or a newer one, may leave it
+            /// rules, and the caller then upholds those its `# Safety` section lists for
+            /// `info`, except those this method refuses above.
+            ///
+            /// ```no_run
+            /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
+            /// use tuff::{vk, MemoryLocation};
+            /// let info = tuff::BufferCreateInfo::new()
+            ///     .size(64)
+            ///     .usage(vk::BufferUsageFlags::UNIFORM_BUFFER);
+            /// let uniforms = device.create_buffer_in(&info, &device.naive_allocator(), MemoryLocation::Upload)?;
+            /// uniforms.memory().write(0, &[1.0f32; 16])?;
+            /// # Ok(()) }
+            /// ```
+            pub fn create_buffer_in<A: Allocator + ?Sized>(
+                &self,
+                info: &BufferCreateInfo<'_>,
+                allocator: &A,
+                location: MemoryLocation,
+            ) -> Result<Bound<Buffer>> {
+                let raw = info.as_raw();
+                let sparse = vk::BufferCreateFlags::SPARSE_BINDING
+                    | vk::BufferCreateFlags::SPARSE_RESIDENCY
+                    | vk::BufferCreateFlags::SPARSE_ALIASED;
+                if raw.flags.intersects(sparse) {
+     refuse("VUID-vkBindBufferMemory-buffer-01030", "a sparse buffer is bound with vkQueueBindSparse, not to one allocation")?;
     }
+                if raw.flags.contains(vk::BufferCreateFlags::PROTECTED) {
+     refuse("VUID-vkBindBufferMemory-None-01898", "a protected buffer needs protected memory, which the allocators do not give")?;
+    }
+                if raw.usage
+                        .contains(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS) {
+     refuse("VUID-vkBindBufferMemory-bufferDeviceAddress-03339", "a buffer with a device address needs memory allocated with \
+                     VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT, which the allocators do not ask for")?;
+    }
+                refuse_chain(raw.p_next, "VUID-vkBindBufferMemory-buffer-01444")?;
+                // `create_buffer` is safe in the pinned configuration and `unsafe` in wider
+                // ones.
+                #[allow(unused_unsafe)]
+                // SAFETY: where `create_buffer` is `unsafe`, so is this method, and its caller
+                // upholds the rules it lists.
+                let buffer = unsafe { self.create_buffer(info) }?;
+                let requirements = self.get_buffer_memory_requirements(&buffer)?;
+                let allocation = allocator
+                    .allocate(&AllocationRequest::new(requirements, location))
+                    .map_err(alloc_error)?;
+                fits(self, &allocation, &requirements, BUFFER_RULES)?;
+                // SAFETY: the buffer is new and unbound, not sparse; the allocation is memory
+                // of this device of an allowed type, aligned, large enough, and not protected.
+                unsafe {
+                    self.fns()
+                        .bind_buffer_memory(buffer.raw(), allocation.memory(), allocation.offset())
+                }?;
+                self.live()
+                    .buffer_bound(buffer.raw(), allocation.memory(), allocation.offset());
+                let memory = BoundMemory::new(allocation);
+                buffer.retain_memory(memory.cell.clone());
+                Ok(Bound {
+                    resource: buffer,
+                    memory,
+                })
+            }
+        }
 
     crate::helpers::as_safe_as! { vkCreateImage,
-        /// Creates an image and binds memory from `allocator` at `location` to it.
-        ///
-        /// Fails with the rule's VUID when the image needs memory no allocator of the
-        /// runtime gives (sparse, disjoint, protected or external memory) or when the
-        /// allocation does not fit the image, and with [`Error::Alloc`] when the allocator
-        /// fails.
-        ///
-        /// # Safety
-        ///
-        /// This method is `unsafe` exactly when [`Device::create_image`] is (it is safe
-        /// with this crate's emitted API); the caller then upholds the rules its
-        /// `# Safety` section lists for `info`, except those this method refuses above.
-        ///
-        /// ```no_run
-        /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
-        /// use tuff::{vk, MemoryLocation};
-        /// let info = tuff::ImageCreateInfo::new()
-        ///     .image_type(vk::ImageType::TYPE_2D)
-        ///     .format(vk::Format::D32_SFLOAT)
-        ///     .extent(vk::Extent3D { width: 64, height: 64, depth: 1 })
-        ///     .mip_levels(1)
-        ///     .array_layers(1)
-        ///     .samples(vk::SampleCountFlags::TYPE_1)
-        ///     .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT);
-        /// let depth = device.create_image_in(&info, &device.gpu_allocator()?, MemoryLocation::DeviceLocal)?;
-        /// # drop(depth); Ok(()) }
-        /// ```
-        pub fn create_image_in<A: Allocator + ?Sized>(
-            &self,
-            info: &ImageCreateInfo<'_>,
-            allocator: &A,
-            location: MemoryLocation,
-        ) -> Result<Bound<Image>> {
-            let raw = info.as_raw();
-            let sparse = vk::ImageCreateFlags::SPARSE_BINDING
-                | vk::ImageCreateFlags::SPARSE_RESIDENCY
-                | vk::ImageCreateFlags::SPARSE_ALIASED;
-            refuse(
-                raw.flags.intersects(sparse),
-                "VUID-vkBindImageMemory-image-01045",
-                "a sparse image is bound with vkQueueBindSparse, not to one allocation",
-            )?;
-            refuse(
-                raw.flags.contains(vk::ImageCreateFlags::DISJOINT),
-                "VUID-vkBindImageMemory-image-01608",
-                "a disjoint image binds each plane with vkBindImageMemory2",
-            )?;
-            refuse(
-                raw.flags.contains(vk::ImageCreateFlags::PROTECTED),
-                "VUID-vkBindImageMemory-None-01901",
-                "a protected image needs protected memory, which the allocators do not give",
-            )?;
-            refuse_chain(raw.p_next, "VUID-vkBindImageMemory-image-01445")?;
-            // `create_image` is safe in the pinned configuration and `unsafe` in wider
-            // ones.
-            #[allow(unused_unsafe)]
-            // SAFETY: where `create_image` is `unsafe`, so is this method, and its caller
-            // upholds the rules it lists.
-            let image = unsafe { self.create_image(info) }?;
-            let requirements = self.get_image_memory_requirements(&image)?;
-            let mut request = AllocationRequest::new(requirements, location);
-            request.linear = raw.tiling == vk::ImageTiling::LINEAR;
-            let allocation = allocator.allocate(&request).map_err(alloc_error)?;
-            fits(self, &allocation, &requirements, IMAGE_RULES)?;
-            // SAFETY: as for buffers: a new, unbound, non-sparse, non-disjoint image and
-            // fitting, unprotected memory of this device.
-            unsafe {
-                self.fns()
-                    .bind_image_memory(image.raw(), allocation.memory(), allocation.offset())
-            }?;
-            self.live().image_bound(
-                image.raw(),
-                allocation.memory(),
-                allocation.offset(),
-                requirements.size,
-            );
-            let memory = BoundMemory::new(allocation);
-            image.retain_memory(memory.cell.clone());
-            Ok(Bound {
-                resource: image,
-                memory,
-            })
-        }
+            /// Creates an image and binds memory from `allocator` at `location` to it.
+            ///
+            /// Fails with the rule's VUID when the image needs memory no allocator of the
+            /// runtime gives (sparse, disjoint, protected or external memory) or when the
+            /// allocation does not fit the image, and with [`Error::Alloc`] when the allocator
+            /// fails.
+            ///
+            /// # Safety
+            ///
+            /// This method is `unsafe` exactly when [`Device::create_image`] is (it is safe
+            /// with this crate's emitted API); the caller then upholds the rules its
+            /// `# Safety` section lists for `info`, except those this method refuses above.
+            ///
+            /// ```no_run
+            /// # fn f(device: &tuff::Device) -> tuff::Result<()> {
+            /// use tuff::{vk, MemoryLocation};
+            /// let info = tuff::ImageCreateInfo::new()
+            ///     .image_type(vk::ImageType::TYPE_2D)
+            ///     .format(vk::Format::D32_SFLOAT)
+            ///     .extent(vk::Extent3D { width: 64, height: 64, depth: 1 })
+            ///     .mip_levels(1)
+            ///     .array_layers(1)
+            ///     .samples(vk::SampleCountFlags::TYPE_1)
+            ///     .usage(vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT);
+            /// let depth = device.create_image_in(&info, &device.gpu_allocator()?, MemoryLocation::DeviceLocal)?;
+            /// # drop(depth); Ok(()) }
+            /// ```
+            pub fn create_image_in<A: Allocator + ?Sized>(
+                &self,
+                info: &ImageCreateInfo<'_>,
+                allocator: &A,
+                location: MemoryLocation,
+            ) -> Result<Bound<Image>> {
+                let raw = info.as_raw();
+                let sparse = vk::ImageCreateFlags::SPARSE_BINDING
+                    | vk::ImageCreateFlags::SPARSE_RESIDENCY
+                    | vk::ImageCreateFlags::SPARSE_ALIASED;
+                if raw.flags.intersects(sparse) {
+     refuse("VUID-vkBindImageMemory-image-01045", "a sparse image is bound with vkQueueBindSparse, not to one allocation")?;
     }
+                if raw.flags.contains(vk::ImageCreateFlags::DISJOINT) {
+     refuse("VUID-vkBindImageMemory-image-01608", "a disjoint image binds each plane with vkBindImageMemory2")?;
+    }
+                if raw.flags.contains(vk::ImageCreateFlags::PROTECTED) {
+     refuse("VUID-vkBindImageMemory-None-01901", "a protected image needs protected memory, which the allocators do not give")?;
+    }
+                refuse_chain(raw.p_next, "VUID-vkBindImageMemory-image-01445")?;
+                // `create_image` is safe in the pinned configuration and `unsafe` in wider
+                // ones.
+                #[allow(unused_unsafe)]
+                // SAFETY: where `create_image` is `unsafe`, so is this method, and its caller
+                // upholds the rules it lists.
+                let image = unsafe { self.create_image(info) }?;
+                let requirements = self.get_image_memory_requirements(&image)?;
+                let mut request = AllocationRequest::new(requirements, location);
+                request.linear = raw.tiling == vk::ImageTiling::LINEAR;
+                let allocation = allocator.allocate(&request).map_err(alloc_error)?;
+                fits(self, &allocation, &requirements, IMAGE_RULES)?;
+                // SAFETY: as for buffers: a new, unbound, non-sparse, non-disjoint image and
+                // fitting, unprotected memory of this device.
+                unsafe {
+                    self.fns()
+                        .bind_image_memory(image.raw(), allocation.memory(), allocation.offset())
+                }?;
+                self.live().image_bound(
+                    image.raw(),
+                    allocation.memory(),
+                    allocation.offset(),
+                    requirements.size,
+                );
+                let memory = BoundMemory::new(allocation);
+                image.retain_memory(memory.cell.clone());
+                Ok(Bound {
+                    resource: image,
+                    memory,
+                })
+            }
+        }
 }
 
 /// A buffer or image with the memory bound to it. It dereferences to the resource,
@@ -510,17 +499,6 @@ fn alloc_error(e: tuff_runtime::AllocError) -> Error {
     Error::Alloc(e.to_string())
 }
 
-/// Fails with `vuid` when `bad`.
-fn refuse(bad: bool, vuid: &'static str, message: &str) -> Result<()> {
-    if bad {
-        return Err(Error::Validation {
-            vuid,
-            message: message.into(),
-        });
-    }
-    Ok(())
-}
-
 /// Refuses create infos whose chain asks for external, imported or dedicated memory:
 /// such resources may require a dedicated allocation, which the allocators do not make.
 fn refuse_chain(next: *const core::ffi::c_void, vuid: &'static str) -> Result<()> {
@@ -533,14 +511,15 @@ fn refuse_chain(next: *const core::ffi::c_void, vuid: &'static str) -> Result<()
     ];
     // SAFETY: the safe create infos only chain structs pushed through `push_next`.
     for node in unsafe { crate::support::chain_nodes(next) } {
-        refuse(
-            refused.contains(&node.s_type),
-            vuid,
-            &format!(
-                "a resource made with {:?} in its chain may need a dedicated allocation",
-                node.s_type
-            ),
-        )?;
+        if refused.contains(&node.s_type) {
+            refuse(
+                vuid,
+                format!(
+                    "a resource made with {:?} in its chain may need a dedicated allocation",
+                    node.s_type
+                ),
+            )?;
+        }
     }
     Ok(())
 }
@@ -552,43 +531,47 @@ fn fits(
     requirements: &vk::MemoryRequirements,
     [parent, kind, alignment, size, protected]: Rules,
 ) -> Result<()> {
-    refuse(
-        allocation.device() != device.raw(),
-        parent,
-        "the allocator belongs to another device",
-    )?;
+    if allocation.device() != device.raw() {
+        refuse(parent, "the allocator belongs to another device")?;
+    }
     let index = allocation.memory_type_index();
-    refuse(
-        index >= 32 || requirements.memory_type_bits & (1 << index) == 0,
-        kind,
-        &format!(
-            "memory type {index} is not in the allowed bits {:#x}",
-            requirements.memory_type_bits
-        ),
-    )?;
-    refuse(
-        requirements.alignment != 0 && allocation.offset() % requirements.alignment != 0,
-        alignment,
-        &format!(
-            "offset {} is not a multiple of the alignment {}",
-            allocation.offset(),
-            requirements.alignment
-        ),
-    )?;
-    refuse(
-        allocation.size() < requirements.size,
-        size,
-        &format!(
-            "{} bytes allocated, {} required",
-            allocation.size(),
-            requirements.size
-        ),
-    )?;
-    refuse(
-        allocation
-            .properties()
-            .contains(vk::MemoryPropertyFlags::PROTECTED),
-        protected,
-        "an unprotected resource cannot use protected memory",
-    )
+    if index >= 32 || requirements.memory_type_bits & (1 << index) == 0 {
+        refuse(
+            kind,
+            format!(
+                "memory type {index} is not in the allowed bits {:#x}",
+                requirements.memory_type_bits
+            ),
+        )?;
+    }
+    if requirements.alignment != 0 && allocation.offset() % requirements.alignment != 0 {
+        refuse(
+            alignment,
+            format!(
+                "offset {} is not a multiple of the alignment {}",
+                allocation.offset(),
+                requirements.alignment
+            ),
+        )?;
+    }
+    if allocation.size() < requirements.size {
+        refuse(
+            size,
+            format!(
+                "{} bytes allocated, {} required",
+                allocation.size(),
+                requirements.size
+            ),
+        )?;
+    }
+    if allocation
+        .properties()
+        .contains(vk::MemoryPropertyFlags::PROTECTED)
+    {
+        return refuse(
+            protected,
+            "an unprotected resource cannot use protected memory",
+        );
+    }
+    Ok(())
 }

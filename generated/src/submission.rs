@@ -11,6 +11,7 @@
 
 use crate::handles::Device;
 use crate::state::{Binary, Submission};
+use crate::support::refuse;
 use crate::{Error, Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
@@ -351,13 +352,6 @@ pub(crate) const BIND_SPARSE: SubmitRules = SubmitRules {
     secondary_simultaneous: "",
 };
 
-fn refuse(vuid: &'static str, message: impl Into<String>) -> Error {
-    Error::Validation {
-        vuid,
-        message: message.into(),
-    }
-}
-
 /// Checks that `fence` may be signalled by a new queue operation: unsignalled, and
 /// not in use by one that may still be executing.
 pub(crate) fn check_fence(fence: &crate::Fence, rules: &SubmitRules) -> Result<()> {
@@ -366,20 +360,20 @@ pub(crate) fn check_fence(fence: &crate::Fence, rules: &SubmitRules) -> Result<(
     let device = fence.parent();
     if let Some(sub) = fence.submission() {
         if !sub.poll(device) {
-            return Err(refuse(
+            return refuse(
                 rules.fence_pending,
                 "the fence belongs to a queue operation that may still be executing",
-            ));
+            );
         }
     }
     // SAFETY: the fence is a live wrapper of this device.
     let r = unsafe { (device.fns().fp_v1_0().get_fence_status)(device.raw(), fence.raw()) };
     match r {
         vk::Result::NOT_READY => Ok(()),
-        vk::Result::SUCCESS => Err(refuse(
+        vk::Result::SUCCESS => refuse(
             rules.fence_signalled,
             "the fence is signalled; reset it before submitting with it",
-        )),
+        ),
         e => Err(Error::Vk(e)),
     }
 }
@@ -404,22 +398,22 @@ pub(crate) fn check_command_buffers(
             )
         };
         if secondary {
-            return Err(refuse(
+            return refuse(
                 rules.secondary,
                 "a secondary command buffer is submitted to a queue",
-            ));
+            );
         }
         if !executable {
-            return Err(refuse(
+            return refuse(
                 rules.executable,
                 "a command buffer is not executable: it was not ended, a check failed while it was recorded, or it was recorded for one submission and submitted",
-            ));
+            );
         }
         if !simultaneous && (cbs[..i].contains(raw) || uses.is_pending(device)) {
-            return Err(refuse(
+            return refuse(
                 rules.simultaneous,
                 "a command buffer without SIMULTANEOUS_USE is submitted while a submission that uses it may still be executing",
-            ));
+            );
         }
         for (sec, generation, links) in secondaries {
             let (now, executable, simultaneous, links_now) = {
@@ -427,22 +421,22 @@ pub(crate) fn check_command_buffers(
                 (s.generation, s.executable, s.simultaneous, s.links)
             };
             if !simultaneous && links_now != links {
-                return Err(refuse(
+                return refuse(
                     rules.executable,
                     "a secondary command buffer it executes, without SIMULTANEOUS_USE, was recorded into another primary since, which leaves this one invalid",
-                ));
+                );
             }
             if now != generation || !executable {
-                return Err(refuse(
+                return refuse(
                     rules.secondary_executable,
                     "a secondary command buffer it executes was recorded again or reset since",
-                ));
+                );
             }
             if !simultaneous && sec.is_pending(device) {
-                return Err(refuse(
+                return refuse(
                     rules.secondary_simultaneous,
                     "a secondary command buffer it executes without SIMULTANEOUS_USE is pending",
-                ));
+                );
             }
         }
     }
@@ -491,10 +485,10 @@ pub(crate) fn check_events(
     for event in events {
         for sub in device.live().event_submissions(event, queue) {
             if !sub.poll(device) {
-                return Err(refuse(
+                return refuse(
                     vuid,
                     format!("event 0x{event:x} is named by a command of a submission to another queue that may still be executing"),
-                ));
+                );
             }
         }
     }
@@ -506,17 +500,17 @@ pub(crate) fn check_events(
 /// record of the sets it uses), and refuses command buffers that bound a descriptor
 /// set which an update has changed since: the update left them invalid
 /// (`executable` names the rule).
-pub(crate) fn sets_gate<'d>(
+pub(crate) fn sets_hold<'d>(
     device: &'d Device,
     cbs: &[vk::CommandBuffer],
     executable: &'static str,
 ) -> Result<tuff_runtime::VutexGuard<'d, ()>> {
     let gate = device.live().descriptor_gate();
     if let Some(set) = device.live().stale_set(&used(device, cbs).0) {
-        return Err(refuse(
+        refuse(
             executable,
             format!("a command buffer is invalid: descriptor set 0x{set:x}, which it binds, was updated since it was recorded (update sets before recording, or bindings with UPDATE_AFTER_BIND)"),
-        ));
+        )?;
     }
     Ok(gate)
 }
@@ -736,10 +730,10 @@ pub(crate) fn check_timeline_values(
             .map(|(_, v, _)| *v)
             .fold(t.max_signal.max(t.known), u64::max);
         if *signal && *value <= max_signal {
-            return Err(refuse(
+            return refuse(
                 rules.0,
                 format!("timeline semaphore 0x{:x} is signalled to {value}, which is not above {max_signal}, a value it has or an earlier signal gives it", semaphore.as_raw()),
-            ));
+            );
         }
         let values = t
             .pending
@@ -749,10 +743,10 @@ pub(crate) fn check_timeline_values(
             .chain([t.known, max_signal]);
         let (lo, hi) = values.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
         if value.abs_diff(lo) > max_difference || value.abs_diff(hi) > max_difference {
-            return Err(refuse(
+            return refuse(
                 if *signal { rules.2 } else { rules.1 },
                 format!("timeline semaphore 0x{:x} is given {value}, more than maxTimelineSemaphoreValueDifference ({max_difference}) from a value it may have or that a pending operation gives it ({lo} to {hi})", semaphore.as_raw()),
-            ));
+            );
         }
     }
     Ok(())
@@ -1114,26 +1108,26 @@ pub(crate) fn check_binary_ops(
         let next = match op {
             SemOp::Wait(_) => {
                 if state != Seen::Signaled {
-                    return Err(refuse(
+                    return refuse(
                         rules.wait_unsignaled,
                         format!("the binary semaphore {s:?} is waited on, but no signal operation was submitted for it since its last wait"),
-                    ));
+                    );
                 }
                 Seen::Waiting(queue)
             }
             SemOp::Signal(_) => {
                 match state {
                     Seen::Signaled => {
-                        return Err(refuse(
+                        return refuse(
                             rules.signal_signaled,
                             format!("the binary semaphore {s:?} is signaled, or a signal operation for it was submitted and not waited on"),
-                        ))
+                        )
                     }
                     Seen::Waiting(q) if q != queue || queue == vk::Queue::null() => {
-                        return Err(refuse(
+                        return refuse(
                             rules.signal_pending,
                             format!("a wait on the binary semaphore {s:?} may still be pending{}", if queue == vk::Queue::null() { "" } else { " on another queue" }),
-                        ))
+                        )
                     }
                     _ => {}
                 }

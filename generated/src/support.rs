@@ -7,6 +7,16 @@ use core::marker::PhantomData;
 use core::ptr::NonNull;
 use tuff_runtime::Vrc;
 
+/// Refuses a call that would break the rule `vuid`, saying what and where: the one
+/// way every check, hand-written or emitted, says no.
+#[cold]
+pub(crate) fn refuse(vuid: &'static str, message: impl Into<String>) -> Result<()> {
+    Err(Error::Validation {
+        vuid,
+        message: message.into(),
+    })
+}
+
 /// Errors of the generated wrappers. New kinds may come with new checks, so a
 /// `match` on it needs a catch-all arm.
 ///

@@ -8,7 +8,7 @@
 use crate::checks::Exts;
 use crate::handles::{Device, Instance};
 use crate::state::Features;
-use crate::{Error, Handle};
+use crate::Handle;
 use ash::vk;
 use rustc_hash::FxHashMap;
 use tuff_runtime::Vutex;
@@ -119,12 +119,6 @@ impl Device {
             device: Some(self),
         }
     }
-}
-
-/// The error of a failed check.
-#[cold]
-pub(crate) fn fail(vuid: &'static str, message: String) -> Error {
-    Error::Validation { vuid, message }
 }
 
 /// Whether the queue flags of a family support a command that needs any of `needed`.

@@ -318,7 +318,7 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
         if mask.is_empty() && !sync2 {
             refuse(
                 zero,
-                "a stage mask is 0, and synchronization2 is not enabled".into(),
+                "a stage mask is 0, and synchronization2 is not enabled",
             )?;
         }
         // The host stage needs no queue capability (the specification's table of
@@ -408,7 +408,7 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
             if dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
                 refuse(
                     "VUID-vkCmdPipelineBarrier-dependencyFlags-01186",
-                    "VK_DEPENDENCY_VIEW_LOCAL_BIT outside a render pass instance".into(),
+                    "VK_DEPENDENCY_VIEW_LOCAL_BIT outside a render pass instance",
                 )?;
             }
         }
@@ -416,7 +416,7 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
             if instance.dynamic {
                 refuse(
                     "VUID-vkCmdPipelineBarrier-None-06191",
-                    "a pipeline barrier inside a render pass instance begun with vkCmdBeginRendering".into(),
+                    "a pipeline barrier inside a render pass instance begun with vkCmdBeginRendering",
                 )?;
             }
             let record = (instance.render_pass != vk::RenderPass::null())
@@ -425,7 +425,7 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
             let Some(record) = record else {
                 return refuse(
                     "VUID-vkCmdPipelineBarrier-pDependencies-02285",
-                    "the recorder does not know the render pass of this instance (one a secondary continues), so it cannot check the barrier against the subpass's dependencies on itself".into(),
+                    "the recorder does not know the render pass of this instance (one a secondary continues), so it cannot check the barrier against the subpass's dependencies on itself",
                 );
             };
             let src_access = memory_barriers
@@ -475,7 +475,7 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
             if !buffer_memory_barriers.is_empty() {
                 refuse(
                     "VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178",
-                    "a buffer memory barrier inside a render pass instance".into(),
+                    "a buffer memory barrier inside a render pass instance",
                 )?;
             }
             for (n, b) in image_memory_barriers.iter().enumerate() {

@@ -231,8 +231,7 @@ pub(crate) fn create_buffer_checks(
         refuse(
             "VUID-VkBufferCreateInfo-opaqueCaptureAddress-03337",
             "If VkBufferOpaqueCaptureAddressCreateInfo::`opaqueCaptureAddress` is not zero, \
-             `flags` must include `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`"
-                .into(),
+             `flags` must include `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`",
         )?;
     }
     let wanted = external.map_or(vk::ExternalMemoryHandleTypeFlags::empty(), |e| {

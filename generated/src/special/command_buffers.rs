@@ -84,8 +84,7 @@ pub(crate) fn create_command_pool_checks(
         refuse(
             "VUID-VkCommandPoolCreateInfo-flags-02860",
             "a protected command pool needs the protectedMemory feature, which the device \
-             did not enable"
-                .into(),
+             did not enable",
         )?;
     }
     Ok(())

@@ -42,7 +42,7 @@ pub(crate) fn cmd_fill_buffer_checks<S: Scope>(
         if size == 0 {
             refuse(
                 "VUID-vkCmdFillBuffer-size-00026",
-                "size must be greater than 0 (size = 0)".into(),
+                "size must be greater than 0 (size = 0)",
             )?;
         }
         if size > dst.size - dst_offset {

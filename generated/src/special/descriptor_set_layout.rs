@@ -198,7 +198,7 @@ pub(crate) fn descriptor_set_layout_checks(
     {
         refuse(
             "VUID-VkDescriptorSetLayoutCreateInfo-flags-03000",
-            "a binding is updated after bind, so the layout's flags must include UPDATE_AFTER_BIND_POOL".into(),
+            "a binding is updated after bind, so the layout's flags must include UPDATE_AFTER_BIND_POOL",
         )?;
     }
     if after_bind
@@ -208,7 +208,7 @@ pub(crate) fn descriptor_set_layout_checks(
     {
         refuse(
             "VUID-VkDescriptorSetLayoutCreateInfo-descriptorType-03001",
-            "a binding is updated after bind, so no binding may be a dynamic buffer".into(),
+            "a binding is updated after bind, so no binding may be a dynamic buffer",
         )?;
     }
     let highest = bindings.iter().map(|b| b.binding).max();

@@ -222,8 +222,7 @@ pub(crate) fn create_instance_checks(create_info: &InstanceCreateInfo<'_>) -> Re
                 "VUID-VkInstanceCreateInfo-pNext-04926",
                 "If the `pNext` chain of `VkInstanceCreateInfo` includes a \
                  `VkDebugUtilsMessengerCreateInfoEXT` structure, the list of enabled extensions \
-                 in `ppEnabledExtensionNames` must contain VK_EXT_debug_utils"
-                    .into(),
+                 in `ppEnabledExtensionNames` must contain VK_EXT_debug_utils",
             )?;
         }
         next = node.p_next;
@@ -374,7 +373,7 @@ pub(crate) fn create_device_checks(
     {
         refuse(
             "VUID-VkDeviceCreateInfo-pNext-00373",
-            "the chain holds a VkPhysicalDeviceFeatures2, so pEnabledFeatures must be NULL".into(),
+            "the chain holds a VkPhysicalDeviceFeatures2, so pEnabledFeatures must be NULL",
         )?;
     }
     for (version, vuid, taken) in TAKEN_OVER {
@@ -518,13 +517,13 @@ fn device_feature_pairs(next: *const core::ffi::c_void) -> Result<()> {
         if on(m.multiview_geometry_shader) {
             refuse(
                 "VUID-VkPhysicalDeviceMultiviewFeatures-multiviewGeometryShader-00580",
-                "VkPhysicalDeviceMultiviewFeatures enables multiviewGeometryShader without multiview".into(),
+                "VkPhysicalDeviceMultiviewFeatures enables multiviewGeometryShader without multiview",
             )?;
         }
         if on(m.multiview_tessellation_shader) {
             refuse(
                 "VUID-VkPhysicalDeviceMultiviewFeatures-multiviewTessellationShader-00581",
-                "VkPhysicalDeviceMultiviewFeatures enables multiviewTessellationShader without multiview".into(),
+                "VkPhysicalDeviceMultiviewFeatures enables multiviewTessellationShader without multiview",
             )?;
         }
     }
@@ -532,7 +531,7 @@ fn device_feature_pairs(next: *const core::ffi::c_void) -> Result<()> {
         if on(p.variable_pointers) && !on(p.variable_pointers_storage_buffer) {
             refuse(
                 "VUID-VkPhysicalDeviceVariablePointersFeatures-variablePointers-01431",
-                "VkPhysicalDeviceVariablePointersFeatures enables variablePointers without variablePointersStorageBuffer".into(),
+                "VkPhysicalDeviceVariablePointersFeatures enables variablePointers without variablePointersStorageBuffer",
             )?;
         }
     }
@@ -566,7 +565,7 @@ fn device_group_members(physical: &PhysicalDevice, next: *const core::ffi::c_voi
     if !members.contains(&physical.raw()) {
         refuse(
             "VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377",
-            "pPhysicalDevices does not hold the physical device the device is created from".into(),
+            "pPhysicalDevices does not hold the physical device the device is created from",
         )?;
     }
     let groups = physical.parent().enumerate_physical_device_groups()?;
@@ -580,7 +579,7 @@ fn device_group_members(physical: &PhysicalDevice, next: *const core::ffi::c_voi
     if !in_one {
         refuse(
             "VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376",
-            "the elements of pPhysicalDevices are not all in one device group".into(),
+            "the elements of pPhysicalDevices are not all in one device group",
         )?;
     }
     Ok(())

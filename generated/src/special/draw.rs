@@ -44,7 +44,7 @@ fn multiview_instances<S: Scope>(
         Some(_) => Ok(()),
         None => refuse(
             vuid,
-            "a Vulkan 1.0 instance cannot ask maxMultiviewInstanceIndex, so no multiview draw is checked".into(),
+            "a Vulkan 1.0 instance cannot ask maxMultiviewInstanceIndex, so no multiview draw is checked",
         ),
     }
 }
@@ -150,7 +150,7 @@ pub(crate) struct DrawRules {
     /// instance: the view mask, the color attachment count, a color format, a
     /// color format for an attachment with no view, the depth format, one for no
     /// depth view, the stencil format, one for no stencil view.
-    pub rendering: [&'static str; 8],
+    pub rendering: RenderingRules,
     /// Depth and stencil writes against read-only attachment layouts: in any
     /// instance (depth, stencil), then in dynamic rendering by the layout the
     /// attachment info names (depth and stencil in `DEPTH_STENCIL_READ_ONLY_OPTIMAL`,
@@ -158,11 +158,11 @@ pub(crate) struct DrawRules {
     /// `DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, in `DEPTH_READ_ONLY_OPTIMAL` and
     /// `STENCIL_READ_ONLY_OPTIMAL`).
     /// Then the pipeline's rasterization samples against the attachments'.
-    pub read_only: [&'static str; 9],
+    pub read_only: ReadOnlyRules,
     /// The viewport and scissor counts set with their counts: the viewport count
     /// against the pipeline's scissor count, the scissor count against its viewport
     /// count, and both against each other.
-    pub counts: [&'static str; 3],
+    pub counts: CountRules,
     /// What its shaders read ([`ShaderRules`]).
     pub shader: ShaderRules,
     /// The instance's attachments as the draw reaches them: an input attachment
@@ -173,25 +173,123 @@ pub(crate) struct DrawRules {
     pub attachments: AttachmentRules,
 }
 
-/// The rules of [`DrawRules::attachments`]: an input attachment's index (07468),
-/// its view (07469), an attachment's memory written (06537) or read (06538) other
-/// than as an attachment, and blending (04727).
-pub(crate) type AttachmentRules = [&'static str; 5];
+/// The rules of [`DrawRules::rendering`], one VUID each.
+#[derive(Debug)]
+pub(crate) struct RenderingRules {
+    /// The view mask (`viewMask-06178`).
+    pub view_mask: &'static str,
+    /// The color attachment count (`colorAttachmentCount-06179`).
+    pub color_count: &'static str,
+    /// A color format (`colorAttachmentCount-06180`).
+    pub color_format: &'static str,
+    /// A color format, for an attachment with no view (`colorAttachmentCount-07616`).
+    pub color_no_view: &'static str,
+    /// The depth format (`pDepthAttachment-06181`).
+    pub depth_format: &'static str,
+    /// The depth format, with no depth view (`pDepthAttachment-07617`).
+    pub depth_no_view: &'static str,
+    /// The stencil format (`pStencilAttachment-06182`).
+    pub stencil_format: &'static str,
+    /// The stencil format, with no stencil view (`pStencilAttachment-07618`).
+    pub stencil_no_view: &'static str,
+}
 
-/// The rules of a draw or dispatch about what its shaders read: an image view's
-/// type for the image type's `Dim` and `Arrayed`, its format's numeric type for the
-/// sampled type, every descriptor written, the push constants set, and atomic
-/// operations, depth comparison, and storage reads and writes of `Unknown` format
-/// only on image views whose format supports them; no protected resource reached
-/// from an unprotected command buffer, and no draw or dispatch in a protected one
-/// (the command's rule of protected command buffers); then what the samplers that
-/// sample a view allow (linear filtering and linear mipmaps by its format, and with
-/// unnormalized coordinates its view type, implicit-LOD, depth-comparison and
-/// projective instructions, LOD bias and offsets), texels written with as many
-/// components as an image view's or a texel buffer view's format has, storage texel
-/// buffers of `Unknown` format written and read only where their format allows it,
-/// and Y'CbCr conversions only with sampling instructions, without offsets.
-pub(crate) type ShaderRules = [&'static str; 21];
+/// The rules of [`DrawRules::read_only`], one VUID each.
+#[derive(Debug)]
+pub(crate) struct ReadOnlyRules {
+    /// Depth writes against a read-only depth layout, in any instance (`None-06886`).
+    pub depth: &'static str,
+    /// Stencil writes against a read-only stencil layout, in any instance (`None-06887`).
+    pub stencil: &'static str,
+    /// Depth writes in dynamic rendering, in `DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`imageView-06172`).
+    pub depth_in_both_read_only: &'static str,
+    /// Stencil writes there (`imageView-06173`).
+    pub stencil_in_both_read_only: &'static str,
+    /// Depth writes in `DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`imageView-06174`).
+    pub depth_in_depth_read_only_stencil_attachment: &'static str,
+    /// Stencil writes in `DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` (`imageView-06175`).
+    pub stencil_in_depth_attachment_stencil_read_only: &'static str,
+    /// Depth writes in `DEPTH_READ_ONLY_OPTIMAL` (`imageView-06176`).
+    pub depth_in_depth_read_only: &'static str,
+    /// Stencil writes in `STENCIL_READ_ONLY_OPTIMAL` (`imageView-06177`).
+    pub stencil_in_stencil_read_only: &'static str,
+    /// The pipeline's rasterization samples against the attachments' (`rasterizationSamples-04740`).
+    pub rasterization_samples: &'static str,
+}
+
+/// The rules of [`DrawRules::counts`], one VUID each.
+#[derive(Debug)]
+pub(crate) struct CountRules {
+    /// The viewport count set against the pipeline's scissor count (`viewportCount-03417`).
+    pub viewports: &'static str,
+    /// The scissor count set against its viewport count (`scissorCount-03418`).
+    pub scissors: &'static str,
+    /// Both counts set against each other (`viewportCount-03419`).
+    pub both: &'static str,
+}
+
+/// The rules of [`DrawRules::attachments`], one VUID each.
+#[derive(Debug)]
+pub(crate) struct AttachmentRules {
+    /// An input attachment variable's `InputAttachmentIndex` names an input
+    /// attachment of the subpass (`OpTypeImage-07468`).
+    pub input_index: &'static str,
+    /// Its descriptor's view is compatible with the framebuffer's (`None-07469`).
+    pub input_view: &'static str,
+    /// No descriptor the shader writes reaches an attachment's memory (`None-06537`).
+    pub memory_written: &'static str,
+    /// No other descriptor reaches it (`None-06538`).
+    pub memory_read: &'static str,
+    /// Blending only on attachments whose format supports it (`blendEnable-04727`).
+    pub blend: &'static str,
+}
+
+/// The rules of a draw or dispatch about what its shaders read, one VUID each.
+#[derive(Debug)]
+pub(crate) struct ShaderRules {
+    /// An image view's type for the image variable's `Dim` and `Arrayed` (`viewType-07752`).
+    pub view_type: &'static str,
+    /// Its format's numeric type for the variable's sampled type (`format-07753`).
+    pub view_numeric: &'static str,
+    /// Every descriptor the shaders read was written (`None-02699`).
+    pub written: &'static str,
+    /// The push constants the shaders read were set (`maintenance4-06425`).
+    pub push_constants: &'static str,
+    /// Atomic operations only on views whose format supports them (`None-02691`).
+    pub atomics: &'static str,
+    /// Depth comparison only on views whose format supports it (`None-06479`).
+    pub depth_comparison: &'static str,
+    /// Storage image writes of `Unknown` format only where the format allows (`OpTypeImage-07027`).
+    pub write_without_format: &'static str,
+    /// Storage image reads of `Unknown` format only where the format allows (`OpTypeImage-07028`).
+    pub read_without_format: &'static str,
+    /// No protected resource reached from an unprotected command buffer (`commandBuffer-02707`).
+    pub protected_access: &'static str,
+    /// No draw or dispatch in a protected command buffer (the command's own rule).
+    pub protected_command_buffer: &'static str,
+    /// A LINEAR filter only on views whose format supports it (`magFilter-04553`).
+    pub linear_filter: &'static str,
+    /// A LINEAR mipmap mode likewise (`mipmapMode-04770`).
+    pub linear_mipmap: &'static str,
+    /// Unnormalized coordinates only on 1D and 2D views (`None-02702`).
+    pub unnormalized_view_type: &'static str,
+    /// With unnormalized coordinates, no ImplicitLod, Dref or Proj sampling (`None-02703`).
+    pub unnormalized_instructions: &'static str,
+    /// With unnormalized coordinates, no LOD bias or offset (`None-02704`).
+    pub unnormalized_bias_offset: &'static str,
+    /// Image views written with as many components as their format has (`None-04115`).
+    pub image_write_components: &'static str,
+    /// Texel buffer views likewise (`OpImageWrite-04469`).
+    pub texel_write_components: &'static str,
+    /// Storage texel buffer writes of `Unknown` format only where the format allows (`OpTypeImage-07029`).
+    pub texel_write_without_format: &'static str,
+    /// Storage texel buffer reads likewise (`OpTypeImage-07030`).
+    pub texel_read_without_format: &'static str,
+    /// Views with a Y'CbCr conversion only sampled (`None-06550`).
+    pub ycbcr_sampling: &'static str,
+    /// And without `ConstOffset` or `Offset` (`ConstOffset-06551`).
+    pub ycbcr_offset: &'static str,
+}
 
 /// The dynamic states whose rule a draw command names apart from the general one:
 /// primitive topology, vertex input binding stride, rasterizer discard enable,
@@ -223,7 +321,7 @@ fn draw_state_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
                 if !Vrc::ptr_eq(made_for, current) && !made_for.compatible(current) {
                     refuse(
                         rules.render_pass,
-                        "the bound pipeline was created for a render pass that is not compatible with the render pass instance's".into(),
+                        "the bound pipeline was created for a render pass that is not compatible with the render pass instance's",
                     )?;
                 }
                 if *subpass != instance.subpass {
@@ -235,7 +333,7 @@ fn draw_state_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &DrawRules) ->
             }
             (None, Some(_)) => refuse(
                 rules.render_pass,
-                "the bound pipeline was created for dynamic rendering, inside a render pass instance".into(),
+                "the bound pipeline was created for dynamic rendering, inside a render pass instance",
             )?,
             _ => {}
         }
@@ -291,7 +389,7 @@ fn draw_values<S: Scope>(
 fn read_only_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     pipeline: &PipelineRecord,
-    rules: &[&'static str; 9],
+    rules: &ReadOnlyRules,
 ) -> Result<()> {
     let Some(instance) = &recorder.instance else {
         return Ok(());
@@ -302,7 +400,7 @@ fn read_only_checks<S: Scope>(
         {
             if samples != pipeline.samples {
                 refuse(
-                    rules[8],
+                    rules.rasterization_samples,
                     format!("the bound pipeline rasterizes {:?} samples, and the render pass instance's attachments have {samples:?}", pipeline.samples),
                 )?;
             }
@@ -314,8 +412,8 @@ fn read_only_checks<S: Scope>(
     }
     let Some((depth_layout, stencil_layout)) = instance.depth_stencil_layouts() else {
         return refuse(
-            if depth { rules[0] } else { rules[1] },
-            "the draw writes the depth/stencil attachment, whose layouts are not known here (a secondary that continues dynamic rendering: its inheritance info does not give them)".into(),
+            if depth { rules.depth } else { rules.stencil },
+            "the draw writes the depth/stencil attachment, whose layouts are not known here (a secondary that continues dynamic rendering: its inheritance info does not give them)",
         );
     };
     type L = vk::ImageLayout;
@@ -327,22 +425,22 @@ fn read_only_checks<S: Scope>(
             depth,
             depth_layout,
             [
-                (L::DEPTH_STENCIL_READ_ONLY_OPTIMAL, rules[2]),
-                (L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, rules[4]),
-                (L::DEPTH_READ_ONLY_OPTIMAL, rules[6]),
+                (L::DEPTH_STENCIL_READ_ONLY_OPTIMAL, rules.depth_in_both_read_only),
+                (L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL, rules.depth_in_depth_read_only_stencil_attachment),
+                (L::DEPTH_READ_ONLY_OPTIMAL, rules.depth_in_depth_read_only),
             ],
-            rules[0],
+            rules.depth,
             ("depth", "writes depth (depth test and writes enabled)"),
         ),
         (
             stencil,
             stencil_layout,
             [
-                (L::DEPTH_STENCIL_READ_ONLY_OPTIMAL, rules[3]),
-                (L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL, rules[5]),
-                (L::STENCIL_READ_ONLY_OPTIMAL, rules[7]),
+                (L::DEPTH_STENCIL_READ_ONLY_OPTIMAL, rules.stencil_in_both_read_only),
+                (L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL, rules.stencil_in_depth_attachment_stencil_read_only),
+                (L::STENCIL_READ_ONLY_OPTIMAL, rules.stencil_in_stencil_read_only),
             ],
-            rules[1],
+            rules.stencil,
             ("stencil", "may write stencil (stencil test enabled, a face with a write mask and an operation other than KEEP)"),
         ),
     ];
@@ -375,7 +473,7 @@ fn read_only_checks<S: Scope>(
 fn count_checks(
     (viewports, scissors): (Option<u32>, Option<u32>),
     pipeline: &PipelineRecord,
-    rules: &[&'static str; 3],
+    rules: &CountRules,
 ) -> Result<()> {
     use crate::state::dynamic_bit;
     let with = |state| pipeline.dynamic & dynamic_bit(state) != 0;
@@ -385,15 +483,15 @@ fn count_checks(
         with(vk::DynamicState::SCISSOR_WITH_COUNT),
     ) {
         (true, false) if viewports != Some(static_scissors) => refuse(
-            rules[0],
+            rules.viewports,
             format!("the viewport count set ({viewports:?}) is not the bound pipeline's scissor count ({static_scissors})"),
         ),
         (false, true) if scissors != Some(static_viewports) => refuse(
-            rules[1],
+            rules.scissors,
             format!("the scissor count set ({scissors:?}) is not the bound pipeline's viewport count ({static_viewports})"),
         ),
         (true, true) if viewports.is_none() || viewports != scissors => refuse(
-            rules[2],
+            rules.both,
             format!("the viewport count set ({viewports:?}) is not the scissor count set ({scissors:?})"),
         ),
         _ => Ok(()),
@@ -406,41 +504,46 @@ fn count_checks(
 fn rendering_checks(
     made_for: &crate::state::RenderingFormats,
     current: &crate::state::RenderingFormats,
-    rules: &[&'static str; 8],
+    rules: &RenderingRules,
 ) -> Result<()> {
     let undefined = vk::Format::UNDEFINED;
     if made_for.view_mask != current.view_mask {
         refuse(
-            rules[0],
+            rules.view_mask,
             format!("the bound pipeline was made for view mask {:#x}, and the render pass instance has {:#x}", made_for.view_mask, current.view_mask),
         )?;
     }
     if made_for.colors.len() != current.colors.len() {
         refuse(
-            rules[1],
+            rules.color_count,
             format!("the bound pipeline was made for {} color attachments, and the render pass instance has {}", made_for.colors.len(), current.colors.len()),
         )?;
     }
     for (i, (made, now)) in made_for.colors.iter().zip(&current.colors).enumerate() {
         if *now == undefined && *made != undefined {
             refuse(
-                rules[3],
+                rules.color_no_view,
                 format!("color attachment {i} has no view, and the bound pipeline was made for format {made:?} there"),
             )?;
         }
         if *now != undefined && made != now {
             refuse(
-                rules[2],
+                rules.color_format,
                 format!("color attachment {i} is of format {now:?}, and the bound pipeline was made for {made:?}"),
             )?;
         }
     }
     for (made, now, (defined_rule, undefined_rule), what) in [
-        (made_for.depth, current.depth, (rules[4], rules[5]), "depth"),
+        (
+            made_for.depth,
+            current.depth,
+            (rules.depth_format, rules.depth_no_view),
+            "depth",
+        ),
         (
             made_for.stencil,
             current.stencil,
-            (rules[6], rules[7]),
+            (rules.stencil_format, rules.stencil_no_view),
             "stencil",
         ),
     ] {
@@ -607,8 +710,12 @@ fn bound_pipeline_checks<S: Scope>(
         )?;
     }
     bound_descriptor_checks(recorder.device(), bound, pipeline, shader)?;
-    protected_checks(recorder, shader[8], shader[9])?;
-    push_constant_checks(recorder, pipeline, shader[3])?;
+    protected_checks(
+        recorder,
+        shader.protected_access,
+        shader.protected_command_buffer,
+    )?;
+    push_constant_checks(recorder, pipeline, shader.push_constants)?;
     descriptor_layout_checks(recorder, bound)
 }
 
@@ -689,7 +796,7 @@ fn attachment_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
             };
             let Some(attachment) = attachment else {
                 refuse(
-                    rules[0],
+                    rules.input_index,
                     format!("set {} binding {}: the shader reads an input attachment (InputAttachmentIndex {:?}) that the current subpass does not have", r.set, r.binding, r.input_index),
                 )?;
                 continue;
@@ -703,7 +810,7 @@ fn attachment_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
             for d in slots(r).filter(|d| d.kind == SlotKind::Image) {
                 if Some(d.format) != format || image.is_some_and(|i| i != d.image) {
                     refuse(
-                        rules[1],
+                        rules.input_view,
                         format!("set {} binding {}: the input attachment's view (format {:?}) is not compatible with attachment {attachment} of the framebuffer (format {format:?})", r.set, r.binding, d.format),
                     )?;
                 }
@@ -723,7 +830,11 @@ fn attachment_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
                 }
                 _ => false,
             };
-            let vuid = if writes { rules[2] } else { rules[3] };
+            let vuid = if writes {
+                rules.memory_written
+            } else {
+                rules.memory_read
+            };
             let Some(images) = &images else {
                 return refuse(
                     vuid,
@@ -745,7 +856,7 @@ fn attachment_checks<S: Scope>(recorder: &Recorder<'_, S>, rules: &AttachmentRul
             }
         }
     }
-    blend_checks(recorder, instance, pipeline, rules[4])
+    blend_checks(recorder, instance, pipeline, rules.blend)
 }
 
 /// Refuses a draw whose bound pipeline blends into a color attachment whose
@@ -873,7 +984,7 @@ pub(crate) fn indexed_draw_checks<S: Scope>(
 ) -> Result<()> {
     draw_checks(recorder, pipeline_vuid, sets_vuid, vertex_vuid, None, draw)?;
     let Some((size, offset, ty)) = recorder.bound[0].index else {
-        return refuse(bound_vuid, "no index buffer is bound".into());
+        return refuse(bound_vuid, "no index buffer is bound");
     };
     let Some((count, first, first_instance, instance_count, vertex_offset, vuid, multiview, fetch)) =
         range

@@ -128,7 +128,7 @@ pub(super) fn protected_checks<S: Scope>(
     if protected {
         return refuse(
             in_protected,
-            "a draw or dispatch in a protected command buffer: which resources its pipeline writes, and from which stages, is not followed".into(),
+            "a draw or dispatch in a protected command buffer: which resources its pipeline writes, and from which stages, is not followed",
         );
     }
     if super::render_pass::protected_no_fault(device) {
@@ -137,7 +137,7 @@ pub(super) fn protected_checks<S: Scope>(
     if live.has_protected_resources() {
         return refuse(
             vuid,
-            "a draw or dispatch in an unprotected command buffer while protected buffers or images are alive: which resources its pipeline reaches is not followed".into(),
+            "a draw or dispatch in an unprotected command buffer while protected buffers or images are alive: which resources its pipeline reaches is not followed",
         );
     }
     Ok(())
@@ -272,7 +272,7 @@ pub(super) fn bound_descriptor_checks(
             bits | slot_sampler_bits(bound, r.set, r.binding, None)
         });
     for r in pipeline.resources.iter() {
-        written_checks(bound, r, rules[2])?;
+        written_checks(bound, r, rules.written)?;
         let Some(shape) = r.image else {
             continue;
         };
@@ -295,11 +295,11 @@ pub(super) fn bound_descriptor_checks(
                 separate
             };
             sampled_view_checks(device, r, d, samplers, &at, rules)?;
-            written_components(r, d.format, &at, rules[15])?;
+            written_components(r, d.format, &at, rules.image_write_components)?;
             if let Some(wanted) = shape.view_type() {
                 if d.view_type != wanted {
                     refuse(
-                        rules[0],
+                        rules.view_type,
                         format!("{}: the shader's image type (Dim {}, Arrayed {}) reads a view of type {wanted:?}, and the descriptor's view is of type {:?}", at(), shape.dim, u32::from(shape.arrayed), d.view_type),
                     )?;
                 }
@@ -313,7 +313,7 @@ pub(super) fn bound_descriptor_checks(
                 crate::formats::color_numeric(d.format).unwrap_or(0)
             };
             if r.ops & crate::spirv::ops::ATOMIC != 0 {
-                atomic_checks(device, d, &at, rules[4])?;
+                atomic_checks(device, d, &at, rules.atomics)?;
             }
             let unknown_storage =
                 shape.format == 0 && r.kind == crate::spirv::ResourceKind::StorageImage;
@@ -321,7 +321,7 @@ pub(super) fn bound_descriptor_checks(
                 (
                     crate::spirv::ops::DREF,
                     vk::FormatFeatureFlags2::SAMPLED_IMAGE_DEPTH_COMPARISON,
-                    rules[5],
+                    rules.depth_comparison,
                     "samples it with depth comparison",
                 ),
                 (
@@ -331,7 +331,7 @@ pub(super) fn bound_descriptor_checks(
                         0
                     },
                     vk::FormatFeatureFlags2::STORAGE_WRITE_WITHOUT_FORMAT,
-                    rules[6],
+                    rules.write_without_format,
                     "writes it as a storage image of Unknown format",
                 ),
                 (
@@ -341,7 +341,7 @@ pub(super) fn bound_descriptor_checks(
                         0
                     },
                     vk::FormatFeatureFlags2::STORAGE_READ_WITHOUT_FORMAT,
-                    rules[7],
+                    rules.read_without_format,
                     "reads it as a storage image of Unknown format",
                 ),
             ];
@@ -356,7 +356,7 @@ pub(super) fn bound_descriptor_checks(
             if shape.numeric != 0 && texels != 0 && shape.numeric != texels {
                 let name = |n: u32| if n == 1 { "a float" } else { "an integer" };
                 refuse(
-                    rules[1],
+                    rules.view_numeric,
                     format!("{}: the shader's image type has {} sampled type, and the view's format {:?} reads as {} type", at(), name(shape.numeric), d.format, name(texels)),
                 )?;
             }
@@ -420,9 +420,9 @@ fn sampled_view_checks(
             .contains(vk::FormatFeatureFlags2::SAMPLED_IMAGE_FILTER_LINEAR);
         if !linear {
             let (vuid, what) = if samplers & SAMPLER_LINEAR != 0 {
-                (rules[10], "a LINEAR magFilter or minFilter")
+                (rules.linear_filter, "a LINEAR magFilter or minFilter")
             } else {
-                (rules[11], "a LINEAR mipmapMode")
+                (rules.linear_mipmap, "a LINEAR mipmapMode")
             };
             refuse(
                 vuid,
@@ -437,19 +437,19 @@ fn sampled_view_checks(
             V::TYPE_3D | V::CUBE | V::TYPE_1D_ARRAY | V::TYPE_2D_ARRAY | V::CUBE_ARRAY
         ) {
             refuse(
-                rules[12],
+                rules.unnormalized_view_type,
                 format!("{}: a sampler with unnormalized coordinates samples an image view of type {:?}", at(), d.view_type),
             )?;
         }
         if r.ops & ops::IMPLICIT_DREF_PROJ != 0 {
             refuse(
-                rules[13],
+                rules.unnormalized_instructions,
                 format!("{}: a sampler with unnormalized coordinates may sample the image with an OpImageSample instruction with ImplicitLod, Dref or Proj in its name", at()),
             )?;
         }
         if r.ops & ops::SAMPLE_BIAS_OFFSET != 0 {
             refuse(
-                rules[14],
+                rules.unnormalized_bias_offset,
                 format!("{}: a sampler with unnormalized coordinates may sample the image with a LOD bias or an offset", at()),
             )?;
         }
@@ -457,13 +457,13 @@ fn sampled_view_checks(
     if d.ycbcr || (sampled && samplers & SAMPLER_YCBCR != 0) {
         if r.ops & ops::NOT_SAMPLE != 0 {
             refuse(
-                rules[19],
+                rules.ycbcr_sampling,
                 format!("{}: the image view or a sampler of it has a sampler Y'CbCr conversion, and the shader uses it with an instruction other than OpImageSample* and OpImageSparseSample*", at()),
             )?;
         }
         if r.ops & ops::OFFSET != 0 {
             refuse(
-                rules[20],
+                rules.ycbcr_offset,
                 format!("{}: the image view or a sampler of it has a sampler Y'CbCr conversion, and the shader uses it with ConstOffset or Offset", at()),
             )?;
         }
@@ -504,7 +504,7 @@ fn texel_buffer_checks(
     rules: &ShaderRules,
 ) -> Result<()> {
     use crate::spirv::ops;
-    written_components(r, d.format, at, rules[16])?;
+    written_components(r, d.format, at, rules.texel_write_components)?;
     if shape.format != 0 || r.kind != crate::spirv::ResourceKind::StorageTexelBuffer {
         return Ok(());
     }
@@ -512,13 +512,13 @@ fn texel_buffer_checks(
         (
             ops::WRITE,
             vk::FormatFeatureFlags2::STORAGE_WRITE_WITHOUT_FORMAT,
-            rules[17],
+            rules.texel_write_without_format,
             "writes",
         ),
         (
             ops::READ,
             vk::FormatFeatureFlags2::STORAGE_READ_WITHOUT_FORMAT,
-            rules[18],
+            rules.texel_read_without_format,
             "reads",
         ),
     ];

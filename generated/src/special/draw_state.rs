@@ -12,8 +12,22 @@ use ash::vk::Handle as _;
 use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
-/// The rules a vertex-buffer binding breaks: (usage, memory, offset, offset plus size).
-type VertexRules = [&'static str; 6];
+/// The rules a vertex-buffer binding breaks, one VUID each (empty where the command
+/// has no such parameter).
+struct VertexRules {
+    /// The buffer has `VERTEX_BUFFER` usage.
+    usage: &'static str,
+    /// It is bound to memory.
+    memory: &'static str,
+    /// The offset lies inside it.
+    offset: &'static str,
+    /// The offset plus the size does too.
+    size: &'static str,
+    /// `firstBinding` + `bindingCount` is within `maxVertexInputBindings`.
+    first_binding: &'static str,
+    /// Each stride is within `maxVertexInputBindingStride`.
+    stride: &'static str,
+}
 
 /// Each binding of `buffers` at `offsets` (and `sizes`, where given) lies inside its
 /// buffer, which has vertex-buffer usage and memory.
@@ -25,14 +39,12 @@ fn check_vertex_bindings<S: Scope>(
     rules: VertexRules,
 ) -> Result<()> {
     let device = recorder.device();
-    let limits = device
-        .live()
-        .limits(|| device.parent().get_properties().limits);
+    let limits = limits(device);
     {
         let max = limits.max_vertex_input_bindings;
         if u64::from(first_binding) + buffers.len() as u64 > u64::from(max) {
             refuse(
-                rules[4],
+                rules.first_binding,
                 format!(
                     "`firstBinding` + `bindingCount` must be less than or equal to \
                      `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = \
@@ -48,7 +60,7 @@ fn check_vertex_bindings<S: Scope>(
             .find(|(_, &s)| s > u64::from(max))
         {
             refuse(
-                rules[5],
+                rules.stride,
                 format!(
                     "each element of `pStrides` must be less than or equal to \
                      `VkPhysicalDeviceLimits::maxVertexInputBindingStride` (`pStrides[{i}]` = \
@@ -63,16 +75,16 @@ fn check_vertex_bindings<S: Scope>(
             recorder,
             b,
             usage,
-            (rules[0], rules[1]),
+            (rules.usage, rules.memory),
             &format_args!("pBuffers[{i}]"),
         )?;
         if offset >= record.size {
-            refuse(rules[2], format!("pOffsets[{i}] must be less than the size of pBuffers[{i}] (offset = {offset}, size = {})", record.size))?;
+            refuse(rules.offset, format!("pOffsets[{i}] must be less than the size of pBuffers[{i}] (offset = {offset}, size = {})", record.size))?;
         }
         // VK_WHOLE_SIZE is the rest of the buffer.
         if let Some(&size) = sizes.get(i).filter(|&&s| s != vk::WHOLE_SIZE) {
             if size > record.size - offset {
-                refuse(rules[3], format!("pOffsets[{i}] plus pSizes[{i}] must be at most the size of pBuffers[{i}] (offset = {offset}, size = {size}, size of the buffer = {})", record.size))?;
+                refuse(rules.size, format!("pOffsets[{i}] plus pSizes[{i}] must be at most the size of pBuffers[{i}] (offset = {offset}, size = {size}, size of the buffer = {})", record.size))?;
             }
         }
     }
@@ -86,14 +98,14 @@ pub(crate) fn cmd_bind_vertex_buffers_checks<S: Scope>(
     buffers: &[&Buffer],
     offsets: &[vk::DeviceSize],
 ) -> Result<()> {
-    let rules = [
-        "VUID-vkCmdBindVertexBuffers-pBuffers-00627",
-        "VUID-vkCmdBindVertexBuffers-pBuffers-00628",
-        "VUID-vkCmdBindVertexBuffers-pOffsets-00626",
-        "",
-        "VUID-vkCmdBindVertexBuffers-firstBinding-00625",
-        "",
-    ];
+    let rules = VertexRules {
+        usage: "VUID-vkCmdBindVertexBuffers-pBuffers-00627",
+        memory: "VUID-vkCmdBindVertexBuffers-pBuffers-00628",
+        offset: "VUID-vkCmdBindVertexBuffers-pOffsets-00626",
+        size: "",
+        first_binding: "VUID-vkCmdBindVertexBuffers-firstBinding-00625",
+        stride: "",
+    };
     check_vertex_bindings(
         recorder,
         (first_binding, buffers),
@@ -111,14 +123,14 @@ pub(crate) fn cmd_bind_vertex_buffers2_checks<S: Scope>(
     offsets: &[vk::DeviceSize],
     (sizes, strides): (&[vk::DeviceSize], &[vk::DeviceSize]),
 ) -> Result<()> {
-    let rules = [
-        "VUID-vkCmdBindVertexBuffers2-pBuffers-03359",
-        "VUID-vkCmdBindVertexBuffers2-pBuffers-03360",
-        "VUID-vkCmdBindVertexBuffers2-pOffsets-03357",
-        "VUID-vkCmdBindVertexBuffers2-pSizes-03358",
-        "VUID-vkCmdBindVertexBuffers2-firstBinding-03356",
-        "VUID-vkCmdBindVertexBuffers2-pStrides-03362",
-    ];
+    let rules = VertexRules {
+        usage: "VUID-vkCmdBindVertexBuffers2-pBuffers-03359",
+        memory: "VUID-vkCmdBindVertexBuffers2-pBuffers-03360",
+        offset: "VUID-vkCmdBindVertexBuffers2-pOffsets-03357",
+        size: "VUID-vkCmdBindVertexBuffers2-pSizes-03358",
+        first_binding: "VUID-vkCmdBindVertexBuffers2-firstBinding-03356",
+        stride: "VUID-vkCmdBindVertexBuffers2-pStrides-03362",
+    };
     check_vertex_bindings(
         recorder,
         (first_binding, buffers),

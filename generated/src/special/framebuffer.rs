@@ -212,7 +212,7 @@ fn imageless_checks(
     let Some(chained) = chained else {
         return refuse(
             "VUID-VkFramebufferCreateInfo-flags-03190",
-            "an imageless framebuffer chains no VkFramebufferAttachmentsCreateInfo".into(),
+            "an imageless framebuffer chains no VkFramebufferAttachmentsCreateInfo",
         );
     };
     let count = chained.attachment_image_info_count;

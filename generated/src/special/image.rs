@@ -761,7 +761,7 @@ fn sharing_and_group_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> R
         if device.live().physical_count() == 1 {
             refuse(
                 "VUID-VkImageCreateInfo-physicalDeviceCount-01421",
-                "an image with SPLIT_INSTANCE_BIND_REGIONS needs a device of more than one physical device".into(),
+                "an image with SPLIT_INSTANCE_BIND_REGIONS needs a device of more than one physical device",
             )?;
         }
     }

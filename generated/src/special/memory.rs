@@ -185,7 +185,7 @@ fn check_bind(
 ) -> Result<()> {
     if let Some((bound, flags)) = record {
         if bound {
-            refuse(rules.bound, "the object is already bound to memory".into())?;
+            refuse(rules.bound, "the object is already bound to memory")?;
         }
         if flags & SPARSE_FLAGS != 0 {
             refuse(
@@ -299,8 +299,7 @@ fn check_memory_kind(
         refuse(
             rules.requires_dedicated,
             "the object requires a dedicated allocation (VkMemoryDedicatedRequirements), and \
-             the memory was not allocated with a VkMemoryDedicatedAllocateInfo naming it"
-                .into(),
+             the memory was not allocated with a VkMemoryDedicatedAllocateInfo naming it",
         )?;
     }
     if asked.dedicated.is_some_and(|(ty, _)| ty == object.ty) && (!mine || offset != 0) {
@@ -324,13 +323,13 @@ fn check_memory_kind(
     if object.protected && !protected_type {
         refuse(
             rules.protected,
-            "a protected object must be bound to memory of a protected type".into(),
+            "a protected object must be bound to memory of a protected type",
         )?;
     }
     if !object.protected && protected_type {
         refuse(
             rules.unprotected,
-            "an unprotected object must not be bound to memory of a protected type".into(),
+            "an unprotected object must not be bound to memory of a protected type",
         )?;
     }
     if !asked.export.is_empty() && !asked.export.intersects(object.external) {
@@ -349,8 +348,7 @@ fn check_memory_kind(
             refuse(
                 vuid,
                 "the buffer was created with VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, so its \
-                 memory must have been allocated with VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT"
-                    .into(),
+                 memory must have been allocated with VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT",
             )?;
         }
     }
@@ -482,7 +480,7 @@ pub(crate) fn bind_image_memory_checks(
     if record.is_some_and(|r| r.flags.contains(vk::ImageCreateFlags::DISJOINT)) {
         refuse(
             "VUID-vkBindImageMemory-image-01608",
-            "the image was created with VK_IMAGE_CREATE_DISJOINT_BIT; bind its planes with bind_image_memory2".into(),
+            "the image was created with VK_IMAGE_CREATE_DISJOINT_BIT; bind its planes with bind_image_memory2",
         )?;
     }
     if let Some(r) = record {
@@ -556,8 +554,7 @@ pub(crate) fn whole_image_requirements(device: &Device, image: &Image) -> Result
         refuse(
             "VUID-vkGetImageMemoryRequirements-image-01588",
             "`image` must not have been created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag \
-             set (its planes have their own requirements: use get_image_memory_requirements2)"
-                .into(),
+             set (its planes have their own requirements: use get_image_memory_requirements2)",
         )?;
     }
     Ok(())
@@ -621,20 +618,17 @@ pub(crate) fn image_requirements2_planes(
             "VUID-VkImageMemoryRequirementsInfo2-image-01589",
             "`image` was created with a multi-planar format and the \
              `VK_IMAGE_CREATE_DISJOINT_BIT` flag, so a VkImagePlaneMemoryRequirementsInfo must be \
-             chained"
-                .into(),
+             chained",
         ),
         Some(_) if !disjoint => refuse(
             "VUID-VkImageMemoryRequirementsInfo2-image-01590",
             "`image` was not created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, so no \
-             VkImagePlaneMemoryRequirementsInfo may be chained"
-                .into(),
+             VkImagePlaneMemoryRequirementsInfo may be chained",
         ),
         Some(_) if !planar => refuse(
             "VUID-VkImageMemoryRequirementsInfo2-image-01591",
             "`image` was created with a single-plane format, so no \
-             VkImagePlaneMemoryRequirementsInfo may be chained"
-                .into(),
+             VkImagePlaneMemoryRequirementsInfo may be chained",
         ),
         Some(p)
             if p.plane_aspect.as_raw().count_ones() != 1 || !aspects.contains(p.plane_aspect) =>
@@ -704,13 +698,13 @@ pub(crate) fn allocate_memory_checks(
     {
         refuse(
             "VUID-VkMemoryAllocateInfo-flags-03330",
-            "the allocation asks for capture and replay of device addresses, but the device does not enable bufferDeviceAddressCaptureReplay".into(),
+            "the allocation asks for capture and replay of device addresses, but the device does not enable bufferDeviceAddressCaptureReplay",
         )?;
     }
     if flags.contains(vk::MemoryAllocateFlags::DEVICE_ADDRESS) && address == vk::FALSE {
         refuse(
             "VUID-VkMemoryAllocateInfo-flags-03331",
-            "the allocation asks for a device address, but the device does not enable bufferDeviceAddress".into(),
+            "the allocation asks for a device address, but the device does not enable bufferDeviceAddress",
         )?;
     }
     if let Some(c) = capture.filter(|c| c.opaque_capture_address != 0) {
@@ -741,7 +735,7 @@ pub(crate) fn allocate_memory_checks(
         if f.device_mask == 0 {
             refuse(
                 "VUID-VkMemoryAllocateFlagsInfo-deviceMask-00676",
-                "VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT is set and deviceMask is 0".into(),
+                "VK_MEMORY_ALLOCATE_DEVICE_MASK_BIT is set and deviceMask is 0",
             )?;
         }
         let count = device.live().physical_count();
@@ -781,7 +775,7 @@ fn dedicated_allocation_checks(device: &Device, info: &vk::MemoryAllocateInfo<'_
     if image != vk::Image::null() && buffer != vk::Buffer::null() {
         refuse(
             "VUID-VkMemoryDedicatedAllocateInfo-image-01432",
-            "VkMemoryDedicatedAllocateInfo names both an image and a buffer".into(),
+            "VkMemoryDedicatedAllocateInfo names both an image and a buffer",
         )?;
     }
     let physical = device.parent();
@@ -790,7 +784,7 @@ fn dedicated_allocation_checks(device: &Device, info: &vk::MemoryAllocateInfo<'_
         if record.flags.contains(vk::ImageCreateFlags::SPARSE_BINDING) {
             refuse(
                 "VUID-VkMemoryDedicatedAllocateInfo-image-01434",
-                "the dedicated image was created with VK_IMAGE_CREATE_SPARSE_BINDING_BIT".into(),
+                "the dedicated image was created with VK_IMAGE_CREATE_SPARSE_BINDING_BIT",
             )?;
         }
         if record.flags.contains(vk::ImageCreateFlags::DISJOINT) {
@@ -798,7 +792,7 @@ fn dedicated_allocation_checks(device: &Device, info: &vk::MemoryAllocateInfo<'_
             // ask for.
             return refuse(
                 "VUID-VkMemoryDedicatedAllocateInfo-image-01797",
-                "the dedicated image was created with VK_IMAGE_CREATE_DISJOINT_BIT".into(),
+                "the dedicated image was created with VK_IMAGE_CREATE_DISJOINT_BIT",
             );
         }
         let mut needs = vk::MemoryRequirements::default();
@@ -839,7 +833,7 @@ fn dedicated_allocation_checks(device: &Device, info: &vk::MemoryAllocateInfo<'_
         if record.flags.contains(vk::BufferCreateFlags::SPARSE_BINDING) {
             refuse(
                 "VUID-VkMemoryDedicatedAllocateInfo-buffer-01436",
-                "the dedicated buffer was created with VK_BUFFER_CREATE_SPARSE_BINDING_BIT".into(),
+                "the dedicated buffer was created with VK_BUFFER_CREATE_SPARSE_BINDING_BIT",
             )?;
         }
         let mut needs = vk::MemoryRequirements::default();

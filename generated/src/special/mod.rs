@@ -52,13 +52,9 @@ use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
 pub(crate) use crate::state::limits;
 use crate::state::PoolFamily;
-use crate::{Error, Handle, Result};
+pub(crate) use crate::support::refuse;
+use crate::Handle;
 use ash::vk;
-
-/// A refusal naming the rule, what it says, and the values that break it.
-pub(super) fn refuse(vuid: &'static str, message: String) -> Result<()> {
-    Err(Error::Validation { vuid, message })
-}
 
 /// The queue family of the recorder's command pool, as its pool's creation
 /// recorded it (all capabilities, for a pool the wrappers did not record).

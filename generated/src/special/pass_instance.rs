@@ -220,8 +220,7 @@ pub(crate) fn end_render_pass_checks<S: Scope>(
             queries,
             "If `vkCmdBeginQuery`* was called within a subpass of the render pass, the \
              corresponding `vkCmdEndQuery`* must have been called subsequently within the same \
-             subpass"
-                .into(),
+             subpass",
         )
     } else {
         Ok(())
@@ -240,8 +239,7 @@ pub(crate) fn end_rendering_checks<S: Scope>(recorder: &mut Recorder<'_, S>) -> 
         return refuse(
             "VUID-vkCmdEndRendering-None-06999",
             "If `vkCmdBeginQuery`* was called within the render pass, the corresponding \
-             `vkCmdEndQuery`* must have been called subsequently within the same subpass"
-                .into(),
+             `vkCmdEndQuery`* must have been called subsequently within the same subpass",
         );
     }
     Ok(())
@@ -407,7 +405,7 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
     {
         refuse(
             rules.same_device,
-            "the framebuffer or the render pass is not of the command buffer's device".into(),
+            "the framebuffer or the render pass is not of the command buffer's device",
         )?;
     }
     // SAFETY: the chain of a safe struct, and the type its sType names.
@@ -485,7 +483,7 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
         if !made_with.compatible(&pass) {
             refuse(
                 "VUID-VkRenderPassBeginInfo-renderPass-00904",
-                "the render pass is not compatible with the one the framebuffer was created with (its attachments' formats and sample counts, or its subpasses' attachments and view masks, differ)".into(),
+                "the render pass is not compatible with the one the framebuffer was created with (its attachments' formats and sample counts, or its subpasses' attachments and view masks, differ)",
             )?;
         }
     }
@@ -633,7 +631,7 @@ fn check_attachment_views(
         if !views.is_empty() {
             refuse(
                 "VUID-VkRenderPassBeginInfo-framebuffer-03207",
-                "a framebuffer with image views, and a chained VkRenderPassAttachmentBeginInfo that gives views too".into(),
+                "a framebuffer with image views, and a chained VkRenderPassAttachmentBeginInfo that gives views too",
             )?;
         }
         return Ok(());

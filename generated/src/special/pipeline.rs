@@ -505,7 +505,7 @@ pub(crate) fn merge_pipeline_caches_checks(
     if src_caches.iter().any(|c| c.raw() == dst_cache.raw()) {
         refuse(
             "VUID-vkMergePipelineCaches-dstCache-00770",
-            "`dstCache` must not appear in the list of source caches".into(),
+            "`dstCache` must not appear in the list of source caches",
         )?;
     }
     Ok(())

@@ -64,7 +64,7 @@ pub(crate) fn get_query_pool_results_checks(
     {
         refuse(
             "VUID-vkGetQueryPoolResults-queryType-00818",
-            "a timestamp query pool's results cannot be partial".into(),
+            "a timestamp query pool's results cannot be partial",
         )?;
     }
     let values: u64 = match pool.query_type {
@@ -161,8 +161,7 @@ pub(crate) fn begin_query_checks<S: Scope>(
     if record.query_type == vk::QueryType::TIMESTAMP {
         refuse(
             "VUID-vkCmdBeginQuery-queryType-02804",
-            "The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_TIMESTAMP`"
-                .into(),
+            "The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_TIMESTAMP`",
         )?;
     }
     if query >= record.count {
@@ -313,8 +312,7 @@ pub(crate) fn end_query_checks<S: Scope>(
         ),
         (None, Some(_)) => refuse(
             "VUID-vkCmdEndQuery-None-07008",
-            "the query was begun outside a render pass instance, so it must be ended outside one"
-                .into(),
+            "the query was begun outside a render pass instance, so it must be ended outside one",
         ),
         _ => Ok(()),
     }

@@ -157,7 +157,7 @@ pub(crate) fn queue_submit_hold<'q>(
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
     let device = queue.parent();
     let cbs = submit_command_buffers(submits);
-    let gate = submission::sets_gate(device, &cbs, submission::SUBMIT.executable)?;
+    let gate = submission::sets_hold(device, &cbs, submission::SUBMIT.executable)?;
     // What other queues' submissions use and leave (events, semaphores) is checked
     // under the gate, which every submission holds until it has recorded its own.
     submission::check_events(
@@ -187,7 +187,7 @@ pub(crate) fn queue_submit2_hold<'q>(
     submits: &[SubmitInfo2<'_>],
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
     let device = queue.parent();
-    let gate = submission::sets_gate(
+    let gate = submission::sets_hold(
         device,
         &submit2_command_buffers(submits),
         submission::SUBMIT2.executable,

@@ -40,8 +40,7 @@ pub(crate) fn surface_supported<'s>(
         return refuse(
             missing,
             "`surface` must be a valid VkSurfaceKHR handle (a query without one needs \
-             VK_GOOGLE_surfaceless_query, which tuff does not emit)"
-                .into(),
+             VK_GOOGLE_surfaceless_query, which tuff does not emit)",
         );
     };
     // Without the extension the call itself fails, with `ExtensionNotEnabled`.
@@ -67,7 +66,6 @@ pub(crate) fn surface_supported<'s>(
     refuse(
         vuid,
         "`surface` must be supported by `physicalDevice`, as reported by \
-         vkGetPhysicalDeviceSurfaceSupportKHR (no queue family of it presents to the surface)"
-            .into(),
+         vkGetPhysicalDeviceSurfaceSupportKHR (no queue family of it presents to the surface)",
     )
 }

@@ -408,7 +408,7 @@ pub(crate) fn create_swapchain_checks(
     if !supported {
         refuse(
             "VUID-VkSwapchainCreateInfoKHR-surface-01270",
-            "no queue family the device was created with presents to the surface".into(),
+            "no queue family the device was created with presents to the surface",
         )?;
     }
     let caps = physical.get_surface_capabilities_khr(surface)?;
@@ -542,7 +542,7 @@ pub(crate) fn create_swapchain_checks(
     {
         refuse(
             "VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429",
-            "a swapchain with SPLIT_INSTANCE_BIND_REGIONS needs a device of more than one physical device".into(),
+            "a swapchain with SPLIT_INSTANCE_BIND_REGIONS needs a device of more than one physical device",
         )?;
     }
     let flags = swapchain_image_flags(info.flags);
@@ -572,7 +572,7 @@ pub(crate) fn create_swapchain_checks(
         if device.live().is_retired(info.old_swapchain) {
             refuse(
                 "VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933",
-                "oldSwapchain was retired by an earlier swapchain creation".into(),
+                "oldSwapchain was retired by an earlier swapchain creation",
             )?;
         }
         let same_surface = device
@@ -582,7 +582,7 @@ pub(crate) fn create_swapchain_checks(
         if !same_surface {
             refuse(
                 "VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933",
-                "oldSwapchain presents to another surface (the check compares surface objects, so a second surface of the same window is refused too)".into(),
+                "oldSwapchain presents to another surface (the check compares surface objects, so a second surface of the same window is refused too)",
             )?;
         }
     }
@@ -632,7 +632,7 @@ fn acquire_checks(
     if semaphore == vk::Semaphore::null() && fence == vk::Fence::null() {
         refuse(
             rules.neither,
-            "an acquire needs a semaphore or a fence to signal".into(),
+            "an acquire needs a semaphore or a fence to signal",
         )?;
     }
     if semaphore != vk::Semaphore::null() {
@@ -647,7 +647,7 @@ fn acquire_checks(
     if device.live().is_retired(swapchain) {
         refuse(
             rules.retired,
-            "the swapchain was retired by a later swapchain creation".into(),
+            "the swapchain was retired by a later swapchain creation",
         )?;
     }
     Ok(())

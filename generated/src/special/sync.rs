@@ -330,7 +330,7 @@ pub(crate) fn host_event(device: &Device, event: &Event, vuid: &'static str) -> 
     if device.live().is_device_only(event.raw()) {
         refuse(
             vuid,
-            "`event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`".into(),
+            "`event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`",
         )?;
     }
     Ok(())

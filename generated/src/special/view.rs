@@ -119,13 +119,13 @@ pub(crate) fn image_view_checks(
     if three_d && !array_2d && ty == V::TYPE_2D_ARRAY {
         refuse(
             "VUID-VkImageViewCreateInfo-image-06723",
-            "a 2D array view of a 3D image created without 2D_ARRAY_COMPATIBLE".into(),
+            "a 2D array view of a 3D image created without 2D_ARRAY_COMPATIBLE",
         )?;
     }
     if three_d && !array_2d && ty == V::TYPE_2D {
         refuse(
             "VUID-VkImageViewCreateInfo-image-06727",
-            "a 2D view of a 3D image created without 2D_ARRAY_COMPATIBLE".into(),
+            "a 2D view of a 3D image created without 2D_ARRAY_COMPATIBLE",
         )?;
     }
     let slices_of_3d = three_d && matches!(ty, V::TYPE_2D | V::TYPE_2D_ARRAY);

@@ -97,7 +97,8 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
         //! the checks of enum and flags values in `values`, those of each struct in
         //! `structs`, one file per core version and extension.
         #![allow(dead_code, clippy::match_overlapping_arm, clippy::unnecessary_cast, clippy::match_same_arms)]
-        use crate::validation::{fail, Scope};
+        use crate::support::refuse;
+        use crate::validation::Scope;
         use crate::Result;
         use ash::vk;
         mod structs;
@@ -259,12 +260,12 @@ fn chain_fn(checker: &Checker, origins: &Origins) -> TokenStream {
                 let ty = base.s_type.as_raw();
                 if let Some(vuid) = pnext {
                     if !node_enabled(ty, s) {
-                        return Err(fail(vuid, format!("{:?} belongs to a version or extension that this instance or device does not enable", base.s_type)));
+                        return refuse(vuid, format!("{:?} belongs to a version or extension that this instance or device does not enable", base.s_type));
                     }
                 }
                 if let Some(vuid) = unique {
                     if seen.contains(&ty) && !DUPLICATES_ALLOWED.contains(&ty) {
-                        return Err(fail(vuid, format!("{:?} appears twice in the pNext chain", base.s_type)));
+                        return refuse(vuid, format!("{:?} appears twice in the pNext chain", base.s_type));
                     }
                     seen.push(ty);
                 }
@@ -452,7 +453,7 @@ fn enum_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
             if s.enabled(origins) {
                 Ok(())
             } else {
-                Err(fail(vuid, format!(#msg)))
+                refuse(vuid, format!(#msg))
             }
         }
     }
@@ -485,7 +486,7 @@ fn flags_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
             if (v.as_raw() as u64) & !valid == 0 {
                 Ok(())
             } else {
-                Err(fail(vuid, format!(#msg)))
+                refuse(vuid, format!(#msg))
             }
         }
     }
@@ -495,7 +496,7 @@ fn flags_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
 /// `v` (the checked struct), and returns early with `?` or `Err`.
 pub fn render(check: &Check) -> TokenStream {
     let vuid = check.vuid.as_deref().unwrap_or_default();
-    let fail = |msg: &str| quote!(return Err(fail(#vuid, #msg.into())););
+    let fail = |msg: &str| quote!(return refuse(#vuid, #msg););
     match &check.kind {
         CheckKind::Value { kind, at } => value(kind, place(at), vuid),
         CheckKind::EachValue { kind, over } => {

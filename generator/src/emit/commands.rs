@@ -172,7 +172,7 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Files, Files) {
         use crate::checks::origin;
         use crate::handles::*;
         use crate::structs::*;
-        use crate::validation::fail;
+        use crate::support::refuse;
         use crate::{recorder::*, Entry, Handle, Result};
         use ash::vk;
     };

@@ -503,7 +503,7 @@ fn render_check(r: &Recognised, gate: Option<TokenStream>) -> TokenStream {
         let text = &r.text;
         quote! {
             if #(#when &&)* #broken {
-                return Err(fail(#vuid, #text.into()));
+                return refuse(#vuid, #text);
             }
         }
     } else {
@@ -518,7 +518,7 @@ fn render_check(r: &Recognised, gate: Option<TokenStream>) -> TokenStream {
         });
         quote! {
             if #(#when &&)* #broken {
-                return Err(fail(#vuid, format!(#text, #(#args),*)));
+                return refuse(#vuid, format!(#text, #(#args),*));
             }
         }
     };

@@ -10,7 +10,8 @@
     clippy::unnecessary_cast,
     clippy::match_same_arms
 )]
-use crate::validation::{fail, Scope};
+use crate::support::refuse;
+use crate::validation::Scope;
 use crate::Result;
 use ash::vk;
 mod structs;
@@ -1490,24 +1491,20 @@ pub(crate) fn chain(
         let ty = base.s_type.as_raw();
         if let Some(vuid) = pnext {
             if !node_enabled(ty, s) {
-                return Err(
-                    fail(
-                        vuid,
-                        format!(
-                            "{:?} belongs to a version or extension that this instance or device does not enable",
-                            base.s_type
-                        ),
+                return refuse(
+                    vuid,
+                    format!(
+                        "{:?} belongs to a version or extension that this instance or device does not enable",
+                        base.s_type
                     ),
                 );
             }
         }
         if let Some(vuid) = unique {
             if seen.contains(&ty) && !DUPLICATES_ALLOWED.contains(&ty) {
-                return Err(
-                    fail(
-                        vuid,
-                        format!("{:?} appears twice in the pNext chain", base.s_type),
-                    ),
+                return refuse(
+                    vuid,
+                    format!("{:?} appears twice in the pNext chain", base.s_type),
                 );
             }
             seen.push(ty);

@@ -15,12 +15,10 @@ pub(crate) fn enum_acceleration_structure_build_type_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkAccelerationStructureBuildTypeKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkAccelerationStructureBuildTypeKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -43,12 +41,10 @@ pub(crate) fn flags_acceleration_structure_create_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkAccelerationStructureCreateFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkAccelerationStructureCreateFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -65,12 +61,10 @@ pub(crate) fn enum_acceleration_structure_memory_requirements_type_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkAccelerationStructureMemoryRequirementsTypeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkAccelerationStructureMemoryRequirementsTypeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -87,12 +81,10 @@ pub(crate) fn enum_acceleration_structure_motion_instance_type_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkAccelerationStructureMotionInstanceTypeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkAccelerationStructureMotionInstanceTypeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -110,12 +102,10 @@ pub(crate) fn enum_acceleration_structure_type_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkAccelerationStructureTypeKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkAccelerationStructureTypeKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -153,12 +143,10 @@ pub(crate) fn flags_access_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkAccessFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkAccessFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -199,12 +187,10 @@ pub(crate) fn flags_access_flags2(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkAccessFlags2` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkAccessFlags2` that no version or extension enabled here defines"
             ),
         )
     }
@@ -221,12 +207,10 @@ pub(crate) fn flags_attachment_description_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkAttachmentDescriptionFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkAttachmentDescriptionFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -244,12 +228,10 @@ pub(crate) fn enum_attachment_load_op(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkAttachmentLoadOp` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkAttachmentLoadOp` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -267,12 +249,10 @@ pub(crate) fn enum_attachment_store_op(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkAttachmentStoreOp` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkAttachmentStoreOp` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -289,12 +269,10 @@ pub(crate) fn enum_blend_factor(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkBlendFactor` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkBlendFactor` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -312,12 +290,10 @@ pub(crate) fn enum_blend_op(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkBlendOp` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkBlendOp` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -334,12 +310,10 @@ pub(crate) fn enum_blend_overlap_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkBlendOverlapEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkBlendOverlapEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -365,12 +339,10 @@ pub(crate) fn flags_buffer_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkBufferCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkBufferCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -414,12 +386,10 @@ pub(crate) fn flags_buffer_usage_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkBufferUsageFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkBufferUsageFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -442,12 +412,10 @@ pub(crate) fn flags_build_acceleration_structure_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkBuildAccelerationStructureFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkBuildAccelerationStructureFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -464,12 +432,10 @@ pub(crate) fn flags_build_micromap_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkBuildMicromapFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkBuildMicromapFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -486,12 +452,10 @@ pub(crate) fn enum_chroma_location(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkChromaLocation` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkChromaLocation` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -508,12 +472,10 @@ pub(crate) fn enum_coarse_sample_order_type_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCoarseSampleOrderTypeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCoarseSampleOrderTypeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -530,12 +492,10 @@ pub(crate) fn flags_color_component_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkColorComponentFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkColorComponentFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -554,12 +514,10 @@ pub(crate) fn enum_color_space_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkColorSpaceKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkColorSpaceKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -576,12 +534,10 @@ pub(crate) fn enum_command_buffer_level(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCommandBufferLevel` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCommandBufferLevel` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -598,12 +554,10 @@ pub(crate) fn flags_command_buffer_reset_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkCommandBufferResetFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkCommandBufferResetFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -620,12 +574,10 @@ pub(crate) fn flags_command_buffer_usage_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkCommandBufferUsageFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkCommandBufferUsageFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -645,12 +597,10 @@ pub(crate) fn flags_command_pool_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkCommandPoolCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkCommandPoolCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -667,12 +617,10 @@ pub(crate) fn flags_command_pool_reset_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkCommandPoolResetFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkCommandPoolResetFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -689,12 +637,10 @@ pub(crate) fn enum_compare_op(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCompareOp` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCompareOp` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -711,12 +657,10 @@ pub(crate) fn enum_component_swizzle(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkComponentSwizzle` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkComponentSwizzle` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -733,12 +677,10 @@ pub(crate) fn enum_component_type_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkComponentTypeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkComponentTypeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -755,12 +697,10 @@ pub(crate) fn enum_composite_alpha_flag_bits_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCompositeAlphaFlagBitsKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCompositeAlphaFlagBitsKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -777,12 +717,10 @@ pub(crate) fn flags_conditional_rendering_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkConditionalRenderingFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkConditionalRenderingFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -799,12 +737,10 @@ pub(crate) fn enum_conservative_rasterization_mode_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkConservativeRasterizationModeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkConservativeRasterizationModeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -822,12 +758,10 @@ pub(crate) fn enum_copy_acceleration_structure_mode_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCopyAccelerationStructureModeKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCopyAccelerationStructureModeKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -844,12 +778,10 @@ pub(crate) fn enum_copy_micromap_mode_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCopyMicromapModeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCopyMicromapModeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -866,12 +798,10 @@ pub(crate) fn enum_coverage_modulation_mode_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCoverageModulationModeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCoverageModulationModeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -888,12 +818,10 @@ pub(crate) fn enum_coverage_reduction_mode_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkCoverageReductionModeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkCoverageReductionModeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -910,12 +838,10 @@ pub(crate) fn flags_cull_mode_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkCullModeFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkCullModeFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -932,12 +858,10 @@ pub(crate) fn flags_debug_report_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDebugReportFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDebugReportFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -960,12 +884,10 @@ pub(crate) fn enum_debug_report_object_type_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDebugReportObjectTypeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDebugReportObjectTypeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -982,12 +904,10 @@ pub(crate) fn enum_debug_utils_message_severity_flag_bits_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDebugUtilsMessageSeverityFlagBitsEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDebugUtilsMessageSeverityFlagBitsEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1004,12 +924,10 @@ pub(crate) fn flags_debug_utils_message_severity_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDebugUtilsMessageSeverityFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDebugUtilsMessageSeverityFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1029,12 +947,10 @@ pub(crate) fn flags_debug_utils_message_type_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDebugUtilsMessageTypeFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDebugUtilsMessageTypeFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1060,12 +976,10 @@ pub(crate) fn flags_dependency_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDependencyFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDependencyFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1082,12 +996,10 @@ pub(crate) fn flags_descriptor_binding_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDescriptorBindingFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDescriptorBindingFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1110,12 +1022,10 @@ pub(crate) fn flags_descriptor_pool_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDescriptorPoolCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDescriptorPoolCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1141,12 +1051,10 @@ pub(crate) fn flags_descriptor_set_layout_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDescriptorSetLayoutCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDescriptorSetLayoutCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1168,12 +1076,10 @@ pub(crate) fn enum_descriptor_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDescriptorType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDescriptorType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1191,12 +1097,10 @@ pub(crate) fn enum_descriptor_update_template_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDescriptorUpdateTemplateType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDescriptorUpdateTemplateType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1213,12 +1117,10 @@ pub(crate) fn flags_device_address_binding_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDeviceAddressBindingFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDeviceAddressBindingFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1235,12 +1137,10 @@ pub(crate) fn enum_device_address_binding_type_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDeviceAddressBindingTypeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDeviceAddressBindingTypeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1257,12 +1157,10 @@ pub(crate) fn flags_device_diagnostics_config_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDeviceDiagnosticsConfigFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDeviceDiagnosticsConfigFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1279,12 +1177,10 @@ pub(crate) fn enum_device_event_type_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDeviceEventTypeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDeviceEventTypeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1301,12 +1197,10 @@ pub(crate) fn enum_device_group_present_mode_flag_bits_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDeviceGroupPresentModeFlagBitsKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDeviceGroupPresentModeFlagBitsKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1323,12 +1217,10 @@ pub(crate) fn flags_device_group_present_mode_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDeviceGroupPresentModeFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDeviceGroupPresentModeFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1345,12 +1237,10 @@ pub(crate) fn flags_device_queue_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkDeviceQueueCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkDeviceQueueCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1367,12 +1257,10 @@ pub(crate) fn enum_direct_driver_loading_mode_lunarg(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDirectDriverLoadingModeLUNARG` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDirectDriverLoadingModeLUNARG` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1389,12 +1277,10 @@ pub(crate) fn enum_discard_rectangle_mode_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDiscardRectangleModeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDiscardRectangleModeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1411,12 +1297,10 @@ pub(crate) fn enum_display_event_type_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDisplayEventTypeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDisplayEventTypeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1433,12 +1317,10 @@ pub(crate) fn enum_display_plane_alpha_flag_bits_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDisplayPlaneAlphaFlagBitsKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDisplayPlaneAlphaFlagBitsKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1455,12 +1337,10 @@ pub(crate) fn enum_display_power_state_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDisplayPowerStateEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDisplayPowerStateEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1491,12 +1371,10 @@ pub(crate) fn enum_dynamic_state(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkDynamicState` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkDynamicState` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1513,12 +1391,10 @@ pub(crate) fn flags_event_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkEventCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkEventCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1535,12 +1411,10 @@ pub(crate) fn enum_export_metal_object_type_flag_bits_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkExportMetalObjectTypeFlagBitsEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkExportMetalObjectTypeFlagBitsEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1557,12 +1431,10 @@ pub(crate) fn enum_external_fence_handle_type_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkExternalFenceHandleTypeFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkExternalFenceHandleTypeFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1579,12 +1451,10 @@ pub(crate) fn flags_external_fence_handle_type_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkExternalFenceHandleTypeFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkExternalFenceHandleTypeFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1606,12 +1476,10 @@ pub(crate) fn enum_external_memory_handle_type_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkExternalMemoryHandleTypeFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkExternalMemoryHandleTypeFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1643,12 +1511,10 @@ pub(crate) fn flags_external_memory_handle_type_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkExternalMemoryHandleTypeFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkExternalMemoryHandleTypeFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1665,12 +1531,10 @@ pub(crate) fn flags_external_memory_handle_type_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkExternalMemoryHandleTypeFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkExternalMemoryHandleTypeFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1688,12 +1552,10 @@ pub(crate) fn enum_external_semaphore_handle_type_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkExternalSemaphoreHandleTypeFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkExternalSemaphoreHandleTypeFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1713,12 +1575,10 @@ pub(crate) fn flags_external_semaphore_handle_type_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkExternalSemaphoreHandleTypeFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkExternalSemaphoreHandleTypeFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1735,12 +1595,10 @@ pub(crate) fn flags_fence_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkFenceCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkFenceCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1757,12 +1615,10 @@ pub(crate) fn flags_fence_import_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkFenceImportFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkFenceImportFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1780,12 +1636,10 @@ pub(crate) fn enum_filter(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkFilter` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkFilter` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1808,12 +1662,10 @@ pub(crate) fn enum_format(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkFormat` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkFormat` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1857,12 +1709,10 @@ pub(crate) fn flags_format_feature_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkFormatFeatureFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkFormatFeatureFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1879,12 +1729,10 @@ pub(crate) fn enum_fragment_shading_rate_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkFragmentShadingRateNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkFragmentShadingRateNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1901,12 +1749,10 @@ pub(crate) fn flags_framebuffer_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkFramebufferCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkFramebufferCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1923,12 +1769,10 @@ pub(crate) fn enum_front_face(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkFrontFace` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkFrontFace` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1945,12 +1789,10 @@ pub(crate) fn enum_full_screen_exclusive_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkFullScreenExclusiveEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkFullScreenExclusiveEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -1967,12 +1809,10 @@ pub(crate) fn flags_geometry_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkGeometryFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkGeometryFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -1990,12 +1830,10 @@ pub(crate) fn enum_geometry_type_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkGeometryTypeKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkGeometryTypeKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2012,12 +1850,10 @@ pub(crate) fn flags_graphics_pipeline_library_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkGraphicsPipelineLibraryFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkGraphicsPipelineLibraryFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2037,12 +1873,10 @@ pub(crate) fn enum_image_aspect_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkImageAspectFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkImageAspectFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2065,12 +1899,10 @@ pub(crate) fn flags_image_aspect_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkImageAspectFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkImageAspectFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2087,12 +1919,10 @@ pub(crate) fn flags_image_constraints_info_flags_fuchsia(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkImageConstraintsInfoFlagsFUCHSIA` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkImageConstraintsInfoFlagsFUCHSIA` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2148,12 +1978,10 @@ pub(crate) fn flags_image_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkImageCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkImageCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2180,12 +2008,10 @@ pub(crate) fn enum_image_layout(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkImageLayout` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkImageLayout` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2203,12 +2029,10 @@ pub(crate) fn enum_image_tiling(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkImageTiling` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkImageTiling` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2225,12 +2049,10 @@ pub(crate) fn enum_image_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkImageType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkImageType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2268,12 +2090,10 @@ pub(crate) fn flags_image_usage_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkImageUsageFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkImageUsageFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2296,12 +2116,10 @@ pub(crate) fn flags_image_view_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkImageViewCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkImageViewCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2318,12 +2136,10 @@ pub(crate) fn enum_image_view_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkImageViewType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkImageViewType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2342,12 +2158,10 @@ pub(crate) fn enum_index_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkIndexType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkIndexType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2364,12 +2178,10 @@ pub(crate) fn flags_indirect_commands_layout_usage_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkIndirectCommandsLayoutUsageFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkIndirectCommandsLayoutUsageFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2387,12 +2199,10 @@ pub(crate) fn enum_indirect_commands_token_type_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkIndirectCommandsTokenTypeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkIndirectCommandsTokenTypeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2409,12 +2219,10 @@ pub(crate) fn flags_indirect_state_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkIndirectStateFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkIndirectStateFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2431,12 +2239,10 @@ pub(crate) fn flags_instance_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkInstanceCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkInstanceCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2453,12 +2259,10 @@ pub(crate) fn enum_line_rasterization_mode_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkLineRasterizationModeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkLineRasterizationModeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2475,12 +2279,10 @@ pub(crate) fn enum_logic_op(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkLogicOp` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkLogicOp` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2500,12 +2302,10 @@ pub(crate) fn flags_memory_allocate_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkMemoryAllocateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkMemoryAllocateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2522,12 +2322,10 @@ pub(crate) fn flags_memory_decompression_method_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkMemoryDecompressionMethodFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkMemoryDecompressionMethodFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2544,12 +2342,10 @@ pub(crate) fn enum_memory_overallocation_behavior_amd(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkMemoryOverallocationBehaviorAMD` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkMemoryOverallocationBehaviorAMD` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2566,12 +2362,10 @@ pub(crate) fn flags_micromap_create_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkMicromapCreateFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkMicromapCreateFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2588,12 +2382,10 @@ pub(crate) fn enum_micromap_type_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkMicromapTypeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkMicromapTypeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2629,12 +2421,10 @@ pub(crate) fn enum_object_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkObjectType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkObjectType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2651,12 +2441,10 @@ pub(crate) fn flags_optical_flow_execute_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkOpticalFlowExecuteFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkOpticalFlowExecuteFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2673,12 +2461,10 @@ pub(crate) fn flags_optical_flow_grid_size_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkOpticalFlowGridSizeFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkOpticalFlowGridSizeFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2695,12 +2481,10 @@ pub(crate) fn enum_optical_flow_performance_level_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkOpticalFlowPerformanceLevelNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkOpticalFlowPerformanceLevelNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2717,12 +2501,10 @@ pub(crate) fn enum_optical_flow_session_binding_point_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkOpticalFlowSessionBindingPointNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkOpticalFlowSessionBindingPointNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2739,12 +2521,10 @@ pub(crate) fn flags_optical_flow_session_create_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkOpticalFlowSessionCreateFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkOpticalFlowSessionCreateFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2761,12 +2541,10 @@ pub(crate) fn flags_optical_flow_usage_flags_nv(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkOpticalFlowUsageFlagsNV` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkOpticalFlowUsageFlagsNV` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2783,12 +2561,10 @@ pub(crate) fn enum_performance_configuration_type_intel(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPerformanceConfigurationTypeINTEL` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPerformanceConfigurationTypeINTEL` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2805,12 +2581,10 @@ pub(crate) fn enum_performance_override_type_intel(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPerformanceOverrideTypeINTEL` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPerformanceOverrideTypeINTEL` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2827,12 +2601,10 @@ pub(crate) fn enum_performance_parameter_type_intel(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPerformanceParameterTypeINTEL` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPerformanceParameterTypeINTEL` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2849,12 +2621,10 @@ pub(crate) fn enum_performance_value_type_intel(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPerformanceValueTypeINTEL` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPerformanceValueTypeINTEL` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2873,12 +2643,10 @@ pub(crate) fn enum_pipeline_bind_point(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPipelineBindPoint` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPipelineBindPoint` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2895,12 +2663,10 @@ pub(crate) fn flags_pipeline_cache_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineCacheCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineCacheCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -2917,12 +2683,10 @@ pub(crate) fn enum_pipeline_cache_header_version(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPipelineCacheHeaderVersion` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPipelineCacheHeaderVersion` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -2939,12 +2703,10 @@ pub(crate) fn flags_pipeline_color_blend_state_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineColorBlendStateCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineColorBlendStateCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3003,12 +2765,10 @@ pub(crate) fn flags_pipeline_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3025,12 +2785,10 @@ pub(crate) fn flags_pipeline_depth_stencil_state_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineDepthStencilStateCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineDepthStencilStateCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3047,12 +2805,10 @@ pub(crate) fn flags_pipeline_layout_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineLayoutCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineLayoutCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3069,12 +2825,10 @@ pub(crate) fn enum_pipeline_robustness_buffer_behavior_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPipelineRobustnessBufferBehaviorEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPipelineRobustnessBufferBehaviorEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3091,12 +2845,10 @@ pub(crate) fn enum_pipeline_robustness_image_behavior_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPipelineRobustnessImageBehaviorEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPipelineRobustnessImageBehaviorEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3113,12 +2865,10 @@ pub(crate) fn flags_pipeline_shader_stage_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineShaderStageCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineShaderStageCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3159,12 +2909,10 @@ pub(crate) fn enum_pipeline_stage_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPipelineStageFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPipelineStageFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3205,12 +2953,10 @@ pub(crate) fn flags_pipeline_stage_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineStageFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineStageFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3254,12 +3000,10 @@ pub(crate) fn flags_pipeline_stage_flags2(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPipelineStageFlags2` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPipelineStageFlags2` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3277,12 +3021,10 @@ pub(crate) fn enum_polygon_mode(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPolygonMode` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPolygonMode` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3299,12 +3041,10 @@ pub(crate) fn flags_present_gravity_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPresentGravityFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPresentGravityFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3322,12 +3062,10 @@ pub(crate) fn enum_present_mode_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPresentModeKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPresentModeKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3344,12 +3082,10 @@ pub(crate) fn flags_present_scaling_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkPresentScalingFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkPresentScalingFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3366,12 +3102,10 @@ pub(crate) fn enum_primitive_topology(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkPrimitiveTopology` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkPrimitiveTopology` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3388,12 +3122,10 @@ pub(crate) fn enum_provoking_vertex_mode_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkProvokingVertexModeEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkProvokingVertexModeEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3410,12 +3142,10 @@ pub(crate) fn flags_query_control_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkQueryControlFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkQueryControlFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3432,12 +3162,10 @@ pub(crate) fn enum_query_pool_sampling_mode_intel(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkQueryPoolSamplingModeINTEL` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkQueryPoolSamplingModeINTEL` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3457,12 +3185,10 @@ pub(crate) fn flags_query_result_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkQueryResultFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkQueryResultFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3489,12 +3215,10 @@ pub(crate) fn enum_query_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkQueryType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkQueryType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3511,12 +3235,10 @@ pub(crate) fn enum_queue_global_priority_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkQueueGlobalPriorityKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkQueueGlobalPriorityKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3533,12 +3255,10 @@ pub(crate) fn enum_rasterization_order_amd(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkRasterizationOrderAMD` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkRasterizationOrderAMD` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3555,12 +3275,10 @@ pub(crate) fn enum_ray_tracing_shader_group_type_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkRayTracingShaderGroupTypeKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkRayTracingShaderGroupTypeKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3577,12 +3295,10 @@ pub(crate) fn flags_render_pass_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkRenderPassCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkRenderPassCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3602,12 +3318,10 @@ pub(crate) fn flags_rendering_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkRenderingFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkRenderingFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3624,12 +3338,10 @@ pub(crate) fn enum_resolve_mode_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkResolveModeFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkResolveModeFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3646,12 +3358,10 @@ pub(crate) fn enum_sample_count_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSampleCountFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSampleCountFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3669,12 +3379,10 @@ pub(crate) fn enum_sampler_address_mode(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSamplerAddressMode` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSamplerAddressMode` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3700,12 +3408,10 @@ pub(crate) fn flags_sampler_create_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSamplerCreateFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSamplerCreateFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3722,12 +3428,10 @@ pub(crate) fn enum_sampler_mipmap_mode(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSamplerMipmapMode` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSamplerMipmapMode` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3744,12 +3448,10 @@ pub(crate) fn enum_sampler_reduction_mode(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSamplerReductionMode` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSamplerReductionMode` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3766,12 +3468,10 @@ pub(crate) fn enum_sampler_ycbcr_model_conversion(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSamplerYcbcrModelConversion` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSamplerYcbcrModelConversion` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3788,12 +3488,10 @@ pub(crate) fn enum_sampler_ycbcr_range(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSamplerYcbcrRange` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSamplerYcbcrRange` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3810,12 +3508,10 @@ pub(crate) fn enum_scope_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkScopeNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkScopeNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3832,12 +3528,10 @@ pub(crate) fn flags_semaphore_import_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSemaphoreImportFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSemaphoreImportFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3854,12 +3548,10 @@ pub(crate) fn enum_semaphore_type(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSemaphoreType` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSemaphoreType` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3876,12 +3568,10 @@ pub(crate) fn flags_semaphore_wait_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSemaphoreWaitFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSemaphoreWaitFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -3898,12 +3588,10 @@ pub(crate) fn enum_shader_group_shader_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkShaderGroupShaderKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkShaderGroupShaderKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3920,12 +3608,10 @@ pub(crate) fn enum_shader_info_type_amd(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkShaderInfoTypeAMD` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkShaderInfoTypeAMD` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3946,12 +3632,10 @@ pub(crate) fn enum_shader_stage_flag_bits(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkShaderStageFlagBits` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkShaderStageFlagBits` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -3980,12 +3664,10 @@ pub(crate) fn flags_shader_stage_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkShaderStageFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkShaderStageFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4002,12 +3684,10 @@ pub(crate) fn enum_shading_rate_palette_entry_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkShadingRatePaletteEntryNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkShadingRatePaletteEntryNV` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4024,12 +3704,10 @@ pub(crate) fn enum_sharing_mode(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSharingMode` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSharingMode` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4046,12 +3724,10 @@ pub(crate) fn flags_sparse_memory_bind_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSparseMemoryBindFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSparseMemoryBindFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4068,12 +3744,10 @@ pub(crate) fn flags_stencil_face_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkStencilFaceFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkStencilFaceFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4090,12 +3764,10 @@ pub(crate) fn enum_stencil_op(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkStencilOp` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkStencilOp` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4112,12 +3784,10 @@ pub(crate) fn flags_submit_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSubmitFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSubmitFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4134,12 +3804,10 @@ pub(crate) fn enum_subpass_contents(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSubpassContents` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSubpassContents` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4165,12 +3833,10 @@ pub(crate) fn flags_subpass_description_flags(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSubpassDescriptionFlags` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSubpassDescriptionFlags` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4187,12 +3853,10 @@ pub(crate) fn enum_surface_counter_flag_bits_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSurfaceCounterFlagBitsEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSurfaceCounterFlagBitsEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4209,12 +3873,10 @@ pub(crate) fn flags_surface_counter_flags_ext(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSurfaceCounterFlagsEXT` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSurfaceCounterFlagsEXT` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4231,12 +3893,10 @@ pub(crate) fn enum_surface_transform_flag_bits_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkSurfaceTransformFlagBitsKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkSurfaceTransformFlagBitsKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4262,12 +3922,10 @@ pub(crate) fn flags_swapchain_create_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkSwapchainCreateFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkSwapchainCreateFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4284,12 +3942,10 @@ pub(crate) fn enum_tessellation_domain_origin(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkTessellationDomainOrigin` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkTessellationDomainOrigin` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4306,12 +3962,10 @@ pub(crate) fn enum_time_domain_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkTimeDomainEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkTimeDomainEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4328,12 +3982,10 @@ pub(crate) fn enum_validation_check_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkValidationCheckEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkValidationCheckEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4350,12 +4002,10 @@ pub(crate) fn enum_validation_feature_disable_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkValidationFeatureDisableEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkValidationFeatureDisableEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4372,12 +4022,10 @@ pub(crate) fn enum_validation_feature_enable_ext(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkValidationFeatureEnableEXT` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkValidationFeatureEnableEXT` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4394,12 +4042,10 @@ pub(crate) fn enum_vertex_input_rate(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkVertexInputRate` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkVertexInputRate` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4416,12 +4062,10 @@ pub(crate) fn flags_video_chroma_subsampling_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkVideoChromaSubsamplingFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkVideoChromaSubsamplingFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4440,12 +4084,10 @@ pub(crate) fn enum_video_codec_operation_flag_bits_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkVideoCodecOperationFlagBitsKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkVideoCodecOperationFlagBitsKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4465,12 +4107,10 @@ pub(crate) fn flags_video_coding_control_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkVideoCodingControlFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkVideoCodingControlFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4487,12 +4127,10 @@ pub(crate) fn flags_video_component_bit_depth_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkVideoComponentBitDepthFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkVideoComponentBitDepthFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4509,12 +4147,10 @@ pub(crate) fn enum_video_decode_h264_picture_layout_flag_bits_khr(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkVideoDecodeH264PictureLayoutFlagBitsKHR` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkVideoDecodeH264PictureLayoutFlagBitsKHR` value of the versions and extensions enabled here"
             ),
         )
     }
@@ -4531,12 +4167,10 @@ pub(crate) fn flags_video_decode_usage_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkVideoDecodeUsageFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkVideoDecodeUsageFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4553,12 +4187,10 @@ pub(crate) fn flags_video_session_create_flags_khr(
     if (v.as_raw() as u64) & !valid == 0 {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} sets bits of `VkVideoSessionCreateFlagsKHR` that no version or extension enabled here defines"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} sets bits of `VkVideoSessionCreateFlagsKHR` that no version or extension enabled here defines"
             ),
         )
     }
@@ -4575,12 +4207,10 @@ pub(crate) fn enum_viewport_coordinate_swizzle_nv(
     if s.enabled(origins) {
         Ok(())
     } else {
-        Err(
-            fail(
-                vuid,
-                format!(
-                    "{v:?} is not a `VkViewportCoordinateSwizzleNV` value of the versions and extensions enabled here"
-                ),
+        refuse(
+            vuid,
+            format!(
+                "{v:?} is not a `VkViewportCoordinateSwizzleNV` value of the versions and extensions enabled here"
             ),
         )
     }

@@ -21,34 +21,26 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-commonparent",
-                    "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && !s.feature(|f| f.v10.geometry_shader)
             && matches!(pipeline_stage.as_raw(), 64)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04075",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`pipelineStage` = {:?})",
-                        pipeline_stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04075",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`pipelineStage` = {:?})",
+                    pipeline_stage
                 ),
             );
         }
@@ -56,13 +48,11 @@ impl<'c, S: State> Recorder<'c, S> {
             && !s.feature(|f| f.v10.tessellation_shader)
             && matches!(pipeline_stage.as_raw(), 16 | 32)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04076",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`pipelineStage` = {:?})",
-                        pipeline_stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04076",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`pipelineStage` = {:?})",
+                    pipeline_stage
                 ),
             );
         }
@@ -71,12 +61,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 .buffer(dst_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01799",
-                    "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01799",
+                "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if s.exts.has(origin::VK_AMD_BUFFER_MARKER)
@@ -84,22 +71,17 @@ impl<'c, S: State> Recorder<'c, S> {
                 .buffer(dst_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01800",
-                    "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01800",
+                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s.exts.has(origin::VK_AMD_BUFFER_MARKER) && dst_offset % 4 != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01801",
-                    format!(
-                        "`dstOffset` must be a multiple of `4` (`dstOffset` = {:?})",
-                        dst_offset
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01801",
+                format!(
+                    "`dstOffset` must be a multiple of `4` (`dstOffset` = {:?})",
+                    dst_offset
                 ),
             );
         }
@@ -109,13 +91,11 @@ impl<'c, S: State> Recorder<'c, S> {
             && !s.feature(|f| f.v13.synchronization2)
             && matches!(pipeline_stage.as_raw(), 0)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarkerAMD-synchronization2-06489",
-                    format!(
-                        "If the `synchronization2` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE` (`pipelineStage` = {:?})",
-                        pipeline_stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-synchronization2-06489",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE` (`pipelineStage` = {:?})",
+                    pipeline_stage
                 ),
             );
         }

@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swap_chain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetLocalDimmingAMD-swapChain-parent",
-                    "`swapChain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkSetLocalDimmingAMD-swapChain-parent",
+                "`swapChain` does not come from `device`",
             );
         }
         Ok(())

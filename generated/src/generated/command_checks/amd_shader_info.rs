@@ -23,11 +23,9 @@ impl Device {
             "VUID-vkGetShaderInfoAMD-infoType-parameter",
         )?;
         if !s.owned_by_device(pipeline.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetShaderInfoAMD-pipeline-parent",
-                    "`pipeline` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetShaderInfoAMD-pipeline-parent",
+                "`pipeline` does not come from `device`",
             );
         }
         Ok(())

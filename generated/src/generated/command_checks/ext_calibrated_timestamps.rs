@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if timestamp_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength",
-                    "`timestampCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkGetCalibratedTimestampsEXT-timestampCount-arraylength",
+                "`timestampCount` is 0",
             );
         }
         for x in timestamp_infos.iter() {

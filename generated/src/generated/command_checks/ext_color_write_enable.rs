@@ -13,20 +13,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorWriteEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if color_write_enables.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength",
-                    "`attachmentCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorWriteEnableEXT-attachmentCount-arraylength",
+                "`attachmentCount` is 0",
             );
         }
         Ok(())

@@ -26,11 +26,9 @@ impl Instance {
             "VUID-vkDebugReportMessageEXT-flags-parameter",
         )?;
         if flags.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkDebugReportMessageEXT-flags-requiredbitmask",
-                    "`flags` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkDebugReportMessageEXT-flags-requiredbitmask",
+                "`flags` is empty",
             );
         }
         crate::checks::enum_debug_report_object_type_ext(

@@ -10,12 +10,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         Ok(())
@@ -26,12 +23,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         Ok(())
@@ -42,12 +36,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdInsertDebugUtilsLabelEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         Ok(())
@@ -83,11 +74,9 @@ impl Instance {
             "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-parameter",
         )?;
         if message_types.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask",
-                    "`messageTypes` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkSubmitDebugUtilsMessageEXT-messageTypes-requiredbitmask",
+                "`messageTypes` is empty",
             );
         }
         crate::checks::check_debug_utils_messenger_callback_data_ext(callback_data, s)?;

@@ -21,21 +21,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -50,20 +44,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindDescriptorBuffersEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if binding_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength",
-                    "`bufferCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindDescriptorBuffersEXT-bufferCount-arraylength",
+                "`bufferCount` is 0",
             );
         }
         for x in binding_infos.iter() {
@@ -88,29 +77,21 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if buffer_indices.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength",
-                    "`setCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength",
+                "`setCount` is 0",
             );
         }
         if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -148,11 +129,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if descriptor.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetDescriptorEXT-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDescriptorEXT-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         crate::checks::check_descriptor_get_info_ext(descriptor_info, s)?;
@@ -165,11 +144,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(layout.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-parent",
-                    "`layout` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDescriptorSetLayoutBindingOffsetEXT-layout-parent",
+                "`layout` does not come from `device`",
             );
         }
         Ok(())
@@ -181,11 +158,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(layout.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parent",
-                    "`layout` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parent",
+                "`layout` does not come from `device`",
             );
         }
         Ok(())

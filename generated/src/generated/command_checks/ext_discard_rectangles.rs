@@ -13,20 +13,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDiscardRectangleEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if discard_rectangles.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength",
-                    "`discardRectangleCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDiscardRectangleEXT-discardRectangleCount-arraylength",
+                "`discardRectangleCount` is 0",
             );
         }
         Ok(())

@@ -12,12 +12,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if s.device.is_none_or(|d| display.parent().raw() != d.parent().raw()) {
-            return Err(
-                fail(
-                    "VUID-vkDisplayPowerControlEXT-commonparent",
-                    "`display` does not come from the physical device of the device the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkDisplayPowerControlEXT-commonparent",
+                "`display` does not come from the physical device of the device the command is called on",
             );
         }
         crate::checks::check_display_power_info_ext(display_power_info, s)?;
@@ -36,11 +33,9 @@ impl Device {
             "VUID-vkGetSwapchainCounterEXT-counter-parameter",
         )?;
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetSwapchainCounterEXT-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetSwapchainCounterEXT-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         Ok(())
@@ -62,12 +57,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if s.device.is_none_or(|d| display.parent().raw() != d.parent().raw()) {
-            return Err(
-                fail(
-                    "VUID-vkRegisterDisplayEventEXT-commonparent",
-                    "`display` does not come from the physical device of the device the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkRegisterDisplayEventEXT-commonparent",
+                "`display` does not come from the physical device of the device the command is called on",
             );
         }
         crate::checks::check_display_event_info_ext(display_event_info, s)?;

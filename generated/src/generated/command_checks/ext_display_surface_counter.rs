@@ -11,12 +11,9 @@ impl PhysicalDevice {
     ) -> Result<()> {
         let s = &self.parent().scope();
         if !s.owned_by_instance(surface.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-commonparent",
-                    "`surface` does not come from the VkInstance the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkGetPhysicalDeviceSurfaceCapabilities2EXT-commonparent",
+                "`surface` does not come from the VkInstance the command is called on",
             );
         }
         Ok(())

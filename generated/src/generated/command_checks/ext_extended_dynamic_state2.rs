@@ -16,12 +16,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLogicOpEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetLogicOpEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -32,12 +29,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetPatchControlPointsEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())

@@ -10,12 +10,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetAlphaToCoverageEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -26,12 +23,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetAlphaToOneEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -46,20 +40,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorBlendAdvancedEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if color_blend_advanced.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength",
-                    "`attachmentCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorBlendAdvancedEXT-attachmentCount-arraylength",
+                "`attachmentCount` is 0",
             );
         }
         for x in color_blend_advanced.iter() {
@@ -76,20 +65,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorBlendEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if color_blend_enables.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength",
-                    "`attachmentCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorBlendEnableEXT-attachmentCount-arraylength",
+                "`attachmentCount` is 0",
             );
         }
         Ok(())
@@ -104,20 +88,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorBlendEquationEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if color_blend_equations.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength",
-                    "`attachmentCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorBlendEquationEXT-attachmentCount-arraylength",
+                "`attachmentCount` is 0",
             );
         }
         for x in color_blend_equations.iter() {
@@ -142,20 +121,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorWriteMaskEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if color_write_masks.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength",
-                    "`attachmentCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetColorWriteMaskEXT-attachmentCount-arraylength",
+                "`attachmentCount` is 0",
             );
         }
         Ok(())
@@ -175,12 +149,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetConservativeRasterizationModeEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -200,12 +171,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoverageModulationModeNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -216,12 +184,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoverageModulationTableEnableNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -235,20 +200,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoverageModulationTableNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if coverage_modulation_table.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength",
-                    "`coverageModulationTableCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoverageModulationTableNV-coverageModulationTableCount-arraylength",
+                "`coverageModulationTableCount` is 0",
             );
         }
         Ok(())
@@ -268,12 +228,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoverageReductionModeNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -284,12 +241,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoverageToColorEnableNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -300,12 +254,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoverageToColorLocationNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -316,12 +267,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthClampEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -332,12 +280,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthClipEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -348,12 +293,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthClipNegativeOneToOneEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -366,12 +308,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetExtraPrimitiveOverestimationSizeEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -391,12 +330,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetLineRasterizationModeEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -407,12 +343,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetLineStippleEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -423,12 +356,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetLogicOpEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -448,12 +378,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPolygonModeEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetPolygonModeEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -473,12 +400,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetProvokingVertexModeEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -498,12 +422,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetRasterizationSamplesEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -514,12 +435,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetRasterizationStreamEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -532,12 +450,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetRepresentativeFragmentTestEnableNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -548,12 +463,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetSampleLocationsEnableEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -573,12 +485,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetSampleMaskEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -589,12 +498,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetShadingRateImageEnableNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -614,12 +520,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetTessellationDomainOriginEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -634,20 +537,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportSwizzleNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportSwizzleNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if viewport_swizzles.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportSwizzleNV-viewportCount-arraylength",
+                "`viewportCount` is 0",
             );
         }
         for x in viewport_swizzles.iter() {
@@ -661,12 +559,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportWScalingEnableNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())

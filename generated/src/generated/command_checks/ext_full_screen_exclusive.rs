@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkAcquireFullScreenExclusiveModeEXT-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         Ok(())
@@ -36,11 +34,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkReleaseFullScreenExclusiveModeEXT-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         Ok(())

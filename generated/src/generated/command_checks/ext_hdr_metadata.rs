@@ -11,20 +11,16 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if swapchains.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength",
-                    "`swapchainCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength",
+                "`swapchainCount` is 0",
             );
         }
         for h in swapchains.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkSetHdrMetadataEXT-pSwapchains-parent",
-                        "`pSwapchains` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkSetHdrMetadataEXT-pSwapchains-parent",
+                    "`pSwapchains` does not come from `device`",
                 );
             }
         }

@@ -13,11 +13,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageSubresourceLayout2EXT-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetImageSubresourceLayout2EXT-image-parent",
+                "`image` does not come from `device`",
             );
         }
         crate::checks::check_image_subresource2_ext(subresource, s)?;

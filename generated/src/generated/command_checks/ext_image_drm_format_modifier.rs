@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetImageDrmFormatModifierPropertiesEXT-image-parent",
+                "`image` does not come from `device`",
             );
         }
         Ok(())

@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkBuildMicromapsEXT-infoCount-arraylength",
-                    "`infoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkBuildMicromapsEXT-infoCount-arraylength",
+                "`infoCount` is 0",
             );
         }
         for x in infos.iter() {
@@ -88,41 +86,33 @@ impl Device {
             "VUID-vkWriteMicromapsPropertiesEXT-queryType-parameter",
         )?;
         if micromaps.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWriteMicromapsPropertiesEXT-micromapCount-arraylength",
-                    "`micromapCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkWriteMicromapsPropertiesEXT-micromapCount-arraylength",
+                "`micromapCount` is 0",
             );
         }
         if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         for h in micromaps.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent",
-                        "`pMicromaps` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent",
+                    "`pMicromaps` does not come from `device`",
                 );
             }
         }
         if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)
             && !matches!(query_type.as_raw(), 1000396000 | 1000396001)
         {
-            return Err(
-                fail(
-                    "VUID-vkWriteMicromapsPropertiesEXT-queryType-07503",
-                    format!(
-                        "`queryType` must be `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT` or `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT` (`queryType` = {:?})",
-                        query_type
-                    ),
+            return refuse(
+                "VUID-vkWriteMicromapsPropertiesEXT-queryType-07503",
+                format!(
+                    "`queryType` must be `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT` or `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT` (`queryType` = {:?})",
+                    query_type
                 ),
             );
         }
@@ -141,20 +131,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildMicromapsEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildMicromapsEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength",
-                    "`infoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildMicromapsEXT-infoCount-arraylength",
+                "`infoCount` is 0",
             );
         }
         for x in infos.iter() {
@@ -172,12 +157,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToMicromapEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         crate::checks::check_copy_memory_to_micromap_info_ext(info, s)?;
@@ -193,12 +175,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMicromapEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMicromapEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         crate::checks::check_copy_micromap_info_ext(info, s)?;
@@ -214,12 +193,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMicromapToMemoryEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         crate::checks::check_copy_micromap_to_memory_info_ext(info, s)?;
@@ -242,52 +218,39 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if micromaps.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength",
-                    "`micromapCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength",
+                "`micromapCount` is 0",
             );
         }
         for h in micromaps.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
-                        "`pMicromaps` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
+                    "`pMicromaps` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)
             && !matches!(query_type.as_raw(), 1000396000 | 1000396001)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503",
-                    format!(
-                        "`queryType` must be `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT` or `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT` (`queryType` = {:?})",
-                        query_type
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503",
+                format!(
+                    "`queryType` must be `VK_QUERY_TYPE_MICROMAP_COMPACTED_SIZE_EXT` or `VK_QUERY_TYPE_MICROMAP_SERIALIZATION_SIZE_EXT` (`queryType` = {:?})",
+                    query_type
                 ),
             );
         }

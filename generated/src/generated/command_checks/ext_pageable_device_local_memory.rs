@@ -12,24 +12,20 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(memory.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetDeviceMemoryPriorityEXT-memory-parent",
-                    "`memory` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkSetDeviceMemoryPriorityEXT-memory-parent",
+                "`memory` does not come from `device`",
             );
         }
         if s.exts.has(origin::VK_EXT_PAGEABLE_DEVICE_LOCAL_MEMORY)
             && ((priority as f64).is_nan() || priority < 0.0
                 || (priority as f64).is_nan() || priority > 1.0)
         {
-            return Err(
-                fail(
-                    "VUID-vkSetDeviceMemoryPriorityEXT-priority-06258",
-                    format!(
-                        "`priority` must be between `0` and `1`, inclusive (`priority` = {:?})",
-                        priority
-                    ),
+            return refuse(
+                "VUID-vkSetDeviceMemoryPriorityEXT-priority-06258",
+                format!(
+                    "`priority` must be between `0` and `1`, inclusive (`priority` = {:?})",
+                    priority
                 ),
             );
         }

@@ -20,11 +20,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(shader_module.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetShaderModuleIdentifierEXT-shaderModule-parent",
-                    "`shaderModule` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetShaderModuleIdentifierEXT-shaderModule-parent",
+                "`shaderModule` does not come from `device`",
             );
         }
         Ok(())

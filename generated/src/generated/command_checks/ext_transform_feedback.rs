@@ -20,21 +20,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginQueryIndexedEXT-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginQueryIndexedEXT-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -49,30 +43,22 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if buffers.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength",
-                    "`bindingCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength",
+                "`bindingCount` is 0",
             );
         }
         for h in buffers.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent",
-                        "`pBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent",
+                    "`pBuffers` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -88,21 +74,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndQueryIndexedEXT-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndQueryIndexedEXT-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -120,22 +100,16 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         for h in counter_buffers.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBeginTransformFeedbackEXT-commonparent",
-                        "`pCounterBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBeginTransformFeedbackEXT-commonparent",
+                    "`pCounterBuffers` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -151,21 +125,15 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| counter_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectByteCountEXT-commonparent",
-                    "`counterBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectByteCountEXT-commonparent",
+                "`counterBuffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -180,22 +148,16 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         for h in counter_buffers.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdEndTransformFeedbackEXT-commonparent",
-                        "`pCounterBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdEndTransformFeedbackEXT-commonparent",
+                    "`pCounterBuffers` does not come from the VkDevice the command is called on",
                 );
             }
         }

@@ -20,11 +20,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(validation_cache.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetValidationCacheDataEXT-validationCache-parent",
-                    "`validationCache` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetValidationCacheDataEXT-validationCache-parent",
+                "`validationCache` does not come from `device`",
             );
         }
         Ok(())
@@ -37,28 +35,22 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if src_caches.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength",
-                    "`srcCacheCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength",
+                "`srcCacheCount` is 0",
             );
         }
         if !s.owned_by_device(dst_cache.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkMergeValidationCachesEXT-dstCache-parent",
-                    "`dstCache` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkMergeValidationCachesEXT-dstCache-parent",
+                "`dstCache` does not come from `device`",
             );
         }
         for h in src_caches.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkMergeValidationCachesEXT-pSrcCaches-parent",
-                        "`pSrcCaches` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkMergeValidationCachesEXT-pSrcCaches-parent",
+                    "`pSrcCaches` does not come from `device`",
                 );
             }
         }

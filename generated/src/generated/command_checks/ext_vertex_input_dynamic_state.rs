@@ -15,12 +15,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetVertexInputEXT-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetVertexInputEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         for x in vertex_binding_descriptions.iter() {

@@ -12,11 +12,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(collection.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetBufferCollectionPropertiesFUCHSIA-collection-parent",
-                    "`collection` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetBufferCollectionPropertiesFUCHSIA-collection-parent",
+                "`collection` does not come from `device`",
             );
         }
         crate::checks::check_buffer_collection_properties_fuchsia(properties, s)?;
@@ -30,11 +28,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(collection.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-parent",
-                    "`collection` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkSetBufferCollectionBufferConstraintsFUCHSIA-collection-parent",
+                "`collection` does not come from `device`",
             );
         }
         crate::checks::check_buffer_constraints_info_fuchsia(
@@ -51,11 +47,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(collection.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parent",
-                    "`collection` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parent",
+                "`collection` does not come from `device`",
             );
         }
         crate::checks::check_image_constraints_info_fuchsia(image_constraints_info, s)?;

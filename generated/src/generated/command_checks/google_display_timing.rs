@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPastPresentationTimingGOOGLE-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetPastPresentationTimingGOOGLE-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         Ok(())
@@ -27,11 +25,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetRefreshCycleDurationGOOGLE-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         Ok(())

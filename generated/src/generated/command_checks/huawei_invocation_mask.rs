@@ -20,22 +20,16 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if let Some(h) = image_view {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindInvocationMaskHUAWEI-commonparent",
-                        "`imageView` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBindInvocationMaskHUAWEI-commonparent",
+                    "`imageView` does not come from the VkDevice the command is called on",
                 );
             }
         }

@@ -10,12 +10,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSubpassShadingHUAWEI-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSubpassShadingHUAWEI-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -30,11 +27,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(renderpass.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-renderpass-parent",
-                    "`renderpass` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDeviceSubpassShadingMaxWorkgroupSizeHUAWEI-renderpass-parent",
+                "`renderpass` does not come from `device`",
             );
         }
         Ok(())

@@ -37,11 +37,9 @@ impl Device {
         let s = &self.scope();
         if let Some(h) = configuration {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkReleasePerformanceConfigurationINTEL-configuration-parent",
-                        "`configuration` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkReleasePerformanceConfigurationINTEL-configuration-parent",
+                    "`configuration` does not come from `device`",
                 );
             }
         }
@@ -56,12 +54,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,transfer operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetPerformanceMarkerINTEL-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,transfer operations",
             );
         }
         Ok(())
@@ -76,12 +71,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,transfer operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetPerformanceOverrideINTEL-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,transfer operations",
             );
         }
         crate::checks::check_performance_override_info_intel(override_info, s)?;
@@ -93,12 +85,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,transfer operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetPerformanceStreamMarkerINTEL-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,transfer operations",
             );
         }
         Ok(())
@@ -113,12 +102,9 @@ impl Queue {
     ) -> Result<()> {
         let s = &self.parent().scope();
         if s.device.is_none_or(|d| configuration.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent",
-                    "`configuration` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkQueueSetPerformanceConfigurationINTEL-commonparent",
+                "`configuration` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

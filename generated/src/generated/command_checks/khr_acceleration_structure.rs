@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength",
-                    "`infoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkBuildAccelerationStructuresKHR-infoCount-arraylength",
+                "`infoCount` is 0",
             );
         }
         for x in infos.iter() {
@@ -91,28 +89,22 @@ impl Device {
             "VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter",
         )?;
         if acceleration_structures.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength",
-                    "`accelerationStructureCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength",
+                "`accelerationStructureCount` is 0",
             );
         }
         if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         for h in acceleration_structures.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent",
-                        "`pAccelerationStructures` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent",
+                    "`pAccelerationStructures` does not come from `device`",
                 );
             }
         }
@@ -131,20 +123,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength",
-                    "`infoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructuresIndirectKHR-infoCount-arraylength",
+                "`infoCount` is 0",
             );
         }
         for x in infos.iter() {
@@ -162,20 +149,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructuresKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength",
-                    "`infoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructuresKHR-infoCount-arraylength",
+                "`infoCount` is 0",
             );
         }
         for x in infos.iter() {
@@ -193,12 +175,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyAccelerationStructureKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         crate::checks::check_copy_acceleration_structure_info_khr(info, s)?;
@@ -214,12 +193,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyAccelerationStructureToMemoryKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         crate::checks::check_copy_acceleration_structure_to_memory_info_khr(info, s)?;
@@ -235,12 +211,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToAccelerationStructureKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         crate::checks::check_copy_memory_to_acceleration_structure_info_khr(info, s)?;
@@ -263,40 +236,29 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if acceleration_structures.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength",
-                    "`accelerationStructureCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength",
+                "`accelerationStructureCount` is 0",
             );
         }
         for h in acceleration_structures.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
-                        "`pAccelerationStructures` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
+                    "`pAccelerationStructures` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(operation.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkDeferredOperationJoinKHR-operation-parent",
-                    "`operation` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkDeferredOperationJoinKHR-operation-parent",
+                "`operation` does not come from `device`",
             );
         }
         Ok(())
@@ -27,11 +25,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(operation.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parent",
-                    "`operation` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDeferredOperationMaxConcurrencyKHR-operation-parent",
+                "`operation` does not come from `device`",
             );
         }
         Ok(())
@@ -43,11 +39,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(operation.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDeferredOperationResultKHR-operation-parent",
-                    "`operation` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDeferredOperationResultKHR-operation-parent",
+                "`operation` does not come from `device`",
             );
         }
         Ok(())

@@ -15,31 +15,22 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| descriptor_update_template.parent().raw() != d.raw())
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent",
-                    "`descriptorUpdateTemplate` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent",
+                "`descriptorUpdateTemplate` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

@@ -21,12 +21,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_instance(surface.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent",
-                    "`surface` does not come from the VkInstance the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkGetDeviceGroupSurfacePresentModesKHR-commonparent",
+                "`surface` does not come from the VkInstance the command is called on",
             );
         }
         Ok(())
@@ -41,12 +38,9 @@ impl PhysicalDevice {
     ) -> Result<()> {
         let s = &self.parent().scope();
         if !s.owned_by_instance(surface.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent",
-                    "`surface` does not come from the VkInstance the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkGetPhysicalDevicePresentRectanglesKHR-commonparent",
+                "`surface` does not come from the VkInstance the command is called on",
             );
         }
         Ok(())

@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if create_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCreateSharedSwapchainsKHR-swapchainCount-arraylength",
-                    "`swapchainCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCreateSharedSwapchainsKHR-swapchainCount-arraylength",
+                "`swapchainCount` is 0",
             );
         }
         for x in create_infos.iter() {

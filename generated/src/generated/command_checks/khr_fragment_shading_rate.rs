@@ -10,12 +10,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetFragmentShadingRateKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())

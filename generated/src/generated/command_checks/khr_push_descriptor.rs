@@ -21,29 +21,21 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if descriptor_writes.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength",
-                    "`descriptorWriteCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength",
+                "`descriptorWriteCount` is 0",
             );
         }
         if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushDescriptorSetKHR-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetKHR-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
             );
         }
         for x in descriptor_writes.iter() {

@@ -13,12 +13,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdTraceRaysIndirect2KHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdTraceRaysIndirect2KHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         Ok(())

@@ -11,12 +11,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetRayTracingPipelineStackSizeKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         Ok(())
@@ -27,12 +24,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdTraceRaysIndirectKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         Ok(())
@@ -43,12 +37,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdTraceRaysKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdTraceRaysKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         Ok(())
@@ -64,20 +55,16 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if create_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength",
-                    "`createInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength",
+                "`createInfoCount` is 0",
             );
         }
         if let Some(h) = pipeline_cache {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent",
-                        "`pipelineCache` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent",
+                    "`pipelineCache` does not come from `device`",
                 );
             }
         }
@@ -94,19 +81,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         if !s.owned_by_device(pipeline.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent",
-                    "`pipeline` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent",
+                "`pipeline` does not come from `device`",
             );
         }
         Ok(())
@@ -119,19 +102,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         if !s.owned_by_device(pipeline.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent",
-                    "`pipeline` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent",
+                "`pipeline` does not come from `device`",
             );
         }
         Ok(())
@@ -149,11 +128,9 @@ impl Device {
             "VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter",
         )?;
         if !s.owned_by_device(pipeline.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent",
-                    "`pipeline` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent",
+                "`pipeline` does not come from `device`",
             );
         }
         Ok(())

@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetSwapchainStatusKHR-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetSwapchainStatusKHR-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         Ok(())

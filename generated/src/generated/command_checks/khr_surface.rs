@@ -11,12 +11,9 @@ impl PhysicalDevice {
     ) -> Result<()> {
         let s = &self.parent().scope();
         if !s.owned_by_instance(surface.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent",
-                    "`surface` does not come from the VkInstance the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkGetPhysicalDeviceSurfaceCapabilitiesKHR-commonparent",
+                "`surface` does not come from the VkInstance the command is called on",
             );
         }
         Ok(())
@@ -29,12 +26,9 @@ impl PhysicalDevice {
         let s = &self.parent().scope();
         if let Some(h) = surface {
             if !s.owned_by_instance(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent",
-                        "`surface` does not come from the VkInstance the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkGetPhysicalDeviceSurfaceFormatsKHR-commonparent",
+                    "`surface` does not come from the VkInstance the command is called on",
                 );
             }
         }
@@ -48,12 +42,9 @@ impl PhysicalDevice {
         let s = &self.parent().scope();
         if let Some(h) = surface {
             if !s.owned_by_instance(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent",
-                        "`surface` does not come from the VkInstance the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkGetPhysicalDeviceSurfacePresentModesKHR-commonparent",
+                    "`surface` does not come from the VkInstance the command is called on",
                 );
             }
         }
@@ -66,12 +57,9 @@ impl PhysicalDevice {
     ) -> Result<()> {
         let s = &self.parent().scope();
         if !s.owned_by_instance(surface.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent",
-                    "`surface` does not come from the VkInstance the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-commonparent",
+                "`surface` does not come from the VkInstance the command is called on",
             );
         }
         Ok(())

@@ -13,30 +13,24 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkAcquireNextImageKHR-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkAcquireNextImageKHR-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         if let Some(h) = semaphore {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkAcquireNextImageKHR-semaphore-parent",
-                        "`semaphore` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkAcquireNextImageKHR-semaphore-parent",
+                    "`semaphore` does not come from `device`",
                 );
             }
         }
         if let Some(h) = fence {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkAcquireNextImageKHR-fence-parent",
-                        "`fence` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkAcquireNextImageKHR-fence-parent",
+                    "`fence` does not come from `device`",
                 );
             }
         }
@@ -58,11 +52,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(swapchain.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetSwapchainImagesKHR-swapchain-parent",
-                    "`swapchain` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetSwapchainImagesKHR-swapchain-parent",
+                "`swapchain` does not come from `device`",
             );
         }
         Ok(())

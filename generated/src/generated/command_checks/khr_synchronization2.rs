@@ -22,21 +22,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-commonparent",
-                    "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
@@ -44,13 +38,11 @@ impl<'c, S: State> Recorder<'c, S> {
                 || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-stage-03929",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stage` = {:?})",
-                        stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-stage-03929",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stage` = {:?})",
+                    stage
                 ),
             );
         }
@@ -59,13 +51,11 @@ impl<'c, S: State> Recorder<'c, S> {
                 || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-stage-03930",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stage` = {:?})",
-                        stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-stage-03930",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stage` = {:?})",
+                    stage
                 ),
             );
         }
@@ -74,11 +64,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)))
             && !s.feature(|f| f.v13.synchronization2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-synchronization2-03893",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-synchronization2-03893",
+                "The `synchronization2` feature must be enabled",
             );
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
@@ -88,12 +76,9 @@ impl<'c, S: State> Recorder<'c, S> {
                 .buffer(dst_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03897",
-                    "`dstBuffer` must have been created with the `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03897",
+                "`dstBuffer` must have been created with the `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
@@ -103,25 +88,20 @@ impl<'c, S: State> Recorder<'c, S> {
                 .buffer(dst_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03898",
-                    "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03898",
+                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if (s.exts.has(origin::VK_AMD_BUFFER_MARKER)
             && (s.exts.has(origin::VK_VERSION_1_3)
                 || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))) && dst_offset % 4 != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03899",
-                    format!(
-                        "`dstOffset` must be a multiple of `4` (`dstOffset` = {:?})",
-                        dst_offset
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03899",
+                format!(
+                    "`dstOffset` must be a multiple of `4` (`dstOffset` = {:?})",
+                    dst_offset
                 ),
             );
         }

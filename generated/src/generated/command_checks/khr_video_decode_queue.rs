@@ -14,19 +14,15 @@ impl<'c> Recorder<'c, InVideoCoding> {
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDecodeVideoKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support decode operations".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDecodeVideoKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support decode operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdDecodeVideoKHR-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDecodeVideoKHR-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_video_decode_info_khr(decode_info, s)?;

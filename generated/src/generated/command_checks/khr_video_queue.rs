@@ -12,19 +12,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if bind_session_memory_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength",
-                    "`bindSessionMemoryInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength",
+                "`bindSessionMemoryInfoCount` is 0",
             );
         }
         if !s.owned_by_device(video_session.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkBindVideoSessionMemoryKHR-videoSession-parent",
-                    "`videoSession` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkBindVideoSessionMemoryKHR-videoSession-parent",
+                "`videoSession` does not come from `device`",
             );
         }
         Ok(())
@@ -54,11 +50,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(video_session.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetVideoSessionMemoryRequirementsKHR-videoSession-parent",
-                    "`videoSession` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetVideoSessionMemoryRequirementsKHR-videoSession-parent",
+                "`videoSession` does not come from `device`",
             );
         }
         Ok(())
@@ -85,20 +79,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginVideoCodingKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support decode,encode operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginVideoCodingKHR-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginVideoCodingKHR-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_video_begin_coding_info_khr(begin_info, s)?;
@@ -117,20 +106,15 @@ impl<'c> Recorder<'c, InVideoCoding> {
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdControlVideoCodingKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdControlVideoCodingKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support decode,encode operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdControlVideoCodingKHR-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdControlVideoCodingKHR-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_video_coding_control_info_khr(coding_control_info, s)?;
@@ -146,20 +130,15 @@ impl<'c> Recorder<'c, InVideoCoding> {
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndVideoCodingKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support decode,encode operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndVideoCodingKHR-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndVideoCodingKHR-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_video_end_coding_info_khr(end_coding_info, s)?;

@@ -8,7 +8,7 @@
 use crate::checks::origin;
 use crate::handles::*;
 use crate::structs::*;
-use crate::validation::fail;
+use crate::support::refuse;
 use crate::{recorder::*, Entry, Handle, Result};
 use ash::vk;
 mod v1_0;

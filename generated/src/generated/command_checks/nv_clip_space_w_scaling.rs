@@ -13,20 +13,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportWScalingNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportWScalingNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if viewport_w_scalings.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportWScalingNV-viewportCount-arraylength",
+                "`viewportCount` is 0",
             );
         }
         Ok(())

@@ -10,12 +10,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryIndirectNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         Ok(())
@@ -37,29 +34,21 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if image_subresources.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength",
-                    "`copyCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength",
+                "`copyCount` is 0",
             );
         }
         if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent",
-                    "`dstImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s.exts.has(origin::VK_NV_COPY_MEMORY_INDIRECT)
@@ -67,12 +56,9 @@ impl<'c> Recorder<'c, Outside> {
                 .image(dst_image.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07664",
-                    "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07664",
+                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if s.exts.has(origin::VK_NV_COPY_MEMORY_INDIRECT)
@@ -80,25 +66,20 @@ impl<'c> Recorder<'c, Outside> {
                 .image(dst_image.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07665",
-                    "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07665",
+                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if (s.exts.has(origin::VK_NV_COPY_MEMORY_INDIRECT)
             && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07668",
-                    format!(
-                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                        dst_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07668",
+                format!(
+                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                    dst_image_layout
                 ),
             );
         }

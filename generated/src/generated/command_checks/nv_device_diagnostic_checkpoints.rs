@@ -10,12 +10,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,transfer operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCheckpointNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,transfer operations",
             );
         }
         Ok(())

@@ -20,21 +20,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindPipelineShaderGroupNV-commonparent",
-                    "`pipeline` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindPipelineShaderGroupNV-commonparent",
+                "`pipeline` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -52,12 +46,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteGeneratedCommandsNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdExecuteGeneratedCommandsNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         crate::checks::check_generated_commands_info_nv(generated_commands_info, s)?;
@@ -76,12 +67,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPreprocessGeneratedCommandsNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPreprocessGeneratedCommandsNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         crate::checks::check_generated_commands_info_nv(generated_commands_info, s)?;

@@ -36,11 +36,9 @@ impl PhysicalDevice {
             "VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-parameter",
         )?;
         if usage.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-requiredbitmask",
-                    "`usage` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkGetPhysicalDeviceExternalImageFormatPropertiesNV-usage-requiredbitmask",
+                "`usage` is empty",
             );
         }
         crate::checks::flags_image_create_flags(

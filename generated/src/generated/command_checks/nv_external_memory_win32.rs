@@ -17,19 +17,15 @@ impl Device {
             "VUID-vkGetMemoryWin32HandleNV-handleType-parameter",
         )?;
         if handle_type.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask",
-                    "`handleType` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask",
+                "`handleType` is empty",
             );
         }
         if !s.owned_by_device(memory.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetMemoryWin32HandleNV-memory-parent",
-                    "`memory` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetMemoryWin32HandleNV-memory-parent",
+                "`memory` does not come from `device`",
             );
         }
         Ok(())

@@ -10,12 +10,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDecompressMemoryIndirectCountNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         Ok(())
@@ -30,20 +27,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDecompressMemoryNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDecompressMemoryNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if decompress_memory_regions.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength",
-                    "`decompressRegionCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDecompressMemoryNV-decompressRegionCount-arraylength",
+                "`decompressRegionCount` is 0",
             );
         }
         for x in decompress_memory_regions.iter() {

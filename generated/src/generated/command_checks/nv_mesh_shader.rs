@@ -15,30 +15,21 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent",
-                    "`countBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent",
+                "`countBuffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -53,21 +44,15 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawMeshTasksIndirectNV-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectNV-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -78,12 +63,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawMeshTasksNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())

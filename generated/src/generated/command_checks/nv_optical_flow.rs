@@ -24,20 +24,16 @@ impl Device {
             "VUID-vkBindOpticalFlowSessionImageNV-layout-parameter",
         )?;
         if !s.owned_by_device(session.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkBindOpticalFlowSessionImageNV-session-parent",
-                    "`session` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkBindOpticalFlowSessionImageNV-session-parent",
+                "`session` does not come from `device`",
             );
         }
         if let Some(h) = view {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkBindOpticalFlowSessionImageNV-view-parent",
-                        "`view` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkBindOpticalFlowSessionImageNV-view-parent",
+                    "`view` does not come from `device`",
                 );
             }
         }
@@ -66,21 +62,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support opticalflow operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support opticalflow operations",
             );
         }
         if s.device.is_none_or(|d| session.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdOpticalFlowExecuteNV-commonparent",
-                    "`session` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdOpticalFlowExecuteNV-commonparent",
+                "`session` does not come from the VkDevice the command is called on",
             );
         }
         crate::checks::check_optical_flow_execute_info_nv(execute_info, s)?;

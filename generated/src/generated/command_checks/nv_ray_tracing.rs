@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if bind_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkBindAccelerationStructureMemoryNV-bindInfoCount-arraylength",
-                    "`bindInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkBindAccelerationStructureMemoryNV-bindInfoCount-arraylength",
+                "`bindInfoCount` is 0",
             );
         }
         for x in bind_infos.iter() {
@@ -30,11 +28,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(pipeline.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCompileDeferredNV-pipeline-parent",
-                    "`pipeline` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkCompileDeferredNV-pipeline-parent",
+                "`pipeline` does not come from `device`",
             );
         }
         Ok(())
@@ -56,20 +52,16 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if create_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength",
-                    "`createInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength",
+                "`createInfoCount` is 0",
             );
         }
         if let Some(h) = pipeline_cache {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parent",
-                        "`pipelineCache` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parent",
+                    "`pipelineCache` does not come from `device`",
                 );
             }
         }
@@ -86,19 +78,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         if !s.owned_by_device(acceleration_structure.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent",
-                    "`accelerationStructure` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent",
+                "`accelerationStructure` does not come from `device`",
             );
         }
         Ok(())
@@ -132,52 +120,37 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if let Some(h) = instance_data {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
-                        "`instanceData` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
+                    "`instanceData` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if s.device.is_none_or(|d| dst.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
-                    "`dst` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
+                "`dst` does not come from the VkDevice the command is called on",
             );
         }
         if let Some(h) = src {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
-                        "`src` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
+                    "`src` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if s.device.is_none_or(|d| scratch.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
-                    "`scratch` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructureNV-commonparent",
+                "`scratch` does not come from the VkDevice the command is called on",
             );
         }
         crate::checks::check_acceleration_structure_info_nv(info, s)?;
@@ -200,30 +173,21 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if s.device.is_none_or(|d| dst.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
-                    "`dst` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
+                "`dst` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| src.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
-                    "`src` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
+                "`src` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -241,56 +205,41 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if s
             .device
             .is_none_or(|d| raygen_shader_binding_table_buffer.parent().raw() != d.raw())
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdTraceRaysNV-commonparent",
-                    "`raygenShaderBindingTableBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdTraceRaysNV-commonparent",
+                "`raygenShaderBindingTableBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if let Some(h) = miss_shader_binding_table_buffer {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdTraceRaysNV-commonparent",
-                        "`missShaderBindingTableBuffer` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdTraceRaysNV-commonparent",
+                    "`missShaderBindingTableBuffer` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if let Some(h) = hit_shader_binding_table_buffer {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdTraceRaysNV-commonparent",
-                        "`hitShaderBindingTableBuffer` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdTraceRaysNV-commonparent",
+                    "`hitShaderBindingTableBuffer` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if let Some(h) = callable_shader_binding_table_buffer {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdTraceRaysNV-commonparent",
-                        "`callableShaderBindingTableBuffer` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdTraceRaysNV-commonparent",
+                    "`callableShaderBindingTableBuffer` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -313,40 +262,29 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if acceleration_structures.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength",
-                    "`accelerationStructureCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength",
+                "`accelerationStructureCount` is 0",
             );
         }
         for h in acceleration_structures.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
-                        "`pAccelerationStructures` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
+                    "`pAccelerationStructures` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

@@ -13,20 +13,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetExclusiveScissorNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetExclusiveScissorNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if exclusive_scissors.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength",
-                    "`exclusiveScissorCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetExclusiveScissorNV-exclusiveScissorCount-arraylength",
+                "`exclusiveScissorCount` is 0",
             );
         }
         Ok(())

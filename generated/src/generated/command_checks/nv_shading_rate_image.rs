@@ -20,22 +20,16 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if let Some(h) = image_view {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindShadingRateImageNV-commonparent",
-                        "`imageView` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBindShadingRateImageNV-commonparent",
+                    "`imageView` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -57,12 +51,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCoarseSampleOrderNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         for x in custom_sample_orders.iter() {
@@ -80,20 +71,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportShadingRatePaletteNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if shading_rate_palettes.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportShadingRatePaletteNV-viewportCount-arraylength",
+                "`viewportCount` is 0",
             );
         }
         for x in shading_rate_palettes.iter() {

@@ -11,11 +11,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(image_view.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageViewAddressNVX-imageView-parent",
-                    "`imageView` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetImageViewAddressNVX-imageView-parent",
+                "`imageView` does not come from `device`",
             );
         }
         Ok(())

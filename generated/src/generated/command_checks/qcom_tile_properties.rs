@@ -20,11 +20,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(framebuffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetFramebufferTilePropertiesQCOM-framebuffer-parent",
-                    "`framebuffer` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetFramebufferTilePropertiesQCOM-framebuffer-parent",
+                "`framebuffer` does not come from `device`",
             );
         }
         Ok(())

@@ -10,11 +10,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if allocate_info.command_buffer_count == 0 {
-            return Err(
-                fail(
-                    "VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength",
-                    "`pAllocateInfo::commandBufferCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength",
+                "`pAllocateInfo::commandBufferCount` is 0",
             );
         }
         crate::checks::check_command_buffer_allocate_info(allocate_info, s)?;
@@ -27,11 +25,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if allocate_info.descriptor_set_count == 0 {
-            return Err(
-                fail(
-                    "VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength",
-                    "`pAllocateInfo::descriptorSetCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength",
+                "`pAllocateInfo::descriptorSetCount` is 0",
             );
         }
         crate::checks::check_descriptor_set_allocate_info(allocate_info, s)?;
@@ -54,19 +50,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkBindBufferMemory-buffer-parent",
-                    "`buffer` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkBindBufferMemory-buffer-parent",
+                "`buffer` does not come from `device`",
             );
         }
         if !s.owned_by_device(memory.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkBindBufferMemory-memory-parent",
-                    "`memory` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkBindBufferMemory-memory-parent",
+                "`memory` does not come from `device`",
             );
         }
         Ok(())
@@ -79,19 +71,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkBindImageMemory-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkBindImageMemory-image-parent",
+                "`image` does not come from `device`",
             );
         }
         if !s.owned_by_device(memory.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkBindImageMemory-memory-parent",
-                    "`memory` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkBindImageMemory-memory-parent",
+                "`memory` does not come from `device`",
             );
         }
         Ok(())
@@ -131,20 +119,16 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if create_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCreateComputePipelines-createInfoCount-arraylength",
-                    "`createInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCreateComputePipelines-createInfoCount-arraylength",
+                "`createInfoCount` is 0",
             );
         }
         if let Some(h) = pipeline_cache {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCreateComputePipelines-pipelineCache-parent",
-                        "`pipelineCache` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkCreateComputePipelines-pipelineCache-parent",
+                    "`pipelineCache` does not come from `device`",
                 );
             }
         }
@@ -206,20 +190,16 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if create_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength",
-                    "`createInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength",
+                "`createInfoCount` is 0",
             );
         }
         if let Some(h) = pipeline_cache {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
-                        "`pipelineCache` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
+                    "`pipelineCache` does not come from `device`",
                 );
             }
         }
@@ -315,11 +295,9 @@ impl Device {
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
         if memory_ranges.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength",
-                    "`memoryRangeCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength",
+                "`memoryRangeCount` is 0",
             );
         }
         Ok(())
@@ -331,11 +309,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(buffer.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetBufferMemoryRequirements-buffer-parent",
-                    "`buffer` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetBufferMemoryRequirements-buffer-parent",
+                "`buffer` does not come from `device`",
             );
         }
         Ok(())
@@ -347,11 +323,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(memory.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetDeviceMemoryCommitment-memory-parent",
-                    "`memory` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDeviceMemoryCommitment-memory-parent",
+                "`memory` does not come from `device`",
             );
         }
         Ok(())
@@ -360,11 +334,9 @@ impl Device {
     pub(crate) fn validate_get_event_status(&self, event: &Event) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(event.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetEventStatus-event-parent",
-                    "`event` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetEventStatus-event-parent",
+                "`event` does not come from `device`",
             );
         }
         Ok(())
@@ -373,11 +345,9 @@ impl Device {
     pub(crate) fn validate_get_fence_status(&self, fence: &Fence) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(fence.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetFenceStatus-fence-parent",
-                    "`fence` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetFenceStatus-fence-parent",
+                "`fence` does not come from `device`",
             );
         }
         Ok(())
@@ -389,11 +359,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageMemoryRequirements-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetImageMemoryRequirements-image-parent",
+                "`image` does not come from `device`",
             );
         }
         Ok(())
@@ -405,11 +373,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageSparseMemoryRequirements-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetImageSparseMemoryRequirements-image-parent",
+                "`image` does not come from `device`",
             );
         }
         Ok(())
@@ -422,11 +388,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(image.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetImageSubresourceLayout-image-parent",
-                    "`image` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetImageSubresourceLayout-image-parent",
+                "`image` does not come from `device`",
             );
         }
         crate::checks::check_image_subresource(subresource, s)?;
@@ -439,11 +403,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(pipeline_cache.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPipelineCacheData-pipelineCache-parent",
-                    "`pipelineCache` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetPipelineCacheData-pipelineCache-parent",
+                "`pipelineCache` does not come from `device`",
             );
         }
         Ok(())
@@ -462,19 +424,15 @@ impl Device {
             "VUID-vkGetQueryPoolResults-flags-parameter",
         )?;
         if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetQueryPoolResults-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkGetQueryPoolResults-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         if !s.owned_by_device(query_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetQueryPoolResults-queryPool-parent",
-                    "`queryPool` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetQueryPoolResults-queryPool-parent",
+                "`queryPool` does not come from `device`",
             );
         }
         Ok(())
@@ -486,11 +444,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(render_pass.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetRenderAreaGranularity-renderPass-parent",
-                    "`renderPass` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetRenderAreaGranularity-renderPass-parent",
+                "`renderPass` does not come from `device`",
             );
         }
         Ok(())
@@ -501,11 +457,9 @@ impl Device {
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
         if memory_ranges.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength",
-                    "`memoryRangeCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength",
+                "`memoryRangeCount` is 0",
             );
         }
         Ok(())
@@ -518,28 +472,22 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if src_caches.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
-                    "`srcCacheCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
+                "`srcCacheCount` is 0",
             );
         }
         if !s.owned_by_device(dst_cache.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkMergePipelineCaches-dstCache-parent",
-                    "`dstCache` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkMergePipelineCaches-dstCache-parent",
+                "`dstCache` does not come from `device`",
             );
         }
         for h in src_caches.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkMergePipelineCaches-pSrcCaches-parent",
-                        "`pSrcCaches` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkMergePipelineCaches-pSrcCaches-parent",
+                    "`pSrcCaches` does not come from `device`",
                 );
             }
         }
@@ -558,11 +506,9 @@ impl Device {
             "VUID-vkResetCommandPool-flags-parameter",
         )?;
         if !s.owned_by_device(command_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetCommandPool-commandPool-parent",
-                    "`commandPool` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkResetCommandPool-commandPool-parent",
+                "`commandPool` does not come from `device`",
             );
         }
         Ok(())
@@ -575,19 +521,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if flags.as_raw() != 0 {
-            return Err(
-                fail(
-                    "VUID-vkResetDescriptorPool-flags-zerobitmask",
-                    "`flags` is not 0".into(),
-                ),
+            return refuse(
+                "VUID-vkResetDescriptorPool-flags-zerobitmask",
+                "`flags` is not 0",
             );
         }
         if !s.owned_by_device(descriptor_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetDescriptorPool-descriptorPool-parent",
-                    "`descriptorPool` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkResetDescriptorPool-descriptorPool-parent",
+                "`descriptorPool` does not come from `device`",
             );
         }
         Ok(())
@@ -596,11 +538,9 @@ impl Device {
     pub(crate) fn validate_reset_event(&self, event: &Event) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(event.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetEvent-event-parent",
-                    "`event` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkResetEvent-event-parent",
+                "`event` does not come from `device`",
             );
         }
         Ok(())
@@ -609,20 +549,16 @@ impl Device {
     pub(crate) fn validate_reset_fences(&self, fences: &[&Fence]) -> Result<()> {
         let s = &self.scope();
         if fences.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkResetFences-fenceCount-arraylength",
-                    "`fenceCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkResetFences-fenceCount-arraylength",
+                "`fenceCount` is 0",
             );
         }
         for h in fences.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkResetFences-pFences-parent",
-                        "`pFences` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkResetFences-pFences-parent",
+                    "`pFences` does not come from `device`",
                 );
             }
         }
@@ -632,11 +568,9 @@ impl Device {
     pub(crate) fn validate_set_event(&self, event: &Event) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(event.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetEvent-event-parent",
-                    "`event` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkSetEvent-event-parent",
+                "`event` does not come from `device`",
             );
         }
         Ok(())
@@ -660,20 +594,16 @@ impl Device {
     pub(crate) fn validate_wait_for_fences(&self, fences: &[&Fence]) -> Result<()> {
         let s = &self.scope();
         if fences.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkWaitForFences-fenceCount-arraylength",
-                    "`fenceCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkWaitForFences-fenceCount-arraylength",
+                "`fenceCount` is 0",
             );
         }
         for h in fences.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkWaitForFences-pFences-parent",
-                        "`pFences` does not come from `device`".into(),
-                    ),
+                return refuse(
+                    "VUID-vkWaitForFences-pFences-parent",
+                    "`pFences` does not come from `device`",
                 );
             }
         }
@@ -734,11 +664,9 @@ impl PhysicalDevice {
             "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-parameter",
         )?;
         if usage.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask",
-                    "`usage` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkGetPhysicalDeviceImageFormatProperties-usage-requiredbitmask",
+                "`usage` is empty",
             );
         }
         crate::checks::flags_image_create_flags(
@@ -779,11 +707,9 @@ impl PhysicalDevice {
             "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-parameter",
         )?;
         if usage.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask",
-                    "`usage` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkGetPhysicalDeviceSparseImageFormatProperties-usage-requiredbitmask",
+                "`usage` is empty",
             );
         }
         crate::checks::enum_image_tiling(
@@ -817,20 +743,15 @@ impl Queue {
             self.queue_flags(),
             vk::QueueFlags::SPARSE_BINDING,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkQueueBindSparse-queuetype",
-                    "the queue does not support sparse_binding operations".into(),
-                ),
+            return refuse(
+                "VUID-vkQueueBindSparse-queuetype",
+                "the queue does not support sparse_binding operations",
             );
         }
         if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkQueueBindSparse-commonparent",
-                    "`fence` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkQueueBindSparse-commonparent",
+                "`fence` does not come from the VkDevice the command is called on",
             );
         }
         for x in bind_info.iter() {
@@ -847,12 +768,9 @@ impl Queue {
         let s = &self.parent().scope();
         if let Some(h) = fence {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkQueueSubmit-commonparent",
-                        "`fence` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkQueueSubmit-commonparent",
+                    "`fence` does not come from the VkDevice the command is called on",
                 );
             }
         }

@@ -19,21 +19,15 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginQuery-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginQuery-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginQuery-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginQuery-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -45,21 +39,15 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndQuery-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndQuery-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndQuery-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndQuery-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -94,59 +82,48 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPipelineBarrier-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations",
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier-srcStageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
-                        src_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdPipelineBarrier-srcStageMask-04090",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                    src_stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.tessellation_shader)
             && (src_stage_mask.as_raw() & 48) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier-srcStageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
-                        src_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdPipelineBarrier-srcStageMask-04091",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                    src_stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier-dstStageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
-                        dst_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdPipelineBarrier-dstStageMask-04090",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                    dst_stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.tessellation_shader)
             && (dst_stage_mask.as_raw() & 48) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier-dstStageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
-                        dst_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdPipelineBarrier-dstStageMask-04091",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                    dst_stage_mask
                 ),
             );
         }
@@ -186,78 +163,62 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWaitEvents-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if events.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-eventCount-arraylength",
-                    "`eventCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWaitEvents-eventCount-arraylength",
+                "`eventCount` is 0",
             );
         }
         for h in events.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdWaitEvents-commonparent",
-                        "`pEvents` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdWaitEvents-commonparent",
+                    "`pEvents` does not come from the VkDevice the command is called on",
                 );
             }
         }
         if !s.feature(|f| f.v10.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-srcStageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
-                        src_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdWaitEvents-srcStageMask-04090",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                    src_stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.tessellation_shader)
             && (src_stage_mask.as_raw() & 48) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-srcStageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
-                        src_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdWaitEvents-srcStageMask-04091",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                    src_stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && (dst_stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-dstStageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
-                        dst_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdWaitEvents-dstStageMask-04090",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                    dst_stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.tessellation_shader)
             && (dst_stage_mask.as_raw() & 48) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents-dstStageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
-                        dst_stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdWaitEvents-dstStageMask-04091",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                    dst_stage_mask
                 ),
             );
         }
@@ -288,45 +249,35 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode,opticalflow operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute,decode,encode,opticalflow operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && matches!(pipeline_stage.as_raw(), 64)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp-pipelineStage-04075",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`pipelineStage` = {:?})",
-                        pipeline_stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp-pipelineStage-04075",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`pipelineStage` = {:?})",
+                    pipeline_stage
                 ),
             );
         }
         if !s.feature(|f| f.v10.tessellation_shader)
             && matches!(pipeline_stage.as_raw(), 16 | 32)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp-pipelineStage-04076",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`pipelineStage` = {:?})",
-                        pipeline_stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp-pipelineStage-04076",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`pipelineStage` = {:?})",
+                    pipeline_stage
                 ),
             );
         }
@@ -335,13 +286,11 @@ impl<'c, S: Scope> Recorder<'c, S> {
             && !s.feature(|f| f.v13.synchronization2)
             && matches!(pipeline_stage.as_raw(), 0)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp-synchronization2-06489",
-                    format!(
-                        "If the `synchronization2` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE` (`pipelineStage` = {:?})",
-                        pipeline_stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp-synchronization2-06489",
+                format!(
+                    "If the `synchronization2` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE` (`pipelineStage` = {:?})",
+                    pipeline_stage
                 ),
             );
         }
@@ -365,20 +314,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginRenderPass-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginRenderPass-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
@@ -410,86 +354,63 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if regions.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-regionCount-arraylength",
-                    "`regionCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-regionCount-arraylength",
+                "`regionCount` is 0",
             );
         }
         if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-commonparent",
-                    "`srcImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-commonparent",
-                    "`dstImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .image(src_image.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-srcImage-00219",
-                    "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-srcImage-00219",
+                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag",
             );
         }
         if s
             .image(src_image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-srcImage-00220",
-                    "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-srcImage-00220",
+                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s
             .image(dst_image.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-dstImage-00224",
-                    "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-dstImage-00224",
+                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if s
             .image(dst_image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-dstImage-00225",
-                    "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage-dstImage-00225",
+                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         for (i, e) in regions.iter().enumerate() {
@@ -499,13 +420,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-srcSubresource-01705",
-                        format!(
-                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-srcSubresource-01705",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
                     ),
                 );
             }
@@ -517,13 +436,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-dstSubresource-01706",
-                        format!(
-                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-dstSubresource-01706",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
                     ),
                 );
             }
@@ -537,14 +454,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-srcSubresource-01707",
-                        format!(
-                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.src_subresource.base_array_layer, i, e.src_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-srcSubresource-01707",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -558,14 +473,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-dstSubresource-01708",
-                        format!(
-                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-dstSubresource-01708",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -578,13 +491,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-aspectMask-00241",
-                        format!(
-                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
-                            i, e.src_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-aspectMask-00241",
+                    format!(
+                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                        i, e.src_subresource.aspect_mask
                     ),
                 );
             }
@@ -597,13 +508,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-aspectMask-00242",
-                        format!(
-                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
-                            i, e.dst_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-aspectMask-00242",
+                    format!(
+                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                        i, e.dst_subresource.aspect_mask
                     ),
                 );
             }
@@ -633,14 +542,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-srcOffset-00243",
-                        format!(
-                            "For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].x` = {:?}, `pRegions[{}].srcOffsets[1].x` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offsets[0].x, i, e.src_offsets[1].x, i, e
-                            .src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-srcOffset-00243",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].x` = {:?}, `pRegions[{}].srcOffsets[1].x` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].x, i, e.src_offsets[1].x, i, e
+                        .src_subresource.mip_level
                     ),
                 );
             }
@@ -670,14 +577,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-srcOffset-00244",
-                        format!(
-                            "For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].y` = {:?}, `pRegions[{}].srcOffsets[1].y` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offsets[0].y, i, e.src_offsets[1].y, i, e
-                            .src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-srcOffset-00244",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].y` = {:?}, `pRegions[{}].srcOffsets[1].y` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].y, i, e.src_offsets[1].y, i, e
+                        .src_subresource.mip_level
                     ),
                 );
             }
@@ -707,14 +612,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-srcOffset-00246",
-                        format!(
-                            "For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].z` = {:?}, `pRegions[{}].srcOffsets[1].z` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offsets[0].z, i, e.src_offsets[1].z, i, e
-                            .src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-srcOffset-00246",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].z` = {:?}, `pRegions[{}].srcOffsets[1].z` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].z, i, e.src_offsets[1].z, i, e
+                        .src_subresource.mip_level
                     ),
                 );
             }
@@ -744,14 +647,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-dstOffset-00248",
-                        format!(
-                            "For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].x` = {:?}, `pRegions[{}].dstOffsets[1].x` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offsets[0].x, i, e.dst_offsets[1].x, i, e
-                            .dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-dstOffset-00248",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].x` = {:?}, `pRegions[{}].dstOffsets[1].x` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].x, i, e.dst_offsets[1].x, i, e
+                        .dst_subresource.mip_level
                     ),
                 );
             }
@@ -781,14 +682,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-dstOffset-00249",
-                        format!(
-                            "For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].y` = {:?}, `pRegions[{}].dstOffsets[1].y` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offsets[0].y, i, e.dst_offsets[1].y, i, e
-                            .dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-dstOffset-00249",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].y` = {:?}, `pRegions[{}].dstOffsets[1].y` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].y, i, e.dst_offsets[1].y, i, e
+                        .dst_subresource.mip_level
                     ),
                 );
             }
@@ -818,14 +717,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBlitImage-dstOffset-00251",
-                        format!(
-                            "For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].z` = {:?}, `pRegions[{}].dstOffsets[1].z` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offsets[0].z, i, e.dst_offsets[1].z, i, e
-                            .dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdBlitImage-dstOffset-00251",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].z` = {:?}, `pRegions[{}].dstOffsets[1].z` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].z, i, e.dst_offsets[1].z, i, e
+                        .dst_subresource.mip_level
                     ),
                 );
             }
@@ -833,26 +730,22 @@ impl<'c> Recorder<'c, Outside> {
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-srcImageLayout-00222",
-                    format!(
-                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                        src_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdBlitImage-srcImageLayout-00222",
+                format!(
+                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                    src_image_layout
                 ),
             );
         }
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage-dstImageLayout-00227",
-                    format!(
-                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                        dst_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdBlitImage-dstImageLayout-00227",
+                format!(
+                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                    dst_image_layout
                 ),
             );
         }
@@ -878,50 +771,36 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearColorImage-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearColorImage-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if ranges.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearColorImage-rangeCount-arraylength",
-                    "`rangeCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearColorImage-rangeCount-arraylength",
+                "`rangeCount` is 0",
             );
         }
         if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearColorImage-commonparent",
-                    "`image` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearColorImage-commonparent",
+                "`image` does not come from the VkDevice the command is called on",
             );
         }
         if s.image(image.raw()).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearColorImage-image-00002",
-                    "`image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearColorImage-image-00002",
+                "`image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if s
             .image(image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearColorImage-image-00003",
-                    "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearColorImage-image-00003",
+                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         for (i, e) in ranges.iter().enumerate() {
@@ -933,13 +812,11 @@ impl<'c> Recorder<'c, Outside> {
                             > (r.mip_levels as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdClearColorImage-pRanges-01692",
-                        format!(
-                            "For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].levelCount` = {:?}, `pRanges[{}].baseMipLevel` = {:?})",
-                            i, e.level_count, i, e.base_mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdClearColorImage-pRanges-01692",
+                    format!(
+                        "For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].levelCount` = {:?}, `pRanges[{}].baseMipLevel` = {:?})",
+                        i, e.level_count, i, e.base_mip_level
                     ),
                 );
             }
@@ -953,13 +830,11 @@ impl<'c> Recorder<'c, Outside> {
                             > (r.array_layers as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdClearColorImage-pRanges-01693",
-                        format!(
-                            "For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].layerCount` = {:?}, `pRanges[{}].baseArrayLayer` = {:?})",
-                            i, e.layer_count, i, e.base_array_layer
-                        ),
+                return refuse(
+                    "VUID-vkCmdClearColorImage-pRanges-01693",
+                    format!(
+                        "For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].layerCount` = {:?}, `pRanges[{}].baseArrayLayer` = {:?})",
+                        i, e.layer_count, i, e.base_array_layer
                     ),
                 );
             }
@@ -967,13 +842,11 @@ impl<'c> Recorder<'c, Outside> {
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(image_layout.as_raw(), 1 | 7)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearColorImage-imageLayout-00005",
-                    format!(
-                        "`imageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`imageLayout` = {:?})",
-                        image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdClearColorImage-imageLayout-00005",
+                format!(
+                    "`imageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`imageLayout` = {:?})",
+                    image_layout
                 ),
             );
         }
@@ -1000,41 +873,30 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if ranges.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength",
-                    "`rangeCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength",
+                "`rangeCount` is 0",
             );
         }
         if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearDepthStencilImage-commonparent",
-                    "`image` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearDepthStencilImage-commonparent",
+                "`image` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .image(image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearDepthStencilImage-image-00010",
-                    "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearDepthStencilImage-image-00010",
+                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         for (i, e) in ranges.iter().enumerate() {
@@ -1046,13 +908,11 @@ impl<'c> Recorder<'c, Outside> {
                             > (r.mip_levels as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdClearDepthStencilImage-pRanges-01694",
-                        format!(
-                            "For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].levelCount` = {:?}, `pRanges[{}].baseMipLevel` = {:?})",
-                            i, e.level_count, i, e.base_mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdClearDepthStencilImage-pRanges-01694",
+                    format!(
+                        "For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].levelCount` = {:?}, `pRanges[{}].baseMipLevel` = {:?})",
+                        i, e.level_count, i, e.base_mip_level
                     ),
                 );
             }
@@ -1066,13 +926,11 @@ impl<'c> Recorder<'c, Outside> {
                             > (r.array_layers as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdClearDepthStencilImage-pRanges-01695",
-                        format!(
-                            "For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].layerCount` = {:?}, `pRanges[{}].baseArrayLayer` = {:?})",
-                            i, e.layer_count, i, e.base_array_layer
-                        ),
+                return refuse(
+                    "VUID-vkCmdClearDepthStencilImage-pRanges-01695",
+                    format!(
+                        "For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pRanges[{}].layerCount` = {:?}, `pRanges[{}].baseArrayLayer` = {:?})",
+                        i, e.layer_count, i, e.base_array_layer
                     ),
                 );
             }
@@ -1095,38 +953,27 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBuffer-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if regions.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-regionCount-arraylength",
-                    "`regionCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBuffer-regionCount-arraylength",
+                "`regionCount` is 0",
             );
         }
         if s.device.is_none_or(|d| src_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-commonparent",
-                    "`srcBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBuffer-commonparent",
+                "`srcBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer-commonparent",
-                    "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -1149,86 +996,63 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if regions.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-regionCount-arraylength",
-                    "`regionCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-regionCount-arraylength",
+                "`regionCount` is 0",
             );
         }
         if s.device.is_none_or(|d| src_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-commonparent",
-                    "`srcBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-commonparent",
+                "`srcBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-commonparent",
-                    "`dstImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .buffer(src_buffer.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-srcBuffer-00174",
-                    "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-srcBuffer-00174",
+                "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag",
             );
         }
         if s
             .buffer(src_buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-srcBuffer-00176",
-                    "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-srcBuffer-00176",
+                "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s
             .image(dst_image.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-dstImage-00177",
-                    "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-dstImage-00177",
+                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if s
             .image(dst_image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-dstImage-00178",
-                    "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-dstImage-00178",
+                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         for (i, e) in regions.iter().enumerate() {
@@ -1238,13 +1062,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyBufferToImage-imageSubresource-01701",
-                        format!(
-                            "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyBufferToImage-imageSubresource-01701",
+                    format!(
+                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_subresource.mip_level
                     ),
                 );
             }
@@ -1258,14 +1080,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyBufferToImage-imageSubresource-01702",
-                        format!(
-                            "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
-                            i, e.image_subresource.base_array_layer, i, e
-                            .image_subresource.layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyBufferToImage-imageSubresource-01702",
+                    format!(
+                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                        i, e.image_subresource.base_array_layer, i, e.image_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -1296,14 +1116,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyBufferToImage-pRegions-06218",
-                        format!(
-                            "For each element of `pRegions`, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.x, i, e.image_extent.width, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyBufferToImage-pRegions-06218",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.x, i, e.image_extent.width, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -1334,14 +1152,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyBufferToImage-pRegions-06219",
-                        format!(
-                            "For each element of `pRegions`, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.y, i, e.image_extent.height, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyBufferToImage-pRegions-06219",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.y, i, e.image_extent.height, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -1349,13 +1165,11 @@ impl<'c> Recorder<'c, Outside> {
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181",
-                    format!(
-                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                        dst_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage-dstImageLayout-00181",
+                format!(
+                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                    dst_image_layout
                 ),
             );
         }
@@ -1388,38 +1202,27 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImage-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImage-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if regions.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImage-regionCount-arraylength",
-                    "`regionCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImage-regionCount-arraylength",
+                "`regionCount` is 0",
             );
         }
         if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImage-commonparent",
-                    "`srcImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImage-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImage-commonparent",
-                    "`dstImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         for (i, e) in regions.iter().enumerate() {
@@ -1429,13 +1232,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-srcSubresource-01696",
-                        format!(
-                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-srcSubresource-01696",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
                     ),
                 );
             }
@@ -1447,13 +1248,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-dstSubresource-01697",
-                        format!(
-                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-dstSubresource-01697",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
                     ),
                 );
             }
@@ -1467,14 +1266,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-srcSubresource-01698",
-                        format!(
-                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.src_subresource.base_array_layer, i, e.src_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-srcSubresource-01698",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -1488,14 +1285,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-dstSubresource-01699",
-                        format!(
-                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-dstSubresource-01699",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -1508,13 +1303,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-aspectMask-00142",
-                        format!(
-                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
-                            i, e.src_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-aspectMask-00142",
+                    format!(
+                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                        i, e.src_subresource.aspect_mask
                     ),
                 );
             }
@@ -1527,13 +1320,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-aspectMask-00143",
-                        format!(
-                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
-                            i, e.dst_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-aspectMask-00143",
+                    format!(
+                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                        i, e.dst_subresource.aspect_mask
                     ),
                 );
             }
@@ -1564,14 +1355,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-srcOffset-00144",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-srcOffset-00144",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1602,14 +1391,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-srcOffset-00145",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-srcOffset-00145",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1643,14 +1430,12 @@ impl<'c> Recorder<'c, Outside> {
                                     .max(1) as i128)
                         }))
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-srcOffset-00147",
-                        format!(
-                            "If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-srcOffset-00147",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1661,13 +1446,11 @@ impl<'c> Recorder<'c, Outside> {
                 .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
                 && e.src_offset.z != 0
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-srcImage-01787",
-                        format!(
-                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` (`pRegions[{}].srcOffset.z` = {:?})",
-                            i, e.src_offset.z
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-srcImage-01787",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` (`pRegions[{}].srcOffset.z` = {:?})",
+                        i, e.src_offset.z
                     ),
                 );
             }
@@ -1678,13 +1461,11 @@ impl<'c> Recorder<'c, Outside> {
                 .is_some_and(|r| matches!(r.image_type.as_raw(), 1))
                 && e.dst_offset.z != 0
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-dstImage-01788",
-                        format!(
-                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` (`pRegions[{}].dstOffset.z` = {:?})",
-                            i, e.dst_offset.z
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-dstImage-01788",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` (`pRegions[{}].dstOffset.z` = {:?})",
+                        i, e.dst_offset.z
                     ),
                 );
             }
@@ -1715,14 +1496,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-dstOffset-00150",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-dstOffset-00150",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1753,14 +1532,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-dstOffset-00151",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-dstOffset-00151",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1794,14 +1571,12 @@ impl<'c> Recorder<'c, Outside> {
                                     .max(1) as i128)
                         }))
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImage-dstOffset-00153",
-                        format!(
-                            "If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImage-dstOffset-00153",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1818,13 +1593,11 @@ impl<'c> Recorder<'c, Outside> {
                     && (e.extent.depth as i128)
                         != (e.src_subresource.layer_count as i128)
                 {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImage-srcImage-01791",
-                            format!(
-                                "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                                i, e.extent.depth, i, e.src_subresource.layer_count
-                            ),
+                    return refuse(
+                        "VUID-vkCmdCopyImage-srcImage-01791",
+                        format!(
+                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                            i, e.extent.depth, i, e.src_subresource.layer_count
                         ),
                     );
                 }
@@ -1842,13 +1615,11 @@ impl<'c> Recorder<'c, Outside> {
                     && (e.extent.depth as i128)
                         != (e.dst_subresource.layer_count as i128)
                 {
-                    return Err(
-                        fail(
-                            "VUID-vkCmdCopyImage-dstImage-01792",
-                            format!(
-                                "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                                i, e.extent.depth, i, e.dst_subresource.layer_count
-                            ),
+                    return refuse(
+                        "VUID-vkCmdCopyImage-dstImage-01792",
+                        format!(
+                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                            i, e.extent.depth, i, e.dst_subresource.layer_count
                         ),
                     );
                 }
@@ -1857,26 +1628,22 @@ impl<'c> Recorder<'c, Outside> {
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImage-srcImageLayout-00129",
-                    format!(
-                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                        src_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyImage-srcImageLayout-00129",
+                format!(
+                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                    src_image_layout
                 ),
             );
         }
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImage-dstImageLayout-00134",
-                    format!(
-                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                        dst_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyImage-dstImageLayout-00134",
+                format!(
+                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                    dst_image_layout
                 ),
             );
         }
@@ -1903,86 +1670,63 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if regions.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-regionCount-arraylength",
-                    "`regionCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-regionCount-arraylength",
+                "`regionCount` is 0",
             );
         }
         if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-commonparent",
-                    "`srcImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-commonparent",
-                    "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .image(src_image.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-srcImage-00186",
-                    "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-srcImage-00186",
+                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag",
             );
         }
         if s
             .image(src_image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-srcImage-00187",
-                    "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-srcImage-00187",
+                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s
             .buffer(dst_buffer.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-dstBuffer-00191",
-                    "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-dstBuffer-00191",
+                "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if s
             .buffer(dst_buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-dstBuffer-00192",
-                    "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-dstBuffer-00192",
+                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         for (i, e) in regions.iter().enumerate() {
@@ -1992,13 +1736,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImageToBuffer-imageSubresource-01703",
-                        format!(
-                            "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImageToBuffer-imageSubresource-01703",
+                    format!(
+                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_subresource.mip_level
                     ),
                 );
             }
@@ -2012,14 +1754,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImageToBuffer-imageSubresource-01704",
-                        format!(
-                            "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
-                            i, e.image_subresource.base_array_layer, i, e
-                            .image_subresource.layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImageToBuffer-imageSubresource-01704",
+                    format!(
+                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                        i, e.image_subresource.base_array_layer, i, e.image_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -2050,14 +1790,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImageToBuffer-pRegions-06221",
-                        format!(
-                            "For each element of `pRegions`, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.x, i, e.image_extent.width, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImageToBuffer-pRegions-06221",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.x, i, e.image_extent.width, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -2088,14 +1826,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdCopyImageToBuffer-pRegions-06222",
-                        format!(
-                            "For each element of `pRegions`, `imageOffset.y` and (imageExtent.height + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.y, i, e.image_extent.height, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdCopyImageToBuffer-pRegions-06222",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.y` and (imageExtent.height + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.y, i, e.image_extent.height, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -2103,13 +1839,11 @@ impl<'c> Recorder<'c, Outside> {
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190",
-                    format!(
-                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                        src_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190",
+                format!(
+                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                    src_image_layout
                 ),
             );
         }
@@ -2137,65 +1871,50 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-commonparent",
-                    "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .buffer(dst_buffer.raw())
             .is_some_and(|r| (dst_offset as i128) >= (r.size as i128))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-dstOffset-00819",
-                    format!(
-                        "`dstOffset` must be less than the size of `dstBuffer` (`dstOffset` = {:?})",
-                        dst_offset
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-dstOffset-00819",
+                format!(
+                    "`dstOffset` must be less than the size of `dstBuffer` (`dstOffset` = {:?})",
+                    dst_offset
                 ),
             );
         }
         if (flags.as_raw() & 1) == 0 && (dst_offset % 4 != 0 || stride % 4 != 0) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-flags-00822",
-                    format!(
-                        "If `VK_QUERY_RESULT_64_BIT` is not set in `flags` then `dstOffset` and `stride` must be multiples of `4` (`flags` = {:?}, `dstOffset` = {:?}, `stride` = {:?})",
-                        flags, dst_offset, stride
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-flags-00822",
+                format!(
+                    "If `VK_QUERY_RESULT_64_BIT` is not set in `flags` then `dstOffset` and `stride` must be multiples of `4` (`flags` = {:?}, `dstOffset` = {:?}, `stride` = {:?})",
+                    flags, dst_offset, stride
                 ),
             );
         }
         if (flags.as_raw() & 1) != 0 && (dst_offset % 8 != 0 || stride % 8 != 0) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-flags-00823",
-                    format!(
-                        "If `VK_QUERY_RESULT_64_BIT` is set in `flags` then `dstOffset` and `stride` must be multiples of `8` (`flags` = {:?}, `dstOffset` = {:?}, `stride` = {:?})",
-                        flags, dst_offset, stride
-                    ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-flags-00823",
+                format!(
+                    "If `VK_QUERY_RESULT_64_BIT` is set in `flags` then `dstOffset` and `stride` must be multiples of `8` (`flags` = {:?}, `dstOffset` = {:?}, `stride` = {:?})",
+                    flags, dst_offset, stride
                 ),
             );
         }
@@ -2203,24 +1922,18 @@ impl<'c> Recorder<'c, Outside> {
             .buffer(dst_buffer.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825",
-                    "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825",
+                "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if s
             .buffer(dst_buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826",
-                    "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826",
+                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         Ok(())
@@ -2237,12 +1950,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatch-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDispatch-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if s
@@ -2251,13 +1961,11 @@ impl<'c> Recorder<'c, Outside> {
                 (group_count_x as i128) > (l.max_compute_work_group_count[0] as i128)
             })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatch-groupCountX-00386",
-                    format!(
-                        "`groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`groupCountX` = {:?})",
-                        group_count_x
-                    ),
+            return refuse(
+                "VUID-vkCmdDispatch-groupCountX-00386",
+                format!(
+                    "`groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`groupCountX` = {:?})",
+                    group_count_x
                 ),
             );
         }
@@ -2267,13 +1975,11 @@ impl<'c> Recorder<'c, Outside> {
                 (group_count_y as i128) > (l.max_compute_work_group_count[1] as i128)
             })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatch-groupCountY-00387",
-                    format!(
-                        "`groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`groupCountY` = {:?})",
-                        group_count_y
-                    ),
+            return refuse(
+                "VUID-vkCmdDispatch-groupCountY-00387",
+                format!(
+                    "`groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`groupCountY` = {:?})",
+                    group_count_y
                 ),
             );
         }
@@ -2283,13 +1989,11 @@ impl<'c> Recorder<'c, Outside> {
                 (group_count_z as i128) > (l.max_compute_work_group_count[2] as i128)
             })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatch-groupCountZ-00388",
-                    format!(
-                        "`groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`groupCountZ` = {:?})",
-                        group_count_z
-                    ),
+            return refuse(
+                "VUID-vkCmdDispatch-groupCountZ-00388",
+                format!(
+                    "`groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`groupCountZ` = {:?})",
+                    group_count_z
                 ),
             );
         }
@@ -2306,55 +2010,39 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchIndirect-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDispatchIndirect-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .buffer(buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchIndirect-buffer-02708",
-                    "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDispatchIndirect-buffer-02708",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s
             .buffer(buffer.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchIndirect-buffer-02709",
-                    "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDispatchIndirect-buffer-02709",
+                "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set",
             );
         }
         if offset % 4 != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchIndirect-offset-02710",
-                    format!(
-                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
-                    ),
-                ),
+            return refuse(
+                "VUID-vkCmdDispatchIndirect-offset-02710",
+                format!("`offset` must be a multiple of `4` (`offset` = {:?})", offset),
             );
         }
         Ok(())
@@ -2366,21 +2054,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdFillBuffer-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdFillBuffer-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdFillBuffer-commonparent",
-                    "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdFillBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -2395,21 +2077,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetQueryPool-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode,opticalflow operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResetQueryPool-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode,opticalflow operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetQueryPool-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResetQueryPool-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -2438,62 +2114,45 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if regions.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-regionCount-arraylength",
-                    "`regionCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-regionCount-arraylength",
+                "`regionCount` is 0",
             );
         }
         if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-commonparent",
-                    "`srcImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-commonparent",
-                    "`dstImage` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .image(src_image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-srcImage-00256",
-                    "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-srcImage-00256",
+                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s
             .image(dst_image.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-dstImage-00258",
-                    "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-dstImage-00258",
+                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         for (i, e) in regions.iter().enumerate() {
@@ -2503,13 +2162,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-srcSubresource-01709",
-                        format!(
-                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-srcSubresource-01709",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
                     ),
                 );
             }
@@ -2521,13 +2178,11 @@ impl<'c> Recorder<'c, Outside> {
                     (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-dstSubresource-01710",
-                        format!(
-                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-dstSubresource-01710",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
                     ),
                 );
             }
@@ -2541,14 +2196,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-srcSubresource-01711",
-                        format!(
-                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.src_subresource.base_array_layer, i, e.src_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-srcSubresource-01711",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -2562,14 +2215,12 @@ impl<'c> Recorder<'c, Outside> {
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-dstSubresource-01712",
-                        format!(
-                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-dstSubresource-01712",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -2600,14 +2251,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-srcOffset-00269",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-srcOffset-00269",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2638,14 +2287,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-srcOffset-00270",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-srcOffset-00270",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2676,14 +2323,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-srcOffset-00272",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-srcOffset-00272",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2714,14 +2359,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-dstOffset-00274",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-dstOffset-00274",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2752,14 +2395,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-dstOffset-00275",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-dstOffset-00275",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2790,14 +2431,12 @@ impl<'c> Recorder<'c, Outside> {
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-vkCmdResolveImage-dstOffset-00277",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-vkCmdResolveImage-dstOffset-00277",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2806,49 +2445,39 @@ impl<'c> Recorder<'c, Outside> {
             .image(src_image.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-srcImage-06762",
-                    "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-srcImage-06762",
+                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag",
             );
         }
         if s
             .image(dst_image.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-dstImage-06764",
-                    "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage-dstImage-06764",
+                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
             );
         }
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(src_image_layout.as_raw(), 1 | 6)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-srcImageLayout-00261",
-                    format!(
-                        "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                        src_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdResolveImage-srcImageLayout-00261",
+                format!(
+                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                    src_image_layout
                 ),
             );
         }
         if !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE))
             && !matches!(dst_image_layout.as_raw(), 1 | 7)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage-dstImageLayout-00263",
-                    format!(
-                        "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                        dst_image_layout
-                    ),
+            return refuse(
+                "VUID-vkCmdResolveImage-dstImageLayout-00263",
+                format!(
+                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                    dst_image_layout
                 ),
             );
         }
@@ -2868,29 +2497,21 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if data.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdUpdateBuffer-dataSize-arraylength",
-                    "`dataSize` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdUpdateBuffer-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdUpdateBuffer-commonparent",
-                    "`dstBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdUpdateBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -2914,39 +2535,28 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if descriptor_sets.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength",
-                    "`descriptorSetCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength",
+                "`descriptorSetCount` is 0",
             );
         }
         if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindDescriptorSets-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindDescriptorSets-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
             );
         }
         for h in descriptor_sets.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindDescriptorSets-commonparent",
-                        "`pDescriptorSets` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBindDescriptorSets-commonparent",
+                    "`pDescriptorSets` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -2968,21 +2578,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindIndexBuffer-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindIndexBuffer-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -3003,21 +2607,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindPipeline-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindPipeline-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindPipeline-commonparent",
-                    "`pipeline` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindPipeline-commonparent",
+                "`pipeline` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -3033,30 +2631,22 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if buffers.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers-bindingCount-arraylength",
-                    "`bindingCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindVertexBuffers-bindingCount-arraylength",
+                "`bindingCount` is 0",
             );
         }
         for h in buffers.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindVertexBuffers-commonparent",
-                        "`pBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBindVertexBuffers-commonparent",
+                    "`pBuffers` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -3066,13 +2656,11 @@ impl<'c, S: State> Recorder<'c, S> {
                 (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
             })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers-firstBinding-00624",
-                    format!(
-                        "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
-                        first_binding
-                    ),
+            return refuse(
+                "VUID-vkCmdBindVertexBuffers-firstBinding-00624",
+                format!(
+                    "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
+                    first_binding
                 ),
             );
         }
@@ -3088,38 +2676,28 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdExecuteCommands-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdExecuteCommands-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         if command_buffers.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
-                    "`commandBufferCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdExecuteCommands-commandBufferCount-arraylength",
+                "`commandBufferCount` is 0",
             );
         }
         for h in command_buffers.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdExecuteCommands-commonparent",
-                        "`pCommandBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdExecuteCommands-commonparent",
+                    "`pCommandBuffers` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -3139,37 +2717,27 @@ impl<'c, S: State> Recorder<'c, S> {
             "VUID-vkCmdPushConstants-stageFlags-parameter",
         )?;
         if stage_flags.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
-                    "`stageFlags` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushConstants-stageFlags-requiredbitmask",
+                "`stageFlags` is empty",
             );
         }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushConstants-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         if values.is_empty() {
-            return Err(
-                fail("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0".into()),
-            );
+            return refuse("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0");
         }
         if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPushConstants-commonparent",
-                    "`layout` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPushConstants-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -3180,12 +2748,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetBlendConstants-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -3197,24 +2762,19 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthBias-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if !s.feature(|f| f.v10.depth_bias_clamp) && (depth_bias_clamp as f64).is_nan()
             || depth_bias_clamp != 0.0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBias-depthBiasClamp-00790",
-                    format!(
-                        "If the `depthBiasClamp` feature is not enabled, `depthBiasClamp` must be `0.0` (`depthBiasClamp` = {:?})",
-                        depth_bias_clamp
-                    ),
+            return refuse(
+                "VUID-vkCmdSetDepthBias-depthBiasClamp-00790",
+                format!(
+                    "If the `depthBiasClamp` feature is not enabled, `depthBiasClamp` must be `0.0` (`depthBiasClamp` = {:?})",
+                    depth_bias_clamp
                 ),
             );
         }
@@ -3231,25 +2791,20 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthBounds-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if !(s.exts.has(origin::VK_EXT_DEPTH_RANGE_UNRESTRICTED))
             && ((min_depth_bounds as f64).is_nan() || min_depth_bounds < 0.0
                 || (min_depth_bounds as f64).is_nan() || min_depth_bounds > 1.0)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBounds-minDepthBounds-02508",
-                    format!(
-                        "`minDepthBounds` must be between `0.0` and `1.0`, inclusive (`minDepthBounds` = {:?})",
-                        min_depth_bounds
-                    ),
+            return refuse(
+                "VUID-vkCmdSetDepthBounds-minDepthBounds-02508",
+                format!(
+                    "`minDepthBounds` must be between `0.0` and `1.0`, inclusive (`minDepthBounds` = {:?})",
+                    min_depth_bounds
                 ),
             );
         }
@@ -3257,13 +2812,11 @@ impl<'c, S: State> Recorder<'c, S> {
             && ((max_depth_bounds as f64).is_nan() || max_depth_bounds < 0.0
                 || (max_depth_bounds as f64).is_nan() || max_depth_bounds > 1.0)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBounds-maxDepthBounds-02509",
-                    format!(
-                        "`maxDepthBounds` must be between `0.0` and `1.0`, inclusive (`maxDepthBounds` = {:?})",
-                        max_depth_bounds
-                    ),
+            return refuse(
+                "VUID-vkCmdSetDepthBounds-maxDepthBounds-02509",
+                format!(
+                    "`maxDepthBounds` must be between `0.0` and `1.0`, inclusive (`maxDepthBounds` = {:?})",
+                    max_depth_bounds
                 ),
             );
         }
@@ -3276,24 +2829,19 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetLineWidth-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if !s.feature(|f| f.v10.wide_lines) && (line_width as f64).is_nan()
             || line_width != 1.0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetLineWidth-lineWidth-00788",
-                    format!(
-                        "If the `wideLines` feature is not enabled, `lineWidth` must be `1.0` (`lineWidth` = {:?})",
-                        line_width
-                    ),
+            return refuse(
+                "VUID-vkCmdSetLineWidth-lineWidth-00788",
+                format!(
+                    "If the `wideLines` feature is not enabled, `lineWidth` must be `1.0` (`lineWidth` = {:?})",
+                    line_width
                 ),
             );
         }
@@ -3305,20 +2853,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetScissor-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if scissors.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissor-scissorCount-arraylength",
-                    "`scissorCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetScissor-scissorCount-arraylength",
+                "`scissorCount` is 0",
             );
         }
         Ok(())
@@ -3335,23 +2878,18 @@ impl<'c, S: State> Recorder<'c, S> {
             "VUID-vkCmdSetStencilCompareMask-faceMask-parameter",
         )?;
         if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilCompareMask-faceMask-requiredbitmask",
+                "`faceMask` is empty",
             );
         }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilCompareMask-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -3368,23 +2906,18 @@ impl<'c, S: State> Recorder<'c, S> {
             "VUID-vkCmdSetStencilReference-faceMask-parameter",
         )?;
         if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilReference-faceMask-requiredbitmask",
+                "`faceMask` is empty",
             );
         }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilReference-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -3401,23 +2934,18 @@ impl<'c, S: State> Recorder<'c, S> {
             "VUID-vkCmdSetStencilWriteMask-faceMask-parameter",
         )?;
         if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilWriteMask-faceMask-requiredbitmask",
+                "`faceMask` is empty",
             );
         }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilWriteMask-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -3432,20 +2960,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewport-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if viewports.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewport-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewport-viewportCount-arraylength",
+                "`viewportCount` is 0",
             );
         }
         for x in viewports.iter() {
@@ -3466,39 +2989,30 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearAttachments-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearAttachments-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if attachments.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearAttachments-attachmentCount-arraylength",
-                    "`attachmentCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearAttachments-attachmentCount-arraylength",
+                "`attachmentCount` is 0",
             );
         }
         if rects.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdClearAttachments-rectCount-arraylength",
-                    "`rectCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdClearAttachments-rectCount-arraylength",
+                "`rectCount` is 0",
             );
         }
         for (i, e) in rects.iter().enumerate() {
             if e.layer_count == 0 {
-                return Err(
-                    fail(
-                        "VUID-vkCmdClearAttachments-layerCount-01934",
-                        format!(
-                            "The `layerCount` member of each element of `pRects` must not be `0` (`pRects[{}].layerCount` = {:?})",
-                            i, e.layer_count
-                        ),
+                return refuse(
+                    "VUID-vkCmdClearAttachments-layerCount-01934",
+                    format!(
+                        "The `layerCount` member of each element of `pRects` must not be `0` (`pRects[{}].layerCount` = {:?})",
+                        i, e.layer_count
                     ),
                 );
             }
@@ -3514,12 +3028,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDraw-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDraw-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -3530,12 +3041,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexed-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexed-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -3552,65 +3060,47 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .buffer(buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-buffer-02708",
-                    "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-buffer-02708",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s
             .buffer(buffer.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-buffer-02709",
-                    "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-buffer-02709",
+                "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set",
             );
         }
         if offset % 4 != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-offset-02710",
-                    format!(
-                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
-                    ),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-offset-02710",
+                format!("`offset` must be a multiple of `4` (`offset` = {:?})", offset),
             );
         }
         if !s.feature(|f| f.v10.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-drawCount-02718",
-                    format!(
-                        "If the `multiDrawIndirect` feature is not enabled, `drawCount` must be `0` or `1` (`drawCount` = {:?})",
-                        draw_count
-                    ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-drawCount-02718",
+                format!(
+                    "If the `multiDrawIndirect` feature is not enabled, `drawCount` must be `0` or `1` (`drawCount` = {:?})",
+                    draw_count
                 ),
             );
         }
@@ -3618,13 +3108,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
             .limits()
             .is_some_and(|l| (draw_count as i128) > (l.max_draw_indirect_count as i128))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirect-drawCount-02719",
-                    format!(
-                        "`drawCount` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount` (`drawCount` = {:?})",
-                        draw_count
-                    ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-drawCount-02719",
+                format!(
+                    "`drawCount` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount` (`drawCount` = {:?})",
+                    draw_count
                 ),
             );
         }
@@ -3642,65 +3130,47 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirect-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirect-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
             .buffer(buffer.raw())
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-buffer-02708",
-                    "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirect-buffer-02708",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if s
             .buffer(buffer.raw())
             .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-buffer-02709",
-                    "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirect-buffer-02709",
+                "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set",
             );
         }
         if offset % 4 != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-offset-02710",
-                    format!(
-                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
-                    ),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirect-offset-02710",
+                format!("`offset` must be a multiple of `4` (`offset` = {:?})", offset),
             );
         }
         if !s.feature(|f| f.v10.multi_draw_indirect) && !matches!(draw_count, 0 | 1) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-drawCount-02718",
-                    format!(
-                        "If the `multiDrawIndirect` feature is not enabled, `drawCount` must be `0` or `1` (`drawCount` = {:?})",
-                        draw_count
-                    ),
+            return refuse(
+                "VUID-vkCmdDrawIndirect-drawCount-02718",
+                format!(
+                    "If the `multiDrawIndirect` feature is not enabled, `drawCount` must be `0` or `1` (`drawCount` = {:?})",
+                    draw_count
                 ),
             );
         }
@@ -3708,13 +3178,11 @@ impl<'c, S: Inside> Recorder<'c, S> {
             .limits()
             .is_some_and(|l| (draw_count as i128) > (l.max_draw_indirect_count as i128))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirect-drawCount-02719",
-                    format!(
-                        "`drawCount` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount` (`drawCount` = {:?})",
-                        draw_count
-                    ),
+            return refuse(
+                "VUID-vkCmdDrawIndirect-drawCount-02719",
+                format!(
+                    "`drawCount` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount` (`drawCount` = {:?})",
+                    draw_count
                 ),
             );
         }
@@ -3728,20 +3196,15 @@ impl<'c> Recorder<'c, InRenderPass> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndRenderPass-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndRenderPass-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         Ok(())
@@ -3761,20 +3224,15 @@ impl<'c> Recorder<'c, InRenderPass> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdNextSubpass-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdNextSubpass-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         Ok(())
@@ -3797,53 +3255,41 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResetEvent-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResetEvent-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-stageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdResetEvent-stageMask-04090",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-stageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdResetEvent-stageMask-04091",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
         if (stage_mask.as_raw() & 16384) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent-stageMask-01153",
-                    format!(
-                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdResetEvent-stageMask-01153",
+                format!(
+                    "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
@@ -3865,53 +3311,41 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetEvent-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetEvent-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-stageMask-04090",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdSetEvent-stageMask-04090",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
         if !s.feature(|f| f.v10.tessellation_shader) && (stage_mask.as_raw() & 48) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-stageMask-04091",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdSetEvent-stageMask-04091",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
         if (stage_mask.as_raw() & 16384) != 0 {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent-stageMask-01149",
-                    format!(
-                        "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdSetEvent-stageMask-01149",
+                format!(
+                    "`stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }

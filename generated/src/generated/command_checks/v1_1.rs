@@ -10,11 +10,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if bind_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkBindBufferMemory2-bindInfoCount-arraylength",
-                    "`bindInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkBindBufferMemory2-bindInfoCount-arraylength",
+                "`bindInfoCount` is 0",
             );
         }
         for x in bind_infos.iter() {
@@ -29,11 +27,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if bind_infos.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkBindImageMemory2-bindInfoCount-arraylength",
-                    "`bindInfoCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkBindImageMemory2-bindInfoCount-arraylength",
+                "`bindInfoCount` is 0",
             );
         }
         for x in bind_infos.iter() {
@@ -60,11 +56,9 @@ impl Device {
             || s.exts.has(origin::VK_KHR_SAMPLER_YCBCR_CONVERSION))
             && !s.feature(|f| f.v11.sampler_ycbcr_conversion)
         {
-            return Err(
-                fail(
-                    "VUID-vkCreateSamplerYcbcrConversion-None-01648",
-                    "The `samplerYcbcrConversion` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCreateSamplerYcbcrConversion-None-01648",
+                "The `samplerYcbcrConversion` feature must be enabled",
             );
         }
         crate::checks::check_sampler_ycbcr_conversion_create_info(create_info, s)?;
@@ -118,19 +112,15 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if flags.as_raw() != 0 {
-            return Err(
-                fail(
-                    "VUID-vkTrimCommandPool-flags-zerobitmask",
-                    "`flags` is not 0".into(),
-                ),
+            return refuse(
+                "VUID-vkTrimCommandPool-flags-zerobitmask",
+                "`flags` is not 0",
             );
         }
         if !s.owned_by_device(command_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkTrimCommandPool-commandPool-parent",
-                    "`commandPool` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkTrimCommandPool-commandPool-parent",
+                "`commandPool` does not come from `device`",
             );
         }
         Ok(())
@@ -142,11 +132,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(descriptor_update_template.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent",
-                    "`descriptorUpdateTemplate` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkUpdateDescriptorSetWithTemplate-descriptorUpdateTemplate-parent",
+                "`descriptorUpdateTemplate` does not come from `device`",
             );
         }
         Ok(())

@@ -15,12 +15,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchBase-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDispatchBase-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
@@ -31,13 +28,11 @@ impl<'c> Recorder<'c, Outside> {
                     (base_group_x as i128) >= (l.max_compute_work_group_count[0] as i128)
                 })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchBase-baseGroupX-00421",
-                    format!(
-                        "`baseGroupX` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`baseGroupX` = {:?})",
-                        base_group_x
-                    ),
+            return refuse(
+                "VUID-vkCmdDispatchBase-baseGroupX-00421",
+                format!(
+                    "`baseGroupX` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`baseGroupX` = {:?})",
+                    base_group_x
                 ),
             );
         }
@@ -49,13 +44,11 @@ impl<'c> Recorder<'c, Outside> {
                     (base_group_y as i128) >= (l.max_compute_work_group_count[1] as i128)
                 })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchBase-baseGroupX-00422",
-                    format!(
-                        "`baseGroupY` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`baseGroupY` = {:?})",
-                        base_group_y
-                    ),
+            return refuse(
+                "VUID-vkCmdDispatchBase-baseGroupX-00422",
+                format!(
+                    "`baseGroupY` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`baseGroupY` = {:?})",
+                    base_group_y
                 ),
             );
         }
@@ -67,13 +60,11 @@ impl<'c> Recorder<'c, Outside> {
                     (base_group_z as i128) >= (l.max_compute_work_group_count[2] as i128)
                 })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDispatchBase-baseGroupZ-00423",
-                    format!(
-                        "`baseGroupZ` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`baseGroupZ` = {:?})",
-                        base_group_z
-                    ),
+            return refuse(
+                "VUID-vkCmdDispatchBase-baseGroupZ-00423",
+                format!(
+                    "`baseGroupZ` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`baseGroupZ` = {:?})",
+                    base_group_z
                 ),
             );
         }
@@ -88,24 +79,18 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE | vk::QueueFlags::TRANSFER,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,transfer operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,transfer operations",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_1)
             || s.exts.has(origin::VK_KHR_DEVICE_GROUP)) && device_mask == 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDeviceMask-deviceMask-00109",
-                    format!(
-                        "`deviceMask` must not be zero (`deviceMask` = {:?})",
-                        device_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdSetDeviceMask-deviceMask-00109",
+                format!(
+                    "`deviceMask` must not be zero (`deviceMask` = {:?})", device_mask
                 ),
             );
         }

@@ -21,11 +21,9 @@ impl Device {
             && !(s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
-            return Err(
-                fail(
-                    "VUID-vkGetBufferDeviceAddress-None-06542",
-                    "The `bufferDeviceAddress` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkGetBufferDeviceAddress-None-06542",
+                "The `bufferDeviceAddress` feature must be enabled",
             );
         }
         Ok(())
@@ -37,11 +35,9 @@ impl Device {
             || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
-            return Err(
-                fail(
-                    "VUID-vkGetBufferOpaqueCaptureAddress-None-03326",
-                    "The `bufferDeviceAddress` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkGetBufferOpaqueCaptureAddress-None-03326",
+                "The `bufferDeviceAddress` feature must be enabled",
             );
         }
         Ok(())
@@ -55,11 +51,9 @@ impl Device {
             || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
         {
-            return Err(
-                fail(
-                    "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334",
-                    "The `bufferDeviceAddress` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334",
+                "The `bufferDeviceAddress` feature must be enabled",
             );
         }
         Ok(())
@@ -71,11 +65,9 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(semaphore.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetSemaphoreCounterValue-semaphore-parent",
-                    "`semaphore` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetSemaphoreCounterValue-semaphore-parent",
+                "`semaphore` does not come from `device`",
             );
         }
         Ok(())
@@ -87,22 +79,18 @@ impl Device {
     ) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(query_pool.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkResetQueryPool-queryPool-parent",
-                    "`queryPool` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkResetQueryPool-queryPool-parent",
+                "`queryPool` does not come from `device`",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_EXT_HOST_QUERY_RESET))
             && !s.feature(|f| f.v12.host_query_reset)
         {
-            return Err(
-                fail(
-                    "VUID-vkResetQueryPool-None-02665",
-                    "The `hostQueryReset` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkResetQueryPool-None-02665",
+                "The `hostQueryReset` feature must be enabled",
             );
         }
         Ok(())

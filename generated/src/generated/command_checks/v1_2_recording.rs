@@ -14,20 +14,15 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginRenderPass2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRenderPass2-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginRenderPass2-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
@@ -49,30 +44,21 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                    "`countBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                "`countBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -81,12 +67,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-buffer-02708",
-                    "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-buffer-02708",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -95,24 +78,17 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-buffer-02709",
-                    "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-buffer-02709",
+                "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-offset-02710",
-                    format!(
-                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
-                    ),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-offset-02710",
+                format!("`offset` must be a multiple of `4` (`offset` = {:?})", offset),
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -121,12 +97,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714",
-                    "If `countBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02714",
+                "If `countBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -135,25 +108,20 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715",
-                    "`countBuffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02715",
+                "`countBuffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && count_buffer_offset % 4 != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716",
-                    format!(
-                        "`countBufferOffset` must be a multiple of `4` (`countBufferOffset` = {:?})",
-                        count_buffer_offset
-                    ),
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-02716",
+                format!(
+                    "`countBufferOffset` must be a multiple of `4` (`countBufferOffset` = {:?})",
+                    count_buffer_offset
                 ),
             );
         }
@@ -172,30 +140,21 @@ impl<'c, S: Inside> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-commonparent",
-                    "`buffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-commonparent",
-                    "`countBuffer` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-commonparent",
+                "`countBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -204,12 +163,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-buffer-02708",
-                    "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-buffer-02708",
+                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -218,24 +174,17 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-buffer-02709",
-                    "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-buffer-02709",
+                "`buffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT)) && offset % 4 != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-offset-02710",
-                    format!(
-                        "`offset` must be a multiple of `4` (`offset` = {:?})", offset
-                    ),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-offset-02710",
+                format!("`offset` must be a multiple of `4` (`offset` = {:?})", offset),
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -244,12 +193,9 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-countBuffer-02714",
-                    "If `countBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-countBuffer-02714",
+                "If `countBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -258,25 +204,20 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 .buffer(count_buffer.raw())
                 .is_some_and(|r| (u64::from(r.usage.as_raw()) & 256) != 256)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-countBuffer-02715",
-                    "`countBuffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-countBuffer-02715",
+                "`countBuffer` must have been created with the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_KHR_DRAW_INDIRECT_COUNT))
             && count_buffer_offset % 4 != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdDrawIndirectCount-countBufferOffset-02716",
-                    format!(
-                        "`countBufferOffset` must be a multiple of `4` (`countBufferOffset` = {:?})",
-                        count_buffer_offset
-                    ),
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-countBufferOffset-02716",
+                format!(
+                    "`countBufferOffset` must be a multiple of `4` (`countBufferOffset` = {:?})",
+                    count_buffer_offset
                 ),
             );
         }
@@ -294,20 +235,15 @@ impl<'c> Recorder<'c, InRenderPass> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndRenderPass2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRenderPass2-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndRenderPass2-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_subpass_end_info(subpass_end_info, s)?;
@@ -324,20 +260,15 @@ impl<'c> Recorder<'c, InRenderPass> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdNextSubpass2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if self.command_buffer().level() != vk::CommandBufferLevel::PRIMARY {
-            return Err(
-                fail(
-                    "VUID-vkCmdNextSubpass2-bufferlevel",
-                    "the command buffer is not a primary command buffer".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdNextSubpass2-bufferlevel",
+                "the command buffer is not a primary command buffer",
             );
         }
         crate::checks::check_subpass_begin_info(subpass_begin_info, s)?;

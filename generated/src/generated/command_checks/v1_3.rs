@@ -13,11 +13,9 @@ impl Device {
             || s.exts.has(origin::VK_EXT_PRIVATE_DATA))
             && !s.feature(|f| f.v13.private_data)
         {
-            return Err(
-                fail(
-                    "VUID-vkCreatePrivateDataSlot-privateData-04564",
-                    "The `privateData` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCreatePrivateDataSlot-privateData-04564",
+                "The `privateData` feature must be enabled",
             );
         }
         crate::checks::check_private_data_slot_create_info(create_info, s)?;
@@ -67,11 +65,9 @@ impl Device {
             "VUID-vkGetPrivateData-objectType-parameter",
         )?;
         if !s.owned_by_device(private_data_slot.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkGetPrivateData-privateDataSlot-parent",
-                    "`privateDataSlot` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkGetPrivateData-privateDataSlot-parent",
+                "`privateDataSlot` does not come from `device`",
             );
         }
         Ok(())
@@ -89,11 +85,9 @@ impl Device {
             "VUID-vkSetPrivateData-objectType-parameter",
         )?;
         if !s.owned_by_device(private_data_slot.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkSetPrivateData-privateDataSlot-parent",
-                    "`privateDataSlot` does not come from `device`".into(),
-                ),
+            return refuse(
+                "VUID-vkSetPrivateData-privateDataSlot-parent",
+                "`privateDataSlot` does not come from `device`",
             );
         }
         Ok(())
@@ -109,12 +103,9 @@ impl Queue {
         let s = &self.parent().scope();
         if let Some(h) = fence {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkQueueSubmit2-commonparent",
-                        "`fence` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkQueueSubmit2-commonparent",
+                    "`fence` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -122,11 +113,9 @@ impl Queue {
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
-            return Err(
-                fail(
-                    "VUID-vkQueueSubmit2-synchronization2-03866",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkQueueSubmit2-synchronization2-03866",
+                "The `synchronization2` feature must be enabled",
             );
         }
         for x in submits.iter() {

@@ -13,23 +13,18 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRendering-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginRendering-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
             && !s.feature(|f| f.v13.dynamic_rendering)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBeginRendering-dynamicRendering-06446",
-                    "The `dynamicRendering` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBeginRendering-dynamicRendering-06446",
+                "The `dynamicRendering` feature must be enabled",
             );
         }
         crate::checks::check_rendering_info(rendering_info, s)?;
@@ -45,12 +40,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBlitImage2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBlitImage2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         crate::checks::check_blit_image_info2(blit_image_info, s)?;
@@ -66,12 +58,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         crate::checks::check_copy_buffer_info2(copy_buffer_info, s)?;
@@ -87,12 +76,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         crate::checks::check_copy_buffer_to_image_info2(copy_buffer_to_image_info, s)?;
@@ -108,12 +94,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImage2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImage2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         crate::checks::check_copy_image_info2(copy_image_info, s)?;
@@ -129,12 +112,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
         crate::checks::check_copy_image_to_buffer_info2(copy_image_to_buffer_info, s)?;
@@ -150,12 +130,9 @@ impl<'c> Recorder<'c, Outside> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResolveImage2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResolveImage2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         crate::checks::check_resolve_image_info2(resolve_image_info, s)?;
@@ -174,30 +151,22 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if buffers.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength",
-                    "`bindingCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength",
+                "`bindingCount` is 0",
             );
         }
         for h in buffers.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdBindVertexBuffers2-commonparent",
-                        "`pBuffers` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdBindVertexBuffers2-commonparent",
+                    "`pBuffers` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -209,13 +178,11 @@ impl<'c, S: State> Recorder<'c, S> {
                     (first_binding as i128) >= (l.max_vertex_input_bindings as i128)
                 })
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdBindVertexBuffers2-firstBinding-03355",
-                    format!(
-                        "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
-                        first_binding
-                    ),
+            return refuse(
+                "VUID-vkCmdBindVertexBuffers2-firstBinding-03355",
+                format!(
+                    "`firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`firstBinding` = {:?})",
+                    first_binding
                 ),
             );
         }
@@ -236,12 +203,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetCullMode-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetCullMode-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -252,12 +216,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthBiasEnable-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -268,12 +229,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthBoundsTestEnable-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -293,12 +251,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthCompareOp-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -309,12 +264,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthTestEnable-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -325,12 +277,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetDepthWriteEnable-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -350,12 +299,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetFrontFace-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetFrontFace-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -366,12 +312,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetPrimitiveRestartEnable-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -391,12 +334,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetPrimitiveTopology-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -407,12 +347,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetRasterizerDiscardEnable-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -426,20 +363,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetScissorWithCount-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if scissors.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetScissorWithCount-scissorCount-arraylength",
-                    "`scissorCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetScissorWithCount-scissorCount-arraylength",
+                "`scissorCount` is 0",
             );
         }
         Ok(())
@@ -460,11 +392,9 @@ impl<'c, S: State> Recorder<'c, S> {
             "VUID-vkCmdSetStencilOp-faceMask-parameter",
         )?;
         if face_mask.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilOp-faceMask-requiredbitmask",
-                    "`faceMask` is empty".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilOp-faceMask-requiredbitmask",
+                "`faceMask` is empty",
             );
         }
         crate::checks::enum_stencil_op(
@@ -491,12 +421,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilOp-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilOp-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -507,12 +434,9 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetStencilTestEnable-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -527,20 +451,15 @@ impl<'c, S: State> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportWithCount-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         if viewports.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetViewportWithCount-viewportCount-arraylength",
-                    "`viewportCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetViewportWithCount-viewportCount-arraylength",
+                "`viewportCount` is 0",
             );
         }
         for x in viewports.iter() {
@@ -556,12 +475,9 @@ impl<'c> Recorder<'c, InRendering> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdEndRendering-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
             );
         }
         Ok(())
@@ -578,23 +494,18 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPipelineBarrier2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdPipelineBarrier2-synchronization2-03848",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdPipelineBarrier2-synchronization2-03848",
+                "The `synchronization2` feature must be enabled",
             );
         }
         crate::checks::check_dependency_info(dependency_info, s)?;
@@ -611,30 +522,22 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWaitEvents2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if events.is_empty() {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents2-eventCount-arraylength",
-                    "`eventCount` is 0".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWaitEvents2-eventCount-arraylength",
+                "`eventCount` is 0",
             );
         }
         for h in events.iter() {
             if !s.owned_by_device(h.raw()) {
-                return Err(
-                    fail(
-                        "VUID-vkCmdWaitEvents2-commonparent",
-                        "`pEvents` does not come from the VkDevice the command is called on"
-                            .into(),
-                    ),
+                return refuse(
+                    "VUID-vkCmdWaitEvents2-commonparent",
+                    "`pEvents` does not come from the VkDevice the command is called on",
                 );
             }
         }
@@ -642,11 +545,9 @@ impl<'c, S: Scope> Recorder<'c, S> {
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWaitEvents2-synchronization2-03836",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWaitEvents2-synchronization2-03836",
+                "The `synchronization2` feature must be enabled",
             );
         }
         for x in dependency_infos.iter() {
@@ -670,34 +571,26 @@ impl<'c, S: Scope> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp2-commonparent",
-                    "`queryPool` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp2-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.geometry_shader) && (stage.as_raw() & 64) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp2-stage-03929",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stage` = {:?})",
-                        stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp2-stage-03929",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stage` = {:?})",
+                    stage
                 ),
             );
         }
@@ -705,13 +598,11 @@ impl<'c, S: Scope> Recorder<'c, S> {
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.tessellation_shader) && (stage.as_raw() & 48) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp2-stage-03930",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stage` = {:?})",
-                        stage
-                    ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp2-stage-03930",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stage` = {:?})",
+                    stage
                 ),
             );
         }
@@ -719,11 +610,9 @@ impl<'c, S: Scope> Recorder<'c, S> {
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdWriteTimestamp2-synchronization2-03858",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdWriteTimestamp2-synchronization2-03858",
+                "The `synchronization2` feature must be enabled",
             );
         }
         Ok(())
@@ -746,34 +635,26 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResetEvent2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResetEvent2-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-stageMask-03929",
-                    format!(
-                        "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdResetEvent2-stageMask-03929",
+                format!(
+                    "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
@@ -782,13 +663,11 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             && !s.feature(|f| f.v10.tessellation_shader)
             && (stage_mask.as_raw() & 48) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-stageMask-03930",
-                    format!(
-                        "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdResetEvent2-stageMask-03930",
+                format!(
+                    "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
@@ -796,24 +675,20 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-synchronization2-03829",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdResetEvent2-synchronization2-03829",
+                "The `synchronization2` feature must be enabled",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && (stage_mask.as_raw() & 16384) != 0
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdResetEvent2-stageMask-03830",
-                    format!(
-                        "`stageMask` must not include `VK_PIPELINE_STAGE_2_HOST_BIT` (`stageMask` = {:?})",
-                        stage_mask
-                    ),
+            return refuse(
+                "VUID-vkCmdResetEvent2-stageMask-03830",
+                format!(
+                    "`stageMask` must not include `VK_PIPELINE_STAGE_2_HOST_BIT` (`stageMask` = {:?})",
+                    stage_mask
                 ),
             );
         }
@@ -830,32 +705,24 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         ) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent2-commandBuffer-cmdpool",
-                    "the command buffer's pool does not support graphics,compute,decode,encode operations"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetEvent2-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
         if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent2-commonparent",
-                    "`event` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetEvent2-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
         {
-            return Err(
-                fail(
-                    "VUID-vkCmdSetEvent2-synchronization2-03824",
-                    "The `synchronization2` feature must be enabled".into(),
-                ),
+            return refuse(
+                "VUID-vkCmdSetEvent2-synchronization2-03824",
+                "The `synchronization2` feature must be enabled",
             );
         }
         crate::checks::check_dependency_info(dependency_info, s)?;

@@ -9,11 +9,9 @@ pub fn check_pipeline_compiler_control_create_info_amd(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.compiler_control_flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineCompilerControlCreateInfoAMD-compilerControlFlags-zerobitmask",
-                "`compilerControlFlags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineCompilerControlCreateInfoAMD-compilerControlFlags-zerobitmask",
+            "`compilerControlFlags` is not 0",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_pipeline_rasterization_conservative_state_create_info_ext(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineRasterizationConservativeStateCreateInfoEXT-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_conservative_rasterization_mode_ext(

@@ -16,26 +16,20 @@ pub fn check_debug_marker_object_name_info_ext(
     if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
         || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && matches!(v.object_type.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkDebugMarkerObjectNameInfoEXT-objectType-01490",
-                format!(
-                    "`objectType` must not be `VK_DEBUG_REPORT_OBJECT_TYPE_UNKNOWN_EXT` (`objectType` = {:?})",
-                    v.object_type
-                ),
+        return refuse(
+            "VUID-VkDebugMarkerObjectNameInfoEXT-objectType-01490",
+            format!(
+                "`objectType` must not be `VK_DEBUG_REPORT_OBJECT_TYPE_UNKNOWN_EXT` (`objectType` = {:?})",
+                v.object_type
             ),
         );
     }
     if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
         || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && v.object == 0
     {
-        return Err(
-            fail(
-                "VUID-VkDebugMarkerObjectNameInfoEXT-object-01491",
-                format!(
-                    "`object` must not be VK_NULL_HANDLE (`object` = {:?})", v.object
-                ),
-            ),
+        return refuse(
+            "VUID-VkDebugMarkerObjectNameInfoEXT-object-01491",
+            format!("`object` must not be VK_NULL_HANDLE (`object` = {:?})", v.object),
         );
     }
     Ok(())
@@ -52,36 +46,28 @@ pub fn check_debug_marker_object_tag_info_ext(
         "VUID-VkDebugMarkerObjectTagInfoEXT-objectType-parameter",
     )?;
     if v.tag_size == 0 {
-        return Err(
-            fail(
-                "VUID-VkDebugMarkerObjectTagInfoEXT-tagSize-arraylength",
-                "`tagSize` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugMarkerObjectTagInfoEXT-tagSize-arraylength",
+            "`tagSize` is 0",
         );
     }
     if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
         || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && matches!(v.object_type.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkDebugMarkerObjectTagInfoEXT-objectType-01493",
-                format!(
-                    "`objectType` must not be `VK_DEBUG_REPORT_OBJECT_TYPE_UNKNOWN_EXT` (`objectType` = {:?})",
-                    v.object_type
-                ),
+        return refuse(
+            "VUID-VkDebugMarkerObjectTagInfoEXT-objectType-01493",
+            format!(
+                "`objectType` must not be `VK_DEBUG_REPORT_OBJECT_TYPE_UNKNOWN_EXT` (`objectType` = {:?})",
+                v.object_type
             ),
         );
     }
     if (s.exts.has(origin::VK_EXT_DEBUG_MARKER)
         || s.exts.has(origin::VK_EXT_DEBUG_UTILS)) && v.object == 0
     {
-        return Err(
-            fail(
-                "VUID-VkDebugMarkerObjectTagInfoEXT-object-01494",
-                format!(
-                    "`object` must not be VK_NULL_HANDLE (`object` = {:?})", v.object
-                ),
-            ),
+        return refuse(
+            "VUID-VkDebugMarkerObjectTagInfoEXT-object-01494",
+            format!("`object` must not be VK_NULL_HANDLE (`object` = {:?})", v.object),
         );
     }
     Ok(())

@@ -14,11 +14,9 @@ pub fn check_debug_report_callback_create_info_ext(
         "VUID-VkDebugReportCallbackCreateInfoEXT-flags-parameter",
     )?;
     if v.pfn_callback.is_none() {
-        return Err(
-            fail(
-                "VUID-VkDebugReportCallbackCreateInfoEXT-pfnCallback-parameter",
-                "`pfnCallback` is NULL".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugReportCallbackCreateInfoEXT-pfnCallback-parameter",
+            "`pfnCallback` is NULL",
         );
     }
     Ok(())

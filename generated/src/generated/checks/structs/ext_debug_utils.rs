@@ -9,11 +9,9 @@ pub fn check_debug_utils_messenger_callback_data_ext(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsMessengerCallbackDataEXT-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugUtilsMessengerCallbackDataEXT-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -35,11 +33,9 @@ pub fn check_debug_utils_messenger_create_info_ext(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugUtilsMessengerCreateInfoEXT-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::flags_debug_utils_message_severity_flags_ext(
@@ -48,11 +44,9 @@ pub fn check_debug_utils_messenger_create_info_ext(
         "VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-parameter",
     )?;
     if v.message_severity.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask",
-                "`messageSeverity` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugUtilsMessengerCreateInfoEXT-messageSeverity-requiredbitmask",
+            "`messageSeverity` is empty",
         );
     }
     crate::checks::flags_debug_utils_message_type_flags_ext(
@@ -61,19 +55,15 @@ pub fn check_debug_utils_messenger_create_info_ext(
         "VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-parameter",
     )?;
     if v.message_type.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask",
-                "`messageType` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugUtilsMessengerCreateInfoEXT-messageType-requiredbitmask",
+            "`messageType` is empty",
         );
     }
     if v.pfn_user_callback.is_none() {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter",
-                "`pfnUserCallback` is NULL".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugUtilsMessengerCreateInfoEXT-pfnUserCallback-parameter",
+            "`pfnUserCallback` is NULL",
         );
     }
     Ok(())
@@ -92,13 +82,11 @@ pub fn check_debug_utils_object_name_info_ext(
     if s.exts.has(origin::VK_EXT_DEBUG_UTILS) && matches!(v.object_type.as_raw(), 0)
         && v.object_handle == 0
     {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589",
-                format!(
-                    "If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE (`objectType` = {:?}, `objectHandle` = {:?})",
-                    v.object_type, v.object_handle
-                ),
+        return refuse(
+            "VUID-VkDebugUtilsObjectNameInfoEXT-objectType-02589",
+            format!(
+                "If `objectType` is `VK_OBJECT_TYPE_UNKNOWN`, `objectHandle` must not be VK_NULL_HANDLE (`objectType` = {:?}, `objectHandle` = {:?})",
+                v.object_type, v.object_handle
             ),
         );
     }
@@ -116,21 +104,17 @@ pub fn check_debug_utils_object_tag_info_ext(
         "VUID-VkDebugUtilsObjectTagInfoEXT-objectType-parameter",
     )?;
     if v.tag_size == 0 {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength",
-                "`tagSize` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDebugUtilsObjectTagInfoEXT-tagSize-arraylength",
+            "`tagSize` is 0",
         );
     }
     if s.exts.has(origin::VK_EXT_DEBUG_UTILS) && matches!(v.object_type.as_raw(), 0) {
-        return Err(
-            fail(
-                "VUID-VkDebugUtilsObjectTagInfoEXT-objectType-01908",
-                format!(
-                    "`objectType` must not be `VK_OBJECT_TYPE_UNKNOWN` (`objectType` = {:?})",
-                    v.object_type
-                ),
+        return refuse(
+            "VUID-VkDebugUtilsObjectTagInfoEXT-objectType-01908",
+            format!(
+                "`objectType` must not be `VK_OBJECT_TYPE_UNKNOWN` (`objectType` = {:?})",
+                v.object_type
             ),
         );
     }

@@ -17,23 +17,17 @@ pub fn check_acceleration_structure_capture_descriptor_data_info_ext(
     if v.acceleration_structure != Default::default()
         && !s.owned_by_device(v.acceleration_structure)
     {
-        return Err(
-            fail(
-                "VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent",
-                "`accelerationStructure` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent",
+            "`accelerationStructure` does not come from the VkDevice the command is called on",
         );
     }
     if v.acceleration_structure_nv != Default::default()
         && !s.owned_by_device(v.acceleration_structure_nv)
     {
-        return Err(
-            fail(
-                "VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent",
-                "`accelerationStructureNV` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent",
+            "`accelerationStructureNV` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -63,11 +57,9 @@ pub fn check_descriptor_buffer_binding_info_ext(
         "VUID-VkDescriptorBufferBindingInfoEXT-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkDescriptorBufferBindingInfoEXT-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorBufferBindingInfoEXT-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     crate::checks::chain(

@@ -9,19 +9,15 @@ pub fn check_device_device_memory_report_create_info_ext(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     if v.pfn_user_callback.is_none() {
-        return Err(
-            fail(
-                "VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pfnUserCallback-parameter",
-                "`pfnUserCallback` is NULL".into(),
-            ),
+        return refuse(
+            "VUID-VkDeviceDeviceMemoryReportCreateInfoEXT-pfnUserCallback-parameter",
+            "`pfnUserCallback` is NULL",
         );
     }
     Ok(())

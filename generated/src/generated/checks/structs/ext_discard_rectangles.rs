@@ -9,11 +9,9 @@ pub fn check_pipeline_discard_rectangle_state_create_info_ext(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineDiscardRectangleStateCreateInfoEXT-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_discard_rectangle_mode_ext(

@@ -14,11 +14,9 @@ pub fn check_graphics_pipeline_library_create_info_ext(
         "VUID-VkGraphicsPipelineLibraryCreateInfoEXT-flags-parameter",
     )?;
     if v.flags.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineLibraryCreateInfoEXT-flags-requiredbitmask",
-                "`flags` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkGraphicsPipelineLibraryCreateInfoEXT-flags-requiredbitmask",
+            "`flags` is empty",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_headless_surface_create_info_ext(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkHeadlessSurfaceCreateInfoEXT-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkHeadlessSurfaceCreateInfoEXT-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

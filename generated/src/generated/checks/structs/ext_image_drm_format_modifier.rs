@@ -9,11 +9,9 @@ pub fn check_image_drm_format_modifier_list_create_info_ext(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.drm_format_modifier_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageDrmFormatModifierListCreateInfoEXT-drmFormatModifierCount-arraylength",
-                "`drmFormatModifierCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkImageDrmFormatModifierListCreateInfoEXT-drmFormatModifierCount-arraylength",
+            "`drmFormatModifierCount` is 0",
         );
     }
     Ok(())

@@ -12,13 +12,11 @@ pub fn check_memory_priority_allocate_info_ext(
         && ((v.priority as f64).is_nan() || v.priority < 0.0
             || (v.priority as f64).is_nan() || v.priority > 1.0)
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryPriorityAllocateInfoEXT-priority-02602",
-                format!(
-                    "`priority` must be between `0` and `1`, inclusive (`priority` = {:?})",
-                    v.priority
-                ),
+        return refuse(
+            "VUID-VkMemoryPriorityAllocateInfoEXT-priority-02602",
+            format!(
+                "`priority` must be between `0` and `1`, inclusive (`priority` = {:?})",
+                v.priority
             ),
         );
     }

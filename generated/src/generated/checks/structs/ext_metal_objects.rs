@@ -36,20 +36,15 @@ pub fn check_export_metal_shared_event_info_ext(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.semaphore != Default::default() && !s.owned_by_device(v.semaphore) {
-        return Err(
-            fail(
-                "VUID-VkExportMetalSharedEventInfoEXT-commonparent",
-                "`semaphore` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkExportMetalSharedEventInfoEXT-commonparent",
+            "`semaphore` does not come from the VkDevice the command is called on",
         );
     }
     if v.event != Default::default() && !s.owned_by_device(v.event) {
-        return Err(
-            fail(
-                "VUID-VkExportMetalSharedEventInfoEXT-commonparent",
-                "`event` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkExportMetalSharedEventInfoEXT-commonparent",
+            "`event` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -66,29 +61,21 @@ pub fn check_export_metal_texture_info_ext(
         "VUID-VkExportMetalTextureInfoEXT-plane-parameter",
     )?;
     if v.image != Default::default() && !s.owned_by_device(v.image) {
-        return Err(
-            fail(
-                "VUID-VkExportMetalTextureInfoEXT-commonparent",
-                "`image` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkExportMetalTextureInfoEXT-commonparent",
+            "`image` does not come from the VkDevice the command is called on",
         );
     }
     if v.image_view != Default::default() && !s.owned_by_device(v.image_view) {
-        return Err(
-            fail(
-                "VUID-VkExportMetalTextureInfoEXT-commonparent",
-                "`imageView` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkExportMetalTextureInfoEXT-commonparent",
+            "`imageView` does not come from the VkDevice the command is called on",
         );
     }
     if v.buffer_view != Default::default() && !s.owned_by_device(v.buffer_view) {
-        return Err(
-            fail(
-                "VUID-VkExportMetalTextureInfoEXT-commonparent",
-                "`bufferView` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkExportMetalTextureInfoEXT-commonparent",
+            "`bufferView` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())

@@ -27,13 +27,11 @@ pub fn check_copy_memory_to_micromap_info_ext(
         "VUID-VkCopyMemoryToMicromapInfoEXT-mode-parameter",
     )?;
     if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP) && !matches!(v.mode.as_raw(), 2) {
-        return Err(
-            fail(
-                "VUID-VkCopyMemoryToMicromapInfoEXT-mode-07548",
-                format!(
-                    "`mode` must be `VK_COPY_MICROMAP_MODE_DESERIALIZE_EXT` (`mode` = {:?})",
-                    v.mode
-                ),
+        return refuse(
+            "VUID-VkCopyMemoryToMicromapInfoEXT-mode-07548",
+            format!(
+                "`mode` must be `VK_COPY_MICROMAP_MODE_DESERIALIZE_EXT` (`mode` = {:?})",
+                v.mode
             ),
         );
     }
@@ -51,29 +49,23 @@ pub fn check_copy_micromap_info_ext(
         "VUID-VkCopyMicromapInfoEXT-mode-parameter",
     )?;
     if v.src != Default::default() && !s.owned_by_device(v.src) {
-        return Err(
-            fail(
-                "VUID-VkCopyMicromapInfoEXT-commonparent",
-                "`src` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyMicromapInfoEXT-commonparent",
+            "`src` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst != Default::default() && !s.owned_by_device(v.dst) {
-        return Err(
-            fail(
-                "VUID-VkCopyMicromapInfoEXT-commonparent",
-                "`dst` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyMicromapInfoEXT-commonparent",
+            "`dst` does not come from the VkDevice the command is called on",
         );
     }
     if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP) && !matches!(v.mode.as_raw(), 0 | 3) {
-        return Err(
-            fail(
-                "VUID-VkCopyMicromapInfoEXT-mode-07531",
-                format!(
-                    "`mode` must be `VK_COPY_MICROMAP_MODE_COMPACT_EXT` or `VK_COPY_MICROMAP_MODE_CLONE_EXT` (`mode` = {:?})",
-                    v.mode
-                ),
+        return refuse(
+            "VUID-VkCopyMicromapInfoEXT-mode-07531",
+            format!(
+                "`mode` must be `VK_COPY_MICROMAP_MODE_COMPACT_EXT` or `VK_COPY_MICROMAP_MODE_CLONE_EXT` (`mode` = {:?})",
+                v.mode
             ),
         );
     }
@@ -91,13 +83,11 @@ pub fn check_copy_micromap_to_memory_info_ext(
         "VUID-VkCopyMicromapToMemoryInfoEXT-mode-parameter",
     )?;
     if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP) && !matches!(v.mode.as_raw(), 1) {
-        return Err(
-            fail(
-                "VUID-VkCopyMicromapToMemoryInfoEXT-mode-07542",
-                format!(
-                    "`mode` must be `VK_COPY_MICROMAP_MODE_SERIALIZE_EXT` (`mode` = {:?})",
-                    v.mode
-                ),
+        return refuse(
+            "VUID-VkCopyMicromapToMemoryInfoEXT-mode-07542",
+            format!(
+                "`mode` must be `VK_COPY_MICROMAP_MODE_SERIALIZE_EXT` (`mode` = {:?})", v
+                .mode
             ),
         );
     }
@@ -142,13 +132,11 @@ pub fn check_micromap_create_info_ext(
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.size as i128) >= (r.size as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkMicromapCreateInfoEXT-offset-07437",
-                format!(
-                    "The sum of `offset` and `size` must be less than the size of `buffer` (`offset` = {:?}, `size` = {:?})",
-                    v.offset, v.size
-                ),
+        return refuse(
+            "VUID-VkMicromapCreateInfoEXT-offset-07437",
+            format!(
+                "The sum of `offset` and `size` must be less than the size of `buffer` (`offset` = {:?}, `size` = {:?})",
+                v.offset, v.size
             ),
         );
     }

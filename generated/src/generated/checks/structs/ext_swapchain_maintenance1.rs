@@ -9,11 +9,9 @@ pub fn check_release_swapchain_images_info_ext(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.image_index_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkReleaseSwapchainImagesInfoEXT-imageIndexCount-arraylength",
-                "`imageIndexCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkReleaseSwapchainImagesInfoEXT-imageIndexCount-arraylength",
+            "`imageIndexCount` is 0",
         );
     }
     Ok(())
@@ -25,11 +23,9 @@ pub fn check_swapchain_present_fence_info_ext(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.swapchain_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkSwapchainPresentFenceInfoEXT-swapchainCount-arraylength",
-                "`swapchainCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSwapchainPresentFenceInfoEXT-swapchainCount-arraylength",
+            "`swapchainCount` is 0",
         );
     }
     Ok(())
@@ -49,11 +45,9 @@ pub fn check_swapchain_present_mode_info_ext(
         )?;
     }
     if v.swapchain_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkSwapchainPresentModeInfoEXT-swapchainCount-arraylength",
-                "`swapchainCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSwapchainPresentModeInfoEXT-swapchainCount-arraylength",
+            "`swapchainCount` is 0",
         );
     }
     Ok(())
@@ -73,11 +67,9 @@ pub fn check_swapchain_present_modes_create_info_ext(
         )?;
     }
     if v.present_mode_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkSwapchainPresentModesCreateInfoEXT-presentModeCount-arraylength",
-                "`presentModeCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSwapchainPresentModesCreateInfoEXT-presentModeCount-arraylength",
+            "`presentModeCount` is 0",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_validation_cache_create_info_ext(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkValidationCacheCreateInfoEXT-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkValidationCacheCreateInfoEXT-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

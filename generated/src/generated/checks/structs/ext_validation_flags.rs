@@ -19,11 +19,9 @@ pub fn check_validation_flags_ext(
         )?;
     }
     if v.disabled_validation_check_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkValidationFlagsEXT-disabledValidationCheckCount-arraylength",
-                "`disabledValidationCheckCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkValidationFlagsEXT-disabledValidationCheckCount-arraylength",
+            "`disabledValidationCheckCount` is 0",
         );
     }
     Ok(())

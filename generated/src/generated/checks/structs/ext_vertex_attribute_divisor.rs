@@ -9,11 +9,9 @@ pub fn check_pipeline_vertex_input_divisor_state_create_info_ext(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.vertex_binding_divisor_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-vertexBindingDivisorCount-arraylength",
-                "`vertexBindingDivisorCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineVertexInputDivisorStateCreateInfoEXT-vertexBindingDivisorCount-arraylength",
+            "`vertexBindingDivisorCount` is 0",
         );
     }
     Ok(())

@@ -14,11 +14,9 @@ pub fn check_buffer_collection_properties_fuchsia(
         "VUID-VkBufferCollectionPropertiesFUCHSIA-formatFeatures-parameter",
     )?;
     if v.format_features.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkBufferCollectionPropertiesFUCHSIA-formatFeatures-requiredbitmask",
-                "`formatFeatures` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkBufferCollectionPropertiesFUCHSIA-formatFeatures-requiredbitmask",
+            "`formatFeatures` is empty",
         );
     }
     crate::checks::check_component_mapping(&v.sampler_ycbcr_conversion_components, s)?;
@@ -71,11 +69,9 @@ pub fn check_image_constraints_info_fuchsia(
         "VUID-VkImageConstraintsInfoFUCHSIA-flags-parameter",
     )?;
     if v.format_constraints_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageConstraintsInfoFUCHSIA-formatConstraintsCount-arraylength",
-                "`formatConstraintsCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkImageConstraintsInfoFUCHSIA-formatConstraintsCount-arraylength",
+            "`formatConstraintsCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -96,27 +92,21 @@ pub fn check_image_format_constraints_info_fuchsia(
         "VUID-VkImageFormatConstraintsInfoFUCHSIA-requiredFormatFeatures-parameter",
     )?;
     if v.required_format_features.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkImageFormatConstraintsInfoFUCHSIA-requiredFormatFeatures-requiredbitmask",
-                "`requiredFormatFeatures` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkImageFormatConstraintsInfoFUCHSIA-requiredFormatFeatures-requiredbitmask",
+            "`requiredFormatFeatures` is empty",
         );
     }
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageFormatConstraintsInfoFUCHSIA-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkImageFormatConstraintsInfoFUCHSIA-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     if v.color_space_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageFormatConstraintsInfoFUCHSIA-colorSpaceCount-arraylength",
-                "`colorSpaceCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkImageFormatConstraintsInfoFUCHSIA-colorSpaceCount-arraylength",
+            "`colorSpaceCount` is 0",
         );
     }
     crate::checks::check_image_create_info(&v.image_create_info, s)?;

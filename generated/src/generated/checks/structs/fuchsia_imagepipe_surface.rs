@@ -9,11 +9,9 @@ pub fn check_image_pipe_surface_create_info_fuchsia(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkImagePipeSurfaceCreateInfoFUCHSIA-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

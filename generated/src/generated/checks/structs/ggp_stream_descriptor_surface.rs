@@ -9,11 +9,9 @@ pub fn check_stream_descriptor_surface_create_info_ggp(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkStreamDescriptorSurfaceCreateInfoGGP-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkStreamDescriptorSurfaceCreateInfoGGP-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_present_times_info_google(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.swapchain_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkPresentTimesInfoGOOGLE-swapchainCount-arraylength",
-                "`swapchainCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPresentTimesInfoGOOGLE-swapchainCount-arraylength",
+            "`swapchainCount` is 0",
         );
     }
     Ok(())

@@ -21,23 +21,17 @@ pub fn check_acceleration_structure_build_geometry_info_khr(
     if v.src_acceleration_structure != Default::default()
         && !s.owned_by_device(v.src_acceleration_structure)
     {
-        return Err(
-            fail(
-                "VUID-VkAccelerationStructureBuildGeometryInfoKHR-commonparent",
-                "`srcAccelerationStructure` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkAccelerationStructureBuildGeometryInfoKHR-commonparent",
+            "`srcAccelerationStructure` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_acceleration_structure != Default::default()
         && !s.owned_by_device(v.dst_acceleration_structure)
     {
-        return Err(
-            fail(
-                "VUID-VkAccelerationStructureBuildGeometryInfoKHR-commonparent",
-                "`dstAccelerationStructure` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkAccelerationStructureBuildGeometryInfoKHR-commonparent",
+            "`dstAccelerationStructure` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -126,19 +120,15 @@ pub fn check_copy_acceleration_structure_info_khr(
         "VUID-VkCopyAccelerationStructureInfoKHR-mode-parameter",
     )?;
     if v.src != Default::default() && !s.owned_by_device(v.src) {
-        return Err(
-            fail(
-                "VUID-VkCopyAccelerationStructureInfoKHR-commonparent",
-                "`src` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyAccelerationStructureInfoKHR-commonparent",
+            "`src` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst != Default::default() && !s.owned_by_device(v.dst) {
-        return Err(
-            fail(
-                "VUID-VkCopyAccelerationStructureInfoKHR-commonparent",
-                "`dst` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyAccelerationStructureInfoKHR-commonparent",
+            "`dst` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -176,11 +166,9 @@ pub fn check_write_descriptor_set_acceleration_structure_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.acceleration_structure_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSetAccelerationStructureKHR-accelerationStructureCount-arraylength",
-                "`accelerationStructureCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkWriteDescriptorSetAccelerationStructureKHR-accelerationStructureCount-arraylength",
+            "`accelerationStructureCount` is 0",
         );
     }
     Ok(())

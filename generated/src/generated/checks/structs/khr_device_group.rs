@@ -9,42 +9,30 @@ pub fn check_acquire_next_image_info_khr(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.swapchain != Default::default() && !s.owned_by_device(v.swapchain) {
-        return Err(
-            fail(
-                "VUID-VkAcquireNextImageInfoKHR-commonparent",
-                "`swapchain` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkAcquireNextImageInfoKHR-commonparent",
+            "`swapchain` does not come from the VkDevice the command is called on",
         );
     }
     if v.semaphore != Default::default() && !s.owned_by_device(v.semaphore) {
-        return Err(
-            fail(
-                "VUID-VkAcquireNextImageInfoKHR-commonparent",
-                "`semaphore` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkAcquireNextImageInfoKHR-commonparent",
+            "`semaphore` does not come from the VkDevice the command is called on",
         );
     }
     if v.fence != Default::default() && !s.owned_by_device(v.fence) {
-        return Err(
-            fail(
-                "VUID-VkAcquireNextImageInfoKHR-commonparent",
-                "`fence` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkAcquireNextImageInfoKHR-commonparent",
+            "`fence` does not come from the VkDevice the command is called on",
         );
     }
     if (s.exts.has(origin::VK_KHR_SURFACE) && s.exts.has(origin::VK_KHR_SWAPCHAIN)
         && (s.exts.has(origin::VK_VERSION_1_1)
             || s.exts.has(origin::VK_KHR_DEVICE_GROUP))) && v.device_mask == 0
     {
-        return Err(
-            fail(
-                "VUID-VkAcquireNextImageInfoKHR-deviceMask-01291",
-                format!(
-                    "`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask
-                ),
-            ),
+        return refuse(
+            "VUID-VkAcquireNextImageInfoKHR-deviceMask-01291",
+            format!("`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask),
         );
     }
     Ok(())
@@ -74,11 +62,9 @@ pub fn check_device_group_swapchain_create_info_khr(
         "VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-parameter",
     )?;
     if v.modes.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask",
-                "`modes` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkDeviceGroupSwapchainCreateInfoKHR-modes-requiredbitmask",
+            "`modes` is empty",
         );
     }
     Ok(())

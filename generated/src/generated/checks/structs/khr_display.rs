@@ -9,11 +9,9 @@ pub fn check_display_mode_create_info_khr(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkDisplayModeCreateInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDisplayModeCreateInfoKHR-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::check_display_mode_parameters_khr(&v.parameters, s)?;
@@ -29,13 +27,11 @@ pub fn check_display_mode_parameters_khr(
     if (s.exts.has(origin::VK_KHR_SURFACE) && s.exts.has(origin::VK_KHR_DISPLAY))
         && v.refresh_rate == 0
     {
-        return Err(
-            fail(
-                "VUID-VkDisplayModeParametersKHR-refreshRate-01992",
-                format!(
-                    "`refreshRate` must be greater than `0` (`refreshRate` = {:?})", v
-                    .refresh_rate
-                ),
+        return refuse(
+            "VUID-VkDisplayModeParametersKHR-refreshRate-01992",
+            format!(
+                "`refreshRate` must be greater than `0` (`refreshRate` = {:?})", v
+                .refresh_rate
             ),
         );
     }
@@ -57,11 +53,9 @@ pub fn check_display_surface_create_info_khr(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkDisplaySurfaceCreateInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDisplaySurfaceCreateInfoKHR-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_surface_transform_flag_bits_khr(
@@ -79,13 +73,11 @@ pub fn check_display_surface_create_info_khr(
         && ((v.global_alpha as f64).is_nan() || v.global_alpha < 0.0
             || (v.global_alpha as f64).is_nan() || v.global_alpha > 1.0)
     {
-        return Err(
-            fail(
-                "VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-01254",
-                format!(
-                    "If `alphaMode` is `VK_DISPLAY_PLANE_ALPHA_GLOBAL_BIT_KHR` then `globalAlpha` must be between `0` and `1`, inclusive (`alphaMode` = {:?}, `globalAlpha` = {:?})",
-                    v.alpha_mode, v.global_alpha
-                ),
+        return refuse(
+            "VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-01254",
+            format!(
+                "If `alphaMode` is `VK_DISPLAY_PLANE_ALPHA_GLOBAL_BIT_KHR` then `globalAlpha` must be between `0` and `1`, inclusive (`alphaMode` = {:?}, `globalAlpha` = {:?})",
+                v.alpha_mode, v.global_alpha
             ),
         );
     }

@@ -9,11 +9,9 @@ pub fn check_present_regions_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.swapchain_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkPresentRegionsKHR-swapchainCount-arraylength",
-                "`swapchainCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPresentRegionsKHR-swapchainCount-arraylength",
+            "`swapchainCount` is 0",
         );
     }
     Ok(())

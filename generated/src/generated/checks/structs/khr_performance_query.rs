@@ -9,11 +9,9 @@ pub fn check_acquire_profiling_lock_info_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkAcquireProfilingLockInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkAcquireProfilingLockInfoKHR-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())
@@ -25,11 +23,9 @@ pub fn check_query_pool_performance_create_info_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.counter_index_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkQueryPoolPerformanceCreateInfoKHR-counterIndexCount-arraylength",
-                "`counterIndexCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkQueryPoolPerformanceCreateInfoKHR-counterIndexCount-arraylength",
+            "`counterIndexCount` is 0",
         );
     }
     Ok(())

@@ -6,11 +6,9 @@ use super::*;
 #[cfg(feature = "khr_present_id")]
 pub fn check_present_id_khr(v: &vk::PresentIdKHR<'_>, _s: &Scope<'_>) -> Result<()> {
     if v.swapchain_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkPresentIdKHR-swapchainCount-arraylength",
-                "`swapchainCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPresentIdKHR-swapchainCount-arraylength",
+            "`swapchainCount` is 0",
         );
     }
     Ok(())

@@ -14,23 +14,17 @@ pub fn check_ray_tracing_pipeline_create_info_khr(
         "VUID-VkRayTracingPipelineCreateInfoKHR-flags-parameter",
     )?;
     if v.layout != Default::default() && !s.owned_by_device(v.layout) {
-        return Err(
-            fail(
-                "VUID-VkRayTracingPipelineCreateInfoKHR-commonparent",
-                "`layout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRayTracingPipelineCreateInfoKHR-commonparent",
+            "`layout` does not come from the VkDevice the command is called on",
         );
     }
     if v.base_pipeline_handle != Default::default()
         && !s.owned_by_device(v.base_pipeline_handle)
     {
-        return Err(
-            fail(
-                "VUID-VkRayTracingPipelineCreateInfoKHR-commonparent",
-                "`basePipelineHandle` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRayTracingPipelineCreateInfoKHR-commonparent",
+            "`basePipelineHandle` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored this array and its count.

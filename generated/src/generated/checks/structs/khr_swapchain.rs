@@ -6,34 +6,26 @@ use super::*;
 #[cfg(feature = "khr_swapchain")]
 pub fn check_present_info_khr(v: &vk::PresentInfoKHR<'_>, s: &Scope<'_>) -> Result<()> {
     if v.swapchain_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkPresentInfoKHR-swapchainCount-arraylength",
-                "`swapchainCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPresentInfoKHR-swapchainCount-arraylength",
+            "`swapchainCount` is 0",
         );
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkPresentInfoKHR-commonparent",
-                    "`pWaitSemaphores` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkPresentInfoKHR-commonparent",
+                "`pWaitSemaphores` does not come from the VkDevice the command is called on",
             );
         }
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_swapchains, v.swapchain_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkPresentInfoKHR-commonparent",
-                    "`pSwapchains` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkPresentInfoKHR-commonparent",
+                "`pSwapchains` does not come from the VkDevice the command is called on",
             );
         }
     }
@@ -72,11 +64,9 @@ pub fn check_swapchain_create_info_khr(
         "VUID-VkSwapchainCreateInfoKHR-imageUsage-parameter",
     )?;
     if v.image_usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkSwapchainCreateInfoKHR-imageUsage-requiredbitmask",
-                "`imageUsage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkSwapchainCreateInfoKHR-imageUsage-requiredbitmask",
+            "`imageUsage` is empty",
         );
     }
     crate::checks::enum_sharing_mode(
@@ -100,33 +90,25 @@ pub fn check_swapchain_create_info_khr(
         "VUID-VkSwapchainCreateInfoKHR-presentMode-parameter",
     )?;
     if v.surface != Default::default() && !s.owned_by_instance(v.surface) {
-        return Err(
-            fail(
-                "VUID-VkSwapchainCreateInfoKHR-commonparent",
-                "`surface` does not come from the VkInstance the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkSwapchainCreateInfoKHR-commonparent",
+            "`surface` does not come from the VkInstance the command is called on",
         );
     }
     if v.old_swapchain != Default::default() && !s.owned_by_instance(v.old_swapchain) {
-        return Err(
-            fail(
-                "VUID-VkSwapchainCreateInfoKHR-commonparent",
-                "`oldSwapchain` does not come from the VkInstance the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkSwapchainCreateInfoKHR-commonparent",
+            "`oldSwapchain` does not come from the VkInstance the command is called on",
         );
     }
     if (s.exts.has(origin::VK_KHR_SURFACE) && s.exts.has(origin::VK_KHR_SWAPCHAIN))
         && matches!(v.image_sharing_mode.as_raw(), 1) && v.queue_family_index_count <= 1
     {
-        return Err(
-            fail(
-                "VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01278",
-                format!(
-                    "If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, `queueFamilyIndexCount` must be greater than `1` (`imageSharingMode` = {:?}, `queueFamilyIndexCount` = {:?})",
-                    v.image_sharing_mode, v.queue_family_index_count
-                ),
+        return refuse(
+            "VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01278",
+            format!(
+                "If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, `queueFamilyIndexCount` must be greater than `1` (`imageSharingMode` = {:?}, `queueFamilyIndexCount` = {:?})",
+                v.image_sharing_mode, v.queue_family_index_count
             ),
         );
     }

@@ -9,11 +9,9 @@ pub fn check_video_decode_h264_picture_info_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.slice_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkVideoDecodeH264PictureInfoKHR-sliceCount-arraylength",
-                "`sliceCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoDecodeH264PictureInfoKHR-sliceCount-arraylength",
+            "`sliceCount` is 0",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_video_decode_h265_picture_info_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.slice_segment_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkVideoDecodeH265PictureInfoKHR-sliceSegmentCount-arraylength",
-                "`sliceSegmentCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoDecodeH265PictureInfoKHR-sliceSegmentCount-arraylength",
+            "`sliceSegmentCount` is 0",
         );
     }
     Ok(())

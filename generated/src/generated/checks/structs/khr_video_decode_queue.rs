@@ -9,12 +9,7 @@ pub fn check_video_decode_info_khr(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkVideoDecodeInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
-        );
+        return refuse("VUID-VkVideoDecodeInfoKHR-flags-zerobitmask", "`flags` is not 0");
     }
     if !v.p_setup_reference_slot.is_null() {
         // SAFETY: the safe setter stores a reference that outlives `v`.

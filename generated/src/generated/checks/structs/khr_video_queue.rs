@@ -14,11 +14,9 @@ pub fn check_physical_device_video_format_info_khr(
         "VUID-VkPhysicalDeviceVideoFormatInfoKHR-imageUsage-parameter",
     )?;
     if v.image_usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkPhysicalDeviceVideoFormatInfoKHR-imageUsage-requiredbitmask",
-                "`imageUsage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkPhysicalDeviceVideoFormatInfoKHR-imageUsage-requiredbitmask",
+            "`imageUsage` is empty",
         );
     }
     crate::checks::chain(
@@ -36,31 +34,23 @@ pub fn check_video_begin_coding_info_khr(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkVideoBeginCodingInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoBeginCodingInfoKHR-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     if v.video_session != Default::default() && !s.owned_by_device(v.video_session) {
-        return Err(
-            fail(
-                "VUID-VkVideoBeginCodingInfoKHR-commonparent",
-                "`videoSession` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkVideoBeginCodingInfoKHR-commonparent",
+            "`videoSession` does not come from the VkDevice the command is called on",
         );
     }
     if v.video_session_parameters != Default::default()
         && !s.owned_by_device(v.video_session_parameters)
     {
-        return Err(
-            fail(
-                "VUID-VkVideoBeginCodingInfoKHR-commonparent",
-                "`videoSessionParameters` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkVideoBeginCodingInfoKHR-commonparent",
+            "`videoSessionParameters` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -95,11 +85,9 @@ pub fn check_video_coding_control_info_khr(
         "VUID-VkVideoCodingControlInfoKHR-flags-parameter",
     )?;
     if v.flags.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkVideoCodingControlInfoKHR-flags-requiredbitmask",
-                "`flags` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoCodingControlInfoKHR-flags-requiredbitmask",
+            "`flags` is empty",
         );
     }
     crate::checks::chain(
@@ -117,11 +105,9 @@ pub fn check_video_end_coding_info_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkVideoEndCodingInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoEndCodingInfoKHR-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())
@@ -152,11 +138,9 @@ pub fn check_video_profile_info_khr(
         "VUID-VkVideoProfileInfoKHR-chromaSubsampling-parameter",
     )?;
     if v.chroma_subsampling.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkVideoProfileInfoKHR-chromaSubsampling-requiredbitmask",
-                "`chromaSubsampling` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoProfileInfoKHR-chromaSubsampling-requiredbitmask",
+            "`chromaSubsampling` is empty",
         );
     }
     crate::checks::flags_video_component_bit_depth_flags_khr(
@@ -165,11 +149,9 @@ pub fn check_video_profile_info_khr(
         "VUID-VkVideoProfileInfoKHR-lumaBitDepth-parameter",
     )?;
     if v.luma_bit_depth.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkVideoProfileInfoKHR-lumaBitDepth-requiredbitmask",
-                "`lumaBitDepth` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoProfileInfoKHR-lumaBitDepth-requiredbitmask",
+            "`lumaBitDepth` is empty",
         );
     }
     crate::checks::flags_video_component_bit_depth_flags_khr(
@@ -240,31 +222,23 @@ pub fn check_video_session_parameters_create_info_khr(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkVideoSessionParametersCreateInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkVideoSessionParametersCreateInfoKHR-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     if v.video_session_parameters_template != Default::default()
         && !s.owned_by_device(v.video_session_parameters_template)
     {
-        return Err(
-            fail(
-                "VUID-VkVideoSessionParametersCreateInfoKHR-commonparent",
-                "`videoSessionParametersTemplate` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkVideoSessionParametersCreateInfoKHR-commonparent",
+            "`videoSessionParametersTemplate` does not come from the VkDevice the command is called on",
         );
     }
     if v.video_session != Default::default() && !s.owned_by_device(v.video_session) {
-        return Err(
-            fail(
-                "VUID-VkVideoSessionParametersCreateInfoKHR-commonparent",
-                "`videoSession` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkVideoSessionParametersCreateInfoKHR-commonparent",
+            "`videoSession` does not come from the VkDevice the command is called on",
         );
     }
     crate::checks::chain(

@@ -11,24 +11,18 @@ pub fn check_win32_keyed_mutex_acquire_release_info_khr(
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_acquire_syncs, v.acquire_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-commonparent",
-                    "`pAcquireSyncs` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-commonparent",
+                "`pAcquireSyncs` does not come from the VkDevice the command is called on",
             );
         }
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_release_syncs, v.release_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-commonparent",
-                    "`pReleaseSyncs` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-commonparent",
+                "`pReleaseSyncs` does not come from the VkDevice the command is called on",
             );
         }
     }

@@ -9,11 +9,9 @@ pub fn check_win32_surface_create_info_khr(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkWin32SurfaceCreateInfoKHR-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

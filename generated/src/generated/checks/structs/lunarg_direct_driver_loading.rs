@@ -9,11 +9,9 @@ pub fn check_direct_driver_loading_info_lunarg(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkDirectDriverLoadingInfoLUNARG-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDirectDriverLoadingInfoLUNARG-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())
@@ -30,11 +28,9 @@ pub fn check_direct_driver_loading_list_lunarg(
         "VUID-VkDirectDriverLoadingListLUNARG-mode-parameter",
     )?;
     if v.driver_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkDirectDriverLoadingListLUNARG-driverCount-arraylength",
-                "`driverCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDirectDriverLoadingListLUNARG-driverCount-arraylength",
+            "`driverCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.

@@ -9,11 +9,9 @@ pub fn check_ios_surface_create_info_mvk(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkIOSSurfaceCreateInfoMVK-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkIOSSurfaceCreateInfoMVK-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

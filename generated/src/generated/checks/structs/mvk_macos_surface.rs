@@ -9,11 +9,9 @@ pub fn check_mac_os_surface_create_info_mvk(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkMacOSSurfaceCreateInfoMVK-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkMacOSSurfaceCreateInfoMVK-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_vi_surface_create_info_nn(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkViSurfaceCreateInfoNN-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkViSurfaceCreateInfoNN-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_pipeline_viewport_w_scaling_state_create_info_nv(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.viewport_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineViewportWScalingStateCreateInfoNV-viewportCount-arraylength",
-                "`viewportCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineViewportWScalingStateCreateInfoNV-viewportCount-arraylength",
+            "`viewportCount` is 0",
         );
     }
     Ok(())

@@ -9,20 +9,15 @@ pub fn check_dedicated_allocation_memory_allocate_info_nv(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.image != Default::default() && !s.owned_by_device(v.image) {
-        return Err(
-            fail(
-                "VUID-VkDedicatedAllocationMemoryAllocateInfoNV-commonparent",
-                "`image` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkDedicatedAllocationMemoryAllocateInfoNV-commonparent",
+            "`image` does not come from the VkDevice the command is called on",
         );
     }
     if v.buffer != Default::default() && !s.owned_by_device(v.buffer) {
-        return Err(
-            fail(
-                "VUID-VkDedicatedAllocationMemoryAllocateInfoNV-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkDedicatedAllocationMemoryAllocateInfoNV-commonparent",
+            "`buffer` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())

@@ -27,64 +27,47 @@ pub fn check_generated_commands_info_nv(
         "VUID-VkGeneratedCommandsInfoNV-pipelineBindPoint-parameter",
     )?;
     if v.stream_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsInfoNV-streamCount-arraylength",
-                "`streamCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsInfoNV-streamCount-arraylength",
+            "`streamCount` is 0",
         );
     }
     if v.pipeline != Default::default() && !s.owned_by_device(v.pipeline) {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsInfoNV-commonparent",
-                "`pipeline` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsInfoNV-commonparent",
+            "`pipeline` does not come from the VkDevice the command is called on",
         );
     }
     if v.indirect_commands_layout != Default::default()
         && !s.owned_by_device(v.indirect_commands_layout)
     {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsInfoNV-commonparent",
-                "`indirectCommandsLayout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsInfoNV-commonparent",
+            "`indirectCommandsLayout` does not come from the VkDevice the command is called on",
         );
     }
     if v.preprocess_buffer != Default::default()
         && !s.owned_by_device(v.preprocess_buffer)
     {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsInfoNV-commonparent",
-                "`preprocessBuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsInfoNV-commonparent",
+            "`preprocessBuffer` does not come from the VkDevice the command is called on",
         );
     }
     if v.sequences_count_buffer != Default::default()
         && !s.owned_by_device(v.sequences_count_buffer)
     {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsInfoNV-commonparent",
-                "`sequencesCountBuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsInfoNV-commonparent",
+            "`sequencesCountBuffer` does not come from the VkDevice the command is called on",
         );
     }
     if v.sequences_index_buffer != Default::default()
         && !s.owned_by_device(v.sequences_index_buffer)
     {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsInfoNV-commonparent",
-                "`sequencesIndexBuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsInfoNV-commonparent",
+            "`sequencesIndexBuffer` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -101,23 +84,17 @@ pub fn check_generated_commands_memory_requirements_info_nv(
         "VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipelineBindPoint-parameter",
     )?;
     if v.pipeline != Default::default() && !s.owned_by_device(v.pipeline) {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-commonparent",
-                "`pipeline` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-commonparent",
+            "`pipeline` does not come from the VkDevice the command is called on",
         );
     }
     if v.indirect_commands_layout != Default::default()
         && !s.owned_by_device(v.indirect_commands_layout)
     {
-        return Err(
-            fail(
-                "VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-commonparent",
-                "`indirectCommandsLayout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-commonparent",
+            "`indirectCommandsLayout` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -141,11 +118,9 @@ pub fn check_graphics_shader_group_create_info_nv(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.stage_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkGraphicsShaderGroupCreateInfoNV-stageCount-arraylength",
-                "`stageCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkGraphicsShaderGroupCreateInfoNV-stageCount-arraylength",
+            "`stageCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -185,19 +160,15 @@ pub fn check_indirect_commands_layout_create_info_nv(
         "VUID-VkIndirectCommandsLayoutCreateInfoNV-pipelineBindPoint-parameter",
     )?;
     if v.token_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkIndirectCommandsLayoutCreateInfoNV-tokenCount-arraylength",
-                "`tokenCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkIndirectCommandsLayoutCreateInfoNV-tokenCount-arraylength",
+            "`tokenCount` is 0",
         );
     }
     if v.stream_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkIndirectCommandsLayoutCreateInfoNV-streamCount-arraylength",
-                "`streamCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkIndirectCommandsLayoutCreateInfoNV-streamCount-arraylength",
+            "`streamCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.

@@ -9,11 +9,9 @@ pub fn check_pipeline_coverage_to_color_state_create_info_nv(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineCoverageToColorStateCreateInfoNV-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineCoverageToColorStateCreateInfoNV-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

@@ -9,11 +9,9 @@ pub fn check_pipeline_coverage_modulation_state_create_info_nv(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineCoverageModulationStateCreateInfoNV-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineCoverageModulationStateCreateInfoNV-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_coverage_modulation_mode_nv(

@@ -14,11 +14,9 @@ pub fn check_decompress_memory_region_nv(
         "VUID-VkDecompressMemoryRegionNV-decompressionMethod-parameter",
     )?;
     if v.decompression_method.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkDecompressMemoryRegionNV-decompressionMethod-requiredbitmask",
-                "`decompressionMethod` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkDecompressMemoryRegionNV-decompressionMethod-requiredbitmask",
+            "`decompressionMethod` is empty",
         );
     }
     Ok(())

@@ -27,11 +27,9 @@ pub fn check_optical_flow_image_format_info_nv(
         "VUID-VkOpticalFlowImageFormatInfoNV-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkOpticalFlowImageFormatInfoNV-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkOpticalFlowImageFormatInfoNV-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     Ok(())
@@ -63,11 +61,9 @@ pub fn check_optical_flow_session_create_info_nv(
         "VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-parameter",
     )?;
     if v.output_grid_size.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-requiredbitmask",
-                "`outputGridSize` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkOpticalFlowSessionCreateInfoNV-outputGridSize-requiredbitmask",
+            "`outputGridSize` is empty",
         );
     }
     crate::checks::flags_optical_flow_grid_size_flags_nv(

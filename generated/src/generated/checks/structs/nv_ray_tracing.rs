@@ -61,21 +61,15 @@ pub fn check_bind_acceleration_structure_memory_info_nv(
     if v.acceleration_structure != Default::default()
         && !s.owned_by_device(v.acceleration_structure)
     {
-        return Err(
-            fail(
-                "VUID-VkBindAccelerationStructureMemoryInfoNV-commonparent",
-                "`accelerationStructure` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBindAccelerationStructureMemoryInfoNV-commonparent",
+            "`accelerationStructure` does not come from the VkDevice the command is called on",
         );
     }
     if v.memory != Default::default() && !s.owned_by_device(v.memory) {
-        return Err(
-            fail(
-                "VUID-VkBindAccelerationStructureMemoryInfoNV-commonparent",
-                "`memory` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBindAccelerationStructureMemoryInfoNV-commonparent",
+            "`memory` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -119,30 +113,21 @@ pub fn check_geometry_triangles_nv(
         "VUID-VkGeometryTrianglesNV-indexType-parameter",
     )?;
     if v.vertex_data != Default::default() && !s.owned_by_device(v.vertex_data) {
-        return Err(
-            fail(
-                "VUID-VkGeometryTrianglesNV-commonparent",
-                "`vertexData` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeometryTrianglesNV-commonparent",
+            "`vertexData` does not come from the VkDevice the command is called on",
         );
     }
     if v.index_data != Default::default() && !s.owned_by_device(v.index_data) {
-        return Err(
-            fail(
-                "VUID-VkGeometryTrianglesNV-commonparent",
-                "`indexData` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeometryTrianglesNV-commonparent",
+            "`indexData` does not come from the VkDevice the command is called on",
         );
     }
     if v.transform_data != Default::default() && !s.owned_by_device(v.transform_data) {
-        return Err(
-            fail(
-                "VUID-VkGeometryTrianglesNV-commonparent",
-                "`transformData` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGeometryTrianglesNV-commonparent",
+            "`transformData` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -159,39 +144,29 @@ pub fn check_ray_tracing_pipeline_create_info_nv(
         "VUID-VkRayTracingPipelineCreateInfoNV-flags-parameter",
     )?;
     if v.stage_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkRayTracingPipelineCreateInfoNV-stageCount-arraylength",
-                "`stageCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkRayTracingPipelineCreateInfoNV-stageCount-arraylength",
+            "`stageCount` is 0",
         );
     }
     if v.group_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkRayTracingPipelineCreateInfoNV-groupCount-arraylength",
-                "`groupCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkRayTracingPipelineCreateInfoNV-groupCount-arraylength",
+            "`groupCount` is 0",
         );
     }
     if v.layout != Default::default() && !s.owned_by_device(v.layout) {
-        return Err(
-            fail(
-                "VUID-VkRayTracingPipelineCreateInfoNV-commonparent",
-                "`layout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRayTracingPipelineCreateInfoNV-commonparent",
+            "`layout` does not come from the VkDevice the command is called on",
         );
     }
     if v.base_pipeline_handle != Default::default()
         && !s.owned_by_device(v.base_pipeline_handle)
     {
-        return Err(
-            fail(
-                "VUID-VkRayTracingPipelineCreateInfoNV-commonparent",
-                "`basePipelineHandle` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRayTracingPipelineCreateInfoNV-commonparent",
+            "`basePipelineHandle` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -230,11 +205,9 @@ pub fn check_write_descriptor_set_acceleration_structure_nv(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.acceleration_structure_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSetAccelerationStructureNV-accelerationStructureCount-arraylength",
-                "`accelerationStructureCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkWriteDescriptorSetAccelerationStructureNV-accelerationStructureCount-arraylength",
+            "`accelerationStructureCount` is 0",
         );
     }
     Ok(())

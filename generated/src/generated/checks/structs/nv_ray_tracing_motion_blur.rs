@@ -9,11 +9,9 @@ pub fn check_acceleration_structure_motion_info_nv(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkAccelerationStructureMotionInfoNV-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkAccelerationStructureMotionInfoNV-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())
@@ -30,11 +28,9 @@ pub fn check_acceleration_structure_motion_instance_nv(
         "VUID-VkAccelerationStructureMotionInstanceNV-type-parameter",
     )?;
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkAccelerationStructureMotionInstanceNV-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkAccelerationStructureMotionInstanceNV-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

@@ -14,11 +14,9 @@ pub fn check_coarse_sample_order_custom_nv(
         "VUID-VkCoarseSampleOrderCustomNV-shadingRate-parameter",
     )?;
     if v.sample_location_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkCoarseSampleOrderCustomNV-sampleLocationCount-arraylength",
-                "`sampleLocationCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkCoarseSampleOrderCustomNV-sampleLocationCount-arraylength",
+            "`sampleLocationCount` is 0",
         );
     }
     Ok(())
@@ -69,11 +67,9 @@ pub fn check_shading_rate_palette_nv(
         )?;
     }
     if v.shading_rate_palette_entry_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkShadingRatePaletteNV-shadingRatePaletteEntryCount-arraylength",
-                "`shadingRatePaletteEntryCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkShadingRatePaletteNV-shadingRatePaletteEntryCount-arraylength",
+            "`shadingRatePaletteEntryCount` is 0",
         );
     }
     Ok(())

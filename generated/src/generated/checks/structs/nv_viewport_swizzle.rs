@@ -9,19 +9,15 @@ pub fn check_pipeline_viewport_swizzle_state_create_info_nv(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineViewportSwizzleStateCreateInfoNV-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineViewportSwizzleStateCreateInfoNV-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     if v.viewport_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineViewportSwizzleStateCreateInfoNV-viewportCount-arraylength",
-                "`viewportCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineViewportSwizzleStateCreateInfoNV-viewportCount-arraylength",
+            "`viewportCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.

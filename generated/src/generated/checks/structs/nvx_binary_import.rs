@@ -9,11 +9,9 @@ pub fn check_cu_module_create_info_nvx(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.data_size == 0 {
-        return Err(
-            fail(
-                "VUID-VkCuModuleCreateInfoNVX-dataSize-arraylength",
-                "`dataSize` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkCuModuleCreateInfoNVX-dataSize-arraylength",
+            "`dataSize` is 0",
         );
     }
     Ok(())

@@ -14,33 +14,25 @@ pub fn check_image_view_handle_info_nvx(
         "VUID-VkImageViewHandleInfoNVX-descriptorType-parameter",
     )?;
     if v.image_view != Default::default() && !s.owned_by_device(v.image_view) {
-        return Err(
-            fail(
-                "VUID-VkImageViewHandleInfoNVX-commonparent",
-                "`imageView` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkImageViewHandleInfoNVX-commonparent",
+            "`imageView` does not come from the VkDevice the command is called on",
         );
     }
     if v.sampler != Default::default() && !s.owned_by_device(v.sampler) {
-        return Err(
-            fail(
-                "VUID-VkImageViewHandleInfoNVX-commonparent",
-                "`sampler` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkImageViewHandleInfoNVX-commonparent",
+            "`sampler` does not come from the VkDevice the command is called on",
         );
     }
     if s.exts.has(origin::VK_NVX_IMAGE_VIEW_HANDLE)
         && !matches!(v.descriptor_type.as_raw(), 1..= 3)
     {
-        return Err(
-            fail(
-                "VUID-VkImageViewHandleInfoNVX-descriptorType-02654",
-                format!(
-                    "`descriptorType` must be `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER` (`descriptorType` = {:?})",
-                    v.descriptor_type
-                ),
+        return refuse(
+            "VUID-VkImageViewHandleInfoNVX-descriptorType-02654",
+            format!(
+                "`descriptorType` must be `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE`, `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER` (`descriptorType` = {:?})",
+                v.descriptor_type
             ),
         );
     }

@@ -9,11 +9,9 @@ pub fn check_screen_surface_create_info_qnx(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkScreenSurfaceCreateInfoQNX-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkScreenSurfaceCreateInfoQNX-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())

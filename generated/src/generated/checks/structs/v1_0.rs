@@ -58,24 +58,20 @@ pub fn check_attachment_description(
                 || a.contains(vk::ImageAspectFlags::DEPTH)
         }) && matches!(v.load_op.as_raw(), 0) && matches!(v.initial_layout.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-06699",
-                format!(
-                    "If `format` includes a color or depth aspect and `loadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `loadOp` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.load_op, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-06699",
+            format!(
+                "If `format` includes a color or depth aspect and `loadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `loadOp` = {:?}, `initialLayout` = {:?})",
+                v.format, v.load_op, v.initial_layout
             ),
         );
     }
     if matches!(v.final_layout.as_raw(), 0 | 8) {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-finalLayout-00843",
-                format!(
-                    "`finalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`finalLayout` = {:?})",
-                    v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-finalLayout-00843",
+            format!(
+                "`finalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`finalLayout` = {:?})",
+                v.final_layout
             ),
         );
     }
@@ -85,13 +81,11 @@ pub fn check_attachment_description(
                 && !a.contains(vk::ImageAspectFlags::STENCIL)
         }) && matches!(v.initial_layout.as_raw(), 3 | 4)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03280",
-                format!(
-                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03280",
+            format!(
+                "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -101,13 +95,11 @@ pub fn check_attachment_description(
                 || a.contains(vk::ImageAspectFlags::STENCIL)
         }) && matches!(v.initial_layout.as_raw(), 2)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03281",
-                format!(
-                    "If `format` is a depth/stencil format, `initialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03281",
+            format!(
+                "If `format` is a depth/stencil format, `initialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -117,13 +109,11 @@ pub fn check_attachment_description(
                 && !a.contains(vk::ImageAspectFlags::STENCIL)
         }) && matches!(v.final_layout.as_raw(), 3 | 4)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03282",
-                format!(
-                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03282",
+            format!(
+                "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -133,13 +123,11 @@ pub fn check_attachment_description(
                 || a.contains(vk::ImageAspectFlags::STENCIL)
         }) && matches!(v.final_layout.as_raw(), 2)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03283",
-                format!(
-                    "If `format` is a depth/stencil format, `finalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03283",
+            format!(
+                "If `format` is a depth/stencil format, `finalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -148,13 +136,11 @@ pub fn check_attachment_description(
         && matches!(v.stencil_load_op.as_raw(), 0)
         && matches!(v.initial_layout.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-06700",
-                format!(
-                    "If `format` includes a stencil aspect and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `stencilLoadOp` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.stencil_load_op, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-06700",
+            format!(
+                "If `format` includes a stencil aspect and `stencilLoadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `stencilLoadOp` = {:?}, `initialLayout` = {:?})",
+                v.format, v.stencil_load_op, v.initial_layout
             ),
         );
     }
@@ -164,13 +150,11 @@ pub fn check_attachment_description(
                 && !a.contains(vk::ImageAspectFlags::DEPTH)
         }) && matches!(v.initial_layout.as_raw(), 1000241000 | 1000241001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03292",
-                format!(
-                    "If `format` is a depth/stencil format which includes only the stencil aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03292",
+            format!(
+                "If `format` is a depth/stencil format which includes only the stencil aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -180,13 +164,11 @@ pub fn check_attachment_description(
                 && !a.contains(vk::ImageAspectFlags::DEPTH)
         }) && matches!(v.final_layout.as_raw(), 1000241000 | 1000241001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03293",
-                format!(
-                    "If `format` is a depth/stencil format which includes only the stencil aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03293",
+            format!(
+                "If `format` is a depth/stencil format which includes only the stencil aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -197,13 +179,11 @@ pub fn check_attachment_description(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 1000117000 | 1000117001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-06487",
-                format!(
-                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-06487",
+            format!(
+                "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -214,13 +194,11 @@ pub fn check_attachment_description(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 1000117000 | 1000117001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-06488",
-                format!(
-                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-06488",
+            format!(
+                "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -229,13 +207,11 @@ pub fn check_attachment_description(
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03284",
-                format!(
-                    "If the `separateDepthStencilLayouts` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`initialLayout` = {:?})",
-                    v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03284",
+            format!(
+                "If the `separateDepthStencilLayouts` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`initialLayout` = {:?})",
+                v.initial_layout
             ),
         );
     }
@@ -244,13 +220,11 @@ pub fn check_attachment_description(
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03285",
-                format!(
-                    "If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`finalLayout` = {:?})",
-                    v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-separateDepthStencilLayouts-03285",
+            format!(
+                "If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`finalLayout` = {:?})",
+                v.final_layout
             ),
         );
     }
@@ -262,13 +236,11 @@ pub fn check_attachment_description(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03286",
-                format!(
-                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03286",
+            format!(
+                "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -280,13 +252,11 @@ pub fn check_attachment_description(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03287",
-                format!(
-                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03287",
+            format!(
+                "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -298,13 +268,11 @@ pub fn check_attachment_description(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 1000241002 | 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03290",
-                format!(
-                    "If `format` is a depth/stencil format which includes only the depth aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03290",
+            format!(
+                "If `format` is a depth/stencil format which includes only the depth aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -316,13 +284,11 @@ pub fn check_attachment_description(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 1000241002 | 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-format-03291",
-                format!(
-                    "If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-format-03291",
+            format!(
+                "If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -330,13 +296,11 @@ pub fn check_attachment_description(
         || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.initial_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-synchronization2-06908",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`initialLayout` = {:?})",
-                    v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-synchronization2-06908",
+            format!(
+                "If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`initialLayout` = {:?})",
+                v.initial_layout
             ),
         );
     }
@@ -344,13 +308,11 @@ pub fn check_attachment_description(
         || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.final_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription-synchronization2-06909",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`finalLayout` = {:?})",
-                    v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription-synchronization2-06909",
+            format!(
+                "If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`finalLayout` = {:?})",
+                v.final_layout
             ),
         );
     }
@@ -367,13 +329,11 @@ pub fn check_attachment_reference(
         "VUID-VkAttachmentReference-layout-parameter",
     )?;
     if v.attachment != u32::MAX && matches!(v.layout.as_raw(), 0 | 8 | 1000001002) {
-        return Err(
-            fail(
-                "VUID-VkAttachmentReference-layout-03077",
-                format!(
-                    "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
-                    v.attachment, v.layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentReference-layout-03077",
+            format!(
+                "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
+                v.attachment, v.layout
             ),
         );
     }
@@ -383,13 +343,11 @@ pub fn check_attachment_reference(
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentReference-separateDepthStencilLayouts-03313",
-                format!(
-                    "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
-                    v.attachment, v.layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentReference-separateDepthStencilLayouts-03313",
+            format!(
+                "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
+                v.attachment, v.layout
             ),
         );
     }
@@ -397,13 +355,11 @@ pub fn check_attachment_reference(
         || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentReference-synchronization2-06910",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`layout` = {:?})",
-                    v.layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentReference-synchronization2-06910",
+            format!(
+                "If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`layout` = {:?})",
+                v.layout
             ),
         );
     }
@@ -414,24 +370,18 @@ pub fn check_bind_sparse_info(v: &vk::BindSparseInfo<'_>, s: &Scope<'_>) -> Resu
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkBindSparseInfo-commonparent",
-                    "`pWaitSemaphores` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkBindSparseInfo-commonparent",
+                "`pWaitSemaphores` does not come from the VkDevice the command is called on",
             );
         }
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkBindSparseInfo-commonparent",
-                    "`pSignalSemaphores` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkBindSparseInfo-commonparent",
+                "`pSignalSemaphores` does not come from the VkDevice the command is called on",
             );
         }
     }
@@ -471,11 +421,9 @@ pub fn check_buffer_create_info(
         "VUID-VkBufferCreateInfo-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     crate::checks::enum_sharing_mode(
@@ -484,76 +432,62 @@ pub fn check_buffer_create_info(
         "VUID-VkBufferCreateInfo-sharingMode-parameter",
     )?;
     if v.size == 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-size-00912",
-                format!("`size` must be greater than `0` (`size` = {:?})", v.size),
-            ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-size-00912",
+            format!("`size` must be greater than `0` (`size` = {:?})", v.size),
         );
     }
     if matches!(v.sharing_mode.as_raw(), 1) && v.queue_family_index_count <= 1 {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-sharingMode-00914",
-                format!(
-                    "If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `queueFamilyIndexCount` must be greater than `1` (`sharingMode` = {:?}, `queueFamilyIndexCount` = {:?})",
-                    v.sharing_mode, v.queue_family_index_count
-                ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-sharingMode-00914",
+            format!(
+                "If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `queueFamilyIndexCount` must be greater than `1` (`sharingMode` = {:?}, `queueFamilyIndexCount` = {:?})",
+                v.sharing_mode, v.queue_family_index_count
             ),
         );
     }
     if !s.feature(|f| f.v10.sparse_binding) && (v.flags.as_raw() & 1) != 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-flags-00915",
-                format!(
-                    "If the `sparseBinding` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-flags-00915",
+            format!(
+                "If the `sparseBinding` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if !s.feature(|f| f.v10.sparse_residency_buffer) && (v.flags.as_raw() & 2) != 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-flags-00916",
-                format!(
-                    "If the `sparseResidencyBuffer` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-flags-00916",
+            format!(
+                "If the `sparseResidencyBuffer` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if !s.feature(|f| f.v10.sparse_residency_aliased) && (v.flags.as_raw() & 4) != 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-flags-00917",
-                format!(
-                    "If the `sparseResidencyAliased` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-flags-00917",
+            format!(
+                "If the `sparseResidencyAliased` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if (v.flags.as_raw() & 6) != 0 && (v.flags.as_raw() & 1) == 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-flags-00918",
-                format!(
-                    "If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-flags-00918",
+            format!(
+                "If `flags` contains `VK_BUFFER_CREATE_SPARSE_RESIDENCY_BIT` or `VK_BUFFER_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_BUFFER_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if !s.feature(|f| f.v11.protected_memory) && (v.flags.as_raw() & 8) != 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-flags-01887",
-                format!(
-                    "If the `protectedMemory` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_PROTECTED_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-flags-01887",
+            format!(
+                "If the `protectedMemory` feature is not enabled, `flags` must not contain `VK_BUFFER_CREATE_PROTECTED_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -564,13 +498,11 @@ pub fn check_buffer_create_info(
         && (v.flags.as_raw() & 16) != 0
         && !s.feature(|f| f.v12.buffer_device_address_capture_replay)
     {
-        return Err(
-            fail(
-                "VUID-VkBufferCreateInfo-flags-06549",
-                format!(
-                    "If `flags` includes `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkBufferCreateInfo-flags-06549",
+            format!(
+                "If `flags` includes `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT`, the `bufferDeviceAddressCaptureReplay` feature must be enabled (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -586,35 +518,29 @@ pub fn check_buffer_create_info(
 pub fn check_buffer_image_copy(v: &vk::BufferImageCopy, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.image_subresource, s)?;
     if v.image_extent.width == 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferImageCopy-imageExtent-06659",
-                format!(
-                    "`imageExtent.width` must not be 0 (`imageExtent.width` = {:?})", v
-                    .image_extent.width
-                ),
+        return refuse(
+            "VUID-VkBufferImageCopy-imageExtent-06659",
+            format!(
+                "`imageExtent.width` must not be 0 (`imageExtent.width` = {:?})", v
+                .image_extent.width
             ),
         );
     }
     if v.image_extent.height == 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferImageCopy-imageExtent-06660",
-                format!(
-                    "`imageExtent.height` must not be 0 (`imageExtent.height` = {:?})", v
-                    .image_extent.height
-                ),
+        return refuse(
+            "VUID-VkBufferImageCopy-imageExtent-06660",
+            format!(
+                "`imageExtent.height` must not be 0 (`imageExtent.height` = {:?})", v
+                .image_extent.height
             ),
         );
     }
     if v.image_extent.depth == 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferImageCopy-imageExtent-06661",
-                format!(
-                    "`imageExtent.depth` must not be 0 (`imageExtent.depth` = {:?})", v
-                    .image_extent.depth
-                ),
+        return refuse(
+            "VUID-VkBufferImageCopy-imageExtent-06661",
+            format!(
+                "`imageExtent.depth` must not be 0 (`imageExtent.depth` = {:?})", v
+                .image_extent.depth
             ),
         );
     }
@@ -627,24 +553,20 @@ pub fn check_buffer_memory_barrier(
     s: &Scope<'_>,
 ) -> Result<()> {
     if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier-offset-01187",
-                format!(
-                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
-                    v.offset
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier-offset-01187",
+            format!(
+                "`offset` must be less than the size of `buffer` (`offset` = {:?})", v
+                .offset
             ),
         );
     }
     if v.size != u64::MAX && v.size == 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier-size-01188",
-                format!(
-                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0` (`size` = {:?})",
-                    v.size
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier-size-01188",
+            format!(
+                "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0` (`size` = {:?})",
+                v.size
             ),
         );
     }
@@ -653,23 +575,18 @@ pub fn check_buffer_memory_barrier(
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.size as i128) > (r.size as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier-size-01189",
-                format!(
-                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be less than or equal to than the size of `buffer` minus `offset` (`size` = {:?}, `offset` = {:?})",
-                    v.size, v.offset
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier-size-01189",
+            format!(
+                "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be less than or equal to than the size of `buffer` minus `offset` (`size` = {:?}, `offset` = {:?})",
+                v.size, v.offset
             ),
         );
     }
     if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier-buffer-01931",
-                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier-buffer-01931",
+            "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     Ok(())
@@ -680,11 +597,9 @@ pub fn check_buffer_view_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferViewCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkBufferViewCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_format(
@@ -693,24 +608,20 @@ pub fn check_buffer_view_create_info(
         "VUID-VkBufferViewCreateInfo-format-parameter",
     )?;
     if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
-        return Err(
-            fail(
-                "VUID-VkBufferViewCreateInfo-offset-00925",
-                format!(
-                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
-                    v.offset
-                ),
+        return refuse(
+            "VUID-VkBufferViewCreateInfo-offset-00925",
+            format!(
+                "`offset` must be less than the size of `buffer` (`offset` = {:?})", v
+                .offset
             ),
         );
     }
     if v.range != u64::MAX && v.range == 0 {
-        return Err(
-            fail(
-                "VUID-VkBufferViewCreateInfo-range-00928",
-                format!(
-                    "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be greater than `0` (`range` = {:?})",
-                    v.range
-                ),
+        return refuse(
+            "VUID-VkBufferViewCreateInfo-range-00928",
+            format!(
+                "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be greater than `0` (`range` = {:?})",
+                v.range
             ),
         );
     }
@@ -719,23 +630,18 @@ pub fn check_buffer_view_create_info(
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.range as i128) > (r.size as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkBufferViewCreateInfo-offset-00931",
-                format!(
-                    "If `range` is not equal to `VK_WHOLE_SIZE`, `offset` + `range` must be less than or equal to the size of `buffer` (`range` = {:?}, `offset` = {:?})",
-                    v.range, v.offset
-                ),
+        return refuse(
+            "VUID-VkBufferViewCreateInfo-offset-00931",
+            format!(
+                "If `range` is not equal to `VK_WHOLE_SIZE`, `offset` + `range` must be less than or equal to the size of `buffer` (`range` = {:?}, `offset` = {:?})",
+                v.range, v.offset
             ),
         );
     }
     if s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
-        return Err(
-            fail(
-                "VUID-VkBufferViewCreateInfo-buffer-00935",
-                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBufferViewCreateInfo-buffer-00935",
+            "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     crate::checks::chain(
@@ -754,32 +660,26 @@ pub fn check_clear_attachment(v: &vk::ClearAttachment, s: &Scope<'_>) -> Result<
         "VUID-VkClearAttachment-aspectMask-parameter",
     )?;
     if v.aspect_mask.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkClearAttachment-aspectMask-requiredbitmask",
-                "`aspectMask` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkClearAttachment-aspectMask-requiredbitmask",
+            "`aspectMask` is empty",
         );
     }
     if (v.aspect_mask.as_raw() & 1) != 0 && (v.aspect_mask.as_raw() & 6) != 0 {
-        return Err(
-            fail(
-                "VUID-VkClearAttachment-aspectMask-00019",
-                format!(
-                    "If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, it must not include `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT` (`aspectMask` = {:?})",
-                    v.aspect_mask
-                ),
+        return refuse(
+            "VUID-VkClearAttachment-aspectMask-00019",
+            format!(
+                "If `aspectMask` includes `VK_IMAGE_ASPECT_COLOR_BIT`, it must not include `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT` (`aspectMask` = {:?})",
+                v.aspect_mask
             ),
         );
     }
     if (v.aspect_mask.as_raw() & 8) != 0 {
-        return Err(
-            fail(
-                "VUID-VkClearAttachment-aspectMask-00020",
-                format!(
-                    "`aspectMask` must not include `VK_IMAGE_ASPECT_METADATA_BIT` (`aspectMask` = {:?})",
-                    v.aspect_mask
-                ),
+        return refuse(
+            "VUID-VkClearAttachment-aspectMask-00020",
+            format!(
+                "`aspectMask` must not include `VK_IMAGE_ASPECT_METADATA_BIT` (`aspectMask` = {:?})",
+                v.aspect_mask
             ),
         );
     }
@@ -794,13 +694,11 @@ pub fn check_clear_depth_stencil_value(
         && ((v.depth as f64).is_nan() || v.depth < 0.0 || (v.depth as f64).is_nan()
             || v.depth > 1.0)
     {
-        return Err(
-            fail(
-                "VUID-VkClearDepthStencilValue-depth-02506",
-                format!(
-                    "`depth` must be between `0.0` and `1.0`, inclusive (`depth` = {:?})",
-                    v.depth
-                ),
+        return refuse(
+            "VUID-VkClearDepthStencilValue-depth-02506",
+            format!(
+                "`depth` must be between `0.0` and `1.0`, inclusive (`depth` = {:?})", v
+                .depth
             ),
         );
     }
@@ -849,32 +747,24 @@ pub fn check_command_buffer_inheritance_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.render_pass != Default::default() && !s.owned_by_device(v.render_pass) {
-        return Err(
-            fail(
-                "VUID-VkCommandBufferInheritanceInfo-commonparent",
-                "`renderPass` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCommandBufferInheritanceInfo-commonparent",
+            "`renderPass` does not come from the VkDevice the command is called on",
         );
     }
     if v.framebuffer != Default::default() && !s.owned_by_device(v.framebuffer) {
-        return Err(
-            fail(
-                "VUID-VkCommandBufferInheritanceInfo-commonparent",
-                "`framebuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCommandBufferInheritanceInfo-commonparent",
+            "`framebuffer` does not come from the VkDevice the command is called on",
         );
     }
     if !s.feature(|f| f.v10.inherited_queries) && !matches!(v.occlusion_query_enable, 0)
     {
-        return Err(
-            fail(
-                "VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056",
-                format!(
-                    "If the `inheritedQueries` feature is not enabled, `occlusionQueryEnable` must be `VK_FALSE` (`occlusionQueryEnable` = {:?})",
-                    v.occlusion_query_enable
-                ),
+        return refuse(
+            "VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056",
+            format!(
+                "If the `inheritedQueries` feature is not enabled, `occlusionQueryEnable` must be `VK_FALSE` (`occlusionQueryEnable` = {:?})",
+                v.occlusion_query_enable
             ),
         );
     }
@@ -933,35 +823,27 @@ pub fn check_compute_pipeline_create_info(
         "VUID-VkComputePipelineCreateInfo-flags-parameter",
     )?;
     if v.layout != Default::default() && !s.owned_by_device(v.layout) {
-        return Err(
-            fail(
-                "VUID-VkComputePipelineCreateInfo-commonparent",
-                "`layout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkComputePipelineCreateInfo-commonparent",
+            "`layout` does not come from the VkDevice the command is called on",
         );
     }
     if v.base_pipeline_handle != Default::default()
         && !s.owned_by_device(v.base_pipeline_handle)
     {
-        return Err(
-            fail(
-                "VUID-VkComputePipelineCreateInfo-commonparent",
-                "`basePipelineHandle` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkComputePipelineCreateInfo-commonparent",
+            "`basePipelineHandle` does not come from the VkDevice the command is called on",
         );
     }
     if s.exts.has(origin::VK_NV_RAY_TRACING_MOTION_BLUR)
         && (v.flags.as_raw() & 1048576) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkComputePipelineCreateInfo-flags-04945",
-                format!(
-                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkComputePipelineCreateInfo-flags-04945",
+            format!(
+                "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -970,25 +852,21 @@ pub fn check_compute_pipeline_create_info(
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875",
-                format!(
-                    "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875",
+            format!(
+                "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP) && (v.flags.as_raw() & 16777216) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkComputePipelineCreateInfo-flags-07367",
-                format!(
-                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkComputePipelineCreateInfo-flags-07367",
+            format!(
+                "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -1007,21 +885,15 @@ pub fn check_copy_descriptor_set(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.src_set != Default::default() && !s.owned_by_device(v.src_set) {
-        return Err(
-            fail(
-                "VUID-VkCopyDescriptorSet-commonparent",
-                "`srcSet` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyDescriptorSet-commonparent",
+            "`srcSet` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_set != Default::default() && !s.owned_by_device(v.dst_set) {
-        return Err(
-            fail(
-                "VUID-VkCopyDescriptorSet-commonparent",
-                "`dstSet` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyDescriptorSet-commonparent",
+            "`dstSet` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -1032,24 +904,20 @@ pub fn check_descriptor_buffer_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128)) {
-        return Err(
-            fail(
-                "VUID-VkDescriptorBufferInfo-offset-00340",
-                format!(
-                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
-                    v.offset
-                ),
+        return refuse(
+            "VUID-VkDescriptorBufferInfo-offset-00340",
+            format!(
+                "`offset` must be less than the size of `buffer` (`offset` = {:?})", v
+                .offset
             ),
         );
     }
     if v.range != u64::MAX && v.range == 0 {
-        return Err(
-            fail(
-                "VUID-VkDescriptorBufferInfo-range-00341",
-                format!(
-                    "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be greater than `0` (`range` = {:?})",
-                    v.range
-                ),
+        return refuse(
+            "VUID-VkDescriptorBufferInfo-range-00341",
+            format!(
+                "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be greater than `0` (`range` = {:?})",
+                v.range
             ),
         );
     }
@@ -1058,13 +926,11 @@ pub fn check_descriptor_buffer_info(
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.range as i128) > (r.size as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkDescriptorBufferInfo-range-00342",
-                format!(
-                    "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be less than or equal to the size of `buffer` minus `offset` (`range` = {:?}, `offset` = {:?})",
-                    v.range, v.offset
-                ),
+        return refuse(
+            "VUID-VkDescriptorBufferInfo-range-00342",
+            format!(
+                "If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be less than or equal to the size of `buffer` minus `offset` (`range` = {:?}, `offset` = {:?})",
+                v.range, v.offset
             ),
         );
     }
@@ -1076,21 +942,15 @@ pub fn check_descriptor_image_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.sampler != Default::default() && !s.owned_by_device(v.sampler) {
-        return Err(
-            fail(
-                "VUID-VkDescriptorImageInfo-commonparent",
-                "`sampler` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorImageInfo-commonparent",
+            "`sampler` does not come from the VkDevice the command is called on",
         );
     }
     if v.image_view != Default::default() && !s.owned_by_device(v.image_view) {
-        return Err(
-            fail(
-                "VUID-VkDescriptorImageInfo-commonparent",
-                "`imageView` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorImageInfo-commonparent",
+            "`imageView` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -1106,13 +966,9 @@ pub fn check_descriptor_pool_create_info(
         "VUID-VkDescriptorPoolCreateInfo-flags-parameter",
     )?;
     if v.max_sets == 0 {
-        return Err(
-            fail(
-                "VUID-VkDescriptorPoolCreateInfo-maxSets-00301",
-                format!(
-                    "`maxSets` must be greater than `0` (`maxSets` = {:?})", v.max_sets
-                ),
-            ),
+        return refuse(
+            "VUID-VkDescriptorPoolCreateInfo-maxSets-00301",
+            format!("`maxSets` must be greater than `0` (`maxSets` = {:?})", v.max_sets),
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -1138,13 +994,11 @@ pub fn check_descriptor_pool_size(
         "VUID-VkDescriptorPoolSize-type-parameter",
     )?;
     if v.descriptor_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkDescriptorPoolSize-descriptorCount-00302",
-                format!(
-                    "`descriptorCount` must be greater than `0` (`descriptorCount` = {:?})",
-                    v.descriptor_count
-                ),
+        return refuse(
+            "VUID-VkDescriptorPoolSize-descriptorCount-00302",
+            format!(
+                "`descriptorCount` must be greater than `0` (`descriptorCount` = {:?})",
+                v.descriptor_count
             ),
         );
     }
@@ -1152,13 +1006,11 @@ pub fn check_descriptor_pool_size(
         || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK))
         && matches!(v.ty.as_raw(), 1000138000) && v.descriptor_count % 4 != 0
     {
-        return Err(
-            fail(
-                "VUID-VkDescriptorPoolSize-type-02218",
-                format!(
-                    "If `type` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4` (`type` = {:?}, `descriptorCount` = {:?})",
-                    v.ty, v.descriptor_count
-                ),
+        return refuse(
+            "VUID-VkDescriptorPoolSize-type-02218",
+            format!(
+                "If `type` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4` (`type` = {:?}, `descriptorCount` = {:?})",
+                v.ty, v.descriptor_count
             ),
         );
     }
@@ -1170,31 +1022,23 @@ pub fn check_descriptor_set_allocate_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.descriptor_set_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-arraylength",
-                "`descriptorSetCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-arraylength",
+            "`descriptorSetCount` is 0",
         );
     }
     if v.descriptor_pool != Default::default() && !s.owned_by_device(v.descriptor_pool) {
-        return Err(
-            fail(
-                "VUID-VkDescriptorSetAllocateInfo-commonparent",
-                "`descriptorPool` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorSetAllocateInfo-commonparent",
+            "`descriptorPool` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_set_layouts, v.descriptor_set_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkDescriptorSetAllocateInfo-commonparent",
-                    "`pSetLayouts` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkDescriptorSetAllocateInfo-commonparent",
+                "`pSetLayouts` does not come from the VkDevice the command is called on",
             );
         }
     }
@@ -1221,13 +1065,11 @@ pub fn check_descriptor_set_layout_binding(
         && !s.feature(|f| f.v13.inline_uniform_block)
         && matches!(v.descriptor_type.as_raw(), 1000138000)
     {
-        return Err(
-            fail(
-                "VUID-VkDescriptorSetLayoutBinding-descriptorType-04604",
-                format!(
-                    "If the `inlineUniformBlock` feature is not enabled, `descriptorType` must not be `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` (`descriptorType` = {:?})",
-                    v.descriptor_type
-                ),
+        return refuse(
+            "VUID-VkDescriptorSetLayoutBinding-descriptorType-04604",
+            format!(
+                "If the `inlineUniformBlock` feature is not enabled, `descriptorType` must not be `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` (`descriptorType` = {:?})",
+                v.descriptor_type
             ),
         );
     }
@@ -1236,13 +1078,11 @@ pub fn check_descriptor_set_layout_binding(
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {
-        return Err(
-            fail(
-                "VUID-VkDescriptorSetLayoutBinding-descriptorType-02209",
-                format!(
-                    "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4` (`descriptorType` = {:?}, `descriptorCount` = {:?})",
-                    v.descriptor_type, v.descriptor_count
-                ),
+        return refuse(
+            "VUID-VkDescriptorSetLayoutBinding-descriptorType-02209",
+            format!(
+                "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be a multiple of `4` (`descriptorType` = {:?}, `descriptorCount` = {:?})",
+                v.descriptor_type, v.descriptor_count
             ),
         );
     }
@@ -1276,16 +1116,12 @@ pub fn check_device_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail("VUID-VkDeviceCreateInfo-flags-zerobitmask", "`flags` is not 0".into()),
-        );
+        return refuse("VUID-VkDeviceCreateInfo-flags-zerobitmask", "`flags` is not 0");
     }
     if v.queue_create_info_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength",
-                "`queueCreateInfoCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDeviceCreateInfo-queueCreateInfoCount-arraylength",
+            "`queueCreateInfoCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -1311,11 +1147,9 @@ pub fn check_device_queue_create_info(
         "VUID-VkDeviceQueueCreateInfo-flags-parameter",
     )?;
     if v.queue_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkDeviceQueueCreateInfo-queueCount-arraylength",
-                "`queueCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDeviceQueueCreateInfo-queueCount-arraylength",
+            "`queueCount` is 0",
         );
     }
     crate::checks::chain(
@@ -1335,13 +1169,11 @@ pub fn check_dispatch_indirect_command(
         .limits()
         .is_some_and(|l| (v.x as i128) > (l.max_compute_work_group_count[0] as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkDispatchIndirectCommand-x-00417",
-                format!(
-                    "`x` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`x` = {:?})",
-                    v.x
-                ),
+        return refuse(
+            "VUID-VkDispatchIndirectCommand-x-00417",
+            format!(
+                "`x` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] (`x` = {:?})",
+                v.x
             ),
         );
     }
@@ -1349,13 +1181,11 @@ pub fn check_dispatch_indirect_command(
         .limits()
         .is_some_and(|l| (v.y as i128) > (l.max_compute_work_group_count[1] as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkDispatchIndirectCommand-y-00418",
-                format!(
-                    "`y` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`y` = {:?})",
-                    v.y
-                ),
+        return refuse(
+            "VUID-VkDispatchIndirectCommand-y-00418",
+            format!(
+                "`y` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] (`y` = {:?})",
+                v.y
             ),
         );
     }
@@ -1363,13 +1193,11 @@ pub fn check_dispatch_indirect_command(
         .limits()
         .is_some_and(|l| (v.z as i128) > (l.max_compute_work_group_count[2] as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkDispatchIndirectCommand-z-00419",
-                format!(
-                    "`z` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`z` = {:?})",
-                    v.z
-                ),
+        return refuse(
+            "VUID-VkDispatchIndirectCommand-z-00419",
+            format!(
+                "`z` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`z` = {:?})",
+                v.z
             ),
         );
     }
@@ -1381,13 +1209,11 @@ pub fn check_draw_indexed_indirect_command(
     s: &Scope<'_>,
 ) -> Result<()> {
     if !s.feature(|f| f.v10.draw_indirect_first_instance) && v.first_instance != 0 {
-        return Err(
-            fail(
-                "VUID-VkDrawIndexedIndirectCommand-firstInstance-00554",
-                format!(
-                    "If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0` (`firstInstance` = {:?})",
-                    v.first_instance
-                ),
+        return refuse(
+            "VUID-VkDrawIndexedIndirectCommand-firstInstance-00554",
+            format!(
+                "If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0` (`firstInstance` = {:?})",
+                v.first_instance
             ),
         );
     }
@@ -1399,13 +1225,11 @@ pub fn check_draw_indirect_command(
     s: &Scope<'_>,
 ) -> Result<()> {
     if !s.feature(|f| f.v10.draw_indirect_first_instance) && v.first_instance != 0 {
-        return Err(
-            fail(
-                "VUID-VkDrawIndirectCommand-firstInstance-00501",
-                format!(
-                    "If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0` (`firstInstance` = {:?})",
-                    v.first_instance
-                ),
+        return refuse(
+            "VUID-VkDrawIndirectCommand-firstInstance-00501",
+            format!(
+                "If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0` (`firstInstance` = {:?})",
+                v.first_instance
             ),
         );
     }
@@ -1458,87 +1282,69 @@ pub fn check_framebuffer_create_info(
         "VUID-VkFramebufferCreateInfo-flags-parameter",
     )?;
     if v.render_pass != Default::default() && !s.owned_by_device(v.render_pass) {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-commonparent",
-                "`renderPass` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-commonparent",
+            "`renderPass` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_attachments, v.attachment_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkFramebufferCreateInfo-commonparent",
-                    "`pAttachments` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkFramebufferCreateInfo-commonparent",
+                "`pAttachments` does not come from the VkDevice the command is called on",
             );
         }
     }
     if v.width == 0 {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-width-00885",
-                format!("`width` must be greater than `0` (`width` = {:?})", v.width),
-            ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-width-00885",
+            format!("`width` must be greater than `0` (`width` = {:?})", v.width),
         );
     }
     if s.limits().is_some_and(|l| (v.width as i128) > (l.max_framebuffer_width as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-width-00886",
-                format!(
-                    "`width` must be less than or equal to `maxFramebufferWidth` (`width` = {:?})",
-                    v.width
-                ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-width-00886",
+            format!(
+                "`width` must be less than or equal to `maxFramebufferWidth` (`width` = {:?})",
+                v.width
             ),
         );
     }
     if v.height == 0 {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-height-00887",
-                format!("`height` must be greater than `0` (`height` = {:?})", v.height),
-            ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-height-00887",
+            format!("`height` must be greater than `0` (`height` = {:?})", v.height),
         );
     }
     if s
         .limits()
         .is_some_and(|l| (v.height as i128) > (l.max_framebuffer_height as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-height-00888",
-                format!(
-                    "`height` must be less than or equal to `maxFramebufferHeight` (`height` = {:?})",
-                    v.height
-                ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-height-00888",
+            format!(
+                "`height` must be less than or equal to `maxFramebufferHeight` (`height` = {:?})",
+                v.height
             ),
         );
     }
     if v.layers == 0 {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-layers-00889",
-                format!("`layers` must be greater than `0` (`layers` = {:?})", v.layers),
-            ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-layers-00889",
+            format!("`layers` must be greater than `0` (`layers` = {:?})", v.layers),
         );
     }
     if s
         .limits()
         .is_some_and(|l| (v.layers as i128) > (l.max_framebuffer_layers as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-layers-00890",
-                format!(
-                    "`layers` must be less than or equal to `maxFramebufferLayers` (`layers` = {:?})",
-                    v.layers
-                ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-layers-00890",
+            format!(
+                "`layers` must be less than or equal to `maxFramebufferLayers` (`layers` = {:?})",
+                v.layers
             ),
         );
     }
@@ -1546,13 +1352,11 @@ pub fn check_framebuffer_create_info(
         || s.exts.has(origin::VK_KHR_IMAGELESS_FRAMEBUFFER))
         && !s.feature(|f| f.v12.imageless_framebuffer) && (v.flags.as_raw() & 1) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkFramebufferCreateInfo-flags-03189",
-                format!(
-                    "If the `imagelessFramebuffer` feature is not enabled, `flags` must not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkFramebufferCreateInfo-flags-03189",
+            format!(
+                "If the `imagelessFramebuffer` feature is not enabled, `flags` must not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -1575,44 +1379,33 @@ pub fn check_graphics_pipeline_create_info(
         "VUID-VkGraphicsPipelineCreateInfo-flags-parameter",
     )?;
     if v.layout != Default::default() && !s.owned_by_device(v.layout) {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineCreateInfo-commonparent",
-                "`layout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-commonparent",
+            "`layout` does not come from the VkDevice the command is called on",
         );
     }
     if v.render_pass != Default::default() && !s.owned_by_device(v.render_pass) {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineCreateInfo-commonparent",
-                "`renderPass` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-commonparent",
+            "`renderPass` does not come from the VkDevice the command is called on",
         );
     }
     if v.base_pipeline_handle != Default::default()
         && !s.owned_by_device(v.base_pipeline_handle)
     {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineCreateInfo-commonparent",
-                "`basePipelineHandle` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-commonparent",
+            "`basePipelineHandle` does not come from the VkDevice the command is called on",
         );
     }
     if s.exts.has(origin::VK_NV_RAY_TRACING_MOTION_BLUR)
         && (v.flags.as_raw() & 1048576) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineCreateInfo-flags-04947",
-                format!(
-                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-flags-04947",
+            format!(
+                "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_ALLOW_MOTION_BIT_NV` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -1621,36 +1414,30 @@ pub fn check_graphics_pipeline_create_info(
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 768) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineCreateInfo-pipelineCreationCacheControl-02878",
-                format!(
-                    "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-pipelineCreationCacheControl-02878",
+            format!(
+                "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if !(s.exts.has(origin::VK_EXT_GRAPHICS_PIPELINE_LIBRARY)) && v.stage_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineCreateInfo-stageCount-06604",
-                format!(
-                    "`stageCount` must be greater than `0` (`stageCount` = {:?})", v
-                    .stage_count
-                ),
+        return refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-stageCount-06604",
+            format!(
+                "`stageCount` must be greater than `0` (`stageCount` = {:?})", v
+                .stage_count
             ),
         );
     }
     if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP) && (v.flags.as_raw() & 16777216) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkGraphicsPipelineCreateInfo-flags-07401",
-                format!(
-                    "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkGraphicsPipelineCreateInfo-flags-07401",
+            format!(
+                "`flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -1742,35 +1529,26 @@ pub fn check_image_copy(v: &vk::ImageCopy, s: &Scope<'_>) -> Result<()> {
     crate::checks::check_image_subresource_layers(&v.src_subresource, s)?;
     crate::checks::check_image_subresource_layers(&v.dst_subresource, s)?;
     if v.extent.width == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCopy-extent-06668",
-                format!(
-                    "`extent.width` must not be 0 (`extent.width` = {:?})", v.extent
-                    .width
-                ),
+        return refuse(
+            "VUID-VkImageCopy-extent-06668",
+            format!(
+                "`extent.width` must not be 0 (`extent.width` = {:?})", v.extent.width
             ),
         );
     }
     if v.extent.height == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCopy-extent-06669",
-                format!(
-                    "`extent.height` must not be 0 (`extent.height` = {:?})", v.extent
-                    .height
-                ),
+        return refuse(
+            "VUID-VkImageCopy-extent-06669",
+            format!(
+                "`extent.height` must not be 0 (`extent.height` = {:?})", v.extent.height
             ),
         );
     }
     if v.extent.depth == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCopy-extent-06670",
-                format!(
-                    "`extent.depth` must not be 0 (`extent.depth` = {:?})", v.extent
-                    .depth
-                ),
+        return refuse(
+            "VUID-VkImageCopy-extent-06670",
+            format!(
+                "`extent.depth` must not be 0 (`extent.depth` = {:?})", v.extent.depth
             ),
         );
     }
@@ -1810,11 +1588,9 @@ pub fn check_image_create_info(
         "VUID-VkImageCreateInfo-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkImageCreateInfo-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     crate::checks::enum_sharing_mode(
@@ -1828,195 +1604,160 @@ pub fn check_image_create_info(
         "VUID-VkImageCreateInfo-initialLayout-parameter",
     )?;
     if matches!(v.sharing_mode.as_raw(), 1) && v.queue_family_index_count <= 1 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-sharingMode-00942",
-                format!(
-                    "If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `queueFamilyIndexCount` must be greater than `1` (`sharingMode` = {:?}, `queueFamilyIndexCount` = {:?})",
-                    v.sharing_mode, v.queue_family_index_count
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-sharingMode-00942",
+            format!(
+                "If `sharingMode` is `VK_SHARING_MODE_CONCURRENT`, `queueFamilyIndexCount` must be greater than `1` (`sharingMode` = {:?}, `queueFamilyIndexCount` = {:?})",
+                v.sharing_mode, v.queue_family_index_count
             ),
         );
     }
     if v.extent.width == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-extent-00944",
-                format!(
-                    "`extent.width` must be greater than `0` (`extent.width` = {:?})", v
-                    .extent.width
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-extent-00944",
+            format!(
+                "`extent.width` must be greater than `0` (`extent.width` = {:?})", v
+                .extent.width
             ),
         );
     }
     if v.extent.height == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-extent-00945",
-                format!(
-                    "`extent.height` must be greater than `0` (`extent.height` = {:?})",
-                    v.extent.height
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-extent-00945",
+            format!(
+                "`extent.height` must be greater than `0` (`extent.height` = {:?})", v
+                .extent.height
             ),
         );
     }
     if v.extent.depth == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-extent-00946",
-                format!(
-                    "`extent.depth` must be greater than `0` (`extent.depth` = {:?})", v
-                    .extent.depth
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-extent-00946",
+            format!(
+                "`extent.depth` must be greater than `0` (`extent.depth` = {:?})", v
+                .extent.depth
             ),
         );
     }
     if v.mip_levels == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-mipLevels-00947",
-                format!(
-                    "`mipLevels` must be greater than `0` (`mipLevels` = {:?})", v
-                    .mip_levels
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-mipLevels-00947",
+            format!(
+                "`mipLevels` must be greater than `0` (`mipLevels` = {:?})", v.mip_levels
             ),
         );
     }
     if v.array_layers == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-arrayLayers-00948",
-                format!(
-                    "`arrayLayers` must be greater than `0` (`arrayLayers` = {:?})", v
-                    .array_layers
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-arrayLayers-00948",
+            format!(
+                "`arrayLayers` must be greater than `0` (`arrayLayers` = {:?})", v
+                .array_layers
             ),
         );
     }
     if (v.flags.as_raw() & 16) != 0 && !matches!(v.image_type.as_raw(), 1) {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-flags-00949",
-                format!(
-                    "If `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `imageType` must be `VK_IMAGE_TYPE_2D` (`flags` = {:?}, `imageType` = {:?})",
-                    v.flags, v.image_type
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-flags-00949",
+            format!(
+                "If `flags` contains `VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT`, `imageType` must be `VK_IMAGE_TYPE_2D` (`flags` = {:?}, `imageType` = {:?})",
+                v.flags, v.image_type
             ),
         );
     }
     if matches!(v.image_type.as_raw(), 1) && v.extent.depth != 1 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00957",
-                format!(
-                    "If `imageType` is `VK_IMAGE_TYPE_2D`, `extent.depth` must be `1` (`imageType` = {:?}, `extent.depth` = {:?})",
-                    v.image_type, v.extent.depth
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00957",
+            format!(
+                "If `imageType` is `VK_IMAGE_TYPE_2D`, `extent.depth` must be `1` (`imageType` = {:?}, `extent.depth` = {:?})",
+                v.image_type, v.extent.depth
             ),
         );
     }
     if matches!(v.image_type.as_raw(), 2) && v.array_layers != 1 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00961",
-                format!(
-                    "If `imageType` is `VK_IMAGE_TYPE_3D`, `arrayLayers` must be `1` (`imageType` = {:?}, `arrayLayers` = {:?})",
-                    v.image_type, v.array_layers
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00961",
+            format!(
+                "If `imageType` is `VK_IMAGE_TYPE_3D`, `arrayLayers` must be `1` (`imageType` = {:?}, `arrayLayers` = {:?})",
+                v.image_type, v.array_layers
             ),
         );
     }
     if (v.usage.as_raw() & 64) != 0 && (v.usage.as_raw() & 3997455) != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-usage-00963",
-                format!(
-                    "If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, then bits other than `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` must not be set (`usage` = {:?})",
-                    v.usage
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-usage-00963",
+            format!(
+                "If `usage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, then bits other than `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`, `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`, and `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` must not be set (`usage` = {:?})",
+                v.usage
             ),
         );
     }
     if !s.feature(|f| f.v10.shader_storage_image_multisample)
         && (v.usage.as_raw() & 8) != 0 && !matches!(v.samples.as_raw(), 1)
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-usage-00968",
-                format!(
-                    "If the `shaderStorageImageMultisample` feature is not enabled, and `usage` contains `VK_IMAGE_USAGE_STORAGE_BIT`, `samples` must be `VK_SAMPLE_COUNT_1_BIT` (`usage` = {:?}, `samples` = {:?})",
-                    v.usage, v.samples
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-usage-00968",
+            format!(
+                "If the `shaderStorageImageMultisample` feature is not enabled, and `usage` contains `VK_IMAGE_USAGE_STORAGE_BIT`, `samples` must be `VK_SAMPLE_COUNT_1_BIT` (`usage` = {:?}, `samples` = {:?})",
+                v.usage, v.samples
             ),
         );
     }
     if !s.feature(|f| f.v10.sparse_binding) && (v.flags.as_raw() & 1) != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-flags-00969",
-                format!(
-                    "If the `sparseBinding` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-flags-00969",
+            format!(
+                "If the `sparseBinding` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if !s.feature(|f| f.v10.sparse_residency_aliased) && (v.flags.as_raw() & 4) != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-flags-01924",
-                format!(
-                    "If the `sparseResidencyAliased` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-flags-01924",
+            format!(
+                "If the `sparseResidencyAliased` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if matches!(v.tiling.as_raw(), 1) && (v.flags.as_raw() & 2) != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-tiling-04121",
-                format!(
-                    "If `tiling` is `VK_IMAGE_TILING_LINEAR`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`tiling` = {:?}, `flags` = {:?})",
-                    v.tiling, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-tiling-04121",
+            format!(
+                "If `tiling` is `VK_IMAGE_TILING_LINEAR`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`tiling` = {:?}, `flags` = {:?})",
+                v.tiling, v.flags
             ),
         );
     }
     if matches!(v.image_type.as_raw(), 0) && (v.flags.as_raw() & 2) != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00970",
-                format!(
-                    "If `imageType` is `VK_IMAGE_TYPE_1D`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `flags` = {:?})",
-                    v.image_type, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00970",
+            format!(
+                "If `imageType` is `VK_IMAGE_TYPE_1D`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `flags` = {:?})",
+                v.image_type, v.flags
             ),
         );
     }
     if !s.feature(|f| f.v10.sparse_residency_image2_d)
         && matches!(v.image_type.as_raw(), 1) && (v.flags.as_raw() & 2) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00971",
-                format!(
-                    "If the `sparseResidencyImage2D` feature is not enabled, and `imageType` is `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `flags` = {:?})",
-                    v.image_type, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00971",
+            format!(
+                "If the `sparseResidencyImage2D` feature is not enabled, and `imageType` is `VK_IMAGE_TYPE_2D`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `flags` = {:?})",
+                v.image_type, v.flags
             ),
         );
     }
     if !s.feature(|f| f.v10.sparse_residency_image3_d)
         && matches!(v.image_type.as_raw(), 2) && (v.flags.as_raw() & 2) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00972",
-                format!(
-                    "If the `sparseResidencyImage3D` feature is not enabled, and `imageType` is `VK_IMAGE_TYPE_3D`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `flags` = {:?})",
-                    v.image_type, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00972",
+            format!(
+                "If the `sparseResidencyImage3D` feature is not enabled, and `imageType` is `VK_IMAGE_TYPE_3D`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `flags` = {:?})",
+                v.image_type, v.flags
             ),
         );
     }
@@ -2024,13 +1765,11 @@ pub fn check_image_create_info(
         && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 2)
         && (v.flags.as_raw() & 2) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00973",
-                format!(
-                    "If the `sparseResidency2Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_2_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
-                    v.image_type, v.samples, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00973",
+            format!(
+                "If the `sparseResidency2Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_2_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
+                v.image_type, v.samples, v.flags
             ),
         );
     }
@@ -2038,13 +1777,11 @@ pub fn check_image_create_info(
         && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 4)
         && (v.flags.as_raw() & 2) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00974",
-                format!(
-                    "If the `sparseResidency4Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_4_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
-                    v.image_type, v.samples, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00974",
+            format!(
+                "If the `sparseResidency4Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_4_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
+                v.image_type, v.samples, v.flags
             ),
         );
     }
@@ -2052,13 +1789,11 @@ pub fn check_image_create_info(
         && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 8)
         && (v.flags.as_raw() & 2) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00975",
-                format!(
-                    "If the `sparseResidency8Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_8_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
-                    v.image_type, v.samples, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00975",
+            format!(
+                "If the `sparseResidency8Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_8_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
+                v.image_type, v.samples, v.flags
             ),
         );
     }
@@ -2066,85 +1801,70 @@ pub fn check_image_create_info(
         && matches!(v.image_type.as_raw(), 1) && matches!(v.samples.as_raw(), 16)
         && (v.flags.as_raw() & 2) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-imageType-00976",
-                format!(
-                    "If the `sparseResidency16Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_16_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
-                    v.image_type, v.samples, v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-imageType-00976",
+            format!(
+                "If the `sparseResidency16Samples` feature is not enabled, `imageType` is `VK_IMAGE_TYPE_2D`, and `samples` is `VK_SAMPLE_COUNT_16_BIT`, `flags` must not contain `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` (`imageType` = {:?}, `samples` = {:?}, `flags` = {:?})",
+                v.image_type, v.samples, v.flags
             ),
         );
     }
     if (v.flags.as_raw() & 6) != 0 && (v.flags.as_raw() & 1) == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-flags-00987",
-                format!(
-                    "If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-flags-00987",
+            format!(
+                "If `flags` contains `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` or `VK_IMAGE_CREATE_SPARSE_ALIASED_BIT`, it must also contain `VK_IMAGE_CREATE_SPARSE_BINDING_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if !matches!(v.initial_layout.as_raw(), 0 | 8) {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-initialLayout-00993",
-                format!(
-                    "`initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`initialLayout` = {:?})",
-                    v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-initialLayout-00993",
+            format!(
+                "`initialLayout` must be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`initialLayout` = {:?})",
+                v.initial_layout
             ),
         );
     }
     if !(s.exts.has(origin::VK_ANDROID_EXTERNAL_MEMORY_ANDROID_HARDWARE_BUFFER))
         && matches!(v.format.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-format-00943",
-                format!(
-                    "`format` must not be `VK_FORMAT_UNDEFINED` (`format` = {:?})", v
-                    .format
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-format-00943",
+            format!(
+                "`format` must not be `VK_FORMAT_UNDEFINED` (`format` = {:?})", v.format
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE1))
         && (v.flags.as_raw() & 32) != 0 && !matches!(v.image_type.as_raw(), 2)
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-flags-00950",
-                format!(
-                    "If `flags` contains `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT`, `imageType` must be `VK_IMAGE_TYPE_3D` (`flags` = {:?}, `imageType` = {:?})",
-                    v.flags, v.image_type
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-flags-00950",
+            format!(
+                "If `flags` contains `VK_IMAGE_CREATE_2D_ARRAY_COMPATIBLE_BIT`, `imageType` must be `VK_IMAGE_TYPE_3D` (`flags` = {:?}, `imageType` = {:?})",
+                v.flags, v.image_type
             ),
         );
     }
     if !s.feature(|f| f.v11.protected_memory) && (v.flags.as_raw() & 2048) != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-flags-01890",
-                format!(
-                    "If the `protectedMemory` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_PROTECTED_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-flags-01890",
+            format!(
+                "If the `protectedMemory` feature is not enabled, `flags` must not contain `VK_IMAGE_CREATE_PROTECTED_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && (v.flags.as_raw() & 128) != 0 && (v.flags.as_raw() & 8) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCreateInfo-flags-01573",
-                format!(
-                    "If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkImageCreateInfo-flags-01573",
+            format!(
+                "If `flags` contains `VK_IMAGE_CREATE_BLOCK_TEXEL_VIEW_COMPATIBLE_BIT`, then `flags` must also contain `VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -2178,13 +1898,11 @@ pub fn check_image_memory_barrier(
             (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier-subresourceRange-01486",
-                format!(
-                    "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
-                    v.subresource_range.base_mip_level
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier-subresourceRange-01486",
+            format!(
+                "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
+                v.subresource_range.base_mip_level
             ),
         );
     }
@@ -2196,13 +1914,11 @@ pub fn check_image_memory_barrier(
                     + v.subresource_range.level_count as i128) > (r.mip_levels as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier-subresourceRange-01724",
-                format!(
-                    "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
-                    v.subresource_range.level_count, v.subresource_range.base_mip_level
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier-subresourceRange-01724",
+            format!(
+                "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
+                v.subresource_range.level_count, v.subresource_range.base_mip_level
             ),
         );
     }
@@ -2212,13 +1928,11 @@ pub fn check_image_memory_barrier(
             (v.subresource_range.base_array_layer as i128) >= (r.array_layers as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier-subresourceRange-01488",
-                format!(
-                    "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
-                    v.subresource_range.base_array_layer
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier-subresourceRange-01488",
+            format!(
+                "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
+                v.subresource_range.base_array_layer
             ),
         );
     }
@@ -2230,23 +1944,18 @@ pub fn check_image_memory_barrier(
                     + v.subresource_range.layer_count as i128) > (r.array_layers as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier-subresourceRange-01725",
-                format!(
-                    "If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.layerCount` = {:?}, `subresourceRange.baseArrayLayer` = {:?})",
-                    v.subresource_range.layer_count, v.subresource_range.base_array_layer
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier-subresourceRange-01725",
+            format!(
+                "If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.layerCount` = {:?}, `subresourceRange.baseArrayLayer` = {:?})",
+                v.subresource_range.layer_count, v.subresource_range.base_array_layer
             ),
         );
     }
     if s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier-image-01932",
-                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier-image-01932",
+            "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
@@ -2254,13 +1963,11 @@ pub fn check_image_memory_barrier(
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier-synchronization2-07793",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `oldLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`oldLayout` = {:?})",
-                    v.old_layout
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier-synchronization2-07793",
+            format!(
+                "If the `synchronization2` feature is not enabled, `oldLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`oldLayout` = {:?})",
+                v.old_layout
             ),
         );
     }
@@ -2269,13 +1976,11 @@ pub fn check_image_memory_barrier(
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier-synchronization2-07794",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `newLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`newLayout` = {:?})",
-                    v.new_layout
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier-synchronization2-07794",
+            format!(
+                "If the `synchronization2` feature is not enabled, `newLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`newLayout` = {:?})",
+                v.new_layout
             ),
         );
     }
@@ -2304,11 +2009,9 @@ pub fn check_image_subresource(v: &vk::ImageSubresource, s: &Scope<'_>) -> Resul
         "VUID-VkImageSubresource-aspectMask-parameter",
     )?;
     if v.aspect_mask.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkImageSubresource-aspectMask-requiredbitmask",
-                "`aspectMask` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkImageSubresource-aspectMask-requiredbitmask",
+            "`aspectMask` is empty",
         );
     }
     Ok(())
@@ -2324,32 +2027,26 @@ pub fn check_image_subresource_layers(
         "VUID-VkImageSubresourceLayers-aspectMask-parameter",
     )?;
     if v.aspect_mask.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkImageSubresourceLayers-aspectMask-requiredbitmask",
-                "`aspectMask` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkImageSubresourceLayers-aspectMask-requiredbitmask",
+            "`aspectMask` is empty",
         );
     }
     if (v.aspect_mask.as_raw() & 8) != 0 {
-        return Err(
-            fail(
-                "VUID-VkImageSubresourceLayers-aspectMask-00168",
-                format!(
-                    "`aspectMask` must not contain `VK_IMAGE_ASPECT_METADATA_BIT` (`aspectMask` = {:?})",
-                    v.aspect_mask
-                ),
+        return refuse(
+            "VUID-VkImageSubresourceLayers-aspectMask-00168",
+            format!(
+                "`aspectMask` must not contain `VK_IMAGE_ASPECT_METADATA_BIT` (`aspectMask` = {:?})",
+                v.aspect_mask
             ),
         );
     }
     if v.layer_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageSubresourceLayers-layerCount-01700",
-                format!(
-                    "`layerCount` must be greater than 0 (`layerCount` = {:?})", v
-                    .layer_count
-                ),
+        return refuse(
+            "VUID-VkImageSubresourceLayers-layerCount-01700",
+            format!(
+                "`layerCount` must be greater than 0 (`layerCount` = {:?})", v
+                .layer_count
             ),
         );
     }
@@ -2366,32 +2063,26 @@ pub fn check_image_subresource_range(
         "VUID-VkImageSubresourceRange-aspectMask-parameter",
     )?;
     if v.aspect_mask.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkImageSubresourceRange-aspectMask-requiredbitmask",
-                "`aspectMask` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkImageSubresourceRange-aspectMask-requiredbitmask",
+            "`aspectMask` is empty",
         );
     }
     if v.level_count != u32::MAX && v.level_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageSubresourceRange-levelCount-01720",
-                format!(
-                    "If `levelCount` is not `VK_REMAINING_MIP_LEVELS`, it must be greater than `0` (`levelCount` = {:?})",
-                    v.level_count
-                ),
+        return refuse(
+            "VUID-VkImageSubresourceRange-levelCount-01720",
+            format!(
+                "If `levelCount` is not `VK_REMAINING_MIP_LEVELS`, it must be greater than `0` (`levelCount` = {:?})",
+                v.level_count
             ),
         );
     }
     if v.layer_count != u32::MAX && v.layer_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkImageSubresourceRange-layerCount-01721",
-                format!(
-                    "If `layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, it must be greater than `0` (`layerCount` = {:?})",
-                    v.layer_count
-                ),
+        return refuse(
+            "VUID-VkImageSubresourceRange-layerCount-01721",
+            format!(
+                "If `layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, it must be greater than `0` (`layerCount` = {:?})",
+                v.layer_count
             ),
         );
     }
@@ -2420,13 +2111,11 @@ pub fn check_image_view_create_info(
     crate::checks::check_component_mapping(&v.components, s)?;
     crate::checks::check_image_subresource_range(&v.subresource_range, s)?;
     if !s.feature(|f| f.v10.image_cube_array) && matches!(v.view_type.as_raw(), 6) {
-        return Err(
-            fail(
-                "VUID-VkImageViewCreateInfo-viewType-01004",
-                format!(
-                    "If the `imageCubeArray` feature is not enabled, `viewType` must not be `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` (`viewType` = {:?})",
-                    v.view_type
-                ),
+        return refuse(
+            "VUID-VkImageViewCreateInfo-viewType-01004",
+            format!(
+                "If the `imageCubeArray` feature is not enabled, `viewType` must not be `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` (`viewType` = {:?})",
+                v.view_type
             ),
         );
     }
@@ -2436,13 +2125,11 @@ pub fn check_image_view_create_info(
             (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkImageViewCreateInfo-subresourceRange-01478",
-                format!(
-                    "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
-                    v.subresource_range.base_mip_level
-                ),
+        return refuse(
+            "VUID-VkImageViewCreateInfo-subresourceRange-01478",
+            format!(
+                "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
+                v.subresource_range.base_mip_level
             ),
         );
     }
@@ -2454,48 +2141,39 @@ pub fn check_image_view_create_info(
                     + v.subresource_range.level_count as i128) > (r.mip_levels as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkImageViewCreateInfo-subresourceRange-01718",
-                format!(
-                    "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
-                    v.subresource_range.level_count, v.subresource_range.base_mip_level
-                ),
+        return refuse(
+            "VUID-VkImageViewCreateInfo-subresourceRange-01718",
+            format!(
+                "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
+                v.subresource_range.level_count, v.subresource_range.base_mip_level
             ),
         );
     }
     if s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0)) {
-        return Err(
-            fail(
-                "VUID-VkImageViewCreateInfo-image-01020",
-                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkImageViewCreateInfo-image-01020",
+            "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if matches!(v.view_type.as_raw(), 3) && v.subresource_range.layer_count != u32::MAX
         && v.subresource_range.layer_count != 6
     {
-        return Err(
-            fail(
-                "VUID-VkImageViewCreateInfo-viewType-02960",
-                format!(
-                    "If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be `6` (`viewType` = {:?}, `subresourceRange.layerCount` = {:?})",
-                    v.view_type, v.subresource_range.layer_count
-                ),
+        return refuse(
+            "VUID-VkImageViewCreateInfo-viewType-02960",
+            format!(
+                "If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be `6` (`viewType` = {:?}, `subresourceRange.layerCount` = {:?})",
+                v.view_type, v.subresource_range.layer_count
             ),
         );
     }
     if matches!(v.view_type.as_raw(), 6) && v.subresource_range.layer_count != u32::MAX
         && v.subresource_range.layer_count % 6 != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageViewCreateInfo-viewType-02961",
-                format!(
-                    "If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be a multiple of `6` (`viewType` = {:?}, `subresourceRange.layerCount` = {:?})",
-                    v.view_type, v.subresource_range.layer_count
-                ),
+        return refuse(
+            "VUID-VkImageViewCreateInfo-viewType-02961",
+            format!(
+                "If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE_ARRAY` and `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.layerCount` must be a multiple of `6` (`viewType` = {:?}, `subresourceRange.layerCount` = {:?})",
+                v.view_type, v.subresource_range.layer_count
             ),
         );
     }
@@ -2535,13 +2213,11 @@ pub fn check_memory_allocate_info(
     if !(s.exts.has(origin::VK_ANDROID_EXTERNAL_MEMORY_ANDROID_HARDWARE_BUFFER))
         && v.allocation_size == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryAllocateInfo-allocationSize-00638",
-                format!(
-                    "`allocationSize` must be greater than `0` (`allocationSize` = {:?})",
-                    v.allocation_size
-                ),
+        return refuse(
+            "VUID-VkMemoryAllocateInfo-allocationSize-00638",
+            format!(
+                "`allocationSize` must be greater than `0` (`allocationSize` = {:?})", v
+                .allocation_size
             ),
         );
     }
@@ -2582,13 +2258,11 @@ pub fn check_pipeline_cache_create_info(
         && !s.feature(|f| f.v13.pipeline_creation_cache_control)
         && (v.flags.as_raw() & 1) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892",
-                format!(
-                    "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT` (`flags` = {:?})",
-                    v.flags
-                ),
+        return refuse(
+            "VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892",
+            format!(
+                "If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT` (`flags` = {:?})",
+                v.flags
             ),
         );
     }
@@ -2605,21 +2279,17 @@ pub fn check_pipeline_cache_header_version_one(
         "VUID-VkPipelineCacheHeaderVersionOne-headerVersion-parameter",
     )?;
     if v.header_size != 32 {
-        return Err(
-            fail(
-                "VUID-VkPipelineCacheHeaderVersionOne-headerSize-04967",
-                format!("`headerSize` must be 32 (`headerSize` = {:?})", v.header_size),
-            ),
+        return refuse(
+            "VUID-VkPipelineCacheHeaderVersionOne-headerSize-04967",
+            format!("`headerSize` must be 32 (`headerSize` = {:?})", v.header_size),
         );
     }
     if !matches!(v.header_version.as_raw(), 1) {
-        return Err(
-            fail(
-                "VUID-VkPipelineCacheHeaderVersionOne-headerVersion-04968",
-                format!(
-                    "`headerVersion` must be `VK_PIPELINE_CACHE_HEADER_VERSION_ONE` (`headerVersion` = {:?})",
-                    v.header_version
-                ),
+        return refuse(
+            "VUID-VkPipelineCacheHeaderVersionOne-headerVersion-04968",
+            format!(
+                "`headerVersion` must be `VK_PIPELINE_CACHE_HEADER_VERSION_ONE` (`headerVersion` = {:?})",
+                v.header_version
             ),
         );
     }
@@ -2668,52 +2338,44 @@ pub fn check_pipeline_color_blend_attachment_state(
     if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.src_color_blend_factor.as_raw(), 15..= 18)
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineColorBlendAttachmentState-srcColorBlendFactor-00608",
-                format!(
-                    "If the `dualSrcBlend` feature is not enabled, `srcColorBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`srcColorBlendFactor` = {:?})",
-                    v.src_color_blend_factor
-                ),
+        return refuse(
+            "VUID-VkPipelineColorBlendAttachmentState-srcColorBlendFactor-00608",
+            format!(
+                "If the `dualSrcBlend` feature is not enabled, `srcColorBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`srcColorBlendFactor` = {:?})",
+                v.src_color_blend_factor
             ),
         );
     }
     if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.dst_color_blend_factor.as_raw(), 15..= 18)
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineColorBlendAttachmentState-dstColorBlendFactor-00609",
-                format!(
-                    "If the `dualSrcBlend` feature is not enabled, `dstColorBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`dstColorBlendFactor` = {:?})",
-                    v.dst_color_blend_factor
-                ),
+        return refuse(
+            "VUID-VkPipelineColorBlendAttachmentState-dstColorBlendFactor-00609",
+            format!(
+                "If the `dualSrcBlend` feature is not enabled, `dstColorBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`dstColorBlendFactor` = {:?})",
+                v.dst_color_blend_factor
             ),
         );
     }
     if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.src_alpha_blend_factor.as_raw(), 15..= 18)
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineColorBlendAttachmentState-srcAlphaBlendFactor-00610",
-                format!(
-                    "If the `dualSrcBlend` feature is not enabled, `srcAlphaBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`srcAlphaBlendFactor` = {:?})",
-                    v.src_alpha_blend_factor
-                ),
+        return refuse(
+            "VUID-VkPipelineColorBlendAttachmentState-srcAlphaBlendFactor-00610",
+            format!(
+                "If the `dualSrcBlend` feature is not enabled, `srcAlphaBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`srcAlphaBlendFactor` = {:?})",
+                v.src_alpha_blend_factor
             ),
         );
     }
     if !s.feature(|f| f.v10.dual_src_blend)
         && matches!(v.dst_alpha_blend_factor.as_raw(), 15..= 18)
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineColorBlendAttachmentState-dstAlphaBlendFactor-00611",
-                format!(
-                    "If the `dualSrcBlend` feature is not enabled, `dstAlphaBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`dstAlphaBlendFactor` = {:?})",
-                    v.dst_alpha_blend_factor
-                ),
+        return refuse(
+            "VUID-VkPipelineColorBlendAttachmentState-dstAlphaBlendFactor-00611",
+            format!(
+                "If the `dualSrcBlend` feature is not enabled, `dstAlphaBlendFactor` must not be `VK_BLEND_FACTOR_SRC1_COLOR`, `VK_BLEND_FACTOR_ONE_MINUS_SRC1_COLOR`, `VK_BLEND_FACTOR_SRC1_ALPHA`, or `VK_BLEND_FACTOR_ONE_MINUS_SRC1_ALPHA` (`dstAlphaBlendFactor` = {:?})",
+                v.dst_alpha_blend_factor
             ),
         );
     }
@@ -2730,13 +2392,11 @@ pub fn check_pipeline_color_blend_state_create_info(
         "VUID-VkPipelineColorBlendStateCreateInfo-flags-parameter",
     )?;
     if !s.feature(|f| f.v10.logic_op) && !matches!(v.logic_op_enable, 0) {
-        return Err(
-            fail(
-                "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606",
-                format!(
-                    "If the `logicOp` feature is not enabled, `logicOpEnable` must be `VK_FALSE` (`logicOpEnable` = {:?})",
-                    v.logic_op_enable
-                ),
+        return refuse(
+            "VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00606",
+            format!(
+                "If the `logicOp` feature is not enabled, `logicOpEnable` must be `VK_FALSE` (`logicOpEnable` = {:?})",
+                v.logic_op_enable
             ),
         );
     }
@@ -2770,13 +2430,11 @@ pub fn check_pipeline_depth_stencil_state_create_info(
     crate::checks::check_stencil_op_state(&v.front, s)?;
     crate::checks::check_stencil_op_state(&v.back, s)?;
     if !s.feature(|f| f.v10.depth_bounds) && !matches!(v.depth_bounds_test_enable, 0) {
-        return Err(
-            fail(
-                "VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598",
-                format!(
-                    "If the `depthBounds` feature is not enabled, `depthBoundsTestEnable` must be `VK_FALSE` (`depthBoundsTestEnable` = {:?})",
-                    v.depth_bounds_test_enable
-                ),
+        return refuse(
+            "VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598",
+            format!(
+                "If the `depthBounds` feature is not enabled, `depthBoundsTestEnable` must be `VK_FALSE` (`depthBoundsTestEnable` = {:?})",
+                v.depth_bounds_test_enable
             ),
         );
     }
@@ -2790,11 +2448,9 @@ pub fn check_pipeline_dynamic_state_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineDynamicStateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineDynamicStateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -2813,11 +2469,9 @@ pub fn check_pipeline_input_assembly_state_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineInputAssemblyStateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_primitive_topology(
@@ -2826,13 +2480,11 @@ pub fn check_pipeline_input_assembly_state_create_info(
         "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-parameter",
     )?;
     if !s.feature(|f| f.v10.tessellation_shader) && matches!(v.topology.as_raw(), 10) {
-        return Err(
-            fail(
-                "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `topology` must not be `VK_PRIMITIVE_TOPOLOGY_PATCH_LIST` (`topology` = {:?})",
-                    v.topology
-                ),
+        return refuse(
+            "VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00430",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `topology` must not be `VK_PRIMITIVE_TOPOLOGY_PATCH_LIST` (`topology` = {:?})",
+                v.topology
             ),
         );
     }
@@ -2860,11 +2512,9 @@ pub fn check_pipeline_multisample_state_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineMultisampleStateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_sample_count_flag_bits(
@@ -2874,24 +2524,20 @@ pub fn check_pipeline_multisample_state_create_info(
     )?;
     if !s.feature(|f| f.v10.sample_rate_shading) && !matches!(v.sample_shading_enable, 0)
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784",
-                format!(
-                    "If the `sampleRateShading` feature is not enabled, `sampleShadingEnable` must be `VK_FALSE` (`sampleShadingEnable` = {:?})",
-                    v.sample_shading_enable
-                ),
+        return refuse(
+            "VUID-VkPipelineMultisampleStateCreateInfo-sampleShadingEnable-00784",
+            format!(
+                "If the `sampleRateShading` feature is not enabled, `sampleShadingEnable` must be `VK_FALSE` (`sampleShadingEnable` = {:?})",
+                v.sample_shading_enable
             ),
         );
     }
     if !s.feature(|f| f.v10.alpha_to_one) && !matches!(v.alpha_to_one_enable, 0) {
-        return Err(
-            fail(
-                "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785",
-                format!(
-                    "If the `alphaToOne` feature is not enabled, `alphaToOneEnable` must be `VK_FALSE` (`alphaToOneEnable` = {:?})",
-                    v.alpha_to_one_enable
-                ),
+        return refuse(
+            "VUID-VkPipelineMultisampleStateCreateInfo-alphaToOneEnable-00785",
+            format!(
+                "If the `alphaToOne` feature is not enabled, `alphaToOneEnable` must be `VK_FALSE` (`alphaToOneEnable` = {:?})",
+                v.alpha_to_one_enable
             ),
         );
     }
@@ -2909,11 +2555,9 @@ pub fn check_pipeline_rasterization_state_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineRasterizationStateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineRasterizationStateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_polygon_mode(
@@ -2932,13 +2576,11 @@ pub fn check_pipeline_rasterization_state_create_info(
         "VUID-VkPipelineRasterizationStateCreateInfo-frontFace-parameter",
     )?;
     if !s.feature(|f| f.v10.depth_clamp) && !matches!(v.depth_clamp_enable, 0) {
-        return Err(
-            fail(
-                "VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782",
-                format!(
-                    "If the `depthClamp` feature is not enabled, `depthClampEnable` must be `VK_FALSE` (`depthClampEnable` = {:?})",
-                    v.depth_clamp_enable
-                ),
+        return refuse(
+            "VUID-VkPipelineRasterizationStateCreateInfo-depthClampEnable-00782",
+            format!(
+                "If the `depthClamp` feature is not enabled, `depthClampEnable` must be `VK_FALSE` (`depthClampEnable` = {:?})",
+                v.depth_clamp_enable
             ),
         );
     }
@@ -2946,13 +2588,11 @@ pub fn check_pipeline_rasterization_state_create_info(
         && !s.feature(|f| f.v10.fill_mode_non_solid)
         && !matches!(v.polygon_mode.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413",
-                format!(
-                    "If the `fillModeNonSolid` feature is not enabled, `polygonMode` must be `VK_POLYGON_MODE_FILL` (`polygonMode` = {:?})",
-                    v.polygon_mode
-                ),
+        return refuse(
+            "VUID-VkPipelineRasterizationStateCreateInfo-polygonMode-01413",
+            format!(
+                "If the `fillModeNonSolid` feature is not enabled, `polygonMode` must be `VK_POLYGON_MODE_FILL` (`polygonMode` = {:?})",
+                v.polygon_mode
             ),
         );
     }
@@ -2980,35 +2620,29 @@ pub fn check_pipeline_shader_stage_create_info(
         "VUID-VkPipelineShaderStageCreateInfo-stage-parameter",
     )?;
     if !s.feature(|f| f.v10.geometry_shader) && matches!(v.stage.as_raw(), 8) {
-        return Err(
-            fail(
-                "VUID-VkPipelineShaderStageCreateInfo-stage-00704",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `stage` must not be `VK_SHADER_STAGE_GEOMETRY_BIT` (`stage` = {:?})",
-                    v.stage
-                ),
+        return refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-stage-00704",
+            format!(
+                "If the `geometryShader` feature is not enabled, `stage` must not be `VK_SHADER_STAGE_GEOMETRY_BIT` (`stage` = {:?})",
+                v.stage
             ),
         );
     }
     if !s.feature(|f| f.v10.tessellation_shader) && matches!(v.stage.as_raw(), 2 | 4) {
-        return Err(
-            fail(
-                "VUID-VkPipelineShaderStageCreateInfo-stage-00705",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `stage` must not be `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT` or `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT` (`stage` = {:?})",
-                    v.stage
-                ),
+        return refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-stage-00705",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `stage` must not be `VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT` or `VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT` (`stage` = {:?})",
+                v.stage
             ),
         );
     }
     if matches!(v.stage.as_raw(), 31 | 2147483647) {
-        return Err(
-            fail(
-                "VUID-VkPipelineShaderStageCreateInfo-stage-00706",
-                format!(
-                    "`stage` must not be `VK_SHADER_STAGE_ALL_GRAPHICS`, or `VK_SHADER_STAGE_ALL` (`stage` = {:?})",
-                    v.stage
-                ),
+        return refuse(
+            "VUID-VkPipelineShaderStageCreateInfo-stage-00706",
+            format!(
+                "`stage` must not be `VK_SHADER_STAGE_ALL_GRAPHICS`, or `VK_SHADER_STAGE_ALL` (`stage` = {:?})",
+                v.stage
             ),
         );
     }
@@ -3026,11 +2660,9 @@ pub fn check_pipeline_tessellation_state_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineTessellationStateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::chain(
@@ -3047,11 +2679,9 @@ pub fn check_pipeline_vertex_input_state_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineVertexInputStateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineVertexInputStateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     if s
@@ -3061,13 +2691,11 @@ pub fn check_pipeline_vertex_input_state_create_info(
                 > (l.max_vertex_input_bindings as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineVertexInputStateCreateInfo-vertexBindingDescriptionCount-00613",
-                format!(
-                    "`vertexBindingDescriptionCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings` (`vertexBindingDescriptionCount` = {:?})",
-                    v.vertex_binding_description_count
-                ),
+        return refuse(
+            "VUID-VkPipelineVertexInputStateCreateInfo-vertexBindingDescriptionCount-00613",
+            format!(
+                "`vertexBindingDescriptionCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings` (`vertexBindingDescriptionCount` = {:?})",
+                v.vertex_binding_description_count
             ),
         );
     }
@@ -3078,13 +2706,11 @@ pub fn check_pipeline_vertex_input_state_create_info(
                 > (l.max_vertex_input_attributes as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkPipelineVertexInputStateCreateInfo-vertexAttributeDescriptionCount-00614",
-                format!(
-                    "`vertexAttributeDescriptionCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputAttributes` (`vertexAttributeDescriptionCount` = {:?})",
-                    v.vertex_attribute_description_count
-                ),
+        return refuse(
+            "VUID-VkPipelineVertexInputStateCreateInfo-vertexAttributeDescriptionCount-00614",
+            format!(
+                "`vertexAttributeDescriptionCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputAttributes` (`vertexAttributeDescriptionCount` = {:?})",
+                v.vertex_attribute_description_count
             ),
         );
     }
@@ -3114,11 +2740,9 @@ pub fn check_pipeline_viewport_state_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPipelineViewportStateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -3144,49 +2768,39 @@ pub fn check_push_constant_range(
         "VUID-VkPushConstantRange-stageFlags-parameter",
     )?;
     if v.stage_flags.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkPushConstantRange-stageFlags-requiredbitmask",
-                "`stageFlags` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkPushConstantRange-stageFlags-requiredbitmask",
+            "`stageFlags` is empty",
         );
     }
     if s
         .limits()
         .is_some_and(|l| (v.offset as i128) >= (l.max_push_constants_size as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkPushConstantRange-offset-00294",
-                format!(
-                    "`offset` must be less than `VkPhysicalDeviceLimits::maxPushConstantsSize` (`offset` = {:?})",
-                    v.offset
-                ),
+        return refuse(
+            "VUID-VkPushConstantRange-offset-00294",
+            format!(
+                "`offset` must be less than `VkPhysicalDeviceLimits::maxPushConstantsSize` (`offset` = {:?})",
+                v.offset
             ),
         );
     }
     if v.offset % 4 != 0 {
-        return Err(
-            fail(
-                "VUID-VkPushConstantRange-offset-00295",
-                format!("`offset` must be a multiple of `4` (`offset` = {:?})", v.offset),
-            ),
+        return refuse(
+            "VUID-VkPushConstantRange-offset-00295",
+            format!("`offset` must be a multiple of `4` (`offset` = {:?})", v.offset),
         );
     }
     if v.size == 0 {
-        return Err(
-            fail(
-                "VUID-VkPushConstantRange-size-00296",
-                format!("`size` must be greater than `0` (`size` = {:?})", v.size),
-            ),
+        return refuse(
+            "VUID-VkPushConstantRange-size-00296",
+            format!("`size` must be greater than `0` (`size` = {:?})", v.size),
         );
     }
     if v.size % 4 != 0 {
-        return Err(
-            fail(
-                "VUID-VkPushConstantRange-size-00297",
-                format!("`size` must be a multiple of `4` (`size` = {:?})", v.size),
-            ),
+        return refuse(
+            "VUID-VkPushConstantRange-size-00297",
+            format!("`size` must be a multiple of `4` (`size` = {:?})", v.size),
         );
     }
     if s
@@ -3195,13 +2809,11 @@ pub fn check_push_constant_range(
             (v.offset as i128 + v.size as i128) > (l.max_push_constants_size as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkPushConstantRange-size-00298",
-                format!(
-                    "`size` must be less than or equal to `VkPhysicalDeviceLimits::maxPushConstantsSize` minus `offset` (`offset` = {:?}, `size` = {:?})",
-                    v.offset, v.size
-                ),
+        return refuse(
+            "VUID-VkPushConstantRange-size-00298",
+            format!(
+                "`size` must be less than or equal to `VkPhysicalDeviceLimits::maxPushConstantsSize` minus `offset` (`offset` = {:?}, `size` = {:?})",
+                v.offset, v.size
             ),
         );
     }
@@ -3213,11 +2825,9 @@ pub fn check_query_pool_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkQueryPoolCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkQueryPoolCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_query_type(
@@ -3228,24 +2838,20 @@ pub fn check_query_pool_create_info(
     if !s.feature(|f| f.v10.pipeline_statistics_query)
         && matches!(v.query_type.as_raw(), 1)
     {
-        return Err(
-            fail(
-                "VUID-VkQueryPoolCreateInfo-queryType-00791",
-                format!(
-                    "If the `pipelineStatisticsQuery` feature is not enabled, `queryType` must not be `VK_QUERY_TYPE_PIPELINE_STATISTICS` (`queryType` = {:?})",
-                    v.query_type
-                ),
+        return refuse(
+            "VUID-VkQueryPoolCreateInfo-queryType-00791",
+            format!(
+                "If the `pipelineStatisticsQuery` feature is not enabled, `queryType` must not be `VK_QUERY_TYPE_PIPELINE_STATISTICS` (`queryType` = {:?})",
+                v.query_type
             ),
         );
     }
     if v.query_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkQueryPoolCreateInfo-queryCount-02763",
-                format!(
-                    "`queryCount` must be greater than 0 (`queryCount` = {:?})", v
-                    .query_count
-                ),
+        return refuse(
+            "VUID-VkQueryPoolCreateInfo-queryCount-02763",
+            format!(
+                "`queryCount` must be greater than 0 (`queryCount` = {:?})", v
+                .query_count
             ),
         );
     }
@@ -3263,21 +2869,15 @@ pub fn check_render_pass_begin_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.render_pass != Default::default() && !s.owned_by_device(v.render_pass) {
-        return Err(
-            fail(
-                "VUID-VkRenderPassBeginInfo-commonparent",
-                "`renderPass` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRenderPassBeginInfo-commonparent",
+            "`renderPass` does not come from the VkDevice the command is called on",
         );
     }
     if v.framebuffer != Default::default() && !s.owned_by_device(v.framebuffer) {
-        return Err(
-            fail(
-                "VUID-VkRenderPassBeginInfo-commonparent",
-                "`framebuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRenderPassBeginInfo-commonparent",
+            "`framebuffer` does not come from the VkDevice the command is called on",
         );
     }
     crate::checks::chain(
@@ -3299,11 +2899,9 @@ pub fn check_render_pass_create_info(
         "VUID-VkRenderPassCreateInfo-flags-parameter",
     )?;
     if v.subpass_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkRenderPassCreateInfo-subpassCount-arraylength",
-                "`subpassCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkRenderPassCreateInfo-subpassCount-arraylength",
+            "`subpassCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -3373,37 +2971,31 @@ pub fn check_sampler_create_info(
                 || (v.mip_lod_bias as f64).abs() > l.max_sampler_lod_bias as f64
         })
     {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-mipLodBias-01069",
-                format!(
-                    "The absolute value of `mipLodBias` must be less than or equal to `VkPhysicalDeviceLimits::maxSamplerLodBias` (`mipLodBias` = {:?})",
-                    v.mip_lod_bias
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-mipLodBias-01069",
+            format!(
+                "The absolute value of `mipLodBias` must be less than or equal to `VkPhysicalDeviceLimits::maxSamplerLodBias` (`mipLodBias` = {:?})",
+                v.mip_lod_bias
             ),
         );
     }
     if (v.max_lod as f64).is_nan() || (v.min_lod as f64).is_nan()
         || (v.max_lod as f64) < (v.min_lod as f64)
     {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-maxLod-01973",
-                format!(
-                    "`maxLod` must be greater than or equal to `minLod` (`maxLod` = {:?}, `minLod` = {:?})",
-                    v.max_lod, v.min_lod
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-maxLod-01973",
+            format!(
+                "`maxLod` must be greater than or equal to `minLod` (`maxLod` = {:?}, `minLod` = {:?})",
+                v.max_lod, v.min_lod
             ),
         );
     }
     if !s.feature(|f| f.v10.sampler_anisotropy) && !matches!(v.anisotropy_enable, 0) {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-anisotropyEnable-01070",
-                format!(
-                    "If the `samplerAnisotropy` feature is not enabled, `anisotropyEnable` must be `VK_FALSE` (`anisotropyEnable` = {:?})",
-                    v.anisotropy_enable
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-anisotropyEnable-01070",
+            format!(
+                "If the `samplerAnisotropy` feature is not enabled, `anisotropyEnable` must be `VK_FALSE` (`anisotropyEnable` = {:?})",
+                v.anisotropy_enable
             ),
         );
     }
@@ -3416,24 +3008,20 @@ pub fn check_sampler_create_info(
                     (v.max_anisotropy as f64) > (l.max_sampler_anisotropy as f64)
                 }))
     {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-anisotropyEnable-01071",
-                format!(
-                    "If `anisotropyEnable` is `VK_TRUE`, `maxAnisotropy` must be between `1.0` and `VkPhysicalDeviceLimits::maxSamplerAnisotropy`, inclusive (`anisotropyEnable` = {:?}, `maxAnisotropy` = {:?})",
-                    v.anisotropy_enable, v.max_anisotropy
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-anisotropyEnable-01071",
+            format!(
+                "If `anisotropyEnable` is `VK_TRUE`, `maxAnisotropy` must be between `1.0` and `VkPhysicalDeviceLimits::maxSamplerAnisotropy`, inclusive (`anisotropyEnable` = {:?}, `maxAnisotropy` = {:?})",
+                v.anisotropy_enable, v.max_anisotropy
             ),
         );
     }
     if matches!(v.unnormalized_coordinates, 1) && !matches!(v.mipmap_mode.as_raw(), 0) {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073",
-                format!(
-                    "If `unnormalizedCoordinates` is `VK_TRUE`, `mipmapMode` must be `VK_SAMPLER_MIPMAP_MODE_NEAREST` (`unnormalizedCoordinates` = {:?}, `mipmapMode` = {:?})",
-                    v.unnormalized_coordinates, v.mipmap_mode
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01073",
+            format!(
+                "If `unnormalizedCoordinates` is `VK_TRUE`, `mipmapMode` must be `VK_SAMPLER_MIPMAP_MODE_NEAREST` (`unnormalizedCoordinates` = {:?}, `mipmapMode` = {:?})",
+                v.unnormalized_coordinates, v.mipmap_mode
             ),
         );
     }
@@ -3441,13 +3029,11 @@ pub fn check_sampler_create_info(
         && ((v.min_lod as f64).is_nan() || v.min_lod != 0.0
             || (v.max_lod as f64).is_nan() || v.max_lod != 0.0)
     {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074",
-                format!(
-                    "If `unnormalizedCoordinates` is `VK_TRUE`, `minLod` and `maxLod` must be zero (`unnormalizedCoordinates` = {:?}, `minLod` = {:?}, `maxLod` = {:?})",
-                    v.unnormalized_coordinates, v.min_lod, v.max_lod
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01074",
+            format!(
+                "If `unnormalizedCoordinates` is `VK_TRUE`, `minLod` and `maxLod` must be zero (`unnormalizedCoordinates` = {:?}, `minLod` = {:?}, `maxLod` = {:?})",
+                v.unnormalized_coordinates, v.min_lod, v.max_lod
             ),
         );
     }
@@ -3455,35 +3041,29 @@ pub fn check_sampler_create_info(
         && (!matches!(v.address_mode_u.as_raw(), 2 | 3)
             || !matches!(v.address_mode_v.as_raw(), 2 | 3))
     {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075",
-                format!(
-                    "If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER` (`unnormalizedCoordinates` = {:?}, `addressModeU` = {:?}, `addressModeV` = {:?})",
-                    v.unnormalized_coordinates, v.address_mode_u, v.address_mode_v
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075",
+            format!(
+                "If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER` (`unnormalizedCoordinates` = {:?}, `addressModeU` = {:?}, `addressModeV` = {:?})",
+                v.unnormalized_coordinates, v.address_mode_u, v.address_mode_v
             ),
         );
     }
     if matches!(v.unnormalized_coordinates, 1) && !matches!(v.anisotropy_enable, 0) {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076",
-                format!(
-                    "If `unnormalizedCoordinates` is `VK_TRUE`, `anisotropyEnable` must be `VK_FALSE` (`unnormalizedCoordinates` = {:?}, `anisotropyEnable` = {:?})",
-                    v.unnormalized_coordinates, v.anisotropy_enable
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076",
+            format!(
+                "If `unnormalizedCoordinates` is `VK_TRUE`, `anisotropyEnable` must be `VK_FALSE` (`unnormalizedCoordinates` = {:?}, `anisotropyEnable` = {:?})",
+                v.unnormalized_coordinates, v.anisotropy_enable
             ),
         );
     }
     if matches!(v.unnormalized_coordinates, 1) && !matches!(v.compare_enable, 0) {
-        return Err(
-            fail(
-                "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077",
-                format!(
-                    "If `unnormalizedCoordinates` is `VK_TRUE`, `compareEnable` must be `VK_FALSE` (`unnormalizedCoordinates` = {:?}, `compareEnable` = {:?})",
-                    v.unnormalized_coordinates, v.compare_enable
-                ),
+        return refuse(
+            "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077",
+            format!(
+                "If `unnormalizedCoordinates` is `VK_TRUE`, `compareEnable` must be `VK_FALSE` (`unnormalizedCoordinates` = {:?}, `compareEnable` = {:?})",
+                v.unnormalized_coordinates, v.compare_enable
             ),
         );
     }
@@ -3501,11 +3081,9 @@ pub fn check_semaphore_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkSemaphoreCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSemaphoreCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::chain(
@@ -3522,21 +3100,15 @@ pub fn check_shader_module_create_info(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkShaderModuleCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkShaderModuleCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     if v.code_size == 0 {
-        return Err(
-            fail(
-                "VUID-VkShaderModuleCreateInfo-codeSize-01085",
-                format!(
-                    "`codeSize` must be greater than 0 (`codeSize` = {:?})", v.code_size
-                ),
-            ),
+        return refuse(
+            "VUID-VkShaderModuleCreateInfo-codeSize-01085",
+            format!("`codeSize` must be greater than 0 (`codeSize` = {:?})", v.code_size),
         );
     }
     Ok(())
@@ -3547,11 +3119,9 @@ pub fn check_sparse_buffer_memory_bind_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.bind_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkSparseBufferMemoryBindInfo-bindCount-arraylength",
-                "`bindCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSparseBufferMemoryBindInfo-bindCount-arraylength",
+            "`bindCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -3580,11 +3150,9 @@ pub fn check_sparse_image_memory_bind_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.bind_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength",
-                "`bindCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength",
+            "`bindCount` is 0",
         );
     }
     for (i, e) in {
@@ -3598,13 +3166,11 @@ pub fn check_sparse_image_memory_bind_info(
             .image(v.image)
             .is_some_and(|r| (e.subresource.mip_level as i128) >= (r.mip_levels as i128))
         {
-            return Err(
-                fail(
-                    "VUID-VkSparseImageMemoryBindInfo-subresource-01722",
-                    format!(
-                        "The `subresource.mipLevel` member of each element of `pBinds` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pBinds[{}].subresource.mipLevel` = {:?})",
-                        i, e.subresource.mip_level
-                    ),
+            return refuse(
+                "VUID-VkSparseImageMemoryBindInfo-subresource-01722",
+                format!(
+                    "The `subresource.mipLevel` member of each element of `pBinds` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`pBinds[{}].subresource.mipLevel` = {:?})",
+                    i, e.subresource.mip_level
                 ),
             );
         }
@@ -3622,13 +3188,11 @@ pub fn check_sparse_image_memory_bind_info(
                 (e.subresource.array_layer as i128) >= (r.array_layers as i128)
             })
         {
-            return Err(
-                fail(
-                    "VUID-VkSparseImageMemoryBindInfo-subresource-01723",
-                    format!(
-                        "The `subresource.arrayLayer` member of each element of `pBinds` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pBinds[{}].subresource.arrayLayer` = {:?})",
-                        i, e.subresource.array_layer
-                    ),
+            return refuse(
+                "VUID-VkSparseImageMemoryBindInfo-subresource-01723",
+                format!(
+                    "The `subresource.arrayLayer` member of each element of `pBinds` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`pBinds[{}].subresource.arrayLayer` = {:?})",
+                    i, e.subresource.array_layer
                 ),
             );
         }
@@ -3645,11 +3209,9 @@ pub fn check_sparse_image_opaque_memory_bind_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.bind_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength",
-                "`bindCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength",
+            "`bindCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -3666,11 +3228,9 @@ pub fn check_sparse_memory_bind(v: &vk::SparseMemoryBind, s: &Scope<'_>) -> Resu
         "VUID-VkSparseMemoryBind-flags-parameter",
     )?;
     if v.size == 0 {
-        return Err(
-            fail(
-                "VUID-VkSparseMemoryBind-size-01098",
-                format!("`size` must be greater than `0` (`size` = {:?})", v.size),
-            ),
+        return refuse(
+            "VUID-VkSparseMemoryBind-size-01098",
+            format!("`size` must be greater than `0` (`size` = {:?})", v.size),
         );
     }
     Ok(())
@@ -3712,36 +3272,27 @@ pub fn check_submit_info(v: &vk::SubmitInfo<'_>, s: &Scope<'_>) -> Result<()> {
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_wait_semaphores, v.wait_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkSubmitInfo-commonparent",
-                    "`pWaitSemaphores` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkSubmitInfo-commonparent",
+                "`pWaitSemaphores` does not come from the VkDevice the command is called on",
             );
         }
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_command_buffers, v.command_buffer_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkSubmitInfo-commonparent",
-                    "`pCommandBuffers` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkSubmitInfo-commonparent",
+                "`pCommandBuffers` does not come from the VkDevice the command is called on",
             );
         }
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_signal_semaphores, v.signal_semaphore_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkSubmitInfo-commonparent",
-                    "`pSignalSemaphores` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkSubmitInfo-commonparent",
+                "`pSignalSemaphores` does not come from the VkDevice the command is called on",
             );
         }
     }
@@ -3781,74 +3332,62 @@ pub fn check_subpass_dependency(v: &vk::SubpassDependency, s: &Scope<'_>) -> Res
         "VUID-VkSubpassDependency-dependencyFlags-parameter",
     )?;
     if !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0 {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency-srcStageMask-04090",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency-srcStageMask-04090",
+            format!(
+                "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
     if !s.feature(|f| f.v10.tessellation_shader) && (v.src_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency-srcStageMask-04091",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency-srcStageMask-04091",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
     if !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0 {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency-dstStageMask-04090",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency-dstStageMask-04090",
+            format!(
+                "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
     if !s.feature(|f| f.v10.tessellation_shader) && (v.dst_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency-dstStageMask-04091",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency-dstStageMask-04091",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency-dependencyFlags-02520",
-                format!(
-                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `srcSubpass` = {:?})",
-                    v.dependency_flags, v.src_subpass
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency-dependencyFlags-02520",
+            format!(
+                "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `srcSubpass` = {:?})",
+                v.dependency_flags, v.src_subpass
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency-dependencyFlags-02521",
-                format!(
-                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `dstSubpass` = {:?})",
-                    v.dependency_flags, v.dst_subpass
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency-dependencyFlags-02521",
+            format!(
+                "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `dstSubpass` = {:?})",
+                v.dependency_flags, v.dst_subpass
             ),
         );
     }
@@ -3877,13 +3416,11 @@ pub fn check_subpass_description(
         .enumerate()
     {
         if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 2 | 3) {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06912",
-                    format!(
-                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
-                    ),
+            return refuse(
+                "VUID-VkSubpassDescription-attachment-06912",
+                format!(
+                    "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                    i, e.attachment, i, e.layout
                 ),
             );
         }
@@ -3896,13 +3433,11 @@ pub fn check_subpass_description(
         .enumerate()
     {
         if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06913",
-                    format!(
-                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
-                    ),
+            return refuse(
+                "VUID-VkSubpassDescription-attachment-06913",
+                format!(
+                    "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                    i, e.attachment, i, e.layout
                 ),
             );
         }
@@ -3915,13 +3450,11 @@ pub fn check_subpass_description(
         .enumerate()
     {
         if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
-            return Err(
-                fail(
-                    "VUID-VkSubpassDescription-attachment-06914",
-                    format!(
-                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
-                    ),
+            return refuse(
+                "VUID-VkSubpassDescription-attachment-06914",
+                format!(
+                    "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                    i, e.attachment, i, e.layout
                 ),
             );
         }
@@ -3932,13 +3465,11 @@ pub fn check_subpass_description(
             (v.color_attachment_count as i128) > (l.max_color_attachments as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDescription-colorAttachmentCount-00845",
-                format!(
-                    "`colorAttachmentCount` must be less than or equal to `VkPhysicalDeviceLimits::maxColorAttachments` (`colorAttachmentCount` = {:?})",
-                    v.color_attachment_count
-                ),
+        return refuse(
+            "VUID-VkSubpassDescription-colorAttachmentCount-00845",
+            format!(
+                "`colorAttachmentCount` must be less than or equal to `VkPhysicalDeviceLimits::maxColorAttachments` (`colorAttachmentCount` = {:?})",
+                v.color_attachment_count
             ),
         );
     }
@@ -3953,13 +3484,11 @@ pub fn check_subpass_description(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06916",
-                        format!(
-                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06916",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -3976,13 +3505,11 @@ pub fn check_subpass_description(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06917",
-                        format!(
-                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06917",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -4001,13 +3528,11 @@ pub fn check_subpass_description(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06918",
-                        format!(
-                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06918",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -4026,13 +3551,11 @@ pub fn check_subpass_description(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06919",
-                        format!(
-                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06919",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -4051,13 +3574,11 @@ pub fn check_subpass_description(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06920",
-                        format!(
-                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06920",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -4073,13 +3594,11 @@ pub fn check_subpass_description(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314001) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06921",
-                        format!(
-                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06921",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -4095,13 +3614,11 @@ pub fn check_subpass_description(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06922",
-                        format!(
-                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06922",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -4117,13 +3634,11 @@ pub fn check_subpass_description(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription-attachment-06923",
-                        format!(
-                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription-attachment-06923",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -4132,13 +3647,11 @@ pub fn check_subpass_description(
     if !(s.exts.has(origin::VK_HUAWEI_SUBPASS_SHADING))
         && !matches!(v.pipeline_bind_point.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDescription-pipelineBindPoint-00844",
-                format!(
-                    "`pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS` (`pipelineBindPoint` = {:?})",
-                    v.pipeline_bind_point
-                ),
+        return refuse(
+            "VUID-VkSubpassDescription-pipelineBindPoint-00844",
+            format!(
+                "`pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS` (`pipelineBindPoint` = {:?})",
+                v.pipeline_bind_point
             ),
         );
     }
@@ -4177,13 +3690,11 @@ pub fn check_vertex_input_attribute_description(
         .limits()
         .is_some_and(|l| (v.location as i128) >= (l.max_vertex_input_attributes as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkVertexInputAttributeDescription-location-00620",
-                format!(
-                    "`location` must be less than `VkPhysicalDeviceLimits::maxVertexInputAttributes` (`location` = {:?})",
-                    v.location
-                ),
+        return refuse(
+            "VUID-VkVertexInputAttributeDescription-location-00620",
+            format!(
+                "`location` must be less than `VkPhysicalDeviceLimits::maxVertexInputAttributes` (`location` = {:?})",
+                v.location
             ),
         );
     }
@@ -4191,13 +3702,11 @@ pub fn check_vertex_input_attribute_description(
         .limits()
         .is_some_and(|l| (v.binding as i128) >= (l.max_vertex_input_bindings as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkVertexInputAttributeDescription-binding-00621",
-                format!(
-                    "`binding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`binding` = {:?})",
-                    v.binding
-                ),
+        return refuse(
+            "VUID-VkVertexInputAttributeDescription-binding-00621",
+            format!(
+                "`binding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`binding` = {:?})",
+                v.binding
             ),
         );
     }
@@ -4207,13 +3716,11 @@ pub fn check_vertex_input_attribute_description(
             (v.offset as i128) > (l.max_vertex_input_attribute_offset as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkVertexInputAttributeDescription-offset-00622",
-                format!(
-                    "`offset` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputAttributeOffset` (`offset` = {:?})",
-                    v.offset
-                ),
+        return refuse(
+            "VUID-VkVertexInputAttributeDescription-offset-00622",
+            format!(
+                "`offset` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputAttributeOffset` (`offset` = {:?})",
+                v.offset
             ),
         );
     }
@@ -4233,13 +3740,11 @@ pub fn check_vertex_input_binding_description(
         .limits()
         .is_some_and(|l| (v.binding as i128) >= (l.max_vertex_input_bindings as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkVertexInputBindingDescription-binding-00618",
-                format!(
-                    "`binding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`binding` = {:?})",
-                    v.binding
-                ),
+        return refuse(
+            "VUID-VkVertexInputBindingDescription-binding-00618",
+            format!(
+                "`binding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings` (`binding` = {:?})",
+                v.binding
             ),
         );
     }
@@ -4249,13 +3754,11 @@ pub fn check_vertex_input_binding_description(
             (v.stride as i128) > (l.max_vertex_input_binding_stride as i128)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkVertexInputBindingDescription-stride-00619",
-                format!(
-                    "`stride` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindingStride` (`stride` = {:?})",
-                    v.stride
-                ),
+        return refuse(
+            "VUID-VkVertexInputBindingDescription-stride-00619",
+            format!(
+                "`stride` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindingStride` (`stride` = {:?})",
+                v.stride
             ),
         );
     }
@@ -4264,11 +3767,9 @@ pub fn check_vertex_input_binding_description(
 ///The rules of `VkViewport` that are checked at run time.
 pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
     if (v.width as f64).is_nan() || v.width <= 0.0 {
-        return Err(
-            fail(
-                "VUID-VkViewport-width-01770",
-                format!("`width` must be greater than `0.0` (`width` = {:?})", v.width),
-            ),
+        return refuse(
+            "VUID-VkViewport-width-01770",
+            format!("`width` must be greater than `0.0` (`width` = {:?})", v.width),
         );
     }
     if (v.width as f64).is_nan()
@@ -4276,13 +3777,11 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
             .limits()
             .is_some_and(|l| (v.width as f64) > (l.max_viewport_dimensions[0] as f64))
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-width-01771",
-                format!(
-                    "`width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0] (`width` = {:?})",
-                    v.width
-                ),
+        return refuse(
+            "VUID-VkViewport-width-01771",
+            format!(
+                "`width` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[0] (`width` = {:?})",
+                v.width
             ),
         );
     }
@@ -4293,26 +3792,22 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
                 || (v.height as f64).abs() > l.max_viewport_dimensions[1] as f64
         })
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-height-01773",
-                format!(
-                    "The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1] (`height` = {:?})",
-                    v.height
-                ),
+        return refuse(
+            "VUID-VkViewport-height-01773",
+            format!(
+                "The absolute value of `height` must be less than or equal to `VkPhysicalDeviceLimits::maxViewportDimensions`[1] (`height` = {:?})",
+                v.height
             ),
         );
     }
     if (v.x as f64).is_nan()
         || s.limits().is_some_and(|l| (v.x as f64) < (l.viewport_bounds_range[0] as f64))
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-x-01774",
-                format!(
-                    "`x` must be greater than or equal to `viewportBoundsRange`[0] (`x` = {:?})",
-                    v.x
-                ),
+        return refuse(
+            "VUID-VkViewport-x-01774",
+            format!(
+                "`x` must be greater than or equal to `viewportBoundsRange`[0] (`x` = {:?})",
+                v.x
             ),
         );
     }
@@ -4323,26 +3818,22 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
                 || (v.x as f64 + v.width as f64) > (l.viewport_bounds_range[1] as f64)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-x-01232",
-                format!(
-                    "(`x` + `width`) must be less than or equal to `viewportBoundsRange`[1] (`x` = {:?}, `width` = {:?})",
-                    v.x, v.width
-                ),
+        return refuse(
+            "VUID-VkViewport-x-01232",
+            format!(
+                "(`x` + `width`) must be less than or equal to `viewportBoundsRange`[1] (`x` = {:?}, `width` = {:?})",
+                v.x, v.width
             ),
         );
     }
     if (v.y as f64).is_nan()
         || s.limits().is_some_and(|l| (v.y as f64) < (l.viewport_bounds_range[0] as f64))
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-y-01775",
-                format!(
-                    "`y` must be greater than or equal to `viewportBoundsRange`[0] (`y` = {:?})",
-                    v.y
-                ),
+        return refuse(
+            "VUID-VkViewport-y-01775",
+            format!(
+                "`y` must be greater than or equal to `viewportBoundsRange`[0] (`y` = {:?})",
+                v.y
             ),
         );
     }
@@ -4353,13 +3844,11 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
                 || (v.y as f64 + v.height as f64) > (l.viewport_bounds_range[1] as f64)
         })
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-y-01233",
-                format!(
-                    "(`y` + `height`) must be less than or equal to `viewportBoundsRange`[1] (`y` = {:?}, `height` = {:?})",
-                    v.y, v.height
-                ),
+        return refuse(
+            "VUID-VkViewport-y-01233",
+            format!(
+                "(`y` + `height`) must be less than or equal to `viewportBoundsRange`[1] (`y` = {:?}, `height` = {:?})",
+                v.y, v.height
             ),
         );
     }
@@ -4367,13 +3856,11 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
         || s.exts.has(origin::VK_AMD_NEGATIVE_VIEWPORT_HEIGHT)) && (v.y as f64).is_nan()
         || s.limits().is_some_and(|l| (v.y as f64) > (l.viewport_bounds_range[1] as f64))
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-y-01776",
-                format!(
-                    "`y` must be less than or equal to `viewportBoundsRange`[1] (`y` = {:?})",
-                    v.y
-                ),
+        return refuse(
+            "VUID-VkViewport-y-01776",
+            format!(
+                "`y` must be less than or equal to `viewportBoundsRange`[1] (`y` = {:?})",
+                v.y
             ),
         );
     }
@@ -4387,13 +3874,11 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
                         < (l.viewport_bounds_range[0] as f64)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-y-01777",
-                format!(
-                    "(`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0] (`y` = {:?}, `height` = {:?})",
-                    v.y, v.height
-                ),
+        return refuse(
+            "VUID-VkViewport-y-01777",
+            format!(
+                "(`y` + `height`) must be greater than or equal to `viewportBoundsRange`[0] (`y` = {:?}, `height` = {:?})",
+                v.y, v.height
             ),
         );
     }
@@ -4401,13 +3886,11 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
         && ((v.min_depth as f64).is_nan() || v.min_depth < 0.0
             || (v.min_depth as f64).is_nan() || v.min_depth > 1.0)
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-minDepth-02540",
-                format!(
-                    "`minDepth` must be between `0.0` and `1.0`, inclusive (`minDepth` = {:?})",
-                    v.min_depth
-                ),
+        return refuse(
+            "VUID-VkViewport-minDepth-02540",
+            format!(
+                "`minDepth` must be between `0.0` and `1.0`, inclusive (`minDepth` = {:?})",
+                v.min_depth
             ),
         );
     }
@@ -4415,13 +3898,11 @@ pub fn check_viewport(v: &vk::Viewport, s: &Scope<'_>) -> Result<()> {
         && ((v.max_depth as f64).is_nan() || v.max_depth < 0.0
             || (v.max_depth as f64).is_nan() || v.max_depth > 1.0)
     {
-        return Err(
-            fail(
-                "VUID-VkViewport-maxDepth-02541",
-                format!(
-                    "`maxDepth` must be between `0.0` and `1.0`, inclusive (`maxDepth` = {:?})",
-                    v.max_depth
-                ),
+        return refuse(
+            "VUID-VkViewport-maxDepth-02541",
+            format!(
+                "`maxDepth` must be between `0.0` and `1.0`, inclusive (`maxDepth` = {:?})",
+                v.max_depth
             ),
         );
     }
@@ -4438,31 +3919,23 @@ pub fn check_write_descriptor_set(
         "VUID-VkWriteDescriptorSet-descriptorType-parameter",
     )?;
     if v.descriptor_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSet-descriptorCount-arraylength",
-                "`descriptorCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkWriteDescriptorSet-descriptorCount-arraylength",
+            "`descriptorCount` is 0",
         );
     }
     if v.dst_set != Default::default() && !s.owned_by_device(v.dst_set) {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSet-commonparent",
-                "`dstSet` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkWriteDescriptorSet-commonparent",
+            "`dstSet` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored these handles and their count.
     for h in unsafe { members(v.p_texel_buffer_view, v.descriptor_count) } {
         if *h != Default::default() && !s.owned_by_device(*h) {
-            return Err(
-                fail(
-                    "VUID-VkWriteDescriptorSet-commonparent",
-                    "`pTexelBufferView` does not come from the VkDevice the command is called on"
-                        .into(),
-                ),
+            return refuse(
+                "VUID-VkWriteDescriptorSet-commonparent",
+                "`pTexelBufferView` does not come from the VkDevice the command is called on",
             );
         }
     }
@@ -4471,13 +3944,11 @@ pub fn check_write_descriptor_set(
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.dst_array_element % 4 != 0
     {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSet-descriptorType-02219",
-                format!(
-                    "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4` (`descriptorType` = {:?}, `dstArrayElement` = {:?})",
-                    v.descriptor_type, v.dst_array_element
-                ),
+        return refuse(
+            "VUID-VkWriteDescriptorSet-descriptorType-02219",
+            format!(
+                "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4` (`descriptorType` = {:?}, `dstArrayElement` = {:?})",
+                v.descriptor_type, v.dst_array_element
             ),
         );
     }
@@ -4486,13 +3957,11 @@ pub fn check_write_descriptor_set(
         && matches!(v.descriptor_type.as_raw(), 1000138000)
         && v.descriptor_count % 4 != 0
     {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSet-descriptorType-02220",
-                format!(
-                    "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4` (`descriptorType` = {:?}, `descriptorCount` = {:?})",
-                    v.descriptor_type, v.descriptor_count
-                ),
+        return refuse(
+            "VUID-VkWriteDescriptorSet-descriptorType-02220",
+            format!(
+                "If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4` (`descriptorType` = {:?}, `descriptorCount` = {:?})",
+                v.descriptor_type, v.descriptor_count
             ),
         );
     }

@@ -8,21 +8,15 @@ pub fn check_bind_buffer_memory_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.buffer != Default::default() && !s.owned_by_device(v.buffer) {
-        return Err(
-            fail(
-                "VUID-VkBindBufferMemoryInfo-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBindBufferMemoryInfo-commonparent",
+            "`buffer` does not come from the VkDevice the command is called on",
         );
     }
     if v.memory != Default::default() && !s.owned_by_device(v.memory) {
-        return Err(
-            fail(
-                "VUID-VkBindBufferMemoryInfo-commonparent",
-                "`memory` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBindBufferMemoryInfo-commonparent",
+            "`memory` does not come from the VkDevice the command is called on",
         );
     }
     crate::checks::chain(
@@ -39,20 +33,15 @@ pub fn check_bind_image_memory_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.image != Default::default() && !s.owned_by_device(v.image) {
-        return Err(
-            fail(
-                "VUID-VkBindImageMemoryInfo-commonparent",
-                "`image` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkBindImageMemoryInfo-commonparent",
+            "`image` does not come from the VkDevice the command is called on",
         );
     }
     if v.memory != Default::default() && !s.owned_by_device(v.memory) {
-        return Err(
-            fail(
-                "VUID-VkBindImageMemoryInfo-commonparent",
-                "`memory` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBindImageMemoryInfo-commonparent",
+            "`memory` does not come from the VkDevice the command is called on",
         );
     }
     crate::checks::chain(
@@ -94,11 +83,9 @@ pub fn check_descriptor_update_template_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkDescriptorUpdateTemplateCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorUpdateTemplateCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     crate::checks::enum_descriptor_update_template_type(
@@ -107,31 +94,23 @@ pub fn check_descriptor_update_template_create_info(
         "VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-parameter",
     )?;
     if v.descriptor_update_entry_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength",
-                "`descriptorUpdateEntryCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength",
+            "`descriptorUpdateEntryCount` is 0",
         );
     }
     if v.descriptor_set_layout != Default::default()
         && !s.owned_by_device(v.descriptor_set_layout)
     {
-        return Err(
-            fail(
-                "VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent",
-                "`descriptorSetLayout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent",
+            "`descriptorSetLayout` does not come from the VkDevice the command is called on",
         );
     }
     if v.pipeline_layout != Default::default() && !s.owned_by_device(v.pipeline_layout) {
-        return Err(
-            fail(
-                "VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent",
-                "`pipelineLayout` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent",
+            "`pipelineLayout` does not come from the VkDevice the command is called on",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -162,13 +141,9 @@ pub fn check_device_group_command_buffer_begin_info(
     if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
         && v.device_mask == 0
     {
-        return Err(
-            fail(
-                "VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107",
-                format!(
-                    "`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask
-                ),
-            ),
+        return refuse(
+            "VUID-VkDeviceGroupCommandBufferBeginInfo-deviceMask-00107",
+            format!("`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask),
         );
     }
     Ok(())
@@ -181,13 +156,9 @@ pub fn check_device_group_render_pass_begin_info(
     if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
         && v.device_mask == 0
     {
-        return Err(
-            fail(
-                "VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906",
-                format!(
-                    "`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask
-                ),
-            ),
+        return refuse(
+            "VUID-VkDeviceGroupRenderPassBeginInfo-deviceMask-00906",
+            format!("`deviceMask` must not be zero (`deviceMask` = {:?})", v.device_mask),
         );
     }
     Ok(())
@@ -326,11 +297,9 @@ pub fn check_image_view_usage_create_info(
         "VUID-VkImageViewUsageCreateInfo-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkImageViewUsageCreateInfo-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkImageViewUsageCreateInfo-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     Ok(())
@@ -346,23 +315,19 @@ pub fn check_input_attachment_aspect_reference(
         "VUID-VkInputAttachmentAspectReference-aspectMask-parameter",
     )?;
     if v.aspect_mask.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkInputAttachmentAspectReference-aspectMask-requiredbitmask",
-                "`aspectMask` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkInputAttachmentAspectReference-aspectMask-requiredbitmask",
+            "`aspectMask` is empty",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MAINTENANCE2))
         && (v.aspect_mask.as_raw() & 8) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkInputAttachmentAspectReference-aspectMask-01964",
-                format!(
-                    "`aspectMask` must not include `VK_IMAGE_ASPECT_METADATA_BIT` (`aspectMask` = {:?})",
-                    v.aspect_mask
-                ),
+        return refuse(
+            "VUID-VkInputAttachmentAspectReference-aspectMask-01964",
+            format!(
+                "`aspectMask` must not include `VK_IMAGE_ASPECT_METADATA_BIT` (`aspectMask` = {:?})",
+                v.aspect_mask
             ),
         );
     }
@@ -386,20 +351,15 @@ pub fn check_memory_dedicated_allocate_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.image != Default::default() && !s.owned_by_device(v.image) {
-        return Err(
-            fail(
-                "VUID-VkMemoryDedicatedAllocateInfo-commonparent",
-                "`image` does not come from the VkDevice the command is called on".into(),
-            ),
+        return refuse(
+            "VUID-VkMemoryDedicatedAllocateInfo-commonparent",
+            "`image` does not come from the VkDevice the command is called on",
         );
     }
     if v.buffer != Default::default() && !s.owned_by_device(v.buffer) {
-        return Err(
-            fail(
-                "VUID-VkMemoryDedicatedAllocateInfo-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkMemoryDedicatedAllocateInfo-commonparent",
+            "`buffer` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -433,11 +393,9 @@ pub fn check_physical_device_external_buffer_info(
         "VUID-VkPhysicalDeviceExternalBufferInfo-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkPhysicalDeviceExternalBufferInfo-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkPhysicalDeviceExternalBufferInfo-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     crate::checks::enum_external_memory_handle_type_flag_bits(
@@ -515,11 +473,9 @@ pub fn check_physical_device_image_format_info2(
         "VUID-VkPhysicalDeviceImageFormatInfo2-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkPhysicalDeviceImageFormatInfo2-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     crate::checks::flags_image_create_flags(
@@ -587,11 +543,9 @@ pub fn check_physical_device_sparse_image_format_info2(
         "VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkPhysicalDeviceSparseImageFormatInfo2-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     crate::checks::enum_image_tiling(
@@ -632,11 +586,9 @@ pub fn check_render_pass_input_attachment_aspect_create_info(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.aspect_reference_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkRenderPassInputAttachmentAspectCreateInfo-aspectReferenceCount-arraylength",
-                "`aspectReferenceCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkRenderPassInputAttachmentAspectCreateInfo-aspectReferenceCount-arraylength",
+            "`aspectReferenceCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.

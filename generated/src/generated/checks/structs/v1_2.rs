@@ -61,13 +61,11 @@ pub fn check_attachment_description2(
             }) && matches!(v.load_op.as_raw(), 0)
         && matches!(v.initial_layout.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-06699",
-                format!(
-                    "If `format` includes a color or depth aspect and `loadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `loadOp` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.load_op, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-06699",
+            format!(
+                "If `format` includes a color or depth aspect and `loadOp` is `VK_ATTACHMENT_LOAD_OP_LOAD`, then `initialLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` (`format` = {:?}, `loadOp` = {:?}, `initialLayout` = {:?})",
+                v.format, v.load_op, v.initial_layout
             ),
         );
     }
@@ -75,13 +73,11 @@ pub fn check_attachment_description2(
         || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && matches!(v.final_layout.as_raw(), 0 | 8)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-finalLayout-00843",
-                format!(
-                    "`finalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`finalLayout` = {:?})",
-                    v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-finalLayout-00843",
+            format!(
+                "`finalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`finalLayout` = {:?})",
+                v.final_layout
             ),
         );
     }
@@ -93,13 +89,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 3 | 4)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03280",
-                format!(
-                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03280",
+            format!(
+                "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -111,13 +105,11 @@ pub fn check_attachment_description2(
                     || a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 2)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03281",
-                format!(
-                    "If `format` is a depth/stencil format, `initialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03281",
+            format!(
+                "If `format` is a depth/stencil format, `initialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -129,13 +121,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 3 | 4)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03282",
-                format!(
-                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03282",
+            format!(
+                "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -147,13 +137,11 @@ pub fn check_attachment_description2(
                     || a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 2)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03283",
-                format!(
-                    "If `format` is a depth/stencil format, `finalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03283",
+            format!(
+                "If `format` is a depth/stencil format, `finalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -167,13 +155,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 1000117000 | 1000117001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-06487",
-                format!(
-                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-06487",
+            format!(
+                "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -187,13 +173,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 1000117000 | 1000117001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-06488",
-                format!(
-                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-06488",
+            format!(
+                "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -204,13 +188,11 @@ pub fn check_attachment_description2(
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284",
-                format!(
-                    "If the `separateDepthStencilLayouts` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`initialLayout` = {:?})",
-                    v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03284",
+            format!(
+                "If the `separateDepthStencilLayouts` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`initialLayout` = {:?})",
+                v.initial_layout
             ),
         );
     }
@@ -221,13 +203,11 @@ pub fn check_attachment_description2(
         && !s.feature(|f| f.v12.separate_depth_stencil_layouts)
         && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285",
-                format!(
-                    "If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`finalLayout` = {:?})",
-                    v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-separateDepthStencilLayouts-03285",
+            format!(
+                "If the `separateDepthStencilLayouts` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`finalLayout` = {:?})",
+                v.final_layout
             ),
         );
     }
@@ -241,13 +221,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03286",
-                format!(
-                    "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03286",
+            format!(
+                "If `format` is a color format, `initialLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -261,13 +239,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03287",
-                format!(
-                    "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03287",
+            format!(
+                "If `format` is a color format, `finalLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -281,13 +257,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.initial_layout.as_raw(), 1000241002 | 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03290",
-                format!(
-                    "If `format` is a depth/stencil format which includes only the depth aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
-                    v.format, v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03290",
+            format!(
+                "If `format` is a depth/stencil format which includes only the depth aspect, `initialLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `initialLayout` = {:?})",
+                v.format, v.initial_layout
             ),
         );
     }
@@ -301,13 +275,11 @@ pub fn check_attachment_description2(
                     && !a.contains(vk::ImageAspectFlags::STENCIL)
             }) && matches!(v.final_layout.as_raw(), 1000241002 | 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-format-03291",
-                format!(
-                    "If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
-                    v.format, v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-format-03291",
+            format!(
+                "If `format` is a depth/stencil format which includes only the depth aspect, `finalLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`format` = {:?}, `finalLayout` = {:?})",
+                v.format, v.final_layout
             ),
         );
     }
@@ -318,13 +290,11 @@ pub fn check_attachment_description2(
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.initial_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-synchronization2-06908",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`initialLayout` = {:?})",
-                    v.initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-synchronization2-06908",
+            format!(
+                "If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`initialLayout` = {:?})",
+                v.initial_layout
             ),
         );
     }
@@ -335,13 +305,11 @@ pub fn check_attachment_description2(
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.final_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescription2-synchronization2-06909",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`finalLayout` = {:?})",
-                    v.final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescription2-synchronization2-06909",
+            format!(
+                "If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`finalLayout` = {:?})",
+                v.final_layout
             ),
         );
     }
@@ -377,13 +345,11 @@ pub fn check_attachment_description_stencil_layout(
             1000241000 | 1000241001
         )
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308",
-                format!(
-                    "`stencilInitialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`stencilInitialLayout` = {:?})",
-                    v.stencil_initial_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308",
+            format!(
+                "`stencilInitialLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`stencilInitialLayout` = {:?})",
+                v.stencil_initial_layout
             ),
         );
     }
@@ -396,13 +362,11 @@ pub fn check_attachment_description_stencil_layout(
             1000241000 | 1000241001
         )
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309",
-                format!(
-                    "`stencilFinalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`stencilFinalLayout` = {:?})",
-                    v.stencil_final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03309",
+            format!(
+                "`stencilFinalLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`stencilFinalLayout` = {:?})",
+                v.stencil_final_layout
             ),
         );
     }
@@ -412,13 +376,11 @@ pub fn check_attachment_description_stencil_layout(
             || s.exts.has(origin::VK_KHR_SEPARATE_DEPTH_STENCIL_LAYOUTS)))
         && matches!(v.stencil_final_layout.as_raw(), 0 | 8)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310",
-                format!(
-                    "`stencilFinalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`stencilFinalLayout` = {:?})",
-                    v.stencil_final_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentDescriptionStencilLayout-stencilFinalLayout-03310",
+            format!(
+                "`stencilFinalLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED` or `VK_IMAGE_LAYOUT_PREINITIALIZED` (`stencilFinalLayout` = {:?})",
+                v.stencil_final_layout
             ),
         );
     }
@@ -438,13 +400,11 @@ pub fn check_attachment_reference2(
         || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2)) && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 0 | 8 | 1000001002)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentReference2-layout-03077",
-                format!(
-                    "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
-                    v.attachment, v.layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentReference2-layout-03077",
+            format!(
+                "If `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`attachment` = {:?}, `layout` = {:?})",
+                v.attachment, v.layout
             ),
         );
     }
@@ -456,13 +416,11 @@ pub fn check_attachment_reference2(
         && v.attachment != u32::MAX
         && matches!(v.layout.as_raw(), 1000241000..= 1000241003)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentReference2-separateDepthStencilLayouts-03313",
-                format!(
-                    "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
-                    v.attachment, v.layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentReference2-separateDepthStencilLayouts-03313",
+            format!(
+                "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
+                v.attachment, v.layout
             ),
         );
     }
@@ -473,13 +431,11 @@ pub fn check_attachment_reference2(
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentReference2-synchronization2-06910",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`layout` = {:?})",
-                    v.layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentReference2-synchronization2-06910",
+            format!(
+                "If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`layout` = {:?})",
+                v.layout
             ),
         );
     }
@@ -510,13 +466,11 @@ pub fn check_attachment_reference_stencil_layout(
             1000117001 | 1000241000 | 1000241001
         )
     {
-        return Err(
-            fail(
-                "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318",
-                format!(
-                    "`stencilLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`stencilLayout` = {:?})",
-                    v.stencil_layout
-                ),
+        return refuse(
+            "VUID-VkAttachmentReferenceStencilLayout-stencilLayout-03318",
+            format!(
+                "`stencilLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_PREINITIALIZED`, `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR` (`stencilLayout` = {:?})",
+                v.stencil_layout
             ),
         );
     }
@@ -553,11 +507,9 @@ pub fn check_framebuffer_attachment_image_info(
         "VUID-VkFramebufferAttachmentImageInfo-usage-parameter",
     )?;
     if v.usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkFramebufferAttachmentImageInfo-usage-requiredbitmask",
-                "`usage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkFramebufferAttachmentImageInfo-usage-requiredbitmask",
+            "`usage` is empty",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -609,11 +561,9 @@ pub fn check_image_stencil_usage_create_info(
         "VUID-VkImageStencilUsageCreateInfo-stencilUsage-parameter",
     )?;
     if v.stencil_usage.is_empty() {
-        return Err(
-            fail(
-                "VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask",
-                "`stencilUsage` is empty".into(),
-            ),
+        return refuse(
+            "VUID-VkImageStencilUsageCreateInfo-stencilUsage-requiredbitmask",
+            "`stencilUsage` is empty",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_2)
@@ -621,13 +571,11 @@ pub fn check_image_stencil_usage_create_info(
         && (v.stencil_usage.as_raw() & 64) != 0
         && (v.stencil_usage.as_raw() & 3997471) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539",
-                format!(
-                    "If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` (`stencilUsage` = {:?})",
-                    v.stencil_usage
-                ),
+        return refuse(
+            "VUID-VkImageStencilUsageCreateInfo-stencilUsage-02539",
+            format!(
+                "If `stencilUsage` includes `VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT`, it must not include bits other than `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT` or `VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT` (`stencilUsage` = {:?})",
+                v.stencil_usage
             ),
         );
     }
@@ -644,11 +592,9 @@ pub fn check_render_pass_create_info2(
         "VUID-VkRenderPassCreateInfo2-flags-parameter",
     )?;
     if v.subpass_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkRenderPassCreateInfo2-subpassCount-arraylength",
-                "`subpassCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkRenderPassCreateInfo2-subpassCount-arraylength",
+            "`subpassCount` is 0",
         );
     }
     // SAFETY: the safe setter stored this array and its count.
@@ -698,13 +644,11 @@ pub fn check_semaphore_type_create_info(
         && !s.feature(|f| f.v12.timeline_semaphore)
         && matches!(v.semaphore_type.as_raw(), 1)
     {
-        return Err(
-            fail(
-                "VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252",
-                format!(
-                    "If the `timelineSemaphore` feature is not enabled, `semaphoreType` must not equal `VK_SEMAPHORE_TYPE_TIMELINE` (`semaphoreType` = {:?})",
-                    v.semaphore_type
-                ),
+        return refuse(
+            "VUID-VkSemaphoreTypeCreateInfo-timelineSemaphore-03252",
+            format!(
+                "If the `timelineSemaphore` feature is not enabled, `semaphoreType` must not equal `VK_SEMAPHORE_TYPE_TIMELINE` (`semaphoreType` = {:?})",
+                v.semaphore_type
             ),
         );
     }
@@ -712,13 +656,11 @@ pub fn check_semaphore_type_create_info(
         || s.exts.has(origin::VK_KHR_TIMELINE_SEMAPHORE))
         && matches!(v.semaphore_type.as_raw(), 0) && v.initial_value != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279",
-                format!(
-                    "If `semaphoreType` is `VK_SEMAPHORE_TYPE_BINARY`, `initialValue` must be zero (`semaphoreType` = {:?}, `initialValue` = {:?})",
-                    v.semaphore_type, v.initial_value
-                ),
+        return refuse(
+            "VUID-VkSemaphoreTypeCreateInfo-semaphoreType-03279",
+            format!(
+                "If `semaphoreType` is `VK_SEMAPHORE_TYPE_BINARY`, `initialValue` must be zero (`semaphoreType` = {:?}, `initialValue` = {:?})",
+                v.semaphore_type, v.initial_value
             ),
         );
     }
@@ -735,11 +677,9 @@ pub fn check_semaphore_wait_info(
         "VUID-VkSemaphoreWaitInfo-flags-parameter",
     )?;
     if v.semaphore_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength",
-                "`semaphoreCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength",
+            "`semaphoreCount` is 0",
         );
     }
     Ok(())
@@ -790,13 +730,11 @@ pub fn check_subpass_dependency2(
         || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency2-srcStageMask-04090",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency2-srcStageMask-04090",
+            format!(
+                "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -805,13 +743,11 @@ pub fn check_subpass_dependency2(
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency2-srcStageMask-04091",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency2-srcStageMask-04091",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -819,13 +755,11 @@ pub fn check_subpass_dependency2(
         || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency2-dstStageMask-04090",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency2-dstStageMask-04090",
+            format!(
+                "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -834,13 +768,11 @@ pub fn check_subpass_dependency2(
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency2-dstStageMask-04091",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency2-dstStageMask-04091",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -848,13 +780,11 @@ pub fn check_subpass_dependency2(
         || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.src_subpass == u32::MAX
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency2-dependencyFlags-03090",
-                format!(
-                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `srcSubpass` = {:?})",
-                    v.dependency_flags, v.src_subpass
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency2-dependencyFlags-03090",
+            format!(
+                "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `srcSubpass` = {:?})",
+                v.dependency_flags, v.src_subpass
             ),
         );
     }
@@ -862,13 +792,11 @@ pub fn check_subpass_dependency2(
         || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) != 0 && v.dst_subpass == u32::MAX
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency2-dependencyFlags-03091",
-                format!(
-                    "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `dstSubpass` = {:?})",
-                    v.dependency_flags, v.dst_subpass
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency2-dependencyFlags-03091",
+            format!(
+                "If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL` (`dependencyFlags` = {:?}, `dstSubpass` = {:?})",
+                v.dependency_flags, v.dst_subpass
             ),
         );
     }
@@ -876,13 +804,11 @@ pub fn check_subpass_dependency2(
         || s.exts.has(origin::VK_KHR_CREATE_RENDERPASS2))
         && (v.dependency_flags.as_raw() & 2) == 0 && v.view_offset != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDependency2-dependencyFlags-03092",
-                format!(
-                    "If `dependencyFlags` does not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `viewOffset` must be `0` (`dependencyFlags` = {:?}, `viewOffset` = {:?})",
-                    v.dependency_flags, v.view_offset
-                ),
+        return refuse(
+            "VUID-VkSubpassDependency2-dependencyFlags-03092",
+            format!(
+                "If `dependencyFlags` does not include `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `viewOffset` must be `0` (`dependencyFlags` = {:?}, `viewOffset` = {:?})",
+                v.dependency_flags, v.view_offset
             ),
         );
     }
@@ -920,13 +846,11 @@ pub fn check_subpass_description2(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 2 | 3) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06912",
-                        format!(
-                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06912",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -943,13 +867,11 @@ pub fn check_subpass_description2(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06913",
-                        format!(
-                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06913",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -966,13 +888,11 @@ pub fn check_subpass_description2(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 3 | 5) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06914",
-                        format!(
-                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06914",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -986,13 +906,11 @@ pub fn check_subpass_description2(
                 (v.color_attachment_count as i128) > (l.max_color_attachments as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDescription2-colorAttachmentCount-03063",
-                format!(
-                    "`colorAttachmentCount` must be less than or equal to `VkPhysicalDeviceLimits::maxColorAttachments` (`colorAttachmentCount` = {:?})",
-                    v.color_attachment_count
-                ),
+        return refuse(
+            "VUID-VkSubpassDescription2-colorAttachmentCount-03063",
+            format!(
+                "`colorAttachmentCount` must be less than or equal to `VkPhysicalDeviceLimits::maxColorAttachments` (`colorAttachmentCount` = {:?})",
+                v.color_attachment_count
             ),
         );
     }
@@ -1011,13 +929,11 @@ pub fn check_subpass_description2(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06916",
-                        format!(
-                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06916",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1038,13 +954,11 @@ pub fn check_subpass_description2(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000117000 | 1000117001)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06917",
-                        format!(
-                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06917",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1065,13 +979,11 @@ pub fn check_subpass_description2(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000241000 | 1000241002)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06918",
-                        format!(
-                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06918",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1092,13 +1004,11 @@ pub fn check_subpass_description2(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06919",
-                        format!(
-                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06919",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1119,13 +1029,11 @@ pub fn check_subpass_description2(
             if e.attachment != u32::MAX
                 && matches!(e.layout.as_raw(), 1000241000..= 1000241003)
             {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06920",
-                        format!(
-                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06920",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1144,13 +1052,11 @@ pub fn check_subpass_description2(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314001) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06921",
-                        format!(
-                            "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06921",
+                    format!(
+                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1169,13 +1075,11 @@ pub fn check_subpass_description2(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06922",
-                        format!(
-                            "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06922",
+                    format!(
+                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1194,13 +1098,11 @@ pub fn check_subpass_description2(
             .enumerate()
         {
             if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
-                return Err(
-                    fail(
-                        "VUID-VkSubpassDescription2-attachment-06923",
-                        format!(
-                            "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                            i, e.attachment, i, e.layout
-                        ),
+                return refuse(
+                    "VUID-VkSubpassDescription2-attachment-06923",
+                    format!(
+                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
+                        i, e.attachment, i, e.layout
                     ),
                 );
             }
@@ -1211,13 +1113,11 @@ pub fn check_subpass_description2(
         && !(s.exts.has(origin::VK_HUAWEI_SUBPASS_SHADING)))
         && !matches!(v.pipeline_bind_point.as_raw(), 0)
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDescription2-pipelineBindPoint-03062",
-                format!(
-                    "`pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS` (`pipelineBindPoint` = {:?})",
-                    v.pipeline_bind_point
-                ),
+        return refuse(
+            "VUID-VkSubpassDescription2-pipelineBindPoint-03062",
+            format!(
+                "`pipelineBindPoint` must be `VK_PIPELINE_BIND_POINT_GRAPHICS` (`pipelineBindPoint` = {:?})",
+                v.pipeline_bind_point
             ),
         );
     }
@@ -1226,13 +1126,11 @@ pub fn check_subpass_description2(
         && (s.exts.has(origin::VK_VERSION_1_1) || s.exts.has(origin::VK_KHR_MULTIVIEW)))
         && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSubpassDescription2-multiview-06558",
-                format!(
-                    "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
-                    v.view_mask
-                ),
+        return refuse(
+            "VUID-VkSubpassDescription2-multiview-06558",
+            format!(
+                "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
+                v.view_mask
             ),
         );
     }

@@ -16,40 +16,29 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
     )?;
     crate::checks::enum_filter(v.filter, s, "VUID-VkBlitImageInfo2-filter-parameter")?;
     if v.region_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-regionCount-arraylength",
-                "`regionCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-regionCount-arraylength",
+            "`regionCount` is 0",
         );
     }
     if v.src_image != Default::default() && !s.owned_by_device(v.src_image) {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-commonparent",
+            "`srcImage` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_image != Default::default() && !s.owned_by_device(v.dst_image) {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-commonparent",
+            "`dstImage` does not come from the VkDevice the command is called on",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-srcImage-00219",
-                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-srcImage-00219",
+            "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -57,23 +46,17 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-srcImage-00220",
-                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-srcImage-00220",
+            "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-dstImage-00224",
-                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-dstImage-00224",
+            "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -81,12 +64,9 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-dstImage-00225",
-                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-dstImage-00225",
+            "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
@@ -103,13 +83,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-srcSubresource-01705",
-                        format!(
-                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-srcSubresource-01705",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
                     ),
                 );
             }
@@ -129,13 +107,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-dstSubresource-01706",
-                        format!(
-                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-dstSubresource-01706",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
                     ),
                 );
             }
@@ -157,14 +133,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-srcSubresource-01707",
-                        format!(
-                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.src_subresource.base_array_layer, i, e.src_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-srcSubresource-01707",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -186,14 +160,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-dstSubresource-01708",
-                        format!(
-                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-dstSubresource-01708",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -214,13 +186,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-aspectMask-00241",
-                        format!(
-                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
-                            i, e.src_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-aspectMask-00241",
+                    format!(
+                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                        i, e.src_subresource.aspect_mask
                     ),
                 );
             }
@@ -241,13 +211,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-aspectMask-00242",
-                        format!(
-                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
-                            i, e.dst_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-aspectMask-00242",
+                    format!(
+                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                        i, e.dst_subresource.aspect_mask
                     ),
                 );
             }
@@ -285,14 +253,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-srcOffset-00243",
-                        format!(
-                            "For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].x` = {:?}, `pRegions[{}].srcOffsets[1].x` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offsets[0].x, i, e.src_offsets[1].x, i, e
-                            .src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-srcOffset-00243",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].x` = {:?}, `pRegions[{}].srcOffsets[1].x` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].x, i, e.src_offsets[1].x, i, e
+                        .src_subresource.mip_level
                     ),
                 );
             }
@@ -330,14 +296,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-srcOffset-00244",
-                        format!(
-                            "For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].y` = {:?}, `pRegions[{}].srcOffsets[1].y` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offsets[0].y, i, e.src_offsets[1].y, i, e
-                            .src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-srcOffset-00244",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].y` = {:?}, `pRegions[{}].srcOffsets[1].y` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].y, i, e.src_offsets[1].y, i, e
+                        .src_subresource.mip_level
                     ),
                 );
             }
@@ -375,14 +339,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-srcOffset-00246",
-                        format!(
-                            "For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].z` = {:?}, `pRegions[{}].srcOffsets[1].z` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offsets[0].z, i, e.src_offsets[1].z, i, e
-                            .src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-srcOffset-00246",
+                    format!(
+                        "For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffsets[0].z` = {:?}, `pRegions[{}].srcOffsets[1].z` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offsets[0].z, i, e.src_offsets[1].z, i, e
+                        .src_subresource.mip_level
                     ),
                 );
             }
@@ -420,14 +382,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-dstOffset-00248",
-                        format!(
-                            "For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].x` = {:?}, `pRegions[{}].dstOffsets[1].x` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offsets[0].x, i, e.dst_offsets[1].x, i, e
-                            .dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-dstOffset-00248",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].x` = {:?}, `pRegions[{}].dstOffsets[1].x` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].x, i, e.dst_offsets[1].x, i, e
+                        .dst_subresource.mip_level
                     ),
                 );
             }
@@ -465,14 +425,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-dstOffset-00249",
-                        format!(
-                            "For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].y` = {:?}, `pRegions[{}].dstOffsets[1].y` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offsets[0].y, i, e.dst_offsets[1].y, i, e
-                            .dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-dstOffset-00249",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].y` = {:?}, `pRegions[{}].dstOffsets[1].y` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].y, i, e.dst_offsets[1].y, i, e
+                        .dst_subresource.mip_level
                     ),
                 );
             }
@@ -510,14 +468,12 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkBlitImageInfo2-dstOffset-00251",
-                        format!(
-                            "For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].z` = {:?}, `pRegions[{}].dstOffsets[1].z` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offsets[0].z, i, e.dst_offsets[1].z, i, e
-                            .dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkBlitImageInfo2-dstOffset-00251",
+                    format!(
+                        "For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffsets[0].z` = {:?}, `pRegions[{}].dstOffsets[1].z` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offsets[0].z, i, e.dst_offsets[1].z, i, e
+                        .dst_subresource.mip_level
                     ),
                 );
             }
@@ -527,13 +483,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-srcImageLayout-00222",
-                format!(
-                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                    v.src_image_layout
-                ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-srcImageLayout-00222",
+            format!(
+                "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                v.src_image_layout
             ),
         );
     }
@@ -541,13 +495,11 @@ pub fn check_blit_image_info2(v: &vk::BlitImageInfo2<'_>, s: &Scope<'_>) -> Resu
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
-        return Err(
-            fail(
-                "VUID-VkBlitImageInfo2-dstImageLayout-00227",
-                format!(
-                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                    v.dst_image_layout
-                ),
+        return refuse(
+            "VUID-VkBlitImageInfo2-dstImageLayout-00227",
+            format!(
+                "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                v.dst_image_layout
             ),
         );
     }
@@ -566,39 +518,33 @@ pub fn check_buffer_image_copy2(
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && v.image_extent.width == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferImageCopy2-imageExtent-06659",
-                format!(
-                    "`imageExtent.width` must not be 0 (`imageExtent.width` = {:?})", v
-                    .image_extent.width
-                ),
+        return refuse(
+            "VUID-VkBufferImageCopy2-imageExtent-06659",
+            format!(
+                "`imageExtent.width` must not be 0 (`imageExtent.width` = {:?})", v
+                .image_extent.width
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && v.image_extent.height == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferImageCopy2-imageExtent-06660",
-                format!(
-                    "`imageExtent.height` must not be 0 (`imageExtent.height` = {:?})", v
-                    .image_extent.height
-                ),
+        return refuse(
+            "VUID-VkBufferImageCopy2-imageExtent-06660",
+            format!(
+                "`imageExtent.height` must not be 0 (`imageExtent.height` = {:?})", v
+                .image_extent.height
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && v.image_extent.depth == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferImageCopy2-imageExtent-06661",
-                format!(
-                    "`imageExtent.depth` must not be 0 (`imageExtent.depth` = {:?})", v
-                    .image_extent.depth
-                ),
+        return refuse(
+            "VUID-VkBufferImageCopy2-imageExtent-06661",
+            format!(
+                "`imageExtent.depth` must not be 0 (`imageExtent.depth` = {:?})", v
+                .image_extent.depth
             ),
         );
     }
@@ -640,13 +586,11 @@ pub fn check_buffer_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcStageMask-03929",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcStageMask-03929",
+            format!(
+                "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -655,13 +599,11 @@ pub fn check_buffer_memory_barrier2(
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcStageMask-03930",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcStageMask-03930",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -670,13 +612,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03900",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03900",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -685,13 +625,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03901",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03901",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -700,13 +638,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03902",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03902",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -715,13 +651,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03903",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03903",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -730,13 +664,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03904",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03904",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -745,13 +677,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03905",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03905",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -760,13 +690,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03906",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03906",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -775,13 +703,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03907",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03907",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -790,13 +716,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03909",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03909",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -805,13 +729,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03910",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03910",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -820,13 +742,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03911",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03911",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -835,13 +755,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03912",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03912",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -850,13 +768,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03913",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03913",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -865,13 +781,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03914",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03914",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -880,13 +794,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03915",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03915",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -895,13 +807,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03916",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03916",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -910,13 +820,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03917",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03917",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -924,13 +832,11 @@ pub fn check_buffer_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstStageMask-03929",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstStageMask-03929",
+            format!(
+                "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -939,13 +845,11 @@ pub fn check_buffer_memory_barrier2(
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstStageMask-03930",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstStageMask-03930",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -954,13 +858,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03900",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03900",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -969,13 +871,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03901",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03901",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -984,13 +884,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03902",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03902",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -999,13 +897,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03903",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03903",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1014,13 +910,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03904",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03904",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1029,13 +923,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03905",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03905",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1044,13 +936,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03906",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03906",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1059,13 +949,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03907",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03907",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1074,13 +962,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03909",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03909",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1089,13 +975,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03910",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03910",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1104,13 +988,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03911",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03911",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1119,13 +1001,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03912",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03912",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1134,13 +1014,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03913",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03913",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1149,13 +1027,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03914",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03914",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1164,13 +1040,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03915",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03915",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1179,13 +1053,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03916",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03916",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1194,13 +1066,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03917",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03917",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1208,13 +1078,11 @@ pub fn check_buffer_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.buffer(v.buffer).is_some_and(|r| (v.offset as i128) >= (r.size as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-offset-01187",
-                format!(
-                    "`offset` must be less than the size of `buffer` (`offset` = {:?})",
-                    v.offset
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-offset-01187",
+            format!(
+                "`offset` must be less than the size of `buffer` (`offset` = {:?})", v
+                .offset
             ),
         );
     }
@@ -1222,13 +1090,11 @@ pub fn check_buffer_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)) && v.size != u64::MAX
         && v.size == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-size-01188",
-                format!(
-                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0` (`size` = {:?})",
-                    v.size
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-size-01188",
+            format!(
+                "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0` (`size` = {:?})",
+                v.size
             ),
         );
     }
@@ -1238,13 +1104,11 @@ pub fn check_buffer_memory_barrier2(
             .buffer(v.buffer)
             .is_some_and(|r| (v.offset as i128 + v.size as i128) > (r.size as i128))
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-size-01189",
-                format!(
-                    "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be less than or equal to than the size of `buffer` minus `offset` (`size` = {:?}, `offset` = {:?})",
-                    v.size, v.offset
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-size-01189",
+            format!(
+                "If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be less than or equal to than the size of `buffer` minus `offset` (`size` = {:?}, `offset` = {:?})",
+                v.size, v.offset
             ),
         );
     }
@@ -1252,12 +1116,9 @@ pub fn check_buffer_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.buffer(v.buffer).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-buffer-01931",
-                "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-buffer-01931",
+            "If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
@@ -1266,13 +1127,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-07454",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-07454",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -1282,13 +1141,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-07457",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-07457",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -1298,13 +1155,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-07458",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-07458",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -1314,13 +1169,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-07454",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-07454",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1330,13 +1183,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-07457",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-07457",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1346,13 +1197,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-07458",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-07458",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1362,13 +1211,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-03908",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-03908",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -1378,13 +1225,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-03908",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-03908",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1394,13 +1239,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-07455",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-07455",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -1410,13 +1253,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-srcAccessMask-07456",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-srcAccessMask-07456",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -1426,13 +1267,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-07455",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-07455",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1442,13 +1281,11 @@ pub fn check_buffer_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkBufferMemoryBarrier2-dstAccessMask-07456",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkBufferMemoryBarrier2-dstAccessMask-07456",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -1491,13 +1328,11 @@ pub fn check_command_buffer_inheritance_rendering_info(
         || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
         && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
-        return Err(
-            fail(
-                "VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008",
-                format!(
-                    "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
-                    v.view_mask
-                ),
+        return refuse(
+            "VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008",
+            format!(
+                "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
+                v.view_mask
             ),
         );
     }
@@ -1509,29 +1344,21 @@ pub fn check_copy_buffer_info2(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.region_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferInfo2-regionCount-arraylength",
-                "`regionCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferInfo2-regionCount-arraylength",
+            "`regionCount` is 0",
         );
     }
     if v.src_buffer != Default::default() && !s.owned_by_device(v.src_buffer) {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferInfo2-commonparent",
-                "`srcBuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferInfo2-commonparent",
+            "`srcBuffer` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_buffer != Default::default() && !s.owned_by_device(v.dst_buffer) {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferInfo2-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferInfo2-commonparent",
+            "`dstBuffer` does not come from the VkDevice the command is called on",
         );
     }
     if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
@@ -1546,13 +1373,11 @@ pub fn check_copy_buffer_info2(
                 .buffer(v.src_buffer)
                 .is_some_and(|r| (e.src_offset as i128) >= (r.size as i128))
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferInfo2-srcOffset-00113",
-                        format!(
-                            "The `srcOffset` member of each element of `pRegions` must be less than the size of `srcBuffer` (`pRegions[{}].srcOffset` = {:?})",
-                            i, e.src_offset
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferInfo2-srcOffset-00113",
+                    format!(
+                        "The `srcOffset` member of each element of `pRegions` must be less than the size of `srcBuffer` (`pRegions[{}].srcOffset` = {:?})",
+                        i, e.src_offset
                     ),
                 );
             }
@@ -1570,13 +1395,11 @@ pub fn check_copy_buffer_info2(
                 .buffer(v.dst_buffer)
                 .is_some_and(|r| (e.dst_offset as i128) >= (r.size as i128))
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferInfo2-dstOffset-00114",
-                        format!(
-                            "The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer` (`pRegions[{}].dstOffset` = {:?})",
-                            i, e.dst_offset
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferInfo2-dstOffset-00114",
+                    format!(
+                        "The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer` (`pRegions[{}].dstOffset` = {:?})",
+                        i, e.dst_offset
                     ),
                 );
             }
@@ -1596,13 +1419,11 @@ pub fn check_copy_buffer_info2(
                     (e.src_offset as i128 + e.size as i128) > (r.size as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferInfo2-size-00115",
-                        format!(
-                            "The `size` member of each element of `pRegions` must be less than or equal to the size of `srcBuffer` minus `srcOffset` (`pRegions[{}].srcOffset` = {:?}, `pRegions[{}].size` = {:?})",
-                            i, e.src_offset, i, e.size
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferInfo2-size-00115",
+                    format!(
+                        "The `size` member of each element of `pRegions` must be less than or equal to the size of `srcBuffer` minus `srcOffset` (`pRegions[{}].srcOffset` = {:?}, `pRegions[{}].size` = {:?})",
+                        i, e.src_offset, i, e.size
                     ),
                 );
             }
@@ -1622,13 +1443,11 @@ pub fn check_copy_buffer_info2(
                     (e.dst_offset as i128 + e.size as i128) > (r.size as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferInfo2-size-00116",
-                        format!(
-                            "The `size` member of each element of `pRegions` must be less than or equal to the size of `dstBuffer` minus `dstOffset` (`pRegions[{}].dstOffset` = {:?}, `pRegions[{}].size` = {:?})",
-                            i, e.dst_offset, i, e.size
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferInfo2-size-00116",
+                    format!(
+                        "The `size` member of each element of `pRegions` must be less than or equal to the size of `dstBuffer` minus `dstOffset` (`pRegions[{}].dstOffset` = {:?}, `pRegions[{}].size` = {:?})",
+                        i, e.dst_offset, i, e.size
                     ),
                 );
             }
@@ -1637,12 +1456,9 @@ pub fn check_copy_buffer_info2(
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferInfo2-srcBuffer-00118",
-                "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferInfo2-srcBuffer-00118",
+            "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -1650,23 +1466,17 @@ pub fn check_copy_buffer_info2(
             .buffer(v.src_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferInfo2-srcBuffer-00119",
-                "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferInfo2-srcBuffer-00119",
+            "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferInfo2-dstBuffer-00120",
-                "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferInfo2-dstBuffer-00120",
+            "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -1674,12 +1484,9 @@ pub fn check_copy_buffer_info2(
             .buffer(v.dst_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferInfo2-dstBuffer-00121",
-                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferInfo2-dstBuffer-00121",
+            "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     Ok(())
@@ -1695,40 +1502,29 @@ pub fn check_copy_buffer_to_image_info2(
         "VUID-VkCopyBufferToImageInfo2-dstImageLayout-parameter",
     )?;
     if v.region_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-regionCount-arraylength",
-                "`regionCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-regionCount-arraylength",
+            "`regionCount` is 0",
         );
     }
     if v.src_buffer != Default::default() && !s.owned_by_device(v.src_buffer) {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-commonparent",
-                "`srcBuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-commonparent",
+            "`srcBuffer` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_image != Default::default() && !s.owned_by_device(v.dst_image) {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-commonparent",
+            "`dstImage` does not come from the VkDevice the command is called on",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.src_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-srcBuffer-00174",
-                "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-srcBuffer-00174",
+            "`srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -1736,23 +1532,17 @@ pub fn check_copy_buffer_to_image_info2(
             .buffer(v.src_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-srcBuffer-00176",
-                "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-srcBuffer-00176",
+            "If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-dstImage-00177",
-                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-dstImage-00177",
+            "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -1760,12 +1550,9 @@ pub fn check_copy_buffer_to_image_info2(
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-dstImage-00178",
-                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-dstImage-00178",
+            "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
@@ -1782,13 +1569,11 @@ pub fn check_copy_buffer_to_image_info2(
                     (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferToImageInfo2-imageSubresource-01701",
-                        format!(
-                            "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferToImageInfo2-imageSubresource-01701",
+                    format!(
+                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_subresource.mip_level
                     ),
                 );
             }
@@ -1810,14 +1595,12 @@ pub fn check_copy_buffer_to_image_info2(
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferToImageInfo2-imageSubresource-01702",
-                        format!(
-                            "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
-                            i, e.image_subresource.base_array_layer, i, e
-                            .image_subresource.layer_count
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferToImageInfo2-imageSubresource-01702",
+                    format!(
+                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                        i, e.image_subresource.base_array_layer, i, e.image_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -1856,14 +1639,12 @@ pub fn check_copy_buffer_to_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferToImageInfo2-pRegions-06223",
-                        format!(
-                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.x, i, e.image_extent.width, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferToImageInfo2-pRegions-06223",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.x, i, e.image_extent.width, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -1902,14 +1683,12 @@ pub fn check_copy_buffer_to_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferToImageInfo2-pRegions-06224",
-                        format!(
-                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.y, i, e.image_extent.height, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferToImageInfo2-pRegions-06224",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.y, i, e.image_extent.height, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -1948,14 +1727,12 @@ pub fn check_copy_buffer_to_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferToImageInfo2-imageOffset-00200",
-                        format!(
-                            "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.z, i, e.image_extent.depth, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferToImageInfo2-imageOffset-00200",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `dstImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.z, i, e.image_extent.depth, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -1976,13 +1753,11 @@ pub fn check_copy_buffer_to_image_info2(
                     (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyBufferToImageInfo2-aspectMask-00211",
-                        format!(
-                            "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
-                            i, e.image_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-VkCopyBufferToImageInfo2-aspectMask-00211",
+                    format!(
+                        "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
+                        i, e.image_subresource.aspect_mask
                     ),
                 );
             }
@@ -1992,13 +1767,11 @@ pub fn check_copy_buffer_to_image_info2(
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181",
-                format!(
-                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                    v.dst_image_layout
-                ),
+        return refuse(
+            "VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181",
+            format!(
+                "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                v.dst_image_layout
             ),
         );
     }
@@ -2021,29 +1794,21 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
         "VUID-VkCopyImageInfo2-dstImageLayout-parameter",
     )?;
     if v.region_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkCopyImageInfo2-regionCount-arraylength",
-                "`regionCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageInfo2-regionCount-arraylength",
+            "`regionCount` is 0",
         );
     }
     if v.src_image != Default::default() && !s.owned_by_device(v.src_image) {
-        return Err(
-            fail(
-                "VUID-VkCopyImageInfo2-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageInfo2-commonparent",
+            "`srcImage` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_image != Default::default() && !s.owned_by_device(v.dst_image) {
-        return Err(
-            fail(
-                "VUID-VkCopyImageInfo2-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageInfo2-commonparent",
+            "`dstImage` does not come from the VkDevice the command is called on",
         );
     }
     if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
@@ -2060,13 +1825,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-srcSubresource-01696",
-                        format!(
-                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-srcSubresource-01696",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
                     ),
                 );
             }
@@ -2086,13 +1849,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-dstSubresource-01697",
-                        format!(
-                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-dstSubresource-01697",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
                     ),
                 );
             }
@@ -2114,14 +1875,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-srcSubresource-01698",
-                        format!(
-                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.src_subresource.base_array_layer, i, e.src_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-srcSubresource-01698",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -2143,14 +1902,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-dstSubresource-01699",
-                        format!(
-                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-dstSubresource-01699",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -2171,13 +1928,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.src_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-aspectMask-00142",
-                        format!(
-                            "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
-                            i, e.src_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-aspectMask-00142",
+                    format!(
+                        "For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].srcSubresource.aspectMask` = {:?})",
+                        i, e.src_subresource.aspect_mask
                     ),
                 );
             }
@@ -2198,13 +1953,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     (e.dst_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-aspectMask-00143",
-                        format!(
-                            "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
-                            i, e.dst_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-aspectMask-00143",
+                    format!(
+                        "For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage` (`pRegions[{}].dstSubresource.aspectMask` = {:?})",
+                        i, e.dst_subresource.aspect_mask
                     ),
                 );
             }
@@ -2243,14 +1996,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-srcOffset-00144",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-srcOffset-00144",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2289,14 +2040,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-srcOffset-00145",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-srcOffset-00145",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2336,14 +2085,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                     .max(1) as i128)
                         }))
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-srcOffset-00147",
-                        format!(
-                            "If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-srcOffset-00147",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2360,13 +2107,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             if s.image(v.src_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
                 && e.src_offset.z != 0
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-srcImage-01787",
-                        format!(
-                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` (`pRegions[{}].srcOffset.z` = {:?})",
-                            i, e.src_offset.z
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-srcImage-01787",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` (`pRegions[{}].srcOffset.z` = {:?})",
+                        i, e.src_offset.z
                     ),
                 );
             }
@@ -2383,13 +2128,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
             if s.image(v.dst_image).is_some_and(|r| matches!(r.image_type.as_raw(), 1))
                 && e.dst_offset.z != 0
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-dstImage-01788",
-                        format!(
-                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` (`pRegions[{}].dstOffset.z` = {:?})",
-                            i, e.dst_offset.z
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-dstImage-01788",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` (`pRegions[{}].dstOffset.z` = {:?})",
+                        i, e.dst_offset.z
                     ),
                 );
             }
@@ -2428,14 +2171,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-dstOffset-00150",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-dstOffset-00150",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2474,14 +2215,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-dstOffset-00151",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-dstOffset-00151",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2521,14 +2260,12 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                                     .max(1) as i128)
                         }))
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-dstOffset-00153",
-                        format!(
-                            "If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-dstOffset-00153",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -2551,13 +2288,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
                 && (e.extent.depth as i128) != (e.src_subresource.layer_count as i128)
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-srcImage-01791",
-                        format!(
-                            "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.extent.depth, i, e.src_subresource.layer_count
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-srcImage-01791",
+                    format!(
+                        "If `srcImage` is of type `VK_IMAGE_TYPE_2D`, and `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `srcSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.extent.depth, i, e.src_subresource.layer_count
                     ),
                 );
             }
@@ -2580,13 +2315,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
                     .is_some_and(|r| matches!(r.image_type.as_raw(), 2))
                 && (e.extent.depth as i128) != (e.dst_subresource.layer_count as i128)
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageInfo2-dstImage-01792",
-                        format!(
-                            "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.extent.depth, i, e.dst_subresource.layer_count
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageInfo2-dstImage-01792",
+                    format!(
+                        "If `dstImage` is of type `VK_IMAGE_TYPE_2D`, and `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `extent.depth` must equal `dstSubresource.layerCount` (`pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.extent.depth, i, e.dst_subresource.layer_count
                     ),
                 );
             }
@@ -2596,13 +2329,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyImageInfo2-srcImageLayout-00129",
-                format!(
-                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                    v.src_image_layout
-                ),
+        return refuse(
+            "VUID-VkCopyImageInfo2-srcImageLayout-00129",
+            format!(
+                "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                v.src_image_layout
             ),
         );
     }
@@ -2610,13 +2341,11 @@ pub fn check_copy_image_info2(v: &vk::CopyImageInfo2<'_>, s: &Scope<'_>) -> Resu
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyImageInfo2-dstImageLayout-00134",
-                format!(
-                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                    v.dst_image_layout
-                ),
+        return refuse(
+            "VUID-VkCopyImageInfo2-dstImageLayout-00134",
+            format!(
+                "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                v.dst_image_layout
             ),
         );
     }
@@ -2637,40 +2366,29 @@ pub fn check_copy_image_to_buffer_info2(
         "VUID-VkCopyImageToBufferInfo2-srcImageLayout-parameter",
     )?;
     if v.region_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-regionCount-arraylength",
-                "`regionCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-regionCount-arraylength",
+            "`regionCount` is 0",
         );
     }
     if v.src_image != Default::default() && !s.owned_by_device(v.src_image) {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-commonparent",
+            "`srcImage` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_buffer != Default::default() && !s.owned_by_device(v.dst_buffer) {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-commonparent",
+            "`dstBuffer` does not come from the VkDevice the command is called on",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-srcImage-00186",
-                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-srcImage-00186",
+            "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -2678,23 +2396,17 @@ pub fn check_copy_image_to_buffer_info2(
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-srcImage-00187",
-                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-srcImage-00187",
+            "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.buffer(v.dst_buffer).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-dstBuffer-00191",
-                "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-dstBuffer-00191",
+            "`dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -2702,12 +2414,9 @@ pub fn check_copy_image_to_buffer_info2(
             .buffer(v.dst_buffer)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
-                "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-dstBuffer-00192",
+            "If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
@@ -2724,13 +2433,11 @@ pub fn check_copy_image_to_buffer_info2(
                     (e.image_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageToBufferInfo2-imageSubresource-01703",
-                        format!(
-                            "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageToBufferInfo2-imageSubresource-01703",
+                    format!(
+                        "The `imageSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_subresource.mip_level
                     ),
                 );
             }
@@ -2752,14 +2459,12 @@ pub fn check_copy_image_to_buffer_info2(
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageToBufferInfo2-imageSubresource-01704",
-                        format!(
-                            "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
-                            i, e.image_subresource.base_array_layer, i, e
-                            .image_subresource.layer_count
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageToBufferInfo2-imageSubresource-01704",
+                    format!(
+                        "The `imageSubresource.baseArrayLayer` + `imageSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].imageSubresource.baseArrayLayer` = {:?}, `pRegions[{}].imageSubresource.layerCount` = {:?})",
+                        i, e.image_subresource.base_array_layer, i, e.image_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -2798,14 +2503,12 @@ pub fn check_copy_image_to_buffer_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageToBufferInfo2-imageOffset-00197",
-                        format!(
-                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.x, i, e.image_extent.width, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00197",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.x` and (`imageExtent.width` + `imageOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.x` = {:?}, `pRegions[{}].imageExtent.width` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.x, i, e.image_extent.width, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -2844,14 +2547,12 @@ pub fn check_copy_image_to_buffer_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageToBufferInfo2-imageOffset-00198",
-                        format!(
-                            "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.y, i, e.image_extent.height, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00198",
+                    format!(
+                        "For each element of `pRegions` not containing `VkCopyCommandTransformInfoQCOM` in its `pNext` chain, `imageOffset.y` and (`imageExtent.height` + `imageOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.y` = {:?}, `pRegions[{}].imageExtent.height` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.y, i, e.image_extent.height, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -2890,14 +2591,12 @@ pub fn check_copy_image_to_buffer_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageToBufferInfo2-imageOffset-00200",
-                        format!(
-                            "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
-                            i, e.image_offset.z, i, e.image_extent.depth, i, e
-                            .image_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageToBufferInfo2-imageOffset-00200",
+                    format!(
+                        "For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `imageSubresource` of `srcImage` (`pRegions[{}].imageOffset.z` = {:?}, `pRegions[{}].imageExtent.depth` = {:?}, `pRegions[{}].imageSubresource.mipLevel` = {:?})",
+                        i, e.image_offset.z, i, e.image_extent.depth, i, e
+                        .image_subresource.mip_level
                     ),
                 );
             }
@@ -2918,13 +2617,11 @@ pub fn check_copy_image_to_buffer_info2(
                     (e.image_subresource.aspect_mask.as_raw() & !a.as_raw()) != 0
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkCopyImageToBufferInfo2-aspectMask-00211",
-                        format!(
-                            "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
-                            i, e.image_subresource.aspect_mask
-                        ),
+                return refuse(
+                    "VUID-VkCopyImageToBufferInfo2-aspectMask-00211",
+                    format!(
+                        "For each element of `pRegions`, `imageSubresource.aspectMask` must specify aspects present in `srcImage` (`pRegions[{}].imageSubresource.aspectMask` = {:?})",
+                        i, e.image_subresource.aspect_mask
                     ),
                 );
             }
@@ -2934,13 +2631,11 @@ pub fn check_copy_image_to_buffer_info2(
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
-        return Err(
-            fail(
-                "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190",
-                format!(
-                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                    v.src_image_layout
-                ),
+        return refuse(
+            "VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190",
+            format!(
+                "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                v.src_image_layout
             ),
         );
     }
@@ -3023,39 +2718,30 @@ pub fn check_image_copy2(v: &vk::ImageCopy2<'_>, s: &Scope<'_>) -> Result<()> {
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && v.extent.width == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCopy2-extent-06668",
-                format!(
-                    "`extent.width` must not be 0 (`extent.width` = {:?})", v.extent
-                    .width
-                ),
+        return refuse(
+            "VUID-VkImageCopy2-extent-06668",
+            format!(
+                "`extent.width` must not be 0 (`extent.width` = {:?})", v.extent.width
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && v.extent.height == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCopy2-extent-06669",
-                format!(
-                    "`extent.height` must not be 0 (`extent.height` = {:?})", v.extent
-                    .height
-                ),
+        return refuse(
+            "VUID-VkImageCopy2-extent-06669",
+            format!(
+                "`extent.height` must not be 0 (`extent.height` = {:?})", v.extent.height
             ),
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && v.extent.depth == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageCopy2-extent-06670",
-                format!(
-                    "`extent.depth` must not be 0 (`extent.depth` = {:?})", v.extent
-                    .depth
-                ),
+        return refuse(
+            "VUID-VkImageCopy2-extent-06670",
+            format!(
+                "`extent.depth` must not be 0 (`extent.depth` = {:?})", v.extent.depth
             ),
         );
     }
@@ -3103,13 +2789,11 @@ pub fn check_image_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcStageMask-03929",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcStageMask-03929",
+            format!(
+                "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -3118,13 +2802,11 @@ pub fn check_image_memory_barrier2(
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcStageMask-03930",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcStageMask-03930",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -3133,13 +2815,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03900",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03900",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3148,13 +2828,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03901",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03901",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3163,13 +2841,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03902",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03902",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3178,13 +2854,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03903",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03903",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3193,13 +2867,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03904",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03904",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3208,13 +2880,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03905",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03905",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3223,13 +2893,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03906",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03906",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3238,13 +2906,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03907",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03907",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3253,13 +2919,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03909",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03909",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3268,13 +2932,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03910",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03910",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3283,13 +2945,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03911",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03911",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3298,13 +2958,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03912",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03912",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3313,13 +2971,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03913",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03913",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3328,13 +2984,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03914",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03914",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3343,13 +2997,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03915",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03915",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3358,13 +3010,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03916",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03916",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3373,13 +3023,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03917",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03917",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3387,13 +3035,11 @@ pub fn check_image_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstStageMask-03929",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstStageMask-03929",
+            format!(
+                "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -3402,13 +3048,11 @@ pub fn check_image_memory_barrier2(
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstStageMask-03930",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstStageMask-03930",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -3417,13 +3061,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03900",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03900",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3432,13 +3074,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03901",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03901",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3447,13 +3087,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03902",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03902",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3462,13 +3100,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03903",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03903",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3477,13 +3113,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03904",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03904",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3492,13 +3126,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03905",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03905",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3507,13 +3139,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03906",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03906",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3522,13 +3152,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03907",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03907",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3537,13 +3165,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03909",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03909",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3552,13 +3178,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03910",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03910",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3567,13 +3191,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03911",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03911",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3582,13 +3204,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03912",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03912",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3597,13 +3217,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03913",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03913",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3612,13 +3230,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03914",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03914",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3627,13 +3243,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03915",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03915",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3642,13 +3256,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03916",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03916",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3657,13 +3269,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03917",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03917",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3675,13 +3285,11 @@ pub fn check_image_memory_barrier2(
                 (v.subresource_range.base_mip_level as i128) >= (r.mip_levels as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-subresourceRange-01486",
-                format!(
-                    "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
-                    v.subresource_range.base_mip_level
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-subresourceRange-01486",
+            format!(
+                "`subresourceRange.baseMipLevel` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseMipLevel` = {:?})",
+                v.subresource_range.base_mip_level
             ),
         );
     }
@@ -3695,13 +3303,11 @@ pub fn check_image_memory_barrier2(
                     + v.subresource_range.level_count as i128) > (r.mip_levels as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-subresourceRange-01724",
-                format!(
-                    "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
-                    v.subresource_range.level_count, v.subresource_range.base_mip_level
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-subresourceRange-01724",
+            format!(
+                "If `subresourceRange.levelCount` is not `VK_REMAINING_MIP_LEVELS`, `subresourceRange.baseMipLevel` + `subresourceRange.levelCount` must be less than or equal to the `mipLevels` specified in VkImageCreateInfo when `image` was created (`subresourceRange.levelCount` = {:?}, `subresourceRange.baseMipLevel` = {:?})",
+                v.subresource_range.level_count, v.subresource_range.base_mip_level
             ),
         );
     }
@@ -3714,13 +3320,11 @@ pub fn check_image_memory_barrier2(
                     >= (r.array_layers as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-subresourceRange-01488",
-                format!(
-                    "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
-                    v.subresource_range.base_array_layer
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-subresourceRange-01488",
+            format!(
+                "`subresourceRange.baseArrayLayer` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.baseArrayLayer` = {:?})",
+                v.subresource_range.base_array_layer
             ),
         );
     }
@@ -3734,13 +3338,11 @@ pub fn check_image_memory_barrier2(
                     + v.subresource_range.layer_count as i128) > (r.array_layers as i128)
             })
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-subresourceRange-01725",
-                format!(
-                    "If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.layerCount` = {:?}, `subresourceRange.baseArrayLayer` = {:?})",
-                    v.subresource_range.layer_count, v.subresource_range.base_array_layer
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-subresourceRange-01725",
+            format!(
+                "If `subresourceRange.layerCount` is not `VK_REMAINING_ARRAY_LAYERS`, `subresourceRange.baseArrayLayer` + `subresourceRange.layerCount` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `image` was created (`subresourceRange.layerCount` = {:?}, `subresourceRange.baseArrayLayer` = {:?})",
+                v.subresource_range.layer_count, v.subresource_range.base_array_layer
             ),
         );
     }
@@ -3748,12 +3350,9 @@ pub fn check_image_memory_barrier2(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && s.image(v.image).is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-image-01932",
-                "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-image-01932",
+            "If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3)
@@ -3762,13 +3361,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-07454",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-07454",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3778,13 +3375,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-07457",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-07457",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3794,13 +3389,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-07458",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-07458",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3810,13 +3403,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-07454",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-07454",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3826,13 +3417,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-07457",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-07457",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3842,13 +3431,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-07458",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-07458",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3858,13 +3445,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-03908",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-03908",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3874,13 +3459,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-03908",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-03908",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3890,13 +3473,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-07455",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-07455",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3906,13 +3487,11 @@ pub fn check_image_memory_barrier2(
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-srcAccessMask-07456",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-srcAccessMask-07456",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -3922,13 +3501,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-07455",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-07455",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3938,13 +3515,11 @@ pub fn check_image_memory_barrier2(
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-dstAccessMask-07456",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-dstAccessMask-07456",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -3953,13 +3528,11 @@ pub fn check_image_memory_barrier2(
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.old_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-synchronization2-07793",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `oldLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`oldLayout` = {:?})",
-                    v.old_layout
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-synchronization2-07793",
+            format!(
+                "If the `synchronization2` feature is not enabled, `oldLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`oldLayout` = {:?})",
+                v.old_layout
             ),
         );
     }
@@ -3968,13 +3541,11 @@ pub fn check_image_memory_barrier2(
         && !s.feature(|f| f.v13.synchronization2)
         && matches!(v.new_layout.as_raw(), 1000314000 | 1000314001)
     {
-        return Err(
-            fail(
-                "VUID-VkImageMemoryBarrier2-synchronization2-07794",
-                format!(
-                    "If the `synchronization2` feature is not enabled, `newLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`newLayout` = {:?})",
-                    v.new_layout
-                ),
+        return refuse(
+            "VUID-VkImageMemoryBarrier2-synchronization2-07794",
+            format!(
+                "If the `synchronization2` feature is not enabled, `newLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`newLayout` = {:?})",
+                v.new_layout
             ),
         );
     }

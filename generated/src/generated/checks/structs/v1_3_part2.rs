@@ -28,13 +28,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.src_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcStageMask-03929",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcStageMask-03929",
+            format!(
+                "If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -43,13 +41,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.src_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcStageMask-03930",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
-                    v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcStageMask-03930",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`srcStageMask` = {:?})",
+                v.src_stage_mask
             ),
         );
     }
@@ -58,13 +54,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 1) != 0
         && (v.src_stage_mask.as_raw() & 33652738) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03900",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03900",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -73,13 +67,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 2) != 0
         && (v.src_stage_mask.as_raw() & 68719575044) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03901",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03901",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -88,13 +80,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 4) != 0
         && (v.src_stage_mask.as_raw() & 137439051780) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03902",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03902",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -103,13 +93,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 16) != 0
         && (v.src_stage_mask.as_raw() & 549755912320) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03903",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03903",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -118,13 +106,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 8) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03904",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03904",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -133,13 +119,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 4294967296) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03905",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03905",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -148,13 +132,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 8589934592) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03906",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03906",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -163,13 +145,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 17179869184) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03907",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03907",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -178,13 +158,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 64) != 0
         && (v.src_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03909",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03909",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -193,13 +171,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 128) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03910",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03910",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -208,13 +184,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 256) != 0
         && (v.src_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03911",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03911",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -223,13 +197,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 512) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03912",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03912",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -238,13 +210,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 1024) != 0
         && (v.src_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03913",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03913",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -253,13 +223,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 2048) != 0
         && (v.src_stage_mask.as_raw() & 30366830592) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03914",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03914",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -268,13 +236,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 4096) != 0
         && (v.src_stage_mask.as_raw() & 64726568960) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03915",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03915",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -283,13 +249,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 8192) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03916",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03916",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -298,13 +262,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 16384) != 0
         && (v.src_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03917",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03917",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -312,13 +274,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.dst_stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstStageMask-03929",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstStageMask-03929",
+            format!(
+                "If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -327,13 +287,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && !s.feature(|f| f.v10.tessellation_shader)
         && (v.dst_stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstStageMask-03930",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
-                    v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstStageMask-03930",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`dstStageMask` = {:?})",
+                v.dst_stage_mask
             ),
         );
     }
@@ -342,13 +300,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 1) != 0
         && (v.dst_stage_mask.as_raw() & 33652738) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03900",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03900",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -357,13 +313,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 2) != 0
         && (v.dst_stage_mask.as_raw() & 68719575044) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03901",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03901",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INDEX_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -372,13 +326,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 4) != 0
         && (v.dst_stage_mask.as_raw() & 137439051780) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03902",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03902",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`, `VK_PIPELINE_STAGE_2_VERTEX_INPUT_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -387,13 +339,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 16) != 0
         && (v.dst_stage_mask.as_raw() & 549755912320) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03903",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03903",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_INPUT_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT`, `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -402,13 +352,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 8) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03904",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03904",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_UNIFORM_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -417,13 +365,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 4294967296) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03905",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03905",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_SAMPLED_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -432,13 +378,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 8589934592) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03906",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03906",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -447,13 +391,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 17179869184) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03907",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03907",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -462,13 +404,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 64) != 0
         && (v.dst_stage_mask.as_raw() & 2473904933112) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03909",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03909",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -477,13 +417,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 128) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03910",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03910",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -492,13 +430,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 256) != 0
         && (v.dst_stage_mask.as_raw() & 99328) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03911",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03911",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT` `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -507,13 +443,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 512) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03912",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03912",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -522,13 +456,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 1024) != 0
         && (v.dst_stage_mask.as_raw() & 99072) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03913",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03913",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT`, `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -537,13 +469,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 2048) != 0
         && (v.dst_stage_mask.as_raw() & 30366830592) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03914",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03914",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -552,13 +482,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 4096) != 0
         && (v.dst_stage_mask.as_raw() & 64726568960) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03915",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03915",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_TRANSFER_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_COPY_BIT`, `VK_PIPELINE_STAGE_2_BLIT_BIT`, `VK_PIPELINE_STAGE_2_RESOLVE_BIT`, `VK_PIPELINE_STAGE_2_CLEAR_BIT`, `VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_COPY_BIT_KHR`, or `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -567,13 +495,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 8192) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03916",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03916",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_HOST_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -582,13 +508,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 16384) != 0
         && (v.dst_stage_mask.as_raw() & 16384) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03917",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03917",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_HOST_WRITE_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_HOST_BIT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -598,13 +522,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2475012229368) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-07454",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-07454",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -614,13 +536,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 35184372088832) != 0
         && (v.src_stage_mask.as_raw() & 1073741824) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-07457",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-07457",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -630,13 +550,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 17592186044416) != 0
         && (v.src_stage_mask.as_raw() & 1107296256) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-07458",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-07458",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -646,13 +564,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2475012229368) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-07454",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-07454",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -662,13 +578,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 35184372088832) != 0
         && (v.dst_stage_mask.as_raw() & 1073741824) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-07457",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-07457",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_WRITE_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -678,13 +592,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 17592186044416) != 0
         && (v.dst_stage_mask.as_raw() & 1107296256) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-07458",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-07458",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_MICROMAP_READ_BIT_EXT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_MICROMAP_BUILD_BIT_EXT` or `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -694,13 +606,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 32) != 0
         && (v.src_stage_mask.as_raw() & 2473938487544) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-03908",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-03908",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -710,13 +620,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 32) != 0
         && (v.dst_stage_mask.as_raw() & 2473938487544) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-03908",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-03908",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, `VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR`, or one of the `VK_PIPELINE_STAGE_*_SHADER_BIT` stages (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -726,13 +634,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 4398046511104) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-07455",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-07455",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -742,13 +648,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.src_access_mask.as_raw() & 8796093022208) != 0
         && (v.src_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-srcAccessMask-07456",
-                format!(
-                    "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
-                    v.src_access_mask, v.src_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-srcAccessMask-07456",
+            format!(
+                "If `srcAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`srcAccessMask` = {:?}, `srcStageMask` = {:?})",
+                v.src_access_mask, v.src_stage_mask
             ),
         );
     }
@@ -758,13 +662,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 4398046511104) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-07455",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-07455",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_READ_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -774,13 +676,11 @@ pub fn check_memory_barrier2(v: &vk::MemoryBarrier2<'_>, s: &Scope<'_>) -> Resul
         && (v.dst_access_mask.as_raw() & 8796093022208) != 0
         && (v.dst_stage_mask.as_raw() & 536870912) == 0
     {
-        return Err(
-            fail(
-                "VUID-VkMemoryBarrier2-dstAccessMask-07456",
-                format!(
-                    "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
-                    v.dst_access_mask, v.dst_stage_mask
-                ),
+        return refuse(
+            "VUID-VkMemoryBarrier2-dstAccessMask-07456",
+            format!(
+                "If `dstAccessMask` includes `VK_ACCESS_2_OPTICAL_FLOW_WRITE_BIT_NV`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_OPTICAL_FLOW_BIT_NV` (`dstAccessMask` = {:?}, `dstStageMask` = {:?})",
+                v.dst_access_mask, v.dst_stage_mask
             ),
         );
     }
@@ -792,11 +692,9 @@ pub fn check_private_data_slot_create_info(
     _s: &Scope<'_>,
 ) -> Result<()> {
     if v.flags.as_raw() != 0 {
-        return Err(
-            fail(
-                "VUID-VkPrivateDataSlotCreateInfo-flags-zerobitmask",
-                "`flags` is not 0".into(),
-            ),
+        return refuse(
+            "VUID-VkPrivateDataSlotCreateInfo-flags-zerobitmask",
+            "`flags` is not 0",
         );
     }
     Ok(())
@@ -832,23 +730,17 @@ pub fn check_rendering_attachment_info(
         "VUID-VkRenderingAttachmentInfo-storeOp-parameter",
     )?;
     if v.image_view != Default::default() && !s.owned_by_device(v.image_view) {
-        return Err(
-            fail(
-                "VUID-VkRenderingAttachmentInfo-commonparent",
-                "`imageView` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRenderingAttachmentInfo-commonparent",
+            "`imageView` does not come from the VkDevice the command is called on",
         );
     }
     if v.resolve_image_view != Default::default()
         && !s.owned_by_device(v.resolve_image_view)
     {
-        return Err(
-            fail(
-                "VUID-VkRenderingAttachmentInfo-commonparent",
-                "`resolveImageView` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkRenderingAttachmentInfo-commonparent",
+            "`resolveImageView` does not come from the VkDevice the command is called on",
         );
     }
     Ok(())
@@ -864,13 +756,11 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
         || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING)) && v.view_mask == 0
         && v.layer_count == 0
     {
-        return Err(
-            fail(
-                "VUID-VkRenderingInfo-viewMask-06069",
-                format!(
-                    "If `viewMask` is `0`, `layerCount` must not be `0` (`viewMask` = {:?}, `layerCount` = {:?})",
-                    v.view_mask, v.layer_count
-                ),
+        return refuse(
+            "VUID-VkRenderingInfo-viewMask-06069",
+            format!(
+                "If `viewMask` is `0`, `layerCount` must not be `0` (`viewMask` = {:?}, `layerCount` = {:?})",
+                v.view_mask, v.layer_count
             ),
         );
     }
@@ -878,13 +768,11 @@ pub fn check_rendering_info(v: &vk::RenderingInfo<'_>, s: &Scope<'_>) -> Result<
         || s.exts.has(origin::VK_KHR_DYNAMIC_RENDERING))
         && !s.feature(|f| f.v11.multiview) && v.view_mask != 0
     {
-        return Err(
-            fail(
-                "VUID-VkRenderingInfo-multiview-06127",
-                format!(
-                    "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
-                    v.view_mask
-                ),
+        return refuse(
+            "VUID-VkRenderingInfo-multiview-06127",
+            format!(
+                "If the `multiview` feature is not enabled, `viewMask` must be `0` (`viewMask` = {:?})",
+                v.view_mask
             ),
         );
     }
@@ -930,29 +818,21 @@ pub fn check_resolve_image_info2(
         "VUID-VkResolveImageInfo2-dstImageLayout-parameter",
     )?;
     if v.region_count == 0 {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-regionCount-arraylength",
-                "`regionCount` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-regionCount-arraylength",
+            "`regionCount` is 0",
         );
     }
     if v.src_image != Default::default() && !s.owned_by_device(v.src_image) {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-commonparent",
+            "`srcImage` does not come from the VkDevice the command is called on",
         );
     }
     if v.dst_image != Default::default() && !s.owned_by_device(v.dst_image) {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-commonparent",
+            "`dstImage` does not come from the VkDevice the command is called on",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -960,12 +840,9 @@ pub fn check_resolve_image_info2(
             .image(v.src_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-srcImage-00256",
-                "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-srcImage-00256",
+            "If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
@@ -973,12 +850,9 @@ pub fn check_resolve_image_info2(
             .image(v.dst_image)
             .is_some_and(|r| !(r.bound || (r.flags.as_raw() & 1) != 0))
     {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-dstImage-00258",
-                "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-dstImage-00258",
+            "If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object",
         );
     }
     if s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2) {
@@ -995,13 +869,11 @@ pub fn check_resolve_image_info2(
                     (e.src_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-srcSubresource-01709",
-                        format!(
-                            "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-srcSubresource-01709",
+                    format!(
+                        "The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_subresource.mip_level
                     ),
                 );
             }
@@ -1021,13 +893,11 @@ pub fn check_resolve_image_info2(
                     (e.dst_subresource.mip_level as i128) >= (r.mip_levels as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-dstSubresource-01710",
-                        format!(
-                            "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_subresource.mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-dstSubresource-01710",
+                    format!(
+                        "The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_subresource.mip_level
                     ),
                 );
             }
@@ -1049,14 +919,12 @@ pub fn check_resolve_image_info2(
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-srcSubresource-01711",
-                        format!(
-                            "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
-                            i, e.src_subresource.base_array_layer, i, e.src_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-srcSubresource-01711",
+                    format!(
+                        "The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was created (`pRegions[{}].srcSubresource.baseArrayLayer` = {:?}, `pRegions[{}].srcSubresource.layerCount` = {:?})",
+                        i, e.src_subresource.base_array_layer, i, e.src_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -1078,14 +946,12 @@ pub fn check_resolve_image_info2(
                         > (r.array_layers as i128)
                 })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-dstSubresource-01712",
-                        format!(
-                            "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
-                            i, e.dst_subresource.base_array_layer, i, e.dst_subresource
-                            .layer_count
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-dstSubresource-01712",
+                    format!(
+                        "The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was created (`pRegions[{}].dstSubresource.baseArrayLayer` = {:?}, `pRegions[{}].dstSubresource.layerCount` = {:?})",
+                        i, e.dst_subresource.base_array_layer, i, e.dst_subresource
+                        .layer_count
                     ),
                 );
             }
@@ -1124,14 +990,12 @@ pub fn check_resolve_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-srcOffset-00269",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-srcOffset-00269",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.x, i, e.extent.width, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1170,14 +1034,12 @@ pub fn check_resolve_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-srcOffset-00270",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-srcOffset-00270",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.y, i, e.extent.height, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1216,14 +1078,12 @@ pub fn check_resolve_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-srcOffset-00272",
-                        format!(
-                            "For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
-                            i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-srcOffset-00272",
+                    format!(
+                        "For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage` (`pRegions[{}].srcOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].srcSubresource.mipLevel` = {:?})",
+                        i, e.src_offset.z, i, e.extent.depth, i, e.src_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1262,14 +1122,12 @@ pub fn check_resolve_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-dstOffset-00274",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-dstOffset-00274",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.x` = {:?}, `pRegions[{}].extent.width` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.x, i, e.extent.width, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1308,14 +1166,12 @@ pub fn check_resolve_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-dstOffset-00275",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-dstOffset-00275",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.y` = {:?}, `pRegions[{}].extent.height` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.y, i, e.extent.height, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1354,14 +1210,12 @@ pub fn check_resolve_image_info2(
                                 .max(1) as i128)
                     })
             {
-                return Err(
-                    fail(
-                        "VUID-VkResolveImageInfo2-dstOffset-00277",
-                        format!(
-                            "For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
-                            i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
-                            .mip_level
-                        ),
+                return refuse(
+                    "VUID-VkResolveImageInfo2-dstOffset-00277",
+                    format!(
+                        "For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage` (`pRegions[{}].dstOffset.z` = {:?}, `pRegions[{}].extent.depth` = {:?}, `pRegions[{}].dstSubresource.mipLevel` = {:?})",
+                        i, e.dst_offset.z, i, e.extent.depth, i, e.dst_subresource
+                        .mip_level
                     ),
                 );
             }
@@ -1370,36 +1224,28 @@ pub fn check_resolve_image_info2(
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.src_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 1) != 1)
     {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-srcImage-06762",
-                "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-srcImage-06762",
+            "`srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && s.image(v.dst_image).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2)
     {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-dstImage-06764",
-                "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag"
-                    .into(),
-            ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-dstImage-06764",
+            "`dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag",
         );
     }
     if ((s.exts.has(origin::VK_VERSION_1_3) || s.exts.has(origin::VK_KHR_COPY_COMMANDS2))
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.src_image_layout.as_raw(), 1 | 6)
     {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-srcImageLayout-00261",
-                format!(
-                    "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
-                    v.src_image_layout
-                ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-srcImageLayout-00261",
+            format!(
+                "`srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`srcImageLayout` = {:?})",
+                v.src_image_layout
             ),
         );
     }
@@ -1407,13 +1253,11 @@ pub fn check_resolve_image_info2(
         && !(s.exts.has(origin::VK_KHR_SHARED_PRESENTABLE_IMAGE)))
         && !matches!(v.dst_image_layout.as_raw(), 1 | 7)
     {
-        return Err(
-            fail(
-                "VUID-VkResolveImageInfo2-dstImageLayout-00263",
-                format!(
-                    "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
-                    v.dst_image_layout
-                ),
+        return refuse(
+            "VUID-VkResolveImageInfo2-dstImageLayout-00263",
+            format!(
+                "`dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL` (`dstImageLayout` = {:?})",
+                v.dst_image_layout
             ),
         );
     }
@@ -1437,13 +1281,11 @@ pub fn check_semaphore_submit_info(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.geometry_shader) && (v.stage_mask.as_raw() & 64) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSemaphoreSubmitInfo-stageMask-03929",
-                format!(
-                    "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
-                    v.stage_mask
-                ),
+        return refuse(
+            "VUID-VkSemaphoreSubmitInfo-stageMask-03929",
+            format!(
+                "If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT` (`stageMask` = {:?})",
+                v.stage_mask
             ),
         );
     }
@@ -1451,13 +1293,11 @@ pub fn check_semaphore_submit_info(
         || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
         && !s.feature(|f| f.v10.tessellation_shader) && (v.stage_mask.as_raw() & 48) != 0
     {
-        return Err(
-            fail(
-                "VUID-VkSemaphoreSubmitInfo-stageMask-03930",
-                format!(
-                    "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
-                    v.stage_mask
-                ),
+        return refuse(
+            "VUID-VkSemaphoreSubmitInfo-stageMask-03930",
+            format!(
+                "If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT` (`stageMask` = {:?})",
+                v.stage_mask
             ),
         );
     }
@@ -1490,23 +1330,19 @@ pub fn check_write_descriptor_set_inline_uniform_block(
     s: &Scope<'_>,
 ) -> Result<()> {
     if v.data_size == 0 {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength",
-                "`dataSize` is 0".into(),
-            ),
+        return refuse(
+            "VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-arraylength",
+            "`dataSize` is 0",
         );
     }
     if (s.exts.has(origin::VK_VERSION_1_3)
         || s.exts.has(origin::VK_EXT_INLINE_UNIFORM_BLOCK)) && v.data_size % 4 != 0
     {
-        return Err(
-            fail(
-                "VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222",
-                format!(
-                    "`dataSize` must be an integer multiple of `4` (`dataSize` = {:?})",
-                    v.data_size
-                ),
+        return refuse(
+            "VUID-VkWriteDescriptorSetInlineUniformBlock-dataSize-02222",
+            format!(
+                "`dataSize` must be an integer multiple of `4` (`dataSize` = {:?})", v
+                .data_size
             ),
         );
     }
