@@ -15,6 +15,7 @@ use crate::support::refuse;
 use crate::{Error, Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
+use smallvec::SmallVec;
 use tuff_runtime::{Retained, Vrc, Vutex, Vweak};
 
 /// The lifecycle state of a command buffer, shared with the device's registry so a
@@ -689,17 +690,22 @@ pub(crate) fn timeline_initial(info: &crate::structs::SemaphoreCreateInfo<'_>) -
 /// it signals (`true`) or waits.
 pub(crate) type TimelineOp = (vk::Semaphore, u64, bool);
 
-/// The rules a timeline operation's value breaks: (a signal not above the value
-/// the semaphore has when it executes, a wait too far from the semaphore's values,
-/// a signal too far from them).
-pub(crate) type TimelineValueRules = (&'static str, &'static str, &'static str);
+/// The rules a timeline operation's value breaks, by what they check.
+pub(crate) struct TimelineValueRules {
+    /// A signal not above the value the semaphore has when it executes.
+    pub signal_above: &'static str,
+    /// A wait too far from the semaphore's values.
+    pub wait_difference: &'static str,
+    /// A signal too far from them.
+    pub signal_difference: &'static str,
+}
 
 /// The rules of `vkQueueSubmit`'s `VkTimelineSemaphoreSubmitInfo` values.
-pub(crate) const SUBMIT_TIMELINE_VALUES: TimelineValueRules = (
-    "VUID-VkSubmitInfo-pSignalSemaphores-03242",
-    "VUID-VkSubmitInfo-pWaitSemaphores-03243",
-    "VUID-VkSubmitInfo-pSignalSemaphores-03244",
-);
+pub(crate) const SUBMIT_TIMELINE_VALUES: TimelineValueRules = TimelineValueRules {
+    signal_above: "VUID-VkSubmitInfo-pSignalSemaphores-03242",
+    wait_difference: "VUID-VkSubmitInfo-pWaitSemaphores-03243",
+    signal_difference: "VUID-VkSubmitInfo-pSignalSemaphores-03244",
+};
 
 /// Refuses timeline operations (in submission order) whose values the semaphore
 /// may not take: a signal must be above every value the semaphore has or is given
@@ -712,7 +718,7 @@ pub(crate) fn check_timeline_values(
     live: &crate::state::Live,
     ops: &[TimelineOp],
     max_difference: u64,
-    rules: TimelineValueRules,
+    rules: &TimelineValueRules,
 ) -> Result<()> {
     if ops.is_empty() {
         return Ok(());
@@ -731,7 +737,7 @@ pub(crate) fn check_timeline_values(
             .fold(t.max_signal.max(t.known), u64::max);
         if *signal && *value <= max_signal {
             return refuse(
-                rules.0,
+                rules.signal_above,
                 format!("timeline semaphore 0x{:x} is signalled to {value}, which is not above {max_signal}, a value it has or an earlier signal gives it", semaphore.as_raw()),
             );
         }
@@ -744,7 +750,11 @@ pub(crate) fn check_timeline_values(
         let (lo, hi) = values.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
         if value.abs_diff(lo) > max_difference || value.abs_diff(hi) > max_difference {
             return refuse(
-                if *signal { rules.2 } else { rules.1 },
+                if *signal {
+                    rules.signal_difference
+                } else {
+                    rules.wait_difference
+                },
                 format!("timeline semaphore 0x{:x} is given {value}, more than maxTimelineSemaphoreValueDifference ({max_difference}) from a value it may have or that a pending operation gives it ({lo} to {hi})", semaphore.as_raw()),
             );
         }
@@ -769,89 +779,6 @@ pub(crate) fn record_timeline_values(
             if *signal {
                 t.max_signal = t.max_signal.max(*value);
             }
-        }
-    }
-}
-
-/// The timeline operations of `vkQueueSubmit`'s batches, in order.
-pub(crate) fn submit_timeline_ops(
-    live: &crate::state::Live,
-    submits: &[crate::structs::SubmitInfo<'_>],
-) -> Vec<TimelineOp> {
-    let mut ops = Vec::new();
-    for b in submits {
-        // SAFETY: the safe struct stores each array with its length and chains only
-        // structs pushed through `push_next`; the sType says what the node is.
-        unsafe {
-            timeline_ops(
-                live,
-                b.p_wait_semaphores,
-                b.wait_semaphore_count,
-                b.p_signal_semaphores,
-                b.signal_semaphore_count,
-                b.p_next,
-                &mut ops,
-            )
-        };
-    }
-    ops
-}
-
-/// Appends the timeline operations of one batch (waits, then signals) to `ops`,
-/// reading the values from its chained `VkTimelineSemaphoreSubmitInfo`.
-///
-/// # Safety
-///
-/// The arrays hold their counts of elements, and `next` is a valid chain.
-pub(crate) unsafe fn timeline_ops(
-    live: &crate::state::Live,
-    waits: *const vk::Semaphore,
-    wait_count: u32,
-    signals: *const vk::Semaphore,
-    signal_count: u32,
-    next: *const core::ffi::c_void,
-    ops: &mut Vec<TimelineOp>,
-) {
-    // SAFETY: the caller's promise.
-    let (waits, signals) = unsafe {
-        (
-            crate::state::raw_slice(waits, wait_count),
-            crate::state::raw_slice(signals, signal_count),
-        )
-    };
-    if !waits.iter().chain(signals).any(|s| live.is_timeline(*s)) {
-        return;
-    }
-    // SAFETY: the caller's promise; the sType says what the node is.
-    let Some(info) = (unsafe { crate::support::chain_nodes(next) })
-        .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
-        .map(|n| unsafe {
-            &*(n as *const vk::BaseInStructure<'_>).cast::<vk::TimelineSemaphoreSubmitInfo<'_>>()
-        })
-    else {
-        return;
-    };
-    // SAFETY: a safe struct's arrays, stored with their counts.
-    let (wait_values, signal_values) = unsafe {
-        (
-            crate::state::raw_slice(
-                info.p_wait_semaphore_values,
-                info.wait_semaphore_value_count,
-            ),
-            crate::state::raw_slice(
-                info.p_signal_semaphore_values,
-                info.signal_semaphore_value_count,
-            ),
-        )
-    };
-    for (s, v) in waits.iter().zip(wait_values) {
-        if live.is_timeline(*s) {
-            ops.push((*s, *v, false));
-        }
-    }
-    for (s, v) in signals.iter().zip(signal_values) {
-        if live.is_timeline(*s) {
-            ops.push((*s, *v, true));
         }
     }
 }
@@ -919,68 +846,6 @@ pub(crate) fn named_object_sync(
             ),
         }),
     }
-}
-
-/// For each batch of a `vkQueueSubmit`, the timeline values it signals: the values of
-/// its timeline semaphores in its chained `VkTimelineSemaphoreSubmitInfo` (checked to
-/// be one per semaphore before the call). Every signal covers the whole batch.
-pub(crate) fn submit_timeline_batches(
-    live: &crate::state::Live,
-    submits: &[crate::structs::SubmitInfo<'_>],
-) -> Vec<Vec<(vk::Semaphore, u64)>> {
-    submits
-        .iter()
-        .map(|b| {
-            // SAFETY: the safe struct stores each array with its length and chains
-            // only structs pushed through `push_next`; the sType says what the node is.
-            let signals =
-                unsafe { crate::state::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count) };
-            let values = unsafe { crate::support::chain_nodes(b.p_next) }
-                .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
-                .map(|n| unsafe {
-                    &*(n as *const vk::BaseInStructure<'_>)
-                        .cast::<vk::TimelineSemaphoreSubmitInfo<'_>>()
-                })
-                .filter(|t| !t.p_signal_semaphore_values.is_null())
-                .map(|t| unsafe {
-                    crate::state::raw_slice(
-                        t.p_signal_semaphore_values,
-                        t.signal_semaphore_value_count,
-                    )
-                })
-                .unwrap_or(&[]);
-            signals
-                .iter()
-                .zip(values)
-                .filter(|(s, _)| live.is_timeline(**s))
-                .map(|(s, v)| (*s, *v))
-                .collect()
-        })
-        .collect()
-}
-
-/// For each batch of a `vkQueueSubmit2`, the timeline values it signals once all of
-/// its commands are done (a stage mask of ALL_COMMANDS; a narrower one says less).
-pub(crate) fn submit2_timeline_batches(
-    live: &crate::state::Live,
-    submits: &[crate::structs::SubmitInfo2<'_>],
-) -> Vec<Vec<(vk::Semaphore, u64)>> {
-    submits
-        .iter()
-        .map(|b| {
-            // SAFETY: the safe struct stores the array with its length.
-            unsafe {
-                crate::state::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count)
-            }
-            .iter()
-            .filter(|i| {
-                i.stage_mask.contains(vk::PipelineStageFlags2::ALL_COMMANDS)
-                    && live.is_timeline(i.semaphore)
-            })
-            .map(|i| (i.semaphore, i.value))
-            .collect()
-        })
-        .collect()
 }
 
 /// A binary semaphore's state, as a check reads it.
@@ -1169,14 +1034,211 @@ pub(crate) fn record_binary_ops(
     }
 }
 
-/// The semaphore operations of batches given as (waits, signals), in order.
-pub(crate) fn batch_ops<'a>(
-    batches: impl IntoIterator<Item = (&'a [vk::Semaphore], &'a [vk::Semaphore])>,
-) -> Vec<SemOp> {
-    let mut ops = Vec::new();
-    for (waits, signals) in batches {
-        ops.extend(waits.iter().map(|s| SemOp::Wait(*s)));
-        ops.extend(signals.iter().map(|s| SemOp::Signal(*s)));
+/// A submission command's batches read into one shape, so that each rule of
+/// `vkQueueSubmit`, `vkQueueSubmit2` and `vkQueueBindSparse` is written once.
+#[derive(Default)]
+pub(crate) struct Batches {
+    /// The command buffers of every batch, in order.
+    pub command_buffers: SmallVec<[vk::CommandBuffer; 8]>,
+    /// The semaphore operations: each batch's waits, then its signals.
+    pub ops: Vec<SemOp>,
+    /// The timeline operations among them that carry a value, in the same order.
+    pub timeline: Vec<TimelineOp>,
+    /// For each batch, the timeline values it signals once all its commands are done.
+    pub completes: Vec<Vec<(vk::Semaphore, u64)>>,
+}
+
+/// One semaphore of a batch as [`Batches`] reads it: the semaphore, its timeline
+/// value where the batch gives one, and (for a signal) whether it signals only once
+/// all of the batch's commands are done.
+type Named = (vk::Semaphore, Option<u64>, bool);
+
+impl Batches {
+    /// Reads a submission command's batches.
+    pub(crate) fn of<B: Batch>(live: &crate::state::Live, batches: &[B]) -> Batches {
+        let mut all = Batches::default();
+        for b in batches {
+            b.read(live, &mut all);
+        }
+        all
     }
-    ops
+
+    /// Appends one batch.
+    fn push(
+        &mut self,
+        live: &crate::state::Live,
+        waits: impl Iterator<Item = Named>,
+        signals: impl Iterator<Item = Named>,
+        command_buffers: impl Iterator<Item = vk::CommandBuffer>,
+    ) {
+        self.command_buffers.extend(command_buffers);
+        let mut completes = Vec::new();
+        for (semaphore, value, _) in waits {
+            self.ops.push(SemOp::Wait(semaphore));
+            if let Some(value) = value.filter(|_| live.is_timeline(semaphore)) {
+                self.timeline.push((semaphore, value, false));
+            }
+        }
+        for (semaphore, value, whole) in signals {
+            self.ops.push(SemOp::Signal(semaphore));
+            if let Some(value) = value.filter(|_| live.is_timeline(semaphore)) {
+                self.timeline.push((semaphore, value, true));
+                if whole {
+                    completes.push((semaphore, value));
+                }
+            }
+        }
+        self.completes.push(completes);
+    }
+
+    /// Appends a batch that names its semaphores in arrays and their timeline values
+    /// in a chained `VkTimelineSemaphoreSubmitInfo` (`VkSubmitInfo`,
+    /// `VkBindSparseInfo`); `whole` says whether a signal tells that the whole batch
+    /// is done.
+    ///
+    /// # Safety
+    ///
+    /// `next` is a chain built by `push_next` on a safe struct.
+    unsafe fn push_arrays(
+        &mut self,
+        live: &crate::state::Live,
+        (waits, signals): (&[vk::Semaphore], &[vk::Semaphore]),
+        next: *const core::ffi::c_void,
+        command_buffers: &[vk::CommandBuffer],
+        whole: bool,
+    ) {
+        // SAFETY: the caller vouches for the chain; the sType says what the node is,
+        // and the safe struct stores each array with its length.
+        let (wait_values, signal_values) = unsafe {
+            crate::support::chain_nodes(next)
+                .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
+                .map(|n| {
+                    let info = &*(n as *const vk::BaseInStructure<'_>)
+                        .cast::<vk::TimelineSemaphoreSubmitInfo<'_>>();
+                    (
+                        crate::state::raw_slice(
+                            info.p_wait_semaphore_values,
+                            info.wait_semaphore_value_count,
+                        ),
+                        crate::state::raw_slice(
+                            info.p_signal_semaphore_values,
+                            info.signal_semaphore_value_count,
+                        ),
+                    )
+                })
+                .unwrap_or((&[], &[]))
+        };
+        let named =
+            |values: &[u64], j: usize, s: &vk::Semaphore| (*s, values.get(j).copied(), whole);
+        self.push(
+            live,
+            waits
+                .iter()
+                .enumerate()
+                .map(|(j, s)| named(wait_values, j, s)),
+            signals
+                .iter()
+                .enumerate()
+                .map(|(j, s)| named(signal_values, j, s)),
+            command_buffers.iter().copied(),
+        );
+    }
+}
+
+/// A batch of a submission command: `VkSubmitInfo`, `VkSubmitInfo2` and
+/// `VkBindSparseInfo` each read into [`Batches`], and each say what the submission
+/// keeps alive.
+pub(crate) trait Batch {
+    /// Appends this batch to `all`.
+    fn read(&self, live: &crate::state::Live, all: &mut Batches);
+    /// Appends what this batch names to `kept`, held until the submission completes.
+    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>);
+}
+
+impl Batch for crate::structs::SubmitInfo<'_> {
+    fn read(&self, live: &crate::state::Live, all: &mut Batches) {
+        // SAFETY: the safe struct stores each array with its length and chains only
+        // structs pushed through `push_next`.
+        unsafe {
+            all.push_arrays(
+                live,
+                (
+                    crate::state::raw_slice(self.p_wait_semaphores, self.wait_semaphore_count),
+                    crate::state::raw_slice(self.p_signal_semaphores, self.signal_semaphore_count),
+                ),
+                self.p_next,
+                crate::state::raw_slice(self.p_command_buffers, self.command_buffer_count),
+                true,
+            )
+        }
+    }
+
+    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {
+        // SAFETY: the safe struct stores every array with its length.
+        unsafe { crate::reach::submit_info(self.as_raw(), live, kept) }
+    }
+}
+
+impl Batch for crate::structs::BindSparseInfo<'_> {
+    fn read(&self, live: &crate::state::Live, all: &mut Batches) {
+        // SAFETY: as for `VkSubmitInfo`.
+        unsafe {
+            all.push_arrays(
+                live,
+                (
+                    crate::state::raw_slice(self.p_wait_semaphores, self.wait_semaphore_count),
+                    crate::state::raw_slice(self.p_signal_semaphores, self.signal_semaphore_count),
+                ),
+                self.p_next,
+                &[],
+                // A timeline signal tells nothing of sparse binds yet.
+                false,
+            )
+        }
+    }
+
+    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {
+        // SAFETY: the safe struct stores every array with its length.
+        unsafe { crate::reach::bind_sparse_info(self.as_raw(), live, kept) }
+    }
+}
+
+impl Batch for crate::structs::SubmitInfo2<'_> {
+    fn read(&self, live: &crate::state::Live, all: &mut Batches) {
+        // SAFETY: the safe struct stores each array with its length.
+        let (waits, signals, command_buffers) = unsafe {
+            (
+                crate::state::raw_slice(
+                    self.p_wait_semaphore_infos,
+                    self.wait_semaphore_info_count,
+                ),
+                crate::state::raw_slice(
+                    self.p_signal_semaphore_infos,
+                    self.signal_semaphore_info_count,
+                ),
+                crate::state::raw_slice(
+                    self.p_command_buffer_infos,
+                    self.command_buffer_info_count,
+                ),
+            )
+        };
+        // A signal with a narrower stage mask than ALL_COMMANDS says less than that
+        // the whole batch is done.
+        let whole = |i: &vk::SemaphoreSubmitInfo<'_>| {
+            i.stage_mask.contains(vk::PipelineStageFlags2::ALL_COMMANDS)
+        };
+        all.push(
+            live,
+            waits.iter().map(|i| (i.semaphore, Some(i.value), false)),
+            signals
+                .iter()
+                .map(|i| (i.semaphore, Some(i.value), whole(i))),
+            command_buffers.iter().map(|i| i.command_buffer),
+        );
+    }
+
+    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {
+        // SAFETY: the safe struct stores every array with its length.
+        unsafe { crate::reach::submit_info2(self.as_raw(), live, kept) }
+    }
 }

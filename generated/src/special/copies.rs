@@ -274,20 +274,25 @@ fn check_buffer_image_regions(
 /// The checks of a copy between `buffer` and `image` that memory safety needs:
 /// each region against the image (its type, format, texel blocks, subresources,
 /// the queue family's granularity), protected memory, the overlap of the two
-/// bindings, and the buffer's end (`range_vuid`).
-fn check_buffer_image_copy<S: Scope>(
+/// bindings, and the buffer's end. `regions` are either version's, read into one
+/// shape here.
+fn check_buffer_image_copy<'r, S: Scope, R: 'r>(
     recorder: &Recorder<'_, S>,
     (buffer, image): (vk::Buffer, vk::Image),
-    regions: &[Region],
-    (rules, range_vuid, to_image): (&Rules, &'static str, bool),
-) -> Result<()> {
+    regions: &'r [R],
+    rules: &Rules,
+) -> Result<()>
+where
+    Region: From<&'r R>,
+{
+    let regions: SmallVec<[Region; 4]> = regions.iter().map(Region::from).collect();
     let device = recorder.device();
     let family = pool_family(recorder);
     if let Some(record) = device.live().image(image) {
         check_regions(device, &record, family, regions.iter().copied(), rules)?;
     }
-    check_protection(device, family, (buffer, image), to_image, rules)?;
-    check_overlap(device, (buffer, image), regions, rules)?;
+    check_protection(device, family, (buffer, image), rules)?;
+    check_overlap(device, (buffer, image), &regions, rules)?;
     check_buffer_image_regions(
         device,
         buffer,
@@ -301,7 +306,7 @@ fn check_buffer_image_copy<S: Scope>(
                 r.extent,
             )
         }),
-        range_vuid,
+        rules.range,
     )
 }
 
@@ -312,17 +317,8 @@ pub(crate) fn cmd_copy_buffer_to_image_checks<S: Scope>(
     dst_image: &Image,
     regions: &[vk::BufferImageCopy],
 ) -> Result<()> {
-    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
-    check_buffer_image_copy(
-        recorder,
-        (src_buffer.raw(), dst_image.raw()),
-        &regions,
-        (
-            &TO_IMAGE,
-            "VUID-vkCmdCopyBufferToImage-pRegions-00171",
-            true,
-        ),
-    )
+    let copy = (src_buffer.raw(), dst_image.raw());
+    check_buffer_image_copy(recorder, copy, regions, &TO_IMAGE)
 }
 
 /// Refuses a copy from an image into a buffer that breaks a rule of its regions.
@@ -332,17 +328,8 @@ pub(crate) fn cmd_copy_image_to_buffer_checks<S: Scope>(
     dst_buffer: &Buffer,
     regions: &[vk::BufferImageCopy],
 ) -> Result<()> {
-    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
-    check_buffer_image_copy(
-        recorder,
-        (dst_buffer.raw(), src_image.raw()),
-        &regions,
-        (
-            &TO_BUFFER,
-            "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
-            false,
-        ),
-    )
+    let copy = (dst_buffer.raw(), src_image.raw());
+    check_buffer_image_copy(recorder, copy, regions, &TO_BUFFER)
 }
 
 /// As [`cmd_copy_buffer_to_image_checks`], for `vkCmdCopyBufferToImage2`.
@@ -353,16 +340,11 @@ pub(crate) fn cmd_copy_buffer_to_image2_checks<S: Scope>(
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
-    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
     check_buffer_image_copy(
         recorder,
         (raw.src_buffer, raw.dst_image),
-        &regions,
-        (
-            &TO_IMAGE2,
-            "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
-            true,
-        ),
+        regions,
+        &TO_IMAGE2,
     )
 }
 
@@ -374,16 +356,11 @@ pub(crate) fn cmd_copy_image_to_buffer2_checks<S: Scope>(
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
-    let regions: SmallVec<[Region; 4]> = regions.iter().map(Into::into).collect();
     check_buffer_image_copy(
         recorder,
         (raw.dst_buffer, raw.src_image),
-        &regions,
-        (
-            &TO_BUFFER2,
-            "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
-            false,
-        ),
+        regions,
+        &TO_BUFFER2,
     )
 }
 
@@ -451,6 +428,10 @@ pub(crate) struct Rules {
     pub unprotected_dst: &'static str,
     /// The buffer's and the image's memory do not overlap.
     pub overlap: &'static str,
+    /// Each region's buffer range inside the buffer.
+    pub range: &'static str,
+    /// Whether the copy writes the image (else the buffer).
+    pub to_image: bool,
 }
 
 /// `vkCmdCopyBufferToImage`.
@@ -496,6 +477,8 @@ pub(crate) const TO_IMAGE: Rules = Rules {
     protected_buffer: "VUID-vkCmdCopyBufferToImage-commandBuffer-01828",
     unprotected_dst: "VUID-vkCmdCopyBufferToImage-commandBuffer-01830",
     overlap: "VUID-vkCmdCopyBufferToImage-pRegions-00173",
+    range: "VUID-vkCmdCopyBufferToImage-pRegions-00171",
+    to_image: true,
 };
 
 /// `vkCmdCopyImageToBuffer`.
@@ -541,6 +524,8 @@ pub(crate) const TO_BUFFER: Rules = Rules {
     protected_buffer: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01832",
     unprotected_dst: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01833",
     overlap: "VUID-vkCmdCopyImageToBuffer-pRegions-00184",
+    range: "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
+    to_image: false,
 };
 
 /// `vkCmdCopyBufferToImage2`.
@@ -587,6 +572,8 @@ pub(crate) const TO_IMAGE2: Rules = Rules {
     protected_buffer: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01828",
     unprotected_dst: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01830",
     overlap: "VUID-VkCopyBufferToImageInfo2-pRegions-00173",
+    range: "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
+    to_image: true,
 };
 
 /// `vkCmdCopyImageToBuffer2`.
@@ -633,6 +620,8 @@ pub(crate) const TO_BUFFER2: Rules = Rules {
     protected_buffer: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832",
     unprotected_dst: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833",
     overlap: "VUID-VkCopyImageToBufferInfo2-pRegions-00184",
+    range: "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
+    to_image: false,
 };
 
 /// One region of a buffer-image copy.
@@ -968,12 +957,11 @@ pub(crate) fn check_regions(
 }
 
 /// The protected-memory rules of a copy between `buffer` and `image` recorded into
-/// a buffer of `family`'s pool (the destination is the image when `to_image`).
+/// a buffer of `family`'s pool.
 pub(crate) fn check_protection(
     device: &Device,
     family: PoolFamily,
     (buffer, image): (vk::Buffer, vk::Image),
-    to_image: bool,
     rules: &Rules,
 ) -> Result<()> {
     let buffer_protected = device
@@ -985,7 +973,7 @@ pub(crate) fn check_protection(
         .image(image)
         .is_some_and(|i| i.flags.contains(vk::ImageCreateFlags::PROTECTED));
     if family.protected {
-        let dst_protected = if to_image {
+        let dst_protected = if rules.to_image {
             image_protected
         } else {
             buffer_protected

@@ -6,34 +6,9 @@ use super::sync::timeline_difference;
 use super::{chained, refuse};
 use crate::handles::*;
 use crate::structs::*;
-use crate::submission::{self, SubmitRules};
+use crate::submission::{self, Batch, Batches, SubmitRules};
 use crate::{Handle, Result};
 use ash::vk;
-use smallvec::SmallVec;
-
-/// The raw command buffers of `vkQueueSubmit` batches.
-fn submit_command_buffers(submits: &[SubmitInfo<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
-    submits
-        .iter()
-        // SAFETY: the safe structs store every array with its length.
-        .flat_map(|s| unsafe {
-            crate::state::raw_slice(s.p_command_buffers, s.command_buffer_count)
-        })
-        .copied()
-        .collect()
-}
-
-/// The raw command buffers of `vkQueueSubmit2` batches.
-fn submit2_command_buffers(submits: &[SubmitInfo2<'_>]) -> SmallVec<[vk::CommandBuffer; 8]> {
-    submits
-        .iter()
-        // SAFETY: the safe structs store every array with its length.
-        .flat_map(|s| unsafe {
-            crate::state::raw_slice(s.p_command_buffer_infos, s.command_buffer_info_count)
-        })
-        .map(|i| i.command_buffer)
-        .collect()
-}
 
 /// Refuses timeline semaphores of a batch without one value each.
 ///
@@ -69,12 +44,8 @@ pub(crate) fn queue_submit_checks(
     submits: &[SubmitInfo<'_>],
     fence: Option<&Fence>,
 ) -> Result<()> {
-    submit_checks(
-        queue,
-        fence,
-        &submit_command_buffers(submits),
-        &submission::SUBMIT,
-    )?;
+    let batches = Batches::of(queue.parent().live(), submits);
+    submit_checks(queue, fence, &batches.command_buffers, &submission::SUBMIT)?;
     for (i, b) in submits.iter().enumerate() {
         check_device_group_submit(i, b)?;
         check_group_indices(queue.parent(), i, b)?;
@@ -149,36 +120,74 @@ fn check_pools(queue: &Queue, i: usize, batch: &SubmitInfo<'_>) -> Result<()> {
     Ok(())
 }
 
-/// Takes the device's descriptor gate for `vkQueueSubmit` and refuses command
-/// buffers that an update of a set they bind left invalid.
+/// What a submission command checks of its batches under the device's gate, by
+/// command.
+struct HoldRules {
+    /// The rules of its command buffers (an invalid one is not executable).
+    submit: &'static SubmitRules,
+    /// An event that a pending submission to another queue names; `""` where the
+    /// command does not check it.
+    events: &'static str,
+    /// The rules of its binary semaphore operations.
+    binary: &'static submission::BinaryRules,
+    /// The rules of its timeline values, where the command checks them.
+    values: Option<&'static submission::TimelineValueRules>,
+}
+
+/// The rules `vkQueueSubmit` checks under the gate.
+const SUBMIT_HOLD: HoldRules = HoldRules {
+    submit: &submission::SUBMIT,
+    events: "VUID-vkQueueSubmit-pCommandBuffers-00065",
+    binary: &submission::SUBMIT_BINARY,
+    values: Some(&submission::SUBMIT_TIMELINE_VALUES),
+};
+
+/// The rules `vkQueueSubmit2` checks under the gate.
+const SUBMIT2_HOLD: HoldRules = HoldRules {
+    submit: &submission::SUBMIT2,
+    events: "",
+    binary: &submission::SUBMIT2_BINARY,
+    values: None,
+};
+
+/// The rules `vkQueueBindSparse` checks under the gate.
+const BIND_SPARSE_HOLD: HoldRules = HoldRules {
+    submit: &submission::BIND_SPARSE,
+    events: "",
+    binary: &submission::BIND_SPARSE_BINARY,
+    values: None,
+};
+
+/// Takes the device's descriptor gate for a submission command (held until its
+/// bookkeeping is done, so no submission on another queue or update changes what
+/// is checked here meanwhile) and refuses command buffers that an update of a set
+/// they bind left invalid, events another queue's pending submission names, and
+/// semaphore operations that the states the device records forbid.
+fn hold<'q, B: Batch>(
+    queue: &'q Queue,
+    batches: &[B],
+    rules: &HoldRules,
+) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
+    let device = queue.parent();
+    let b = Batches::of(device.live(), batches);
+    let gate = submission::sets_hold(device, &b.command_buffers, rules.submit.executable)?;
+    if !rules.events.is_empty() {
+        submission::check_events(device, queue.raw(), &b.command_buffers, rules.events)?;
+    }
+    submission::check_binary_ops(device, queue.raw(), &b.ops, rules.binary)?;
+    if let Some(values) = rules.values {
+        let difference = timeline_difference(device);
+        submission::check_timeline_values(device.live(), &b.timeline, difference, values)?;
+    }
+    Ok(gate)
+}
+
+/// Takes the device's gate for `vkQueueSubmit`, and checks under it.
 pub(crate) fn queue_submit_hold<'q>(
     queue: &'q Queue,
     submits: &[SubmitInfo<'_>],
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
-    let device = queue.parent();
-    let cbs = submit_command_buffers(submits);
-    let gate = submission::sets_hold(device, &cbs, submission::SUBMIT.executable)?;
-    // What other queues' submissions use and leave (events, semaphores) is checked
-    // under the gate, which every submission holds until it has recorded its own.
-    submission::check_events(
-        device,
-        queue.raw(),
-        &cbs,
-        "VUID-vkQueueSubmit-pCommandBuffers-00065",
-    )?;
-    submission::check_binary_ops(
-        device,
-        queue.raw(),
-        &submit_semaphore_ops(submits),
-        &submission::SUBMIT_BINARY,
-    )?;
-    submission::check_timeline_values(
-        device.live(),
-        &submission::submit_timeline_ops(device.live(), submits),
-        timeline_difference(device),
-        submission::SUBMIT_TIMELINE_VALUES,
-    )?;
-    Ok(gate)
+    hold(queue, submits, &SUBMIT_HOLD)
 }
 
 /// As [`queue_submit_hold`], for `vkQueueSubmit2`.
@@ -186,36 +195,15 @@ pub(crate) fn queue_submit2_hold<'q>(
     queue: &'q Queue,
     submits: &[SubmitInfo2<'_>],
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
-    let device = queue.parent();
-    let gate = submission::sets_hold(
-        device,
-        &submit2_command_buffers(submits),
-        submission::SUBMIT2.executable,
-    )?;
-    submission::check_binary_ops(
-        device,
-        queue.raw(),
-        &submit2_semaphore_ops(submits),
-        &submission::SUBMIT2_BINARY,
-    )?;
-    Ok(gate)
+    hold(queue, submits, &SUBMIT2_HOLD)
 }
 
-/// Takes the device's gate for `vkQueueBindSparse` and checks its binary semaphore
-/// operations again under it, so no submission on another queue changes their
-/// states between this check and the bookkeeping of the call.
+/// As [`queue_submit_hold`], for `vkQueueBindSparse` (it has no command buffers).
 pub(crate) fn queue_bind_sparse_hold<'q>(
     queue: &'q Queue,
     bind_info: &[BindSparseInfo<'_>],
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
-    let gate = queue.parent().live().descriptor_gate();
-    submission::check_binary_ops(
-        queue.parent(),
-        queue.raw(),
-        &bind_sparse_semaphore_ops(bind_info),
-        &submission::BIND_SPARSE_BINARY,
-    )?;
-    Ok(gate)
+    hold(queue, bind_info, &BIND_SPARSE_HOLD)
 }
 
 /// The checks of `vkQueueSubmit2`: the fence and the command buffers' states.
@@ -224,59 +212,8 @@ pub(crate) fn queue_submit2_checks(
     submits: &[SubmitInfo2<'_>],
     fence: Option<&Fence>,
 ) -> Result<()> {
-    submit_checks(
-        queue,
-        fence,
-        &submit2_command_buffers(submits),
-        &submission::SUBMIT2,
-    )
-}
-
-/// The semaphore operations of `vkQueueSubmit`'s batches, in order.
-fn submit_semaphore_ops(submits: &[SubmitInfo<'_>]) -> Vec<submission::SemOp> {
-    submission::batch_ops(submits.iter().map(|b| {
-        // SAFETY: the safe struct stores each array with its length.
-        unsafe {
-            (
-                crate::state::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
-                crate::state::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
-            )
-        }
-    }))
-}
-
-/// The semaphore operations of `vkQueueSubmit2`'s batches, in order.
-fn submit2_semaphore_ops(submits: &[SubmitInfo2<'_>]) -> Vec<submission::SemOp> {
-    let mut ops = Vec::new();
-    for b in submits {
-        // SAFETY: the safe struct stores each array with its length.
-        let (waits, signals) = unsafe {
-            (
-                crate::state::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
-                crate::state::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count),
-            )
-        };
-        ops.extend(waits.iter().map(|w| submission::SemOp::Wait(w.semaphore)));
-        ops.extend(
-            signals
-                .iter()
-                .map(|s| submission::SemOp::Signal(s.semaphore)),
-        );
-    }
-    ops
-}
-
-/// The semaphore operations of `vkQueueBindSparse`'s batches, in order.
-fn bind_sparse_semaphore_ops(bind_info: &[BindSparseInfo<'_>]) -> Vec<submission::SemOp> {
-    submission::batch_ops(bind_info.iter().map(|b| {
-        // SAFETY: the safe struct stores each array with its length.
-        unsafe {
-            (
-                crate::state::raw_slice(b.p_wait_semaphores, b.wait_semaphore_count),
-                crate::state::raw_slice(b.p_signal_semaphores, b.signal_semaphore_count),
-            )
-        }
-    }))
+    let batches = Batches::of(queue.parent().live(), submits);
+    submit_checks(queue, fence, &batches.command_buffers, &submission::SUBMIT2)
 }
 
 /// The checks of `vkQueueBindSparse`: the fence and the batches' timeline values.
@@ -289,7 +226,7 @@ pub(crate) fn queue_bind_sparse_checks(
     submission::check_binary_ops(
         queue.parent(),
         queue.raw(),
-        &bind_sparse_semaphore_ops(bind_info),
+        &Batches::of(queue.parent().live(), bind_info).ops,
         &submission::BIND_SPARSE_BINARY,
     )?;
     for b in bind_info {
@@ -322,102 +259,54 @@ fn submit_checks(
     submission::check_layouts(queue.parent(), cbs)
 }
 
-/// After `vkQueueSubmit`: the fence holds everything the submission names (its
+/// After a submission command: the fence holds everything the submission names (its
 /// command buffers, which keep what their recordings use, its semaphores, and whatever
 /// else its structs reach) until the submission is known complete; without a fence,
 /// the queue does, until a later fence of the queue or an idle wait shows it complete.
-pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence: Option<&Fence>) {
+fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>) {
     let device = queue.parent();
+    let live = device.live();
     let mut kept = Vec::new();
-    for s in submits {
-        // SAFETY: the safe structs store every array with its length.
-        unsafe { crate::reach::submit_info(s.as_raw(), device.live(), &mut kept) };
+    for b in batches {
+        b.keep(live, &mut kept);
     }
-    let batches = submission::submit_timeline_batches(device.live(), submits);
-    let cbs = submit_command_buffers(submits);
-    let sub = submission::submitted(device, queue.raw(), fence, &cbs, kept, batches);
-    let ops = submit_semaphore_ops(submits);
-    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
-    let values = submission::submit_timeline_ops(device.live(), submits);
-    submission::record_timeline_values(device.live(), &values, &sub);
+    let b = Batches::of(live, batches);
+    let sub = submission::submitted(
+        device,
+        queue.raw(),
+        fence,
+        &b.command_buffers,
+        kept,
+        b.completes,
+    );
+    submission::record_binary_ops(device, queue.raw(), &b.ops, Some(&sub));
+    submission::record_timeline_values(live, &b.timeline, &sub);
     if fence.is_none() {
         queue.hold(sub);
     }
 }
 
-/// After `vkQueueSubmit2`, as after `vkQueueSubmit`.
+/// After `vkQueueSubmit`.
+pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence: Option<&Fence>) {
+    done(queue, submits, fence);
+}
+
+/// After `vkQueueSubmit2`.
 pub(crate) fn queue_submit2_done(
     queue: &Queue,
     submits: &[SubmitInfo2<'_>],
     fence: Option<&Fence>,
 ) {
-    let device = queue.parent();
-    let mut kept = Vec::new();
-    for s in submits {
-        // SAFETY: the safe structs store every array with its length.
-        unsafe { crate::reach::submit_info2(s.as_raw(), device.live(), &mut kept) };
-    }
-    let batches = submission::submit2_timeline_batches(device.live(), submits);
-    let cbs = submit2_command_buffers(submits);
-    let sub = submission::submitted(device, queue.raw(), fence, &cbs, kept, batches);
-    let ops = submit2_semaphore_ops(submits);
-    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
-    let live = device.live();
-    let mut values = Vec::new();
-    for b in submits {
-        // SAFETY: the safe struct stores each array with its length.
-        let (waits, signals) = unsafe {
-            (
-                crate::state::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
-                crate::state::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count),
-            )
-        };
-        let ops = waits
-            .iter()
-            .map(|w| (w, false))
-            .chain(signals.iter().map(|s| (s, true)))
-            .filter(|(i, _)| live.is_timeline(i.semaphore))
-            .map(|(i, signal)| (i.semaphore, i.value, signal));
-        values.extend(ops);
-    }
-    submission::record_timeline_values(live, &values, &sub);
-    if fence.is_none() {
-        queue.hold(sub);
-    }
+    done(queue, submits, fence);
 }
 
-/// After `vkQueueBindSparse`: the fence holds what the binds name (a timeline signal
-/// tells nothing of sparse binds yet).
+/// After `vkQueueBindSparse` (a timeline signal tells nothing of sparse binds yet).
 pub(crate) fn queue_bind_sparse_done(
     queue: &Queue,
     bind_info: &[BindSparseInfo<'_>],
     fence: &Fence,
 ) {
-    let device = queue.parent();
-    let mut kept = Vec::new();
-    for s in bind_info {
-        // SAFETY: the safe structs store every array with its length.
-        unsafe { crate::reach::bind_sparse_info(s.as_raw(), device.live(), &mut kept) };
-    }
-    let sub = submission::submitted(device, queue.raw(), Some(fence), &[], kept, Vec::new());
-    let ops = bind_sparse_semaphore_ops(bind_info);
-    submission::record_binary_ops(device, queue.raw(), &ops, Some(&sub));
-    let mut values = Vec::new();
-    for b in bind_info {
-        // SAFETY: a safe struct's arrays and chain.
-        unsafe {
-            submission::timeline_ops(
-                device.live(),
-                b.p_wait_semaphores,
-                b.wait_semaphore_count,
-                b.p_signal_semaphores,
-                b.signal_semaphore_count,
-                b.p_next,
-                &mut values,
-            )
-        };
-    }
-    submission::record_timeline_values(device.live(), &values, &sub);
+    done(queue, bind_info, Some(fence));
 }
 
 /// Every queue operation of the queue is complete.

@@ -122,31 +122,6 @@ pub(crate) fn create_render_pass_checks(create_info: &RenderPassCreateInfo<'_>) 
     Ok(())
 }
 
-/// Whether a subpass description (of either version) uses no attachment: every
-/// input, color, resolve and depth/stencil reference it has is unused.
-macro_rules! no_attachment {
-    ($d:expr) => {{
-        let d = $d;
-        // SAFETY: the safe setters stored every array with its count; resolve
-        // attachments, if any, are one per color attachment, and the depth/stencil
-        // reference outlives the create info.
-        let (input, color, resolve, depth) = unsafe {
-            (
-                crate::state::raw_slice(d.p_input_attachments, d.input_attachment_count),
-                crate::state::raw_slice(d.p_color_attachments, d.color_attachment_count),
-                crate::state::raw_slice(d.p_resolve_attachments, d.color_attachment_count),
-                d.p_depth_stencil_attachment.as_ref(),
-            )
-        };
-        input
-            .iter()
-            .chain(color)
-            .chain(resolve)
-            .chain(depth)
-            .all(|r| r.attachment == vk::ATTACHMENT_UNUSED)
-    }};
-}
-
 /// The device remembers a render pass's subpasses and their view masks (from a
 /// chained `VkRenderPassMultiviewCreateInfo`).
 pub(crate) fn render_pass_created(
@@ -154,49 +129,7 @@ pub(crate) fn render_pass_created(
     render_pass: RenderPass,
     create_info: &RenderPassCreateInfo<'_>,
 ) -> RenderPass {
-    let raw = create_info.as_raw();
-    // SAFETY: `raw` is a safe struct's.
-    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
-        chained(
-            raw.p_next,
-            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
-        )
-    };
-    // SAFETY: the safe setter stored the masks with their count.
-    let masks = multiview.map_or(&[][..], |m| unsafe {
-        crate::state::raw_slice(m.p_view_masks, m.subpass_count)
-    });
-    let view_masks = (0..raw.subpass_count as usize)
-        .map(|i| masks.get(i).copied().unwrap_or(0))
-        .collect();
-    // SAFETY: the safe setter stored the subpasses with their count.
-    let no_attachments = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) }
-        .iter()
-        .map(|d| no_attachment!(d))
-        .collect();
-    let (color_formats, depth_formats) = subpass_formats(create_info);
-    device.live().render_pass_created(
-        render_pass.raw(),
-        RenderPassRecord {
-            attachments: attachment_uses(create_info),
-            view_masks,
-            no_attachments,
-            color_formats,
-            depth_formats,
-            depth_layouts: subpass_depth_layouts(create_info),
-            subpass_samples: subpass_samples(create_info),
-            layouts: attachment_layouts(create_info),
-            used: used_attachments(create_info),
-            inputs: subpass_inputs(create_info),
-            self_dependencies: super::subpass_dependencies::self_dependencies(create_info),
-            clear_count: clears(create_info),
-            taken: layouts_taken(create_info),
-            stencil_taken: Vec::new(),
-            may_alias: may_alias(create_info),
-            dependency_stages: super::subpass_dependencies::dependency_stages(create_info),
-        },
-    );
-    render_pass
+    Pass::of(create_info).created(device, render_pass)
 }
 
 /// As [`render_pass_created`], for `vkCreateRenderPass2`, whose subpasses carry
@@ -206,34 +139,7 @@ pub(crate) fn render_pass2_created(
     render_pass: RenderPass,
     create_info: &RenderPassCreateInfo2<'_>,
 ) -> RenderPass {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stored the subpasses with their count.
-    let subpasses = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) };
-    let view_masks = subpasses.iter().map(|s| s.view_mask).collect();
-    let no_attachments = subpasses.iter().map(|d| no_attachment!(d)).collect();
-    let (color_formats, depth_formats) = subpass_formats2(create_info);
-    device.live().render_pass_created(
-        render_pass.raw(),
-        RenderPassRecord {
-            attachments: attachment_uses2(create_info),
-            view_masks,
-            no_attachments,
-            color_formats,
-            depth_formats,
-            depth_layouts: subpass_depth_layouts2(create_info),
-            subpass_samples: subpass_samples2(create_info),
-            layouts: attachment_layouts2(create_info),
-            used: used_attachments2(create_info),
-            inputs: subpass_inputs2(create_info),
-            self_dependencies: super::subpass_dependencies::self_dependencies2(create_info),
-            clear_count: clears2(create_info),
-            taken: layouts_taken2(create_info),
-            stencil_taken: stencil_layouts2(create_info),
-            may_alias: may_alias2(create_info),
-            dependency_stages: super::subpass_dependencies::dependency_stages2(create_info),
-        },
-    );
-    render_pass
+    Pass::of2(create_info).created(device, render_pass)
 }
 
 /// One attachment reference: the attachment, its layout, and (for
@@ -245,6 +151,8 @@ struct Ref {
     /// The stencil aspect's layout (a chained `VkAttachmentReferenceStencilLayout`'s,
     /// or `layout`).
     stencil_layout: vk::ImageLayout,
+    /// Whether a `VkAttachmentReferenceStencilLayout` gave `stencil_layout`.
+    stencil_chained: bool,
     aspect_mask: vk::ImageAspectFlags,
 }
 
@@ -261,6 +169,12 @@ struct Subpass {
     resolves: Option<Vec<Ref>>,
     depth: Option<Ref>,
     preserve: Vec<u32>,
+    /// Its view mask (`VkSubpassDescription2`'s, or a chained
+    /// `VkRenderPassMultiviewCreateInfo`'s; 0 without multiview).
+    view_mask: u32,
+    /// The attachment a chained `VkSubpassDescriptionDepthStencilResolve` resolves
+    /// depth/stencil into.
+    depth_resolve: Option<u32>,
 }
 
 impl Subpass {
@@ -282,9 +196,56 @@ impl Subpass {
 struct Pass {
     /// Each attachment's format and sample count.
     attachments: Vec<(vk::Format, vk::SampleCountFlags)>,
+    /// The rest of each attachment's description.
+    described: Vec<Described>,
     subpasses: Vec<Subpass>,
+    dependencies: Vec<Dependency>,
     /// Read from `vkCreateRenderPass2`: the VUIDs of its rules are the second ones.
     second: bool,
+}
+
+/// What a render pass's record keeps of an attachment description beyond its format
+/// and samples.
+struct Described {
+    /// Its `loadOp` and `stencilLoadOp`.
+    load: (vk::AttachmentLoadOp, vk::AttachmentLoadOp),
+    may_alias: bool,
+    layouts: crate::state::AttachmentLayouts,
+    /// Whether a `VkAttachmentDescriptionStencilLayout` gave the stencil aspect's.
+    stencil_chained: bool,
+}
+
+impl Described {
+    /// From a description's load ops, flags, layouts, and its stencil aspect's
+    /// layouts where a struct gives them apart.
+    fn of(
+        load: vk::AttachmentLoadOp,
+        stencil_load: vk::AttachmentLoadOp,
+        flags: vk::AttachmentDescriptionFlags,
+        (initial, last): (vk::ImageLayout, vk::ImageLayout),
+        stencil: Option<(vk::ImageLayout, vk::ImageLayout)>,
+    ) -> Described {
+        let (stencil_initial, stencil_last) = stencil.unwrap_or((initial, last));
+        Described {
+            load: (load, stencil_load),
+            may_alias: flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS),
+            layouts: crate::state::AttachmentLayouts {
+                initial,
+                last,
+                stencil_initial,
+                stencil_last,
+            },
+            stencil_chained: stencil.is_some(),
+        }
+    }
+}
+
+/// A subpass dependency: its source and destination subpasses, stages and access
+/// types.
+struct Dependency {
+    subpasses: (u32, u32),
+    stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
+    access: (vk::AccessFlags, vk::AccessFlags),
 }
 
 /// A rule's VUIDs through `vkCreateRenderPass` and `vkCreateRenderPass2` (empty where
@@ -361,50 +322,72 @@ const DEPTH_IS_COLOR: Rule = (
     "VUID-VkSubpassDescription2-pDepthStencilAttachment-04440",
 );
 
+/// Reads the subpasses of a `VkRenderPassCreateInfo` or `VkRenderPassCreateInfo2`
+/// (their subpass descriptions' fields share names; their references' types differ,
+/// and `plain` reads either into a [`Ref`]). Used inside `unsafe`: the arrays are a
+/// safe struct's, each stored with its count.
+macro_rules! subpasses {
+    ($raw:expr, $plain:expr) => {
+        crate::state::raw_slice($raw.p_subpasses, $raw.subpass_count)
+            .iter()
+            .map(|s| {
+                let list = |p, n| {
+                    crate::state::raw_slice(p, n)
+                        .iter()
+                        .map($plain)
+                        .collect::<Vec<_>>()
+                };
+                Subpass {
+                    inputs: list(s.p_input_attachments, s.input_attachment_count),
+                    colors: list(s.p_color_attachments, s.color_attachment_count),
+                    resolves: (!s.p_resolve_attachments.is_null())
+                        .then(|| list(s.p_resolve_attachments, s.color_attachment_count)),
+                    depth: s.p_depth_stencil_attachment.as_ref().map($plain),
+                    preserve: crate::state::raw_slice(
+                        s.p_preserve_attachments,
+                        s.preserve_attachment_count,
+                    )
+                    .to_vec(),
+                    view_mask: 0,
+                    depth_resolve: None,
+                }
+            })
+            .collect::<Vec<_>>()
+    };
+}
+
 impl Pass {
     /// Reads `vkCreateRenderPass`'s create info.
     fn of(create_info: &RenderPassCreateInfo<'_>) -> Pass {
         let raw = create_info.as_raw();
         // SAFETY: the safe setters store each array with its count, resolve
         // attachments one per color attachment; a depth/stencil reference outlives
-        // the create info.
+        // the create info; each chain is a safe struct's, and the type each sType
+        // names.
         unsafe {
-            let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count)
+            let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count);
+            let described = attachments
                 .iter()
-                .map(|a| (a.format, a.samples))
+                .map(|a| {
+                    Described::of(
+                        a.load_op,
+                        a.stencil_load_op,
+                        a.flags,
+                        (a.initial_layout, a.final_layout),
+                        None,
+                    )
+                })
                 .collect();
             let plain = |r: &vk::AttachmentReference| Ref {
                 attachment: r.attachment,
                 layout: r.layout,
                 stencil_layout: r.layout,
+                stencil_chained: false,
                 aspect_mask: vk::ImageAspectFlags::empty(),
             };
-            let subpasses = crate::state::raw_slice(raw.p_subpasses, raw.subpass_count)
-                .iter()
-                .map(|s| {
-                    let list = |p, n| {
-                        crate::state::raw_slice(p, n)
-                            .iter()
-                            .map(plain)
-                            .collect::<Vec<_>>()
-                    };
-                    Subpass {
-                        inputs: list(s.p_input_attachments, s.input_attachment_count),
-                        colors: list(s.p_color_attachments, s.color_attachment_count),
-                        resolves: (!s.p_resolve_attachments.is_null())
-                            .then(|| list(s.p_resolve_attachments, s.color_attachment_count)),
-                        depth: s.p_depth_stencil_attachment.as_ref().map(plain),
-                        preserve: crate::state::raw_slice(
-                            s.p_preserve_attachments,
-                            s.preserve_attachment_count,
-                        )
-                        .to_vec(),
-                    }
-                })
-                .collect::<Vec<_>>();
+            let mut subpasses = subpasses!(raw, plain);
             // A chained VkRenderPassInputAttachmentAspectCreateInfo restricts the
             // aspects an input attachment reference lets the shader read.
-            let mut subpasses = subpasses;
             let aspects: Option<&vk::RenderPassInputAttachmentAspectCreateInfo<'_>> = chained(
                 raw.p_next,
                 vk::StructureType::RENDER_PASS_INPUT_ATTACHMENT_ASPECT_CREATE_INFO,
@@ -427,9 +410,29 @@ impl Pass {
                     }
                 }
             }
+            let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = chained(
+                raw.p_next,
+                vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
+            );
+            let masks = multiview.map_or(&[][..], |m| {
+                crate::state::raw_slice(m.p_view_masks, m.subpass_count)
+            });
+            for (s, mask) in subpasses.iter_mut().zip(masks) {
+                s.view_mask = *mask;
+            }
+            let dependencies = crate::state::raw_slice(raw.p_dependencies, raw.dependency_count)
+                .iter()
+                .map(|d| Dependency {
+                    subpasses: (d.src_subpass, d.dst_subpass),
+                    stages: (d.src_stage_mask, d.dst_stage_mask),
+                    access: (d.src_access_mask, d.dst_access_mask),
+                })
+                .collect();
             Pass {
-                attachments,
+                attachments: attachments.iter().map(|a| (a.format, a.samples)).collect(),
+                described,
                 subpasses,
+                dependencies,
                 second: false,
             }
         }
@@ -440,13 +443,27 @@ impl Pass {
         let raw = create_info.as_raw();
         // SAFETY: as in `of`.
         unsafe {
-            let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count)
+            let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count);
+            let described = attachments
                 .iter()
-                .map(|a| (a.format, a.samples))
+                .map(|a| {
+                    let stencil: Option<&vk::AttachmentDescriptionStencilLayout<'_>> = chained(
+                        a.p_next,
+                        vk::StructureType::ATTACHMENT_DESCRIPTION_STENCIL_LAYOUT,
+                    );
+                    let stencil =
+                        stencil.map(|s| (s.stencil_initial_layout, s.stencil_final_layout));
+                    Described::of(
+                        a.load_op,
+                        a.stencil_load_op,
+                        a.flags,
+                        (a.initial_layout, a.final_layout),
+                        stencil,
+                    )
+                })
                 .collect();
             let plain = |r: &vk::AttachmentReference2<'_>| {
-                // The chain of a safe struct, and the type its sType names.
-                let stencil: Option<&vk::AttachmentReferenceStencilLayout<'_>> = super::chained(
+                let stencil: Option<&vk::AttachmentReferenceStencilLayout<'_>> = chained(
                     r.p_next,
                     vk::StructureType::ATTACHMENT_REFERENCE_STENCIL_LAYOUT,
                 );
@@ -454,42 +471,160 @@ impl Pass {
                     attachment: r.attachment,
                     layout: r.layout,
                     stencil_layout: stencil.map_or(r.layout, |s| s.stencil_layout),
+                    stencil_chained: stencil.is_some(),
                     aspect_mask: r.aspect_mask,
                 }
             };
-            let subpasses = crate::state::raw_slice(raw.p_subpasses, raw.subpass_count)
+            let mut subpasses = subpasses!(raw, plain);
+            let descriptions = crate::state::raw_slice(raw.p_subpasses, raw.subpass_count);
+            for (s, d) in subpasses.iter_mut().zip(descriptions) {
+                s.view_mask = d.view_mask;
+                let resolve: Option<&vk::SubpassDescriptionDepthStencilResolve<'_>> = chained(
+                    d.p_next,
+                    vk::StructureType::SUBPASS_DESCRIPTION_DEPTH_STENCIL_RESOLVE,
+                );
+                s.depth_resolve = resolve
+                    .and_then(|r| r.p_depth_stencil_resolve_attachment.as_ref())
+                    .map(|a| a.attachment);
+            }
+            // A chained VkMemoryBarrier2's stages and access types replace the
+            // dependency's, their first 32 bits read.
+            let dependencies = crate::state::raw_slice(raw.p_dependencies, raw.dependency_count)
                 .iter()
-                .map(|s| {
-                    let list = |p, n| {
-                        crate::state::raw_slice(p, n)
-                            .iter()
-                            .map(plain)
-                            .collect::<Vec<_>>()
-                    };
-                    Subpass {
-                        inputs: list(s.p_input_attachments, s.input_attachment_count),
-                        colors: list(s.p_color_attachments, s.color_attachment_count),
-                        resolves: (!s.p_resolve_attachments.is_null())
-                            .then(|| list(s.p_resolve_attachments, s.color_attachment_count)),
-                        depth: s.p_depth_stencil_attachment.as_ref().map(plain),
-                        preserve: crate::state::raw_slice(
-                            s.p_preserve_attachments,
-                            s.preserve_attachment_count,
-                        )
-                        .to_vec(),
+                .map(|d| {
+                    let barrier: Option<&vk::MemoryBarrier2<'_>> =
+                        chained(d.p_next, vk::StructureType::MEMORY_BARRIER_2);
+                    let low = |v: u64| v as u32;
+                    Dependency {
+                        subpasses: (d.src_subpass, d.dst_subpass),
+                        stages: barrier.map_or((d.src_stage_mask, d.dst_stage_mask), |b| {
+                            (
+                                vk::PipelineStageFlags::from_raw(low(b.src_stage_mask.as_raw())),
+                                vk::PipelineStageFlags::from_raw(low(b.dst_stage_mask.as_raw())),
+                            )
+                        }),
+                        access: barrier.map_or((d.src_access_mask, d.dst_access_mask), |b| {
+                            (
+                                vk::AccessFlags::from_raw(low(b.src_access_mask.as_raw())),
+                                vk::AccessFlags::from_raw(low(b.dst_access_mask.as_raw())),
+                            )
+                        }),
                     }
                 })
                 .collect();
             Pass {
-                attachments,
+                attachments: attachments.iter().map(|a| (a.format, a.samples)).collect(),
+                described,
                 subpasses,
+                dependencies,
                 second: true,
             }
         }
     }
 
-    /// Each attachment's format, sample count and roles, for the render pass's
-    /// record (`depth_resolves`: the attachments subpasses resolve depth/stencil to).
+    /// The device's record of the render pass.
+    fn created(&self, device: &Device, render_pass: RenderPass) -> RenderPass {
+        let (color_formats, depth_formats) = self.formats();
+        let layouts: Vec<_> = self.described.iter().map(|d| d.layouts).collect();
+        let depth_resolves: Vec<u32> = self
+            .subpasses
+            .iter()
+            .filter_map(|s| s.depth_resolve)
+            .filter(|a| *a != vk::ATTACHMENT_UNUSED)
+            .collect();
+        let loads = self.attachments.iter().zip(&self.described);
+        let clear_count = clear_count(loads.map(|(a, d)| (a.0, d.load.0, d.load.1)));
+        let self_dependencies = self
+            .dependencies
+            .iter()
+            .filter(|d| d.subpasses.0 == d.subpasses.1 && d.subpasses.0 != vk::SUBPASS_EXTERNAL)
+            .map(|d| crate::state::SelfDependency {
+                subpass: d.subpasses.0,
+                stages: d.stages,
+                access: d.access,
+            })
+            .collect();
+        let dependency_stages = self
+            .dependencies
+            .iter()
+            .fold(Default::default(), |(s, d), x| {
+                (s | x.stages.0, d | x.stages.1)
+            });
+        device.live().render_pass_created(
+            render_pass.raw(),
+            RenderPassRecord {
+                attachments: self.attachment_uses(&depth_resolves),
+                view_masks: self.subpasses.iter().map(|s| s.view_mask).collect(),
+                no_attachments: self
+                    .subpasses
+                    .iter()
+                    .map(|s| s.refs().all(|(_, r)| !r.used()))
+                    .collect(),
+                color_formats,
+                depth_formats,
+                depth_layouts: self.depth_layouts(),
+                subpass_samples: self.samples(),
+                taken: self.taken(&layouts),
+                layouts,
+                used: self.used(),
+                inputs: self.inputs(),
+                self_dependencies,
+                clear_count,
+                stencil_taken: self.stencil_taken(),
+                may_alias: self.described.iter().map(|d| d.may_alias).collect(),
+                dependency_stages,
+            },
+        );
+        render_pass
+    }
+
+    /// Every layout each attachment takes: its initial and final layouts (and its
+    /// stencil aspect's) and those of the references to it.
+    fn taken(&self, layouts: &[crate::state::AttachmentLayouts]) -> Vec<Vec<vk::ImageLayout>> {
+        let mut out: Vec<Vec<vk::ImageLayout>> = layouts
+            .iter()
+            .map(|l| vec![l.initial, l.last, l.stencil_initial, l.stencil_last])
+            .collect();
+        for s in &self.subpasses {
+            for (_, r) in s.refs() {
+                if let Some(t) = out.get_mut(r.attachment as usize) {
+                    t.push(r.layout);
+                }
+            }
+        }
+        out
+    }
+
+    /// The layouts each attachment's stencil aspect takes through the stencil layout
+    /// structs `vkCreateRenderPass2`'s attachments and input and depth/stencil
+    /// references chain (none through `vkCreateRenderPass`).
+    fn stencil_taken(&self) -> Vec<Vec<vk::ImageLayout>> {
+        if !self.second {
+            return Vec::new();
+        }
+        let mut out: Vec<Vec<vk::ImageLayout>> = self
+            .described
+            .iter()
+            .map(|d| match d.stencil_chained {
+                true => vec![d.layouts.stencil_initial, d.layouts.stencil_last],
+                false => Vec::new(),
+            })
+            .collect();
+        for s in &self.subpasses {
+            for r in s
+                .inputs
+                .iter()
+                .chain(&s.depth)
+                .filter(|r| r.stencil_chained)
+            {
+                if let Some(t) = out.get_mut(r.attachment as usize) {
+                    t.push(r.stencil_layout);
+                }
+            }
+        }
+        out
+    }
+
     /// The attachments each subpass references (input, color, resolve,
     /// depth/stencil).
     fn used(&self) -> Vec<Vec<u32>> {
@@ -503,6 +638,7 @@ impl Pass {
                     .chain(&s.depth)
                     .filter(|r| r.used())
                     .map(|r| r.attachment)
+                    .chain(s.depth_resolve.filter(|a| *a != vk::ATTACHMENT_UNUSED))
                     .collect()
             })
             .collect()
@@ -951,107 +1087,6 @@ pub(crate) fn render_pass2_reference_checks(
     check_view_masks(device, &masks, raw.correlated_view_mask_count, &flags, true)
 }
 
-/// Each subpass's color and depth/stencil formats, for `vkCreateRenderPass`'s record.
-pub(crate) fn subpass_formats(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
-    Pass::of(create_info).formats()
-}
-
-/// Each subpass's input attachment references, for `vkCreateRenderPass`'s record.
-pub(crate) fn subpass_inputs(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<Vec<(u32, vk::ImageAspectFlags)>> {
-    Pass::of(create_info).inputs()
-}
-
-/// [`subpass_inputs`] for `vkCreateRenderPass2`.
-pub(crate) fn subpass_inputs2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<Vec<(u32, vk::ImageAspectFlags)>> {
-    Pass::of2(create_info).inputs()
-}
-
-/// Each subpass's depth/stencil layouts, for `vkCreateRenderPass`'s record.
-pub(crate) fn subpass_depth_layouts(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<Option<(vk::ImageLayout, vk::ImageLayout)>> {
-    Pass::of(create_info).depth_layouts()
-}
-
-/// Each subpass's attachments' sample count, for `vkCreateRenderPass`'s record.
-pub(crate) fn subpass_samples(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<Option<vk::SampleCountFlags>> {
-    Pass::of(create_info).samples()
-}
-
-/// [`subpass_samples`] for `vkCreateRenderPass2`.
-pub(crate) fn subpass_samples2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<Option<vk::SampleCountFlags>> {
-    Pass::of2(create_info).samples()
-}
-
-/// [`subpass_depth_layouts`] for `vkCreateRenderPass2`.
-pub(crate) fn subpass_depth_layouts2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<Option<(vk::ImageLayout, vk::ImageLayout)>> {
-    Pass::of2(create_info).depth_layouts()
-}
-
-/// Each attachment's format, samples and roles, for `vkCreateRenderPass`'s record.
-pub(crate) fn attachment_uses(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<(vk::Format, vk::SampleCountFlags, u8)> {
-    Pass::of(create_info).attachment_uses(&[])
-}
-
-/// Each attachment's initial and final layouts (`vkCreateRenderPass`: the stencil
-/// aspect's are the same).
-pub(crate) fn attachment_layouts(
-    create_info: &RenderPassCreateInfo<'_>,
-) -> Vec<crate::state::AttachmentLayouts> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
-        .iter()
-        .map(|a| crate::state::AttachmentLayouts {
-            initial: a.initial_layout,
-            last: a.final_layout,
-            stencil_initial: a.initial_layout,
-            stencil_last: a.final_layout,
-        })
-        .collect()
-}
-
-/// [`attachment_layouts`] for `vkCreateRenderPass2`, whose attachments may chain
-/// their stencil aspect's layouts.
-pub(crate) fn attachment_layouts2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<crate::state::AttachmentLayouts> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
-        .iter()
-        .map(|a| {
-            // SAFETY: the chain of a safe struct, and the type its sType names.
-            let stencil: Option<&vk::AttachmentDescriptionStencilLayout<'_>> = unsafe {
-                super::chained(
-                    a.p_next,
-                    vk::StructureType::ATTACHMENT_DESCRIPTION_STENCIL_LAYOUT,
-                )
-            };
-            crate::state::AttachmentLayouts {
-                initial: a.initial_layout,
-                last: a.final_layout,
-                stencil_initial: stencil.map_or(a.initial_layout, |s| s.stencil_initial_layout),
-                stencil_last: stencil.map_or(a.final_layout, |s| s.stencil_final_layout),
-            }
-        })
-        .collect()
-}
-
 /// One more than the largest attachment index a render pass instance clears: a
 /// `loadOp` of CLEAR, or a `stencilLoadOp` of CLEAR for a depth/stencil format.
 pub(super) fn clear_count(
@@ -1071,176 +1106,6 @@ pub(super) fn clear_count(
         .map(|(i, _)| i as u32 + 1)
         .max()
         .unwrap_or(0)
-}
-
-/// [`clear_count`] of `vkCreateRenderPass`'s create info.
-pub(crate) fn clears(create_info: &RenderPassCreateInfo<'_>) -> u32 {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the attachments with their count.
-    let a = unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) };
-    clear_count(a.iter().map(|a| (a.format, a.load_op, a.stencil_load_op)))
-}
-
-/// [`clear_count`] of `vkCreateRenderPass2`'s create info.
-pub(crate) fn clears2(create_info: &RenderPassCreateInfo2<'_>) -> u32 {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the attachments with their count.
-    let a = unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) };
-    clear_count(a.iter().map(|a| (a.format, a.load_op, a.stencil_load_op)))
-}
-
-/// Every layout each attachment takes: its initial and final layouts (and its
-/// stencil aspect's) and those of the references to it.
-fn taken(pass: &Pass, layouts: &[crate::state::AttachmentLayouts]) -> Vec<Vec<vk::ImageLayout>> {
-    let mut out: Vec<Vec<vk::ImageLayout>> = layouts
-        .iter()
-        .map(|l| vec![l.initial, l.last, l.stencil_initial, l.stencil_last])
-        .collect();
-    for s in &pass.subpasses {
-        for (_, r) in s.refs() {
-            if let Some(t) = out.get_mut(r.attachment as usize) {
-                t.push(r.layout);
-            }
-        }
-    }
-    out
-}
-
-/// [`taken`] of `vkCreateRenderPass`'s create info.
-pub(crate) fn layouts_taken(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<vk::ImageLayout>> {
-    taken(&Pass::of(create_info), &attachment_layouts(create_info))
-}
-
-/// [`taken`] of `vkCreateRenderPass2`'s create info.
-pub(crate) fn layouts_taken2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec<vk::ImageLayout>> {
-    taken(&Pass::of2(create_info), &attachment_layouts2(create_info))
-}
-
-/// The layouts each attachment's stencil aspect takes through the stencil layout
-/// structs `vkCreateRenderPass2`'s attachments and references chain.
-pub(crate) fn stencil_layouts2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<Vec<vk::ImageLayout>> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setters store each array with its count; a depth/stencil
-    // reference outlives the create info; each chain is a safe struct's, and the
-    // type each sType names.
-    unsafe {
-        let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count);
-        let mut out: Vec<Vec<vk::ImageLayout>> = attachments
-            .iter()
-            .map(|a| {
-                let s: Option<&vk::AttachmentDescriptionStencilLayout<'_>> = chained(
-                    a.p_next,
-                    vk::StructureType::ATTACHMENT_DESCRIPTION_STENCIL_LAYOUT,
-                );
-                s.map_or(Vec::new(), |s| {
-                    vec![s.stencil_initial_layout, s.stencil_final_layout]
-                })
-            })
-            .collect();
-        for sub in crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) {
-            let refs = crate::state::raw_slice(sub.p_input_attachments, sub.input_attachment_count)
-                .iter()
-                .chain(sub.p_depth_stencil_attachment.as_ref());
-            for r in refs {
-                let s: Option<&vk::AttachmentReferenceStencilLayout<'_>> = chained(
-                    r.p_next,
-                    vk::StructureType::ATTACHMENT_REFERENCE_STENCIL_LAYOUT,
-                );
-                if let (Some(s), Some(t)) = (s, out.get_mut(r.attachment as usize)) {
-                    t.push(s.stencil_layout);
-                }
-            }
-        }
-        out
-    }
-}
-
-/// Each attachment's MAY_ALIAS flag (`vkCreateRenderPass`).
-pub(crate) fn may_alias(create_info: &RenderPassCreateInfo<'_>) -> Vec<bool> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
-        .iter()
-        .map(|a| a.flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS))
-        .collect()
-}
-
-/// [`may_alias`] for `vkCreateRenderPass2`.
-pub(crate) fn may_alias2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<bool> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the attachments with their count.
-    unsafe { crate::state::raw_slice(raw.p_attachments, raw.attachment_count) }
-        .iter()
-        .map(|a| a.flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS))
-        .collect()
-}
-
-/// The attachments each subpass of `vkCreateRenderPass`'s create info uses (input,
-/// color, resolve and depth/stencil references).
-pub(crate) fn used_attachments(create_info: &RenderPassCreateInfo<'_>) -> Vec<Vec<u32>> {
-    Pass::of(create_info).used()
-}
-
-/// [`used_attachments`] for `vkCreateRenderPass2`, with each subpass's
-/// depth/stencil resolve attachment.
-pub(crate) fn used_attachments2(create_info: &RenderPassCreateInfo2<'_>) -> Vec<Vec<u32>> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the subpasses with their count.
-    let subpasses = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) };
-    let mut used = Pass::of2(create_info).used();
-    for (u, s) in used.iter_mut().zip(subpasses) {
-        // SAFETY: the `pNext` of a safe struct, and the type the sType names; its
-        // reference outlives the create info.
-        let r: Option<&vk::SubpassDescriptionDepthStencilResolve<'_>> = unsafe {
-            chained(
-                s.p_next,
-                vk::StructureType::SUBPASS_DESCRIPTION_DEPTH_STENCIL_RESOLVE,
-            )
-        };
-        // SAFETY: as above.
-        if let Some(a) = unsafe { r.and_then(|r| r.p_depth_stencil_resolve_attachment.as_ref()) } {
-            if a.attachment != vk::ATTACHMENT_UNUSED {
-                u.push(a.attachment);
-            }
-        }
-    }
-    used
-}
-
-/// [`attachment_uses`] for `vkCreateRenderPass2`, whose subpasses may chain a
-/// depth/stencil resolve.
-pub(crate) fn attachment_uses2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> Vec<(vk::Format, vk::SampleCountFlags, u8)> {
-    let raw = create_info.as_raw();
-    // SAFETY: the safe setter stores the subpasses with their count.
-    let subpasses = unsafe { crate::state::raw_slice(raw.p_subpasses, raw.subpass_count) };
-    let resolves: Vec<u32> = subpasses
-        .iter()
-        .filter_map(|s| {
-            // SAFETY: the `pNext` of a safe struct, and the type the sType names; its
-            // reference outlives the create info.
-            let r: Option<&vk::SubpassDescriptionDepthStencilResolve<'_>> = unsafe {
-                chained(
-                    s.p_next,
-                    vk::StructureType::SUBPASS_DESCRIPTION_DEPTH_STENCIL_RESOLVE,
-                )
-            };
-            // SAFETY: as above.
-            unsafe { r?.p_depth_stencil_resolve_attachment.as_ref() }.map(|a| a.attachment)
-        })
-        .filter(|a| *a != vk::ATTACHMENT_UNUSED)
-        .collect();
-    Pass::of2(create_info).attachment_uses(&resolves)
-}
-
-/// [`subpass_formats`] for `vkCreateRenderPass2`.
-pub(crate) fn subpass_formats2(
-    create_info: &RenderPassCreateInfo2<'_>,
-) -> (Vec<Vec<vk::Format>>, Vec<Option<vk::Format>>) {
-    Pass::of2(create_info).formats()
 }
 
 /// A depth/stencil format's layouts that name one aspect only, refused for a format

@@ -748,14 +748,6 @@ pub(crate) fn acquire_next_image_khr_done(
     if r != vk::Result::SUCCESS && r != vk::Result::SUBOPTIMAL_KHR {
         return;
     }
-    if let Some(s) = semaphore {
-        submission::record_binary_ops(
-            device,
-            vk::Queue::null(),
-            &[submission::SemOp::Signal(s.raw())],
-            None,
-        );
-    }
     if fence.is_some() {
         submission::submitted(
             device,
@@ -769,9 +761,23 @@ pub(crate) fn acquire_next_image_khr_done(
     // An image acquired with vkAcquireNextImageKHR is acquired for every physical
     // device of the logical device.
     let all = (1u64 << device.live().physical_count().min(32)) - 1;
-    device
-        .live()
-        .image_acquired(swapchain.raw(), index, all as u32);
+    let semaphore = semaphore.map_or(vk::Semaphore::null(), |s| s.raw());
+    acquired(device, swapchain.raw(), semaphore, (index, all as u32));
+}
+
+/// An acquire of image `index` for the physical devices of `mask` succeeded: its
+/// semaphore is signaled and the image acquired until a presentation takes it.
+fn acquired(
+    device: &Device,
+    swapchain: vk::SwapchainKHR,
+    semaphore: vk::Semaphore,
+    (index, mask): (u32, u32),
+) {
+    if semaphore != vk::Semaphore::null() {
+        let signal = [submission::SemOp::Signal(semaphore)];
+        submission::record_binary_ops(device, vk::Queue::null(), &signal, None);
+    }
+    device.live().image_acquired(swapchain, index, mask);
 }
 
 /// The checks of `vkAcquireNextImage2KHR` that [`acquire_checks`] makes.
@@ -796,18 +802,13 @@ pub(crate) fn acquire_next_image2_khr_done(
     index: u32,
     r: vk::Result,
 ) {
-    if r != vk::Result::SUCCESS && r != vk::Result::SUBOPTIMAL_KHR {
-        return;
-    }
-    if acquire_info.semaphore != vk::Semaphore::null() {
-        submission::record_binary_ops(
+    if r == vk::Result::SUCCESS || r == vk::Result::SUBOPTIMAL_KHR {
+        let info = acquire_info;
+        acquired(
             device,
-            vk::Queue::null(),
-            &[submission::SemOp::Signal(acquire_info.semaphore)],
-            None,
+            info.swapchain,
+            info.semaphore,
+            (index, info.device_mask),
         );
     }
-    device
-        .live()
-        .image_acquired(acquire_info.swapchain, index, acquire_info.device_mask);
 }
