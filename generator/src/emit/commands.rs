@@ -4,6 +4,8 @@
 //! with a parameter of no safe shape is not emitted; its rules are recorded as left to
 //! the user, who can call it through ash on the raw handles.
 
+mod keep;
+
 use super::structs::safe_or_ash;
 use crate::model::CommandDef;
 use crate::model::Kind;
@@ -13,11 +15,11 @@ use crate::plan::checks::Checker;
 use crate::plan::commands::{
     parent_of, parent_param, recorded, DisplayKind, Param, Plan, RecorderState, Transition,
 };
-use crate::plan::shape::{struct_members, Member};
 use crate::plan::special::{special, Call, Keeps};
 use crate::plan::types::{ash_type, spelled};
 use crate::plan::Context;
 use crate::plan::Plans;
+use keep::{keep_expr, struct_retains};
 use proc_macro2::{Ident, TokenStream};
 use quote::{quote, ToTokens};
 
@@ -1412,92 +1414,4 @@ fn scope_expr(cx: &Context, plan: &Plan, device_path: &TokenStream) -> TokenStre
         }),
         _ => quote!(#device_path.scope()),
     }
-}
-
-/// The objects a created wrapper keeps alive because its create info names them
-/// (a view's image, a framebuffer's attachments, a pipeline's layout and render
-/// pass): an expression of type `Option<Retained>` over the info in `var`, or `None`
-/// when the info names no other object. The parent and `skip` are kept already.
-fn keep_expr(
-    cx: &Context,
-    info_ty: &str,
-    var: &TokenStream,
-    parent: &str,
-    skip: Option<&str>,
-    device_path: &TokenStream,
-) -> Option<TokenStream> {
-    if cx.reaching.contains(info_ty) && skip.is_none() {
-        // Everything the info reaches, nested structs and `pNext` included: a
-        // descriptor set layout keeps the immutable samplers of its bindings. New
-        // objects keep only older ones, so no cycle can form.
-        let walk = super::reach::walk_fn(info_ty);
-        return Some(quote!({
-            let live = #device_path.live();
-            let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-            __safety!("the safe info stores every array with its length and chains only structs pushed through `push_next`.");
-            unsafe { #walk(#var.as_raw(), live, &mut kept) };
-            (!kept.is_empty()).then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-        }));
-    }
-    let mut parts = Vec::new();
-    for (m, shape) in struct_members(cx.model, &cx.facts, info_ty) {
-        if m.type_name == parent || Some(m.name.as_str()) == skip {
-            continue;
-        }
-        let f = field_ident(&m.name);
-        match shape {
-            Member::Handle { .. } => {
-                parts.push(quote!(kept.extend(live.get(#var.as_raw().#f));));
-            }
-            Member::HandleSlice { count } => {
-                let c = field_ident(&count);
-                parts.push(quote! {
-                    __safety!("the safe setter stored this array with its length.");
-                    kept.extend(live.keep(unsafe { crate::state::raw_slice(#var.as_raw().#f, #var.as_raw().#c) }));
-                });
-            }
-            _ => {}
-        }
-    }
-    if parts.is_empty() {
-        return None;
-    }
-    Some(quote!({
-        let live = #device_path.live();
-        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
-        #(#parts)*
-        (!kept.is_empty()).then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
-    }))
-}
-
-/// What a recorded command keeps alive beyond its wrapper arguments: the objects
-/// named by handle members of a struct argument (a render pass begin's framebuffer,
-/// a barrier's image), looked up among the device's live objects.
-fn struct_retains(
-    cx: &Context,
-    p: &crate::model::Field,
-    name: &Ident,
-    slice: bool,
-) -> Vec<TokenStream> {
-    if !cx.reaching.contains(&p.type_name) {
-        return Vec::new();
-    }
-    let walk = super::reach::walk_fn(&p.type_name);
-    let elems = if slice {
-        quote!(#name.iter())
-    } else {
-        quote!(core::iter::once(#name))
-    };
-    vec![quote! {
-        let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
-            for e in #elems {
-                __safety!("the safe structs store every pointer with its length.");
-                unsafe { #walk(e.as_raw(), live, &mut kept) };
-            }
-            kept
-        };
-        for o in kept { self.retain(o); }
-    }]
 }
