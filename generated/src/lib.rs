@@ -7,9 +7,13 @@
 //
 // Written by hand: every other module under `src/`. `special/` holds what a command
 // does beyond its parameters' shapes, one file per concern, each called from the
-// generator's special-case table (`generator/src/plan/special/`); the files beside it
-// are the records, recording, submission and convenience layers the emitted methods
-// call.
+// generator's special-case table (`generator/src/plan/special/`); `state/` the
+// records the device keeps of its objects, below every check; `memory/` allocation
+// and host mapping; `present/` surfaces from windows and the swapchain's recreate
+// path; `routine/` routine work in one call (setup, frames in flight, one-object
+// forms, choosing a device); `diagnostics/` the layers' messages and why a creation
+// failed; beside them the recorder, the submission checks, SPIR-V reading, the
+// checks' scope and what every wrapper shares.
 
 //! tuff: safe Vulkan wrappers over `ash`, generated from the Khronos registry by
 //! `tuff-gen`.
@@ -194,39 +198,29 @@ pub mod status;
 #[rustfmt::skip]
 pub mod structs;
 
-mod allocation;
-#[cfg(feature = "ext_debug_utils")]
-mod debug_log;
-mod frames;
-
-mod mapping;
-mod physical;
-mod presence;
+mod diagnostics;
+mod memory;
+mod present;
 pub mod recorder;
-mod setup;
-mod single;
+mod routine;
 mod special;
 mod spirv;
 mod state;
 mod submission;
 mod support;
-#[cfg(feature = "khr_swapchain")]
-mod swapchain;
 mod validation;
-#[cfg(feature = "khr_surface")]
-mod window;
 
-pub use allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllocator};
 pub use ash::vk;
 #[cfg(feature = "ext_debug_utils")]
-pub use debug_log::MessageLog;
-pub use frames::{Frame, FramesInFlight};
+pub use diagnostics::debug_log::MessageLog;
 pub use handles::*;
-pub use mapping::MappedMemory;
+pub use memory::allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllocator};
+pub use memory::mapping::MappedMemory;
 pub use recorder::{
     InRenderPass, InRendering, InVideoCoding, Inside, Outside, OutsideRenderPass, Recorder, Scope,
     State,
 };
+pub use routine::frames::{Frame, FramesInFlight};
 pub use spirv::spirv_words;
 pub use status::*;
 pub use structs::*;

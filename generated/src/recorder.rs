@@ -5,9 +5,9 @@
 //! alive by the command buffer, and by the fence of every submission of it.
 
 use crate::handles::{CommandBuffer, Device};
+use crate::state::Uses;
 use crate::state::{dynamic_bit, DepthStencil};
 use crate::structs::CommandBufferBeginInfo;
-use crate::submission::Uses;
 use crate::{Error, Handle, Result};
 use ash::vk;
 use core::marker::PhantomData;

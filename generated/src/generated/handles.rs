@@ -350,7 +350,7 @@ struct CommandBufferInner {
     raw: vk::CommandBuffer,
     parent: CommandPool,
     resources: Vutex<Vec<Retained>>,
-    uses: Vrc<crate::submission::Uses>,
+    uses: Vrc<crate::state::Uses>,
     keep: Option<Retained>,
     destroy: bool,
     sync: tuff_runtime::HostSync,
@@ -400,7 +400,7 @@ impl CommandBuffer {
         }
     }
     /// The buffer's lifecycle state.
-    pub(crate) fn uses(&self) -> &Vrc<crate::submission::Uses> {
+    pub(crate) fn uses(&self) -> &Vrc<crate::state::Uses> {
         &self.inner.uses
     }
     /// Keeps what the last recording uses; what the recording before kept
@@ -461,7 +461,7 @@ struct CommandPoolInner {
     parent: Device,
     queue_flags: std::sync::OnceLock<vk::QueueFlags>,
     create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>,
-    buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>,
+    buffers: Vutex<Vec<tuff_runtime::Vweak<crate::state::Uses>>>,
     deferred: Vutex<Vec<vk::CommandBuffer>>,
     keep: Option<Retained>,
     destroy: bool,
@@ -541,13 +541,13 @@ impl CommandPool {
     }
     /// Lists a buffer allocated from the pool, whose state a reset of
     /// the pool changes.
-    pub(crate) fn adopt(&self, uses: &Vrc<crate::submission::Uses>) {
+    pub(crate) fn adopt(&self, uses: &Vrc<crate::state::Uses>) {
         let mut buffers = self.inner.buffers.lock();
         buffers.retain(|w| w.strong_count() > 0);
         buffers.push(Vrc::downgrade(uses));
     }
     /// The lifecycle states of the pool's live buffers.
-    pub(crate) fn buffer_uses(&self) -> Vec<Vrc<crate::submission::Uses>> {
+    pub(crate) fn buffer_uses(&self) -> Vec<Vrc<crate::state::Uses>> {
         self.inner.buffers.lock().iter().filter_map(|w| w.upgrade()).collect()
     }
     /// Whether `begin` may reset a buffer of this pool implicitly
@@ -1575,7 +1575,7 @@ struct DeviceInner {
     fns: ash::Device,
     ext: DeviceExtensions,
     command_buffers: Vutex<
-        std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>,
+        std::collections::HashMap<vk::CommandBuffer, Vrc<crate::state::Uses>>,
     >,
     live: crate::state::Live,
     exts: crate::checks::Exts,
@@ -2518,7 +2518,7 @@ impl Device {
     pub(crate) fn command_buffer_uses(
         &self,
         raw: vk::CommandBuffer,
-    ) -> Option<Vrc<crate::submission::Uses>> {
+    ) -> Option<Vrc<crate::state::Uses>> {
         self.inner.command_buffers.lock().get(&raw).cloned()
     }
 }

@@ -8,6 +8,7 @@
 //! Vulkan structs point to, which the records and the emitted methods share, are here.
 
 mod buffer;
+mod command_buffer;
 mod command_pool;
 mod descriptors;
 mod features;
@@ -26,6 +27,7 @@ mod sync;
 mod view;
 
 pub(crate) use self::buffer::BufferRecord;
+pub(crate) use self::command_buffer::{Standing, Uses};
 pub(crate) use self::command_pool::PoolFamily;
 pub(crate) use self::descriptors::{
     names_image_layout, sampler_bits, BindingRecord, ImageDescriptor, SetImages, SetLayoutRecord,

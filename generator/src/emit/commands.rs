@@ -360,7 +360,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                     quote!(raw_window_handle::DisplayHandle<'_>),
                 ));
                 pre.push(quote! {
-                    let #name: #ty = crate::window::#get(#name.as_raw())?.as_ptr().cast();
+                    let #name: #ty = crate::present::window::#get(#name.as_raw())?.as_ptr().cast();
                 });
                 call_args.push(quote!(#name,));
             }

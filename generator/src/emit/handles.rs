@@ -268,7 +268,7 @@ fn emit_device(cx: &Context) -> TokenStream {
             physical: PhysicalDevice,
             fns: ash::Device,
             ext: DeviceExtensions,
-            command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, Vrc<crate::submission::Uses>>>,
+            command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, Vrc<crate::state::Uses>>>,
             live: crate::state::Live,
             exts: crate::checks::Exts,
             objects: crate::validation::Objects,
@@ -351,7 +351,7 @@ fn emit_device(cx: &Context) -> TokenStream {
                 self.inner.live.count()
             }
             /// The lifecycle state of the live command buffer with this raw handle.
-            pub(crate) fn command_buffer_uses(&self, raw: vk::CommandBuffer) -> Option<Vrc<crate::submission::Uses>> {
+            pub(crate) fn command_buffer_uses(&self, raw: vk::CommandBuffer) -> Option<Vrc<crate::state::Uses>> {
                 self.inner.command_buffers.lock().get(&raw).cloned()
             }
         }
@@ -717,7 +717,7 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
 fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
     match name {
         "VkCommandBuffer" => (
-            quote!(resources: Vutex<Vec<Retained>>, uses: Vrc<crate::submission::Uses>,),
+            quote!(resources: Vutex<Vec<Retained>>, uses: Vrc<crate::state::Uses>,),
             quote!(resources: Vutex::new(Vec::new()), uses: Default::default(),),
             quote! {
                 /// Records the buffer's level, for the `bufferlevel` checks and the
@@ -736,7 +736,7 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                     }
                 }
                 /// The buffer's lifecycle state.
-                pub(crate) fn uses(&self) -> &Vrc<crate::submission::Uses> {
+                pub(crate) fn uses(&self) -> &Vrc<crate::state::Uses> {
                     &self.inner.uses
                 }
                 /// Keeps what the last recording uses; what the recording before kept
@@ -758,7 +758,7 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
         "VkCommandPool" => {
             let (f, i, fns) = queue_flags_state("the pool's family, for the `cmdpool` checks");
             (
-                quote!(#f create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>, buffers: Vutex<Vec<tuff_runtime::Vweak<crate::submission::Uses>>>, deferred: Vutex<Vec<vk::CommandBuffer>>,),
+                quote!(#f create_flags: std::sync::OnceLock<vk::CommandPoolCreateFlags>, buffers: Vutex<Vec<tuff_runtime::Vweak<crate::state::Uses>>>, deferred: Vutex<Vec<vk::CommandBuffer>>,),
                 quote!(#i create_flags: std::sync::OnceLock::new(), buffers: Vutex::new(Vec::new()), deferred: Vutex::new(Vec::new()),),
                 quote! {
                     #fns
@@ -785,13 +785,13 @@ fn special_state(name: &str) -> (TokenStream, TokenStream, TokenStream) {
                     }
                     /// Lists a buffer allocated from the pool, whose state a reset of
                     /// the pool changes.
-                    pub(crate) fn adopt(&self, uses: &Vrc<crate::submission::Uses>) {
+                    pub(crate) fn adopt(&self, uses: &Vrc<crate::state::Uses>) {
                         let mut buffers = self.inner.buffers.lock();
                         buffers.retain(|w| w.strong_count() > 0);
                         buffers.push(Vrc::downgrade(uses));
                     }
                     /// The lifecycle states of the pool's live buffers.
-                    pub(crate) fn buffer_uses(&self) -> Vec<Vrc<crate::submission::Uses>> {
+                    pub(crate) fn buffer_uses(&self) -> Vec<Vrc<crate::state::Uses>> {
                         self.inner.buffers.lock().iter().filter_map(|w| w.upgrade()).collect()
                     }
                     /// Whether `begin` may reset a buffer of this pool implicitly

@@ -28,7 +28,7 @@ The rules of `vkAcquireXlibDisplayEXT` that apply to this crate's API ([referenc
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_acquire_xlib_display"))?
             .acquire_xlib_display_ext;
-        let dpy: *mut vk::Display = crate::window::xlib_display(dpy.as_raw())?
+        let dpy: *mut vk::Display = crate::present::window::xlib_display(dpy.as_raw())?
             .as_ptr()
             .cast();
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
@@ -64,7 +64,7 @@ The rules of `vkGetRandROutputDisplayEXT` that apply to this crate's API ([refer
             .as_ref()
             .ok_or(Error::ExtensionNotEnabled("VK_EXT_acquire_xlib_display"))?
             .get_rand_r_output_display_ext;
-        let dpy: *mut vk::Display = crate::window::xlib_display(dpy.as_raw())?
+        let dpy: *mut vk::Display = crate::present::window::xlib_display(dpy.as_raw())?
             .as_ptr()
             .cast();
         let mut out = vk::DisplayKHR::null();

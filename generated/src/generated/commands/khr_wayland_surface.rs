@@ -118,7 +118,7 @@ The caller upholds the rules that [`Self::get_wayland_presentation_support_khr`]
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_wayland_surface"))?
             .get_physical_device_wayland_presentation_support_khr;
         Ok({
-            let display: *mut vk::wl_display = crate::window::wayland_display(
+            let display: *mut vk::wl_display = crate::present::window::wayland_display(
                     display.as_raw(),
                 )?
                 .as_ptr()

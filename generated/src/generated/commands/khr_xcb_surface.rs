@@ -121,7 +121,7 @@ The caller upholds the rules that [`Self::get_xcb_presentation_support_khr`] che
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xcb_surface"))?
             .get_physical_device_xcb_presentation_support_khr;
         Ok({
-            let connection: *mut vk::xcb_connection_t = crate::window::xcb_connection(
+            let connection: *mut vk::xcb_connection_t = crate::present::window::xcb_connection(
                     connection.as_raw(),
                 )?
                 .as_ptr()

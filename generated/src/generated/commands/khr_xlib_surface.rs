@@ -121,7 +121,9 @@ The caller upholds the rules that [`Self::get_xlib_presentation_support_khr`] ch
             .ok_or(Error::ExtensionNotEnabled("VK_KHR_xlib_surface"))?
             .get_physical_device_xlib_presentation_support_khr;
         Ok({
-            let dpy: *mut vk::Display = crate::window::xlib_display(dpy.as_raw())?
+            let dpy: *mut vk::Display = crate::present::window::xlib_display(
+                    dpy.as_raw(),
+                )?
                 .as_ptr()
                 .cast();
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).

@@ -61,7 +61,7 @@ The caller upholds the rules that [`Self::create_device`] checks at run time: `V
             )
         };
         if r.as_raw() < 0 {
-            return Err(crate::presence::device_error(self, create_info, r));
+            return Err(crate::diagnostics::presence::device_error(self, create_info, r));
         }
         Ok(crate::special::device::device_created(self, out, create_info))
     }
@@ -472,7 +472,9 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time: 
             )
         };
         if r.as_raw() < 0 {
-            return Err(crate::presence::instance_error(self, create_info, r));
+            return Err(
+                crate::diagnostics::presence::instance_error(self, create_info, r),
+            );
         }
         Ok(crate::special::device::instance_created(self, out, create_info))
     }

@@ -99,7 +99,10 @@ pub(super) const ROWS: &[Special] = &[
             "special::device::instance_created",
             &["self", "out", "create_info"],
         ),
-        error: call("presence::instance_error", &["self", "create_info", "r"]),
+        error: call(
+            "diagnostics::presence::instance_error",
+            &["self", "create_info", "r"],
+        ),
         scope: call("special::device::create_instance_scope", &["create_info"]),
         settles: &[
             (
@@ -131,7 +134,10 @@ pub(super) const ROWS: &[Special] = &[
             "special::device::device_created",
             &["self", "out", "create_info"],
         ),
-        error: call("presence::device_error", &["self", "create_info", "r"]),
+        error: call(
+            "diagnostics::presence::device_error",
+            &["self", "create_info", "r"],
+        ),
         scope: call(
             "special::device::create_device_scope",
             &["self", "create_info"],

@@ -345,7 +345,7 @@ mod tests {
                     assert!(
                         c.path.starts_with(&own)
                             || c.path.starts_with("special::image_layouts::")
-                            || c.path.starts_with("presence::"),
+                            || c.path.starts_with("diagnostics::presence::"),
                         "{}: {} is not in the crate's special::{concern}, the file of its row",
                         s.command,
                         c.path

@@ -1,0 +1,5 @@
+//! Memory: buffers and images bound to memory from an allocator, and host access to
+//! mapped memory.
+
+pub(crate) mod allocation;
+pub(crate) mod mapping;

@@ -1,0 +1,272 @@
+//! What the device records of a command buffer: its lifecycle state (initial,
+//! recording, executable, pending, invalid), the submissions that use it, the
+//! secondaries it executes, and what its last recording needs and leaves (image
+//! layouts, descriptor sets, events), shared with the device's registry so a
+//! submission naming the raw handle finds it.
+
+use super::Submission;
+use crate::handles::Device;
+use ash::vk;
+use tuff_runtime::{Vrc, Vutex, Vweak};
+
+/// The lifecycle state of a command buffer, shared with the device's registry so a
+/// submission naming the raw handle finds it.
+pub(crate) struct Uses {
+    state: Vutex<UsesState>,
+}
+
+impl Default for Uses {
+    fn default() -> Self {
+        Uses {
+            state: Vutex::new(UsesState::default()),
+        }
+    }
+}
+
+#[derive(Default)]
+struct UsesState {
+    /// Begun since allocation (or the last reset).
+    begun: bool,
+    /// Begun and not ended: a recorder was dropped or forgotten, or is alive.
+    recording: bool,
+    /// A `Recorder` of the buffer is alive: a pool reset would pull the buffer out of
+    /// the recording state under it.
+    recorder: bool,
+    secondary: bool,
+    executable: bool,
+    simultaneous: bool,
+    one_time: bool,
+    /// Bumped by every begin, so a primary sees when a secondary it executes was
+    /// recorded again.
+    generation: u64,
+    /// The submissions that use the buffer, directly or through a primary.
+    subs: Vec<Vweak<Submission>>,
+    /// Bumped each time a primary records this secondary: without SIMULTANEOUS_USE
+    /// a secondary belongs to the last primary that recorded it, and the earlier
+    /// ones are invalid.
+    links: u64,
+    /// The secondaries the current recording executes, with their generation and
+    /// link count then.
+    secondaries: Vec<(Vrc<Uses>, u64, u64)>,
+    /// The image layouts the last recording needs at its start and leaves at its
+    /// end; `None` while recording, or when it names none.
+    layouts: Option<Vrc<crate::state::layouts::Recording>>,
+    /// The descriptor sets the last recording bound, each with its generation then.
+    sets: Vec<(u64, u64)>,
+    /// The queue family of the buffer's pool and whether the pool is protected, as
+    /// the pool's creation recorded them (read at each begin).
+    pool: Option<(u32, bool)>,
+    /// The events the last recording's event commands name.
+    events: Vec<u64>,
+}
+
+/// Where a command buffer stands, as the submission checks read it.
+#[derive(Clone, Copy)]
+pub(crate) struct Standing {
+    pub secondary: bool,
+    pub executable: bool,
+    pub simultaneous: bool,
+    /// Bumped by every begin.
+    pub generation: u64,
+    /// Bumped each time a primary records this secondary.
+    pub links: u64,
+}
+
+impl Uses {
+    /// Where the buffer stands now.
+    pub(crate) fn standing(&self) -> Standing {
+        let s = self.state.lock();
+        Standing {
+            secondary: s.secondary,
+            executable: s.executable,
+            simultaneous: s.simultaneous,
+            generation: s.generation,
+            links: s.links,
+        }
+    }
+
+    /// The secondaries the current recording executes, with their generation and
+    /// link count when it recorded them.
+    pub(crate) fn secondaries(&self) -> Vec<(Vrc<Uses>, u64, u64)> {
+        self.state.lock().secondaries.clone()
+    }
+
+    /// Records whether the buffer was allocated as a secondary.
+    pub(crate) fn set_secondary(&self, secondary: bool) {
+        self.state.lock().secondary = secondary;
+    }
+
+    /// Marks the buffer executable or not (a frame ring's buffer needs a new
+    /// recording for each submission).
+    pub(crate) fn set_executable(&self, executable: bool) {
+        self.state.lock().executable = executable;
+    }
+
+    /// Whether a submission that uses the buffer may still be executing.
+    pub(crate) fn is_pending(&self, device: &Device) -> bool {
+        let subs: Vec<Vrc<Submission>> = {
+            let mut state = self.state.lock();
+            state
+                .subs
+                .retain(|w| w.upgrade().is_some_and(|s| !s.is_complete()));
+            state.subs.iter().filter_map(Vweak::upgrade).collect()
+        };
+        // Polled outside this lock: a signalled fence retires submissions.
+        subs.iter().any(|s| !s.poll(device))
+    }
+
+    /// Whether the buffer was recorded without SIMULTANEOUS_USE and a submission that
+    /// uses it may still be executing.
+    pub(crate) fn is_pending_exclusive(&self, device: &Device) -> bool {
+        !self.state.lock().simultaneous && self.is_pending(device)
+    }
+
+    /// Whether the buffer was begun since allocation (or the last reset), and whether
+    /// it is still recording.
+    pub(crate) fn lifecycle(&self) -> (bool, bool) {
+        let state = self.state.lock();
+        (state.begun, state.recording)
+    }
+
+    /// Whether the buffer was allocated as a secondary.
+    pub(crate) fn is_secondary(&self) -> bool {
+        self.state.lock().secondary
+    }
+
+    /// Whether the buffer has been ended and may be submitted.
+    pub(crate) fn is_executable(&self) -> bool {
+        self.state.lock().executable
+    }
+
+    /// The buffer went back to the initial state (its reset, or its pool's).
+    pub(crate) fn reset(&self) {
+        let old = {
+            let mut state = self.state.lock();
+            state.begun = false;
+            state.recording = false;
+            state.executable = false;
+            state.generation += 1;
+            state.layouts = None;
+            state.sets.clear();
+            state.events.clear();
+            core::mem::take(&mut state.secondaries)
+        };
+        drop(old);
+    }
+
+    /// A recorder of the buffer is alive (`true`) or went (`false`).
+    pub(crate) fn set_recorder(&self, alive: bool) {
+        self.state.lock().recorder = alive;
+    }
+
+    /// Whether a recorder of the buffer is alive.
+    pub(crate) fn has_recorder(&self) -> bool {
+        self.state.lock().recorder
+    }
+
+    /// Recording began with `flags`.
+    pub(crate) fn began(&self, flags: vk::CommandBufferUsageFlags) {
+        let old = {
+            let mut state = self.state.lock();
+            state.begun = true;
+            state.recording = true;
+            state.executable = false;
+            state.generation += 1;
+            state.simultaneous = flags.contains(vk::CommandBufferUsageFlags::SIMULTANEOUS_USE);
+            state.one_time = flags.contains(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+            state.layouts = None;
+            core::mem::take(&mut state.secondaries)
+        };
+        drop(old);
+    }
+
+    /// Recording ended; the buffer is executable unless a check failed while it was
+    /// recorded.
+    pub(crate) fn ended(&self, executable: bool) {
+        let mut state = self.state.lock();
+        state.recording = false;
+        state.executable = executable;
+    }
+
+    /// The image layouts of the recording that just ended.
+    pub(crate) fn set_layouts(&self, layouts: crate::state::layouts::Recording) {
+        let layouts = (!layouts.is_empty()).then(|| Vrc::new(layouts));
+        self.state.lock().layouts = layouts;
+    }
+
+    /// The image layouts the last recording needs at its start and leaves.
+    pub(crate) fn layouts(&self) -> Option<Vrc<crate::state::layouts::Recording>> {
+        self.state.lock().layouts.clone()
+    }
+
+    /// Records the queue family of the buffer's pool and whether it is protected.
+    pub(crate) fn set_pool(&self, pool: Option<(u32, bool)>) {
+        self.state.lock().pool = pool;
+    }
+
+    /// The queue family of the buffer's pool and whether it is protected, if known.
+    pub(crate) fn pool(&self) -> Option<(u32, bool)> {
+        self.state.lock().pool
+    }
+
+    /// The descriptor sets the recording that just ended bound (raw set, generation).
+    pub(crate) fn set_sets(&self, sets: Vec<(u64, u64)>) {
+        self.state.lock().sets = sets;
+    }
+
+    /// The events the recording that just ended names.
+    pub(crate) fn set_events(&self, events: Vec<u64>) {
+        self.state.lock().events = events;
+    }
+
+    /// Appends the descriptor sets this buffer's recording bound and the events it
+    /// names, and those of the secondaries it executes, to `sets` and `events`.
+    pub(crate) fn used(&self, sets: &mut Vec<(u64, u64)>, events: &mut Vec<u64>) {
+        let secondaries: Vec<Vrc<Uses>> = {
+            let state = self.state.lock();
+            sets.extend_from_slice(&state.sets);
+            events.extend_from_slice(&state.events);
+            state
+                .secondaries
+                .iter()
+                .map(|(s, _, _)| s.clone())
+                .collect()
+        };
+        for s in secondaries {
+            s.used(sets, events);
+        }
+    }
+
+    /// The current recording executes `secondary`.
+    pub(crate) fn executes(&self, secondary: &Vrc<Uses>) {
+        let (generation, links) = {
+            let mut s = secondary.state.lock();
+            s.links += 1;
+            (s.generation, s.links)
+        };
+        self.state
+            .lock()
+            .secondaries
+            .push((secondary.clone(), generation, links));
+    }
+
+    /// `sub` uses this buffer and the secondaries its recording executes.
+    pub(crate) fn mark(&self, sub: &Vrc<Submission>) {
+        let secondaries: Vec<Vrc<Uses>> = {
+            let mut state = self.state.lock();
+            state.subs.push(Vrc::downgrade(sub));
+            if state.one_time {
+                // A one-time buffer goes to the invalid state once submitted.
+                state.executable = false;
+            }
+            state
+                .secondaries
+                .iter()
+                .map(|(s, _, _)| s.clone())
+                .collect()
+        };
+        for s in secondaries {
+            s.mark(sub);
+        }
+    }
+}
