@@ -382,29 +382,18 @@ pub(crate) const BIND_SPARSE_TIMELINE: TimelineRules = TimelineRules {
 /// Refuses a batch whose timeline semaphores have no value, or fewer values than
 /// semaphores: the driver reads one value per semaphore from the chained
 /// `VkTimelineSemaphoreSubmitInfo`.
-///
-/// # Safety
-///
-/// `next` is a chain built by `push_next` on a safe struct.
-pub(crate) unsafe fn check_timeline_batch(
+pub(crate) fn check_timeline_batch(
     live: &crate::state::Live,
-    waits: &[vk::Semaphore],
-    signals: &[vk::Semaphore],
-    next: *const core::ffi::c_void,
+    batch: &impl ArrayBatch,
     rules: &TimelineRules,
 ) -> Result<()> {
+    let (waits, signals) = batch.semaphores();
     let wait_timeline = waits.iter().any(|s| live.is_timeline(*s));
     let signal_timeline = signals.iter().any(|s| live.is_timeline(*s));
     if !wait_timeline && !signal_timeline {
         return Ok(());
     }
-    // SAFETY: the caller vouches for the chain; the sType says what the node is.
-    let info = unsafe { crate::support::chain_nodes(next) }
-        .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
-        .map(|n| unsafe {
-            &*(n as *const vk::BaseInStructure<'_>).cast::<vk::TimelineSemaphoreSubmitInfo<'_>>()
-        });
-    let Some(info) = info else {
+    let Some(info) = batch.timeline_info() else {
         return Err(Error::Validation {
             vuid: rules.missing,
             message: "a batch names a timeline semaphore but chains no TimelineSemaphoreSubmitInfo"
@@ -869,29 +858,21 @@ impl Batches {
     }
 
     /// Appends a batch that names its semaphores in arrays and their timeline values
-    /// in a chained `VkTimelineSemaphoreSubmitInfo` (`VkSubmitInfo`,
-    /// `VkBindSparseInfo`); `whole` says whether a signal tells that the whole batch
-    /// is done.
-    ///
-    /// # Safety
-    ///
-    /// `next` is a chain built by `push_next` on a safe struct.
-    unsafe fn push_arrays(
+    /// in a chained `VkTimelineSemaphoreSubmitInfo`; `whole` says whether a signal
+    /// tells that the whole batch is done.
+    fn push_arrays(
         &mut self,
         live: &crate::state::Live,
-        (waits, signals): (&[vk::Semaphore], &[vk::Semaphore]),
-        next: *const core::ffi::c_void,
+        batch: &impl ArrayBatch,
         command_buffers: &[vk::CommandBuffer],
         whole: bool,
     ) {
-        // SAFETY: the caller vouches for the chain; the sType says what the node is,
-        // and the safe struct stores each array with its length.
-        let (wait_values, signal_values) = unsafe {
-            crate::support::chain_nodes(next)
-                .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
-                .map(|n| {
-                    let info = &*(n as *const vk::BaseInStructure<'_>)
-                        .cast::<vk::TimelineSemaphoreSubmitInfo<'_>>();
+        let (waits, signals) = batch.semaphores();
+        // SAFETY: a safe struct's arrays, each stored with its length.
+        let (wait_values, signal_values) =
+            batch
+                .timeline_info()
+                .map_or((&[][..], &[][..]), |info| unsafe {
                     (
                         crate::state::raw_slice(
                             info.p_wait_semaphore_values,
@@ -902,9 +883,7 @@ impl Batches {
                             info.signal_semaphore_value_count,
                         ),
                     )
-                })
-                .unwrap_or((&[], &[]))
-        };
+                });
         let named =
             |values: &[u64], j: usize, s: &vk::Semaphore| (*s, values.get(j).copied(), whole);
         self.push(
@@ -922,6 +901,48 @@ impl Batches {
     }
 }
 
+/// A batch that names its semaphores in arrays and their timeline values in a
+/// chained `VkTimelineSemaphoreSubmitInfo`: `VkSubmitInfo` and `VkBindSparseInfo`.
+pub(crate) trait ArrayBatch {
+    /// Its wait and its signal semaphores.
+    fn semaphores(&self) -> (&[vk::Semaphore], &[vk::Semaphore]);
+    /// Its chained `VkTimelineSemaphoreSubmitInfo`, if any.
+    fn timeline_info(&self) -> Option<&vk::TimelineSemaphoreSubmitInfo<'_>>;
+}
+
+/// [`ArrayBatch`] for structs whose fields share the names of `VkSubmitInfo`'s.
+macro_rules! array_batch {
+    ($($ty:ty),*) => {$(
+        impl ArrayBatch for $ty {
+            fn semaphores(&self) -> (&[vk::Semaphore], &[vk::Semaphore]) {
+                // SAFETY: the safe struct stores each array with its length.
+                unsafe {
+                    (
+                        crate::state::raw_slice(self.p_wait_semaphores, self.wait_semaphore_count),
+                        crate::state::raw_slice(self.p_signal_semaphores, self.signal_semaphore_count),
+                    )
+                }
+            }
+
+            fn timeline_info(&self) -> Option<&vk::TimelineSemaphoreSubmitInfo<'_>> {
+                // SAFETY: the safe struct chains only structs pushed through
+                // `push_next`; the sType says what the node is.
+                unsafe { crate::support::chain_nodes(self.p_next) }
+                    .find(|n| n.s_type == vk::StructureType::TIMELINE_SEMAPHORE_SUBMIT_INFO)
+                    .map(|n| unsafe {
+                        &*(n as *const vk::BaseInStructure<'_>)
+                            .cast::<vk::TimelineSemaphoreSubmitInfo<'_>>()
+                    })
+            }
+        }
+    )*};
+}
+
+array_batch!(
+    crate::structs::SubmitInfo<'_>,
+    crate::structs::BindSparseInfo<'_>
+);
+
 /// A batch of a submission command: `VkSubmitInfo`, `VkSubmitInfo2` and
 /// `VkBindSparseInfo` each read into [`Batches`], and each say what the submission
 /// keeps alive.
@@ -934,20 +955,10 @@ pub(crate) trait Batch {
 
 impl Batch for crate::structs::SubmitInfo<'_> {
     fn read(&self, live: &crate::state::Live, all: &mut Batches) {
-        // SAFETY: the safe struct stores each array with its length and chains only
-        // structs pushed through `push_next`.
-        unsafe {
-            all.push_arrays(
-                live,
-                (
-                    crate::state::raw_slice(self.p_wait_semaphores, self.wait_semaphore_count),
-                    crate::state::raw_slice(self.p_signal_semaphores, self.signal_semaphore_count),
-                ),
-                self.p_next,
-                crate::state::raw_slice(self.p_command_buffers, self.command_buffer_count),
-                true,
-            )
-        }
+        // SAFETY: the safe struct stores the array with its length.
+        let command_buffers =
+            unsafe { crate::state::raw_slice(self.p_command_buffers, self.command_buffer_count) };
+        all.push_arrays(live, self, command_buffers, true);
     }
 
     fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {
@@ -958,20 +969,8 @@ impl Batch for crate::structs::SubmitInfo<'_> {
 
 impl Batch for crate::structs::BindSparseInfo<'_> {
     fn read(&self, live: &crate::state::Live, all: &mut Batches) {
-        // SAFETY: as for `VkSubmitInfo`.
-        unsafe {
-            all.push_arrays(
-                live,
-                (
-                    crate::state::raw_slice(self.p_wait_semaphores, self.wait_semaphore_count),
-                    crate::state::raw_slice(self.p_signal_semaphores, self.signal_semaphore_count),
-                ),
-                self.p_next,
-                &[],
-                // A timeline signal tells nothing of sparse binds yet.
-                false,
-            )
-        }
+        // A timeline signal tells nothing of sparse binds yet.
+        all.push_arrays(live, self, &[], false);
     }
 
     fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {

@@ -10,33 +10,6 @@ use crate::submission::{self, Batch, Batches, SubmitRules};
 use crate::{Handle, Result};
 use ash::vk;
 
-/// Refuses timeline semaphores of a batch without one value each.
-///
-/// # Safety
-///
-/// The arrays and chain come from a safe struct: each array stored with its length,
-/// and only structs pushed through `push_next` chained.
-unsafe fn check_batch(
-    queue: &Queue,
-    waits: *const vk::Semaphore,
-    wait_count: u32,
-    signals: *const vk::Semaphore,
-    signal_count: u32,
-    next: *const core::ffi::c_void,
-    rules: &submission::TimelineRules,
-) -> Result<()> {
-    // SAFETY: the caller's promise, passed on.
-    unsafe {
-        submission::check_timeline_batch(
-            queue.parent().live(),
-            crate::state::raw_slice(waits, wait_count),
-            crate::state::raw_slice(signals, signal_count),
-            next,
-            rules,
-        )
-    }
-}
-
 /// The checks of `vkQueueSubmit` that memory safety needs: the fence, the command
 /// buffers' states and the batches' timeline values.
 pub(crate) fn queue_submit_checks(
@@ -53,18 +26,7 @@ pub(crate) fn queue_submit_checks(
         check_pools(queue, i, b)?;
     }
     for b in submits {
-        // SAFETY: `b` is a safe struct.
-        unsafe {
-            check_batch(
-                queue,
-                b.p_wait_semaphores,
-                b.wait_semaphore_count,
-                b.p_signal_semaphores,
-                b.signal_semaphore_count,
-                b.p_next,
-                &submission::SUBMIT_TIMELINE,
-            )
-        }?;
+        submission::check_timeline_batch(queue.parent().live(), b, &submission::SUBMIT_TIMELINE)?;
     }
     Ok(())
 }
@@ -230,18 +192,11 @@ pub(crate) fn queue_bind_sparse_checks(
         &submission::BIND_SPARSE_BINARY,
     )?;
     for b in bind_info {
-        // SAFETY: `b` is a safe struct.
-        unsafe {
-            check_batch(
-                queue,
-                b.p_wait_semaphores,
-                b.wait_semaphore_count,
-                b.p_signal_semaphores,
-                b.signal_semaphore_count,
-                b.p_next,
-                &submission::BIND_SPARSE_TIMELINE,
-            )
-        }?;
+        submission::check_timeline_batch(
+            queue.parent().live(),
+            b,
+            &submission::BIND_SPARSE_TIMELINE,
+        )?;
     }
     Ok(())
 }

@@ -215,12 +215,22 @@ struct Described {
     stencil_chained: bool,
 }
 
+/// Reads an attachment description of either version (their fields share names),
+/// with its stencil aspect's layouts where a struct gives them apart.
+macro_rules! described {
+    ($a:expr, $stencil:expr) => {
+        Described::of(
+            ($a.load_op, $a.stencil_load_op),
+            $a.flags,
+            ($a.initial_layout, $a.final_layout),
+            $stencil,
+        )
+    };
+}
+
 impl Described {
-    /// From a description's load ops, flags, layouts, and its stencil aspect's
-    /// layouts where a struct gives them apart.
     fn of(
-        load: vk::AttachmentLoadOp,
-        stencil_load: vk::AttachmentLoadOp,
+        (load, stencil_load): (vk::AttachmentLoadOp, vk::AttachmentLoadOp),
         flags: vk::AttachmentDescriptionFlags,
         (initial, last): (vk::ImageLayout, vk::ImageLayout),
         stencil: Option<(vk::ImageLayout, vk::ImageLayout)>,
@@ -366,18 +376,7 @@ impl Pass {
         // names.
         unsafe {
             let attachments = crate::state::raw_slice(raw.p_attachments, raw.attachment_count);
-            let described = attachments
-                .iter()
-                .map(|a| {
-                    Described::of(
-                        a.load_op,
-                        a.stencil_load_op,
-                        a.flags,
-                        (a.initial_layout, a.final_layout),
-                        None,
-                    )
-                })
-                .collect();
+            let described = attachments.iter().map(|a| described!(a, None)).collect();
             let plain = |r: &vk::AttachmentReference| Ref {
                 attachment: r.attachment,
                 layout: r.layout,
@@ -453,13 +452,7 @@ impl Pass {
                     );
                     let stencil =
                         stencil.map(|s| (s.stencil_initial_layout, s.stencil_final_layout));
-                    Described::of(
-                        a.load_op,
-                        a.stencil_load_op,
-                        a.flags,
-                        (a.initial_layout, a.final_layout),
-                        stencil,
-                    )
+                    described!(a, stencil)
                 })
                 .collect();
             let plain = |r: &vk::AttachmentReference2<'_>| {
