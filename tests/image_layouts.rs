@@ -1376,14 +1376,16 @@ fn try_begin(s: &Setup, begin: &tuff::RenderPassBeginInfo<'_>, rule: &str) -> Op
 }
 
 /// `vkCmdBeginRenderPass2` refuses a framebuffer and render pass of another device
-/// (the unchecked begin is never submitted).
+/// (the unchecked begin is never submitted). The walk over the begin info refuses
+/// them first, under the member's own rule, before the command's rule
+/// (`VUID-vkCmdBeginRenderPass2-framebuffer-02779`) is asked.
 #[test]
 fn a_render_pass_of_another_device_is_refused() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let other = setup(true);
     let target = other.color_target(8, vk::ImageUsageFlags::empty());
-    let rule = "VUID-vkCmdBeginRenderPass2-framebuffer-02779";
+    let rule = "VUID-VkRenderPassBeginInfo-renderPass-parameter";
     let clear = [vk::ClearValue::default()];
     let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
         .render_area(AREA)
@@ -1410,13 +1412,14 @@ fn a_render_pass_of_another_device_is_refused() {
     };
     s.messages.abort_on_error(false);
     drop(rec);
-    // The 1.3.239 layer names only the begin info's commonparent rule, which the
-    // same objects break: tuff's error alone proves this one.
+    // The 1.3.239 layer names the begin info's commonparent rule or the command's,
+    // which the same objects break.
     let messages = s.messages.take();
     assert!(
         !messages.is_empty()
             && messages.iter().all(|m| m.contains(rule)
                     || m.contains("VUID-VkRenderPassBeginInfo-commonparent")
+                    || m.contains("VUID-vkCmdBeginRenderPass2-framebuffer-02779")
                     // The end of the instance whose begin the layer skipped.
                     || m.contains("VUID-vkCmdEndRenderPass2-renderpass")),
         "the layer said {messages:?}"

@@ -949,8 +949,9 @@ array_batch!(
 pub(crate) trait Batch {
     /// Appends this batch to `all`.
     fn read(&self, live: &crate::state::Live, all: &mut Batches);
-    /// Appends what this batch names to `kept`, held until the submission completes.
-    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>);
+    /// Walks what this batch names: to keep it until the submission completes, or
+    /// to check it belongs to the queue's device.
+    fn walk(&self, out: &mut crate::validation::Reached<'_>);
 }
 
 impl Batch for crate::structs::SubmitInfo<'_> {
@@ -961,9 +962,9 @@ impl Batch for crate::structs::SubmitInfo<'_> {
         all.push_arrays(live, self, command_buffers, true);
     }
 
-    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {
+    fn walk(&self, out: &mut crate::validation::Reached<'_>) {
         // SAFETY: the safe struct stores every array with its length.
-        unsafe { crate::reach::submit_info(self.as_raw(), live, kept) }
+        unsafe { crate::reach::submit_info(self.as_raw(), out) }
     }
 }
 
@@ -973,9 +974,9 @@ impl Batch for crate::structs::BindSparseInfo<'_> {
         all.push_arrays(live, self, &[], false);
     }
 
-    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {
+    fn walk(&self, out: &mut crate::validation::Reached<'_>) {
         // SAFETY: the safe struct stores every array with its length.
-        unsafe { crate::reach::bind_sparse_info(self.as_raw(), live, kept) }
+        unsafe { crate::reach::bind_sparse_info(self.as_raw(), out) }
     }
 }
 
@@ -1013,8 +1014,8 @@ impl Batch for crate::structs::SubmitInfo2<'_> {
         );
     }
 
-    fn keep(&self, live: &crate::state::Live, kept: &mut Vec<Retained>) {
+    fn walk(&self, out: &mut crate::validation::Reached<'_>) {
         // SAFETY: the safe struct stores every array with its length.
-        unsafe { crate::reach::submit_info2(self.as_raw(), live, kept) }
+        unsafe { crate::reach::submit_info2(self.as_raw(), out) }
     }
 }

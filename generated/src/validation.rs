@@ -40,7 +40,122 @@ impl Objects {
     }
 
     pub(crate) fn contains<H: vk::Handle>(&self, raw: H) -> bool {
-        self.0.lock().contains_key(&(H::TYPE, raw.as_raw()))
+        self.contains_raw(H::TYPE, raw.as_raw())
+    }
+
+    pub(crate) fn contains_raw(&self, ty: vk::ObjectType, raw: u64) -> bool {
+        self.0.lock().contains_key(&(ty, raw))
+    }
+}
+
+/// What a walk over a struct (`crate::reach`) found, by what the walk is for: the
+/// live objects it names, for the wrapper or recording that must keep them
+/// ([`Reached::keeping`]); or the first handle it names that is no object of the
+/// call's device or instance, with the rule that handle breaks
+/// ([`Reached::checking`]). A driver reached through a handle of another device
+/// reads that device's memory as its own, so every handle a struct carries is
+/// checked before any other check or driver call sees it.
+pub(crate) struct Reached<'a> {
+    keep: Option<&'a crate::state::Live>,
+    scope: Option<&'a Scope<'a>>,
+    /// The live objects found, when keeping.
+    pub(crate) kept: Vec<tuff_runtime::Retained>,
+    foreign: Option<(&'static str, vk::ObjectType, u64)>,
+}
+
+impl<'a> Reached<'a> {
+    /// A walk that collects the live objects of `live` it finds.
+    pub(crate) fn keeping(live: &'a crate::state::Live) -> Reached<'a> {
+        Reached {
+            keep: Some(live),
+            scope: None,
+            kept: Vec::new(),
+            foreign: None,
+        }
+    }
+
+    /// A walk that checks every handle it finds against the objects of `scope`.
+    pub(crate) fn checking(scope: &'a Scope<'a>) -> Reached<'a> {
+        Reached {
+            keep: None,
+            scope: Some(scope),
+            kept: Vec::new(),
+            foreign: None,
+        }
+    }
+
+    /// A handle of a type whose objects come from a device; `rule` is the one it
+    /// breaks if it is not the call's device's (`""`: not checked, only kept).
+    #[inline]
+    pub(crate) fn device_handle<H: vk::Handle>(&mut self, rule: &'static str, h: H) {
+        self.raw(rule, H::TYPE, h.as_raw(), true);
+    }
+
+    /// A handle of a type whose objects come from an instance (a surface, a display).
+    #[inline]
+    pub(crate) fn instance_handle<H: vk::Handle>(&mut self, rule: &'static str, h: H) {
+        self.raw(rule, H::TYPE, h.as_raw(), false);
+    }
+
+    /// Each handle of a slice of device objects.
+    #[inline]
+    pub(crate) fn device_handles<H: vk::Handle + Copy>(&mut self, rule: &'static str, hs: &[H]) {
+        for h in hs {
+            self.raw(rule, H::TYPE, h.as_raw(), true);
+        }
+    }
+
+    /// Each handle of a slice of instance objects.
+    #[inline]
+    pub(crate) fn instance_handles<H: vk::Handle + Copy>(&mut self, rule: &'static str, hs: &[H]) {
+        for h in hs {
+            self.raw(rule, H::TYPE, h.as_raw(), false);
+        }
+    }
+
+    fn raw(&mut self, rule: &'static str, ty: vk::ObjectType, raw: u64, of_device: bool) {
+        // A null handle names nothing; where it is not allowed, the member's own
+        // rule refuses it.
+        if raw == 0 {
+            return;
+        }
+        if let Some(live) = self.keep {
+            self.kept.extend(live.get_raw(ty, raw));
+        }
+        // A member the walk does not check comes with no rule.
+        if let Some(s) = self.scope.filter(|_| !rule.is_empty()) {
+            let device = s.device.is_some_and(|d| d.objects().contains_raw(ty, raw));
+            let instance = !of_device
+                && s.instance
+                    .is_some_and(|i| i.objects().contains_raw(ty, raw));
+            if !device && !instance && self.foreign.is_none() {
+                self.foreign = Some((rule, ty, raw));
+            }
+        }
+    }
+
+    /// Stops checking (what the walk finds is still kept) until
+    /// [`Reached::resume_checks`] is given what this returns.
+    #[inline]
+    pub(crate) fn pause_checks(&mut self) -> Option<&'a Scope<'a>> {
+        self.scope.take()
+    }
+
+    /// Checks again as before [`Reached::pause_checks`].
+    #[inline]
+    pub(crate) fn resume_checks(&mut self, scope: Option<&'a Scope<'a>>) {
+        self.scope = scope;
+    }
+
+    /// Refuses a walk that found a handle of another device or instance.
+    pub(crate) fn owned(&self) -> crate::Result<()> {
+        match self.foreign {
+            None => Ok(()),
+            Some((rule, ty, raw)) => crate::support::refuse(
+                rule,
+                format!("a struct names {ty:?} {raw:#x}, which is not an object of the device (or instance) the command is called on"),
+            ),
+        }
     }
 }
 

@@ -221,10 +221,11 @@ fn submit_checks(
 fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>) {
     let device = queue.parent();
     let live = device.live();
-    let mut kept = Vec::new();
+    let mut reached = crate::validation::Reached::keeping(live);
     for b in batches {
-        b.keep(live, &mut kept);
+        b.walk(&mut reached);
     }
+    let kept = reached.kept;
     let b = Batches::of(live, batches);
     let sub = submission::submitted(
         device,

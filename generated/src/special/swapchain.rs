@@ -267,10 +267,10 @@ fn check_presented_images(device: &Device, present_info: &PresentInfoKHR<'_>) ->
 #[cfg(feature = "khr_swapchain")]
 pub(crate) fn queue_present_khr_before(queue: &Queue, present_info: &PresentInfoKHR<'_>) {
     let device = queue.parent();
-    let mut kept = Vec::new();
+    let mut reached = crate::validation::Reached::keeping(device.live());
     // SAFETY: the safe struct stores every array with its length.
-    unsafe { crate::reach::present_info_khr(present_info.as_raw(), device.live(), &mut kept) };
-    let sub = submission::submitted(device, queue.raw(), None, &[], kept, Vec::new());
+    unsafe { crate::reach::present_info_khr(present_info.as_raw(), &mut reached) };
+    let sub = submission::submitted(device, queue.raw(), None, &[], reached.kept, Vec::new());
     // SAFETY: the safe struct stores the array with its length.
     let waits = unsafe {
         crate::state::raw_slice(

@@ -472,19 +472,18 @@ impl Live {
 
     /// A strong reference to the live object with this raw handle, if it has a wrapper.
     pub(crate) fn get<H: vk::Handle>(&self, raw: H) -> Option<Retained> {
-        let raw = raw.as_raw();
+        self.get_raw(H::TYPE, raw.as_raw())
+    }
+
+    /// [`Live::get`] by object type and raw handle.
+    pub(crate) fn get_raw(&self, ty: vk::ObjectType, raw: u64) -> Option<Retained> {
         if raw == 0 {
             return None;
         }
         self.objects
             .lock()
-            .get(&(H::TYPE, raw))
+            .get(&(ty, raw))
             .and_then(|(w, _)| w.upgrade())
-    }
-
-    /// The live objects among `raws`, for a wrapper to keep.
-    pub(crate) fn keep<H: vk::Handle + Copy>(&self, raws: &[H]) -> Vec<Retained> {
-        raws.iter().filter_map(|r| self.get(*r)).collect()
     }
 }
 

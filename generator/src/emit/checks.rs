@@ -630,6 +630,37 @@ pub fn render(check: &Check) -> TokenStream {
             ));
             quote!(if self.command_buffer().level() != #want { #fail })
         }
+        CheckKind::Reaches { ty, at } => {
+            let walk = crate::emit::reach::walk_fn(ty);
+            let visit = |e: TokenStream| {
+                quote! {
+                    __safety!("a safe struct, whose setters store every pointer with its length, as the walk requires.");
+                    unsafe { #walk(#e.as_raw(), &mut reached) };
+                }
+            };
+            let walks = match at {
+                StructAt::Arg(a) => {
+                    let a = ident(a);
+                    visit(quote!(#a))
+                }
+                StructAt::OptionalArg(a) => {
+                    let (a, v) = (ident(a), visit(quote!(x)));
+                    quote!(if let Some(x) = #a { #v })
+                }
+                StructAt::ArgSlice(a) => {
+                    let (a, v) = (ident(a), visit(quote!(x)));
+                    quote!(for x in #a.iter() { #v })
+                }
+                _ => quote!(),
+            };
+            quote! {
+                {
+                    let mut reached = crate::validation::Reached::checking(s);
+                    #walks
+                    reached.owned()?;
+                }
+            }
+        }
         CheckKind::NestedStruct { ty, at } => {
             let call = ident(&format!("check_{}", snake(ty)));
             match at {

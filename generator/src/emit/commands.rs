@@ -11,7 +11,7 @@ use crate::model::CommandDef;
 use crate::model::Kind;
 use crate::model::LenEntry;
 use crate::names::{field_ident, ident, level, param, table, type_ident, Level, Table};
-use crate::plan::checks::Checker;
+use crate::plan::checks::{Check, Checker};
 use crate::plan::commands::{
     parent_of, parent_param, recorded, DisplayKind, Param, Plan, RecorderState, Transition,
 };
@@ -1079,20 +1079,17 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 false => (*n).clone(),
             })
             .collect();
-        let codes = checks.iter().map(super::checks::render);
         let scope = scope_expr(cx, plan, &device_path);
+        // Where handles come from is asked before the special case's check, which
+        // may read records or ask the driver about them; the other checks run after.
+        let (first, rest): (Vec<&Check>, Vec<&Check>) = match always {
+            Some(_) => checks.iter().partition(|c| c.is_ownership()),
+            None => (Vec::new(), checks.iter().collect()),
+        };
+        let checks = rest;
         // A transition's special check joins its other checks' result, which the
         // recorder keeps.
         let moves = plan.transition.is_some();
-        let always_code = always.map(|c| {
-            let c = special_call(&c, &ret_expr);
-            if moves {
-                quote!(let always: Result<()> = #c;)
-            } else {
-                quote!(#c?;)
-            }
-        });
-        let always_code = quote!(#(#same_len)* #always_code);
         let last_code = last.map(|c| {
             let c = special_call(&c, &ret_expr);
             quote!(#c?;)
@@ -1109,8 +1106,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             .iter()
             .map(|s| same_len_vuid(plan, s))
             .collect();
-        let owned: Vec<String> = checks
+        let owned: Vec<String> = first
             .iter()
+            .chain(&checks)
             .filter_map(|c| c.vuid.as_deref())
             .chain(always_vuids.iter().map(|(v, _)| *v))
             .chain(same_len_vuids.iter().map(String::as_str))
@@ -1131,67 +1129,90 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             } else {
                 " So does every rule the `# Safety` section of the checked method lists."
             };
-        // The scope is bound only when a check reads it.
-        let uses_scope = checks.iter().any(crate::plan::checks::Check::uses_scope);
-        let bind_scope = uses_scope.then(|| quote!(let s = &#scope;));
-        // The checks are a named method beside the command's, taking only the
-        // arguments they read.
-        let validate = ident(&format!("validate_{}", f));
-        let read: Vec<&Arg> = inner_args
-            .iter()
-            .filter(|a| {
-                checks
-                    .iter()
-                    .any(|c| c.reads().contains(&a.name.to_string()))
-            })
-            .collect();
-        // The checks compare Vulkan's values: a `bool` argument reaches them as the
-        // `VkBool32` the command passes on.
+        // The checks are named methods beside the command's, each taking only the
+        // arguments its checks read: where handles come from, when the special
+        // case's check runs between, and the rest.
         let is_bool = |n: &Ident| bools.contains(&n.to_string());
-        let v_args: Vec<TokenStream> = read
-            .iter()
-            .map(|a| match is_bool(&a.name) {
+        let validator_of = |name: &Ident, checks: &[&Check], doc: &str| {
+            // The scope is bound only when a check reads it.
+            let bind_scope = checks
+                .iter()
+                .any(|c| c.uses_scope())
+                .then(|| quote!(let s = &#scope;));
+            let read: Vec<&Arg> = inner_args
+                .iter()
+                .filter(|a| {
+                    checks
+                        .iter()
+                        .any(|c| c.reads().contains(&a.name.to_string()))
+                })
+                .collect();
+            // The checks compare Vulkan's values: a `bool` argument reaches them as
+            // the `VkBool32` the command passes on.
+            let v_args = read.iter().map(|a| match is_bool(&a.name) {
                 true => Arg::new(&a.name, quote!(vk::Bool32)).into_token_stream(),
                 false => a.into_token_stream(),
-            })
-            .collect();
-        let v_names: Vec<TokenStream> = read
-            .iter()
-            .map(|a| {
-                let n = &a.name;
-                match is_bool(n) {
-                    true => quote!(vk::Bool32::from(#n)),
-                    false => quote!(#n),
-                }
-            })
-            .collect();
-        // The checks see handle arrays as slices, so only `'a` can be theirs.
-        let v_lt = if read.iter().any(|a| names_a(&a.ty)) {
-            quote!(<'a>)
-        } else {
-            quote!()
-        };
-        let v_doc = format!(
-            "The dynamic checks of [`Self::{}`], run before the call.",
-            f
-        );
-        validator = (!checks.is_empty()).then(|| {
-            quote! {
-                #[doc = #v_doc]
-                pub(crate) fn #validate #v_lt(&self, #(#v_args),*) -> Result<()> {
+            });
+            let v_names: Vec<TokenStream> = read
+                .iter()
+                .map(|a| {
+                    let n = &a.name;
+                    match is_bool(n) {
+                        true => quote!(vk::Bool32::from(#n)),
+                        false => quote!(#n),
+                    }
+                })
+                .collect();
+            // The checks see handle arrays as slices, so only `'a` can be theirs.
+            let v_lt = read.iter().any(|a| names_a(&a.ty)).then(|| quote!(<'a>));
+            let codes = checks.iter().copied().map(super::checks::render);
+            let method = quote! {
+                #[doc = #doc]
+                pub(crate) fn #name #v_lt(&self, #(#v_args),*) -> Result<()> {
                     #bind_scope
                     #(#codes)*
                     Ok(())
                 }
+            };
+            (method, quote!(self.#name(#(#v_names),*)))
+        };
+        let validate = ident(&format!("validate_{}", f));
+        let v_doc = format!(
+            "The dynamic checks of [`Self::{}`], run before the call.",
+            f
+        );
+        let (rest_method, rest_call) = validator_of(&validate, &checks, &v_doc);
+        let origins = (!first.is_empty()).then(|| {
+            let name = ident(&format!("validate_origins_{}", f));
+            let doc = format!(
+                "Where the handles [`Self::{}`] names come from, checked before its special case's check.",
+                f
+            );
+            validator_of(&name, &first, &doc)
+        });
+        validator = match (&origins, checks.is_empty()) {
+            (Some((o, _)), true) => Some(o.clone()),
+            (Some((o, _)), false) => Some(quote!(#o #rest_method)),
+            (None, false) => Some(rest_method),
+            (None, true) => None,
+        };
+        let always_code = always.map(|c| {
+            let c = special_call(&c, &ret_expr);
+            match (moves, origins.as_ref().map(|(_, call)| call)) {
+                (true, Some(o)) => quote!(let always: Result<()> = #o.and_then(|()| #c);),
+                (true, None) => quote!(let always: Result<()> = #c;),
+                (false, Some(o)) => quote!(#o?; #c?;),
+                (false, None) => quote!(#c?;),
             }
         });
+        let always_code = quote!(#(#same_len)* #always_code);
         let run = if moves && always.is_some() {
             quote! {
-                let r = always.and_then(|()| self.#validate(#(#v_names),*));
+                let r = always.and_then(|()| #rest_call);
             }
         } else {
             quote! {
-                let r = self.#validate(#(#v_names),*);
+                let r = #rest_call;
             }
         };
         let (ret_checked, guard, call) = match (&transition, is_cmd) {

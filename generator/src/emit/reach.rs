@@ -42,53 +42,63 @@ pub fn emit(cx: &Context) -> TokenStream {
             let field = field_ident(&m.name);
             let inner = || walk_fn(&m.type_name);
             match shape {
-                Member::Handle { .. } => parts.push(quote!(out.extend(live.get(x.#field));)),
+                Member::Handle { .. } => {
+                    let (visit, rule) = visit(cx, name, &m, false);
+                    parts.push(quote!(out.#visit(#rule, x.#field);));
+                }
                 Member::HandleSlice { count } => {
+                    let (visit, rule) = visit(cx, name, &m, true);
                     let c = field_ident(&count);
                     parts.push(quote! {
                         __safety!("the safe setter stored this array with its length.");
-                        out.extend(live.keep(unsafe { crate::state::raw_slice(x.#field, x.#c) }));
+                        let handles = unsafe { crate::state::raw_slice(x.#field, x.#c) };
+                        out.#visit(#rule, handles);
                     });
                 }
                 Member::StructRef { .. } if found.contains(&m.type_name) => {
                     let g = inner();
-                    parts.push(quote! {
-                        __safety!("the safe setter stored a reference that outlives `x`.");
-                        if let Some(y) = unsafe { x.#field.as_ref() } {
-                            __safety!("`y` is a live safe struct, as the walk requires.");
-                            unsafe { #g(y, live, out) };
-                        }
-                    });
+                    parts.push(unchecked_if(
+                        m.noautovalidity,
+                        quote! {
+                            __safety!("the safe setter stored a reference that outlives `x`.");
+                            if let Some(y) = unsafe { x.#field.as_ref() } {
+                                __safety!("`y` is a live safe struct, as the walk requires.");
+                                unsafe { #g(y, out) };
+                            }
+                        },
+                    ));
                 }
                 Member::Slice { count, safe: true } if found.contains(&m.type_name) => {
                     let c = field_ident(&count);
                     let g = inner();
-                    parts.push(quote! {
-                        __safety!("the safe setter stored this array with its length.");
-                        for y in unsafe { crate::state::raw_slice(x.#field, x.#c) } {
-                            __safety!("`y` is a live safe struct, as the walk requires.");
-                            unsafe { #g(y, live, out) };
-                        }
-                    });
+                    parts.push(unchecked_if(
+                        m.noautovalidity,
+                        quote! {
+                            __safety!("the safe setter stored this array with its length.");
+                            for y in unsafe { crate::state::raw_slice(x.#field, x.#c) } {
+                                __safety!("`y` is a live safe struct, as the walk requires.");
+                                unsafe { #g(y, out) };
+                            }
+                        },
+                    ));
                 }
                 Member::Nested if found.contains(&m.type_name) => {
                     let g = inner();
-                    parts.push(quote! {
+                    parts.push(unchecked_if(m.noautovalidity, quote! {
                         __safety!("a nested struct of a live struct, with the same guarantees.");
-                        unsafe { #g(&x.#field, live, out) };
-                    });
+                        unsafe { #g(&x.#field, out) };
+                    }));
                 }
                 Member::PNext if extenders(cx, name).any(|e| found.contains(e)) => {
                     parts.push(quote! {
                         __safety!("the chain was built by `push_next` from live safe structs.");
-                        unsafe { next(x.p_next, live, out) };
+                        unsafe { next(x.p_next, out) };
                     });
                 }
                 _ => {}
             }
         }
-        let doc =
-            format!("The live objects a `{name}` names, directly or through what it points to.");
+        let doc = format!("The handles a `{name}` names, directly or through what it points to.");
         fns.push(quote! {
             #[doc = #doc]
             ///
@@ -98,7 +108,7 @@ pub fn emit(cx: &Context) -> TokenStream {
             /// pointer with its length and borrow what it points to.
             #cfg
             #[inline]
-            pub(crate) unsafe fn #f(x: &vk::#ty, live: &Live, out: &mut Vec<Retained>) {
+            pub(crate) unsafe fn #f(x: &vk::#ty, out: &mut Reached<'_>) {
                 #(#parts)*
             }
         });
@@ -109,27 +119,27 @@ pub fn emit(cx: &Context) -> TokenStream {
                     #cfg
                     #lit => {
                         __safety!("a node with this structure type is this struct.");
-                        unsafe { #f(&*(node as *const vk::BaseInStructure<'_>).cast::<vk::#ty>(), live, out) }
+                        unsafe { #f(&*(node as *const vk::BaseInStructure<'_>).cast::<vk::#ty>(), out) }
                     }
                 });
             }
         }
     }
     quote! {
-        //! What a struct names: the walks that keep objects alive. Every reaching
-        //! struct has one, whether or not a command of this build uses it yet.
+        //! What a struct names: the walks that check every handle belongs to the call's
+        //! device (or instance) and keep the objects alive. Every reaching struct has
+        //! one, whether or not a command of this build uses it yet.
         #![allow(dead_code, unused_unsafe, clippy::missing_safety_doc)]
-        use crate::state::Live;
+        use crate::validation::Reached;
         use ash::vk;
-        use tuff_runtime::Retained;
 
-        /// The live objects the structs of a `pNext` chain name.
+        /// The handles the structs of a `pNext` chain name.
         ///
         /// # Safety
         ///
         /// `p` is null or a chain that `push_next` built from safe structs.
         #[allow(dead_code)]
-        pub(crate) unsafe fn next(p: *const core::ffi::c_void, live: &Live, out: &mut Vec<Retained>) {
+        pub(crate) unsafe fn next(p: *const core::ffi::c_void, out: &mut Reached<'_>) {
             __safety!("the caller vouches for every node.");
             for node in unsafe { crate::support::chain_nodes(p) } {
                 #[allow(clippy::single_match)]
@@ -142,4 +152,31 @@ pub fn emit(cx: &Context) -> TokenStream {
 
         #(#fns)*
     }
+}
+
+/// A descent into a member Vulkan reads only where other members say so
+/// (`noautovalidity`: a descriptor write's buffer infos): what it finds is kept but
+/// not checked, as the rules of the commands that read it check it where it is used.
+fn unchecked_if(noautovalidity: bool, walk: TokenStream) -> TokenStream {
+    match noautovalidity {
+        true => quote! {
+            let checking = out.pause_checks();
+            #walk
+            out.resume_checks(checking);
+        },
+        false => walk,
+    }
+}
+
+/// The visit of a handle member, one or a slice, as the plan says; a member the
+/// walk does not check is visited under no rule (`""`), to keep it.
+fn visit(cx: &Context, item: &str, m: &crate::model::Field, slice: bool) -> (Ident, String) {
+    let v = crate::plan::reach::handle_visit(cx, item, m);
+    let visit = match (v.of_device, slice) {
+        (true, false) => "device_handle",
+        (true, true) => "device_handles",
+        (false, false) => "instance_handle",
+        (false, true) => "instance_handles",
+    };
+    (ident(visit), v.rule.unwrap_or_default())
 }

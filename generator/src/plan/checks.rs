@@ -225,9 +225,28 @@ pub enum CheckKind {
     },
     /// An explicit rule the recognisers read, over the checked struct's members.
     Explicit(Box<crate::validity::explicit::Recognised>),
+    /// Every handle a struct argument reaches (members, arrays, nested structs,
+    /// `pNext` chains) is an object of the call's device or instance: the walk the
+    /// retention uses, checking (`crate::reach`).
+    Reaches {
+        /// The struct type.
+        ty: String,
+        /// The argument: by reference, optional, or a slice.
+        at: StructAt,
+    },
 }
 
 impl Check {
+    /// Whether the check asks where handles come from: run before every other check
+    /// and special case, so that none of them, and no driver call, sees a handle of
+    /// another device.
+    pub fn is_ownership(&self) -> bool {
+        matches!(
+            self.kind,
+            CheckKind::OwnedBy { .. } | CheckKind::Reaches { .. }
+        )
+    }
+
     /// Enum and flags types whose value checks this check calls.
     pub fn needs(&self) -> Vec<String> {
         match &self.kind {
@@ -297,6 +316,10 @@ impl Check {
                     | StructAt::OptionalArg(a)
                     | StructAt::ArgByValue(a)
                     | StructAt::ArgSlice(a),
+                ..
+            }
+            | CheckKind::Reaches {
+                at: StructAt::Arg(a) | StructAt::OptionalArg(a) | StructAt::ArgSlice(a),
                 ..
             } => vec![a],
             _ => Vec::new(),
@@ -884,6 +907,30 @@ impl<'c, 'm> Checker<'c, 'm> {
                 },
             });
         }
+        // Every handle the struct arguments reach comes from the call's device or
+        // instance.
+        for (i, (p, shape)) in cmd.params.iter().zip(&plan.params).enumerate() {
+            if !self.cx.reaching.contains(&p.type_name) {
+                continue;
+            }
+            let a = rust(i);
+            let at = match shape {
+                Param::StructRef { optional: true } => StructAt::OptionalArg(a),
+                Param::StructRef { optional: false } | Param::InOut => StructAt::Arg(a),
+                Param::Slice => StructAt::ArgSlice(a),
+                _ => continue,
+            };
+            out.push(Check {
+                vuid: None,
+                what: String::new(),
+                kind: CheckKind::Reaches {
+                    ty: p.type_name.clone(),
+                    at,
+                },
+            });
+        }
+        // Where handles come from is asked first.
+        out.sort_by_key(|c| !c.is_ownership());
         out
     }
 

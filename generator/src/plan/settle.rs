@@ -371,9 +371,9 @@ fn stays_empty(f: &crate::model::Field, members: &[(crate::model::Field, Member)
 
 fn member_settlement(shape: &Member) -> Settlement {
     match shape {
-        Member::Handle { .. } | Member::HandleSlice { .. } => {
-            Settlement::Static("set from wrappers, which always hold valid handles".into())
-        }
+        Member::Handle { .. } | Member::HandleSlice { .. } => Settlement::Dynamic(
+            "set from wrappers, which hold live handles; the walk over what a call's structs reach checks each is an object of the call's device or instance before any other check or driver call".into(),
+        ),
         Member::Nested => Settlement::Static(
             "set from the safe counterpart, which the constructor requires".into(),
         ),

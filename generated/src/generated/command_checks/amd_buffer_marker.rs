@@ -12,6 +12,12 @@ impl<'c, S: State> Recorder<'c, S> {
         dst_offset: vk::DeviceSize,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdWriteBufferMarkerAMD-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_pipeline_stage_flag_bits(
             pipeline_stage,
             s,
@@ -24,12 +30,6 @@ impl<'c, S: State> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool",
                 "the command buffer's pool does not support transfer,graphics,compute operations",
-            );
-        }
-        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdWriteBufferMarkerAMD-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s.exts.has(origin::VK_AMD_BUFFER_MARKER)

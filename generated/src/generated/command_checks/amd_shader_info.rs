@@ -12,6 +12,12 @@ impl Device {
         info_type: vk::ShaderInfoTypeAMD,
     ) -> Result<()> {
         let s = &self.scope();
+        if !s.owned_by_device(pipeline.raw()) {
+            return refuse(
+                "VUID-vkGetShaderInfoAMD-pipeline-parent",
+                "`pipeline` does not come from `device`",
+            );
+        }
         crate::checks::enum_shader_stage_flag_bits(
             shader_stage,
             s,
@@ -22,12 +28,6 @@ impl Device {
             s,
             "VUID-vkGetShaderInfoAMD-infoType-parameter",
         )?;
-        if !s.owned_by_device(pipeline.raw()) {
-            return refuse(
-                "VUID-vkGetShaderInfoAMD-pipeline-parent",
-                "`pipeline` does not come from `device`",
-            );
-        }
         Ok(())
     }
 }

@@ -13,4 +13,24 @@ impl Device {
         crate::checks::check_android_hardware_buffer_properties_android(properties, s)?;
         Ok(())
     }
+    ///The dynamic checks of [`Self::get_memory_android_hardware_buffer_android`], run before the call.
+    pub(crate) fn validate_get_memory_android_hardware_buffer_android<'a>(
+        &self,
+        info: &MemoryGetAndroidHardwareBufferInfoANDROID<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::memory_get_android_hardware_buffer_info_android(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
 }

@@ -10,6 +10,18 @@ impl<'c, S: State> Recorder<'c, S> {
         conditional_rendering_begin: &ConditionalRenderingBeginInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::conditional_rendering_begin_info_ext(
+                    conditional_rendering_begin.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,

@@ -12,6 +12,12 @@ impl<'c, S: State> Recorder<'c, S> {
         layout: &PipelineLayout,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_pipeline_bind_point(
             pipeline_bind_point,
             s,
@@ -26,12 +32,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
-        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent",
-                "`layout` does not come from the VkDevice the command is called on",
-            );
-        }
         Ok(())
     }
     ///The dynamic checks of [`Self::bind_descriptor_buffers_ext`], run before the call.
@@ -40,6 +40,20 @@ impl<'c, S: State> Recorder<'c, S> {
         binding_infos: &[DescriptorBufferBindingInfoEXT<'a>],
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in binding_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::descriptor_buffer_binding_info_ext(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -68,6 +82,12 @@ impl<'c, S: State> Recorder<'c, S> {
         buffer_indices: &[u32],
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_pipeline_bind_point(
             pipeline_bind_point,
             s,
@@ -88,12 +108,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`setCount` is 0",
             );
         }
-        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent",
-                "`layout` does not come from the VkDevice the command is called on",
-            );
-        }
         Ok(())
     }
 }
@@ -104,6 +118,28 @@ impl<'c, S: State> Recorder<'c, S> {
     )
 )]
 impl Device {
+    ///Where the handles [`Self::get_acceleration_structure_opaque_capture_descriptor_data_ext`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_acceleration_structure_opaque_capture_descriptor_data_ext<
+        'a,
+    >(
+        &self,
+        info: &AccelerationStructureCaptureDescriptorDataInfoEXT<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acceleration_structure_capture_descriptor_data_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::get_acceleration_structure_opaque_capture_descriptor_data_ext`], run before the call.
     pub(crate) fn validate_get_acceleration_structure_opaque_capture_descriptor_data_ext<
         'a,
@@ -121,6 +157,26 @@ impl Device {
 }
 #[cfg(feature = "ext_descriptor_buffer")]
 impl Device {
+    ///Where the handles [`Self::get_buffer_opaque_capture_descriptor_data_ext`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_buffer_opaque_capture_descriptor_data_ext<'a>(
+        &self,
+        info: &BufferCaptureDescriptorDataInfoEXT<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::buffer_capture_descriptor_data_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::get_descriptor_ext`], run before the call.
     pub(crate) fn validate_get_descriptor_ext<'a>(
         &self,
@@ -162,6 +218,66 @@ impl Device {
                 "VUID-vkGetDescriptorSetLayoutSizeEXT-layout-parent",
                 "`layout` does not come from `device`",
             );
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::get_image_opaque_capture_descriptor_data_ext`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_image_opaque_capture_descriptor_data_ext<'a>(
+        &self,
+        info: &ImageCaptureDescriptorDataInfoEXT<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_capture_descriptor_data_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::get_image_view_opaque_capture_descriptor_data_ext`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_image_view_opaque_capture_descriptor_data_ext<'a>(
+        &self,
+        info: &ImageViewCaptureDescriptorDataInfoEXT<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_view_capture_descriptor_data_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::get_sampler_opaque_capture_descriptor_data_ext`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_sampler_opaque_capture_descriptor_data_ext<'a>(
+        &self,
+        info: &SamplerCaptureDescriptorDataInfoEXT<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::sampler_capture_descriptor_data_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
         }
         Ok(())
     }

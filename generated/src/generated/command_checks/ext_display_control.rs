@@ -27,17 +27,17 @@ impl Device {
         counter: vk::SurfaceCounterFlagsEXT,
     ) -> Result<()> {
         let s = &self.scope();
-        crate::checks::enum_surface_counter_flag_bits_ext(
-            counter,
-            s,
-            "VUID-vkGetSwapchainCounterEXT-counter-parameter",
-        )?;
         if !s.owned_by_device(swapchain.raw()) {
             return refuse(
                 "VUID-vkGetSwapchainCounterEXT-swapchain-parent",
                 "`swapchain` does not come from `device`",
             );
         }
+        crate::checks::enum_surface_counter_flag_bits_ext(
+            counter,
+            s,
+            "VUID-vkGetSwapchainCounterEXT-counter-parameter",
+        )?;
         Ok(())
     }
     ///The dynamic checks of [`Self::register_event_ext`], run before the call.

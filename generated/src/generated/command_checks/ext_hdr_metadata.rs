@@ -10,12 +10,6 @@ impl Device {
         swapchains: &[&SwapchainKHR],
     ) -> Result<()> {
         let s = &self.scope();
-        if swapchains.is_empty() {
-            return refuse(
-                "VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength",
-                "`swapchainCount` is 0",
-            );
-        }
         for h in swapchains.iter() {
             if !s.owned_by_device(h.raw()) {
                 return refuse(
@@ -23,6 +17,12 @@ impl Device {
                     "`pSwapchains` does not come from `device`",
                 );
             }
+        }
+        if swapchains.is_empty() {
+            return refuse(
+                "VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength",
+                "`swapchainCount` is 0",
+            );
         }
         Ok(())
     }

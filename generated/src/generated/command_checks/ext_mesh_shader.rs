@@ -24,15 +24,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         count_buffer: &Buffer,
     ) -> Result<()> {
         let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return refuse(
-                "VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-cmdpool",
-                "the command buffer's pool does not support graphics operations",
-            );
-        }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return refuse(
                 "VUID-vkCmdDrawMeshTasksIndirectCountEXT-commonparent",
@@ -45,6 +36,15 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "`countBuffer` does not come from the VkDevice the command is called on",
             );
         }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_ext`], run before the call.
@@ -53,6 +53,12 @@ impl<'c, S: Inside> Recorder<'c, S> {
         buffer: &Buffer,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
+            );
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -60,12 +66,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdDrawMeshTasksIndirectEXT-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

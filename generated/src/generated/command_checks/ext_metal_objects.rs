@@ -10,6 +10,18 @@ impl Device {
         metal_objects_info: &mut ExportMetalObjectsInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::export_metal_objects_info_ext(
+                    metal_objects_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_export_metal_objects_info_ext(metal_objects_info, s)?;
         Ok(())
     }

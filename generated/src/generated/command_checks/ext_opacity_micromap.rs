@@ -10,6 +10,17 @@ impl Device {
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::micromap_build_info_ext(x.as_raw(), &mut reached)
+                };
+            }
+            reached.owned()?;
+        }
         if infos.is_empty() {
             return refuse(
                 "VUID-vkBuildMicromapsEXT-infoCount-arraylength",
@@ -27,6 +38,18 @@ impl Device {
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_memory_to_micromap_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_copy_memory_to_micromap_info_ext(info, s)?;
         Ok(())
     }
@@ -36,6 +59,13 @@ impl Device {
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe { crate::reach::copy_micromap_info_ext(info.as_raw(), &mut reached) };
+            reached.owned()?;
+        }
         crate::checks::check_copy_micromap_info_ext(info, s)?;
         Ok(())
     }
@@ -45,6 +75,18 @@ impl Device {
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_micromap_to_memory_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_copy_micromap_to_memory_info_ext(info, s)?;
         Ok(())
     }
@@ -54,6 +96,18 @@ impl Device {
         create_info: &MicromapCreateInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::micromap_create_info_ext(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_micromap_create_info_ext(create_info, s)?;
         Ok(())
     }
@@ -64,6 +118,15 @@ impl Device {
         build_info: &MicromapBuildInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::micromap_build_info_ext(build_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::enum_acceleration_structure_build_type_khr(
             build_type,
             s,
@@ -80,6 +143,14 @@ impl Device {
         data: &mut [u8],
     ) -> Result<()> {
         let s = &self.scope();
+        for h in micromaps.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent",
+                    "`pMicromaps` does not come from `device`",
+                );
+            }
+        }
         crate::checks::enum_query_type(
             query_type,
             s,
@@ -96,14 +167,6 @@ impl Device {
                 "VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength",
                 "`dataSize` is 0",
             );
-        }
-        for h in micromaps.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent",
-                    "`pMicromaps` does not come from `device`",
-                );
-            }
         }
         if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)
             && !matches!(query_type.as_raw(), 1000396000 | 1000396001)
@@ -127,6 +190,17 @@ impl<'c> Recorder<'c, Outside> {
         infos: &[MicromapBuildInfoEXT<'a>],
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::micromap_build_info_ext(x.as_raw(), &mut reached)
+                };
+            }
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -153,6 +227,18 @@ impl<'c> Recorder<'c, Outside> {
         info: &CopyMemoryToMicromapInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_memory_to_micromap_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -171,6 +257,13 @@ impl<'c> Recorder<'c, Outside> {
         info: &CopyMicromapInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe { crate::reach::copy_micromap_info_ext(info.as_raw(), &mut reached) };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -189,6 +282,18 @@ impl<'c> Recorder<'c, Outside> {
         info: &CopyMicromapToMemoryInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_micromap_to_memory_info_ext(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -209,6 +314,20 @@ impl<'c> Recorder<'c, Outside> {
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
+        for h in micromaps.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
+                    "`pMicromaps` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_query_type(
             query_type,
             s,
@@ -227,20 +346,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength",
                 "`micromapCount` is 0",
-            );
-        }
-        for h in micromaps.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
-                    "`pMicromaps` does not come from the VkDevice the command is called on",
-                );
-            }
-        }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         if s.exts.has(origin::VK_EXT_OPACITY_MICROMAP)

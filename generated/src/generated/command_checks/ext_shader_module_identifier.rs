@@ -10,6 +10,18 @@ impl Device {
         create_info: &ShaderModuleCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::shader_module_create_info(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_shader_module_create_info(create_info, s)?;
         Ok(())
     }

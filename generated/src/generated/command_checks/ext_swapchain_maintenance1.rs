@@ -10,6 +10,18 @@ impl Device {
         release_info: &ReleaseSwapchainImagesInfoEXT<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::release_swapchain_images_info_ext(
+                    release_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_release_swapchain_images_info_ext(release_info, s)?;
         Ok(())
     }

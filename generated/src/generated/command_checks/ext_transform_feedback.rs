@@ -11,6 +11,12 @@ impl<'c, S: State> Recorder<'c, S> {
         flags: vk::QueryControlFlags,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdBeginQueryIndexedEXT-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::flags_query_control_flags(
             flags,
             s,
@@ -25,12 +31,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdBeginQueryIndexedEXT-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
-            );
-        }
         Ok(())
     }
     ///The dynamic checks of [`Self::bind_transform_feedback_buffers_ext`], run before the call.
@@ -39,6 +39,14 @@ impl<'c, S: State> Recorder<'c, S> {
         buffers: &[&Buffer],
     ) -> Result<()> {
         let s = &self.device().scope();
+        for h in buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent",
+                    "`pBuffers` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -54,14 +62,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`bindingCount` is 0",
             );
         }
-        for h in buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent",
-                    "`pBuffers` does not come from the VkDevice the command is called on",
-                );
-            }
-        }
         Ok(())
     }
     ///The dynamic checks of [`Self::end_query_indexed_ext`], run before the call.
@@ -70,6 +70,12 @@ impl<'c, S: State> Recorder<'c, S> {
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdEndQueryIndexedEXT-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -77,12 +83,6 @@ impl<'c, S: State> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
-            );
-        }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdEndQueryIndexedEXT-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -96,6 +96,14 @@ impl<'c, S: Inside> Recorder<'c, S> {
         counter_buffers: &[&Buffer],
     ) -> Result<()> {
         let s = &self.device().scope();
+        for h in counter_buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdBeginTransformFeedbackEXT-commonparent",
+                    "`pCounterBuffers` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -105,14 +113,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
-        for h in counter_buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdBeginTransformFeedbackEXT-commonparent",
-                    "`pCounterBuffers` does not come from the VkDevice the command is called on",
-                );
-            }
-        }
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_indirect_byte_count_ext`], run before the call.
@@ -121,6 +121,12 @@ impl<'c, S: Inside> Recorder<'c, S> {
         counter_buffer: &Buffer,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| counter_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawIndirectByteCountEXT-commonparent",
+                "`counterBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -128,12 +134,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
-            );
-        }
-        if s.device.is_none_or(|d| counter_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawIndirectByteCountEXT-commonparent",
-                "`counterBuffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -144,6 +144,14 @@ impl<'c, S: Inside> Recorder<'c, S> {
         counter_buffers: &[&Buffer],
     ) -> Result<()> {
         let s = &self.device().scope();
+        for h in counter_buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdEndTransformFeedbackEXT-commonparent",
+                    "`pCounterBuffers` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -152,14 +160,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
             );
-        }
-        for h in counter_buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdEndTransformFeedbackEXT-commonparent",
-                    "`pCounterBuffers` does not come from the VkDevice the command is called on",
-                );
-            }
         }
         Ok(())
     }

@@ -34,12 +34,6 @@ impl Device {
         src_caches: &[&ValidationCacheEXT],
     ) -> Result<()> {
         let s = &self.scope();
-        if src_caches.is_empty() {
-            return refuse(
-                "VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength",
-                "`srcCacheCount` is 0",
-            );
-        }
         if !s.owned_by_device(dst_cache.raw()) {
             return refuse(
                 "VUID-vkMergeValidationCachesEXT-dstCache-parent",
@@ -53,6 +47,12 @@ impl Device {
                     "`pSrcCaches` does not come from `device`",
                 );
             }
+        }
+        if src_caches.is_empty() {
+            return refuse(
+                "VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength",
+                "`srcCacheCount` is 0",
+            );
         }
         Ok(())
     }

@@ -33,6 +33,18 @@ impl Device {
                 "`collection` does not come from `device`",
             );
         }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::buffer_constraints_info_fuchsia(
+                    buffer_constraints_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_buffer_constraints_info_fuchsia(
             buffer_constraints_info,
             s,
@@ -51,6 +63,18 @@ impl Device {
                 "VUID-vkSetBufferCollectionImageConstraintsFUCHSIA-collection-parent",
                 "`collection` does not come from `device`",
             );
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_constraints_info_fuchsia(
+                    image_constraints_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
         }
         crate::checks::check_image_constraints_info_fuchsia(image_constraints_info, s)?;
         Ok(())

@@ -10,6 +10,18 @@ impl Device {
         get_zircon_handle_info: &MemoryGetZirconHandleInfoFUCHSIA<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::memory_get_zircon_handle_info_fuchsia(
+                    get_zircon_handle_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_memory_get_zircon_handle_info_fuchsia(
             get_zircon_handle_info,
             s,

@@ -11,6 +11,14 @@ impl<'c> Recorder<'c, Outside> {
         image_layout: vk::ImageLayout,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if let Some(h) = image_view {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdBindInvocationMaskHUAWEI-commonparent",
+                    "`imageView` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
         crate::checks::enum_image_layout(
             image_layout,
             s,
@@ -24,14 +32,6 @@ impl<'c> Recorder<'c, Outside> {
                 "VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool",
                 "the command buffer's pool does not support compute operations",
             );
-        }
-        if let Some(h) = image_view {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdBindInvocationMaskHUAWEI-commonparent",
-                    "`imageView` does not come from the VkDevice the command is called on",
-                );
-            }
         }
         Ok(())
     }

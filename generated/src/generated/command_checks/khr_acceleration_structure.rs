@@ -4,6 +4,28 @@
 use super::*;
 #[cfg(feature = "khr_acceleration_structure")]
 impl Device {
+    ///Where the handles [`Self::build_acceleration_structures_khr`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_build_acceleration_structures_khr<'a>(
+        &self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::acceleration_structure_build_geometry_info_khr(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::build_acceleration_structures_khr`], run before the call.
     pub(crate) fn validate_build_acceleration_structures_khr<'a>(
         &self,
@@ -27,6 +49,18 @@ impl Device {
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_acceleration_structure_info_khr(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_copy_acceleration_structure_info_khr(info, s)?;
         Ok(())
     }
@@ -36,6 +70,18 @@ impl Device {
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_acceleration_structure_to_memory_info_khr(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_copy_acceleration_structure_to_memory_info_khr(info, s)?;
         Ok(())
     }
@@ -45,6 +91,18 @@ impl Device {
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_memory_to_acceleration_structure_info_khr(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_copy_memory_to_acceleration_structure_info_khr(info, s)?;
         Ok(())
     }
@@ -54,6 +112,18 @@ impl Device {
         create_info: &AccelerationStructureCreateInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acceleration_structure_create_info_khr(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_acceleration_structure_create_info_khr(create_info, s)?;
         Ok(())
     }
@@ -64,6 +134,18 @@ impl Device {
         build_info: &AccelerationStructureBuildGeometryInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acceleration_structure_build_geometry_info_khr(
+                    build_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::enum_acceleration_structure_build_type_khr(
             build_type,
             s,
@@ -75,6 +157,26 @@ impl Device {
         )?;
         Ok(())
     }
+    ///The dynamic checks of [`Self::get_acceleration_structure_device_address_khr`], run before the call.
+    pub(crate) fn validate_get_acceleration_structure_device_address_khr<'a>(
+        &self,
+        info: &AccelerationStructureDeviceAddressInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acceleration_structure_device_address_info_khr(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::write_acceleration_structures_properties_khr`], run before the call.
     pub(crate) fn validate_write_acceleration_structures_properties_khr(
         &self,
@@ -83,6 +185,14 @@ impl Device {
         data: &mut [u8],
     ) -> Result<()> {
         let s = &self.scope();
+        for h in acceleration_structures.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent",
+                    "`pAccelerationStructures` does not come from `device`",
+                );
+            }
+        }
         crate::checks::enum_query_type(
             query_type,
             s,
@@ -100,19 +210,33 @@ impl Device {
                 "`dataSize` is 0",
             );
         }
-        for h in acceleration_structures.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent",
-                    "`pAccelerationStructures` does not come from `device`",
-                );
-            }
-        }
         Ok(())
     }
 }
 #[cfg(feature = "khr_acceleration_structure")]
 impl<'c> Recorder<'c, Outside> {
+    ///Where the handles [`Self::build_acceleration_structures_indirect_khr`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_build_acceleration_structures_indirect_khr<'a>(
+        &self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::acceleration_structure_build_geometry_info_khr(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::build_acceleration_structures_indirect_khr`], run before the call.
     pub(crate) fn validate_build_acceleration_structures_indirect_khr<'a>(
         &self,
@@ -136,6 +260,28 @@ impl<'c> Recorder<'c, Outside> {
         }
         for x in infos.iter() {
             crate::checks::check_acceleration_structure_build_geometry_info_khr(x, s)?;
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::build_acceleration_structures_khr`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_build_acceleration_structures_khr<'a>(
+        &self,
+        infos: &[AccelerationStructureBuildGeometryInfoKHR<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::acceleration_structure_build_geometry_info_khr(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
         }
         Ok(())
     }
@@ -171,6 +317,18 @@ impl<'c> Recorder<'c, Outside> {
         info: &CopyAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_acceleration_structure_info_khr(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -189,6 +347,18 @@ impl<'c> Recorder<'c, Outside> {
         info: &CopyAccelerationStructureToMemoryInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_acceleration_structure_to_memory_info_khr(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -207,6 +377,18 @@ impl<'c> Recorder<'c, Outside> {
         info: &CopyMemoryToAccelerationStructureInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_memory_to_acceleration_structure_info_khr(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::COMPUTE,
@@ -227,6 +409,20 @@ impl<'c> Recorder<'c, Outside> {
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
+        for h in acceleration_structures.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
+                    "`pAccelerationStructures` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_query_type(
             query_type,
             s,
@@ -245,20 +441,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength",
                 "`accelerationStructureCount` is 0",
-            );
-        }
-        for h in acceleration_structures.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
-                    "`pAccelerationStructures` does not come from the VkDevice the command is called on",
-                );
-            }
-        }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

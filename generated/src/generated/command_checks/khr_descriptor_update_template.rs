@@ -11,15 +11,6 @@ impl<'c, S: State> Recorder<'c, S> {
         layout: &PipelineLayout,
     ) -> Result<()> {
         let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
-        ) {
-            return refuse(
-                "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool",
-                "the command buffer's pool does not support graphics,compute operations",
-            );
-        }
         if s.device.is_none_or(|d| descriptor_update_template.parent().raw() != d.raw())
         {
             return refuse(
@@ -31,6 +22,15 @@ impl<'c, S: State> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent",
                 "`layout` does not come from the VkDevice the command is called on",
+            );
+        }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        ) {
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics,compute operations",
             );
         }
         Ok(())

@@ -5,6 +5,26 @@
 use super::*;
 #[cfg(feature = "khr_swapchain")]
 impl Device {
+    ///Where the handles [`Self::acquire_next_image2_khr`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_acquire_next_image2_khr<'a>(
+        &self,
+        acquire_info: &AcquireNextImageInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acquire_next_image_info_khr(
+                    acquire_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::acquire_next_image2_khr`], run before the call.
     pub(crate) fn validate_acquire_next_image2_khr<'a>(
         &self,

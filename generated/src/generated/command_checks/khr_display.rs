@@ -22,6 +22,18 @@ impl Instance {
         create_info: &DisplaySurfaceCreateInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::display_surface_create_info_khr(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_display_surface_create_info_khr(create_info, s)?;
         Ok(())
     }

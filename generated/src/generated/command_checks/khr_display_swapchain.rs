@@ -10,6 +10,17 @@ impl Device {
         create_infos: &[SwapchainCreateInfoKHR<'a>],
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in create_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::swapchain_create_info_khr(x.as_raw(), &mut reached)
+                };
+            }
+            reached.owned()?;
+        }
         if create_infos.is_empty() {
             return refuse(
                 "VUID-vkCreateSharedSwapchainsKHR-swapchainCount-arraylength",

@@ -10,6 +10,15 @@ impl Device {
         get_fd_info: &FenceGetFdInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::fence_get_fd_info_khr(get_fd_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_fence_get_fd_info_khr(get_fd_info, s)?;
         Ok(())
     }
@@ -19,6 +28,18 @@ impl Device {
         import_fence_fd_info: &ImportFenceFdInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::import_fence_fd_info_khr(
+                    import_fence_fd_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_import_fence_fd_info_khr(import_fence_fd_info, s)?;
         Ok(())
     }

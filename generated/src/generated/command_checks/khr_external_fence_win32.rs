@@ -10,6 +10,18 @@ impl Device {
         get_win32_handle_info: &FenceGetWin32HandleInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::fence_get_win32_handle_info_khr(
+                    get_win32_handle_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_fence_get_win32_handle_info_khr(get_win32_handle_info, s)?;
         Ok(())
     }
@@ -19,6 +31,18 @@ impl Device {
         import_fence_win32_handle_info: &ImportFenceWin32HandleInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::import_fence_win32_handle_info_khr(
+                    import_fence_win32_handle_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_import_fence_win32_handle_info_khr(
             import_fence_win32_handle_info,
             s,

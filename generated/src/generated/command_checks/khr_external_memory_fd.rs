@@ -10,6 +10,15 @@ impl Device {
         get_fd_info: &MemoryGetFdInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::memory_get_fd_info_khr(get_fd_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_memory_get_fd_info_khr(get_fd_info, s)?;
         Ok(())
     }

@@ -10,6 +10,18 @@ impl Device {
         get_fd_info: &SemaphoreGetFdInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::semaphore_get_fd_info_khr(
+                    get_fd_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_semaphore_get_fd_info_khr(get_fd_info, s)?;
         Ok(())
     }
@@ -19,6 +31,18 @@ impl Device {
         import_semaphore_fd_info: &ImportSemaphoreFdInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::import_semaphore_fd_info_khr(
+                    import_semaphore_fd_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_import_semaphore_fd_info_khr(import_semaphore_fd_info, s)?;
         Ok(())
     }

@@ -10,6 +10,18 @@ impl Device {
         get_win32_handle_info: &SemaphoreGetWin32HandleInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::semaphore_get_win32_handle_info_khr(
+                    get_win32_handle_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_semaphore_get_win32_handle_info_khr(
             get_win32_handle_info,
             s,
@@ -22,6 +34,18 @@ impl Device {
         import_semaphore_win32_handle_info: &ImportSemaphoreWin32HandleInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::import_semaphore_win32_handle_info_khr(
+                    import_semaphore_win32_handle_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_import_semaphore_win32_handle_info_khr(
             import_semaphore_win32_handle_info,
             s,

@@ -11,6 +11,18 @@ impl PhysicalDevice {
         surface_capabilities: &mut SurfaceCapabilities2KHR<'a>,
     ) -> Result<()> {
         let s = &self.parent().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::physical_device_surface_info2_khr(
+                    surface_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_physical_device_surface_info2_khr(surface_info, s)?;
         crate::checks::check_surface_capabilities2_khr(surface_capabilities, s)?;
         Ok(())
@@ -21,6 +33,18 @@ impl PhysicalDevice {
         surface_info: &PhysicalDeviceSurfaceInfo2KHR<'a>,
     ) -> Result<()> {
         let s = &self.parent().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::physical_device_surface_info2_khr(
+                    surface_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_physical_device_surface_info2_khr(surface_info, s)?;
         Ok(())
     }

@@ -12,6 +12,21 @@ impl<'c, S: State> Recorder<'c, S> {
         descriptor_writes: &[WriteDescriptorSet<'a>],
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdPushDescriptorSetKHR-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
+            );
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in descriptor_writes.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::write_descriptor_set(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
         crate::checks::enum_pipeline_bind_point(
             pipeline_bind_point,
             s,
@@ -30,12 +45,6 @@ impl<'c, S: State> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength",
                 "`descriptorWriteCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdPushDescriptorSetKHR-commonparent",
-                "`layout` does not come from the VkDevice the command is called on",
             );
         }
         for x in descriptor_writes.iter() {

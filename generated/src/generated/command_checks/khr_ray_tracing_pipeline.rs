@@ -54,12 +54,6 @@ impl Device {
         create_infos: &[RayTracingPipelineCreateInfoKHR<'a>],
     ) -> Result<()> {
         let s = &self.scope();
-        if create_infos.is_empty() {
-            return refuse(
-                "VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength",
-                "`createInfoCount` is 0",
-            );
-        }
         if let Some(h) = pipeline_cache {
             if !s.owned_by_device(h.raw()) {
                 return refuse(
@@ -67,6 +61,26 @@ impl Device {
                     "`pipelineCache` does not come from `device`",
                 );
             }
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in create_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::ray_tracing_pipeline_create_info_khr(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
+        }
+        if create_infos.is_empty() {
+            return refuse(
+                "VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength",
+                "`createInfoCount` is 0",
+            );
         }
         for x in create_infos.iter() {
             crate::checks::check_ray_tracing_pipeline_create_info_khr(x, s)?;
@@ -80,16 +94,16 @@ impl Device {
         data: &mut [u8],
     ) -> Result<()> {
         let s = &self.scope();
-        if data.is_empty() {
-            return refuse(
-                "VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength",
-                "`dataSize` is 0",
-            );
-        }
         if !s.owned_by_device(pipeline.raw()) {
             return refuse(
                 "VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent",
                 "`pipeline` does not come from `device`",
+            );
+        }
+        if data.is_empty() {
+            return refuse(
+                "VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         Ok(())
@@ -101,16 +115,16 @@ impl Device {
         data: &mut [u8],
     ) -> Result<()> {
         let s = &self.scope();
-        if data.is_empty() {
-            return refuse(
-                "VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength",
-                "`dataSize` is 0",
-            );
-        }
         if !s.owned_by_device(pipeline.raw()) {
             return refuse(
                 "VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent",
                 "`pipeline` does not come from `device`",
+            );
+        }
+        if data.is_empty() {
+            return refuse(
+                "VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         Ok(())
@@ -122,17 +136,17 @@ impl Device {
         group_shader: vk::ShaderGroupShaderKHR,
     ) -> Result<()> {
         let s = &self.scope();
-        crate::checks::enum_shader_group_shader_khr(
-            group_shader,
-            s,
-            "VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter",
-        )?;
         if !s.owned_by_device(pipeline.raw()) {
             return refuse(
                 "VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent",
                 "`pipeline` does not come from `device`",
             );
         }
+        crate::checks::enum_shader_group_shader_khr(
+            group_shader,
+            s,
+            "VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter",
+        )?;
         Ok(())
     }
 }

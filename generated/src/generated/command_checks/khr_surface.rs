@@ -50,8 +50,8 @@ impl PhysicalDevice {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_surface_support_khr`], run before the call.
-    pub(crate) fn validate_get_surface_support_khr(
+    ///Where the handles [`Self::get_surface_support_khr`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_surface_support_khr(
         &self,
         surface: &SurfaceKHR,
     ) -> Result<()> {

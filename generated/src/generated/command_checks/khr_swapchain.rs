@@ -4,8 +4,8 @@
 use super::*;
 #[cfg(feature = "khr_swapchain")]
 impl Device {
-    ///The dynamic checks of [`Self::acquire_next_image_khr`], run before the call.
-    pub(crate) fn validate_acquire_next_image_khr(
+    ///Where the handles [`Self::acquire_next_image_khr`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_acquire_next_image_khr(
         &self,
         swapchain: &SwapchainKHR,
         semaphore: Option<&Semaphore>,
@@ -42,6 +42,18 @@ impl Device {
         create_info: &SwapchainCreateInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::swapchain_create_info_khr(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_swapchain_create_info_khr(create_info, s)?;
         Ok(())
     }
@@ -62,6 +74,23 @@ impl Device {
 }
 #[cfg(feature = "khr_swapchain")]
 impl Queue {
+    ///Where the handles [`Self::present_khr`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_present_khr<'a>(
+        &self,
+        present_info: &PresentInfoKHR<'a>,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::present_info_khr(present_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::present_khr`], run before the call.
     pub(crate) fn validate_present_khr<'a>(
         &self,

@@ -10,6 +10,15 @@ impl<'c> Recorder<'c, InVideoCoding> {
         decode_info: &VideoDecodeInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::video_decode_info_khr(decode_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),

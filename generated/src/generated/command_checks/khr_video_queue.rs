@@ -11,16 +11,30 @@ impl Device {
         bind_session_memory_infos: &[BindVideoSessionMemoryInfoKHR<'a>],
     ) -> Result<()> {
         let s = &self.scope();
-        if bind_session_memory_infos.is_empty() {
-            return refuse(
-                "VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength",
-                "`bindSessionMemoryInfoCount` is 0",
-            );
-        }
         if !s.owned_by_device(video_session.raw()) {
             return refuse(
                 "VUID-vkBindVideoSessionMemoryKHR-videoSession-parent",
                 "`videoSession` does not come from `device`",
+            );
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in bind_session_memory_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::bind_video_session_memory_info_khr(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
+        }
+        if bind_session_memory_infos.is_empty() {
+            return refuse(
+                "VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength",
+                "`bindSessionMemoryInfoCount` is 0",
             );
         }
         Ok(())
@@ -40,6 +54,18 @@ impl Device {
         create_info: &VideoSessionParametersCreateInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::video_session_parameters_create_info_khr(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_video_session_parameters_create_info_khr(create_info, s)?;
         Ok(())
     }
@@ -75,6 +101,18 @@ impl<'c> Recorder<'c, Outside> {
         begin_info: &VideoBeginCodingInfoKHR<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::video_begin_coding_info_khr(
+                    begin_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),

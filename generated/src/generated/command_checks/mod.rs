@@ -136,10 +136,14 @@ mod khr_external_semaphore_fd;
 mod khr_external_semaphore_win32;
 #[cfg(feature = "khr_fragment_shading_rate")]
 mod khr_fragment_shading_rate;
+#[cfg(feature = "khr_get_display_properties2")]
+mod khr_get_display_properties2;
 #[cfg(feature = "khr_get_surface_capabilities2")]
 mod khr_get_surface_capabilities2;
 #[cfg(feature = "khr_performance_query")]
 mod khr_performance_query;
+#[cfg(feature = "khr_pipeline_executable_properties")]
+mod khr_pipeline_executable_properties;
 #[cfg(feature = "khr_present_wait")]
 mod khr_present_wait;
 #[cfg(feature = "khr_push_descriptor")]
@@ -209,3 +213,5 @@ mod nvx_image_view_handle;
 mod qcom_tile_properties;
 #[cfg(feature = "qnx_screen_surface")]
 mod qnx_screen_surface;
+#[cfg(feature = "valve_descriptor_set_host_mapping")]
+mod valve_descriptor_set_host_mapping;

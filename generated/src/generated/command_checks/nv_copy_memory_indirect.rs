@@ -25,6 +25,12 @@ impl<'c> Recorder<'c, Outside> {
         image_subresources: &[vk::ImageSubresourceLayers],
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_image_layout(
             dst_image_layout,
             s,
@@ -43,12 +49,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength",
                 "`copyCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s.exts.has(origin::VK_NV_COPY_MEMORY_INDIRECT)

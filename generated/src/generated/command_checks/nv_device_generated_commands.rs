@@ -11,6 +11,12 @@ impl<'c, S: State> Recorder<'c, S> {
         pipeline: &Pipeline,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdBindPipelineShaderGroupNV-commonparent",
+                "`pipeline` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_pipeline_bind_point(
             pipeline_bind_point,
             s,
@@ -25,12 +31,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
-        if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdBindPipelineShaderGroupNV-commonparent",
-                "`pipeline` does not come from the VkDevice the command is called on",
-            );
-        }
         Ok(())
     }
 }
@@ -42,6 +42,18 @@ impl<'c, S: Inside> Recorder<'c, S> {
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::generated_commands_info_nv(
+                    generated_commands_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -63,6 +75,18 @@ impl<'c> Recorder<'c, Outside> {
         generated_commands_info: &GeneratedCommandsInfoNV<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::generated_commands_info_nv(
+                    generated_commands_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -84,6 +108,18 @@ impl Device {
         create_info: &IndirectCommandsLayoutCreateInfoNV<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::indirect_commands_layout_create_info_nv(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_indirect_commands_layout_create_info_nv(create_info, s)?;
         Ok(())
     }
@@ -94,6 +130,18 @@ impl Device {
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::generated_commands_memory_requirements_info_nv(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_generated_commands_memory_requirements_info_nv(info, s)?;
         crate::checks::check_memory_requirements2(memory_requirements, s)?;
         Ok(())

@@ -10,6 +10,18 @@ impl Device {
         memory_get_remote_address_info: &MemoryGetRemoteAddressInfoNV<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::memory_get_remote_address_info_nv(
+                    memory_get_remote_address_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_memory_get_remote_address_info_nv(
             memory_get_remote_address_info,
             s,

@@ -11,6 +11,12 @@ impl Device {
         handle_type: vk::ExternalMemoryHandleTypeFlagsNV,
     ) -> Result<()> {
         let s = &self.scope();
+        if !s.owned_by_device(memory.raw()) {
+            return refuse(
+                "VUID-vkGetMemoryWin32HandleNV-memory-parent",
+                "`memory` does not come from `device`",
+            );
+        }
         crate::checks::flags_external_memory_handle_type_flags_nv(
             handle_type,
             s,
@@ -20,12 +26,6 @@ impl Device {
             return refuse(
                 "VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask",
                 "`handleType` is empty",
-            );
-        }
-        if !s.owned_by_device(memory.raw()) {
-            return refuse(
-                "VUID-vkGetMemoryWin32HandleNV-memory-parent",
-                "`memory` does not come from `device`",
             );
         }
         Ok(())

@@ -11,15 +11,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
         count_buffer: &Buffer,
     ) -> Result<()> {
         let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::GRAPHICS,
-        ) {
-            return refuse(
-                "VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool",
-                "the command buffer's pool does not support graphics operations",
-            );
-        }
         if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return refuse(
                 "VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent",
@@ -32,6 +23,15 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "`countBuffer` does not come from the VkDevice the command is called on",
             );
         }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::GRAPHICS,
+        ) {
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support graphics operations",
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_nv`], run before the call.
@@ -40,6 +40,12 @@ impl<'c, S: Inside> Recorder<'c, S> {
         buffer: &Buffer,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawMeshTasksIndirectNV-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
+            );
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS,
@@ -47,12 +53,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawMeshTasksIndirectNV-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

@@ -13,16 +13,6 @@ impl Device {
         layout: vk::ImageLayout,
     ) -> Result<()> {
         let s = &self.scope();
-        crate::checks::enum_optical_flow_session_binding_point_nv(
-            binding_point,
-            s,
-            "VUID-vkBindOpticalFlowSessionImageNV-bindingPoint-parameter",
-        )?;
-        crate::checks::enum_image_layout(
-            layout,
-            s,
-            "VUID-vkBindOpticalFlowSessionImageNV-layout-parameter",
-        )?;
         if !s.owned_by_device(session.raw()) {
             return refuse(
                 "VUID-vkBindOpticalFlowSessionImageNV-session-parent",
@@ -37,6 +27,16 @@ impl Device {
                 );
             }
         }
+        crate::checks::enum_optical_flow_session_binding_point_nv(
+            binding_point,
+            s,
+            "VUID-vkBindOpticalFlowSessionImageNV-bindingPoint-parameter",
+        )?;
+        crate::checks::enum_image_layout(
+            layout,
+            s,
+            "VUID-vkBindOpticalFlowSessionImageNV-layout-parameter",
+        )?;
         Ok(())
     }
     ///The dynamic checks of [`Self::create_optical_flow_session_nv`], run before the call.
@@ -58,6 +58,12 @@ impl<'c> Recorder<'c, Outside> {
         execute_info: &OpticalFlowExecuteInfoNV<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| session.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdOpticalFlowExecuteNV-commonparent",
+                "`session` does not come from the VkDevice the command is called on",
+            );
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::from_raw(u32::MAX),
@@ -65,12 +71,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool",
                 "the command buffer's pool does not support opticalflow operations",
-            );
-        }
-        if s.device.is_none_or(|d| session.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdOpticalFlowExecuteNV-commonparent",
-                "`session` does not come from the VkDevice the command is called on",
             );
         }
         crate::checks::check_optical_flow_execute_info_nv(execute_info, s)?;

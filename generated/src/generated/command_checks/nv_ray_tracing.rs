@@ -10,6 +10,20 @@ impl Device {
         bind_infos: &[BindAccelerationStructureMemoryInfoNV<'a>],
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in bind_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::bind_acceleration_structure_memory_info_nv(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
+        }
         if bind_infos.is_empty() {
             return refuse(
                 "VUID-vkBindAccelerationStructureMemoryNV-bindInfoCount-arraylength",
@@ -41,6 +55,18 @@ impl Device {
         create_info: &AccelerationStructureCreateInfoNV<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acceleration_structure_create_info_nv(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_acceleration_structure_create_info_nv(create_info, s)?;
         Ok(())
     }
@@ -51,12 +77,6 @@ impl Device {
         create_infos: &[RayTracingPipelineCreateInfoNV<'a>],
     ) -> Result<()> {
         let s = &self.scope();
-        if create_infos.is_empty() {
-            return refuse(
-                "VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength",
-                "`createInfoCount` is 0",
-            );
-        }
         if let Some(h) = pipeline_cache {
             if !s.owned_by_device(h.raw()) {
                 return refuse(
@@ -64,6 +84,26 @@ impl Device {
                     "`pipelineCache` does not come from `device`",
                 );
             }
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in create_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::ray_tracing_pipeline_create_info_nv(
+                        x.as_raw(),
+                        &mut reached,
+                    )
+                };
+            }
+            reached.owned()?;
+        }
+        if create_infos.is_empty() {
+            return refuse(
+                "VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength",
+                "`createInfoCount` is 0",
+            );
         }
         for x in create_infos.iter() {
             crate::checks::check_ray_tracing_pipeline_create_info_nv(x, s)?;
@@ -77,16 +117,16 @@ impl Device {
         data: &mut [u8],
     ) -> Result<()> {
         let s = &self.scope();
-        if data.is_empty() {
-            return refuse(
-                "VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength",
-                "`dataSize` is 0",
-            );
-        }
         if !s.owned_by_device(acceleration_structure.raw()) {
             return refuse(
                 "VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent",
                 "`accelerationStructure` does not come from `device`",
+            );
+        }
+        if data.is_empty() {
+            return refuse(
+                "VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength",
+                "`dataSize` is 0",
             );
         }
         Ok(())
@@ -97,6 +137,18 @@ impl Device {
         info: &AccelerationStructureMemoryRequirementsInfoNV<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acceleration_structure_memory_requirements_info_nv(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_acceleration_structure_memory_requirements_info_nv(
             info,
             s,
@@ -116,15 +168,6 @@ impl<'c> Recorder<'c, Outside> {
         scratch: &Buffer,
     ) -> Result<()> {
         let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::COMPUTE,
-        ) {
-            return refuse(
-                "VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool",
-                "the command buffer's pool does not support compute operations",
-            );
-        }
         if let Some(h) = instance_data {
             if !s.owned_by_device(h.raw()) {
                 return refuse(
@@ -153,6 +196,24 @@ impl<'c> Recorder<'c, Outside> {
                 "`scratch` does not come from the VkDevice the command is called on",
             );
         }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::acceleration_structure_info_nv(info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::COMPUTE,
+        ) {
+            return refuse(
+                "VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
+            );
+        }
         crate::checks::check_acceleration_structure_info_nv(info, s)?;
         Ok(())
     }
@@ -164,6 +225,18 @@ impl<'c> Recorder<'c, Outside> {
         mode: vk::CopyAccelerationStructureModeKHR,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| dst.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
+                "`dst` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| src.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
+                "`src` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_copy_acceleration_structure_mode_khr(
             mode,
             s,
@@ -178,18 +251,6 @@ impl<'c> Recorder<'c, Outside> {
                 "the command buffer's pool does not support compute operations",
             );
         }
-        if s.device.is_none_or(|d| dst.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
-                "`dst` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| src.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyAccelerationStructureNV-commonparent",
-                "`src` does not come from the VkDevice the command is called on",
-            );
-        }
         Ok(())
     }
     ///The dynamic checks of [`Self::trace_rays_nv`], run before the call.
@@ -201,15 +262,6 @@ impl<'c> Recorder<'c, Outside> {
         callable_shader_binding_table_buffer: Option<&Buffer>,
     ) -> Result<()> {
         let s = &self.device().scope();
-        if !crate::validation::supports(
-            self.pool_queue_flags(),
-            vk::QueueFlags::COMPUTE,
-        ) {
-            return refuse(
-                "VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool",
-                "the command buffer's pool does not support compute operations",
-            );
-        }
         if s
             .device
             .is_none_or(|d| raygen_shader_binding_table_buffer.parent().raw() != d.raw())
@@ -243,6 +295,15 @@ impl<'c> Recorder<'c, Outside> {
                 );
             }
         }
+        if !crate::validation::supports(
+            self.pool_queue_flags(),
+            vk::QueueFlags::COMPUTE,
+        ) {
+            return refuse(
+                "VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool",
+                "the command buffer's pool does not support compute operations",
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::write_acceleration_structures_properties_nv`], run before the call.
@@ -253,6 +314,20 @@ impl<'c> Recorder<'c, Outside> {
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
+        for h in acceleration_structures.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
+                    "`pAccelerationStructures` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_query_type(
             query_type,
             s,
@@ -271,20 +346,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength",
                 "`accelerationStructureCount` is 0",
-            );
-        }
-        for h in acceleration_structures.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
-                    "`pAccelerationStructures` does not come from the VkDevice the command is called on",
-                );
-            }
-        }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())

@@ -5,7 +5,20 @@ use super::*;
 #[cfg(feature = "nvx_binary_import")]
 impl<'c, S: State> Recorder<'c, S> {
     ///The dynamic checks of [`Self::cu_launch_kernel_nvx`], run before the call.
-    pub(crate) fn validate_cu_launch_kernel_nvx(&self) -> Result<()> {
+    pub(crate) fn validate_cu_launch_kernel_nvx<'a>(
+        &self,
+        launch_info: &CuLaunchInfoNVX<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::cu_launch_info_nvx(launch_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -20,6 +33,26 @@ impl<'c, S: State> Recorder<'c, S> {
 }
 #[cfg(feature = "nvx_binary_import")]
 impl Device {
+    ///The dynamic checks of [`Self::create_cu_function_nvx`], run before the call.
+    pub(crate) fn validate_create_cu_function_nvx<'a>(
+        &self,
+        create_info: &CuFunctionCreateInfoNVX<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::cu_function_create_info_nvx(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::create_cu_module_nvx`], run before the call.
     pub(crate) fn validate_create_cu_module_nvx<'a>(
         &self,

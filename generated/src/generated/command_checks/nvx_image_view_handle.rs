@@ -24,6 +24,15 @@ impl Device {
         info: &ImageViewHandleInfoNVX<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_view_handle_info_nvx(info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_image_view_handle_info_nvx(info, s)?;
         Ok(())
     }

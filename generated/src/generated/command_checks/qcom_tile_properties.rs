@@ -10,6 +10,15 @@ impl Device {
         rendering_info: &RenderingInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::rendering_info(rendering_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_rendering_info(rendering_info, s)?;
         Ok(())
     }

@@ -9,6 +9,18 @@ impl Device {
         allocate_info: &CommandBufferAllocateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::command_buffer_allocate_info(
+                    allocate_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if allocate_info.command_buffer_count == 0 {
             return refuse(
                 "VUID-vkAllocateCommandBuffers-pAllocateInfo::commandBufferCount-arraylength",
@@ -16,6 +28,26 @@ impl Device {
             );
         }
         crate::checks::check_command_buffer_allocate_info(allocate_info, s)?;
+        Ok(())
+    }
+    ///Where the handles [`Self::allocate_descriptor_sets`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_allocate_descriptor_sets<'a>(
+        &self,
+        allocate_info: &DescriptorSetAllocateInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::descriptor_set_allocate_info(
+                    allocate_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::allocate_descriptor_sets`], run before the call.
@@ -39,11 +71,20 @@ impl Device {
         allocate_info: &MemoryAllocateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::memory_allocate_info(allocate_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_memory_allocate_info(allocate_info, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::bind_buffer_memory`], run before the call.
-    pub(crate) fn validate_bind_buffer_memory(
+    ///Where the handles [`Self::bind_buffer_memory`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_buffer_memory(
         &self,
         buffer: &Buffer,
         memory: &DeviceMemory,
@@ -63,8 +104,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::bind_image_memory`], run before the call.
-    pub(crate) fn validate_bind_image_memory(
+    ///Where the handles [`Self::bind_image_memory`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_image_memory(
         &self,
         image: &Image,
         memory: &DeviceMemory,
@@ -90,6 +131,15 @@ impl Device {
         create_info: &BufferCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::buffer_create_info(create_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_buffer_create_info(create_info, s)?;
         Ok(())
     }
@@ -99,6 +149,15 @@ impl Device {
         create_info: &BufferViewCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::buffer_view_create_info(create_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_buffer_view_create_info(create_info, s)?;
         Ok(())
     }
@@ -111,10 +170,37 @@ impl Device {
         crate::checks::check_command_pool_create_info(create_info, s)?;
         Ok(())
     }
+    ///Where the handles [`Self::create_compute_pipelines`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_create_compute_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[ComputePipelineCreateInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        if let Some(h) = pipeline_cache {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCreateComputePipelines-pipelineCache-parent",
+                    "`pipelineCache` does not come from `device`",
+                );
+            }
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in create_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::compute_pipeline_create_info(x.as_raw(), &mut reached)
+                };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::create_compute_pipelines`], run before the call.
     pub(crate) fn validate_create_compute_pipelines<'a>(
         &self,
-        pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
     ) -> Result<()> {
         let s = &self.scope();
@@ -123,14 +209,6 @@ impl Device {
                 "VUID-vkCreateComputePipelines-createInfoCount-arraylength",
                 "`createInfoCount` is 0",
             );
-        }
-        if let Some(h) = pipeline_cache {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCreateComputePipelines-pipelineCache-parent",
-                    "`pipelineCache` does not come from `device`",
-                );
-            }
         }
         for x in create_infos.iter() {
             crate::checks::check_compute_pipeline_create_info(x, s)?;
@@ -152,6 +230,18 @@ impl Device {
         create_info: &DescriptorSetLayoutCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::descriptor_set_layout_create_info(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
         Ok(())
     }
@@ -179,13 +269,49 @@ impl Device {
         create_info: &FramebufferCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::framebuffer_create_info(create_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_framebuffer_create_info(create_info, s)?;
+        Ok(())
+    }
+    ///Where the handles [`Self::create_graphics_pipelines`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_create_graphics_pipelines<'a>(
+        &self,
+        pipeline_cache: Option<&PipelineCache>,
+        create_infos: &[GraphicsPipelineCreateInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        if let Some(h) = pipeline_cache {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
+                    "`pipelineCache` does not come from `device`",
+                );
+            }
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in create_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::graphics_pipeline_create_info(x.as_raw(), &mut reached)
+                };
+            }
+            reached.owned()?;
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::create_graphics_pipelines`], run before the call.
     pub(crate) fn validate_create_graphics_pipelines<'a>(
         &self,
-        pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
     ) -> Result<()> {
         let s = &self.scope();
@@ -194,14 +320,6 @@ impl Device {
                 "VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength",
                 "`createInfoCount` is 0",
             );
-        }
-        if let Some(h) = pipeline_cache {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCreateGraphicsPipelines-pipelineCache-parent",
-                    "`pipelineCache` does not come from `device`",
-                );
-            }
         }
         for x in create_infos.iter() {
             crate::checks::check_graphics_pipeline_create_info(x, s)?;
@@ -214,6 +332,15 @@ impl Device {
         create_info: &ImageCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_create_info(create_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_image_create_info(create_info, s)?;
         Ok(())
     }
@@ -223,6 +350,15 @@ impl Device {
         create_info: &ImageViewCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_view_create_info(create_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_image_view_create_info(create_info, s)?;
         Ok(())
     }
@@ -241,6 +377,18 @@ impl Device {
         create_info: &PipelineLayoutCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::pipeline_layout_create_info(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_pipeline_layout_create_info(create_info, s)?;
         Ok(())
     }
@@ -268,6 +416,15 @@ impl Device {
         create_info: &SamplerCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::sampler_create_info(create_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         crate::checks::check_sampler_create_info(create_info, s)?;
         Ok(())
     }
@@ -286,6 +443,18 @@ impl Device {
         create_info: &ShaderModuleCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::shader_module_create_info(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_shader_module_create_info(create_info, s)?;
         Ok(())
     }
@@ -294,6 +463,16 @@ impl Device {
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in memory_ranges.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::mapped_memory_range(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
         if memory_ranges.is_empty() {
             return refuse(
                 "VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength",
@@ -316,8 +495,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_device_memory_commitment`], run before the call.
-    pub(crate) fn validate_get_device_memory_commitment(
+    ///Where the handles [`Self::get_device_memory_commitment`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_device_memory_commitment(
         &self,
         memory: &DeviceMemory,
     ) -> Result<()> {
@@ -330,8 +509,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_event_status`], run before the call.
-    pub(crate) fn validate_get_event_status(&self, event: &Event) -> Result<()> {
+    ///Where the handles [`Self::get_event_status`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_event_status(&self, event: &Event) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(event.raw()) {
             return refuse(
@@ -352,8 +531,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_image_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_image_memory_requirements(
+    ///Where the handles [`Self::get_image_memory_requirements`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_image_memory_requirements(
         &self,
         image: &Image,
     ) -> Result<()> {
@@ -410,10 +589,23 @@ impl Device {
         }
         Ok(())
     }
+    ///Where the handles [`Self::get_query_pool_results`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_query_pool_results(
+        &self,
+        query_pool: &QueryPool,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(query_pool.raw()) {
+            return refuse(
+                "VUID-vkGetQueryPoolResults-queryPool-parent",
+                "`queryPool` does not come from `device`",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::get_query_pool_results`], run before the call.
     pub(crate) fn validate_get_query_pool_results(
         &self,
-        query_pool: &QueryPool,
         data: &mut [u8],
         flags: vk::QueryResultFlags,
     ) -> Result<()> {
@@ -427,12 +619,6 @@ impl Device {
             return refuse(
                 "VUID-vkGetQueryPoolResults-dataSize-arraylength",
                 "`dataSize` is 0",
-            );
-        }
-        if !s.owned_by_device(query_pool.raw()) {
-            return refuse(
-                "VUID-vkGetQueryPoolResults-queryPool-parent",
-                "`queryPool` does not come from `device`",
             );
         }
         Ok(())
@@ -456,6 +642,16 @@ impl Device {
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in memory_ranges.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::mapped_memory_range(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
         if memory_ranges.is_empty() {
             return refuse(
                 "VUID-vkInvalidateMappedMemoryRanges-memoryRangeCount-arraylength",
@@ -464,19 +660,13 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::merge_pipeline_caches`], run before the call.
-    pub(crate) fn validate_merge_pipeline_caches(
+    ///Where the handles [`Self::merge_pipeline_caches`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_merge_pipeline_caches(
         &self,
         dst_cache: &PipelineCache,
         src_caches: &[&PipelineCache],
     ) -> Result<()> {
         let s = &self.scope();
-        if src_caches.is_empty() {
-            return refuse(
-                "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
-                "`srcCacheCount` is 0",
-            );
-        }
         if !s.owned_by_device(dst_cache.raw()) {
             return refuse(
                 "VUID-vkMergePipelineCaches-dstCache-parent",
@@ -493,18 +683,25 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::reset_command_pool`], run before the call.
-    pub(crate) fn validate_reset_command_pool(
+    ///The dynamic checks of [`Self::merge_pipeline_caches`], run before the call.
+    pub(crate) fn validate_merge_pipeline_caches(
+        &self,
+        src_caches: &[&PipelineCache],
+    ) -> Result<()> {
+        if src_caches.is_empty() {
+            return refuse(
+                "VUID-vkMergePipelineCaches-srcCacheCount-arraylength",
+                "`srcCacheCount` is 0",
+            );
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::reset_command_pool`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_reset_command_pool(
         &self,
         command_pool: &CommandPool,
-        flags: vk::CommandPoolResetFlags,
     ) -> Result<()> {
         let s = &self.scope();
-        crate::checks::flags_command_pool_reset_flags(
-            flags,
-            s,
-            "VUID-vkResetCommandPool-flags-parameter",
-        )?;
         if !s.owned_by_device(command_pool.raw()) {
             return refuse(
                 "VUID-vkResetCommandPool-commandPool-parent",
@@ -513,19 +710,25 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::reset_descriptor_pool`], run before the call.
-    pub(crate) fn validate_reset_descriptor_pool(
+    ///The dynamic checks of [`Self::reset_command_pool`], run before the call.
+    pub(crate) fn validate_reset_command_pool(
         &self,
-        descriptor_pool: &DescriptorPool,
-        flags: vk::DescriptorPoolResetFlags,
+        flags: vk::CommandPoolResetFlags,
     ) -> Result<()> {
         let s = &self.scope();
-        if flags.as_raw() != 0 {
-            return refuse(
-                "VUID-vkResetDescriptorPool-flags-zerobitmask",
-                "`flags` is not 0",
-            );
-        }
+        crate::checks::flags_command_pool_reset_flags(
+            flags,
+            s,
+            "VUID-vkResetCommandPool-flags-parameter",
+        )?;
+        Ok(())
+    }
+    ///Where the handles [`Self::reset_descriptor_pool`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_reset_descriptor_pool(
+        &self,
+        descriptor_pool: &DescriptorPool,
+    ) -> Result<()> {
+        let s = &self.scope();
         if !s.owned_by_device(descriptor_pool.raw()) {
             return refuse(
                 "VUID-vkResetDescriptorPool-descriptorPool-parent",
@@ -534,8 +737,21 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::reset_event`], run before the call.
-    pub(crate) fn validate_reset_event(&self, event: &Event) -> Result<()> {
+    ///The dynamic checks of [`Self::reset_descriptor_pool`], run before the call.
+    pub(crate) fn validate_reset_descriptor_pool(
+        &self,
+        flags: vk::DescriptorPoolResetFlags,
+    ) -> Result<()> {
+        if flags.as_raw() != 0 {
+            return refuse(
+                "VUID-vkResetDescriptorPool-flags-zerobitmask",
+                "`flags` is not 0",
+            );
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::reset_event`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_reset_event(&self, event: &Event) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(event.raw()) {
             return refuse(
@@ -545,15 +761,9 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::reset_fences`], run before the call.
-    pub(crate) fn validate_reset_fences(&self, fences: &[&Fence]) -> Result<()> {
+    ///Where the handles [`Self::reset_fences`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_reset_fences(&self, fences: &[&Fence]) -> Result<()> {
         let s = &self.scope();
-        if fences.is_empty() {
-            return refuse(
-                "VUID-vkResetFences-fenceCount-arraylength",
-                "`fenceCount` is 0",
-            );
-        }
         for h in fences.iter() {
             if !s.owned_by_device(h.raw()) {
                 return refuse(
@@ -564,14 +774,51 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::set_event`], run before the call.
-    pub(crate) fn validate_set_event(&self, event: &Event) -> Result<()> {
+    ///The dynamic checks of [`Self::reset_fences`], run before the call.
+    pub(crate) fn validate_reset_fences(&self, fences: &[&Fence]) -> Result<()> {
+        if fences.is_empty() {
+            return refuse(
+                "VUID-vkResetFences-fenceCount-arraylength",
+                "`fenceCount` is 0",
+            );
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::set_event`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_set_event(&self, event: &Event) -> Result<()> {
         let s = &self.scope();
         if !s.owned_by_device(event.raw()) {
             return refuse(
                 "VUID-vkSetEvent-event-parent",
                 "`event` does not come from `device`",
             );
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::update_descriptor_sets`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_update_descriptor_sets<'a>(
+        &self,
+        descriptor_writes: &[WriteDescriptorSet<'a>],
+        descriptor_copies: &[CopyDescriptorSet<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in descriptor_writes.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::write_descriptor_set(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in descriptor_copies.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::copy_descriptor_set(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
         }
         Ok(())
     }
@@ -593,12 +840,6 @@ impl Device {
     ///The dynamic checks of [`Self::wait_for_fences`], run before the call.
     pub(crate) fn validate_wait_for_fences(&self, fences: &[&Fence]) -> Result<()> {
         let s = &self.scope();
-        if fences.is_empty() {
-            return refuse(
-                "VUID-vkWaitForFences-fenceCount-arraylength",
-                "`fenceCount` is 0",
-            );
-        }
         for h in fences.iter() {
             if !s.owned_by_device(h.raw()) {
                 return refuse(
@@ -607,10 +848,33 @@ impl Device {
                 );
             }
         }
+        if fences.is_empty() {
+            return refuse(
+                "VUID-vkWaitForFences-fenceCount-arraylength",
+                "`fenceCount` is 0",
+            );
+        }
         Ok(())
     }
 }
 impl PhysicalDevice {
+    ///Where the handles [`Self::create_device`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_create_device<'a>(
+        &self,
+        create_info: &DeviceCreateInfo<'a>,
+    ) -> Result<()> {
+        let s = &crate::special::device::create_device_scope(self, create_info);
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::device_create_info(create_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::create_device`], run before the call.
     pub(crate) fn validate_create_device<'a>(
         &self,
@@ -732,11 +996,34 @@ impl Entry {
     }
 }
 impl Queue {
+    ///Where the handles [`Self::bind_sparse`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_sparse<'a>(
+        &self,
+        bind_info: &[BindSparseInfo<'a>],
+        fence: &Fence,
+    ) -> Result<()> {
+        let s = &self.parent().scope();
+        if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkQueueBindSparse-commonparent",
+                "`fence` does not come from the VkDevice the command is called on",
+            );
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in bind_info.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::bind_sparse_info(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::bind_sparse`], run before the call.
     pub(crate) fn validate_bind_sparse<'a>(
         &self,
         bind_info: &[BindSparseInfo<'a>],
-        fence: &Fence,
     ) -> Result<()> {
         let s = &self.parent().scope();
         if !crate::validation::supports(
@@ -748,19 +1035,13 @@ impl Queue {
                 "the queue does not support sparse_binding operations",
             );
         }
-        if s.device.is_none_or(|d| fence.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkQueueBindSparse-commonparent",
-                "`fence` does not come from the VkDevice the command is called on",
-            );
-        }
         for x in bind_info.iter() {
             crate::checks::check_bind_sparse_info(x, s)?;
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::submit`], run before the call.
-    pub(crate) fn validate_submit<'a>(
+    ///Where the handles [`Self::submit`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_submit<'a>(
         &self,
         submits: &[SubmitInfo<'a>],
         fence: Option<&Fence>,
@@ -774,6 +1055,20 @@ impl Queue {
                 );
             }
         }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in submits.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::submit_info(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::submit`], run before the call.
+    pub(crate) fn validate_submit<'a>(&self, submits: &[SubmitInfo<'a>]) -> Result<()> {
+        let s = &self.parent().scope();
         for x in submits.iter() {
             crate::checks::check_submit_info(x, s)?;
         }

@@ -3,10 +3,23 @@
 //!The dynamic checks of the commands of Vulkan 1.0, recorded into command buffers.
 use super::*;
 impl<'c, S: Scope> Recorder<'c, S> {
+    ///Where the handles [`Self::begin_query`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_begin_query(
+        &self,
+        query_pool: &QueryPool,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdBeginQuery-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::begin_query`], run before the call.
     pub(crate) fn validate_begin_query(
         &self,
-        query_pool: &QueryPool,
         flags: vk::QueryControlFlags,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -24,17 +37,24 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
+        Ok(())
+    }
+    ///Where the handles [`Self::end_query`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_end_query(
+        &self,
+        query_pool: &QueryPool,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return refuse(
-                "VUID-vkCmdBeginQuery-commonparent",
+                "VUID-vkCmdEndQuery-commonparent",
                 "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
     }
     ///The dynamic checks of [`Self::end_query`], run before the call.
-    pub(crate) fn validate_end_query(&self, query_pool: &QueryPool) -> Result<()> {
-        let s = &self.device().scope();
+    pub(crate) fn validate_end_query(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -44,11 +64,32 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdEndQuery-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
-            );
+        Ok(())
+    }
+    ///Where the handles [`Self::pipeline_barrier`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_pipeline_barrier<'a>(
+        &self,
+        buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
+        image_memory_barriers: &[ImageMemoryBarrier<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in buffer_memory_barriers.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::buffer_memory_barrier(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in image_memory_barriers.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::image_memory_barrier(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
         }
         Ok(())
     }
@@ -138,6 +179,42 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::wait_events`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_wait_events<'a>(
+        &self,
+        events: &[&Event],
+        buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
+        image_memory_barriers: &[ImageMemoryBarrier<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        for h in events.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdWaitEvents-commonparent",
+                    "`pEvents` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in buffer_memory_barriers.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::buffer_memory_barrier(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in image_memory_barriers.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::image_memory_barrier(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::wait_events`], run before the call.
     pub(crate) fn validate_wait_events<'a>(
         &self,
@@ -173,14 +250,6 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "VUID-vkCmdWaitEvents-eventCount-arraylength",
                 "`eventCount` is 0",
             );
-        }
-        for h in events.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdWaitEvents-commonparent",
-                    "`pEvents` does not come from the VkDevice the command is called on",
-                );
-            }
         }
         if !s.feature(|f| f.v10.geometry_shader) && (src_stage_mask.as_raw() & 64) != 0 {
             return refuse(
@@ -240,6 +309,12 @@ impl<'c, S: Scope> Recorder<'c, S> {
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdWriteTimestamp-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::enum_pipeline_stage_flag_bits(
             pipeline_stage,
             s,
@@ -252,12 +327,6 @@ impl<'c, S: Scope> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool",
                 "the command buffer's pool does not support transfer,graphics,compute,decode,encode,opticalflow operations",
-            );
-        }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdWriteTimestamp-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && matches!(pipeline_stage.as_raw(), 64)
@@ -298,6 +367,26 @@ impl<'c, S: Scope> Recorder<'c, S> {
     }
 }
 impl<'c> Recorder<'c, Outside> {
+    ///Where the handles [`Self::begin_render_pass`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_begin_render_pass<'a>(
+        &self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::render_pass_begin_info(
+                    render_pass_begin.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::begin_render_pass`], run before the call.
     pub(crate) fn validate_begin_render_pass<'a>(
         &self,
@@ -326,6 +415,27 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         crate::checks::check_render_pass_begin_info(render_pass_begin, s)?;
+        Ok(())
+    }
+    ///Where the handles [`Self::blit_image`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_blit_image(
+        &self,
+        src_image: &Image,
+        dst_image: &Image,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdBlitImage-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdBlitImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::blit_image`], run before the call.
@@ -363,18 +473,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdBlitImage-regionCount-arraylength",
                 "`regionCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdBlitImage-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdBlitImage-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -754,6 +852,20 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::clear_color_image`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_clear_color_image(
+        &self,
+        image: &Image,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdClearColorImage-commonparent",
+                "`image` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::clear_color_image`], run before the call.
     pub(crate) fn validate_clear_color_image(
         &self,
@@ -780,12 +892,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdClearColorImage-rangeCount-arraylength",
                 "`rangeCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdClearColorImage-commonparent",
-                "`image` does not come from the VkDevice the command is called on",
             );
         }
         if s.image(image.raw()).is_some_and(|r| (u64::from(r.usage.as_raw()) & 2) != 2) {
@@ -855,6 +961,20 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::clear_depth_stencil_image`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_clear_depth_stencil_image(
+        &self,
+        image: &Image,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdClearDepthStencilImage-commonparent",
+                "`image` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::clear_depth_stencil_image`], run before the call.
     pub(crate) fn validate_clear_depth_stencil_image(
         &self,
@@ -882,12 +1002,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength",
                 "`rangeCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdClearDepthStencilImage-commonparent",
-                "`image` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -941,14 +1055,29 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::copy_buffer`], run before the call.
-    pub(crate) fn validate_copy_buffer(
+    ///Where the handles [`Self::copy_buffer`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_copy_buffer(
         &self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
-        regions: &[vk::BufferCopy],
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| src_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyBuffer-commonparent",
+                "`srcBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::copy_buffer`], run before the call.
+    pub(crate) fn validate_copy_buffer(&self, regions: &[vk::BufferCopy]) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -964,16 +1093,25 @@ impl<'c> Recorder<'c, Outside> {
                 "`regionCount` is 0",
             );
         }
+        Ok(())
+    }
+    ///Where the handles [`Self::copy_buffer_to_image`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_copy_buffer_to_image(
+        &self,
+        src_buffer: &Buffer,
+        dst_image: &Image,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         if s.device.is_none_or(|d| src_buffer.parent().raw() != d.raw()) {
             return refuse(
-                "VUID-vkCmdCopyBuffer-commonparent",
+                "VUID-vkCmdCopyBufferToImage-commonparent",
                 "`srcBuffer` does not come from the VkDevice the command is called on",
             );
         }
-        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
             return refuse(
-                "VUID-vkCmdCopyBuffer-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on",
+                "VUID-vkCmdCopyBufferToImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -1005,18 +1143,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdCopyBufferToImage-regionCount-arraylength",
                 "`regionCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| src_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyBufferToImage-commonparent",
-                "`srcBuffer` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyBufferToImage-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -1178,6 +1304,27 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::copy_image`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_copy_image(
+        &self,
+        src_image: &Image,
+        dst_image: &Image,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyImage-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::copy_image`], run before the call.
     pub(crate) fn validate_copy_image(
         &self,
@@ -1211,18 +1358,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdCopyImage-regionCount-arraylength",
                 "`regionCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyImage-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyImage-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         for (i, e) in regions.iter().enumerate() {
@@ -1652,6 +1787,27 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::copy_image_to_buffer`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_copy_image_to_buffer(
+        &self,
+        src_image: &Image,
+        dst_buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyImageToBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::copy_image_to_buffer`], run before the call.
     pub(crate) fn validate_copy_image_to_buffer(
         &self,
@@ -1679,18 +1835,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdCopyImageToBuffer-regionCount-arraylength",
                 "`regionCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyImageToBuffer-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyImageToBuffer-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -1862,6 +2006,18 @@ impl<'c> Recorder<'c, Outside> {
         flags: vk::QueryResultFlags,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdCopyQueryPoolResults-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::flags_query_result_flags(
             flags,
             s,
@@ -1874,18 +2030,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics,compute operations",
-            );
-        }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyQueryPoolResults-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdCopyQueryPoolResults-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -1999,6 +2143,20 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::dispatch_indirect`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_dispatch_indirect(
+        &self,
+        buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDispatchIndirect-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::dispatch_indirect`], run before the call.
     pub(crate) fn validate_dispatch_indirect(
         &self,
@@ -2013,12 +2171,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool",
                 "the command buffer's pool does not support compute operations",
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDispatchIndirect-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -2047,9 +2199,22 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::fill_buffer`], run before the call.
-    pub(crate) fn validate_fill_buffer(&self, dst_buffer: &Buffer) -> Result<()> {
+    ///Where the handles [`Self::fill_buffer`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_fill_buffer(
+        &self,
+        dst_buffer: &Buffer,
+    ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdFillBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::fill_buffer`], run before the call.
+    pub(crate) fn validate_fill_buffer(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -2059,20 +2224,24 @@ impl<'c> Recorder<'c, Outside> {
                 "the command buffer's pool does not support transfer,graphics,compute operations",
             );
         }
-        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+        Ok(())
+    }
+    ///Where the handles [`Self::reset_query_pool`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_reset_query_pool(
+        &self,
+        query_pool: &QueryPool,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
             return refuse(
-                "VUID-vkCmdFillBuffer-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on",
+                "VUID-vkCmdResetQueryPool-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
     }
     ///The dynamic checks of [`Self::reset_query_pool`], run before the call.
-    pub(crate) fn validate_reset_query_pool(
-        &self,
-        query_pool: &QueryPool,
-    ) -> Result<()> {
-        let s = &self.device().scope();
+    pub(crate) fn validate_reset_query_pool(&self) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -2082,10 +2251,25 @@ impl<'c> Recorder<'c, Outside> {
                 "the command buffer's pool does not support graphics,compute,decode,encode,opticalflow operations",
             );
         }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+        Ok(())
+    }
+    ///Where the handles [`Self::resolve_image`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_resolve_image(
+        &self,
+        src_image: &Image,
+        dst_image: &Image,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
             return refuse(
-                "VUID-vkCmdResetQueryPool-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
+                "VUID-vkCmdResolveImage-commonparent",
+                "`srcImage` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdResolveImage-commonparent",
+                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -2123,18 +2307,6 @@ impl<'c> Recorder<'c, Outside> {
             return refuse(
                 "VUID-vkCmdResolveImage-regionCount-arraylength",
                 "`regionCount` is 0",
-            );
-        }
-        if s.device.is_none_or(|d| src_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdResolveImage-commonparent",
-                "`srcImage` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| dst_image.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdResolveImage-commonparent",
-                "`dstImage` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -2486,13 +2658,22 @@ impl<'c> Recorder<'c, Outside> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::update_buffer`], run before the call.
-    pub(crate) fn validate_update_buffer(
+    ///Where the handles [`Self::update_buffer`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_update_buffer(
         &self,
         dst_buffer: &Buffer,
-        data: &[u8],
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdUpdateBuffer-commonparent",
+                "`dstBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::update_buffer`], run before the call.
+    pub(crate) fn validate_update_buffer(&self, data: &[u8]) -> Result<()> {
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -2508,21 +2689,37 @@ impl<'c> Recorder<'c, Outside> {
                 "`dataSize` is 0",
             );
         }
-        if s.device.is_none_or(|d| dst_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdUpdateBuffer-commonparent",
-                "`dstBuffer` does not come from the VkDevice the command is called on",
-            );
-        }
         Ok(())
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
+    ///Where the handles [`Self::bind_descriptor_sets`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_descriptor_sets(
+        &self,
+        layout: &PipelineLayout,
+        descriptor_sets: &[&DescriptorSet],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdBindDescriptorSets-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
+            );
+        }
+        for h in descriptor_sets.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdBindDescriptorSets-commonparent",
+                    "`pDescriptorSets` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::bind_descriptor_sets`], run before the call.
     pub(crate) fn validate_bind_descriptor_sets(
         &self,
         pipeline_bind_point: vk::PipelineBindPoint,
-        layout: &PipelineLayout,
         descriptor_sets: &[&DescriptorSet],
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -2546,26 +2743,25 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`descriptorSetCount` is 0",
             );
         }
-        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+        Ok(())
+    }
+    ///Where the handles [`Self::bind_index_buffer`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_index_buffer(
+        &self,
+        buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
             return refuse(
-                "VUID-vkCmdBindDescriptorSets-commonparent",
-                "`layout` does not come from the VkDevice the command is called on",
+                "VUID-vkCmdBindIndexBuffer-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
             );
-        }
-        for h in descriptor_sets.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdBindDescriptorSets-commonparent",
-                    "`pDescriptorSets` does not come from the VkDevice the command is called on",
-                );
-            }
         }
         Ok(())
     }
     ///The dynamic checks of [`Self::bind_index_buffer`], run before the call.
     pub(crate) fn validate_bind_index_buffer(
         &self,
-        buffer: &Buffer,
         index_type: vk::IndexType,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -2583,10 +2779,18 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+        Ok(())
+    }
+    ///Where the handles [`Self::bind_pipeline`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_pipeline(
+        &self,
+        pipeline: &Pipeline,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
             return refuse(
-                "VUID-vkCmdBindIndexBuffer-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
+                "VUID-vkCmdBindPipeline-commonparent",
+                "`pipeline` does not come from the VkDevice the command is called on",
             );
         }
         Ok(())
@@ -2595,7 +2799,6 @@ impl<'c, S: State> Recorder<'c, S> {
     pub(crate) fn validate_bind_pipeline(
         &self,
         pipeline_bind_point: vk::PipelineBindPoint,
-        pipeline: &Pipeline,
     ) -> Result<()> {
         let s = &self.device().scope();
         crate::checks::enum_pipeline_bind_point(
@@ -2612,11 +2815,21 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
-        if s.device.is_none_or(|d| pipeline.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdBindPipeline-commonparent",
-                "`pipeline` does not come from the VkDevice the command is called on",
-            );
+        Ok(())
+    }
+    ///Where the handles [`Self::bind_vertex_buffers`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_vertex_buffers(
+        &self,
+        buffers: &[&Buffer],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        for h in buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdBindVertexBuffers-commonparent",
+                    "`pBuffers` does not come from the VkDevice the command is called on",
+                );
+            }
         }
         Ok(())
     }
@@ -2642,14 +2855,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`bindingCount` is 0",
             );
         }
-        for h in buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdBindVertexBuffers-commonparent",
-                    "`pBuffers` does not come from the VkDevice the command is called on",
-                );
-            }
-        }
         if s
             .limits()
             .is_some_and(|l| {
@@ -2666,12 +2871,27 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::execute_commands`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_execute_commands(
+        &self,
+        command_buffers: &[&CommandBuffer],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        for h in command_buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdExecuteCommands-commonparent",
+                    "`pCommandBuffers` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::execute_commands`], run before the call.
     pub(crate) fn validate_execute_commands(
         &self,
         command_buffers: &[&CommandBuffer],
     ) -> Result<()> {
-        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -2693,20 +2913,25 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`commandBufferCount` is 0",
             );
         }
-        for h in command_buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdExecuteCommands-commonparent",
-                    "`pCommandBuffers` does not come from the VkDevice the command is called on",
-                );
-            }
+        Ok(())
+    }
+    ///Where the handles [`Self::push_constants`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_push_constants(
+        &self,
+        layout: &PipelineLayout,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdPushConstants-commonparent",
+                "`layout` does not come from the VkDevice the command is called on",
+            );
         }
         Ok(())
     }
     ///The dynamic checks of [`Self::push_constants`], run before the call.
     pub(crate) fn validate_push_constants(
         &self,
-        layout: &PipelineLayout,
         stage_flags: vk::ShaderStageFlags,
         values: &[u8],
     ) -> Result<()> {
@@ -2733,12 +2958,6 @@ impl<'c, S: State> Recorder<'c, S> {
         }
         if values.is_empty() {
             return refuse("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0");
-        }
-        if s.device.is_none_or(|d| layout.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdPushConstants-commonparent",
-                "`layout` does not come from the VkDevice the command is called on",
-            );
         }
         Ok(())
     }
@@ -3048,6 +3267,20 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::draw_indexed_indirect`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_draw_indexed_indirect(
+        &self,
+        buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirect-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::draw_indexed_indirect`], run before the call.
     pub(crate) fn validate_draw_indexed_indirect(
         &self,
@@ -3063,12 +3296,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdDrawIndexedIndirect-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawIndexedIndirect-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -3118,6 +3345,17 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::draw_indirect`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_draw_indirect(&self, buffer: &Buffer) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawIndirect-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::draw_indirect`], run before the call.
     pub(crate) fn validate_draw_indirect(
         &self,
@@ -3133,12 +3371,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdDrawIndirect-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawIndirect-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
             );
         }
         if s
@@ -3246,6 +3478,12 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
         stage_mask: vk::PipelineStageFlags,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdResetEvent-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::flags_pipeline_stage_flags(
             stage_mask,
             s,
@@ -3258,12 +3496,6 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdResetEvent-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdResetEvent-commonparent",
-                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {
@@ -3302,6 +3534,12 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
         stage_mask: vk::PipelineStageFlags,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdSetEvent-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::flags_pipeline_stage_flags(
             stage_mask,
             s,
@@ -3314,12 +3552,6 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdSetEvent-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdSetEvent-commonparent",
-                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if !s.feature(|f| f.v10.geometry_shader) && (stage_mask.as_raw() & 64) != 0 {

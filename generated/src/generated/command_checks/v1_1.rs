@@ -3,6 +3,25 @@
 //!The dynamic checks of the commands of Vulkan 1.1.
 use super::*;
 impl Device {
+    ///Where the handles [`Self::bind_buffer_memory2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_buffer_memory2<'a>(
+        &self,
+        bind_infos: &[BindBufferMemoryInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in bind_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::bind_buffer_memory_info(x.as_raw(), &mut reached)
+                };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::bind_buffer_memory2`], run before the call.
     pub(crate) fn validate_bind_buffer_memory2<'a>(
         &self,
@@ -17,6 +36,25 @@ impl Device {
         }
         for x in bind_infos.iter() {
             crate::checks::check_bind_buffer_memory_info(x, s)?;
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::bind_image_memory2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_image_memory2<'a>(
+        &self,
+        bind_infos: &[BindImageMemoryInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in bind_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe {
+                    crate::reach::bind_image_memory_info(x.as_raw(), &mut reached)
+                };
+            }
+            reached.owned()?;
         }
         Ok(())
     }
@@ -43,6 +81,18 @@ impl Device {
         create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::descriptor_update_template_create_info(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_descriptor_update_template_create_info(create_info, s)?;
         Ok(())
     }
@@ -67,9 +117,22 @@ impl Device {
     ///The dynamic checks of [`Self::get_buffer_memory_requirements2`], run before the call.
     pub(crate) fn validate_get_buffer_memory_requirements2<'a>(
         &self,
+        info: &BufferMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::buffer_memory_requirements_info2(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_memory_requirements2(memory_requirements, s)?;
         Ok(())
     }
@@ -80,6 +143,18 @@ impl Device {
         support: &mut DescriptorSetLayoutSupport<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::descriptor_set_layout_create_info(
+                    create_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_descriptor_set_layout_create_info(create_info, s)?;
         crate::checks::check_descriptor_set_layout_support(support, s)?;
         Ok(())
@@ -93,6 +168,26 @@ impl Device {
         crate::checks::check_device_queue_info2(queue_info, s)?;
         Ok(())
     }
+    ///Where the handles [`Self::get_image_memory_requirements2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_image_memory_requirements2<'a>(
+        &self,
+        info: &ImageMemoryRequirementsInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_memory_requirements_info2(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::get_image_memory_requirements2`], run before the call.
     pub(crate) fn validate_get_image_memory_requirements2<'a>(
         &self,
@@ -104,6 +199,26 @@ impl Device {
         crate::checks::check_memory_requirements2(memory_requirements, s)?;
         Ok(())
     }
+    ///The dynamic checks of [`Self::get_image_sparse_memory_requirements2`], run before the call.
+    pub(crate) fn validate_get_image_sparse_memory_requirements2<'a>(
+        &self,
+        info: &ImageSparseMemoryRequirementsInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::image_sparse_memory_requirements_info2(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::trim_command_pool`], run before the call.
     pub(crate) fn validate_trim_command_pool(
         &self,
@@ -111,16 +226,16 @@ impl Device {
         flags: vk::CommandPoolTrimFlags,
     ) -> Result<()> {
         let s = &self.scope();
-        if flags.as_raw() != 0 {
-            return refuse(
-                "VUID-vkTrimCommandPool-flags-zerobitmask",
-                "`flags` is not 0",
-            );
-        }
         if !s.owned_by_device(command_pool.raw()) {
             return refuse(
                 "VUID-vkTrimCommandPool-commandPool-parent",
                 "`commandPool` does not come from `device`",
+            );
+        }
+        if flags.as_raw() != 0 {
+            return refuse(
+                "VUID-vkTrimCommandPool-flags-zerobitmask",
+                "`flags` is not 0",
             );
         }
         Ok(())

@@ -13,8 +13,20 @@ impl Device {
         Ok(())
     }
     ///The dynamic checks of [`Self::get_buffer_device_address`], run before the call.
-    pub(crate) fn validate_get_buffer_device_address(&self) -> Result<()> {
+    pub(crate) fn validate_get_buffer_device_address<'a>(
+        &self,
+        info: &BufferDeviceAddressInfo<'a>,
+    ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::buffer_device_address_info(info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         if ((s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_EXT_BUFFER_DEVICE_ADDRESS)
             || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
@@ -29,8 +41,20 @@ impl Device {
         Ok(())
     }
     ///The dynamic checks of [`Self::get_buffer_opaque_capture_address`], run before the call.
-    pub(crate) fn validate_get_buffer_opaque_capture_address(&self) -> Result<()> {
+    pub(crate) fn validate_get_buffer_opaque_capture_address<'a>(
+        &self,
+        info: &BufferDeviceAddressInfo<'a>,
+    ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::buffer_device_address_info(info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
@@ -43,10 +67,23 @@ impl Device {
         Ok(())
     }
     ///The dynamic checks of [`Self::get_device_memory_opaque_capture_address`], run before the call.
-    pub(crate) fn validate_get_device_memory_opaque_capture_address(
+    pub(crate) fn validate_get_device_memory_opaque_capture_address<'a>(
         &self,
+        info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::device_memory_opaque_capture_address_info(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_KHR_BUFFER_DEVICE_ADDRESS))
             && !s.feature(|f| f.v12.buffer_device_address)
@@ -58,8 +95,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_semaphore_counter_value`], run before the call.
-    pub(crate) fn validate_get_semaphore_counter_value(
+    ///Where the handles [`Self::get_semaphore_counter_value`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_semaphore_counter_value(
         &self,
         semaphore: &Semaphore,
     ) -> Result<()> {
@@ -92,6 +129,40 @@ impl Device {
                 "VUID-vkResetQueryPool-None-02665",
                 "The `hostQueryReset` feature must be enabled",
             );
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::signal_semaphore`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_signal_semaphore<'a>(
+        &self,
+        signal_info: &SemaphoreSignalInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::semaphore_signal_info(signal_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
+    ///Where the handles [`Self::wait_semaphores`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_wait_semaphores<'a>(
+        &self,
+        wait_info: &SemaphoreWaitInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::semaphore_wait_info(wait_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
         }
         Ok(())
     }

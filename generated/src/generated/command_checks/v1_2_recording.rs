@@ -3,6 +3,26 @@
 //!The dynamic checks of the commands of Vulkan 1.2, recorded into command buffers.
 use super::*;
 impl<'c> Recorder<'c, Outside> {
+    ///Where the handles [`Self::begin_render_pass2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_begin_render_pass2<'a>(
+        &self,
+        render_pass_begin: &RenderPassBeginInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::render_pass_begin_info(
+                    render_pass_begin.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::begin_render_pass2`], run before the call.
     pub(crate) fn validate_begin_render_pass2<'a>(
         &self,
@@ -31,6 +51,27 @@ impl<'c> Recorder<'c, Outside> {
     }
 }
 impl<'c, S: Inside> Recorder<'c, S> {
+    ///Where the handles [`Self::draw_indexed_indirect_count`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_draw_indexed_indirect_count(
+        &self,
+        buffer: &Buffer,
+        count_buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
+                "`countBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::draw_indexed_indirect_count`], run before the call.
     pub(crate) fn validate_draw_indexed_indirect_count(
         &self,
@@ -47,18 +88,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdDrawIndexedIndirectCount-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawIndexedIndirectCount-commonparent",
-                "`countBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)
@@ -127,6 +156,27 @@ impl<'c, S: Inside> Recorder<'c, S> {
         }
         Ok(())
     }
+    ///Where the handles [`Self::draw_indirect_count`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_draw_indirect_count(
+        &self,
+        buffer: &Buffer,
+        count_buffer: &Buffer,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-commonparent",
+                "`buffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdDrawIndirectCount-commonparent",
+                "`countBuffer` does not come from the VkDevice the command is called on",
+            );
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::draw_indirect_count`], run before the call.
     pub(crate) fn validate_draw_indirect_count(
         &self,
@@ -143,18 +193,6 @@ impl<'c, S: Inside> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdDrawIndirectCount-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics operations",
-            );
-        }
-        if s.device.is_none_or(|d| buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawIndirectCount-commonparent",
-                "`buffer` does not come from the VkDevice the command is called on",
-            );
-        }
-        if s.device.is_none_or(|d| count_buffer.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdDrawIndirectCount-commonparent",
-                "`countBuffer` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_2)

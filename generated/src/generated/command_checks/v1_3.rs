@@ -28,6 +28,18 @@ impl Device {
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::device_buffer_memory_requirements(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_device_buffer_memory_requirements(info, s)?;
         crate::checks::check_memory_requirements2(memory_requirements, s)?;
         Ok(())
@@ -39,6 +51,18 @@ impl Device {
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::device_image_memory_requirements(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_device_image_memory_requirements(info, s)?;
         crate::checks::check_memory_requirements2(memory_requirements, s)?;
         Ok(())
@@ -49,14 +73,39 @@ impl Device {
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<()> {
         let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::device_image_memory_requirements(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         crate::checks::check_device_image_memory_requirements(info, s)?;
+        Ok(())
+    }
+    ///Where the handles [`Self::get_private_data`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_private_data(
+        &self,
+        private_data_slot: &PrivateDataSlot,
+    ) -> Result<()> {
+        let s = &self.scope();
+        if !s.owned_by_device(private_data_slot.raw()) {
+            return refuse(
+                "VUID-vkGetPrivateData-privateDataSlot-parent",
+                "`privateDataSlot` does not come from `device`",
+            );
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::get_private_data`], run before the call.
     pub(crate) fn validate_get_private_data(
         &self,
         object_type: vk::ObjectType,
-        private_data_slot: &PrivateDataSlot,
     ) -> Result<()> {
         let s = &self.scope();
         crate::checks::enum_object_type(
@@ -64,9 +113,17 @@ impl Device {
             s,
             "VUID-vkGetPrivateData-objectType-parameter",
         )?;
+        Ok(())
+    }
+    ///Where the handles [`Self::set_private_data`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_set_private_data(
+        &self,
+        private_data_slot: &PrivateDataSlot,
+    ) -> Result<()> {
+        let s = &self.scope();
         if !s.owned_by_device(private_data_slot.raw()) {
             return refuse(
-                "VUID-vkGetPrivateData-privateDataSlot-parent",
+                "VUID-vkSetPrivateData-privateDataSlot-parent",
                 "`privateDataSlot` does not come from `device`",
             );
         }
@@ -76,7 +133,6 @@ impl Device {
     pub(crate) fn validate_set_private_data(
         &self,
         object_type: vk::ObjectType,
-        private_data_slot: &PrivateDataSlot,
     ) -> Result<()> {
         let s = &self.scope();
         crate::checks::enum_object_type(
@@ -84,18 +140,12 @@ impl Device {
             s,
             "VUID-vkSetPrivateData-objectType-parameter",
         )?;
-        if !s.owned_by_device(private_data_slot.raw()) {
-            return refuse(
-                "VUID-vkSetPrivateData-privateDataSlot-parent",
-                "`privateDataSlot` does not come from `device`",
-            );
-        }
         Ok(())
     }
 }
 impl Queue {
-    ///The dynamic checks of [`Self::submit2`], run before the call.
-    pub(crate) fn validate_submit2<'a>(
+    ///Where the handles [`Self::submit2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
         fence: Option<&Fence>,
@@ -109,6 +159,23 @@ impl Queue {
                 );
             }
         }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in submits.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::submit_info2(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::submit2`], run before the call.
+    pub(crate) fn validate_submit2<'a>(
+        &self,
+        submits: &[SubmitInfo2<'a>],
+    ) -> Result<()> {
+        let s = &self.parent().scope();
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)

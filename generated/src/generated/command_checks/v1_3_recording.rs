@@ -3,6 +3,23 @@
 //!The dynamic checks of the commands of Vulkan 1.3, recorded into command buffers.
 use super::*;
 impl<'c> Recorder<'c, Outside> {
+    ///Where the handles [`Self::begin_rendering`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_begin_rendering<'a>(
+        &self,
+        rendering_info: &RenderingInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::rendering_info(rendering_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::begin_rendering`], run before the call.
     pub(crate) fn validate_begin_rendering<'a>(
         &self,
@@ -30,6 +47,23 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_rendering_info(rendering_info, s)?;
         Ok(())
     }
+    ///Where the handles [`Self::blit_image2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_blit_image2<'a>(
+        &self,
+        blit_image_info: &BlitImageInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::blit_image_info2(blit_image_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::blit_image2`], run before the call.
     pub(crate) fn validate_blit_image2<'a>(
         &self,
@@ -54,6 +88,15 @@ impl<'c> Recorder<'c, Outside> {
         copy_buffer_info: &CopyBufferInfo2<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_buffer_info2(copy_buffer_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::TRANSFER | vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -64,6 +107,26 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         crate::checks::check_copy_buffer_info2(copy_buffer_info, s)?;
+        Ok(())
+    }
+    ///Where the handles [`Self::copy_buffer_to_image2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_copy_buffer_to_image2<'a>(
+        &self,
+        copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_buffer_to_image_info2(
+                    copy_buffer_to_image_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::copy_buffer_to_image2`], run before the call.
@@ -84,6 +147,23 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_buffer_to_image_info2(copy_buffer_to_image_info, s)?;
         Ok(())
     }
+    ///Where the handles [`Self::copy_image2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_copy_image2<'a>(
+        &self,
+        copy_image_info: &CopyImageInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_image_info2(copy_image_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::copy_image2`], run before the call.
     pub(crate) fn validate_copy_image2<'a>(
         &self,
@@ -102,6 +182,26 @@ impl<'c> Recorder<'c, Outside> {
         crate::checks::check_copy_image_info2(copy_image_info, s)?;
         Ok(())
     }
+    ///Where the handles [`Self::copy_image_to_buffer2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_copy_image_to_buffer2<'a>(
+        &self,
+        copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::copy_image_to_buffer_info2(
+                    copy_image_to_buffer_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::copy_image_to_buffer2`], run before the call.
     pub(crate) fn validate_copy_image_to_buffer2<'a>(
         &self,
@@ -118,6 +218,26 @@ impl<'c> Recorder<'c, Outside> {
             );
         }
         crate::checks::check_copy_image_to_buffer_info2(copy_image_to_buffer_info, s)?;
+        Ok(())
+    }
+    ///Where the handles [`Self::resolve_image2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_resolve_image2<'a>(
+        &self,
+        resolve_image_info: &ResolveImageInfo2<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::resolve_image_info2(
+                    resolve_image_info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::resolve_image2`], run before the call.
@@ -140,6 +260,22 @@ impl<'c> Recorder<'c, Outside> {
     }
 }
 impl<'c, S: State> Recorder<'c, S> {
+    ///Where the handles [`Self::bind_vertex_buffers2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_bind_vertex_buffers2(
+        &self,
+        buffers: &[&Buffer],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        for h in buffers.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdBindVertexBuffers2-commonparent",
+                    "`pBuffers` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::bind_vertex_buffers2`], run before the call.
     pub(crate) fn validate_bind_vertex_buffers2(
         &self,
@@ -161,14 +297,6 @@ impl<'c, S: State> Recorder<'c, S> {
                 "VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength",
                 "`bindingCount` is 0",
             );
-        }
-        for h in buffers.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdBindVertexBuffers2-commonparent",
-                    "`pBuffers` does not come from the VkDevice the command is called on",
-                );
-            }
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_EXT_EXTENDED_DYNAMIC_STATE))
@@ -484,6 +612,23 @@ impl<'c> Recorder<'c, InRendering> {
     }
 }
 impl<'c, S: Scope> Recorder<'c, S> {
+    ///Where the handles [`Self::pipeline_barrier2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_pipeline_barrier2<'a>(
+        &self,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::dependency_info(dependency_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::pipeline_barrier2`], run before the call.
     pub(crate) fn validate_pipeline_barrier2<'a>(
         &self,
@@ -511,6 +656,32 @@ impl<'c, S: Scope> Recorder<'c, S> {
         crate::checks::check_dependency_info(dependency_info, s)?;
         Ok(())
     }
+    ///Where the handles [`Self::wait_events2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_wait_events2<'a>(
+        &self,
+        events: &[&Event],
+        dependency_infos: &[DependencyInfo<'a>],
+    ) -> Result<()> {
+        let s = &self.device().scope();
+        for h in events.iter() {
+            if !s.owned_by_device(h.raw()) {
+                return refuse(
+                    "VUID-vkCmdWaitEvents2-commonparent",
+                    "`pEvents` does not come from the VkDevice the command is called on",
+                );
+            }
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            for x in dependency_infos.iter() {
+                // SAFETY: a safe struct, whose setters store every pointer with its length, as the
+                // walk requires.
+                unsafe { crate::reach::dependency_info(x.as_raw(), &mut reached) };
+            }
+            reached.owned()?;
+        }
+        Ok(())
+    }
     ///The dynamic checks of [`Self::wait_events2`], run before the call.
     pub(crate) fn validate_wait_events2<'a>(
         &self,
@@ -533,14 +704,6 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "`eventCount` is 0",
             );
         }
-        for h in events.iter() {
-            if !s.owned_by_device(h.raw()) {
-                return refuse(
-                    "VUID-vkCmdWaitEvents2-commonparent",
-                    "`pEvents` does not come from the VkDevice the command is called on",
-                );
-            }
-        }
         if (s.exts.has(origin::VK_VERSION_1_3)
             || s.exts.has(origin::VK_KHR_SYNCHRONIZATION2))
             && !s.feature(|f| f.v13.synchronization2)
@@ -562,6 +725,12 @@ impl<'c, S: Scope> Recorder<'c, S> {
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdWriteTimestamp2-commonparent",
+                "`queryPool` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::flags_pipeline_stage_flags2(
             stage,
             s,
@@ -574,12 +743,6 @@ impl<'c, S: Scope> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool",
                 "the command buffer's pool does not support transfer,graphics,compute,decode,encode operations",
-            );
-        }
-        if s.device.is_none_or(|d| query_pool.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdWriteTimestamp2-commonparent",
-                "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
@@ -626,6 +789,12 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
         stage_mask: vk::PipelineStageFlags2,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdResetEvent2-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
+            );
+        }
         crate::checks::flags_pipeline_stage_flags2(
             stage_mask,
             s,
@@ -638,12 +807,6 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdResetEvent2-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdResetEvent2-commonparent",
-                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)
@@ -701,6 +864,21 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
         dependency_info: &DependencyInfo<'a>,
     ) -> Result<()> {
         let s = &self.device().scope();
+        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
+            return refuse(
+                "VUID-vkCmdSetEvent2-commonparent",
+                "`event` does not come from the VkDevice the command is called on",
+            );
+        }
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::dependency_info(dependency_info.as_raw(), &mut reached)
+            };
+            reached.owned()?;
+        }
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
@@ -708,12 +886,6 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             return refuse(
                 "VUID-vkCmdSetEvent2-commandBuffer-cmdpool",
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
-            );
-        }
-        if s.device.is_none_or(|d| event.parent().raw() != d.raw()) {
-            return refuse(
-                "VUID-vkCmdSetEvent2-commonparent",
-                "`event` does not come from the VkDevice the command is called on",
             );
         }
         if (s.exts.has(origin::VK_VERSION_1_3)

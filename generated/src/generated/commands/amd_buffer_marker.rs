@@ -74,7 +74,7 @@ The rules of `vkCmdWriteBufferMarkerAMD` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::write_buffer_marker_amd`] checks at run time: `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-parameter`, `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarkerAMD-commonparent`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04075`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04076`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01799`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01800`, `VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01801`, `VUID-vkCmdWriteBufferMarkerAMD-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_buffer_marker_amd`] checks at run time: `VUID-vkCmdWriteBufferMarkerAMD-commonparent`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-parameter`, `VUID-vkCmdWriteBufferMarkerAMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04075`, `VUID-vkCmdWriteBufferMarkerAMD-pipelineStage-04076`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01799`, `VUID-vkCmdWriteBufferMarkerAMD-dstBuffer-01800`, `VUID-vkCmdWriteBufferMarkerAMD-dstOffset-01801`, `VUID-vkCmdWriteBufferMarkerAMD-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_buffer_marker_amd_unchecked(
         &mut self,

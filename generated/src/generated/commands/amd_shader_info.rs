@@ -37,7 +37,7 @@ The rules of `vkGetShaderInfoAMD` that apply to this crate's API ([reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::get_shader_info_amd`] checks at run time: `VUID-vkGetShaderInfoAMD-shaderStage-parameter`, `VUID-vkGetShaderInfoAMD-infoType-parameter`, `VUID-vkGetShaderInfoAMD-pipeline-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_shader_info_amd`] checks at run time: `VUID-vkGetShaderInfoAMD-pipeline-parent`, `VUID-vkGetShaderInfoAMD-shaderStage-parameter`, `VUID-vkGetShaderInfoAMD-infoType-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_shader_info_amd_unchecked(
         &self,

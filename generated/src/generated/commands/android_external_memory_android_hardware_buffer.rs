@@ -88,6 +88,24 @@ The rules of `vkGetMemoryAndroidHardwareBufferANDROID` that apply to this crate'
         &self,
         info: &MemoryGetAndroidHardwareBufferInfoANDROID<'a>,
     ) -> Result<*mut vk::AHardwareBuffer> {
+        {
+            let r = self.validate_get_memory_android_hardware_buffer_android(info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.get_memory_android_hardware_buffer_android_unchecked(info) }
+    }
+    /**`vkGetMemoryAndroidHardwareBufferANDROID` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_memory_android_hardware_buffer_android`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_memory_android_hardware_buffer_android_unchecked<'a>(
+        &self,
+        info: &MemoryGetAndroidHardwareBufferInfoANDROID<'a>,
+    ) -> Result<*mut vk::AHardwareBuffer> {
         let fp = self
             .ext()
             .android_external_memory_android_hardware_buffer

@@ -61,19 +61,19 @@ The caller upholds the rules that [`Self::begin_conditional_rendering_ext`] chec
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(conditional_rendering_begin) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::conditional_rendering_begin_info_ext(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);

@@ -52,7 +52,7 @@ The rules of `vkCmdBindDescriptorBufferEmbeddedSamplersEXT` that apply to this c
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_descriptor_buffer_embedded_samplers_ext`] checks at run time: `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_descriptor_buffer_embedded_samplers_ext`] checks at run time: `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commonparent`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorBufferEmbeddedSamplersEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_descriptor_buffer_embedded_samplers_ext_unchecked(
         &mut self,
@@ -134,19 +134,19 @@ The caller upholds the rules that [`Self::bind_descriptor_buffers_ext`] checks a
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in binding_infos.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::descriptor_buffer_binding_info_ext(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -224,7 +224,7 @@ The rules of `vkCmdSetDescriptorBufferOffsetsEXT` that apply to this crate's API
 
 # Safety
 
-The caller upholds the rules that [`Self::set_descriptor_buffer_offsets_ext`] checks at run time: `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pipelineBindPoint-parameter`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_descriptor_buffer_offsets_ext`] checks at run time: `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commonparent`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pipelineBindPoint-parameter`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-commandBuffer-cmdpool`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-setCount-arraylength`, `VUID-vkCmdSetDescriptorBufferOffsetsEXT-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_descriptor_buffer_offsets_ext_unchecked(
         &mut self,
@@ -286,6 +286,9 @@ The rules of `vkGetAccelerationStructureOpaqueCaptureDescriptorDataEXT` that app
         info: &AccelerationStructureCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
+        self.validate_origins_get_acceleration_structure_opaque_capture_descriptor_data_ext(
+            info,
+        )?;
         crate::special::descriptors::capture_data_fits(
             self,
             data,
@@ -363,6 +366,7 @@ The rules of `vkGetBufferOpaqueCaptureDescriptorDataEXT` that apply to this crat
         info: &BufferCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
+        self.validate_origins_get_buffer_opaque_capture_descriptor_data_ext(info)?;
         crate::special::descriptors::capture_data_fits(
             self,
             data,
@@ -585,6 +589,7 @@ The rules of `vkGetImageOpaqueCaptureDescriptorDataEXT` that apply to this crate
         info: &ImageCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
+        self.validate_origins_get_image_opaque_capture_descriptor_data_ext(info)?;
         crate::special::descriptors::capture_data_fits(
             self,
             data,
@@ -646,6 +651,7 @@ The rules of `vkGetImageViewOpaqueCaptureDescriptorDataEXT` that apply to this c
         info: &ImageViewCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
+        self.validate_origins_get_image_view_opaque_capture_descriptor_data_ext(info)?;
         crate::special::descriptors::capture_data_fits(
             self,
             data,
@@ -707,6 +713,7 @@ The rules of `vkGetSamplerOpaqueCaptureDescriptorDataEXT` that apply to this cra
         info: &SamplerCaptureDescriptorDataInfoEXT<'a>,
         data: &mut [u8],
     ) -> Result<()> {
+        self.validate_origins_get_sampler_opaque_capture_descriptor_data_ext(info)?;
         crate::special::descriptors::capture_data_fits(
             self,
             data,

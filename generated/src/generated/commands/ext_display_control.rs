@@ -90,7 +90,7 @@ The rules of `vkGetSwapchainCounterEXT` that apply to this crate's API ([referen
 
 # Safety
 
-The caller upholds the rules that [`Self::get_swapchain_counter_ext`] checks at run time: `VUID-vkGetSwapchainCounterEXT-counter-parameter`, `VUID-vkGetSwapchainCounterEXT-swapchain-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_swapchain_counter_ext`] checks at run time: `VUID-vkGetSwapchainCounterEXT-swapchain-parent`, `VUID-vkGetSwapchainCounterEXT-counter-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_swapchain_counter_ext_unchecked(
         &self,

@@ -46,7 +46,7 @@ The rules of `vkSetHdrMetadataEXT` that apply to this crate's API ([reference pa
 
 # Safety
 
-The caller upholds the rules that [`Self::set_hdr_metadata_ext`] checks at run time: `VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength`, `VUID-vkSetHdrMetadataEXT-pSwapchains-parent`, `VUID-vkSetHdrMetadataEXT-pMetadata-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_hdr_metadata_ext`] checks at run time: `VUID-vkSetHdrMetadataEXT-pSwapchains-parent`, `VUID-vkSetHdrMetadataEXT-swapchainCount-arraylength`, `VUID-vkSetHdrMetadataEXT-pMetadata-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_hdr_metadata_ext_unchecked<'a, 'h>(
         &self,

@@ -496,7 +496,7 @@ The rules of `vkCmdDrawMeshTasksIndirectCountEXT` that apply to this crate's API
 
 # Safety
 
-The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_count_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_count_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commonparent`, `VUID-vkCmdDrawMeshTasksIndirectCountEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn draw_mesh_tasks_indirect_count_ext_unchecked(
         &mut self,
@@ -765,7 +765,7 @@ The rules of `vkCmdDrawMeshTasksIndirectEXT` that apply to this crate's API ([re
 
 # Safety
 
-The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_ext`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectEXT-commonparent`, `VUID-vkCmdDrawMeshTasksIndirectEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn draw_mesh_tasks_indirect_ext_unchecked(
         &mut self,

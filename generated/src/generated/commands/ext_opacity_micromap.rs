@@ -401,17 +401,16 @@ The caller upholds the rules that [`Self::create_micromap_ext`] checks at run ti
                 out,
                 self,
                 {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    let mut reached = crate::validation::Reached::keeping(self.live());
                     // SAFETY: the safe info stores every array with its length and chains only
                     // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::micromap_create_info_ext(
                             create_info.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
+                    let kept = reached.kept;
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -607,7 +606,7 @@ The rules of `vkWriteMicromapsPropertiesEXT` that apply to this crate's API ([re
 
 # Safety
 
-The caller upholds the rules that [`Self::write_micromaps_properties_ext`] checks at run time: `VUID-vkWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength`, `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent`, `VUID-vkWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_micromaps_properties_ext`] checks at run time: `VUID-vkWriteMicromapsPropertiesEXT-pMicromaps-parent`, `VUID-vkWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkWriteMicromapsPropertiesEXT-dataSize-arraylength`, `VUID-vkWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_micromaps_properties_ext_unchecked<'h>(
         &self,
@@ -735,19 +734,16 @@ The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run ti
             unsafe { fp(self.raw(), infos.len() as u32, infos.as_ptr().cast()) };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in infos.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::micromap_build_info_ext(
-                            e.as_raw(),
-                            live,
-                            &mut kept,
-                        )
+                        crate::reach::micromap_build_info_ext(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -824,19 +820,19 @@ The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks a
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::copy_memory_to_micromap_info_ext(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -907,15 +903,16 @@ The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::copy_micromap_info_ext(e.as_raw(), live, &mut kept)
+                        crate::reach::copy_micromap_info_ext(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -991,19 +988,19 @@ The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks a
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::copy_micromap_to_memory_info_ext(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -1081,7 +1078,7 @@ The rules of `vkCmdWriteMicromapsPropertiesEXT` that apply to this crate's API (
 
 # Safety
 
-The caller upholds the rules that [`Self::write_micromaps_properties_ext`] checks at run time: `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool`, `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent`, `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_micromaps_properties_ext`] checks at run time: `VUID-vkCmdWriteMicromapsPropertiesEXT-commonparent`, `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-parameter`, `VUID-vkCmdWriteMicromapsPropertiesEXT-commandBuffer-cmdpool`, `VUID-vkCmdWriteMicromapsPropertiesEXT-micromapCount-arraylength`, `VUID-vkCmdWriteMicromapsPropertiesEXT-queryType-07503`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_micromaps_properties_ext_unchecked<'h>(
         &mut self,

@@ -77,7 +77,7 @@ The rules of `vkCmdBeginQueryIndexedEXT` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::begin_query_indexed_ext`] checks at run time: `VUID-vkCmdBeginQueryIndexedEXT-flags-parameter`, `VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginQueryIndexedEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_query_indexed_ext`] checks at run time: `VUID-vkCmdBeginQueryIndexedEXT-commonparent`, `VUID-vkCmdBeginQueryIndexedEXT-flags-parameter`, `VUID-vkCmdBeginQueryIndexedEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn begin_query_indexed_ext_unchecked(
         &mut self,
@@ -175,7 +175,7 @@ The rules of `vkCmdBindTransformFeedbackBuffersEXT` that apply to this crate's A
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_transform_feedback_buffers_ext`] checks at run time: `VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pOffsets-parameter`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pSizes-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_transform_feedback_buffers_ext`] checks at run time: `VUID-vkCmdBindTransformFeedbackBuffersEXT-commonparent`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-commandBuffer-cmdpool`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-bindingCount-arraylength`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pOffsets-parameter`, `VUID-vkCmdBindTransformFeedbackBuffersEXT-pSizes-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_transform_feedback_buffers_ext_unchecked<'h>(
         &mut self,
@@ -261,7 +261,7 @@ The rules of `vkCmdEndQueryIndexedEXT` that apply to this crate's API ([referenc
 
 # Safety
 
-The caller upholds the rules that [`Self::end_query_indexed_ext`] checks at run time: `VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndQueryIndexedEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_query_indexed_ext`] checks at run time: `VUID-vkCmdEndQueryIndexedEXT-commonparent`, `VUID-vkCmdEndQueryIndexedEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn end_query_indexed_ext_unchecked(
         &mut self,
@@ -351,7 +351,7 @@ The rules of `vkCmdBeginTransformFeedbackEXT` that apply to this crate's API ([r
 
 # Safety
 
-The caller upholds the rules that [`Self::begin_transform_feedback_ext`] checks at run time: `VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginTransformFeedbackEXT-commonparent`, `VUID-vkCmdBeginTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_transform_feedback_ext`] checks at run time: `VUID-vkCmdBeginTransformFeedbackEXT-commonparent`, `VUID-vkCmdBeginTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdBeginTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn begin_transform_feedback_ext_unchecked<'h>(
         &mut self,
@@ -632,7 +632,7 @@ The rules of `vkCmdDrawIndirectByteCountEXT` that apply to this crate's API ([re
 
 # Safety
 
-The caller upholds the rules that [`Self::draw_indirect_byte_count_ext`] checks at run time: `VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool`, `VUID-vkCmdDrawIndirectByteCountEXT-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_indirect_byte_count_ext`] checks at run time: `VUID-vkCmdDrawIndirectByteCountEXT-commonparent`, `VUID-vkCmdDrawIndirectByteCountEXT-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn draw_indirect_byte_count_ext_unchecked(
         &mut self,
@@ -729,7 +729,7 @@ The rules of `vkCmdEndTransformFeedbackEXT` that apply to this crate's API ([ref
 
 # Safety
 
-The caller upholds the rules that [`Self::end_transform_feedback_ext`] checks at run time: `VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndTransformFeedbackEXT-commonparent`, `VUID-vkCmdEndTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_transform_feedback_ext`] checks at run time: `VUID-vkCmdEndTransformFeedbackEXT-commonparent`, `VUID-vkCmdEndTransformFeedbackEXT-commandBuffer-cmdpool`, `VUID-vkCmdEndTransformFeedbackEXT-pCounterBufferOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn end_transform_feedback_ext_unchecked<'h>(
         &mut self,

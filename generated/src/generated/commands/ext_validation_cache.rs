@@ -167,7 +167,7 @@ The rules of `vkMergeValidationCachesEXT` that apply to this crate's API ([refer
 
 # Safety
 
-The caller upholds the rules that [`Self::merge_validation_caches_ext`] checks at run time: `VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength`, `VUID-vkMergeValidationCachesEXT-dstCache-parent`, `VUID-vkMergeValidationCachesEXT-pSrcCaches-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::merge_validation_caches_ext`] checks at run time: `VUID-vkMergeValidationCachesEXT-dstCache-parent`, `VUID-vkMergeValidationCachesEXT-pSrcCaches-parent`, `VUID-vkMergeValidationCachesEXT-srcCacheCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn merge_validation_caches_ext_unchecked<'h>(
         &self,

@@ -45,7 +45,7 @@ The rules of `vkCmdBindInvocationMaskHUAWEI` that apply to this crate's API ([re
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_invocation_mask_huawei`] checks at run time: `VUID-vkCmdBindInvocationMaskHUAWEI-imageLayout-parameter`, `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool`, `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_invocation_mask_huawei`] checks at run time: `VUID-vkCmdBindInvocationMaskHUAWEI-commonparent`, `VUID-vkCmdBindInvocationMaskHUAWEI-imageLayout-parameter`, `VUID-vkCmdBindInvocationMaskHUAWEI-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_invocation_mask_huawei_unchecked(
         &mut self,

@@ -87,6 +87,7 @@ The rules of `vkBuildAccelerationStructuresKHR` that apply to this crate's API (
                 ),
             });
         }
+        self.validate_origins_build_acceleration_structures_khr(infos)?;
         crate::special::acceleration::per_geometry_fits(
             infos,
             build_range_infos,
@@ -388,17 +389,16 @@ The caller upholds the rules that [`Self::create_acceleration_structure_khr`] ch
                 out,
                 self,
                 {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    let mut reached = crate::validation::Reached::keeping(self.live());
                     // SAFETY: the safe info stores every array with its length and chains only
                     // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::acceleration_structure_create_info_khr(
                             create_info.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
+                    let kept = reached.kept;
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -500,6 +500,24 @@ The rules of `vkGetAccelerationStructureDeviceAddressKHR` that apply to this cra
     #[doc(alias = "vkGetAccelerationStructureDeviceAddressKHR")]
     #[inline]
     pub fn get_acceleration_structure_device_address_khr<'a>(
+        &self,
+        info: &AccelerationStructureDeviceAddressInfoKHR<'a>,
+    ) -> Result<vk::DeviceAddress> {
+        {
+            let r = self.validate_get_acceleration_structure_device_address_khr(info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.get_acceleration_structure_device_address_khr_unchecked(info) }
+    }
+    /**`vkGetAccelerationStructureDeviceAddressKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_acceleration_structure_device_address_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_acceleration_structure_device_address_khr_unchecked<'a>(
         &self,
         info: &AccelerationStructureDeviceAddressInfoKHR<'a>,
     ) -> Result<vk::DeviceAddress> {
@@ -623,7 +641,7 @@ The rules of `vkWriteAccelerationStructuresPropertiesKHR` that apply to this cra
 
 # Safety
 
-The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkWriteAccelerationStructuresPropertiesKHR-pAccelerationStructures-parent`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkWriteAccelerationStructuresPropertiesKHR-dataSize-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_acceleration_structures_properties_khr_unchecked<'h>(
         &self,
@@ -786,6 +804,7 @@ The rules of `vkCmdBuildAccelerationStructuresIndirectKHR` that apply to this cr
                 ),
             });
         }
+        self.validate_origins_build_acceleration_structures_indirect_khr(infos)?;
         crate::special::acceleration::per_geometry_fits(
             infos,
             max_primitive_counts,
@@ -844,19 +863,19 @@ The caller upholds the rules that [`Self::build_acceleration_structures_indirect
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in infos.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::acceleration_structure_build_geometry_info_khr(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -957,6 +976,7 @@ The rules of `vkCmdBuildAccelerationStructuresKHR` that apply to this crate's AP
                 ),
             });
         }
+        self.validate_origins_build_acceleration_structures_khr(infos)?;
         crate::special::acceleration::per_geometry_fits(
             infos,
             build_range_infos,
@@ -1005,19 +1025,19 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in infos.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::acceleration_structure_build_geometry_info_khr(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -1080,19 +1100,19 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::copy_acceleration_structure_info_khr(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -1158,19 +1178,19 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::copy_acceleration_structure_to_memory_info_khr(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -1236,19 +1256,19 @@ The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::copy_memory_to_acceleration_structure_info_khr(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -1318,7 +1338,7 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesKHR` that apply to this 
 
 # Safety
 
-The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_acceleration_structures_properties_khr`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commonparent`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesKHR-accelerationStructureCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_acceleration_structures_properties_khr_unchecked<'h>(
         &mut self,

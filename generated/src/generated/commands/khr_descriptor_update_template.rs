@@ -57,7 +57,7 @@ The rules of `vkCmdPushDescriptorSetWithTemplateKHR` that apply to this crate's 
 
 # Safety
 
-The caller upholds the rules that [`Self::push_descriptor_set_with_template_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool`, `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkCmdPushDescriptorSetWithTemplateKHR` describes, readable for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::push_descriptor_set_with_template_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commonparent`, `VUID-vkCmdPushDescriptorSetWithTemplateKHR-commandBuffer-cmdpool`, and those of the structs it takes. `data` is passed to Vulkan as is: it must point to data laid out as the specification of `vkCmdPushDescriptorSetWithTemplateKHR` describes, readable for the whole call. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn push_descriptor_set_with_template_khr_unchecked(
         &mut self,

@@ -29,6 +29,7 @@ The rules of `vkAcquireNextImage2KHR` that apply to this crate's API ([reference
         &self,
         acquire_info: &AcquireNextImageInfoKHR<'a>,
     ) -> Result<(u32, crate::status::SuccessTimeoutNotReadyOrSuboptimal)> {
+        self.validate_origins_acquire_next_image2_khr(acquire_info)?;
         crate::special::swapchain::acquire_next_image2_khr_checks(self, acquire_info)?;
         {
             let r = self.validate_acquire_next_image2_khr(acquire_info);

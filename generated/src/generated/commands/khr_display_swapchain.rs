@@ -71,17 +71,18 @@ The caller upholds the rules that [`Self::create_shared_swapchains_khr`] checks 
                     raw,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::swapchain_create_info_khr(
                                 info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained

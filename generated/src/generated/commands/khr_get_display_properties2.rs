@@ -63,6 +63,31 @@ The rules of `vkGetDisplayPlaneCapabilities2KHR` that apply to this crate's API 
         display_plane_info: &DisplayPlaneInfo2KHR<'a>,
         capabilities: &mut DisplayPlaneCapabilities2KHR<'a>,
     ) -> Result<()> {
+        {
+            let r = self
+                .validate_get_display_plane_capabilities2_khr(display_plane_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_display_plane_capabilities2_khr_unchecked(
+                display_plane_info,
+                capabilities,
+            )
+        }
+    }
+    /**`vkGetDisplayPlaneCapabilities2KHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_display_plane_capabilities2_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_display_plane_capabilities2_khr_unchecked<'a>(
+        &self,
+        display_plane_info: &DisplayPlaneInfo2KHR<'a>,
+        capabilities: &mut DisplayPlaneCapabilities2KHR<'a>,
+    ) -> Result<()> {
         let fp = self
             .parent()
             .ext()

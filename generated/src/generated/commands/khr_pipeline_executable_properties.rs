@@ -23,6 +23,31 @@ The rules of `vkGetPipelineExecutableInternalRepresentationsKHR` that apply to t
         &self,
         executable_info: &PipelineExecutableInfoKHR<'a>,
     ) -> Result<Vec<vk::PipelineExecutableInternalRepresentationKHR<'static>>> {
+        {
+            let r = self
+                .validate_get_pipeline_executable_internal_representations_khr(
+                    executable_info,
+                );
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_pipeline_executable_internal_representations_khr_unchecked(
+                executable_info,
+            )
+        }
+    }
+    /**`vkGetPipelineExecutableInternalRepresentationsKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_pipeline_executable_internal_representations_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_pipeline_executable_internal_representations_khr_unchecked<'a>(
+        &self,
+        executable_info: &PipelineExecutableInfoKHR<'a>,
+    ) -> Result<Vec<vk::PipelineExecutableInternalRepresentationKHR<'static>>> {
         let fp = self
             .ext()
             .khr_pipeline_executable_properties
@@ -58,6 +83,24 @@ The rules of `vkGetPipelineExecutablePropertiesKHR` that apply to this crate's A
     #[doc(alias = "vkGetPipelineExecutablePropertiesKHR")]
     #[inline]
     pub fn get_pipeline_executable_properties_khr<'a>(
+        &self,
+        pipeline_info: &PipelineInfoKHR<'a>,
+    ) -> Result<Vec<vk::PipelineExecutablePropertiesKHR<'static>>> {
+        {
+            let r = self.validate_get_pipeline_executable_properties_khr(pipeline_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.get_pipeline_executable_properties_khr_unchecked(pipeline_info) }
+    }
+    /**`vkGetPipelineExecutablePropertiesKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_pipeline_executable_properties_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_pipeline_executable_properties_khr_unchecked<'a>(
         &self,
         pipeline_info: &PipelineInfoKHR<'a>,
     ) -> Result<Vec<vk::PipelineExecutablePropertiesKHR<'static>>> {
@@ -97,6 +140,25 @@ The rules of `vkGetPipelineExecutableStatisticsKHR` that apply to this crate's A
     #[doc(alias = "vkGetPipelineExecutableStatisticsKHR")]
     #[inline]
     pub fn get_pipeline_executable_statistics_khr<'a>(
+        &self,
+        executable_info: &PipelineExecutableInfoKHR<'a>,
+    ) -> Result<Vec<vk::PipelineExecutableStatisticKHR<'static>>> {
+        {
+            let r = self
+                .validate_get_pipeline_executable_statistics_khr(executable_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.get_pipeline_executable_statistics_khr_unchecked(executable_info) }
+    }
+    /**`vkGetPipelineExecutableStatisticsKHR` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_pipeline_executable_statistics_khr`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_pipeline_executable_statistics_khr_unchecked<'a>(
         &self,
         executable_info: &PipelineExecutableInfoKHR<'a>,
     ) -> Result<Vec<vk::PipelineExecutableStatisticKHR<'static>>> {

@@ -56,7 +56,7 @@ The rules of `vkCmdPushDescriptorSetKHR` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::push_descriptor_set_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetKHR-pipelineBindPoint-parameter`, `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool`, `VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength`, `VUID-vkCmdPushDescriptorSetKHR-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::push_descriptor_set_khr`] checks at run time: `VUID-vkCmdPushDescriptorSetKHR-commonparent`, `VUID-vkCmdPushDescriptorSetKHR-pipelineBindPoint-parameter`, `VUID-vkCmdPushDescriptorSetKHR-commandBuffer-cmdpool`, `VUID-vkCmdPushDescriptorSetKHR-descriptorWriteCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn push_descriptor_set_khr_unchecked<'a>(
         &mut self,
@@ -87,15 +87,16 @@ The caller upholds the rules that [`Self::push_descriptor_set_khr`] checks at ru
             self.state_changed();
             self.retain_with(layout.address(), || layout.retained());
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in descriptor_writes.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::write_descriptor_set(e.as_raw(), live, &mut kept)
+                        crate::reach::write_descriptor_set(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);

@@ -464,7 +464,7 @@ The rules of `vkCreateRayTracingPipelinesKHR` that apply to this crate's API ([r
 
 # Safety
 
-The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] checks at run time: `VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength`, `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] checks at run time: `VUID-vkCreateRayTracingPipelinesKHR-pipelineCache-parent`, `VUID-vkCreateRayTracingPipelinesKHR-createInfoCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_ray_tracing_pipelines_khr_unchecked<'a>(
         &self,
@@ -510,17 +510,18 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_khr`] che
                     raw,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::ray_tracing_pipeline_create_info_khr(
                                 info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -582,7 +583,7 @@ The rules of `vkGetRayTracingCaptureReplayShaderGroupHandlesKHR` that apply to t
 
 # Safety
 
-The caller upholds the rules that [`Self::get_ray_tracing_capture_replay_shader_group_handles_khr`] checks at run time: `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength`, `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_ray_tracing_capture_replay_shader_group_handles_khr`] checks at run time: `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-pipeline-parent`, `VUID-vkGetRayTracingCaptureReplayShaderGroupHandlesKHR-dataSize-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_ray_tracing_capture_replay_shader_group_handles_khr_unchecked(
         &self,
@@ -658,7 +659,7 @@ The rules of `vkGetRayTracingShaderGroupHandlesKHR` that apply to this crate's A
 
 # Safety
 
-The caller upholds the rules that [`Self::get_ray_tracing_shader_group_handles_khr`] checks at run time: `VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength`, `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_ray_tracing_shader_group_handles_khr`] checks at run time: `VUID-vkGetRayTracingShaderGroupHandlesKHR-pipeline-parent`, `VUID-vkGetRayTracingShaderGroupHandlesKHR-dataSize-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_ray_tracing_shader_group_handles_khr_unchecked(
         &self,
@@ -732,7 +733,7 @@ The rules of `vkGetRayTracingShaderGroupStackSizeKHR` that apply to this crate's
 
 # Safety
 
-The caller upholds the rules that [`Self::get_ray_tracing_shader_group_stack_size_khr`] checks at run time: `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter`, `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_ray_tracing_shader_group_stack_size_khr`] checks at run time: `VUID-vkGetRayTracingShaderGroupStackSizeKHR-pipeline-parent`, `VUID-vkGetRayTracingShaderGroupStackSizeKHR-groupShader-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_ray_tracing_shader_group_stack_size_khr_unchecked(
         &self,

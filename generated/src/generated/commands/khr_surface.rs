@@ -237,15 +237,12 @@ The rules of `vkGetPhysicalDeviceSurfaceSupportKHR` that apply to this crate's A
         queue_family_index: u32,
         surface: &SurfaceKHR,
     ) -> Result<bool> {
+        self.validate_origins_get_surface_support_khr(surface)?;
         crate::special::surface::queue_family_exists(
             self,
             queue_family_index,
             "VUID-vkGetPhysicalDeviceSurfaceSupportKHR-queueFamilyIndex-01269",
         )?;
-        {
-            let r = self.validate_get_surface_support_khr(surface);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_surface_support_khr_unchecked(queue_family_index, surface) }

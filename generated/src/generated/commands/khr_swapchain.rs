@@ -60,6 +60,7 @@ The rules of `vkAcquireNextImageKHR` that apply to this crate's API ([reference 
             }
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_acquire_next_image_khr(swapchain, semaphore, fence)?;
         crate::special::swapchain::acquire_next_image_khr_checks(
             self,
             swapchain,
@@ -67,10 +68,6 @@ The rules of `vkAcquireNextImageKHR` that apply to this crate's API ([reference 
             semaphore,
             fence,
         )?;
-        {
-            let r = self.validate_acquire_next_image_khr(swapchain, semaphore, fence);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -388,6 +385,7 @@ The rules of `vkQueuePresentKHR` that apply to this crate's API ([reference page
             }
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_present_khr(present_info)?;
         crate::special::swapchain::queue_present_khr_checks(self, present_info)?;
         {
             let r = self.validate_present_khr(present_info);

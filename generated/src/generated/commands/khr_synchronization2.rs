@@ -74,7 +74,7 @@ The rules of `vkCmdWriteBufferMarker2AMD` that apply to this crate's API ([refer
 
 # Safety
 
-The caller upholds the rules that [`Self::write_buffer_marker2_amd`] checks at run time: `VUID-vkCmdWriteBufferMarker2AMD-stage-parameter`, `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarker2AMD-commonparent`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03929`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03930`, `VUID-vkCmdWriteBufferMarker2AMD-synchronization2-03893`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03897`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03898`, `VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03899`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_buffer_marker2_amd`] checks at run time: `VUID-vkCmdWriteBufferMarker2AMD-commonparent`, `VUID-vkCmdWriteBufferMarker2AMD-stage-parameter`, `VUID-vkCmdWriteBufferMarker2AMD-commandBuffer-cmdpool`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03929`, `VUID-vkCmdWriteBufferMarker2AMD-stage-03930`, `VUID-vkCmdWriteBufferMarker2AMD-synchronization2-03893`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03897`, `VUID-vkCmdWriteBufferMarker2AMD-dstBuffer-03898`, `VUID-vkCmdWriteBufferMarker2AMD-dstOffset-03899`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_buffer_marker2_amd_unchecked(
         &mut self,

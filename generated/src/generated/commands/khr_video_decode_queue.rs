@@ -108,15 +108,16 @@ The caller upholds the rules that [`Self::decode_video_khr`] checks at run time:
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(decode_info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::video_decode_info_khr(e.as_raw(), live, &mut kept)
+                        crate::reach::video_decode_info_khr(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);

@@ -55,7 +55,7 @@ The rules of `vkBindVideoSessionMemoryKHR` that apply to this crate's API ([refe
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_video_session_memory_khr`] checks at run time: `VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength`, `VUID-vkBindVideoSessionMemoryKHR-videoSession-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_video_session_memory_khr`] checks at run time: `VUID-vkBindVideoSessionMemoryKHR-videoSession-parent`, `VUID-vkBindVideoSessionMemoryKHR-bindSessionMemoryInfoCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_video_session_memory_khr_unchecked<'a>(
         &self,
@@ -409,19 +409,14 @@ The caller upholds the rules that [`Self::begin_video_coding_khr`] checks at run
             fp(self.raw(), begin_info as *const VideoBeginCodingInfoKHR<'a> as *const _)
         };
         let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
+            let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(begin_info) {
                 // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
-                    crate::reach::video_begin_coding_info_khr(
-                        e.as_raw(),
-                        live,
-                        &mut kept,
-                    )
+                    crate::reach::video_begin_coding_info_khr(e.as_raw(), &mut reached)
                 };
             }
-            kept
+            reached.kept
         };
         for o in kept {
             self.retain(o);

@@ -163,7 +163,7 @@ The rules of `vkCmdCopyMemoryToImageIndirectNV` that apply to this crate's API (
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_memory_to_image_indirect_nv`] checks at run time: `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-parameter`, `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool`, `VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength`, `VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07664`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07665`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07668`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_memory_to_image_indirect_nv`] checks at run time: `VUID-vkCmdCopyMemoryToImageIndirectNV-commonparent`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-parameter`, `VUID-vkCmdCopyMemoryToImageIndirectNV-commandBuffer-cmdpool`, `VUID-vkCmdCopyMemoryToImageIndirectNV-copyCount-arraylength`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07664`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImage-07665`, `VUID-vkCmdCopyMemoryToImageIndirectNV-dstImageLayout-07668`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_memory_to_image_indirect_nv_unchecked(
         &mut self,

@@ -48,7 +48,7 @@ The rules of `vkCmdBindPipelineShaderGroupNV` that apply to this crate's API ([r
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_pipeline_shader_group_nv`] checks at run time: `VUID-vkCmdBindPipelineShaderGroupNV-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-cmdpool`, `VUID-vkCmdBindPipelineShaderGroupNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_pipeline_shader_group_nv`] checks at run time: `VUID-vkCmdBindPipelineShaderGroupNV-commonparent`, `VUID-vkCmdBindPipelineShaderGroupNV-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipelineShaderGroupNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_pipeline_shader_group_nv_unchecked(
         &mut self,
@@ -331,19 +331,19 @@ The caller upholds the rules that [`Self::execute_generated_commands_nv`] checks
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(generated_commands_info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::generated_commands_info_nv(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -414,19 +414,19 @@ The caller upholds the rules that [`Self::preprocess_generated_commands_nv`] che
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(generated_commands_info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::generated_commands_info_nv(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -496,17 +496,16 @@ The caller upholds the rules that [`Self::create_indirect_commands_layout_nv`] c
                 out,
                 self,
                 {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    let mut reached = crate::validation::Reached::keeping(self.live());
                     // SAFETY: the safe info stores every array with its length and chains only
                     // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::indirect_commands_layout_create_info_nv(
                             create_info.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
+                    let kept = reached.kept;
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },

@@ -36,7 +36,7 @@ The rules of `vkGetMemoryWin32HandleNV` that apply to this crate's API ([referen
 
 # Safety
 
-The caller upholds the rules that [`Self::get_memory_win32_handle_nv`] checks at run time: `VUID-vkGetMemoryWin32HandleNV-handleType-parameter`, `VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask`, `VUID-vkGetMemoryWin32HandleNV-memory-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_memory_win32_handle_nv`] checks at run time: `VUID-vkGetMemoryWin32HandleNV-memory-parent`, `VUID-vkGetMemoryWin32HandleNV-handleType-parameter`, `VUID-vkGetMemoryWin32HandleNV-handleType-requiredbitmask`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_memory_win32_handle_nv_unchecked(
         &self,

@@ -247,7 +247,7 @@ The rules of `vkCmdDrawMeshTasksIndirectCountNV` that apply to this crate's API 
 
 # Safety
 
-The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_count_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_count_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectCountNV-commonparent`, `VUID-vkCmdDrawMeshTasksIndirectCountNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn draw_mesh_tasks_indirect_count_nv_unchecked(
         &mut self,
@@ -516,7 +516,7 @@ The rules of `vkCmdDrawMeshTasksIndirectNV` that apply to this crate's API ([ref
 
 # Safety
 
-The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool`, `VUID-vkCmdDrawMeshTasksIndirectNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::draw_mesh_tasks_indirect_nv`] checks at run time: `VUID-vkCmdDrawMeshTasksIndirectNV-commonparent`, `VUID-vkCmdDrawMeshTasksIndirectNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn draw_mesh_tasks_indirect_nv_unchecked(
         &mut self,

@@ -51,7 +51,7 @@ The rules of `vkBindOpticalFlowSessionImageNV` that apply to this crate's API ([
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_optical_flow_session_image_nv`] checks at run time: `VUID-vkBindOpticalFlowSessionImageNV-bindingPoint-parameter`, `VUID-vkBindOpticalFlowSessionImageNV-layout-parameter`, `VUID-vkBindOpticalFlowSessionImageNV-session-parent`, `VUID-vkBindOpticalFlowSessionImageNV-view-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_optical_flow_session_image_nv`] checks at run time: `VUID-vkBindOpticalFlowSessionImageNV-session-parent`, `VUID-vkBindOpticalFlowSessionImageNV-view-parent`, `VUID-vkBindOpticalFlowSessionImageNV-bindingPoint-parameter`, `VUID-vkBindOpticalFlowSessionImageNV-layout-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_optical_flow_session_image_nv_unchecked(
         &self,
@@ -195,7 +195,7 @@ The rules of `vkCmdOpticalFlowExecuteNV` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::optical_flow_execute_nv`] checks at run time: `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool`, `VUID-vkCmdOpticalFlowExecuteNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::optical_flow_execute_nv`] checks at run time: `VUID-vkCmdOpticalFlowExecuteNV-commonparent`, `VUID-vkCmdOpticalFlowExecuteNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn optical_flow_execute_nv_unchecked<'a>(
         &mut self,

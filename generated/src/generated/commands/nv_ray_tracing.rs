@@ -157,17 +157,16 @@ The caller upholds the rules that [`Self::create_acceleration_structure_nv`] che
                 out,
                 self,
                 {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    let mut reached = crate::validation::Reached::keeping(self.live());
                     // SAFETY: the safe info stores every array with its length and chains only
                     // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::acceleration_structure_create_info_nv(
                             create_info.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
+                    let kept = reached.kept;
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },
@@ -214,7 +213,7 @@ The rules of `vkCreateRayTracingPipelinesNV` that apply to this crate's API ([re
 
 # Safety
 
-The caller upholds the rules that [`Self::create_ray_tracing_pipelines_nv`] checks at run time: `VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength`, `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_ray_tracing_pipelines_nv`] checks at run time: `VUID-vkCreateRayTracingPipelinesNV-pipelineCache-parent`, `VUID-vkCreateRayTracingPipelinesNV-createInfoCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_ray_tracing_pipelines_nv_unchecked<'a>(
         &self,
@@ -252,17 +251,18 @@ The caller upholds the rules that [`Self::create_ray_tracing_pipelines_nv`] chec
                     raw,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::ray_tracing_pipeline_create_info_nv(
                                 info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -315,7 +315,7 @@ The rules of `vkGetAccelerationStructureHandleNV` that apply to this crate's API
 
 # Safety
 
-The caller upholds the rules that [`Self::get_acceleration_structure_handle_nv`] checks at run time: `VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength`, `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_acceleration_structure_handle_nv`] checks at run time: `VUID-vkGetAccelerationStructureHandleNV-accelerationStructure-parent`, `VUID-vkGetAccelerationStructureHandleNV-dataSize-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_acceleration_structure_handle_nv_unchecked(
         &self,
@@ -472,7 +472,7 @@ The rules of `vkCmdBuildAccelerationStructureNV` that apply to this crate's API 
 
 # Safety
 
-The caller upholds the rules that [`Self::build_acceleration_structure_nv`] checks at run time: `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool`, `VUID-vkCmdBuildAccelerationStructureNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::build_acceleration_structure_nv`] checks at run time: `VUID-vkCmdBuildAccelerationStructureNV-commonparent`, `VUID-vkCmdBuildAccelerationStructureNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn build_acceleration_structure_nv_unchecked<'a>(
         &mut self,
@@ -510,19 +510,19 @@ The caller upholds the rules that [`Self::build_acceleration_structure_nv`] chec
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::acceleration_structure_info_nv(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -580,7 +580,7 @@ The rules of `vkCmdCopyAccelerationStructureNV` that apply to this crate's API (
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_acceleration_structure_nv`] checks at run time: `VUID-vkCmdCopyAccelerationStructureNV-mode-parameter`, `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool`, `VUID-vkCmdCopyAccelerationStructureNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_acceleration_structure_nv`] checks at run time: `VUID-vkCmdCopyAccelerationStructureNV-commonparent`, `VUID-vkCmdCopyAccelerationStructureNV-mode-parameter`, `VUID-vkCmdCopyAccelerationStructureNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_acceleration_structure_nv_unchecked(
         &mut self,
@@ -753,7 +753,7 @@ The rules of `vkCmdTraceRaysNV` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::trace_rays_nv`] checks at run time: `VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool`, `VUID-vkCmdTraceRaysNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::trace_rays_nv`] checks at run time: `VUID-vkCmdTraceRaysNV-commonparent`, `VUID-vkCmdTraceRaysNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn trace_rays_nv_unchecked(
         &mut self,
@@ -880,7 +880,7 @@ The rules of `vkCmdWriteAccelerationStructuresPropertiesNV` that apply to this c
 
 # Safety
 
-The caller upholds the rules that [`Self::write_acceleration_structures_properties_nv`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_acceleration_structures_properties_nv`] checks at run time: `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commonparent`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-queryType-parameter`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-commandBuffer-cmdpool`, `VUID-vkCmdWriteAccelerationStructuresPropertiesNV-accelerationStructureCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_acceleration_structures_properties_nv_unchecked<'h>(
         &mut self,

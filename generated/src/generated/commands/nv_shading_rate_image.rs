@@ -42,7 +42,7 @@ The rules of `vkCmdBindShadingRateImageNV` that apply to this crate's API ([refe
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_shading_rate_image_nv`] checks at run time: `VUID-vkCmdBindShadingRateImageNV-imageLayout-parameter`, `VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool`, `VUID-vkCmdBindShadingRateImageNV-commonparent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_shading_rate_image_nv`] checks at run time: `VUID-vkCmdBindShadingRateImageNV-commonparent`, `VUID-vkCmdBindShadingRateImageNV-imageLayout-parameter`, `VUID-vkCmdBindShadingRateImageNV-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_shading_rate_image_nv_unchecked(
         &mut self,

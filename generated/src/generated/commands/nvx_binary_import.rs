@@ -22,7 +22,7 @@ The rules of `vkCmdCuLaunchKernelNVX` that apply to this crate's API ([reference
         launch_info: &CuLaunchInfoNVX<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_cu_launch_kernel_nvx();
+            let r = self.validate_cu_launch_kernel_nvx(launch_info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -53,15 +53,16 @@ The caller upholds the rules that [`Self::cu_launch_kernel_nvx`] checks at run t
             };
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(launch_info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::cu_launch_info_nvx(e.as_raw(), live, &mut kept)
+                        crate::reach::cu_launch_info_nvx(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -85,6 +86,24 @@ The rules of `vkCreateCuFunctionNVX` that apply to this crate's API ([reference 
     #[doc(alias = "vkCreateCuFunctionNVX")]
     #[inline]
     pub fn create_cu_function_nvx<'a>(
+        &self,
+        create_info: &CuFunctionCreateInfoNVX<'a>,
+    ) -> Result<CuFunctionNVX> {
+        {
+            let r = self.validate_create_cu_function_nvx(create_info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.create_cu_function_nvx_unchecked(create_info) }
+    }
+    /**`vkCreateCuFunctionNVX` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::create_cu_function_nvx`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn create_cu_function_nvx_unchecked<'a>(
         &self,
         create_info: &CuFunctionCreateInfoNVX<'a>,
     ) -> Result<CuFunctionNVX> {
@@ -112,17 +131,16 @@ The rules of `vkCreateCuFunctionNVX` that apply to this crate's API ([reference 
                 out,
                 self,
                 {
-                    let live = self.live();
-                    let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                    let mut reached = crate::validation::Reached::keeping(self.live());
                     // SAFETY: the safe info stores every array with its length and chains only
                     // structs pushed through `push_next`.
                     unsafe {
                         crate::reach::cu_function_create_info_nvx(
                             create_info.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
+                    let kept = reached.kept;
                     (!kept.is_empty())
                         .then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
                 },

@@ -110,6 +110,7 @@ The rules of `vkAllocateDescriptorSets` that apply to this crate's API ([referen
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_allocate_descriptor_sets(allocate_info)?;
         crate::special::descriptors::allocate_descriptor_sets_checks(allocate_info)?;
         {
             let r = self.validate_allocate_descriptor_sets(allocate_info);
@@ -275,16 +276,13 @@ The rules of `vkBindBufferMemory` that apply to this crate's API ([reference pag
             syncs.push(buffer.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_bind_buffer_memory(buffer, memory)?;
         crate::special::memory::bind_buffer_memory_checks(
             self,
             buffer,
             memory,
             memory_offset,
         )?;
-        {
-            let r = self.validate_bind_buffer_memory(buffer, memory);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.bind_buffer_memory_unchecked(buffer, memory, memory_offset) }
@@ -367,16 +365,13 @@ The rules of `vkBindImageMemory` that apply to this crate's API ([reference page
             syncs.push(image.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_bind_image_memory(image, memory)?;
         crate::special::memory::bind_image_memory_checks(
             self,
             image,
             memory,
             memory_offset,
         )?;
-        {
-            let r = self.validate_bind_image_memory(image, memory);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.bind_image_memory_unchecked(image, memory, memory_offset) }
@@ -472,17 +467,18 @@ The caller upholds the rules that [`Self::create_buffer`] checks at run time: `V
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::buffer_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -563,17 +559,18 @@ The caller upholds the rules that [`Self::create_buffer_view`] checks at run tim
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::buffer_view_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -666,9 +663,10 @@ The rules of `vkCreateComputePipelines` that apply to this crate's API ([referen
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[ComputePipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
+        self.validate_origins_create_compute_pipelines(pipeline_cache, create_infos)?;
         crate::special::pipeline::create_compute_pipelines_checks(self, create_infos)?;
         {
-            let r = self.validate_create_compute_pipelines(pipeline_cache, create_infos);
+            let r = self.validate_create_compute_pipelines(create_infos);
             r?;
         }
         let _held = crate::special::pipeline::pipeline_cache_hold(self, pipeline_cache)?;
@@ -680,7 +678,7 @@ The rules of `vkCreateComputePipelines` that apply to this crate's API ([referen
 
 # Safety
 
-The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-VkComputePipelineCreateInfo-flags-00700`, `VUID-VkComputePipelineCreateInfo-layout-01687`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationMapEntry-constantID-00776`, `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`, `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`, `VUID-VkPipelineShaderStageCreateInfo-maxCombinedClipAndCullDistances-00710`, `VUID-VkPipelineShaderStageCreateInfo-maxSampleMaskWords-00711`, `VUID-VkPipelineShaderStageCreateInfo-stage-00712`, `VUID-VkPipelineShaderStageCreateInfo-stage-00718`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkComputePipelineCreateInfo-stage-00702`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-vkCreateComputePipelines-pipelineCache-02873`, `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`, `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`, `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`, `VUID-VkPipelineShaderStageCreateInfo-pName-00707`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`, `VUID-VkPipelineShaderStageCreateInfo-flags-02758`, `VUID-VkPipelineShaderStageCreateInfo-flags-02759`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_compute_pipelines`] checks at run time: `VUID-vkCreateComputePipelines-pipelineCache-parent`, `VUID-vkCreateComputePipelines-createInfoCount-arraylength`, `VUID-VkComputePipelineCreateInfo-stage-00701`, `VUID-VkComputePipelineCreateInfo-flags-00697`, `VUID-VkComputePipelineCreateInfo-flags-00698`, `VUID-VkComputePipelineCreateInfo-flags-00699`, `VUID-vkCreateComputePipelines-flags-00695`, `VUID-VkComputePipelineCreateInfo-flags-00700`, `VUID-VkComputePipelineCreateInfo-layout-01687`, `VUID-vkCreateComputePipelines-flags-00696`, `VUID-VkSpecializationInfo-offset-00773`, `VUID-VkSpecializationMapEntry-constantID-00776`, `VUID-VkPipelineShaderStageCreateInfo-maxClipDistances-00708`, `VUID-VkPipelineShaderStageCreateInfo-maxCullDistances-00709`, `VUID-VkPipelineShaderStageCreateInfo-maxCombinedClipAndCullDistances-00710`, `VUID-VkPipelineShaderStageCreateInfo-maxSampleMaskWords-00711`, `VUID-VkPipelineShaderStageCreateInfo-stage-00712`, `VUID-VkPipelineShaderStageCreateInfo-stage-00718`, `VUID-VkSpecializationInfo-pMapEntries-00774`, `VUID-VkComputePipelineCreateInfo-layout-00703`, `VUID-VkComputePipelineCreateInfo-stage-00702`, `VUID-VkPipelineShaderStageCreateInfo-module-06716`, `VUID-vkCreateComputePipelines-pipelineCache-02873`, `VUID-vkCreateGraphicsPipelines-pipelineCache-02876`, `VUID-VkComputePipelineCreateInfo-pipelineStageCreationFeedbackCount-06566`, `VUID-VkGraphicsPipelineCreateInfo-pipelineStageCreationFeedbackCount-06594`, `VUID-VkPipelineShaderStageCreateInfo-pName-00707`, `VUID-VkPipelineShaderStageCreateInfo-flags-02784`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02756`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02757`, `VUID-VkPipelineShaderStageCreateInfo-flags-02758`, `VUID-VkPipelineShaderStageCreateInfo-flags-02759`, `VUID-VkPipelineShaderStageCreateInfo-flags-02785`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02754`, `VUID-VkPipelineShaderStageCreateInfo-pNext-02755`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02760`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02761`, `VUID-VkPipelineShaderStageRequiredSubgroupSizeCreateInfo-requiredSubgroupSize-02762`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_compute_pipelines_unchecked<'a>(
         &self,
@@ -715,17 +713,18 @@ The caller upholds the rules that [`Self::create_compute_pipelines`] checks at r
                         raw,
                         self,
                         {
-                            let live = self.live();
-                            let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                            let mut reached = crate::validation::Reached::keeping(
+                                self.live(),
+                            );
                             // SAFETY: the safe info stores every array with its length and chains
                             // only structs pushed through `push_next`.
                             unsafe {
                                 crate::reach::compute_pipeline_create_info(
                                     info.as_raw(),
-                                    live,
-                                    &mut kept,
+                                    &mut reached,
                                 )
                             };
+                            let kept = reached.kept;
                             (!kept.is_empty())
                                 .then(|| {
                                     tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -879,17 +878,18 @@ The caller upholds the rules that [`Self::create_descriptor_set_layout`] checks 
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::descriptor_set_layout_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -1074,17 +1074,18 @@ The caller upholds the rules that [`Self::create_framebuffer`] checks at run tim
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::framebuffer_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -1127,10 +1128,10 @@ The rules of `vkCreateGraphicsPipelines` that apply to this crate's API ([refere
         pipeline_cache: Option<&PipelineCache>,
         create_infos: &[GraphicsPipelineCreateInfo<'a>],
     ) -> Result<(Vec<Pipeline>, crate::status::SuccessOrPipelineCompileRequired)> {
+        self.validate_origins_create_graphics_pipelines(pipeline_cache, create_infos)?;
         crate::special::pipeline::create_graphics_pipelines_checks(self, create_infos)?;
         {
-            let r = self
-                .validate_create_graphics_pipelines(pipeline_cache, create_infos);
+            let r = self.validate_create_graphics_pipelines(create_infos);
             r?;
         }
         crate::special::pipeline::graphics_pipeline_state_checks(self, create_infos)?;
@@ -1143,7 +1144,7 @@ The rules of `vkCreateGraphicsPipelines` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442`, `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616`, `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617`, `VUID-VkPipelineVertexInputStateCreateInfo-binding-00615`, `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428`, `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429`, `VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214`, `VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786`, `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`, `VUID-VkSpecializationInfo-constantID-04911`, `VUID-VkGraphicsPipelineCreateInfo-layout-00756`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`, `VUID-VkPipelineViewportStateCreateInfo-x-02821`, `VUID-VkPipelineViewportStateCreateInfo-offset-02822`, `VUID-VkPipelineViewportStateCreateInfo-offset-02823`, `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`, `VUID-VkGraphicsPipelineCreateInfo-flags-00764`, `VUID-VkGraphicsPipelineCreateInfo-flags-00722`, `VUID-VkGraphicsPipelineCreateInfo-flags-00723`, `VUID-VkGraphicsPipelineCreateInfo-flags-00724`, `VUID-VkGraphicsPipelineCreateInfo-flags-00725`, `VUID-VkVertexInputAttributeDescription-format-00623`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06603`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06894`, `VUID-VkGraphicsPipelineCreateInfo-subpass-00758`, `VUID-VkGraphicsPipelineCreateInfo-layout-01688`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00738`, `VUID-VkGraphicsPipelineCreateInfo-Vertex-07722`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00740`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00742`, `VUID-VkGraphicsPipelineCreateInfo-None-04889`, `VUID-VkGraphicsPipelineCreateInfo-pStages-01565`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06047`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06048`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06049`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06050`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06057`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06058`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-07718`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06059`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-07719`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-07717`, `VUID-VkGraphicsPipelineCreateInfo-None-06573`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06038`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06056`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06061`, `VUID-VkGraphicsPipelineCreateInfo-Geometry-07725`, `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723`, `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07724`, `VUID-VkGraphicsPipelineCreateInfo-Geometry-07726`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00739`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00732`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00733`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00734`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00735`, `VUID-VkPipelineShaderStageCreateInfo-stage-00713`, `VUID-VkPipelineShaderStageCreateInfo-stage-00714`, `VUID-VkPipelineShaderStageCreateInfo-stage-00715`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06895`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06896`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06579`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06580`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06583`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06584`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06053`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06054`, `VUID-VkGraphicsPipelineCreateInfo-pViewportState-04892`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06575`, `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354`, `VUID-vkCreateGraphicsPipelines-flags-00720`, `VUID-vkCreateGraphicsPipelines-flags-00721`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04869`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04870`, `VUID-VkGraphicsPipelineCreateInfo-stage-06897`, `VUID-VkGraphicsPipelineCreateInfo-stage-00727`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00729`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00730`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00731`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00736`, `VUID-VkGraphicsPipelineCreateInfo-topology-00737`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02097`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02098`, `VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601`, `VUID-VkGraphicsPipelineCreateInfo-layout-06602`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06046`, `VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576`, `VUID-VkGraphicsPipelineCreateInfo-multiview-06577`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06578`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06581`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06585`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06586`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06587`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06588`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06589`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06043`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06044`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06042`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06055`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06041`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06062`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at run time: `VUID-vkCreateGraphicsPipelines-pipelineCache-parent`, `VUID-vkCreateGraphicsPipelines-createInfoCount-arraylength`, `VUID-VkPipelineDynamicStateCreateInfo-pDynamicStates-01442`, `VUID-VkPipelineVertexInputStateCreateInfo-pVertexBindingDescriptions-00616`, `VUID-VkPipelineVertexInputStateCreateInfo-pVertexAttributeDescriptions-00617`, `VUID-VkPipelineVertexInputStateCreateInfo-binding-00615`, `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00428`, `VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429`, `VUID-VkPipelineTessellationStateCreateInfo-patchControlPoints-01214`, `VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786`, `VUID-VkPipelineColorBlendStateCreateInfo-logicOpEnable-00607`, `VUID-VkSpecializationInfo-constantID-04911`, `VUID-VkGraphicsPipelineCreateInfo-layout-00756`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-04135`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-arraylength`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-arraylength`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04136`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-04134`, `VUID-VkPipelineViewportStateCreateInfo-x-02821`, `VUID-VkPipelineViewportStateCreateInfo-offset-02822`, `VUID-VkPipelineViewportStateCreateInfo-offset-02823`, `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605`, `VUID-VkGraphicsPipelineCreateInfo-flags-00764`, `VUID-VkGraphicsPipelineCreateInfo-flags-00722`, `VUID-VkGraphicsPipelineCreateInfo-flags-00723`, `VUID-VkGraphicsPipelineCreateInfo-flags-00724`, `VUID-VkGraphicsPipelineCreateInfo-flags-00725`, `VUID-VkVertexInputAttributeDescription-format-00623`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06603`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06894`, `VUID-VkGraphicsPipelineCreateInfo-subpass-00758`, `VUID-VkGraphicsPipelineCreateInfo-layout-01688`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00738`, `VUID-VkGraphicsPipelineCreateInfo-Vertex-07722`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00740`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00742`, `VUID-VkGraphicsPipelineCreateInfo-None-04889`, `VUID-VkGraphicsPipelineCreateInfo-pStages-01565`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06047`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06048`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06049`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06050`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06057`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06058`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-07718`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06059`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-07719`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-07717`, `VUID-VkGraphicsPipelineCreateInfo-None-06573`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06038`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06056`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06061`, `VUID-VkGraphicsPipelineCreateInfo-Geometry-07725`, `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07723`, `VUID-VkGraphicsPipelineCreateInfo-TessellationEvaluation-07724`, `VUID-VkGraphicsPipelineCreateInfo-Geometry-07726`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00739`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00732`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00733`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00734`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00735`, `VUID-VkPipelineShaderStageCreateInfo-stage-00713`, `VUID-VkPipelineShaderStageCreateInfo-stage-00714`, `VUID-VkPipelineShaderStageCreateInfo-stage-00715`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06895`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06896`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06579`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06580`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06583`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06584`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06053`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06054`, `VUID-VkGraphicsPipelineCreateInfo-pViewportState-04892`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06575`, `VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-07354`, `VUID-vkCreateGraphicsPipelines-flags-00720`, `VUID-vkCreateGraphicsPipelines-flags-00721`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04869`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04870`, `VUID-VkGraphicsPipelineCreateInfo-stage-06897`, `VUID-VkGraphicsPipelineCreateInfo-stage-00727`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00729`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00730`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00731`, `VUID-VkGraphicsPipelineCreateInfo-pStages-00736`, `VUID-VkGraphicsPipelineCreateInfo-topology-00737`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02097`, `VUID-VkGraphicsPipelineCreateInfo-pStages-02098`, `VUID-VkGraphicsPipelineCreateInfo-pRasterizationState-06601`, `VUID-VkGraphicsPipelineCreateInfo-layout-06602`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00750`, `VUID-VkGraphicsPipelineCreateInfo-rasterizerDiscardEnable-00751`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06046`, `VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576`, `VUID-VkGraphicsPipelineCreateInfo-multiview-06577`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06578`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06581`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06585`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06586`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06587`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06588`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06589`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06043`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06044`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06042`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06055`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06041`, `VUID-VkGraphicsPipelineCreateInfo-renderPass-06062`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00749`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00754`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-00755`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03379`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-03380`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04132`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04133`, `VUID-VkGraphicsPipelineCreateInfo-pStages-06600`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04130`, `VUID-VkGraphicsPipelineCreateInfo-pDynamicStates-04131`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01216`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01217`, `VUID-VkPipelineViewportStateCreateInfo-viewportCount-01218`, `VUID-VkPipelineViewportStateCreateInfo-scissorCount-01219`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_graphics_pipelines_unchecked<'a>(
         &self,
@@ -1178,17 +1179,18 @@ The caller upholds the rules that [`Self::create_graphics_pipelines`] checks at 
                         raw,
                         self,
                         {
-                            let live = self.live();
-                            let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                            let mut reached = crate::validation::Reached::keeping(
+                                self.live(),
+                            );
                             // SAFETY: the safe info stores every array with its length and chains
                             // only structs pushed through `push_next`.
                             unsafe {
                                 crate::reach::graphics_pipeline_create_info(
                                     info.as_raw(),
-                                    live,
-                                    &mut kept,
+                                    &mut reached,
                                 )
                             };
+                            let kept = reached.kept;
                             (!kept.is_empty())
                                 .then(|| {
                                     tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -1258,17 +1260,18 @@ The caller upholds the rules that [`Self::create_image`] checks at run time: `VU
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::image_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -1349,17 +1352,18 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::image_view_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -1499,17 +1503,18 @@ The caller upholds the rules that [`Self::create_pipeline_layout`] checks at run
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::pipeline_layout_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -1732,17 +1737,18 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time: `
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::sampler_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -1898,17 +1904,18 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::shader_module_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -2066,11 +2073,8 @@ The rules of `vkGetDeviceMemoryCommitment` that apply to this crate's API ([refe
         &self,
         memory: &DeviceMemory,
     ) -> Result<vk::DeviceSize> {
+        self.validate_origins_get_device_memory_commitment(memory)?;
         crate::special::memory::lazily_allocated(self, memory)?;
-        {
-            let r = self.validate_get_device_memory_commitment(memory);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         Ok(unsafe { self.get_device_memory_commitment_unchecked(memory) })
@@ -2159,15 +2163,12 @@ The rules of `vkGetEventStatus` that apply to this crate's API ([reference page]
         &self,
         event: &Event,
     ) -> Result<crate::status::EventSetOrEventReset> {
+        self.validate_origins_get_event_status(event)?;
         crate::special::sync::host_event(
             self,
             event,
             "VUID-vkGetEventStatus-event-03940",
         )?;
-        {
-            let r = self.validate_get_event_status(event);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_event_status_unchecked(event) }
@@ -2250,11 +2251,8 @@ The rules of `vkGetImageMemoryRequirements` that apply to this crate's API ([ref
         &self,
         image: &Image,
     ) -> Result<vk::MemoryRequirements> {
+        self.validate_origins_get_image_memory_requirements(image)?;
         crate::special::memory::whole_image_requirements(self, image)?;
-        {
-            let r = self.validate_get_image_memory_requirements(image);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         Ok(unsafe { self.get_image_memory_requirements_unchecked(image) })
@@ -2484,6 +2482,7 @@ The rules of `vkGetQueryPoolResults` that apply to this crate's API ([reference 
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
     ) -> Result<crate::status::SuccessOrNotReady> {
+        self.validate_origins_get_query_pool_results(query_pool)?;
         crate::special::query::get_query_pool_results_checks(
             self,
             query_pool,
@@ -2494,7 +2493,7 @@ The rules of `vkGetQueryPoolResults` that apply to this crate's API ([reference 
             flags,
         )?;
         {
-            let r = self.validate_get_query_pool_results(query_pool, data, flags);
+            let r = self.validate_get_query_pool_results(data, flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2514,7 +2513,7 @@ The rules of `vkGetQueryPoolResults` that apply to this crate's API ([reference 
 
 # Safety
 
-The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-queryPool-parent`, `VUID-vkGetQueryPoolResults-firstQuery-00813`, `VUID-vkGetQueryPoolResults-firstQuery-00816`, `VUID-vkGetQueryPoolResults-flags-00815`, `VUID-vkGetQueryPoolResults-flags-02827`, `VUID-vkGetQueryPoolResults-dataSize-00817`, `VUID-vkGetQueryPoolResults-queryType-00818`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_query_pool_results`] checks at run time: `VUID-vkGetQueryPoolResults-queryPool-parent`, `VUID-vkGetQueryPoolResults-flags-parameter`, `VUID-vkGetQueryPoolResults-dataSize-arraylength`, `VUID-vkGetQueryPoolResults-firstQuery-00813`, `VUID-vkGetQueryPoolResults-firstQuery-00816`, `VUID-vkGetQueryPoolResults-flags-00815`, `VUID-vkGetQueryPoolResults-flags-02827`, `VUID-vkGetQueryPoolResults-dataSize-00817`, `VUID-vkGetQueryPoolResults-queryType-00818`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_query_pool_results_unchecked(
         &self,
@@ -2667,9 +2666,10 @@ The rules of `vkMergePipelineCaches` that apply to this crate's API ([reference 
             syncs.push(dst_cache.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_merge_pipeline_caches(dst_cache, src_caches)?;
         crate::special::pipeline::merge_pipeline_caches_checks(dst_cache, src_caches)?;
         {
-            let r = self.validate_merge_pipeline_caches(dst_cache, src_caches);
+            let r = self.validate_merge_pipeline_caches(src_caches);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2680,7 +2680,7 @@ The rules of `vkMergePipelineCaches` that apply to this crate's API ([reference 
 
 # Safety
 
-The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, `VUID-vkMergePipelineCaches-dstCache-00770`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::merge_pipeline_caches`] checks at run time: `VUID-vkMergePipelineCaches-dstCache-parent`, `VUID-vkMergePipelineCaches-pSrcCaches-parent`, `VUID-vkMergePipelineCaches-srcCacheCount-arraylength`, `VUID-vkMergePipelineCaches-dstCache-00770`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn merge_pipeline_caches_unchecked<'h>(
         &self,
@@ -2735,9 +2735,10 @@ The rules of `vkResetCommandPool` that apply to this crate's API ([reference pag
             syncs.push(command_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_reset_command_pool(command_pool)?;
         crate::special::command_buffers::reset_command_pool_checks(self, command_pool)?;
         {
-            let r = self.validate_reset_command_pool(command_pool, flags);
+            let r = self.validate_reset_command_pool(flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2748,7 +2749,7 @@ The rules of `vkResetCommandPool` that apply to this crate's API ([reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-parent`, `VUID-vkResetCommandPool-commandPool-00040`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_command_pool`] checks at run time: `VUID-vkResetCommandPool-commandPool-parent`, `VUID-vkResetCommandPool-flags-parameter`, `VUID-vkResetCommandPool-commandPool-00040`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_command_pool_unchecked(
         &self,
@@ -2794,9 +2795,10 @@ The rules of `vkResetDescriptorPool` that apply to this crate's API ([reference 
             syncs.push(descriptor_pool.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_reset_descriptor_pool(descriptor_pool)?;
         crate::special::descriptors::reset_descriptor_pool_checks(descriptor_pool)?;
         {
-            let r = self.validate_reset_descriptor_pool(descriptor_pool, flags);
+            let r = self.validate_reset_descriptor_pool(flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -2807,7 +2809,7 @@ The rules of `vkResetDescriptorPool` that apply to this crate's API ([reference 
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-parent`, `VUID-vkResetDescriptorPool-descriptorPool-00313`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run time: `VUID-vkResetDescriptorPool-descriptorPool-parent`, `VUID-vkResetDescriptorPool-flags-zerobitmask`, `VUID-vkResetDescriptorPool-descriptorPool-00313`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_descriptor_pool_unchecked(
         &self,
@@ -2857,11 +2859,8 @@ The rules of `vkResetEvent` that apply to this crate's API ([reference page](htt
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_reset_event(event)?;
         crate::special::sync::host_event(self, event, "VUID-vkResetEvent-event-03823")?;
-        {
-            let r = self.validate_reset_event(event);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.reset_event_unchecked(event) }
@@ -2915,6 +2914,7 @@ The rules of `vkResetFences` that apply to this crate's API ([reference page](ht
             }
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_reset_fences(fences)?;
         crate::special::sync::reset_fences_checks(self, fences)?;
         {
             let r = self.validate_reset_fences(fences);
@@ -2928,7 +2928,7 @@ The rules of `vkResetFences` that apply to this crate's API ([reference page](ht
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_fences`] checks at run time: `VUID-vkResetFences-pFences-parent`, `VUID-vkResetFences-fenceCount-arraylength`, `VUID-vkResetFences-pFences-01123`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_fences_unchecked<'h>(
         &self,
@@ -2978,11 +2978,8 @@ The rules of `vkSetEvent` that apply to this crate's API ([reference page](https
             syncs.push(event.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_set_event(event)?;
         crate::special::sync::host_event(self, event, "VUID-vkSetEvent-event-03941")?;
-        {
-            let r = self.validate_set_event(event);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.set_event_unchecked(event) }
@@ -3045,6 +3042,10 @@ The rules of `vkUpdateDescriptorSets` that apply to this crate's API ([reference
         descriptor_writes: &[WriteDescriptorSet<'a>],
         descriptor_copies: &[CopyDescriptorSet<'a>],
     ) -> Result<()> {
+        self.validate_origins_update_descriptor_sets(
+            descriptor_writes,
+            descriptor_copies,
+        )?;
         crate::special::descriptors::update_descriptor_sets_checks(
             self,
             descriptor_writes,
@@ -3128,7 +3129,7 @@ The rules of `vkWaitForFences` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-fenceCount-arraylength`, `VUID-vkWaitForFences-pFences-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::wait_for_fences`] checks at run time: `VUID-vkWaitForFences-pFences-parent`, `VUID-vkWaitForFences-fenceCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn wait_for_fences_unchecked<'h>(
         &self,

@@ -29,6 +29,7 @@ The rules of `vkCreateDevice` that apply to this crate's API ([reference page](h
         &self,
         create_info: &DeviceCreateInfo<'a>,
     ) -> Result<Device> {
+        self.validate_origins_create_device(create_info)?;
         crate::special::device::device_extensions_emitted(create_info)?;
         {
             let r = self.validate_create_device(create_info);
@@ -632,9 +633,10 @@ The rules of `vkQueueBindSparse` that apply to this crate's API ([reference page
             syncs.push(fence.host_sync().clone());
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_bind_sparse(bind_info, fence)?;
         crate::special::queue::queue_bind_sparse_checks(self, bind_info, fence)?;
         {
-            let r = self.validate_bind_sparse(bind_info, fence);
+            let r = self.validate_bind_sparse(bind_info);
             r?;
         }
         let _held = crate::special::queue::queue_bind_sparse_hold(self, bind_info)?;
@@ -646,7 +648,7 @@ The rules of `vkQueueBindSparse` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, `VUID-vkQueueBindSparse-pWaitSemaphores-03245`, `VUID-vkQueueBindSparse-pWaitSemaphores-01117`, `VUID-vkQueueBindSparse-pSignalSemaphores-01115`, `VUID-vkQueueBindSparse-pWaitSemaphores-01116`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_sparse`] checks at run time: `VUID-vkQueueBindSparse-commonparent`, `VUID-vkQueueBindSparse-queuetype`, `VUID-vkQueueBindSparse-fence-01113`, `VUID-vkQueueBindSparse-fence-01114`, `VUID-VkBindSparseInfo-pWaitSemaphores-03246`, `VUID-VkBindSparseInfo-pNext-03247`, `VUID-VkBindSparseInfo-pNext-03248`, `VUID-vkQueueBindSparse-pWaitSemaphores-03245`, `VUID-vkQueueBindSparse-pWaitSemaphores-01117`, `VUID-vkQueueBindSparse-pSignalSemaphores-01115`, `VUID-vkQueueBindSparse-pWaitSemaphores-01116`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_sparse_unchecked<'a>(
         &self,
@@ -720,9 +722,10 @@ The rules of `vkQueueSubmit` that apply to this crate's API ([reference page](ht
             }
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_submit(submits, fence)?;
         crate::special::queue::queue_submit_checks(self, submits, fence)?;
         {
-            let r = self.validate_submit(submits, fence);
+            let r = self.validate_submit(submits);
             r?;
         }
         let _held = crate::special::queue::queue_submit_hold(self, submits)?;

@@ -64,9 +64,10 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
         query: u32,
         flags: vk::QueryControlFlags,
     ) -> Result<()> {
+        self.validate_origins_begin_query(query_pool)?;
         crate::special::query::begin_query_checks(self, query_pool, query)?;
         {
-            let r = self.validate_begin_query(query_pool, flags);
+            let r = self.validate_begin_query(flags);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -77,7 +78,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn begin_query_unchecked(
         &mut self,
@@ -127,9 +128,10 @@ The rules of `vkCmdEndQuery` that apply to this crate's API ([reference page](ht
         query_pool: &QueryPool,
         query: u32,
     ) -> Result<()> {
+        self.validate_origins_end_query(query_pool)?;
         crate::special::query::end_query_checks(self, query_pool, query)?;
         {
-            let r = self.validate_end_query(query_pool);
+            let r = self.validate_end_query();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -140,7 +142,7 @@ The rules of `vkCmdEndQuery` that apply to this crate's API ([reference page](ht
 
 # Safety
 
-The caller upholds the rules that [`Self::end_query`] checks at run time: `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-commonparent`, `VUID-vkCmdEndQuery-query-00810`, `VUID-vkCmdEndQuery-None-01923`, `VUID-vkCmdEndQuery-None-07007`, `VUID-vkCmdEndQuery-None-07008`, `VUID-vkCmdEndQuery-query-00812`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_query`] checks at run time: `VUID-vkCmdEndQuery-commonparent`, `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-query-00810`, `VUID-vkCmdEndQuery-None-01923`, `VUID-vkCmdEndQuery-None-07007`, `VUID-vkCmdEndQuery-None-07008`, `VUID-vkCmdEndQuery-query-00812`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn end_query_unchecked(
         &mut self,
@@ -237,6 +239,10 @@ The rules of `vkCmdPipelineBarrier` that apply to this crate's API ([reference p
         buffer_memory_barriers: &[BufferMemoryBarrier<'a>],
         image_memory_barriers: &[ImageMemoryBarrier<'a>],
     ) -> Result<()> {
+        self.validate_origins_pipeline_barrier(
+            buffer_memory_barriers,
+            image_memory_barriers,
+        )?;
         crate::special::barriers::pipeline_barrier_checks(
             self,
             src_stage_mask,
@@ -309,29 +315,31 @@ The caller upholds the rules that [`Self::pipeline_barrier`] checks at run time:
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in buffer_memory_barriers.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
+                        crate::reach::buffer_memory_barrier(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
             }
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in image_memory_barriers.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
+                        crate::reach::image_memory_barrier(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -427,6 +435,11 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
         let events_given = events;
         #[allow(unused_variables)]
         let events = crate::Handles::wrappers(&events_given);
+        self.validate_origins_wait_events(
+            events,
+            buffer_memory_barriers,
+            image_memory_barriers,
+        )?;
         crate::special::sync::wait_events_checks(
             self,
             buffer_memory_barriers,
@@ -461,7 +474,7 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn wait_events_unchecked<'a, 'h>(
         &mut self,
@@ -499,29 +512,31 @@ The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUI
             crate::special::sync::wait_events_done(self, events, image_memory_barriers);
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in buffer_memory_barriers.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::buffer_memory_barrier(e.as_raw(), live, &mut kept)
+                        crate::reach::buffer_memory_barrier(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
             }
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in image_memory_barriers.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::image_memory_barrier(e.as_raw(), live, &mut kept)
+                        crate::reach::image_memory_barrier(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -594,7 +609,7 @@ The rules of `vkCmdWriteTimestamp` that apply to this crate's API ([reference pa
 
 # Safety
 
-The caller upholds the rules that [`Self::write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, `VUID-vkCmdWriteTimestamp-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, `VUID-vkCmdWriteTimestamp-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_timestamp_unchecked(
         &mut self,

@@ -52,11 +52,13 @@ The rules of `vkCmdBeginRenderPass` that apply to this crate's API ([reference p
         render_pass_begin: &RenderPassBeginInfo<'a>,
         contents: vk::SubpassContents,
     ) -> Recorder<'c, InRenderPass> {
-        let always: Result<()> = crate::special::pass_instance::begin_render_pass_checks(
-            &self,
-            render_pass_begin,
-            &crate::special::pass_instance::BEGIN,
-        );
+        let always: Result<()> = self
+            .validate_origins_begin_render_pass(render_pass_begin)
+            .and_then(|()| crate::special::pass_instance::begin_render_pass_checks(
+                &self,
+                render_pass_begin,
+                &crate::special::pass_instance::BEGIN,
+            ));
         {
             let r = always
                 .and_then(|()| {
@@ -98,15 +100,14 @@ The caller upholds the rules that [`Self::begin_render_pass`] checks at run time
             "VUID-vkCmdBeginRenderPass-initialLayout-00900",
         );
         let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
+            let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(render_pass_begin) {
                 // SAFETY: the safe structs store every pointer with its length.
                 unsafe {
-                    crate::reach::render_pass_begin_info(e.as_raw(), live, &mut kept)
+                    crate::reach::render_pass_begin_info(e.as_raw(), &mut reached)
                 };
             }
-            kept
+            reached.kept
         };
         for o in kept {
             self.retain(o);
@@ -219,6 +220,7 @@ The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](h
         regions: &[vk::ImageBlit],
         filter: vk::Filter,
     ) -> Result<()> {
+        self.validate_origins_blit_image(src_image, dst_image)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::BlitImage(
@@ -258,7 +260,7 @@ The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](h
 
 # Safety
 
-The caller upholds the rules that [`Self::blit_image`] checks at run time: `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, `VUID-vkCmdBlitImage-srcImageLayout-00221`, `VUID-vkCmdBlitImage-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::blit_image`] checks at run time: `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, `VUID-vkCmdBlitImage-srcImageLayout-00221`, `VUID-vkCmdBlitImage-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn blit_image_unchecked(
         &mut self,
@@ -355,6 +357,7 @@ The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference p
         color: &vk::ClearColorValue,
         ranges: &[vk::ImageSubresourceRange],
     ) -> Result<()> {
+        self.validate_origins_clear_color_image(image)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::ClearColor(
@@ -375,7 +378,7 @@ The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, `VUID-vkCmdClearColorImage-imageLayout-00004`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, `VUID-vkCmdClearColorImage-imageLayout-00004`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn clear_color_image_unchecked(
         &mut self,
@@ -472,6 +475,7 @@ The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([refe
         depth_stencil: &vk::ClearDepthStencilValue,
         ranges: &[vk::ImageSubresourceRange],
     ) -> Result<()> {
+        self.validate_origins_clear_depth_stencil_image(image)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::ClearDepthStencil(
@@ -505,7 +509,7 @@ The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([refe
 
 # Safety
 
-The caller upholds the rules that [`Self::clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn clear_depth_stencil_image_unchecked(
         &mut self,
@@ -584,6 +588,7 @@ The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](
         dst_buffer: &Buffer,
         regions: &[vk::BufferCopy],
     ) -> Result<()> {
+        self.validate_origins_copy_buffer(src_buffer, dst_buffer)?;
         crate::special::copies::cmd_copy_buffer_checks(
             self,
             src_buffer,
@@ -591,7 +596,7 @@ The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](
             regions,
         )?;
         {
-            let r = self.validate_copy_buffer(src_buffer, dst_buffer, regions);
+            let r = self.validate_copy_buffer(regions);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -602,7 +607,7 @@ The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_buffer_unchecked(
         &mut self,
@@ -705,6 +710,7 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::BufferImageCopy],
     ) -> Result<()> {
+        self.validate_origins_copy_buffer_to_image(src_buffer, dst_image)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::BufferToImage(
@@ -744,7 +750,7 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`, `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`, `VUID-vkCmdCopyBufferToImage-pRegions-07274`, `VUID-vkCmdCopyBufferToImage-pRegions-07275`, `VUID-vkCmdCopyBufferToImage-imageExtent-00207`, `VUID-vkCmdCopyBufferToImage-imageExtent-00208`, `VUID-vkCmdCopyBufferToImage-pRegions-07273`, `VUID-vkCmdCopyBufferToImage-srcImage-04053`, `VUID-vkCmdCopyBufferToImage-pRegions-07277`, `VUID-vkCmdCopyBufferToImage-dstImage-00179`, `VUID-vkCmdCopyBufferToImage-pRegions-00173`, `VUID-vkCmdCopyBufferToImage-srcImage-00201`, `VUID-vkCmdCopyBufferToImage-imageOffset-00200`, `VUID-vkCmdCopyBufferToImage-aspectMask-00211`, `VUID-vkCmdCopyBufferToImage-srcImage-00199`, `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`, `VUID-vkCmdCopyBufferToImage-pRegions-06217`, `VUID-vkCmdCopyBufferToImage-pRegions-07276`, `VUID-vkCmdCopyBufferToImage-imageExtent-00209`, `VUID-vkCmdCopyBufferToImage-pRegions-07740`, `VUID-vkCmdCopyBufferToImage-pRegions-07741`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`, `VUID-vkCmdCopyBufferToImage-dstImage-01997`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`, `VUID-VkBufferImageCopy-bufferRowLength-00195`, `VUID-VkBufferImageCopy-bufferImageHeight-00196`, `VUID-VkBufferImageCopy-aspectMask-00212`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`, `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`, `VUID-vkCmdCopyBufferToImage-pRegions-07274`, `VUID-vkCmdCopyBufferToImage-pRegions-07275`, `VUID-vkCmdCopyBufferToImage-imageExtent-00207`, `VUID-vkCmdCopyBufferToImage-imageExtent-00208`, `VUID-vkCmdCopyBufferToImage-pRegions-07273`, `VUID-vkCmdCopyBufferToImage-srcImage-04053`, `VUID-vkCmdCopyBufferToImage-pRegions-07277`, `VUID-vkCmdCopyBufferToImage-dstImage-00179`, `VUID-vkCmdCopyBufferToImage-pRegions-00173`, `VUID-vkCmdCopyBufferToImage-srcImage-00201`, `VUID-vkCmdCopyBufferToImage-imageOffset-00200`, `VUID-vkCmdCopyBufferToImage-aspectMask-00211`, `VUID-vkCmdCopyBufferToImage-srcImage-00199`, `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`, `VUID-vkCmdCopyBufferToImage-pRegions-06217`, `VUID-vkCmdCopyBufferToImage-pRegions-07276`, `VUID-vkCmdCopyBufferToImage-imageExtent-00209`, `VUID-vkCmdCopyBufferToImage-pRegions-07740`, `VUID-vkCmdCopyBufferToImage-pRegions-07741`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`, `VUID-vkCmdCopyBufferToImage-dstImage-01997`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`, `VUID-VkBufferImageCopy-bufferRowLength-00195`, `VUID-VkBufferImageCopy-bufferImageHeight-00196`, `VUID-VkBufferImageCopy-aspectMask-00212`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_buffer_to_image_unchecked(
         &mut self,
@@ -934,6 +940,7 @@ The rules of `vkCmdCopyImage` that apply to this crate's API ([reference page](h
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageCopy],
     ) -> Result<()> {
+        self.validate_origins_copy_image(src_image, dst_image)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::CopyImage(
@@ -971,7 +978,7 @@ The rules of `vkCmdCopyImage` that apply to this crate's API ([reference page](h
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_image`] checks at run time: `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImage-01791`, `VUID-vkCmdCopyImage-dstImage-01792`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, `VUID-vkCmdCopyImage-srcImageLayout-00128`, `VUID-vkCmdCopyImage-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_image`] checks at run time: `VUID-vkCmdCopyImage-commonparent`, `VUID-vkCmdCopyImage-srcImageLayout-parameter`, `VUID-vkCmdCopyImage-dstImageLayout-parameter`, `VUID-vkCmdCopyImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyImage-regionCount-arraylength`, `VUID-vkCmdCopyImage-srcSubresource-01696`, `VUID-vkCmdCopyImage-dstSubresource-01697`, `VUID-vkCmdCopyImage-srcSubresource-01698`, `VUID-vkCmdCopyImage-dstSubresource-01699`, `VUID-vkCmdCopyImage-aspectMask-00142`, `VUID-vkCmdCopyImage-aspectMask-00143`, `VUID-vkCmdCopyImage-srcOffset-00144`, `VUID-vkCmdCopyImage-srcOffset-00145`, `VUID-vkCmdCopyImage-srcOffset-00147`, `VUID-vkCmdCopyImage-srcImage-01787`, `VUID-vkCmdCopyImage-dstImage-01788`, `VUID-vkCmdCopyImage-dstOffset-00150`, `VUID-vkCmdCopyImage-dstOffset-00151`, `VUID-vkCmdCopyImage-dstOffset-00153`, `VUID-vkCmdCopyImage-srcImage-01791`, `VUID-vkCmdCopyImage-dstImage-01792`, `VUID-vkCmdCopyImage-srcImageLayout-00129`, `VUID-vkCmdCopyImage-dstImageLayout-00134`, `VUID-vkCmdCopyImage-srcImageLayout-00128`, `VUID-vkCmdCopyImage-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_image_unchecked(
         &mut self,
@@ -1102,6 +1109,7 @@ The rules of `vkCmdCopyImageToBuffer` that apply to this crate's API ([reference
         dst_buffer: &Buffer,
         regions: &[vk::BufferImageCopy],
     ) -> Result<()> {
+        self.validate_origins_copy_image_to_buffer(src_image, dst_buffer)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::ImageToBuffer(
@@ -1141,7 +1149,7 @@ The rules of `vkCmdCopyImageToBuffer` that apply to this crate's API ([reference
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`, `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`, `VUID-vkCmdCopyImageToBuffer-pRegions-07274`, `VUID-vkCmdCopyImageToBuffer-pRegions-07275`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`, `VUID-vkCmdCopyImageToBuffer-pRegions-07273`, `VUID-vkCmdCopyImageToBuffer-srcImage-04053`, `VUID-vkCmdCopyImageToBuffer-pRegions-07277`, `VUID-vkCmdCopyImageToBuffer-srcImage-00188`, `VUID-vkCmdCopyImageToBuffer-pRegions-00184`, `VUID-vkCmdCopyImageToBuffer-srcImage-00201`, `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`, `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`, `VUID-vkCmdCopyImageToBuffer-srcImage-00199`, `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`, `VUID-vkCmdCopyImageToBuffer-pRegions-06220`, `VUID-vkCmdCopyImageToBuffer-pRegions-07276`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`, `VUID-vkCmdCopyImageToBuffer-pRegions-07740`, `VUID-vkCmdCopyImageToBuffer-pRegions-07741`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`, `VUID-vkCmdCopyImageToBuffer-srcImage-01998`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`, `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`, `VUID-VkImageSubresourceLayers-aspectMask-00167`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_image_to_buffer`] checks at run time: `VUID-vkCmdCopyImageToBuffer-commonparent`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-parameter`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyImageToBuffer-regionCount-arraylength`, `VUID-vkCmdCopyImageToBuffer-srcImage-00186`, `VUID-vkCmdCopyImageToBuffer-srcImage-00187`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00191`, `VUID-vkCmdCopyImageToBuffer-dstBuffer-00192`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01703`, `VUID-vkCmdCopyImageToBuffer-imageSubresource-01704`, `VUID-vkCmdCopyImageToBuffer-pRegions-06221`, `VUID-vkCmdCopyImageToBuffer-pRegions-06222`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00190`, `VUID-vkCmdCopyImageToBuffer-bufferRowLength-00203`, `VUID-vkCmdCopyImageToBuffer-bufferImageHeight-00204`, `VUID-vkCmdCopyImageToBuffer-pRegions-07274`, `VUID-vkCmdCopyImageToBuffer-pRegions-07275`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00207`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00208`, `VUID-vkCmdCopyImageToBuffer-pRegions-07273`, `VUID-vkCmdCopyImageToBuffer-srcImage-04053`, `VUID-vkCmdCopyImageToBuffer-pRegions-07277`, `VUID-vkCmdCopyImageToBuffer-srcImage-00188`, `VUID-vkCmdCopyImageToBuffer-pRegions-00184`, `VUID-vkCmdCopyImageToBuffer-srcImage-00201`, `VUID-vkCmdCopyImageToBuffer-imageOffset-00200`, `VUID-vkCmdCopyImageToBuffer-aspectMask-00211`, `VUID-vkCmdCopyImageToBuffer-srcImage-00199`, `VUID-vkCmdCopyImageToBuffer-baseArrayLayer-00213`, `VUID-vkCmdCopyImageToBuffer-pRegions-06220`, `VUID-vkCmdCopyImageToBuffer-pRegions-07276`, `VUID-vkCmdCopyImageToBuffer-imageExtent-00209`, `VUID-vkCmdCopyImageToBuffer-pRegions-07740`, `VUID-vkCmdCopyImageToBuffer-pRegions-07741`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01559`, `VUID-vkCmdCopyImageToBuffer-bufferOffset-01558`, `VUID-vkCmdCopyImageToBuffer-srcImage-01998`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746`, `VUID-vkCmdCopyImageToBuffer-imageOffset-07747`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832`, `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833`, `VUID-VkImageSubresourceLayers-aspectMask-00167`, `VUID-vkCmdCopyImageToBuffer-srcImageLayout-00189`, `VUID-vkCmdCopyImageToBuffer-pRegions-00183`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_image_to_buffer_unchecked(
         &mut self,
@@ -1262,7 +1270,7 @@ The rules of `vkCmdCopyQueryPoolResults` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-flags-00822`, `VUID-vkCmdCopyQueryPoolResults-flags-00823`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-flags-00822`, `VUID-vkCmdCopyQueryPoolResults-flags-00823`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_query_pool_results_unchecked(
         &mut self,
@@ -1526,6 +1534,7 @@ The rules of `vkCmdDispatchIndirect` that apply to this crate's API ([reference 
         buffer: &Buffer,
         offset: vk::DeviceSize,
     ) -> Result<()> {
+        self.validate_origins_dispatch_indirect(buffer)?;
         crate::special::draw::dispatch_checks(
             self,
             "VUID-vkCmdDispatchIndirect-None-02700",
@@ -1567,7 +1576,7 @@ The rules of `vkCmdDispatchIndirect` that apply to this crate's API ([reference 
 
 # Safety
 
-The caller upholds the rules that [`Self::dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-None-02859`, `VUID-vkCmdDispatchIndirect-commandBuffer-02701`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, `VUID-vkCmdDispatchIndirect-magFilter-04553`, `VUID-vkCmdDispatchIndirect-mipmapMode-04770`, `VUID-vkCmdDispatchIndirect-None-02702`, `VUID-vkCmdDispatchIndirect-None-02703`, `VUID-vkCmdDispatchIndirect-None-02704`, `VUID-vkCmdDispatchIndirect-None-04115`, `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`, `VUID-vkCmdDispatchIndirect-None-06550`, `VUID-vkCmdDispatchIndirect-ConstOffset-06551`, `VUID-vkCmdDispatchIndirect-commandBuffer-02711`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::dispatch_indirect`] checks at run time: `VUID-vkCmdDispatchIndirect-commonparent`, `VUID-vkCmdDispatchIndirect-commandBuffer-cmdpool`, `VUID-vkCmdDispatchIndirect-buffer-02708`, `VUID-vkCmdDispatchIndirect-buffer-02709`, `VUID-vkCmdDispatchIndirect-offset-02710`, `VUID-vkCmdDispatchIndirect-None-02700`, `VUID-vkCmdDispatchIndirect-None-02697`, `VUID-vkCmdDispatchIndirect-None-02859`, `VUID-vkCmdDispatchIndirect-commandBuffer-02701`, `VUID-vkCmdDispatchIndirect-viewType-07752`, `VUID-vkCmdDispatchIndirect-format-07753`, `VUID-vkCmdDispatchIndirect-None-02699`, `VUID-vkCmdDispatchIndirect-maintenance4-06425`, `VUID-vkCmdDispatchIndirect-None-02691`, `VUID-vkCmdDispatchIndirect-None-06479`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07027`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07028`, `VUID-vkCmdDispatchIndirect-commandBuffer-02707`, `VUID-vkCmdDispatchIndirect-magFilter-04553`, `VUID-vkCmdDispatchIndirect-mipmapMode-04770`, `VUID-vkCmdDispatchIndirect-None-02702`, `VUID-vkCmdDispatchIndirect-None-02703`, `VUID-vkCmdDispatchIndirect-None-02704`, `VUID-vkCmdDispatchIndirect-None-04115`, `VUID-vkCmdDispatchIndirect-OpImageWrite-04469`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07029`, `VUID-vkCmdDispatchIndirect-OpTypeImage-07030`, `VUID-vkCmdDispatchIndirect-None-06550`, `VUID-vkCmdDispatchIndirect-ConstOffset-06551`, `VUID-vkCmdDispatchIndirect-commandBuffer-02711`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn dispatch_indirect_unchecked(
         &mut self,
@@ -1625,6 +1634,7 @@ The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](
         size: vk::DeviceSize,
         data: u32,
     ) -> Result<()> {
+        self.validate_origins_fill_buffer(dst_buffer)?;
         crate::special::copies::cmd_fill_buffer_checks(
             self,
             dst_buffer,
@@ -1632,7 +1642,7 @@ The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](
             size,
         )?;
         {
-            let r = self.validate_fill_buffer(dst_buffer);
+            let r = self.validate_fill_buffer();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -1643,7 +1653,7 @@ The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn fill_buffer_unchecked(
         &mut self,
@@ -1692,6 +1702,7 @@ The rules of `vkCmdResetQueryPool` that apply to this crate's API ([reference pa
         first_query: u32,
         query_count: u32,
     ) -> Result<()> {
+        self.validate_origins_reset_query_pool(query_pool)?;
         crate::special::query::cmd_reset_query_pool_range(
             self,
             query_pool,
@@ -1699,7 +1710,7 @@ The rules of `vkCmdResetQueryPool` that apply to this crate's API ([reference pa
             query_count,
         )?;
         {
-            let r = self.validate_reset_query_pool(query_pool);
+            let r = self.validate_reset_query_pool();
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -1710,7 +1721,7 @@ The rules of `vkCmdResetQueryPool` that apply to this crate's API ([reference pa
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-commonparent`, `VUID-vkCmdResetQueryPool-firstQuery-00796`, `VUID-vkCmdResetQueryPool-firstQuery-00797`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commonparent`, `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-firstQuery-00796`, `VUID-vkCmdResetQueryPool-firstQuery-00797`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_query_pool_unchecked(
         &mut self,
@@ -1816,6 +1827,7 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
         dst_image_layout: vk::ImageLayout,
         regions: &[vk::ImageResolve],
     ) -> Result<()> {
+        self.validate_origins_resolve_image(src_image, dst_image)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::ResolveImage(
@@ -1853,7 +1865,7 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::resolve_image`] checks at run time: `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, `VUID-vkCmdResolveImage-srcImageLayout-00260`, `VUID-vkCmdResolveImage-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::resolve_image`] checks at run time: `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, `VUID-vkCmdResolveImage-srcImageLayout-00260`, `VUID-vkCmdResolveImage-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn resolve_image_unchecked(
         &mut self,
@@ -1932,6 +1944,7 @@ The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page
         dst_offset: vk::DeviceSize,
         data: &[u8],
     ) -> Result<()> {
+        self.validate_origins_update_buffer(dst_buffer)?;
         crate::special::copies::cmd_update_buffer_checks(
             self,
             dst_buffer,
@@ -1939,7 +1952,7 @@ The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page
             data,
         )?;
         {
-            let r = self.validate_update_buffer(dst_buffer, data);
+            let r = self.validate_update_buffer(data);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -1950,7 +1963,7 @@ The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn update_buffer_unchecked(
         &mut self,

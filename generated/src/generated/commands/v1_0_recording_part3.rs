@@ -52,6 +52,7 @@ The rules of `vkCmdBindDescriptorSets` that apply to this crate's API ([referenc
         let descriptor_sets_given = descriptor_sets;
         #[allow(unused_variables)]
         let descriptor_sets = crate::Handles::wrappers(&descriptor_sets_given);
+        self.validate_origins_bind_descriptor_sets(layout, descriptor_sets)?;
         crate::special::draw_state::cmd_bind_descriptor_sets_checks(
             self,
             pipeline_bind_point,
@@ -62,11 +63,7 @@ The rules of `vkCmdBindDescriptorSets` that apply to this crate's API ([referenc
         )?;
         {
             let r = self
-                .validate_bind_descriptor_sets(
-                    pipeline_bind_point,
-                    layout,
-                    descriptor_sets,
-                );
+                .validate_bind_descriptor_sets(pipeline_bind_point, descriptor_sets);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -85,7 +82,7 @@ The rules of `vkCmdBindDescriptorSets` that apply to this crate's API ([referenc
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`, `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run time: `VUID-vkCmdBindDescriptorSets-commonparent`, `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-parameter`, `VUID-vkCmdBindDescriptorSets-commandBuffer-cmdpool`, `VUID-vkCmdBindDescriptorSets-descriptorSetCount-arraylength`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-00358`, `VUID-vkCmdBindDescriptorSets-pipelineBindPoint-00361`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01971`, `VUID-vkCmdBindDescriptorSets-pDynamicOffsets-01972`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-01979`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06715`, `VUID-vkCmdBindDescriptorSets-pDescriptorSets-06563`, `VUID-vkCmdBindDescriptorSets-firstSet-00360`, `VUID-vkCmdBindDescriptorSets-dynamicOffsetCount-00359`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_descriptor_sets_unchecked<'h>(
         &mut self,
@@ -162,6 +159,7 @@ The rules of `vkCmdBindIndexBuffer` that apply to this crate's API ([reference p
         offset: vk::DeviceSize,
         index_type: vk::IndexType,
     ) -> Result<()> {
+        self.validate_origins_bind_index_buffer(buffer)?;
         crate::special::draw_state::cmd_bind_index_buffer_checks(
             self,
             buffer,
@@ -169,7 +167,7 @@ The rules of `vkCmdBindIndexBuffer` that apply to this crate's API ([reference p
             index_type,
         )?;
         {
-            let r = self.validate_bind_index_buffer(buffer, index_type);
+            let r = self.validate_bind_index_buffer(index_type);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -180,7 +178,7 @@ The rules of `vkCmdBindIndexBuffer` that apply to this crate's API ([reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-offset-00432`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_index_buffer`] checks at run time: `VUID-vkCmdBindIndexBuffer-commonparent`, `VUID-vkCmdBindIndexBuffer-indexType-parameter`, `VUID-vkCmdBindIndexBuffer-commandBuffer-cmdpool`, `VUID-vkCmdBindIndexBuffer-offset-00432`, `VUID-vkCmdBindIndexBuffer-offset-00431`, `VUID-vkCmdBindIndexBuffer-buffer-00433`, `VUID-vkCmdBindIndexBuffer-buffer-00434`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_index_buffer_unchecked(
         &mut self,
@@ -251,13 +249,14 @@ The rules of `vkCmdBindPipeline` that apply to this crate's API ([reference page
         pipeline_bind_point: vk::PipelineBindPoint,
         pipeline: &Pipeline,
     ) -> Result<()> {
+        self.validate_origins_bind_pipeline(pipeline)?;
         crate::special::draw_state::cmd_bind_pipeline_checks(
             self,
             pipeline_bind_point,
             pipeline,
         )?;
         {
-            let r = self.validate_bind_pipeline(pipeline_bind_point, pipeline);
+            let r = self.validate_bind_pipeline(pipeline_bind_point);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -268,7 +267,7 @@ The rules of `vkCmdBindPipeline` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`, `VUID-vkCmdBindPipeline-pipeline-00781`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_pipeline`] checks at run time: `VUID-vkCmdBindPipeline-commonparent`, `VUID-vkCmdBindPipeline-pipelineBindPoint-parameter`, `VUID-vkCmdBindPipeline-commandBuffer-cmdpool`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00779`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00780`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00777`, `VUID-vkCmdBindPipeline-pipeline-00781`, `VUID-vkCmdBindPipeline-pipelineBindPoint-00778`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_pipeline_unchecked(
         &mut self,
@@ -338,6 +337,7 @@ The rules of `vkCmdBindVertexBuffers` that apply to this crate's API ([reference
                 ),
             });
         }
+        self.validate_origins_bind_vertex_buffers(buffers)?;
         crate::special::draw_state::cmd_bind_vertex_buffers_checks(
             self,
             first_binding,
@@ -358,7 +358,7 @@ The rules of `vkCmdBindVertexBuffers` that apply to this crate's API ([reference
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-firstBinding-00625`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_vertex_buffers`] checks at run time: `VUID-vkCmdBindVertexBuffers-commonparent`, `VUID-vkCmdBindVertexBuffers-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers-firstBinding-00624`, `VUID-vkCmdBindVertexBuffers-pOffsets-00626`, `VUID-vkCmdBindVertexBuffers-pBuffers-00627`, `VUID-vkCmdBindVertexBuffers-pBuffers-00628`, `VUID-vkCmdBindVertexBuffers-firstBinding-00625`, `VUID-vkCmdBindVertexBuffers-pOffsets-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_vertex_buffers_unchecked<'h>(
         &mut self,
@@ -510,6 +510,7 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
         let command_buffers_given = command_buffers;
         #[allow(unused_variables)]
         let command_buffers = crate::Handles::wrappers(&command_buffers_given);
+        self.validate_origins_execute_commands(command_buffers)?;
         crate::special::command_buffers::cmd_execute_commands_checks(
             self,
             command_buffers,
@@ -526,7 +527,7 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-commonparent`, `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::execute_commands`] checks at run time: `VUID-vkCmdExecuteCommands-commonparent`, `VUID-vkCmdExecuteCommands-commandBuffer-cmdpool`, `VUID-vkCmdExecuteCommands-bufferlevel`, `VUID-vkCmdExecuteCommands-commandBufferCount-arraylength`, `VUID-vkCmdExecuteCommands-pCommandBuffers-00091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn execute_commands_unchecked<'h>(
         &mut self,
@@ -601,6 +602,7 @@ The rules of `vkCmdPushConstants` that apply to this crate's API ([reference pag
         offset: u32,
         values: &[u8],
     ) -> Result<()> {
+        self.validate_origins_push_constants(layout)?;
         crate::special::draw_state::cmd_push_constants_checks(
             self,
             layout,
@@ -609,7 +611,7 @@ The rules of `vkCmdPushConstants` that apply to this crate's API ([reference pag
             values,
         )?;
         {
-            let r = self.validate_push_constants(layout, stage_flags, values);
+            let r = self.validate_push_constants(stage_flags, values);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -620,7 +622,7 @@ The rules of `vkCmdPushConstants` that apply to this crate's API ([reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::push_constants`] checks at run time: `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::push_constants`] checks at run time: `VUID-vkCmdPushConstants-commonparent`, `VUID-vkCmdPushConstants-stageFlags-parameter`, `VUID-vkCmdPushConstants-stageFlags-requiredbitmask`, `VUID-vkCmdPushConstants-commandBuffer-cmdpool`, `VUID-vkCmdPushConstants-size-arraylength`, `VUID-vkCmdPushConstants-offset-01795`, `VUID-vkCmdPushConstants-offset-01796`, `VUID-vkCmdPushConstants-offset-00368`, `VUID-vkCmdPushConstants-size-00369`, `VUID-vkCmdPushConstants-offset-00370`, `VUID-vkCmdPushConstants-size-00371`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn push_constants_unchecked(
         &mut self,

@@ -170,7 +170,7 @@ The rules of `vkCmdResetEvent` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-commonparent`, `VUID-vkCmdResetEvent-stageMask-04090`, `VUID-vkCmdResetEvent-stageMask-04091`, `VUID-vkCmdResetEvent-stageMask-01153`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkCmdResetEvent-commonparent`, `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-stageMask-04090`, `VUID-vkCmdResetEvent-stageMask-04091`, `VUID-vkCmdResetEvent-stageMask-01153`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_event_unchecked(
         &mut self,
@@ -241,7 +241,7 @@ The rules of `vkCmdSetEvent` that apply to this crate's API ([reference page](ht
 
 # Safety
 
-The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-commonparent`, `VUID-vkCmdSetEvent-stageMask-04090`, `VUID-vkCmdSetEvent-stageMask-04091`, `VUID-vkCmdSetEvent-stageMask-01149`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-vkCmdSetEvent-commonparent`, `VUID-vkCmdSetEvent-stageMask-parameter`, `VUID-vkCmdSetEvent-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent-stageMask-04090`, `VUID-vkCmdSetEvent-stageMask-04091`, `VUID-vkCmdSetEvent-stageMask-01149`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_event_unchecked(
         &mut self,

@@ -33,6 +33,7 @@ The rules of `vkBindBufferMemory2` that apply to this crate's API ([reference pa
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
+        self.validate_origins_bind_buffer_memory2(bind_infos)?;
         crate::special::memory::bind_buffer_memory2_checks(self, bind_infos)?;
         {
             let r = self.validate_bind_buffer_memory2(bind_infos);
@@ -115,6 +116,7 @@ The rules of `vkBindImageMemory2` that apply to this crate's API ([reference pag
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
+        self.validate_origins_bind_image_memory2(bind_infos)?;
         crate::special::memory::bind_image_memory2_checks(self, bind_infos)?;
         {
             let r = self.validate_bind_image_memory2(bind_infos);
@@ -209,17 +211,18 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
                     out,
                     self,
                     {
-                        let live = self.live();
-                        let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+                        let mut reached = crate::validation::Reached::keeping(
+                            self.live(),
+                        );
                         // SAFETY: the safe info stores every array with its length and chains only
                         // structs pushed through `push_next`.
                         unsafe {
                             crate::reach::descriptor_update_template_create_info(
                                 create_info.as_raw(),
-                                live,
-                                &mut kept,
+                                &mut reached,
                             )
                         };
+                        let kept = reached.kept;
                         (!kept.is_empty())
                             .then(|| {
                                 tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained
@@ -323,7 +326,8 @@ The rules of `vkGetBufferMemoryRequirements2` that apply to this crate's API ([r
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
         {
-            let r = self.validate_get_buffer_memory_requirements2(memory_requirements);
+            let r = self
+                .validate_get_buffer_memory_requirements2(info, memory_requirements);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -503,6 +507,7 @@ The rules of `vkGetImageMemoryRequirements2` that apply to this crate's API ([re
         info: &ImageMemoryRequirementsInfo2<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
+        self.validate_origins_get_image_memory_requirements2(info)?;
         crate::special::memory::image_requirements2_planes(self, info)?;
         {
             let r = self
@@ -550,6 +555,24 @@ The rules of `vkGetImageSparseMemoryRequirements2` that apply to this crate's AP
     #[doc(alias = "vkGetImageSparseMemoryRequirements2")]
     #[inline]
     pub fn get_image_sparse_memory_requirements2<'a>(
+        &self,
+        info: &ImageSparseMemoryRequirementsInfo2<'a>,
+    ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        {
+            let r = self.validate_get_image_sparse_memory_requirements2(info);
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe { self.get_image_sparse_memory_requirements2_unchecked(info) }
+    }
+    /**`vkGetImageSparseMemoryRequirements2` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_image_sparse_memory_requirements2`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_image_sparse_memory_requirements2_unchecked<'a>(
         &self,
         info: &ImageSparseMemoryRequirementsInfo2<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
@@ -607,7 +630,7 @@ The rules of `vkTrimCommandPool` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::trim_command_pool`] checks at run time: `VUID-vkTrimCommandPool-flags-zerobitmask`, `VUID-vkTrimCommandPool-commandPool-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::trim_command_pool`] checks at run time: `VUID-vkTrimCommandPool-commandPool-parent`, `VUID-vkTrimCommandPool-flags-zerobitmask`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn trim_command_pool_unchecked(
         &self,

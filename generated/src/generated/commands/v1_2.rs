@@ -140,7 +140,7 @@ The rules of `vkGetBufferDeviceAddress` that apply to this crate's API ([referen
         info: &BufferDeviceAddressInfo<'a>,
     ) -> Result<vk::DeviceAddress> {
         {
-            let r = self.validate_get_buffer_device_address();
+            let r = self.validate_get_buffer_device_address(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -186,7 +186,7 @@ The rules of `vkGetBufferOpaqueCaptureAddress` that apply to this crate's API ([
         info: &BufferDeviceAddressInfo<'a>,
     ) -> Result<u64> {
         {
-            let r = self.validate_get_buffer_opaque_capture_address();
+            let r = self.validate_get_buffer_opaque_capture_address(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -231,7 +231,7 @@ The rules of `vkGetDeviceMemoryOpaqueCaptureAddress` that apply to this crate's 
         info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     ) -> Result<u64> {
         {
-            let r = self.validate_get_device_memory_opaque_capture_address();
+            let r = self.validate_get_device_memory_opaque_capture_address(info);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -271,11 +271,8 @@ The rules of `vkGetSemaphoreCounterValue` that apply to this crate's API ([refer
     #[doc(alias = "vkGetSemaphoreCounterValue")]
     #[inline]
     pub fn get_semaphore_counter_value(&self, semaphore: &Semaphore) -> Result<u64> {
+        self.validate_origins_get_semaphore_counter_value(semaphore)?;
         crate::special::sync::get_semaphore_counter_value_checks(self, semaphore)?;
-        {
-            let r = self.validate_get_semaphore_counter_value(semaphore);
-            r?;
-        }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.get_semaphore_counter_value_unchecked(semaphore) }
@@ -378,6 +375,7 @@ The rules of `vkSignalSemaphore` that apply to this crate's API ([reference page
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
+        self.validate_origins_signal_semaphore(signal_info)?;
         crate::special::sync::signal_semaphore_checks(self, signal_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -433,6 +431,7 @@ The rules of `vkWaitSemaphores` that apply to this crate's API ([reference page]
         wait_info: &SemaphoreWaitInfo<'a>,
         timeout: u64,
     ) -> Result<crate::status::SuccessOrTimeout> {
+        self.validate_origins_wait_semaphores(wait_info)?;
         crate::special::sync::wait_semaphores_checks(self, wait_info)?;
         {
             let r = self.validate_wait_semaphores(wait_info);

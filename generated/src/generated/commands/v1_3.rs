@@ -252,13 +252,14 @@ The rules of `vkGetPrivateData` that apply to this crate's API ([reference page]
         object_handle: u64,
         private_data_slot: &PrivateDataSlot,
     ) -> Result<u64> {
+        self.validate_origins_get_private_data(private_data_slot)?;
         crate::special::device::get_private_data_checks(
             self,
             object_type,
             object_handle,
         )?;
         {
-            let r = self.validate_get_private_data(object_type, private_data_slot);
+            let r = self.validate_get_private_data(object_type);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -275,7 +276,7 @@ The rules of `vkGetPrivateData` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-privateDataSlot-parent`, `VUID-vkGetPrivateData-objectType-04018`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_private_data`] checks at run time: `VUID-vkGetPrivateData-privateDataSlot-parent`, `VUID-vkGetPrivateData-objectType-parameter`, `VUID-vkGetPrivateData-objectType-04018`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_private_data_unchecked(
         &self,
@@ -312,13 +313,14 @@ The rules of `vkSetPrivateData` that apply to this crate's API ([reference page]
         private_data_slot: &PrivateDataSlot,
         data: u64,
     ) -> Result<()> {
+        self.validate_origins_set_private_data(private_data_slot)?;
         crate::special::device::set_private_data_checks(
             self,
             object_type,
             object_handle,
         )?;
         {
-            let r = self.validate_set_private_data(object_type, private_data_slot);
+            let r = self.validate_set_private_data(object_type);
             r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -336,7 +338,7 @@ The rules of `vkSetPrivateData` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-privateDataSlot-parent`, `VUID-vkSetPrivateData-objectHandle-04016`, `VUID-vkSetPrivateData-objectHandle-04017`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_private_data`] checks at run time: `VUID-vkSetPrivateData-privateDataSlot-parent`, `VUID-vkSetPrivateData-objectType-parameter`, `VUID-vkSetPrivateData-objectHandle-04016`, `VUID-vkSetPrivateData-objectHandle-04017`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_private_data_unchecked(
         &self,
@@ -446,9 +448,10 @@ The rules of `vkQueueSubmit2` that apply to this crate's API ([reference page](h
             }
             tuff_runtime::lock_all(syncs)
         };
+        self.validate_origins_submit2(submits, fence)?;
         crate::special::queue::queue_submit2_checks(self, submits, fence)?;
         {
-            let r = self.validate_submit2(submits, fence);
+            let r = self.validate_submit2(submits);
             r?;
         }
         let _held = crate::special::queue::queue_submit2_hold(self, submits)?;

@@ -79,10 +79,12 @@ The rules of `vkCmdBeginRendering` that apply to this crate's API ([reference pa
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
-        let always: Result<()> = crate::special::pass_instance::begin_rendering_checks(
-            &self,
-            rendering_info,
-        );
+        let always: Result<()> = self
+            .validate_origins_begin_rendering(rendering_info)
+            .and_then(|()| crate::special::pass_instance::begin_rendering_checks(
+                &self,
+                rendering_info,
+            ));
         {
             let r = always.and_then(|()| self.validate_begin_rendering(rendering_info));
             if !self.accept(r) {
@@ -112,13 +114,12 @@ The caller upholds the rules that [`Self::begin_rendering`] checks at run time: 
         };
         crate::special::pass_instance::rendering_begun(&mut self, rendering_info);
         let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
+            let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(rendering_info) {
                 // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::rendering_info(e.as_raw(), live, &mut kept) };
+                unsafe { crate::reach::rendering_info(e.as_raw(), &mut reached) };
             }
-            kept
+            reached.kept
         };
         for o in kept {
             self.retain(o);
@@ -175,6 +176,7 @@ The rules of `vkCmdBlitImage2` that apply to this crate's API ([reference page](
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) -> Result<()> {
+        self.validate_origins_blit_image2(blit_image_info)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::BlitImage2(blit_image_info),
@@ -209,15 +211,14 @@ The caller upholds the rules that [`Self::blit_image2`] checks at run time: `VUI
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(blit_image_info) {
                     // SAFETY: the safe structs store every pointer with its length.
-                    unsafe {
-                        crate::reach::blit_image_info2(e.as_raw(), live, &mut kept)
-                    };
+                    unsafe { crate::reach::blit_image_info2(e.as_raw(), &mut reached) };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -280,13 +281,12 @@ The caller upholds the rules that [`Self::copy_buffer2`] checks at run time: `VU
         };
         self.state_changed();
         let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
+            let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(copy_buffer_info) {
                 // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::copy_buffer_info2(e.as_raw(), live, &mut kept) };
+                unsafe { crate::reach::copy_buffer_info2(e.as_raw(), &mut reached) };
             }
-            kept
+            reached.kept
         };
         for o in kept {
             self.retain(o);
@@ -322,6 +322,7 @@ The rules of `vkCmdCopyBufferToImage2` that apply to this crate's API ([referenc
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
+        self.validate_origins_copy_buffer_to_image2(copy_buffer_to_image_info)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::BufferToImage2(
@@ -368,19 +369,19 @@ The caller upholds the rules that [`Self::copy_buffer_to_image2`] checks at run 
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(copy_buffer_to_image_info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::copy_buffer_to_image_info2(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -459,6 +460,7 @@ The rules of `vkCmdCopyImage2` that apply to this crate's API ([reference page](
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) -> Result<()> {
+        self.validate_origins_copy_image2(copy_image_info)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::CopyImage2(copy_image_info),
@@ -493,15 +495,14 @@ The caller upholds the rules that [`Self::copy_image2`] checks at run time: `VUI
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(copy_image_info) {
                     // SAFETY: the safe structs store every pointer with its length.
-                    unsafe {
-                        crate::reach::copy_image_info2(e.as_raw(), live, &mut kept)
-                    };
+                    unsafe { crate::reach::copy_image_info2(e.as_raw(), &mut reached) };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -532,6 +533,7 @@ The rules of `vkCmdCopyImageToBuffer2` that apply to this crate's API ([referenc
         &mut self,
         copy_image_to_buffer_info: &CopyImageToBufferInfo2<'a>,
     ) -> Result<()> {
+        self.validate_origins_copy_image_to_buffer2(copy_image_to_buffer_info)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::ImageToBuffer2(
@@ -578,19 +580,19 @@ The caller upholds the rules that [`Self::copy_image_to_buffer2`] checks at run 
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(copy_image_to_buffer_info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
                         crate::reach::copy_image_to_buffer_info2(
                             e.as_raw(),
-                            live,
-                            &mut kept,
+                            &mut reached,
                         )
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -642,6 +644,7 @@ The rules of `vkCmdResolveImage2` that apply to this crate's API ([reference pag
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) -> Result<()> {
+        self.validate_origins_resolve_image2(resolve_image_info)?;
         crate::special::image_layouts::image_layout_checks(
             self,
             crate::special::image_layouts::Names::ResolveImage2(resolve_image_info),
@@ -679,15 +682,16 @@ The caller upholds the rules that [`Self::resolve_image2`] checks at run time: `
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(resolve_image_info) {
                     // SAFETY: the safe structs store every pointer with its length.
                     unsafe {
-                        crate::reach::resolve_image_info2(e.as_raw(), live, &mut kept)
+                        crate::reach::resolve_image_info2(e.as_raw(), &mut reached)
                     };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -769,6 +773,7 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
                 ),
             });
         }
+        self.validate_origins_bind_vertex_buffers2(buffers)?;
         crate::special::draw_state::cmd_bind_vertex_buffers2_checks(
             self,
             first_binding,
@@ -796,7 +801,7 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_vertex_buffers2_unchecked<'h>(
         &mut self,

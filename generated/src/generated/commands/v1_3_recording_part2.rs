@@ -72,6 +72,7 @@ The rules of `vkCmdPipelineBarrier2` that apply to this crate's API ([reference 
         &mut self,
         dependency_info: &DependencyInfo<'a>,
     ) -> Result<()> {
+        self.validate_origins_pipeline_barrier2(dependency_info)?;
         crate::special::image_layouts::dependency_checks(
             self,
             core::slice::from_ref(dependency_info),
@@ -106,15 +107,14 @@ The caller upholds the rules that [`Self::pipeline_barrier2`] checks at run time
             );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in core::iter::once(dependency_info) {
                     // SAFETY: the safe structs store every pointer with its length.
-                    unsafe {
-                        crate::reach::dependency_info(e.as_raw(), live, &mut kept)
-                    };
+                    unsafe { crate::reach::dependency_info(e.as_raw(), &mut reached) };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -207,6 +207,7 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
                 ),
             });
         }
+        self.validate_origins_wait_events2(events, dependency_infos)?;
         crate::special::image_layouts::dependency_checks(self, dependency_infos)?;
         {
             let r = self.validate_wait_events2(events, dependency_infos);
@@ -220,7 +221,7 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn wait_events2_unchecked<'a, 'h>(
         &mut self,
@@ -247,15 +248,14 @@ The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VU
             crate::special::sync::wait_events2_done(self, events, dependency_infos);
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
-                let live = self.device().live();
-                let mut kept = Vec::new();
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
                 for e in dependency_infos.iter() {
                     // SAFETY: the safe structs store every pointer with its length.
-                    unsafe {
-                        crate::reach::dependency_info(e.as_raw(), live, &mut kept)
-                    };
+                    unsafe { crate::reach::dependency_info(e.as_raw(), &mut reached) };
                 }
-                kept
+                reached.kept
             };
             for o in kept {
                 self.retain(o);
@@ -331,7 +331,7 @@ The rules of `vkCmdWriteTimestamp2` that apply to this crate's API ([reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_timestamp2_unchecked(
         &mut self,
@@ -406,7 +406,7 @@ The rules of `vkCmdResetEvent2` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_event2_unchecked(
         &mut self,
@@ -497,7 +497,7 @@ The rules of `vkCmdSetEvent2` that apply to this crate's API ([reference page](h
 
 # Safety
 
-The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_event2_unchecked<'a>(
         &mut self,
@@ -517,13 +517,12 @@ The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID
         self.state_changed();
         self.retain_with(event.address(), || event.retained());
         let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
+            let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(dependency_info) {
                 // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::dependency_info(e.as_raw(), live, &mut kept) };
+                unsafe { crate::reach::dependency_info(e.as_raw(), &mut reached) };
             }
-            kept
+            reached.kept
         };
         for o in kept {
             self.retain(o);

@@ -50,6 +50,33 @@ The rules of `vkGetDescriptorSetLayoutHostMappingInfoVALVE` that apply to this c
         binding_reference: &DescriptorSetBindingReferenceVALVE<'a>,
         host_mapping: &mut DescriptorSetLayoutHostMappingInfoVALVE<'a>,
     ) -> Result<()> {
+        {
+            let r = self
+                .validate_get_descriptor_set_layout_host_mapping_info_valve(
+                    binding_reference,
+                );
+            r?;
+        }
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        unsafe {
+            self.get_descriptor_set_layout_host_mapping_info_valve_unchecked(
+                binding_reference,
+                host_mapping,
+            )
+        }
+    }
+    /**`vkGetDescriptorSetLayoutHostMappingInfoVALVE` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_descriptor_set_layout_host_mapping_info_valve`] checks at run time (those of the structs it takes).*/
+    #[inline]
+    pub unsafe fn get_descriptor_set_layout_host_mapping_info_valve_unchecked<'a>(
+        &self,
+        binding_reference: &DescriptorSetBindingReferenceVALVE<'a>,
+        host_mapping: &mut DescriptorSetLayoutHostMappingInfoVALVE<'a>,
+    ) -> Result<()> {
         let fp = self
             .ext()
             .valve_descriptor_set_host_mapping

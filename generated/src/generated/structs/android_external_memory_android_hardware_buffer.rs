@@ -164,9 +164,9 @@ The rules of `VkMemoryGetAndroidHardwareBufferInfoANDROID` that apply to this cr
 
 - `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-handleTypes-01882` (*yours*; explicit rule): `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
 - `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-pNext-01883` (*yours*; explicit rule): If the `pNext` chain of the VkMemoryAllocateInfo used to allocate `memory` included a VkMemoryDedicatedAllocateInfo with non-`NULL` `image` member, then that `image` must already be bound to `memory`
+- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_ANDROID_HARDWARE_BUFFER_INFO_ANDROID`
-- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkMemoryGetAndroidHardwareBufferInfoANDROID-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "android_external_memory_android_hardware_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

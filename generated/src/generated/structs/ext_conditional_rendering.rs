@@ -43,10 +43,10 @@ The rules of `VkConditionalRenderingBeginInfoEXT` that apply to this crate's API
 - `VUID-VkConditionalRenderingBeginInfoEXT-buffer-01982` (*yours*; explicit rule): `buffer` must have been created with the `VK_BUFFER_USAGE_CONDITIONAL_RENDERING_BIT_EXT` bit set
 - `VUID-VkConditionalRenderingBeginInfoEXT-offset-01983` (*yours*; explicit rule): `offset` must be less than the size of `buffer` by at least 32 bits
 - `VUID-VkConditionalRenderingBeginInfoEXT-offset-01984` (*yours*; explicit rule): `offset` must be a multiple of 4
+- `VUID-VkConditionalRenderingBeginInfoEXT-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkConditionalRenderingBeginInfoEXT-flags-parameter` (*checked*): `flags` must be a valid combination of VkConditionalRenderingFlagBitsEXT values
 - `VUID-VkConditionalRenderingBeginInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CONDITIONAL_RENDERING_BEGIN_INFO_EXT`
-- `VUID-VkConditionalRenderingBeginInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkConditionalRenderingBeginInfoEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkConditionalRenderingBeginInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_conditional_rendering")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

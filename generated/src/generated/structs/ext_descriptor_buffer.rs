@@ -13,11 +13,11 @@ The rules of `VkAccelerationStructureCaptureDescriptorDataInfoEXT` that apply to
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-08092` (*yours*; explicit rule): If `accelerationStructureNV` is not VK_NULL_HANDLE then `accelerationStructureNV` must have been created with `VK_ACCELERATION_STRUCTURE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in …
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-08093` (*yours*; explicit rule): If `accelerationStructure` is not VK_NULL_HANDLE then `accelerationStructureNV` must be VK_NULL_HANDLE
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-08094` (*yours*; explicit rule): If `accelerationStructureNV` is not VK_NULL_HANDLE then `accelerationStructure` must be VK_NULL_HANDLE
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-parameter` (*checked*): If `accelerationStructure` is not VK_NULL_HANDLE, `accelerationStructure` must be a valid VkAccelerationStructureKHR handle
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-parameter` (*checked*): If `accelerationStructureNV` is not VK_NULL_HANDLE, `accelerationStructureNV` must be a valid VkAccelerationStructureNV handle
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-commonparent` (*checked*): Both of `accelerationStructure`, and `accelerationStructureNV` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructure-parameter` (*by the types*): If `accelerationStructure` is not VK_NULL_HANDLE, `accelerationStructure` must be a valid VkAccelerationStructureKHR handle
-- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-accelerationStructureNV-parameter` (*by the types*): If `accelerationStructureNV` is not VK_NULL_HANDLE, `accelerationStructureNV` must be a valid VkAccelerationStructureNV handle*/
+- `VUID-VkAccelerationStructureCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(
     any(
         all(feature = "ext_descriptor_buffer", feature = "khr_acceleration_structure"),
@@ -73,9 +73,9 @@ impl<'a> AccelerationStructureCaptureDescriptorDataInfoEXT<'a> {
 The rules of `VkBufferCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkBufferCaptureDescriptorDataInfoEXT-buffer-08075` (*yours*; explicit rule): `buffer` must have been created with `VK_BUFFER_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkBufferCreateInfo::`flags`
+- `VUID-VkBufferCaptureDescriptorDataInfoEXT-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkBufferCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
-- `VUID-VkBufferCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBufferCaptureDescriptorDataInfoEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkBufferCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -201,8 +201,8 @@ impl<'a> DescriptorBufferBindingInfoEXT<'a> {
 The rules of `VkDescriptorBufferBindingPushDescriptorBufferHandleEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorBufferBindingPushDescriptorBufferHandleEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-bufferlessPushDescriptors-08059` (*yours*; explicit rule): `VkPhysicalDeviceDescriptorBufferPropertiesEXT::bufferlessPushDescriptors` must be `VK_FALSE`
-- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_BUFFER_BINDING_PUSH_DESCRIPTOR_BUFFER_HANDLE_EXT`
-- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
+- `VUID-VkDescriptorBufferBindingPushDescriptorBufferHandleEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_BUFFER_BINDING_PUSH_DESCRIPTOR_BUFFER_HANDLE_EXT`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -445,9 +445,9 @@ impl<'a> DescriptorDataEXT<'a> {
 The rules of `VkImageCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkImageCaptureDescriptorDataInfoEXT-image-08079` (*yours*; explicit rule): `image` must have been created with `VK_IMAGE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkImageCreateInfo::`flags`
+- `VUID-VkImageCaptureDescriptorDataInfoEXT-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkImageCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
-- `VUID-VkImageCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImageCaptureDescriptorDataInfoEXT-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
+- `VUID-VkImageCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -486,9 +486,9 @@ impl<'a> ImageCaptureDescriptorDataInfoEXT<'a> {
 The rules of `VkImageViewCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageViewCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkImageViewCaptureDescriptorDataInfoEXT-imageView-08083` (*yours*; explicit rule): `imageView` must have been created with `VK_IMAGE_VIEW_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkImageViewCreateInfo::`flags`
+- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-imageView-parameter` (*checked*): `imageView` must be a valid VkImageView handle
 - `VUID-VkImageViewCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
-- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-imageView-parameter` (*by the types*): `imageView` must be a valid VkImageView handle*/
+- `VUID-VkImageViewCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -672,9 +672,9 @@ for PhysicalDeviceDescriptorBufferPropertiesEXT<'a> {}
 The rules of `VkSamplerCaptureDescriptorDataInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCaptureDescriptorDataInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sampler-08087` (*yours*; explicit rule): `sampler` must have been created with `VK_SAMPLER_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT` set in VkSamplerCreateInfo::`flags`
+- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sampler-parameter` (*checked*): `sampler` must be a valid VkSampler handle
 - `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_CAPTURE_DESCRIPTOR_DATA_INFO_EXT`
-- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-sampler-parameter` (*by the types*): `sampler` must be a valid VkSampler handle*/
+- `VUID-VkSamplerCaptureDescriptorDataInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_descriptor_buffer")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

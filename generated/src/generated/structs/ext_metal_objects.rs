@@ -8,8 +8,8 @@ use super::*;
 
 The rules of `VkExportMetalBufferInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalBufferInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalBufferInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_BUFFER_INFO_EXT`
-- `VUID-VkExportMetalBufferInfoEXT-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkExportMetalBufferInfoEXT-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
+- `VUID-VkExportMetalBufferInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_BUFFER_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -55,8 +55,8 @@ unsafe impl<'a> Extends<ExportMetalObjectsInfoEXT<'a>> for ExportMetalBufferInfo
 
 The rules of `VkExportMetalCommandQueueInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalCommandQueueInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalCommandQueueInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_COMMAND_QUEUE_INFO_EXT`
-- `VUID-VkExportMetalCommandQueueInfoEXT-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle*/
+- `VUID-VkExportMetalCommandQueueInfoEXT-queue-parameter` (*checked*): `queue` must be a valid VkQueue handle
+- `VUID-VkExportMetalCommandQueueInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_COMMAND_QUEUE_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -132,8 +132,8 @@ unsafe impl<'a> Extends<ExportMetalObjectsInfoEXT<'a>> for ExportMetalDeviceInfo
 
 The rules of `VkExportMetalIOSurfaceInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalIOSurfaceInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkExportMetalIOSurfaceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_IO_SURFACE_INFO_EXT`
-- `VUID-VkExportMetalIOSurfaceInfoEXT-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
+- `VUID-VkExportMetalIOSurfaceInfoEXT-image-parameter` (*checked*): `image` must be a valid VkImage handle
+- `VUID-VkExportMetalIOSurfaceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_IO_SURFACE_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -261,10 +261,10 @@ safe_struct!(
 
 The rules of `VkExportMetalSharedEventInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalSharedEventInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkExportMetalSharedEventInfoEXT-semaphore-parameter` (*checked*): If `semaphore` is not VK_NULL_HANDLE, `semaphore` must be a valid VkSemaphore handle
+- `VUID-VkExportMetalSharedEventInfoEXT-event-parameter` (*checked*): If `event` is not VK_NULL_HANDLE, `event` must be a valid VkEvent handle
 - `VUID-VkExportMetalSharedEventInfoEXT-commonparent` (*checked*): Both of `event`, and `semaphore` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
-- `VUID-VkExportMetalSharedEventInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_SHARED_EVENT_INFO_EXT`
-- `VUID-VkExportMetalSharedEventInfoEXT-semaphore-parameter` (*by the types*): If `semaphore` is not VK_NULL_HANDLE, `semaphore` must be a valid VkSemaphore handle
-- `VUID-VkExportMetalSharedEventInfoEXT-event-parameter` (*by the types*): If `event` is not VK_NULL_HANDLE, `event` must be a valid VkEvent handle*/
+- `VUID-VkExportMetalSharedEventInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_SHARED_EVENT_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -307,12 +307,12 @@ for ExportMetalSharedEventInfoEXT<'a> {}
 
 The rules of `VkExportMetalTextureInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkExportMetalTextureInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkExportMetalTextureInfoEXT-image-parameter` (*checked*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
+- `VUID-VkExportMetalTextureInfoEXT-imageView-parameter` (*checked*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
+- `VUID-VkExportMetalTextureInfoEXT-bufferView-parameter` (*checked*): If `bufferView` is not VK_NULL_HANDLE, `bufferView` must be a valid VkBufferView handle
 - `VUID-VkExportMetalTextureInfoEXT-plane-parameter` (*checked*): `plane` must be a valid VkImageAspectFlagBits value
 - `VUID-VkExportMetalTextureInfoEXT-commonparent` (*checked*): Each of `bufferView`, `image`, and `imageView` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
-- `VUID-VkExportMetalTextureInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_TEXTURE_INFO_EXT`
-- `VUID-VkExportMetalTextureInfoEXT-image-parameter` (*by the types*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
-- `VUID-VkExportMetalTextureInfoEXT-imageView-parameter` (*by the types*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
-- `VUID-VkExportMetalTextureInfoEXT-bufferView-parameter` (*by the types*): If `bufferView` is not VK_NULL_HANDLE, `bufferView` must be a valid VkBufferView handle*/
+- `VUID-VkExportMetalTextureInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_EXPORT_METAL_TEXTURE_INFO_EXT`*/
 #[cfg(feature = "ext_metal_objects")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

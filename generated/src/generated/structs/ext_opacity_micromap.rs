@@ -10,10 +10,10 @@ The rules of `VkAccelerationStructureTrianglesOpacityMicromapEXT` that apply to 
 
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-pUsageCounts-07335` (*yours*; explicit rule): Only one of `pUsageCounts` or `ppUsageCounts` can be a valid pointer, the other must be `NULL`
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-indexType-parameter` (*checked*): `indexType` must be a valid VkIndexType value
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-micromap-parameter` (*checked*): `micromap` must be a valid VkMicromapEXT handle
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_TRIANGLES_OPACITY_MICROMAP_EXT`
 - `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-pUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `pUsageCounts` is not `NULL`, `pUsageCounts` must be a valid pointer to an array of `usageCountsCount` VkMicromapUsageEXT structures
-- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-ppUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `ppUsageCounts` is not `NULL`, `ppUsageCounts` must be a valid pointer to an array of `usageCountsCount` valid pointers to VkMicromapUsageEXT structures
-- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-micromap-parameter` (*by the types*): `micromap` must be a valid VkMicromapEXT handle*/
+- `VUID-VkAccelerationStructureTrianglesOpacityMicromapEXT-ppUsageCounts-parameter` (*by the types*): If `usageCountsCount` is not `0`, and `ppUsageCounts` is not `NULL`, `ppUsageCounts` must be a valid pointer to an array of `usageCountsCount` valid pointers to VkMicromapUsageEXT structures*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -94,10 +94,10 @@ The rules of `VkCopyMemoryToMicromapInfoEXT` that apply to this crate's API ([re
 - `VUID-VkCopyMemoryToMicromapInfoEXT-mode-07548` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `mode` must be `VK_COPY_MICROMAP_MODE_DESERIALIZE_EXT`
 - `VUID-VkCopyMemoryToMicromapInfoEXT-src-07549` (*yours*; explicit rule): The data in `src` must have a format compatible with the destination physical device as returned by vkGetDeviceMicromapCompatibilityEXT
 - `VUID-VkCopyMemoryToMicromapInfoEXT-dst-07550` (*yours*; explicit rule): `dst` must have been created with a `size` greater than or equal to that used to serialize the data in `src`
+- `VUID-VkCopyMemoryToMicromapInfoEXT-dst-parameter` (*checked*): `dst` must be a valid VkMicromapEXT handle
 - `VUID-VkCopyMemoryToMicromapInfoEXT-mode-parameter` (*checked*): `mode` must be a valid VkCopyMicromapModeEXT value
 - `VUID-VkCopyMemoryToMicromapInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MEMORY_TO_MICROMAP_INFO_EXT`
-- `VUID-VkCopyMemoryToMicromapInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyMemoryToMicromapInfoEXT-dst-parameter` (*by the types*): `dst` must be a valid VkMicromapEXT handle*/
+- `VUID-VkCopyMemoryToMicromapInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -145,12 +145,12 @@ The rules of `VkCopyMicromapInfoEXT` that apply to this crate's API ([reference 
 - `VUID-VkCopyMicromapInfoEXT-mode-07533` (*yours*; explicit rule): If `mode` is `VK_COPY_MICROMAP_MODE_COMPACT_EXT`, `src` must have been constructed with `VK_BUILD_MICROMAP_ALLOW_COMPACTION_BIT_EXT` in the build
 - `VUID-VkCopyMicromapInfoEXT-buffer-07534` (*yours*; explicit rule): The `buffer` used to create `src` must be bound to device memory
 - `VUID-VkCopyMicromapInfoEXT-buffer-07535` (*yours*; explicit rule): The `buffer` used to create `dst` must be bound to device memory
+- `VUID-VkCopyMicromapInfoEXT-src-parameter` (*checked*): `src` must be a valid VkMicromapEXT handle
+- `VUID-VkCopyMicromapInfoEXT-dst-parameter` (*checked*): `dst` must be a valid VkMicromapEXT handle
 - `VUID-VkCopyMicromapInfoEXT-mode-parameter` (*checked*): `mode` must be a valid VkCopyMicromapModeEXT value
 - `VUID-VkCopyMicromapInfoEXT-commonparent` (*checked*): Both of `dst`, and `src` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCopyMicromapInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MICROMAP_INFO_EXT`
-- `VUID-VkCopyMicromapInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyMicromapInfoEXT-src-parameter` (*by the types*): `src` must be a valid VkMicromapEXT handle
-- `VUID-VkCopyMicromapInfoEXT-dst-parameter` (*by the types*): `dst` must be a valid VkMicromapEXT handle*/
+- `VUID-VkCopyMicromapInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -201,10 +201,10 @@ The rules of `VkCopyMicromapToMemoryInfoEXT` that apply to this crate's API ([re
 - `VUID-VkCopyMicromapToMemoryInfoEXT-src-07540` (*yours*; explicit rule): The source micromap `src` must have been constructed prior to the execution of this command
 - `VUID-VkCopyMicromapToMemoryInfoEXT-dst-07541` (*yours*; explicit rule): The memory pointed to by `dst` must be at least as large as the serialization size of `src`, as reported by vkWriteMicromapsPropertiesEXT or vkCmdWriteMicromapsPropertiesEXT with a query type of …
 - `VUID-VkCopyMicromapToMemoryInfoEXT-mode-07542` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `mode` must be `VK_COPY_MICROMAP_MODE_SERIALIZE_EXT`
+- `VUID-VkCopyMicromapToMemoryInfoEXT-src-parameter` (*checked*): `src` must be a valid VkMicromapEXT handle
 - `VUID-VkCopyMicromapToMemoryInfoEXT-mode-parameter` (*checked*): `mode` must be a valid VkCopyMicromapModeEXT value
 - `VUID-VkCopyMicromapToMemoryInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MICROMAP_TO_MEMORY_INFO_EXT`
-- `VUID-VkCopyMicromapToMemoryInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyMicromapToMemoryInfoEXT-src-parameter` (*by the types*): `src` must be a valid VkMicromapEXT handle*/
+- `VUID-VkCopyMicromapToMemoryInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -369,10 +369,10 @@ The rules of `VkMicromapCreateInfoEXT` that apply to this crate's API ([referenc
 - `VUID-VkMicromapCreateInfoEXT-offset-07437` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The sum of `offset` and `size` must be less than the size of `buffer`
 - `VUID-VkMicromapCreateInfoEXT-offset-07438` (*yours*; explicit rule): `offset` must be a multiple of `256` bytes
 - `VUID-VkMicromapCreateInfoEXT-createFlags-parameter` (*checked*): `createFlags` must be a valid combination of VkMicromapCreateFlagBitsEXT values
+- `VUID-VkMicromapCreateInfoEXT-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkMicromapCreateInfoEXT-type-parameter` (*checked*): `type` must be a valid VkMicromapTypeEXT value
 - `VUID-VkMicromapCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MICROMAP_CREATE_INFO_EXT`
-- `VUID-VkMicromapCreateInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkMicromapCreateInfoEXT-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkMicromapCreateInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "ext_opacity_micromap")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -42,9 +42,9 @@ for PhysicalDevicePipelinePropertiesFeaturesEXT<'a> {}
 
 The rules of `VkPipelineInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkPipelineInfoKHR-pipeline-parameter` (*checked*): `pipeline` must be a valid VkPipeline handle
 - `VUID-VkPipelineInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR`
-- `VUID-VkPipelineInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkPipelineInfoKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
+- `VUID-VkPipelineInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(
     any(
         feature = "ext_pipeline_properties",

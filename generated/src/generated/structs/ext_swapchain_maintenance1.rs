@@ -43,10 +43,10 @@ The rules of `VkReleaseSwapchainImagesInfoEXT` that apply to this crate's API ([
 
 - `VUID-VkReleaseSwapchainImagesInfoEXT-pImageIndices-07785` (*yours*; explicit rule): Each element of `pImageIndices` must be the index of a presentable image acquired from the swapchain specified by `swapchain`
 - `VUID-VkReleaseSwapchainImagesInfoEXT-pImageIndices-07786` (*yours*; explicit rule): All uses of presentable images identified by elements of `pImageIndices` must have completed execution
+- `VUID-VkReleaseSwapchainImagesInfoEXT-swapchain-parameter` (*checked*): `swapchain` must be a valid VkSwapchainKHR handle
 - `VUID-VkReleaseSwapchainImagesInfoEXT-imageIndexCount-arraylength` (*checked*): `imageIndexCount` must be greater than `0`
 - `VUID-VkReleaseSwapchainImagesInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RELEASE_SWAPCHAIN_IMAGES_INFO_EXT`
 - `VUID-VkReleaseSwapchainImagesInfoEXT-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkReleaseSwapchainImagesInfoEXT-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
 - `VUID-VkReleaseSwapchainImagesInfoEXT-pImageIndices-parameter` (*by the types*): `pImageIndices` must be a valid pointer to an array of `imageIndexCount` `uint32_t` values*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
@@ -95,9 +95,9 @@ The rules of `VkSwapchainPresentFenceInfoEXT` that apply to this crate's API ([r
 - `VUID-VkSwapchainPresentFenceInfoEXT-swapchainCount-07757` (*yours*; explicit rule): `swapchainCount` must be equal to VkPresentInfoKHR::`swapchainCount`
 - `VUID-VkSwapchainPresentFenceInfoEXT-pFences-07758` (*yours*; explicit rule): Each element of `pFences` must be unsignaled
 - `VUID-VkSwapchainPresentFenceInfoEXT-pFences-07759` (*yours*; explicit rule): Each element of `pFences` must not be associated with any other queue command that has not yet completed execution on that queue
+- `VUID-VkSwapchainPresentFenceInfoEXT-pFences-parameter` (*checked*): `pFences` must be a valid pointer to an array of `swapchainCount` valid VkFence handles
 - `VUID-VkSwapchainPresentFenceInfoEXT-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
-- `VUID-VkSwapchainPresentFenceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_FENCE_INFO_EXT`
-- `VUID-VkSwapchainPresentFenceInfoEXT-pFences-parameter` (*by the types*): `pFences` must be a valid pointer to an array of `swapchainCount` valid VkFence handles*/
+- `VUID-VkSwapchainPresentFenceInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_PRESENT_FENCE_INFO_EXT`*/
 #[cfg(feature = "ext_swapchain_maintenance1")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -8,8 +8,8 @@ use super::*;
 
 The rules of `VkShaderModuleValidationCacheCreateInfoEXT` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkShaderModuleValidationCacheCreateInfoEXT.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SHADER_MODULE_VALIDATION_CACHE_CREATE_INFO_EXT`
-- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-validationCache-parameter` (*by the types*): `validationCache` must be a valid VkValidationCacheEXT handle*/
+- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-validationCache-parameter` (*checked*): `validationCache` must be a valid VkValidationCacheEXT handle
+- `VUID-VkShaderModuleValidationCacheCreateInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SHADER_MODULE_VALIDATION_CACHE_CREATE_INFO_EXT`*/
 #[cfg(feature = "ext_validation_cache")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -9,8 +9,8 @@ use super::*;
 The rules of `VkBufferCollectionBufferCreateInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionBufferCreateInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-index-06388` (*yours*; explicit rule): `index` must be less than VkBufferCollectionPropertiesFUCHSIA::`bufferCount`
-- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_BUFFER_CREATE_INFO_FUCHSIA`
-- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle*/
+- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-collection-parameter` (*checked*): `collection` must be a valid VkBufferCollectionFUCHSIA handle
+- `VUID-VkBufferCollectionBufferCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_BUFFER_CREATE_INFO_FUCHSIA`*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -143,8 +143,8 @@ impl<'a> BufferCollectionCreateInfoFUCHSIA<'a> {
 The rules of `VkBufferCollectionImageCreateInfoFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCollectionImageCreateInfoFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-index-06391` (*yours*; explicit rule): `index` must be less than VkBufferCollectionPropertiesFUCHSIA::`bufferCount`
-- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_IMAGE_CREATE_INFO_FUCHSIA`
-- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle*/
+- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-collection-parameter` (*checked*): `collection` must be a valid VkBufferCollectionFUCHSIA handle
+- `VUID-VkBufferCollectionImageCreateInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COLLECTION_IMAGE_CREATE_INFO_FUCHSIA`*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -422,8 +422,8 @@ impl<'a> ImageFormatConstraintsInfoFUCHSIA<'a> {
 The rules of `VkImportMemoryBufferCollectionFUCHSIA` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImportMemoryBufferCollectionFUCHSIA.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkImportMemoryBufferCollectionFUCHSIA-index-06406` (*yours*; explicit rule): `index` must be less than the value retrieved as VkBufferCollectionPropertiesFUCHSIA:bufferCount
-- `VUID-VkImportMemoryBufferCollectionFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_BUFFER_COLLECTION_FUCHSIA`
-- `VUID-VkImportMemoryBufferCollectionFUCHSIA-collection-parameter` (*by the types*): `collection` must be a valid VkBufferCollectionFUCHSIA handle*/
+- `VUID-VkImportMemoryBufferCollectionFUCHSIA-collection-parameter` (*checked*): `collection` must be a valid VkBufferCollectionFUCHSIA handle
+- `VUID-VkImportMemoryBufferCollectionFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_MEMORY_BUFFER_COLLECTION_FUCHSIA`*/
 #[cfg(feature = "fuchsia_buffer_collection")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

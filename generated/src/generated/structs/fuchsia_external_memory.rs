@@ -53,10 +53,10 @@ The rules of `VkMemoryGetZirconHandleInfoFUCHSIA` that apply to this crate's API
 
 - `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-04775` (*yours*; explicit rule): `handleType` must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`
 - `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-04776` (*yours*; explicit rule): `handleType` must have been included in the `handleTypes` field of the `VkExportMemoryAllocateInfo` structure when the external memory was allocated
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
 - `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_ZIRCON_HANDLE_INFO_FUCHSIA`
-- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkMemoryGetZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_external_memory")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

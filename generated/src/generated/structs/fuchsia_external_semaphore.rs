@@ -12,11 +12,11 @@ The rules of `VkImportSemaphoreZirconHandleInfoFUCHSIA` that apply to this crate
 - `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-zirconHandle-04766` (*yours*; explicit rule): `zirconHandle` must obey any requirements listed for `handleType` in external semaphore handle types compatibility
 - `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-zirconHandle-04767` (*yours*; explicit rule): `zirconHandle` must have `ZX_RIGHTS_BASIC` and `ZX_RIGHTS_SIGNAL` rights
 - `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-semaphoreType-04768` (*yours*; explicit rule): The VkSemaphoreTypeCreateInfo::`semaphoreType` field must not be `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreImportFlagBits values
 - `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
 - `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_SEMAPHORE_ZIRCON_HANDLE_INFO_FUCHSIA`
-- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkImportSemaphoreZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_external_semaphore")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -82,10 +82,10 @@ The rules of `VkSemaphoreGetZirconHandleInfoFUCHSIA` that apply to this crate's 
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04761` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must be signaled, or have an associated semaphore signal operation pending execution
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-04762` (*yours*; explicit rule): `handleType` must be defined as a Zircon event handle
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-04763` (*yours*; explicit rule): `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
 - `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_GET_ZIRCON_HANDLE_INFO_FUCHSIA`
-- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkSemaphoreGetZirconHandleInfoFUCHSIA-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "fuchsia_external_semaphore")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -138,10 +138,10 @@ The rules of `VkAccelerationStructureCreateInfoKHR` that apply to this crate's A
 - `VUID-VkAccelerationStructureCreateInfoKHR-pNext-08109` (*yours*; explicit rule): If the `pNext` chain includes a VkOpaqueCaptureDescriptorDataCreateInfoEXT structure, `createFlags` must contain `VK_ACCELERATION_STRUCTURE_CREATE_DESCRIPTOR_BUFFER_CAPTURE_REPLAY_BIT_EXT`
 - `VUID-VkAccelerationStructureCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkAccelerationStructureCreateInfoKHR-createFlags-parameter` (*checked*): `createFlags` must be a valid combination of VkAccelerationStructureCreateFlagBitsKHR values
+- `VUID-VkAccelerationStructureCreateInfoKHR-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkAccelerationStructureCreateInfoKHR-type-parameter` (*checked*): `type` must be a valid VkAccelerationStructureTypeKHR value
 - `VUID-VkAccelerationStructureCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR`
-- `VUID-VkAccelerationStructureCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAccelerationStructureMotionInfoNV or …
-- `VUID-VkAccelerationStructureCreateInfoKHR-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkAccelerationStructureCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAccelerationStructureMotionInfoNV or …*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -212,9 +212,9 @@ impl<'a> AccelerationStructureCreateInfoKHR<'a> {
 
 The rules of `VkAccelerationStructureDeviceAddressInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureDeviceAddressInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-accelerationStructure-parameter` (*checked*): `accelerationStructure` must be a valid VkAccelerationStructureKHR handle
 - `VUID-VkAccelerationStructureDeviceAddressInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR`
-- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-accelerationStructure-parameter` (*by the types*): `accelerationStructure` must be a valid VkAccelerationStructureKHR handle*/
+- `VUID-VkAccelerationStructureDeviceAddressInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -498,12 +498,12 @@ The rules of `VkCopyAccelerationStructureInfoKHR` that apply to this crate's API
 - `VUID-VkCopyAccelerationStructureInfoKHR-buffer-03719` (*yours*; explicit rule): The `buffer` used to create `dst` must be bound to device memory
 - `VUID-VkCopyAccelerationStructureInfoKHR-dst-07791` (*yours*; explicit rule): The range of memory backing `dst` that is accessed by this command must not overlap the memory backing `src` that is accessed by this command
 - `VUID-VkCopyAccelerationStructureInfoKHR-dst-07792` (*yours*; explicit rule): `dst` must be bound completely and contiguously to a single `VkDeviceMemory` object via vkBindAccelerationStructureMemoryNV
+- `VUID-VkCopyAccelerationStructureInfoKHR-src-parameter` (*checked*): `src` must be a valid VkAccelerationStructureKHR handle
+- `VUID-VkCopyAccelerationStructureInfoKHR-dst-parameter` (*checked*): `dst` must be a valid VkAccelerationStructureKHR handle
 - `VUID-VkCopyAccelerationStructureInfoKHR-mode-parameter` (*checked*): `mode` must be a valid VkCopyAccelerationStructureModeKHR value
 - `VUID-VkCopyAccelerationStructureInfoKHR-commonparent` (*checked*): Both of `dst`, and `src` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCopyAccelerationStructureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR`
-- `VUID-VkCopyAccelerationStructureInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyAccelerationStructureInfoKHR-src-parameter` (*by the types*): `src` must be a valid VkAccelerationStructureKHR handle
-- `VUID-VkCopyAccelerationStructureInfoKHR-dst-parameter` (*by the types*): `dst` must be a valid VkAccelerationStructureKHR handle*/
+- `VUID-VkCopyAccelerationStructureInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -560,10 +560,10 @@ The rules of `VkCopyAccelerationStructureToMemoryInfoKHR` that apply to this cra
 - `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-src-04959` (*yours*; explicit rule): The source acceleration structure `src` must have been constructed prior to the execution of this command
 - `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-dst-03561` (*yours*; explicit rule): The memory pointed to by `dst` must be at least as large as the serialization size of `src`, as reported by vkWriteAccelerationStructuresPropertiesKHR or vkCmdWriteAccelerationStructuresPropertiesKHR …
 - `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-mode-03412` (*yours*; explicit rule): `mode` must be `VK_COPY_ACCELERATION_STRUCTURE_MODE_SERIALIZE_KHR`
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-src-parameter` (*checked*): `src` must be a valid VkAccelerationStructureKHR handle
 - `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-mode-parameter` (*checked*): `mode` must be a valid VkCopyAccelerationStructureModeKHR value
 - `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_TO_MEMORY_INFO_KHR`
-- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-src-parameter` (*by the types*): `src` must be a valid VkAccelerationStructureKHR handle*/
+- `VUID-VkCopyAccelerationStructureToMemoryInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -611,10 +611,10 @@ The rules of `VkCopyMemoryToAccelerationStructureInfoKHR` that apply to this cra
 - `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-mode-03413` (*yours*; explicit rule): `mode` must be `VK_COPY_ACCELERATION_STRUCTURE_MODE_DESERIALIZE_KHR`
 - `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-pInfo-03414` (*yours*; explicit rule): The data in `src` must have a format compatible with the destination physical device as returned by vkGetDeviceAccelerationStructureCompatibilityKHR
 - `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-dst-03746` (*yours*; explicit rule): `dst` must have been created with a `size` greater than or equal to that used to serialize the data in `src`
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-dst-parameter` (*checked*): `dst` must be a valid VkAccelerationStructureKHR handle
 - `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-mode-parameter` (*checked*): `mode` must be a valid VkCopyAccelerationStructureModeKHR value
 - `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_MEMORY_TO_ACCELERATION_STRUCTURE_INFO_KHR`
-- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-dst-parameter` (*by the types*): `dst` must be a valid VkAccelerationStructureKHR handle*/
+- `VUID-VkCopyMemoryToAccelerationStructureInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -744,9 +744,9 @@ The rules of `VkWriteDescriptorSetAccelerationStructureKHR` that apply to this c
 - `VUID-VkWriteDescriptorSetAccelerationStructureKHR-accelerationStructureCount-02236` (*yours*; explicit rule): `accelerationStructureCount` must be equal to `descriptorCount` in the extended structure
 - `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-03579` (*yours*; explicit rule): Each acceleration structure in `pAccelerationStructures` must have been created with a `type` of `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR` or `VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR`
 - `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-03580` (*yours*; explicit rule): If the `nullDescriptor` feature is not enabled, each element of `pAccelerationStructures` must not be VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-parameter` (*checked*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid or VK_NULL_HANDLE VkAccelerationStructureKHR handles
 - `VUID-VkWriteDescriptorSetAccelerationStructureKHR-accelerationStructureCount-arraylength` (*checked*): `accelerationStructureCount` must be greater than `0`
-- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR`
-- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-pAccelerationStructures-parameter` (*by the types*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid or VK_NULL_HANDLE VkAccelerationStructureKHR handles*/
+- `VUID-VkWriteDescriptorSetAccelerationStructureKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR`*/
 #[cfg(feature = "khr_acceleration_structure")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

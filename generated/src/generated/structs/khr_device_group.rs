@@ -17,12 +17,12 @@ The rules of `VkAcquireNextImageInfoKHR` that apply to this crate's API ([refere
 - `VUID-VkAcquireNextImageInfoKHR-deviceMask-01290` (*yours*; explicit rule): `deviceMask` must be a valid device mask
 - `VUID-VkAcquireNextImageInfoKHR-deviceMask-01291` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `deviceMask` must not be zero
 - `VUID-VkAcquireNextImageInfoKHR-semaphore-03266` (*yours*; checked by the safe methods in every build, but no test breaks it yet, so the report does not count it): `semaphore` must have a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
+- `VUID-VkAcquireNextImageInfoKHR-swapchain-parameter` (*checked*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-VkAcquireNextImageInfoKHR-semaphore-parameter` (*checked*): If `semaphore` is not VK_NULL_HANDLE, `semaphore` must be a valid VkSemaphore handle
+- `VUID-VkAcquireNextImageInfoKHR-fence-parameter` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle
 - `VUID-VkAcquireNextImageInfoKHR-commonparent` (*checked*): Each of `fence`, `semaphore`, and `swapchain` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkAcquireNextImageInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACQUIRE_NEXT_IMAGE_INFO_KHR`
-- `VUID-VkAcquireNextImageInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkAcquireNextImageInfoKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle
-- `VUID-VkAcquireNextImageInfoKHR-semaphore-parameter` (*by the types*): If `semaphore` is not VK_NULL_HANDLE, `semaphore` must be a valid VkSemaphore handle
-- `VUID-VkAcquireNextImageInfoKHR-fence-parameter` (*by the types*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle*/
+- `VUID-VkAcquireNextImageInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -83,8 +83,8 @@ The rules of `VkBindImageMemorySwapchainInfoKHR` that apply to this crate's API 
 
 - `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644` (*yours*; explicit rule): `imageIndex` must be less than the number of images in `swapchain`
 - `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756` (*yours*; explicit rule): If the `swapchain` has been created with `VK_SWAPCHAIN_CREATE_DEFERRED_MEMORY_ALLOCATION_BIT_EXT`, `imageIndex` must be one that has previously been returned by vkAcquireNextImageKHR …
-- `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_MEMORY_SWAPCHAIN_INFO_KHR`
-- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter` (*by the types*): `swapchain` must be a valid VkSwapchainKHR handle*/
+- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter` (*checked*): `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_MEMORY_SWAPCHAIN_INFO_KHR`*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -233,8 +233,8 @@ for DeviceGroupSwapchainCreateInfoKHR<'a> {}
 The rules of `VkImageSwapchainCreateInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSwapchainCreateInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkImageSwapchainCreateInfoKHR-swapchain-00995` (*checked*): If `swapchain` is not VK_NULL_HANDLE, the fields of VkImageCreateInfo must match the implied image creation parameters of the swapchain
-- `VUID-VkImageSwapchainCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_SWAPCHAIN_CREATE_INFO_KHR`
-- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter` (*by the types*): If `swapchain` is not VK_NULL_HANDLE, `swapchain` must be a valid VkSwapchainKHR handle*/
+- `VUID-VkImageSwapchainCreateInfoKHR-swapchain-parameter` (*checked*): If `swapchain` is not VK_NULL_HANDLE, `swapchain` must be a valid VkSwapchainKHR handle
+- `VUID-VkImageSwapchainCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_SWAPCHAIN_CREATE_INFO_KHR`*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -77,11 +77,11 @@ The rules of `VkDisplaySurfaceCreateInfoKHR` that apply to this crate's API ([re
 - `VUID-VkDisplaySurfaceCreateInfoKHR-transform-06740` (*yours*; explicit rule): `transform` must be one of the bits present in the `supportedTransforms` member of `VkDisplayPropertiesKHR` for the display corresponding to `displayMode`
 - `VUID-VkDisplaySurfaceCreateInfoKHR-width-01256` (*yours*; explicit rule): The `width` and `height` members of `imageExtent` must be less than or equal to VkPhysicalDeviceLimits::`maxImageDimension2D`
 - `VUID-VkDisplaySurfaceCreateInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkDisplaySurfaceCreateInfoKHR-displayMode-parameter` (*checked*): `displayMode` must be a valid VkDisplayModeKHR handle
 - `VUID-VkDisplaySurfaceCreateInfoKHR-transform-parameter` (*checked*): `transform` must be a valid VkSurfaceTransformFlagBitsKHR value
 - `VUID-VkDisplaySurfaceCreateInfoKHR-alphaMode-parameter` (*checked*): `alphaMode` must be a valid VkDisplayPlaneAlphaFlagBitsKHR value
 - `VUID-VkDisplaySurfaceCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_SURFACE_CREATE_INFO_KHR`
-- `VUID-VkDisplaySurfaceCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkDisplaySurfaceCreateInfoKHR-displayMode-parameter` (*by the types*): `displayMode` must be a valid VkDisplayModeKHR handle*/
+- `VUID-VkDisplaySurfaceCreateInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_display")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -132,9 +132,9 @@ The rules of `VkRenderingFragmentDensityMapAttachmentInfoEXT` that apply to this
 - `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-06158` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have been created with `VK_IMAGE_USAGE_FRAGMENT_DENSITY_MAP_BIT_EXT`
 - `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-06159` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must not have been created with `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
 - `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-06160` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, it must have a `layerCount` equal to `1`
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-parameter` (*checked*): `imageView` must be a valid VkImageView handle
 - `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
-- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDERING_FRAGMENT_DENSITY_MAP_ATTACHMENT_INFO_EXT`
-- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-imageView-parameter` (*by the types*): `imageView` must be a valid VkImageView handle*/
+- `VUID-VkRenderingFragmentDensityMapAttachmentInfoEXT-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDERING_FRAGMENT_DENSITY_MAP_ATTACHMENT_INFO_EXT`*/
 #[cfg(all(feature = "ext_fragment_density_map", feature = "khr_dynamic_rendering"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -191,9 +191,9 @@ The rules of `VkRenderingFragmentShadingRateAttachmentInfoKHR` that apply to thi
 - `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06154` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `shadingRateAttachmentTexelSize.height` must be greater than or equal to `minFragmentShadingRateAttachmentTexelSize.height`
 - `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06155` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, the quotient of `shadingRateAttachmentTexelSize.width` and `shadingRateAttachmentTexelSize.height` must be less than or equal to …
 - `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-06156` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, the quotient of `shadingRateAttachmentTexelSize.height` and `shadingRateAttachmentTexelSize.width` must be less than or equal to …
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-parameter` (*checked*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
 - `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
-- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDERING_FRAGMENT_SHADING_RATE_ATTACHMENT_INFO_KHR`
-- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-imageView-parameter` (*by the types*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle*/
+- `VUID-VkRenderingFragmentShadingRateAttachmentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDERING_FRAGMENT_SHADING_RATE_ATTACHMENT_INFO_KHR`*/
 #[cfg(all(feature = "khr_dynamic_rendering", feature = "khr_fragment_shading_rate"))]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

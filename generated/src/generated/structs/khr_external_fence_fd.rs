@@ -12,10 +12,10 @@ The rules of `VkFenceGetFdInfoKHR` that apply to this crate's API ([reference pa
 - `VUID-VkFenceGetFdInfoKHR-handleType-01454` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `fence` must be signaled, or have an associated fence signal operation pending execution
 - `VUID-VkFenceGetFdInfoKHR-fence-01455` (*yours*; explicit rule): `fence` must not currently have its payload replaced by an imported payload as described below in Importing Fence Payloads unless that imported payload&#8217;s handle type was included in …
 - `VUID-VkFenceGetFdInfoKHR-handleType-01456` (*yours*; explicit rule): `handleType` must be defined as a POSIX file descriptor handle
+- `VUID-VkFenceGetFdInfoKHR-fence-parameter` (*checked*): `fence` must be a valid VkFence handle
 - `VUID-VkFenceGetFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalFenceHandleTypeFlagBits value
 - `VUID-VkFenceGetFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FENCE_GET_FD_INFO_KHR`
-- `VUID-VkFenceGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkFenceGetFdInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
+- `VUID-VkFenceGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_fence_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -59,11 +59,11 @@ The rules of `VkImportFenceFdInfoKHR` that apply to this crate's API ([reference
 - `VUID-VkImportFenceFdInfoKHR-handleType-01464` (*yours*; explicit rule): `handleType` must be a value included in the Handle Types Supported by `VkImportFenceFdInfoKHR` table
 - `VUID-VkImportFenceFdInfoKHR-fd-01541` (*yours*; explicit rule): `fd` must obey any requirements listed for `handleType` in external fence handle types compatibility
 - `VUID-VkImportFenceFdInfoKHR-handleType-07306` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `flags` must contain `VK_FENCE_IMPORT_TEMPORARY_BIT`
+- `VUID-VkImportFenceFdInfoKHR-fence-parameter` (*checked*): `fence` must be a valid VkFence handle
 - `VUID-VkImportFenceFdInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkFenceImportFlagBits values
 - `VUID-VkImportFenceFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalFenceHandleTypeFlagBits value
 - `VUID-VkImportFenceFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_FENCE_FD_INFO_KHR`
-- `VUID-VkImportFenceFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImportFenceFdInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
+- `VUID-VkImportFenceFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_fence_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -68,10 +68,10 @@ The rules of `VkFenceGetWin32HandleInfoKHR` that apply to this crate's API ([ref
 - `VUID-VkFenceGetWin32HandleInfoKHR-fence-01450` (*yours*; explicit rule): `fence` must not currently have its payload replaced by an imported payload as described below in Importing Fence Payloads unless that imported payload&#8217;s handle type was included in …
 - `VUID-VkFenceGetWin32HandleInfoKHR-handleType-01451` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `fence` must be signaled, or have an associated fence signal operation pending execution
 - `VUID-VkFenceGetWin32HandleInfoKHR-handleType-01452` (*yours*; explicit rule): `handleType` must be defined as an NT handle or a global share handle
+- `VUID-VkFenceGetWin32HandleInfoKHR-fence-parameter` (*checked*): `fence` must be a valid VkFence handle
 - `VUID-VkFenceGetWin32HandleInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalFenceHandleTypeFlagBits value
 - `VUID-VkFenceGetWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FENCE_GET_WIN32_HANDLE_INFO_KHR`
-- `VUID-VkFenceGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkFenceGetWin32HandleInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
+- `VUID-VkFenceGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_fence_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -121,10 +121,10 @@ The rules of `VkImportFenceWin32HandleInfoKHR` that apply to this crate's API ([
 - `VUID-VkImportFenceWin32HandleInfoKHR-handle-01462` (*yours*; explicit rule): If `handle` is not `NULL`, `name` must be `NULL`
 - `VUID-VkImportFenceWin32HandleInfoKHR-handle-01539` (*yours*; explicit rule): If `handle` is not `NULL`, it must obey any requirements listed for `handleType` in external fence handle types compatibility
 - `VUID-VkImportFenceWin32HandleInfoKHR-name-01540` (*yours*; explicit rule): If `name` is not `NULL`, it must obey any requirements listed for `handleType` in external fence handle types compatibility
+- `VUID-VkImportFenceWin32HandleInfoKHR-fence-parameter` (*checked*): `fence` must be a valid VkFence handle
 - `VUID-VkImportFenceWin32HandleInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkFenceImportFlagBits values
 - `VUID-VkImportFenceWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_FENCE_WIN32_HANDLE_INFO_KHR`
-- `VUID-VkImportFenceWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImportFenceWin32HandleInfoKHR-fence-parameter` (*by the types*): `fence` must be a valid VkFence handle*/
+- `VUID-VkImportFenceWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_fence_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -69,10 +69,10 @@ The rules of `VkMemoryGetFdInfoKHR` that apply to this crate's API ([reference p
 
 - `VUID-VkMemoryGetFdInfoKHR-handleType-00671` (*yours*; explicit rule): `handleType` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
 - `VUID-VkMemoryGetFdInfoKHR-handleType-00672` (*yours*; explicit rule): `handleType` must be `VK_EXTERNAL_MEMORY_HANDLE_TYPE_OPAQUE_FD_BIT` or `VK_EXTERNAL_MEMORY_HANDLE_TYPE_DMA_BUF_BIT_EXT`
+- `VUID-VkMemoryGetFdInfoKHR-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkMemoryGetFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
 - `VUID-VkMemoryGetFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_FD_INFO_KHR`
-- `VUID-VkMemoryGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkMemoryGetFdInfoKHR-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkMemoryGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_memory_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -125,10 +125,10 @@ The rules of `VkMemoryGetWin32HandleInfoKHR` that apply to this crate's API ([re
 - `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-00662` (*yours*; explicit rule): `handleType` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
 - `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-00663` (*yours*; explicit rule): If `handleType` is defined as an NT handle, vkGetMemoryWin32HandleKHR must be called no more than once for each valid unique combination of `memory` and `handleType`
 - `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-00664` (*yours*; explicit rule): `handleType` must be defined as an NT handle or a global share handle
+- `VUID-VkMemoryGetWin32HandleInfoKHR-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkMemoryGetWin32HandleInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
 - `VUID-VkMemoryGetWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_WIN32_HANDLE_INFO_KHR`
-- `VUID-VkMemoryGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkMemoryGetWin32HandleInfoKHR-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkMemoryGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_memory_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -14,11 +14,11 @@ The rules of `VkImportSemaphoreFdInfoKHR` that apply to this crate's API ([refer
 - `VUID-VkImportSemaphoreFdInfoKHR-handleType-07307` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `flags` must contain `VK_SEMAPHORE_IMPORT_TEMPORARY_BIT`
 - `VUID-VkImportSemaphoreFdInfoKHR-handleType-03264` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_FD_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field must match that of the semaphore from which `fd` was exported
 - `VUID-VkImportSemaphoreFdInfoKHR-flags-03323` (*yours*; explicit rule): If `flags` contains `VK_SEMAPHORE_IMPORT_TEMPORARY_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field of the semaphore from which `fd` was exported must not be `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkImportSemaphoreFdInfoKHR-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkImportSemaphoreFdInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreImportFlagBits values
 - `VUID-VkImportSemaphoreFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
 - `VUID-VkImportSemaphoreFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_SEMAPHORE_FD_INFO_KHR`
-- `VUID-VkImportSemaphoreFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImportSemaphoreFdInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkImportSemaphoreFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_semaphore_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -80,10 +80,10 @@ The rules of `VkSemaphoreGetFdInfoKHR` that apply to this crate's API ([referenc
 - `VUID-VkSemaphoreGetFdInfoKHR-handleType-01136` (*yours*; explicit rule): `handleType` must be defined as a POSIX file descriptor handle
 - `VUID-VkSemaphoreGetFdInfoKHR-handleType-03253` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_BINARY`
 - `VUID-VkSemaphoreGetFdInfoKHR-handleType-03254` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must have an associated semaphore signal operation that has been submitted for execution and any semaphore …
+- `VUID-VkSemaphoreGetFdInfoKHR-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkSemaphoreGetFdInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
 - `VUID-VkSemaphoreGetFdInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_GET_FD_INFO_KHR`
-- `VUID-VkSemaphoreGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkSemaphoreGetFdInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkSemaphoreGetFdInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_semaphore_fd")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

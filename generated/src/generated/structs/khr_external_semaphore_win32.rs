@@ -135,10 +135,10 @@ The rules of `VkImportSemaphoreWin32HandleInfoKHR` that apply to this crate's AP
 - `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-03261` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_BIT` or `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_KMT_BIT`, the VkSemaphoreCreateInfo::`flags` field must match that of the …
 - `VUID-VkImportSemaphoreWin32HandleInfoKHR-handleType-03262` (*yours*; explicit rule): If `handleType` is `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_BIT` or `VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_WIN32_KMT_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field must match …
 - `VUID-VkImportSemaphoreWin32HandleInfoKHR-flags-03322` (*yours*; explicit rule): If `flags` contains `VK_SEMAPHORE_IMPORT_TEMPORARY_BIT`, the VkSemaphoreTypeCreateInfo::`semaphoreType` field of the semaphore from which `handle` or `name` was exported must not be …
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkImportSemaphoreWin32HandleInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreImportFlagBits values
 - `VUID-VkImportSemaphoreWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMPORT_SEMAPHORE_WIN32_HANDLE_INFO_KHR`
-- `VUID-VkImportSemaphoreWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImportSemaphoreWin32HandleInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkImportSemaphoreWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_semaphore_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -214,10 +214,10 @@ The rules of `VkSemaphoreGetWin32HandleInfoKHR` that apply to this crate's API (
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01129` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, as defined below in Importing Semaphore Payloads, there must be no queue waiting on `semaphore`
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01130` (*yours*; explicit rule): If `handleType` refers to a handle type with copy payload transference semantics, `semaphore` must be signaled, or have an associated semaphore signal operation pending execution
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-01131` (*yours*; explicit rule): `handleType` must be defined as an NT handle or a global share handle
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalSemaphoreHandleTypeFlagBits value
 - `VUID-VkSemaphoreGetWin32HandleInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_GET_WIN32_HANDLE_INFO_KHR`
-- `VUID-VkSemaphoreGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkSemaphoreGetWin32HandleInfoKHR-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkSemaphoreGetWin32HandleInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_external_semaphore_win32")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -46,9 +46,9 @@ safe_struct!(
 
 The rules of `VkDisplayPlaneInfo2KHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDisplayPlaneInfo2KHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkDisplayPlaneInfo2KHR-mode-parameter` (*checked*): `mode` must be a valid VkDisplayModeKHR handle
 - `VUID-VkDisplayPlaneInfo2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DISPLAY_PLANE_INFO_2_KHR`
-- `VUID-VkDisplayPlaneInfo2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkDisplayPlaneInfo2KHR-mode-parameter` (*by the types*): `mode` must be a valid VkDisplayModeKHR handle*/
+- `VUID-VkDisplayPlaneInfo2KHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_get_display_properties2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

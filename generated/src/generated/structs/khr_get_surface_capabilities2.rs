@@ -14,9 +14,9 @@ The rules of `VkPhysicalDeviceSurfaceInfo2KHR` that apply to this crate's API ([
 - `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pSurfaceInfo-06528` (*yours*; explicit rule): When passed as the `pSurfaceInfo` parameter of vkGetPhysicalDeviceSurfacePresentModes2EXT, if the VK_GOOGLE_surfaceless_query extension is enabled, then `surface` can be VK_NULL_HANDLE. Otherwise, …
 - `VUID-VkPhysicalDeviceSurfaceInfo2KHR-surface-06529` (*yours*; explicit rule): `surface` must be a valid VkSurfaceKHR handle
 - `VUID-VkPhysicalDeviceSurfaceInfo2KHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-surface-parameter` (*checked*): If `surface` is not VK_NULL_HANDLE, `surface` must be a valid VkSurfaceKHR handle
 - `VUID-VkPhysicalDeviceSurfaceInfo2KHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SURFACE_INFO_2_KHR`
-- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkSurfaceFullScreenExclusiveInfoEXT, …
-- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-surface-parameter` (*by the types*): If `surface` is not VK_NULL_HANDLE, `surface` must be a valid VkSurfaceKHR handle*/
+- `VUID-VkPhysicalDeviceSurfaceInfo2KHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkSurfaceFullScreenExclusiveInfoEXT, …*/
 #[cfg(feature = "khr_get_surface_capabilities2")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -42,9 +42,9 @@ for PhysicalDevicePipelineExecutablePropertiesFeaturesKHR<'a> {}
 The rules of `VkPipelineExecutableInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineExecutableInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkPipelineExecutableInfoKHR-executableIndex-03275` (*yours*; explicit rule): `executableIndex` must be less than the number of pipeline executables associated with `pipeline` as returned in the `pExecutableCount` parameter of `vkGetPipelineExecutablePropertiesKHR`
+- `VUID-VkPipelineExecutableInfoKHR-pipeline-parameter` (*checked*): `pipeline` must be a valid VkPipeline handle
 - `VUID-VkPipelineExecutableInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR`
-- `VUID-VkPipelineExecutableInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkPipelineExecutableInfoKHR-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle*/
+- `VUID-VkPipelineExecutableInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_pipeline_executable_properties")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -15,8 +15,8 @@ The rules of `VkPipelineLibraryCreateInfoKHR` that apply to this crate's API ([r
 - `VUID-VkPipelineLibraryCreateInfoKHR-pipeline-07405` (*yours*; explicit rule): If `pipeline` is being created without `VK_PIPELINE_CREATE_NO_PROTECTED_ACCESS_BIT_EXT`, every element of `pLibraries` must have been created without `VK_PIPELINE_CREATE_NO_PROTECTED_ACCESS_BIT_EXT`
 - `VUID-VkPipelineLibraryCreateInfoKHR-pipeline-07406` (*yours*; explicit rule): If `pipeline` is being created with `VK_PIPELINE_CREATE_PROTECTED_ACCESS_ONLY_BIT_EXT`, every element of `pLibraries` must have been created with `VK_PIPELINE_CREATE_PROTECTED_ACCESS_ONLY_BIT_EXT`
 - `VUID-VkPipelineLibraryCreateInfoKHR-pipeline-07407` (*yours*; explicit rule): If `pipeline` is being created without `VK_PIPELINE_CREATE_PROTECTED_ACCESS_ONLY_BIT_EXT`, every element of `pLibraries` must have been created without …
-- `VUID-VkPipelineLibraryCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_LIBRARY_CREATE_INFO_KHR`
-- `VUID-VkPipelineLibraryCreateInfoKHR-pLibraries-parameter` (*by the types*): If `libraryCount` is not `0`, `pLibraries` must be a valid pointer to an array of `libraryCount` valid VkPipeline handles*/
+- `VUID-VkPipelineLibraryCreateInfoKHR-pLibraries-parameter` (*checked*): If `libraryCount` is not `0`, `pLibraries` must be a valid pointer to an array of `libraryCount` valid VkPipeline handles
+- `VUID-VkPipelineLibraryCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_LIBRARY_CREATE_INFO_KHR`*/
 #[cfg(feature = "khr_pipeline_library")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

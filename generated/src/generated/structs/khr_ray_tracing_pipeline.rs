@@ -136,6 +136,7 @@ The rules of `VkRayTracingPipelineCreateInfoKHR` that apply to this crate's API 
 - `VUID-VkRayTracingPipelineCreateInfoKHR-flags-07403` (*yours*; explicit rule): If `flags` includes `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT`, each element of `pLibraryInfo->pLibraries` must have been created with the …
 - `VUID-VkRayTracingPipelineCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkRayTracingPipelineCreateInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineCreateFlagBits values
+- `VUID-VkRayTracingPipelineCreateInfoKHR-layout-parameter` (*checked*): `layout` must be a valid VkPipelineLayout handle
 - `VUID-VkRayTracingPipelineCreateInfoKHR-commonparent` (*checked*): Both of `basePipelineHandle`, and `layout` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkRayTracingPipelineCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR`
 - `VUID-VkRayTracingPipelineCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkPipelineCreationFeedbackCreateInfo or …
@@ -143,8 +144,7 @@ The rules of `VkRayTracingPipelineCreateInfoKHR` that apply to this crate's API 
 - `VUID-VkRayTracingPipelineCreateInfoKHR-pGroups-parameter` (*by the types*): If `groupCount` is not `0`, `pGroups` must be a valid pointer to an array of `groupCount` valid VkRayTracingShaderGroupCreateInfoKHR structures
 - `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInfo-parameter` (*by the types*): If `pLibraryInfo` is not `NULL`, `pLibraryInfo` must be a valid pointer to a valid VkPipelineLibraryCreateInfoKHR structure
 - `VUID-VkRayTracingPipelineCreateInfoKHR-pLibraryInterface-parameter` (*by the types*): If `pLibraryInterface` is not `NULL`, `pLibraryInterface` must be a valid pointer to a valid VkRayTracingPipelineInterfaceCreateInfoKHR structure
-- `VUID-VkRayTracingPipelineCreateInfoKHR-pDynamicState-parameter` (*by the types*): If `pDynamicState` is not `NULL`, `pDynamicState` must be a valid pointer to a valid VkPipelineDynamicStateCreateInfo structure
-- `VUID-VkRayTracingPipelineCreateInfoKHR-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle*/
+- `VUID-VkRayTracingPipelineCreateInfoKHR-pDynamicState-parameter` (*by the types*): If `pDynamicState` is not `NULL`, `pDynamicState` must be a valid pointer to a valid VkPipelineDynamicStateCreateInfo structure*/
 #[cfg(feature = "khr_ray_tracing_pipeline")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -26,12 +26,12 @@ The rules of `VkPresentInfoKHR` that apply to this crate's API ([reference page]
 - `VUID-VkPresentInfoKHR-pNext-06235` (*yours*; explicit rule): If a VkPresentIdKHR structure is included in the `pNext` chain, and the `presentId` feature is not enabled, each `presentIds` entry in that structure must be NULL
 - `VUID-VkPresentInfoKHR-pImageIndices-01296` (*checked*): Each element of `pImageIndices` must be the index of a presentable image acquired from the swapchain specified by the corresponding element of the `pSwapchains` array, and the presented image …
 - `VUID-VkPresentInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter` (*checked*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphores` must be a valid pointer to an array of `waitSemaphoreCount` valid VkSemaphore handles
+- `VUID-VkPresentInfoKHR-pSwapchains-parameter` (*checked*): `pSwapchains` must be a valid pointer to an array of `swapchainCount` valid VkSwapchainKHR handles
 - `VUID-VkPresentInfoKHR-swapchainCount-arraylength` (*checked*): `swapchainCount` must be greater than `0`
 - `VUID-VkPresentInfoKHR-commonparent` (*checked*): Both of the elements of `pSwapchains`, and the elements of `pWaitSemaphores` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkPresentInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PRESENT_INFO_KHR`
 - `VUID-VkPresentInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupPresentInfoKHR, VkDisplayPresentInfoKHR, …
-- `VUID-VkPresentInfoKHR-pWaitSemaphores-parameter` (*by the types*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphores` must be a valid pointer to an array of `waitSemaphoreCount` valid VkSemaphore handles
-- `VUID-VkPresentInfoKHR-pSwapchains-parameter` (*by the types*): `pSwapchains` must be a valid pointer to an array of `swapchainCount` valid VkSwapchainKHR handles
 - `VUID-VkPresentInfoKHR-pImageIndices-parameter` (*by the types*): `pImageIndices` must be a valid pointer to an array of `swapchainCount` `uint32_t` values
 - `VUID-VkPresentInfoKHR-pResults-parameter` (*by the types*): If `pResults` is not `NULL`, `pResults` must be a valid pointer to an array of `swapchainCount` VkResult values*/
 #[cfg(feature = "khr_swapchain")]
@@ -132,6 +132,7 @@ The rules of `VkSwapchainCreateInfoKHR` that apply to this crate's API ([referen
 - `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-01933` (*checked*): If `oldSwapchain` is not VK_NULL_HANDLE, `oldSwapchain` must be a non-retired swapchain associated with native window referred to by `surface`
 - `VUID-VkSwapchainCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkSwapchainCreateInfoKHR-flags-parameter` (*checked*): `flags` must be a valid combination of VkSwapchainCreateFlagBitsKHR values
+- `VUID-VkSwapchainCreateInfoKHR-surface-parameter` (*checked*): `surface` must be a valid VkSurfaceKHR handle
 - `VUID-VkSwapchainCreateInfoKHR-imageFormat-parameter` (*checked*): `imageFormat` must be a valid VkFormat value
 - `VUID-VkSwapchainCreateInfoKHR-imageColorSpace-parameter` (*checked*): `imageColorSpace` must be a valid VkColorSpaceKHR value
 - `VUID-VkSwapchainCreateInfoKHR-imageUsage-parameter` (*checked*): `imageUsage` must be a valid combination of VkImageUsageFlagBits values
@@ -140,6 +141,7 @@ The rules of `VkSwapchainCreateInfoKHR` that apply to this crate's API ([referen
 - `VUID-VkSwapchainCreateInfoKHR-preTransform-parameter` (*checked*): `preTransform` must be a valid VkSurfaceTransformFlagBitsKHR value
 - `VUID-VkSwapchainCreateInfoKHR-compositeAlpha-parameter` (*checked*): `compositeAlpha` must be a valid VkCompositeAlphaFlagBitsKHR value
 - `VUID-VkSwapchainCreateInfoKHR-presentMode-parameter` (*checked*): `presentMode` must be a valid VkPresentModeKHR value
+- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter` (*checked*): If `oldSwapchain` is not VK_NULL_HANDLE, `oldSwapchain` must be a valid VkSwapchainKHR handle
 - `VUID-VkSwapchainCreateInfoKHR-commonparent` (*checked*): Both of `oldSwapchain`, and `surface` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkInstance
 - `VUID-VkSwapchainCreateInfoKHR-minImageCount-01271` (*checked*): `minImageCount` must be greater than or equal to the value returned in the `minImageCount` member of the `VkSurfaceCapabilitiesKHR` structure returned by vkGetPhysicalDeviceSurfaceCapabilitiesKHR for …
 - `VUID-VkSwapchainCreateInfoKHR-imageExtent-01274` (*checked*): `imageExtent` must be between `minImageExtent` and `maxImageExtent`, inclusive, where `minImageExtent` and `maxImageExtent` are members of the `VkSurfaceCapabilitiesKHR` structure returned by …
@@ -147,9 +149,7 @@ The rules of `VkSwapchainCreateInfoKHR` that apply to this crate's API ([referen
 - `VUID-VkSwapchainCreateInfoKHR-physicalDeviceCount-01429` (*checked*): If the logical device was created with VkDeviceGroupDeviceCreateInfo::`physicalDeviceCount` equal to 1, `flags` must not contain `VK_SWAPCHAIN_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT_KHR`
 - `VUID-VkSwapchainCreateInfoKHR-imageSharingMode-01277` (*by the types*): If `imageSharingMode` is `VK_SHARING_MODE_CONCURRENT`, `pQueueFamilyIndices` must be a valid pointer to an array of `queueFamilyIndexCount` `uint32_t` values
 - `VUID-VkSwapchainCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR`
-- `VUID-VkSwapchainCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupSwapchainCreateInfoKHR, …
-- `VUID-VkSwapchainCreateInfoKHR-surface-parameter` (*by the types*): `surface` must be a valid VkSurfaceKHR handle
-- `VUID-VkSwapchainCreateInfoKHR-oldSwapchain-parameter` (*by the types*): If `oldSwapchain` is not VK_NULL_HANDLE, `oldSwapchain` must be a valid VkSwapchainKHR handle*/
+- `VUID-VkSwapchainCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupSwapchainCreateInfoKHR, …*/
 #[cfg(feature = "khr_swapchain")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

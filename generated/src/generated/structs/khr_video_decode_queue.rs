@@ -38,9 +38,9 @@ The rules of `VkVideoDecodeInfoKHR` that apply to this crate's API ([reference p
 - `VUID-VkVideoDecodeInfoKHR-pPictureResource-07172` (*yours*; explicit rule): The `pPictureResource` member of each element of `pReferenceSlots` must not be `NULL`
 - `VUID-VkVideoDecodeInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkVideoDecodeInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkVideoDecodeInfoKHR-srcBuffer-parameter` (*checked*): `srcBuffer` must be a valid VkBuffer handle
 - `VUID-VkVideoDecodeInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_DECODE_INFO_KHR`
 - `VUID-VkVideoDecodeInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeH264PictureInfoKHR or …
-- `VUID-VkVideoDecodeInfoKHR-srcBuffer-parameter` (*by the types*): `srcBuffer` must be a valid VkBuffer handle
 - `VUID-VkVideoDecodeInfoKHR-dstPictureResource-parameter` (*by the types*): `dstPictureResource` must be a valid VkVideoPictureResourceInfoKHR structure
 - `VUID-VkVideoDecodeInfoKHR-pSetupReferenceSlot-parameter` (*by the types*): If `pSetupReferenceSlot` is not `NULL`, `pSetupReferenceSlot` must be a valid pointer to a valid VkVideoReferenceSlotInfoKHR structure
 - `VUID-VkVideoDecodeInfoKHR-pReferenceSlots-parameter` (*by the types*): If `referenceSlotCount` is not `0`, `pReferenceSlots` must be a valid pointer to an array of `referenceSlotCount` valid VkVideoReferenceSlotInfoKHR structures*/

@@ -10,9 +10,9 @@ The rules of `VkBindVideoSessionMemoryInfoKHR` that apply to this crate's API ([
 
 - `VUID-VkBindVideoSessionMemoryInfoKHR-memoryOffset-07201` (*yours*; explicit rule): `memoryOffset` must be less than the size of `memory`
 - `VUID-VkBindVideoSessionMemoryInfoKHR-memorySize-07202` (*yours*; explicit rule): `memorySize` must be less than or equal to the size of `memory` minus `memoryOffset`
+- `VUID-VkBindVideoSessionMemoryInfoKHR-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkBindVideoSessionMemoryInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_VIDEO_SESSION_MEMORY_INFO_KHR`
-- `VUID-VkBindVideoSessionMemoryInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBindVideoSessionMemoryInfoKHR-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkBindVideoSessionMemoryInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -156,11 +156,11 @@ The rules of `VkVideoBeginCodingInfoKHR` that apply to this crate's API ([refere
 - `VUID-VkVideoBeginCodingInfoKHR-videoSession-07249` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H264_BIT_EXT`, then `videoSessionParameters` must not be `VK_NULL_HANDLE`
 - `VUID-VkVideoBeginCodingInfoKHR-videoSession-07250` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT`, then `videoSessionParameters` must not be `VK_NULL_HANDLE`
 - `VUID-VkVideoBeginCodingInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkVideoBeginCodingInfoKHR-videoSession-parameter` (*checked*): `videoSession` must be a valid VkVideoSessionKHR handle
+- `VUID-VkVideoBeginCodingInfoKHR-videoSessionParameters-parameter` (*checked*): If `videoSessionParameters` is not VK_NULL_HANDLE, `videoSessionParameters` must be a valid VkVideoSessionParametersKHR handle
 - `VUID-VkVideoBeginCodingInfoKHR-commonparent` (*checked*): Both of `videoSession`, and `videoSessionParameters` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkVideoBeginCodingInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_BEGIN_CODING_INFO_KHR`
 - `VUID-VkVideoBeginCodingInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkVideoBeginCodingInfoKHR-videoSession-parameter` (*by the types*): `videoSession` must be a valid VkVideoSessionKHR handle
-- `VUID-VkVideoBeginCodingInfoKHR-videoSessionParameters-parameter` (*by the types*): If `videoSessionParameters` is not VK_NULL_HANDLE, `videoSessionParameters` must be a valid VkVideoSessionParametersKHR handle
 - `VUID-VkVideoBeginCodingInfoKHR-pReferenceSlots-parameter` (*by the types*): If `referenceSlotCount` is not `0`, `pReferenceSlots` must be a valid pointer to an array of `referenceSlotCount` valid VkVideoReferenceSlotInfoKHR structures*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
@@ -327,9 +327,9 @@ safe_struct!(
 The rules of `VkVideoPictureResourceInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkVideoPictureResourceInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkVideoPictureResourceInfoKHR-baseArrayLayer-07175` (*yours*; explicit rule): `baseArrayLayer` must be less than the VkImageViewCreateInfo::`subresourceRange.layerCount` specified when the image view `imageViewBinding` was created
+- `VUID-VkVideoPictureResourceInfoKHR-imageViewBinding-parameter` (*checked*): `imageViewBinding` must be a valid VkImageView handle
 - `VUID-VkVideoPictureResourceInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_PICTURE_RESOURCE_INFO_KHR`
-- `VUID-VkVideoPictureResourceInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkVideoPictureResourceInfoKHR-imageViewBinding-parameter` (*by the types*): `imageViewBinding` must be a valid VkImageView handle*/
+- `VUID-VkVideoPictureResourceInfoKHR-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -678,11 +678,11 @@ The rules of `VkVideoSessionParametersCreateInfoKHR` that apply to this crate's 
 - `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-07211` (*yours*; explicit rule): If `videoSession` was created with the video codec operation `VK_VIDEO_CODEC_OPERATION_ENCODE_H265_BIT_EXT`, then the `pNext` chain must include a VkVideoEncodeH265SessionParametersCreateInfoEXT …
 - `VUID-VkVideoSessionParametersCreateInfoKHR-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkVideoSessionParametersCreateInfoKHR-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSessionParametersTemplate-parameter` (*checked*): If `videoSessionParametersTemplate` is not VK_NULL_HANDLE, `videoSessionParametersTemplate` must be a valid VkVideoSessionParametersKHR handle
+- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-parameter` (*checked*): `videoSession` must be a valid VkVideoSessionKHR handle
 - `VUID-VkVideoSessionParametersCreateInfoKHR-commonparent` (*checked*): Both of `videoSession`, and `videoSessionParametersTemplate` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkVideoSessionParametersCreateInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_VIDEO_SESSION_PARAMETERS_CREATE_INFO_KHR`
-- `VUID-VkVideoSessionParametersCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeH264SessionParametersCreateInfoKHR, …
-- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSessionParametersTemplate-parameter` (*by the types*): If `videoSessionParametersTemplate` is not VK_NULL_HANDLE, `videoSessionParametersTemplate` must be a valid VkVideoSessionParametersKHR handle
-- `VUID-VkVideoSessionParametersCreateInfoKHR-videoSession-parameter` (*by the types*): `videoSession` must be a valid VkVideoSessionKHR handle*/
+- `VUID-VkVideoSessionParametersCreateInfoKHR-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkVideoDecodeH264SessionParametersCreateInfoKHR, …*/
 #[cfg(feature = "khr_video_queue")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -9,12 +9,12 @@ use super::*;
 The rules of `VkWin32KeyedMutexAcquireReleaseInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWin32KeyedMutexAcquireReleaseInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pAcquireSyncs-00081` (*yours*; explicit rule): Each member of `pAcquireSyncs` and `pReleaseSyncs` must be a device memory object imported by setting VkImportMemoryWin32HandleInfoKHR::`handleType` to …
+- `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pAcquireSyncs-parameter` (*checked*): If `acquireCount` is not `0`, `pAcquireSyncs` must be a valid pointer to an array of `acquireCount` valid VkDeviceMemory handles
+- `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pReleaseSyncs-parameter` (*checked*): If `releaseCount` is not `0`, `pReleaseSyncs` must be a valid pointer to an array of `releaseCount` valid VkDeviceMemory handles
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-commonparent` (*checked*): Both of the elements of `pAcquireSyncs`, and the elements of `pReleaseSyncs` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WIN32_KEYED_MUTEX_ACQUIRE_RELEASE_INFO_KHR`
-- `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pAcquireSyncs-parameter` (*by the types*): If `acquireCount` is not `0`, `pAcquireSyncs` must be a valid pointer to an array of `acquireCount` valid VkDeviceMemory handles
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pAcquireKeys-parameter` (*by the types*): If `acquireCount` is not `0`, `pAcquireKeys` must be a valid pointer to an array of `acquireCount` `uint64_t` values
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pAcquireTimeouts-parameter` (*by the types*): If `acquireCount` is not `0`, `pAcquireTimeouts` must be a valid pointer to an array of `acquireCount` `uint32_t` values
-- `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pReleaseSyncs-parameter` (*by the types*): If `releaseCount` is not `0`, `pReleaseSyncs` must be a valid pointer to an array of `releaseCount` valid VkDeviceMemory handles
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoKHR-pReleaseKeys-parameter` (*by the types*): If `releaseCount` is not `0`, `pReleaseKeys` must be a valid pointer to an array of `releaseCount` `uint64_t` values*/
 #[cfg(feature = "khr_win32_keyed_mutex")]
 #[repr(transparent)]

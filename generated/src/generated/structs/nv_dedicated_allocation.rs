@@ -76,10 +76,10 @@ The rules of `VkDedicatedAllocationMemoryAllocateInfoNV` that apply to this crat
 - `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-00653` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the buffer
 - `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-00654` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation, the memory being imported must also be a dedicated image allocation and `image` must be identical to the …
 - `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-00655` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation, the memory being imported must also be a dedicated buffer allocation and `buffer` must be identical to the …
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-parameter` (*checked*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-parameter` (*checked*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle
 - `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-commonparent` (*checked*): Both of `buffer`, and `image` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
-- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEDICATED_ALLOCATION_MEMORY_ALLOCATE_INFO_NV`
-- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-image-parameter` (*by the types*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
-- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-buffer-parameter` (*by the types*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkDedicatedAllocationMemoryAllocateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEDICATED_ALLOCATION_MEMORY_ALLOCATE_INFO_NV`*/
 #[cfg(feature = "nv_dedicated_allocation")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -29,16 +29,16 @@ The rules of `VkGeneratedCommandsInfoNV` that apply to this crate's API ([refere
 - `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-07078` (*yours*; explicit rule): If the `indirectCommandsLayout` uses a token of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_DRAW_TASKS_NV`, then the `pipeline` must contain a shader stage using the `MeshNV` {ExecutionModel}
 - `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-07079` (*yours*; explicit rule): If the `indirectCommandsLayout` uses a token of `VK_INDIRECT_COMMANDS_TOKEN_TYPE_DRAW_MESH_TASKS_NV`, then the `pipeline` must contain a shader stage using the `MeshEXT` {ExecutionModel}
 - `VUID-VkGeneratedCommandsInfoNV-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-VkGeneratedCommandsInfoNV-pipeline-parameter` (*checked*): `pipeline` must be a valid VkPipeline handle
+- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-parameter` (*checked*): `indirectCommandsLayout` must be a valid VkIndirectCommandsLayoutNV handle
+- `VUID-VkGeneratedCommandsInfoNV-preprocessBuffer-parameter` (*checked*): `preprocessBuffer` must be a valid VkBuffer handle
+- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-parameter` (*checked*): If `sequencesCountBuffer` is not VK_NULL_HANDLE, `sequencesCountBuffer` must be a valid VkBuffer handle
+- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-parameter` (*checked*): If `sequencesIndexBuffer` is not VK_NULL_HANDLE, `sequencesIndexBuffer` must be a valid VkBuffer handle
 - `VUID-VkGeneratedCommandsInfoNV-streamCount-arraylength` (*checked*): `streamCount` must be greater than `0`
 - `VUID-VkGeneratedCommandsInfoNV-commonparent` (*checked*): Each of `indirectCommandsLayout`, `pipeline`, `preprocessBuffer`, `sequencesCountBuffer`, and `sequencesIndexBuffer` that are valid handles of non-ignored parameters must have been created, allocated, …
 - `VUID-VkGeneratedCommandsInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GENERATED_COMMANDS_INFO_NV`
 - `VUID-VkGeneratedCommandsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkGeneratedCommandsInfoNV-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle
-- `VUID-VkGeneratedCommandsInfoNV-indirectCommandsLayout-parameter` (*by the types*): `indirectCommandsLayout` must be a valid VkIndirectCommandsLayoutNV handle
-- `VUID-VkGeneratedCommandsInfoNV-pStreams-parameter` (*by the types*): `pStreams` must be a valid pointer to an array of `streamCount` valid VkIndirectCommandsStreamNV structures
-- `VUID-VkGeneratedCommandsInfoNV-preprocessBuffer-parameter` (*by the types*): `preprocessBuffer` must be a valid VkBuffer handle
-- `VUID-VkGeneratedCommandsInfoNV-sequencesCountBuffer-parameter` (*by the types*): If `sequencesCountBuffer` is not VK_NULL_HANDLE, `sequencesCountBuffer` must be a valid VkBuffer handle
-- `VUID-VkGeneratedCommandsInfoNV-sequencesIndexBuffer-parameter` (*by the types*): If `sequencesIndexBuffer` is not VK_NULL_HANDLE, `sequencesIndexBuffer` must be a valid VkBuffer handle*/
+- `VUID-VkGeneratedCommandsInfoNV-pStreams-parameter` (*by the types*): `pStreams` must be a valid pointer to an array of `streamCount` valid VkIndirectCommandsStreamNV structures*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -153,11 +153,11 @@ The rules of `VkGeneratedCommandsMemoryRequirementsInfoNV` that apply to this cr
 
 - `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-maxSequencesCount-02907` (*yours*; explicit rule): `maxSequencesCount` must be less or equal to VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::`maxIndirectSequenceCount`
 - `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipelineBindPoint-parameter` (*checked*): `pipelineBindPoint` must be a valid VkPipelineBindPoint value
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipeline-parameter` (*checked*): `pipeline` must be a valid VkPipeline handle
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-indirectCommandsLayout-parameter` (*checked*): `indirectCommandsLayout` must be a valid VkIndirectCommandsLayoutNV handle
 - `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-commonparent` (*checked*): Both of `indirectCommandsLayout`, and `pipeline` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GENERATED_COMMANDS_MEMORY_REQUIREMENTS_INFO_NV`
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pipeline-parameter` (*by the types*): `pipeline` must be a valid VkPipeline handle
-- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-indirectCommandsLayout-parameter` (*by the types*): `indirectCommandsLayout` must be a valid VkIndirectCommandsLayoutNV handle*/
+- `VUID-VkGeneratedCommandsMemoryRequirementsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -229,9 +229,9 @@ The rules of `VkGraphicsPipelineShaderGroupsCreateInfoNV` that apply to this cra
 - `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02883` (*yours*; explicit rule): All elements of `pGroups` must use the same shader stage combinations
 - `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02884` (*yours*; explicit rule): All elements of `pGroups` must use the same shader stage combinations unless any mesh shader stage is used, then either combination of task and mesh or just mesh shader is valid
 - `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-02885` (*yours*; explicit rule): Mesh and regular primitive shading stages cannot be mixed across `pGroups`
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pPipelines-parameter` (*checked*): If `pipelineCount` is not `0`, `pPipelines` must be a valid pointer to an array of `pipelineCount` valid VkPipeline handles
 - `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_SHADER_GROUPS_CREATE_INFO_NV`
-- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-parameter` (*by the types*): If `groupCount` is not `0`, `pGroups` must be a valid pointer to an array of `groupCount` valid VkGraphicsShaderGroupCreateInfoNV structures
-- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pPipelines-parameter` (*by the types*): If `pipelineCount` is not `0`, `pPipelines` must be a valid pointer to an array of `pipelineCount` valid VkPipeline handles*/
+- `VUID-VkGraphicsPipelineShaderGroupsCreateInfoNV-pGroups-parameter` (*by the types*): If `groupCount` is not `0`, `pGroups` must be a valid pointer to an array of `groupCount` valid VkGraphicsShaderGroupCreateInfoNV structures*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -410,12 +410,12 @@ The rules of `VkIndirectCommandsLayoutTokenNV` that apply to this crate's API ([
 - `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02983` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_PUSH_CONSTANT_NV`, for each byte in the range specified by `pushconstantOffset` and `pushconstantSize` and for each push constant range that overlaps …
 - `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-02984` (*yours*; explicit rule): If `tokenType` is `VK_INDIRECT_COMMANDS_TOKEN_TYPE_STATE_FLAGS_NV`, `indirectStateFlags` must not be `0`
 - `VUID-VkIndirectCommandsLayoutTokenNV-tokenType-parameter` (*checked*): `tokenType` must be a valid VkIndirectCommandsTokenTypeNV value
+- `VUID-VkIndirectCommandsLayoutTokenNV-pushconstantPipelineLayout-parameter` (*checked*): If `pushconstantPipelineLayout` is not VK_NULL_HANDLE, `pushconstantPipelineLayout` must be a valid VkPipelineLayout handle
 - `VUID-VkIndirectCommandsLayoutTokenNV-pushconstantShaderStageFlags-parameter` (*checked*): `pushconstantShaderStageFlags` must be a valid combination of VkShaderStageFlagBits values
 - `VUID-VkIndirectCommandsLayoutTokenNV-indirectStateFlags-parameter` (*checked*): `indirectStateFlags` must be a valid combination of VkIndirectStateFlagBitsNV values
 - `VUID-VkIndirectCommandsLayoutTokenNV-pIndexTypes-parameter` (*checked*): If `indexTypeCount` is not `0`, `pIndexTypes` must be a valid pointer to an array of `indexTypeCount` valid VkIndexType values
 - `VUID-VkIndirectCommandsLayoutTokenNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_INDIRECT_COMMANDS_LAYOUT_TOKEN_NV`
 - `VUID-VkIndirectCommandsLayoutTokenNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkIndirectCommandsLayoutTokenNV-pushconstantPipelineLayout-parameter` (*by the types*): If `pushconstantPipelineLayout` is not VK_NULL_HANDLE, `pushconstantPipelineLayout` must be a valid VkPipelineLayout handle
 - `VUID-VkIndirectCommandsLayoutTokenNV-pIndexTypeValues-parameter` (*by the types*): If `indexTypeCount` is not `0`, `pIndexTypeValues` must be a valid pointer to an array of `indexTypeCount` `uint32_t` values*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
@@ -533,7 +533,7 @@ The rules of `VkIndirectCommandsStreamNV` that apply to this crate's API ([refer
 - `VUID-VkIndirectCommandsStreamNV-buffer-02942` (*yours*; explicit rule): The `buffer`&#8217;s usage flag must have the `VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT` bit set
 - `VUID-VkIndirectCommandsStreamNV-offset-02943` (*yours*; explicit rule): The `offset` must be aligned to `VkPhysicalDeviceDeviceGeneratedCommandsPropertiesNV::minIndirectCommandsBufferOffsetAlignment`
 - `VUID-VkIndirectCommandsStreamNV-buffer-02975` (*yours*; explicit rule): If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
-- `VUID-VkIndirectCommandsStreamNV-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkIndirectCommandsStreamNV-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle*/
 #[cfg(feature = "nv_device_generated_commands")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

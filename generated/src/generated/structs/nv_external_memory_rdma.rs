@@ -9,10 +9,10 @@ use super::*;
 The rules of `VkMemoryGetRemoteAddressInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMemoryGetRemoteAddressInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkMemoryGetRemoteAddressInfoNV-handleType-04966` (*yours*; explicit rule): `handleType` must have been included in VkExportMemoryAllocateInfo::`handleTypes` when `memory` was created
+- `VUID-VkMemoryGetRemoteAddressInfoNV-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkMemoryGetRemoteAddressInfoNV-handleType-parameter` (*checked*): `handleType` must be a valid VkExternalMemoryHandleTypeFlagBits value
 - `VUID-VkMemoryGetRemoteAddressInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_GET_REMOTE_ADDRESS_INFO_NV`
-- `VUID-VkMemoryGetRemoteAddressInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkMemoryGetRemoteAddressInfoNV-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkMemoryGetRemoteAddressInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_external_memory_rdma")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -115,9 +115,9 @@ impl<'a> AccelerationStructureInfoNV<'a> {
 The rules of `VkAccelerationStructureMemoryRequirementsInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkAccelerationStructureMemoryRequirementsInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-type-parameter` (*checked*): `type` must be a valid VkAccelerationStructureMemoryRequirementsTypeNV value
+- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-accelerationStructure-parameter` (*checked*): `accelerationStructure` must be a valid VkAccelerationStructureNV handle
 - `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_MEMORY_REQUIREMENTS_INFO_NV`
-- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-accelerationStructure-parameter` (*by the types*): `accelerationStructure` must be a valid VkAccelerationStructureNV handle*/
+- `VUID-VkAccelerationStructureMemoryRequirementsInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -169,11 +169,11 @@ The rules of `VkBindAccelerationStructureMemoryInfoNV` that apply to this crate'
 - `VUID-VkBindAccelerationStructureMemoryInfoNV-memory-03622` (*yours*; explicit rule): `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the VkMemoryRequirements structure returned from a call to …
 - `VUID-VkBindAccelerationStructureMemoryInfoNV-memoryOffset-03623` (*yours*; explicit rule): `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a call to vkGetAccelerationStructureMemoryRequirementsNV with …
 - `VUID-VkBindAccelerationStructureMemoryInfoNV-size-03624` (*yours*; explicit rule): The `size` member of the `VkMemoryRequirements` structure returned from a call to vkGetAccelerationStructureMemoryRequirementsNV with `accelerationStructure` and `type` of …
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-accelerationStructure-parameter` (*checked*): `accelerationStructure` must be a valid VkAccelerationStructureNV handle
+- `VUID-VkBindAccelerationStructureMemoryInfoNV-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkBindAccelerationStructureMemoryInfoNV-commonparent` (*checked*): Both of `accelerationStructure`, and `memory` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkBindAccelerationStructureMemoryInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_ACCELERATION_STRUCTURE_MEMORY_INFO_NV`
 - `VUID-VkBindAccelerationStructureMemoryInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-accelerationStructure-parameter` (*by the types*): `accelerationStructure` must be a valid VkAccelerationStructureNV handle
-- `VUID-VkBindAccelerationStructureMemoryInfoNV-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkBindAccelerationStructureMemoryInfoNV-pDeviceIndices-parameter` (*by the types*): If `deviceIndexCount` is not `0`, `pDeviceIndices` must be a valid pointer to an array of `deviceIndexCount` `uint32_t` values*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
@@ -237,9 +237,9 @@ The rules of `VkGeometryAABBNV` that apply to this crate's API ([reference page]
 - `VUID-VkGeometryAABBNV-offset-02439` (*yours*; explicit rule): `offset` must be less than the size of `aabbData`
 - `VUID-VkGeometryAABBNV-offset-02440` (*yours*; explicit rule): `offset` must be a multiple of `8`
 - `VUID-VkGeometryAABBNV-stride-02441` (*yours*; explicit rule): `stride` must be a multiple of `8`
+- `VUID-VkGeometryAABBNV-aabbData-parameter` (*checked*): If `aabbData` is not VK_NULL_HANDLE, `aabbData` must be a valid VkBuffer handle
 - `VUID-VkGeometryAABBNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GEOMETRY_AABB_NV`
-- `VUID-VkGeometryAABBNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkGeometryAABBNV-aabbData-parameter` (*by the types*): If `aabbData` is not VK_NULL_HANDLE, `aabbData` must be a valid VkBuffer handle*/
+- `VUID-VkGeometryAABBNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -388,14 +388,14 @@ The rules of `VkGeometryTrianglesNV` that apply to this crate's API ([reference 
 - `VUID-VkGeometryTrianglesNV-indexCount-02436` (*yours*; explicit rule): `indexCount` must be `0` if `indexType` is `VK_INDEX_TYPE_NONE_NV`
 - `VUID-VkGeometryTrianglesNV-transformOffset-02437` (*yours*; explicit rule): `transformOffset` must be less than the size of `transformData`
 - `VUID-VkGeometryTrianglesNV-transformOffset-02438` (*yours*; explicit rule): `transformOffset` must be a multiple of `16`
+- `VUID-VkGeometryTrianglesNV-vertexData-parameter` (*checked*): If `vertexData` is not VK_NULL_HANDLE, `vertexData` must be a valid VkBuffer handle
 - `VUID-VkGeometryTrianglesNV-vertexFormat-parameter` (*checked*): `vertexFormat` must be a valid VkFormat value
+- `VUID-VkGeometryTrianglesNV-indexData-parameter` (*checked*): If `indexData` is not VK_NULL_HANDLE, `indexData` must be a valid VkBuffer handle
 - `VUID-VkGeometryTrianglesNV-indexType-parameter` (*checked*): `indexType` must be a valid VkIndexType value
+- `VUID-VkGeometryTrianglesNV-transformData-parameter` (*checked*): If `transformData` is not VK_NULL_HANDLE, `transformData` must be a valid VkBuffer handle
 - `VUID-VkGeometryTrianglesNV-commonparent` (*checked*): Each of `indexData`, `transformData`, and `vertexData` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkGeometryTrianglesNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_GEOMETRY_TRIANGLES_NV`
-- `VUID-VkGeometryTrianglesNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkGeometryTrianglesNV-vertexData-parameter` (*by the types*): If `vertexData` is not VK_NULL_HANDLE, `vertexData` must be a valid VkBuffer handle
-- `VUID-VkGeometryTrianglesNV-indexData-parameter` (*by the types*): If `indexData` is not VK_NULL_HANDLE, `indexData` must be a valid VkBuffer handle
-- `VUID-VkGeometryTrianglesNV-transformData-parameter` (*by the types*): If `transformData` is not VK_NULL_HANDLE, `transformData` must be a valid VkBuffer handle*/
+- `VUID-VkGeometryTrianglesNV-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -526,14 +526,14 @@ The rules of `VkRayTracingPipelineCreateInfoNV` that apply to this crate's API (
 - `VUID-VkRayTracingPipelineCreateInfoNV-flags-07402` (*yours*; explicit rule): `flags` must not include `VK_PIPELINE_CREATE_RAY_TRACING_OPACITY_MICROMAP_BIT_EXT`
 - `VUID-VkRayTracingPipelineCreateInfoNV-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkRayTracingPipelineCreateInfoNV-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineCreateFlagBits values
+- `VUID-VkRayTracingPipelineCreateInfoNV-layout-parameter` (*checked*): `layout` must be a valid VkPipelineLayout handle
 - `VUID-VkRayTracingPipelineCreateInfoNV-stageCount-arraylength` (*checked*): `stageCount` must be greater than `0`
 - `VUID-VkRayTracingPipelineCreateInfoNV-groupCount-arraylength` (*checked*): `groupCount` must be greater than `0`
 - `VUID-VkRayTracingPipelineCreateInfoNV-commonparent` (*checked*): Both of `basePipelineHandle`, and `layout` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkRayTracingPipelineCreateInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_NV`
 - `VUID-VkRayTracingPipelineCreateInfoNV-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkPipelineCreationFeedbackCreateInfo
 - `VUID-VkRayTracingPipelineCreateInfoNV-pStages-parameter` (*by the types*): `pStages` must be a valid pointer to an array of `stageCount` valid VkPipelineShaderStageCreateInfo structures
-- `VUID-VkRayTracingPipelineCreateInfoNV-pGroups-parameter` (*by the types*): `pGroups` must be a valid pointer to an array of `groupCount` valid VkRayTracingShaderGroupCreateInfoNV structures
-- `VUID-VkRayTracingPipelineCreateInfoNV-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle*/
+- `VUID-VkRayTracingPipelineCreateInfoNV-pGroups-parameter` (*by the types*): `pGroups` must be a valid pointer to an array of `groupCount` valid VkRayTracingShaderGroupCreateInfoNV structures*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -670,9 +670,9 @@ The rules of `VkWriteDescriptorSetAccelerationStructureNV` that apply to this cr
 - `VUID-VkWriteDescriptorSetAccelerationStructureNV-accelerationStructureCount-03747` (*yours*; explicit rule): `accelerationStructureCount` must be equal to `descriptorCount` in the extended structure
 - `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-03748` (*yours*; explicit rule): Each acceleration structure in `pAccelerationStructures` must have been created with `VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR`
 - `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-03749` (*yours*; explicit rule): If the `nullDescriptor` feature is not enabled, each member of `pAccelerationStructures` must not be VK_NULL_HANDLE
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-parameter` (*checked*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid or VK_NULL_HANDLE VkAccelerationStructureNV handles
 - `VUID-VkWriteDescriptorSetAccelerationStructureNV-accelerationStructureCount-arraylength` (*checked*): `accelerationStructureCount` must be greater than `0`
-- `VUID-VkWriteDescriptorSetAccelerationStructureNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_NV`
-- `VUID-VkWriteDescriptorSetAccelerationStructureNV-pAccelerationStructures-parameter` (*by the types*): `pAccelerationStructures` must be a valid pointer to an array of `accelerationStructureCount` valid or VK_NULL_HANDLE VkAccelerationStructureNV handles*/
+- `VUID-VkWriteDescriptorSetAccelerationStructureNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_NV`*/
 #[cfg(feature = "nv_ray_tracing")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

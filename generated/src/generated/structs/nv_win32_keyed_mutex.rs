@@ -8,12 +8,12 @@ use super::*;
 
 The rules of `VkWin32KeyedMutexAcquireReleaseInfoNV` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkWin32KeyedMutexAcquireReleaseInfoNV.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-pAcquireSyncs-parameter` (*checked*): If `acquireCount` is not `0`, `pAcquireSyncs` must be a valid pointer to an array of `acquireCount` valid VkDeviceMemory handles
+- `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-pReleaseSyncs-parameter` (*checked*): If `releaseCount` is not `0`, `pReleaseSyncs` must be a valid pointer to an array of `releaseCount` valid VkDeviceMemory handles
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-commonparent` (*checked*): Both of the elements of `pAcquireSyncs`, and the elements of `pReleaseSyncs` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_WIN32_KEYED_MUTEX_ACQUIRE_RELEASE_INFO_NV`
-- `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-pAcquireSyncs-parameter` (*by the types*): If `acquireCount` is not `0`, `pAcquireSyncs` must be a valid pointer to an array of `acquireCount` valid VkDeviceMemory handles
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-pAcquireKeys-parameter` (*by the types*): If `acquireCount` is not `0`, `pAcquireKeys` must be a valid pointer to an array of `acquireCount` `uint64_t` values
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-pAcquireTimeoutMilliseconds-parameter` (*by the types*): If `acquireCount` is not `0`, `pAcquireTimeoutMilliseconds` must be a valid pointer to an array of `acquireCount` `uint32_t` values
-- `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-pReleaseSyncs-parameter` (*by the types*): If `releaseCount` is not `0`, `pReleaseSyncs` must be a valid pointer to an array of `releaseCount` valid VkDeviceMemory handles
 - `VUID-VkWin32KeyedMutexAcquireReleaseInfoNV-pReleaseKeys-parameter` (*by the types*): If `releaseCount` is not `0`, `pReleaseKeys` must be a valid pointer to an array of `releaseCount` `uint64_t` values*/
 #[cfg(feature = "nv_win32_keyed_mutex")]
 #[repr(transparent)]

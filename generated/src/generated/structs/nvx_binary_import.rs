@@ -8,9 +8,9 @@ use super::*;
 
 The rules of `VkCuFunctionCreateInfoNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuFunctionCreateInfoNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkCuFunctionCreateInfoNVX-module-parameter` (*checked*): `module` must be a valid VkCuModuleNVX handle
 - `VUID-VkCuFunctionCreateInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CU_FUNCTION_CREATE_INFO_NVX`
 - `VUID-VkCuFunctionCreateInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCuFunctionCreateInfoNVX-module-parameter` (*by the types*): `module` must be a valid VkCuModuleNVX handle
 - `VUID-VkCuFunctionCreateInfoNVX-pName-parameter` (*by the types*): `pName` must be a null-terminated UTF-8 string*/
 #[cfg(feature = "nvx_binary_import")]
 #[repr(transparent)]
@@ -53,9 +53,9 @@ impl<'a> CuFunctionCreateInfoNVX<'a> {
 
 The rules of `VkCuLaunchInfoNVX` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCuLaunchInfoNVX.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkCuLaunchInfoNVX-function-parameter` (*checked*): `function` must be a valid VkCuFunctionNVX handle
 - `VUID-VkCuLaunchInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_CU_LAUNCH_INFO_NVX`
 - `VUID-VkCuLaunchInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCuLaunchInfoNVX-function-parameter` (*by the types*): `function` must be a valid VkCuFunctionNVX handle
 - `VUID-VkCuLaunchInfoNVX-pParams-parameter` (*by the types*): If `paramCount` is not `0`, `pParams` must be a valid pointer to an array of `paramCount` bytes
 - `VUID-VkCuLaunchInfoNVX-pExtras-parameter` (*by the types*): If `extraCount` is not `0`, `pExtras` must be a valid pointer to an array of `extraCount` bytes*/
 #[cfg(feature = "nvx_binary_import")]

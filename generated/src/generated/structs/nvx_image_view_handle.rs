@@ -31,12 +31,12 @@ The rules of `VkImageViewHandleInfoNVX` that apply to this crate's API ([referen
 - `VUID-VkImageViewHandleInfoNVX-sampler-02655` (*yours*; explicit rule): `sampler` must be a valid VkSampler if `descriptorType` is `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`
 - `VUID-VkImageViewHandleInfoNVX-imageView-02656` (*yours*; explicit rule): If descriptorType is `VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, the image that `imageView` was created from must have been created with the …
 - `VUID-VkImageViewHandleInfoNVX-imageView-02657` (*yours*; explicit rule): If descriptorType is `VK_DESCRIPTOR_TYPE_STORAGE_IMAGE`, the image that `imageView` was created from must have been created with the `VK_IMAGE_USAGE_STORAGE_BIT` usage bit set
+- `VUID-VkImageViewHandleInfoNVX-imageView-parameter` (*checked*): `imageView` must be a valid VkImageView handle
 - `VUID-VkImageViewHandleInfoNVX-descriptorType-parameter` (*checked*): `descriptorType` must be a valid VkDescriptorType value
+- `VUID-VkImageViewHandleInfoNVX-sampler-parameter` (*checked*): If `sampler` is not VK_NULL_HANDLE, `sampler` must be a valid VkSampler handle
 - `VUID-VkImageViewHandleInfoNVX-commonparent` (*checked*): Both of `imageView`, and `sampler` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkImageViewHandleInfoNVX-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_HANDLE_INFO_NVX`
-- `VUID-VkImageViewHandleInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImageViewHandleInfoNVX-imageView-parameter` (*by the types*): `imageView` must be a valid VkImageView handle
-- `VUID-VkImageViewHandleInfoNVX-sampler-parameter` (*by the types*): If `sampler` is not VK_NULL_HANDLE, `sampler` must be a valid VkSampler handle*/
+- `VUID-VkImageViewHandleInfoNVX-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "nvx_image_view_handle")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

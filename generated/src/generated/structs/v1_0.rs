@@ -182,14 +182,14 @@ The rules of `VkBindSparseInfo` that apply to this crate's API ([reference page]
 - `VUID-VkBindSparseInfo-pWaitSemaphores-03250` (*yours*; explicit rule): For each element of `pWaitSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pWaitSemaphoreValues` must have a …
 - `VUID-VkBindSparseInfo-pSignalSemaphores-03251` (*yours*; explicit rule): For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a …
 - `VUID-VkBindSparseInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkBindSparseInfo-pWaitSemaphores-parameter` (*checked*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphores` must be a valid pointer to an array of `waitSemaphoreCount` valid VkSemaphore handles
+- `VUID-VkBindSparseInfo-pSignalSemaphores-parameter` (*checked*): If `signalSemaphoreCount` is not `0`, `pSignalSemaphores` must be a valid pointer to an array of `signalSemaphoreCount` valid VkSemaphore handles
 - `VUID-VkBindSparseInfo-commonparent` (*checked*): Both of the elements of `pSignalSemaphores`, and the elements of `pWaitSemaphores` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same …
 - `VUID-VkBindSparseInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_SPARSE_INFO`
 - `VUID-VkBindSparseInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupBindSparseInfo or VkTimelineSemaphoreSubmitInfo
-- `VUID-VkBindSparseInfo-pWaitSemaphores-parameter` (*by the types*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphores` must be a valid pointer to an array of `waitSemaphoreCount` valid VkSemaphore handles
 - `VUID-VkBindSparseInfo-pBufferBinds-parameter` (*by the types*): If `bufferBindCount` is not `0`, `pBufferBinds` must be a valid pointer to an array of `bufferBindCount` valid VkSparseBufferMemoryBindInfo structures
 - `VUID-VkBindSparseInfo-pImageOpaqueBinds-parameter` (*by the types*): If `imageOpaqueBindCount` is not `0`, `pImageOpaqueBinds` must be a valid pointer to an array of `imageOpaqueBindCount` valid VkSparseImageOpaqueMemoryBindInfo structures
-- `VUID-VkBindSparseInfo-pImageBinds-parameter` (*by the types*): If `imageBindCount` is not `0`, `pImageBinds` must be a valid pointer to an array of `imageBindCount` valid VkSparseImageMemoryBindInfo structures
-- `VUID-VkBindSparseInfo-pSignalSemaphores-parameter` (*by the types*): If `signalSemaphoreCount` is not `0`, `pSignalSemaphores` must be a valid pointer to an array of `signalSemaphoreCount` valid VkSemaphore handles*/
+- `VUID-VkBindSparseInfo-pImageBinds-parameter` (*by the types*): If `imageBindCount` is not `0`, `pImageBinds` must be a valid pointer to an array of `imageBindCount` valid VkSparseImageMemoryBindInfo structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindSparseInfo<'a> {
@@ -358,11 +358,11 @@ The rules of `VkBufferMemoryBarrier` that apply to this crate's API ([reference 
 - `VUID-VkBufferMemoryBarrier-size-01188` (*checked*): If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0`
 - `VUID-VkBufferMemoryBarrier-size-01189` (*checked*): If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be less than or equal to than the size of `buffer` minus `offset`
 - `VUID-VkBufferMemoryBarrier-buffer-01931` (*checked*): If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkBufferMemoryBarrier-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087` (*checked*): If `srcQueueFamilyIndex` is not equal to `dstQueueFamilyIndex`, at least one must not be a special queue family reserved for external memory ownership transfers, as described in Queue Family Ownership …
 - `VUID-VkBufferMemoryBarrier-buffer-04089` (*checked*): If `buffer` was created with a sharing mode of `VK_SHARING_MODE_EXCLUSIVE`, and `srcQueueFamilyIndex` and `dstQueueFamilyIndex` are not equal, `srcQueueFamilyIndex` and `dstQueueFamilyIndex` must both …
 - `VUID-VkBufferMemoryBarrier-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER`
-- `VUID-VkBufferMemoryBarrier-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBufferMemoryBarrier-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkBufferMemoryBarrier-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier<'a> {
@@ -448,10 +448,10 @@ The rules of `VkBufferViewCreateInfo` that apply to this crate's API ([reference
 - `VUID-VkBufferViewCreateInfo-buffer-00935` (*checked*): If `buffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkBufferViewCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique, with the exception of structures of type VkExportMetalObjectCreateInfoEXT
 - `VUID-VkBufferViewCreateInfo-flags-zerobitmask` (*checked*): `flags` must be `0`
+- `VUID-VkBufferViewCreateInfo-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkBufferViewCreateInfo-format-parameter` (*checked*): `format` must be a valid VkFormat value
 - `VUID-VkBufferViewCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO`
-- `VUID-VkBufferViewCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkExportMetalObjectCreateInfoEXT
-- `VUID-VkBufferViewCreateInfo-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkBufferViewCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkExportMetalObjectCreateInfoEXT*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferViewCreateInfo<'a> {
@@ -508,10 +508,10 @@ impl<'a> BufferViewCreateInfo<'a> {
 
 The rules of `VkCommandBufferAllocateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferAllocateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkCommandBufferAllocateInfo-commandPool-parameter` (*checked*): `commandPool` must be a valid VkCommandPool handle
 - `VUID-VkCommandBufferAllocateInfo-level-parameter` (*checked*): `level` must be a valid VkCommandBufferLevel value
 - `VUID-VkCommandBufferAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO`
-- `VUID-VkCommandBufferAllocateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCommandBufferAllocateInfo-commandPool-parameter` (*by the types*): `commandPool` must be a valid VkCommandPool handle*/
+- `VUID-VkCommandBufferAllocateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferAllocateInfo<'a> {
@@ -726,12 +726,12 @@ The rules of `VkComputePipelineCreateInfo` that apply to this crate's API ([refe
 - `VUID-VkComputePipelineCreateInfo-layout-00703` (*checked*): `layout` must be consistent with the layout of the compute shader specified in `stage`
 - `VUID-VkComputePipelineCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkComputePipelineCreateInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineCreateFlagBits values
+- `VUID-VkComputePipelineCreateInfo-layout-parameter` (*checked*): `layout` must be a valid VkPipelineLayout handle
 - `VUID-VkComputePipelineCreateInfo-commonparent` (*checked*): Both of `basePipelineHandle`, and `layout` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkComputePipelineCreateInfo-pipelineCreationCacheControl-02875` (*checked*): If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CREATE_FAIL_ON_PIPELINE_COMPILE_REQUIRED_BIT` or `VK_PIPELINE_CREATE_EARLY_RETURN_ON_FAILURE_BIT`
 - `VUID-VkComputePipelineCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO`
 - `VUID-VkComputePipelineCreateInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkPipelineCompilerControlCreateInfoAMD, …
-- `VUID-VkComputePipelineCreateInfo-stage-parameter` (*by the types*): `stage` must be a valid VkPipelineShaderStageCreateInfo structure
-- `VUID-VkComputePipelineCreateInfo-layout-parameter` (*by the types*): `layout` must be a valid VkPipelineLayout handle*/
+- `VUID-VkComputePipelineCreateInfo-stage-parameter` (*by the types*): `stage` must be a valid VkPipelineShaderStageCreateInfo structure*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ComputePipelineCreateInfo<'a> {
@@ -809,13 +809,13 @@ The rules of `VkCopyDescriptorSet` that apply to this crate's API ([reference pa
 - `VUID-VkCopyDescriptorSet-dstBinding-02632` (*checked*): The type of `dstBinding` within `dstSet` must be equal to the type of `srcBinding` within `srcSet`
 - `VUID-VkCopyDescriptorSet-srcSet-00349` (*checked*): If `srcSet` is equal to `dstSet`, then the source and destination ranges of descriptors must not overlap, where the ranges may include array elements from consecutive bindings as described by …
 - `VUID-VkCopyDescriptorSet-dstBinding-02753` (*checked*): If the descriptor type of the descriptor set binding specified by `dstBinding` is `VK_DESCRIPTOR_TYPE_SAMPLER`, then `dstSet` must not have been allocated with a layout that included immutable …
+- `VUID-VkCopyDescriptorSet-srcSet-parameter` (*checked*): `srcSet` must be a valid VkDescriptorSet handle
+- `VUID-VkCopyDescriptorSet-dstSet-parameter` (*checked*): `dstSet` must be a valid VkDescriptorSet handle
 - `VUID-VkCopyDescriptorSet-commonparent` (*checked*): Both of `dstSet`, and `srcSet` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCopyDescriptorSet-srcSet-01920` (*checked*): If the descriptor pool from which `srcSet` was allocated was created with the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set, then the descriptor pool from which `dstSet` was allocated …
 - `VUID-VkCopyDescriptorSet-srcSet-04888` (*checked*): If the descriptor pool from which `srcSet` was allocated was created without the `VK_DESCRIPTOR_POOL_CREATE_UPDATE_AFTER_BIND_BIT` flag set, then the descriptor pool from which `dstSet` was allocated …
 - `VUID-VkCopyDescriptorSet-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_DESCRIPTOR_SET`
-- `VUID-VkCopyDescriptorSet-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyDescriptorSet-srcSet-parameter` (*by the types*): `srcSet` must be a valid VkDescriptorSet handle
-- `VUID-VkCopyDescriptorSet-dstSet-parameter` (*by the types*): `dstSet` must be a valid VkDescriptorSet handle*/
+- `VUID-VkCopyDescriptorSet-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CopyDescriptorSet<'a> {
@@ -900,7 +900,7 @@ The rules of `VkDescriptorBufferInfo` that apply to this crate's API ([reference
 - `VUID-VkDescriptorBufferInfo-range-00341` (*checked*): If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be greater than `0`
 - `VUID-VkDescriptorBufferInfo-range-00342` (*checked*): If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be less than or equal to the size of `buffer` minus `offset`
 - `VUID-VkDescriptorBufferInfo-buffer-02998` (*checked*): If the `nullDescriptor` feature is not enabled, `buffer` must not be VK_NULL_HANDLE
-- `VUID-VkDescriptorBufferInfo-buffer-parameter` (*by the types*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkDescriptorBufferInfo-buffer-parameter` (*checked*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorBufferInfo<'a> {
@@ -1070,12 +1070,12 @@ The rules of `VkDescriptorSetAllocateInfo` that apply to this crate's API ([refe
 - `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-04610` (*yours*; explicit rule): If any element of `pSetLayouts` was created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_HOST_ONLY_POOL_BIT_EXT` bit set, `descriptorPool` must have been created with the …
 - `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-08009` (*yours*; explicit rule): Each element of `pSetLayouts` must not have been created with the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_DESCRIPTOR_BUFFER_BIT_EXT` bit set
 - `VUID-VkDescriptorSetAllocateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkDescriptorSetAllocateInfo-descriptorPool-parameter` (*checked*): `descriptorPool` must be a valid VkDescriptorPool handle
+- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-parameter` (*checked*): `pSetLayouts` must be a valid pointer to an array of `descriptorSetCount` valid VkDescriptorSetLayout handles
 - `VUID-VkDescriptorSetAllocateInfo-descriptorSetCount-arraylength` (*checked*): `descriptorSetCount` must be greater than `0`
 - `VUID-VkDescriptorSetAllocateInfo-commonparent` (*checked*): Both of `descriptorPool`, and the elements of `pSetLayouts` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkDescriptorSetAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO`
-- `VUID-VkDescriptorSetAllocateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkDescriptorSetVariableDescriptorCountAllocateInfo
-- `VUID-VkDescriptorSetAllocateInfo-descriptorPool-parameter` (*by the types*): `descriptorPool` must be a valid VkDescriptorPool handle
-- `VUID-VkDescriptorSetAllocateInfo-pSetLayouts-parameter` (*by the types*): `pSetLayouts` must be a valid pointer to an array of `descriptorSetCount` valid VkDescriptorSetLayout handles*/
+- `VUID-VkDescriptorSetAllocateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkDescriptorSetVariableDescriptorCountAllocateInfo*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetAllocateInfo<'a> {
@@ -1135,12 +1135,12 @@ The rules of `VkDescriptorSetLayoutBinding` that apply to this crate's API ([ref
 - `VUID-VkDescriptorSetLayoutBinding-flags-08007` (*yours*; explicit rule): If VkDescriptorSetLayoutCreateInfo::`flags` contains `VK_DESCRIPTOR_SET_LAYOUT_CREATE_EMBEDDED_IMMUTABLE_SAMPLERS_BIT_EXT`, and `descriptorCount` is equal to `1`, `pImmutableSamplers` must not be …
 - `VUID-VkDescriptorSetLayoutBinding-pImmutableSamplers-04009` (*yours*; explicit rule): The sampler objects indicated by `pImmutableSamplers` must not have a `borderColor` with one of the values `VK_BORDER_COLOR_FLOAT_CUSTOM_EXT` or `VK_BORDER_COLOR_INT_CUSTOM_EXT`
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-04605` (*yours*; explicit rule): If `descriptorType` is `VK_DESCRIPTOR_TYPE_MUTABLE_EXT`, then `pImmutableSamplers` must be `NULL`
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282` (*checked*): If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must …
 - `VUID-VkDescriptorSetLayoutBinding-descriptorCount-00283` (*checked*): If `descriptorCount` is not `0`, `stageFlags` must be a valid combination of VkShaderStageFlagBits values
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-01510` (*checked*): If `descriptorType` is `VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT` and `descriptorCount` is not `0`, then `stageFlags` must be `0` or `VK_SHADER_STAGE_FRAGMENT_BIT`
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-parameter` (*checked*): `descriptorType` must be a valid VkDescriptorType value
 - `VUID-VkDescriptorSetLayoutBinding-descriptorType-04604` (*checked*): If the `inlineUniformBlock` feature is not enabled, `descriptorType` must not be `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210` (*checked*): If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxInlineUniformBlockSize`
-- `VUID-VkDescriptorSetLayoutBinding-descriptorType-00282` (*by the types*): If `descriptorType` is `VK_DESCRIPTOR_TYPE_SAMPLER` or `VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER`, and `descriptorCount` is not `0` and `pImmutableSamplers` is not `NULL`, `pImmutableSamplers` must …*/
+- `VUID-VkDescriptorSetLayoutBinding-descriptorType-02210` (*checked*): If `descriptorType` is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK` then `descriptorCount` must be less than or equal to `VkPhysicalDeviceInlineUniformBlockProperties::maxInlineUniformBlockSize`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DescriptorSetLayoutBinding<'a> {
@@ -1518,6 +1518,7 @@ The rules of `VkFramebufferCreateInfo` that apply to this crate's API ([referenc
 - `VUID-VkFramebufferCreateInfo-flags-04113` (*checked*): If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of `pAttachments` must have been created with VkImageViewCreateInfo::`viewType` not equal to `VK_IMAGE_VIEW_TYPE_3D`
 - `VUID-VkFramebufferCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkFramebufferCreateInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkFramebufferCreateFlagBits values
+- `VUID-VkFramebufferCreateInfo-renderPass-parameter` (*checked*): `renderPass` must be a valid VkRenderPass handle
 - `VUID-VkFramebufferCreateInfo-commonparent` (*checked*): Both of `renderPass`, and the elements of `pAttachments` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkFramebufferCreateInfo-flags-03189` (*checked*): If the `imagelessFramebuffer` feature is not enabled, `flags` must not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`
 - `VUID-VkFramebufferCreateInfo-flags-03190` (*checked*): If `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `pNext` chain must include a VkFramebufferAttachmentsCreateInfo structure
@@ -1530,8 +1531,7 @@ The rules of `VkFramebufferCreateInfo` that apply to this crate's API ([referenc
 - `VUID-VkFramebufferCreateInfo-renderPass-04546` (*checked*): If multiview is not enabled for `renderPass` and `flags` includes `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, the `layerCount` member of any element of the `pAttachmentImageInfos` member of a …
 - `VUID-VkFramebufferCreateInfo-flags-02778` (*by the types*): If `flags` does not include `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT` and `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkImageView handles
 - `VUID-VkFramebufferCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO`
-- `VUID-VkFramebufferCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkFramebufferAttachmentsCreateInfo
-- `VUID-VkFramebufferCreateInfo-renderPass-parameter` (*by the types*): `renderPass` must be a valid VkRenderPass handle*/
+- `VUID-VkFramebufferCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkFramebufferAttachmentsCreateInfo*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct FramebufferCreateInfo<'a> {

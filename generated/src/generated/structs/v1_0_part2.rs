@@ -788,6 +788,7 @@ The rules of `VkImageMemoryBarrier` that apply to this crate's API ([reference p
 - `VUID-VkImageMemoryBarrier-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkImageMemoryBarrier-oldLayout-parameter` (*checked*): `oldLayout` must be a valid VkImageLayout value
 - `VUID-VkImageMemoryBarrier-newLayout-parameter` (*checked*): `newLayout` must be a valid VkImageLayout value
+- `VUID-VkImageMemoryBarrier-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkImageMemoryBarrier-subresourceRange-parameter` (*checked*): `subresourceRange` must be a valid VkImageSubresourceRange structure
 - `VUID-VkImageMemoryBarrier-oldLayout-01658` (*checked*): If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is …
 - `VUID-VkImageMemoryBarrier-oldLayout-01659` (*checked*): If `srcQueueFamilyIndex` and `dstQueueFamilyIndex` define a queue family ownership transfer or `oldLayout` and `newLayout` define an image layout transition, and `oldLayout` or `newLayout` is …
@@ -805,8 +806,7 @@ The rules of `VkImageMemoryBarrier` that apply to this crate's API ([reference p
 - `VUID-VkImageMemoryBarrier-image-03319` (*checked*): If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is enabled, then the `aspectMask` member of `subresourceRange` must include either or …
 - `VUID-VkImageMemoryBarrier-image-03320` (*checked*): If `image` has a depth/stencil format with both depth and stencil and the `separateDepthStencilLayouts` feature is not enabled, then the `aspectMask` member of `subresourceRange` must include both …
 - `VUID-VkImageMemoryBarrier-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER`
-- `VUID-VkImageMemoryBarrier-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkSampleLocationsInfoEXT
-- `VUID-VkImageMemoryBarrier-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
+- `VUID-VkImageMemoryBarrier-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkSampleLocationsInfoEXT*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier<'a> {
@@ -970,6 +970,7 @@ The rules of `VkImageViewCreateInfo` that apply to this crate's API ([reference 
 - `VUID-VkImageViewCreateInfo-viewType-02962` (*checked*): If `viewType` is `VK_IMAGE_VIEW_TYPE_CUBE` and `subresourceRange.layerCount` is `VK_REMAINING_ARRAY_LAYERS`, the remaining number of layers must be `6`
 - `VUID-VkImageViewCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique, with the exception of structures of type VkExportMetalObjectCreateInfoEXT
 - `VUID-VkImageViewCreateInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkImageViewCreateFlagBits values
+- `VUID-VkImageViewCreateInfo-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkImageViewCreateInfo-viewType-parameter` (*checked*): `viewType` must be a valid VkImageViewType value
 - `VUID-VkImageViewCreateInfo-format-parameter` (*checked*): `format` must be a valid VkFormat value
 - `VUID-VkImageViewCreateInfo-components-parameter` (*checked*): `components` must be a valid VkComponentMapping structure
@@ -991,8 +992,7 @@ The rules of `VkImageViewCreateInfo` that apply to this crate's API ([reference 
 - `VUID-VkImageViewCreateInfo-pNext-02663` (*checked*): If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, `image` was created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, and …
 - `VUID-VkImageViewCreateInfo-pNext-02664` (*checked*): If the `pNext` chain includes a VkImageViewUsageCreateInfo structure, `image` was created with a VkImageStencilUsageCreateInfo structure included in the `pNext` chain of VkImageCreateInfo, and …
 - `VUID-VkImageViewCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO`
-- `VUID-VkImageViewCreateInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkExportMetalObjectCreateInfoEXT, VkImageViewASTCDecodeModeEXT, …
-- `VUID-VkImageViewCreateInfo-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
+- `VUID-VkImageViewCreateInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkExportMetalObjectCreateInfoEXT, VkImageViewASTCDecodeModeEXT, …*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageViewCreateInfo<'a> {

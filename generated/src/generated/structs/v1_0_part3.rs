@@ -79,9 +79,9 @@ The rules of `VkMappedMemoryRange` that apply to this crate's API ([reference pa
 - `VUID-VkMappedMemoryRange-offset-00687` (*yours*; explicit rule): `offset` must be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`
 - `VUID-VkMappedMemoryRange-size-01389` (*yours*; explicit rule): If `size` is equal to `VK_WHOLE_SIZE`, the end of the current mapping of `memory` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize` bytes from the beginning of the memory …
 - `VUID-VkMappedMemoryRange-size-01390` (*yours*; explicit rule): If `size` is not equal to `VK_WHOLE_SIZE`, `size` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`, or `offset` plus `size` must equal the size of `memory`
+- `VUID-VkMappedMemoryRange-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkMappedMemoryRange-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE`
-- `VUID-VkMappedMemoryRange-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkMappedMemoryRange-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkMappedMemoryRange-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MappedMemoryRange<'a> {
@@ -601,6 +601,7 @@ The rules of `VkPipelineLayoutCreateInfo` that apply to this crate's API ([refer
 - `VUID-VkPipelineLayoutCreateInfo-setLayoutCount-00286` (*checked*): `setLayoutCount` must be less than or equal to `VkPhysicalDeviceLimits::maxBoundDescriptorSets`
 - `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-00292` (*checked*): Any two elements of `pPushConstantRanges` must not include the same stage in `stageFlags`
 - `VUID-VkPipelineLayoutCreateInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineLayoutCreateFlagBits values
+- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-parameter` (*checked*): If `setLayoutCount` is not `0`, `pSetLayouts` must be a valid pointer to an array of `setLayoutCount` valid or VK_NULL_HANDLE VkDescriptorSetLayout handles
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-03016` (*checked*): The total number of descriptors in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of …
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-03017` (*checked*): The total number of descriptors in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of …
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-03018` (*checked*): The total number of descriptors in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of …
@@ -619,7 +620,6 @@ The rules of `VkPipelineLayoutCreateInfo` that apply to this crate's API ([refer
 - `VUID-VkPipelineLayoutCreateInfo-descriptorType-03019` (*checked*): The total number of descriptors in descriptor set layouts created without the `VK_DESCRIPTOR_SET_LAYOUT_CREATE_UPDATE_AFTER_BIND_POOL_BIT` bit set with a `descriptorType` of …
 - `VUID-VkPipelineLayoutCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO`
 - `VUID-VkPipelineLayoutCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-parameter` (*by the types*): If `setLayoutCount` is not `0`, `pSetLayouts` must be a valid pointer to an array of `setLayoutCount` valid or VK_NULL_HANDLE VkDescriptorSetLayout handles
 - `VUID-VkPipelineLayoutCreateInfo-pPushConstantRanges-parameter` (*by the types*): If `pushConstantRangeCount` is not `0`, `pPushConstantRanges` must be a valid pointer to an array of `pushConstantRangeCount` valid VkPushConstantRange structures
 - `VUID-VkPipelineLayoutCreateInfo-pSetLayouts-06561` (*by the types*): Elements of `pSetLayouts` must be valid VkDescriptorSetLayout objects*/
 #[repr(transparent)]
@@ -876,6 +876,7 @@ The rules of `VkPipelineShaderStageCreateInfo` that apply to this crate's API ([
 - `VUID-VkPipelineShaderStageCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkPipelineShaderStageCreateInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineShaderStageCreateFlagBits values
 - `VUID-VkPipelineShaderStageCreateInfo-stage-parameter` (*checked*): `stage` must be a valid VkShaderStageFlagBits value
+- `VUID-VkPipelineShaderStageCreateInfo-module-parameter` (*checked*): If `module` is not VK_NULL_HANDLE, `module` must be a valid VkShaderModule handle
 - `VUID-VkPipelineShaderStageCreateInfo-flags-02784` (*checked*): If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag set, the `subgroupSizeControl` feature must be enabled
 - `VUID-VkPipelineShaderStageCreateInfo-flags-02785` (*checked*): If `flags` has the `VK_PIPELINE_SHADER_STAGE_CREATE_REQUIRE_FULL_SUBGROUPS_BIT` flag set, the `computeFullSubgroups` feature must be enabled
 - `VUID-VkPipelineShaderStageCreateInfo-pNext-02754` (*checked*): If a VkPipelineShaderStageRequiredSubgroupSizeCreateInfo structure is included in the `pNext` chain, `flags` must not have the `VK_PIPELINE_SHADER_STAGE_CREATE_ALLOW_VARYING_SUBGROUP_SIZE_BIT` flag …
@@ -886,7 +887,6 @@ The rules of `VkPipelineShaderStageCreateInfo` that apply to this crate's API ([
 - `VUID-VkPipelineShaderStageCreateInfo-module-06716` (*checked*): `module` must be a valid VkShaderModule
 - `VUID-VkPipelineShaderStageCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO`
 - `VUID-VkPipelineShaderStageCreateInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDebugUtilsObjectNameInfoEXT, …
-- `VUID-VkPipelineShaderStageCreateInfo-module-parameter` (*by the types*): If `module` is not VK_NULL_HANDLE, `module` must be a valid VkShaderModule handle
 - `VUID-VkPipelineShaderStageCreateInfo-pName-parameter` (*by the types*): `pName` must be a null-terminated UTF-8 string
 - `VUID-VkPipelineShaderStageCreateInfo-pSpecializationInfo-parameter` (*by the types*): If `pSpecializationInfo` is not `NULL`, `pSpecializationInfo` must be a valid pointer to a valid VkSpecializationInfo structure*/
 #[repr(transparent)]
@@ -1217,6 +1217,8 @@ The rules of `VkRenderPassBeginInfo` that apply to this crate's API ([reference 
 - `VUID-VkRenderPassBeginInfo-clearValueCount-00902` (*checked*): `clearValueCount` must be greater than the largest attachment index in `renderPass` specifying a `loadOp` (or `stencilLoadOp`, if the attachment has a depth/stencil format) of …
 - `VUID-VkRenderPassBeginInfo-renderPass-00904` (*checked*): `renderPass` must be compatible with the `renderPass` member of the VkFramebufferCreateInfo structure specified when creating `framebuffer`
 - `VUID-VkRenderPassBeginInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkRenderPassBeginInfo-renderPass-parameter` (*checked*): `renderPass` must be a valid VkRenderPass handle
+- `VUID-VkRenderPassBeginInfo-framebuffer-parameter` (*checked*): `framebuffer` must be a valid VkFramebuffer handle
 - `VUID-VkRenderPassBeginInfo-commonparent` (*checked*): Both of `framebuffer`, and `renderPass` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkRenderPassBeginInfo-pNext-02850` (*checked*): If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.x` must be greater than or equal to 0
 - `VUID-VkRenderPassBeginInfo-pNext-02851` (*checked*): If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.y` must be greater than or equal to 0
@@ -1236,9 +1238,7 @@ The rules of `VkRenderPassBeginInfo` that apply to this crate's API ([reference 
 - `VUID-VkRenderPassBeginInfo-framebuffer-03217` (*checked*): If `framebuffer` was created with a VkFramebufferCreateInfo::`flags` value that included `VK_FRAMEBUFFER_CREATE_IMAGELESS_BIT`, each element of the `pAttachments` member of a …
 - `VUID-VkRenderPassBeginInfo-clearValueCount-04962` (*by the types*): If `clearValueCount` is not `0`, `pClearValues` must be a valid pointer to an array of `clearValueCount` VkClearValue unions
 - `VUID-VkRenderPassBeginInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO`
-- `VUID-VkRenderPassBeginInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupRenderPassBeginInfo, …
-- `VUID-VkRenderPassBeginInfo-renderPass-parameter` (*by the types*): `renderPass` must be a valid VkRenderPass handle
-- `VUID-VkRenderPassBeginInfo-framebuffer-parameter` (*by the types*): `framebuffer` must be a valid VkFramebuffer handle*/
+- `VUID-VkRenderPassBeginInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkDeviceGroupRenderPassBeginInfo, …*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassBeginInfo<'a> {
@@ -1631,8 +1631,8 @@ impl<'a> ShaderModuleCreateInfo<'a> {
 
 The rules of `VkSparseBufferMemoryBindInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseBufferMemoryBindInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkSparseBufferMemoryBindInfo-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkSparseBufferMemoryBindInfo-bindCount-arraylength` (*checked*): `bindCount` must be greater than `0`
-- `VUID-VkSparseBufferMemoryBindInfo-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkSparseBufferMemoryBindInfo-pBinds-parameter` (*by the types*): `pBinds` must be a valid pointer to an array of `bindCount` valid VkSparseMemoryBind structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1685,8 +1685,8 @@ The rules of `VkSparseImageMemoryBind` that apply to this crate's API ([referenc
 - `VUID-VkSparseImageMemoryBind-memory-02732` (*yours*; explicit rule): If `memory` was created with VkExportMemoryAllocateInfo::`handleTypes` not equal to `0`, at least one handle type it contained must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` …
 - `VUID-VkSparseImageMemoryBind-memory-02733` (*yours*; explicit rule): If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
 - `VUID-VkSparseImageMemoryBind-subresource-parameter` (*checked*): `subresource` must be a valid VkImageSubresource structure
-- `VUID-VkSparseImageMemoryBind-flags-parameter` (*checked*): `flags` must be a valid combination of VkSparseMemoryBindFlagBits values
-- `VUID-VkSparseImageMemoryBind-memory-parameter` (*by the types*): If `memory` is not VK_NULL_HANDLE, `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkSparseImageMemoryBind-memory-parameter` (*checked*): If `memory` is not VK_NULL_HANDLE, `memory` must be a valid VkDeviceMemory handle
+- `VUID-VkSparseImageMemoryBind-flags-parameter` (*checked*): `flags` must be a valid combination of VkSparseMemoryBindFlagBits values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseImageMemoryBind<'a> {
@@ -1741,8 +1741,8 @@ The rules of `VkSparseImageMemoryBindInfo` that apply to this crate's API ([refe
 - `VUID-VkSparseImageMemoryBindInfo-subresource-01722` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `subresource.mipLevel` member of each element of `pBinds` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
 - `VUID-VkSparseImageMemoryBindInfo-subresource-01723` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `subresource.arrayLayer` member of each element of `pBinds` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
 - `VUID-VkSparseImageMemoryBindInfo-image-02901` (*yours*; explicit rule): `image` must have been created with `VK_IMAGE_CREATE_SPARSE_RESIDENCY_BIT` set
+- `VUID-VkSparseImageMemoryBindInfo-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkSparseImageMemoryBindInfo-bindCount-arraylength` (*checked*): `bindCount` must be greater than `0`
-- `VUID-VkSparseImageMemoryBindInfo-image-parameter` (*by the types*): `image` must be a valid VkImage handle
 - `VUID-VkSparseImageMemoryBindInfo-pBinds-parameter` (*by the types*): `pBinds` must be a valid pointer to an array of `bindCount` valid VkSparseImageMemoryBind structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1784,8 +1784,8 @@ impl<'a> SparseImageMemoryBindInfo<'a> {
 The rules of `VkSparseImageOpaqueMemoryBindInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSparseImageOpaqueMemoryBindInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-01103` (*yours*; explicit rule): If the `flags` member of any element of `pBinds` contains `VK_SPARSE_MEMORY_BIND_METADATA_BIT`, the binding range defined must be within the mip tail region of the metadata aspect of `image`
+- `VUID-VkSparseImageOpaqueMemoryBindInfo-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-bindCount-arraylength` (*checked*): `bindCount` must be greater than `0`
-- `VUID-VkSparseImageOpaqueMemoryBindInfo-image-parameter` (*by the types*): `image` must be a valid VkImage handle
 - `VUID-VkSparseImageOpaqueMemoryBindInfo-pBinds-parameter` (*by the types*): `pBinds` must be a valid pointer to an array of `bindCount` valid VkSparseMemoryBind structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1835,8 +1835,8 @@ The rules of `VkSparseMemoryBind` that apply to this crate's API ([reference pag
 - `VUID-VkSparseMemoryBind-size-01102` (*yours*; explicit rule): `size` must be less than or equal to the size of `memory` minus `memoryOffset`
 - `VUID-VkSparseMemoryBind-memory-02730` (*yours*; explicit rule): If `memory` was created with VkExportMemoryAllocateInfo::`handleTypes` not equal to `0`, at least one handle type it contained must also have been set in …
 - `VUID-VkSparseMemoryBind-memory-02731` (*yours*; explicit rule): If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` or …
-- `VUID-VkSparseMemoryBind-flags-parameter` (*checked*): `flags` must be a valid combination of VkSparseMemoryBindFlagBits values
-- `VUID-VkSparseMemoryBind-memory-parameter` (*by the types*): If `memory` is not VK_NULL_HANDLE, `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkSparseMemoryBind-memory-parameter` (*checked*): If `memory` is not VK_NULL_HANDLE, `memory` must be a valid VkDeviceMemory handle
+- `VUID-VkSparseMemoryBind-flags-parameter` (*checked*): `flags` must be a valid combination of VkSparseMemoryBindFlagBits values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SparseMemoryBind<'a> {

@@ -31,7 +31,10 @@ The rules of `VkSubmitInfo` that apply to this crate's API ([reference page](htt
 - `VUID-VkSubmitInfo-pCommandBuffers-00075` (*checked*): Each element of `pCommandBuffers` must not have been allocated with `VK_COMMAND_BUFFER_LEVEL_SECONDARY`
 - `VUID-VkSubmitInfo-pWaitDstStageMask-00078` (*checked*): Each element of `pWaitDstStageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT`
 - `VUID-VkSubmitInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkSubmitInfo-pWaitSemaphores-parameter` (*checked*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphores` must be a valid pointer to an array of `waitSemaphoreCount` valid VkSemaphore handles
 - `VUID-VkSubmitInfo-pWaitDstStageMask-parameter` (*checked*): If `waitSemaphoreCount` is not `0`, `pWaitDstStageMask` must be a valid pointer to an array of `waitSemaphoreCount` valid combinations of VkPipelineStageFlagBits values
+- `VUID-VkSubmitInfo-pCommandBuffers-parameter` (*checked*): If `commandBufferCount` is not `0`, `pCommandBuffers` must be a valid pointer to an array of `commandBufferCount` valid VkCommandBuffer handles
+- `VUID-VkSubmitInfo-pSignalSemaphores-parameter` (*checked*): If `signalSemaphoreCount` is not `0`, `pSignalSemaphores` must be a valid pointer to an array of `signalSemaphoreCount` valid VkSemaphore handles
 - `VUID-VkSubmitInfo-commonparent` (*checked*): Each of the elements of `pCommandBuffers`, the elements of `pSignalSemaphores`, and the elements of `pWaitSemaphores` that are valid handles of non-ignored parameters must have been created, …
 - `VUID-VkSubmitInfo-pWaitDstStageMask-03937` (*checked*): If the `synchronization2` feature is not enabled, `pWaitDstStageMask` must not be `0`
 - `VUID-VkSubmitInfo-pWaitSemaphores-03239` (*checked*): If any element of `pWaitSemaphores` or `pSignalSemaphores` was created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`, then the `pNext` chain must include a VkTimelineSemaphoreSubmitInfo …
@@ -39,10 +42,7 @@ The rules of `VkSubmitInfo` that apply to this crate's API ([reference page](htt
 - `VUID-VkSubmitInfo-pNext-03241` (*checked*): If the `pNext` chain of this structure includes a VkTimelineSemaphoreSubmitInfo structure and any element of `pSignalSemaphores` was created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`, …
 - `VUID-VkSubmitInfo-pSignalSemaphores-03242` (*checked*): For each element of `pSignalSemaphores` created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE` the corresponding element of VkTimelineSemaphoreSubmitInfo::`pSignalSemaphoreValues` must have a …
 - `VUID-VkSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBMIT_INFO`
-- `VUID-VkSubmitInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAmigoProfilingSubmitInfoSEC, VkD3D12FenceSubmitInfoKHR, …
-- `VUID-VkSubmitInfo-pWaitSemaphores-parameter` (*by the types*): If `waitSemaphoreCount` is not `0`, `pWaitSemaphores` must be a valid pointer to an array of `waitSemaphoreCount` valid VkSemaphore handles
-- `VUID-VkSubmitInfo-pCommandBuffers-parameter` (*by the types*): If `commandBufferCount` is not `0`, `pCommandBuffers` must be a valid pointer to an array of `commandBufferCount` valid VkCommandBuffer handles
-- `VUID-VkSubmitInfo-pSignalSemaphores-parameter` (*by the types*): If `signalSemaphoreCount` is not `0`, `pSignalSemaphores` must be a valid pointer to an array of `signalSemaphoreCount` valid VkSemaphore handles*/
+- `VUID-VkSubmitInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkAmigoProfilingSubmitInfoSEC, VkD3D12FenceSubmitInfoKHR, …*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubmitInfo<'a> {

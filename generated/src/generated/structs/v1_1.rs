@@ -57,11 +57,11 @@ The rules of `VkBindBufferMemoryInfo` that apply to this crate's API ([reference
 - `VUID-VkBindBufferMemoryInfo-memoryOffset-01036` (*checked*): `memoryOffset` must be an integer multiple of the `alignment` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` with `buffer`
 - `VUID-VkBindBufferMemoryInfo-size-01037` (*checked*): The `size` member of the `VkMemoryRequirements` structure returned from a call to `vkGetBufferMemoryRequirements` with `buffer` must be less than or equal to the size of `memory` minus `memoryOffset`
 - `VUID-VkBindBufferMemoryInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkBindBufferMemoryInfo-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
+- `VUID-VkBindBufferMemoryInfo-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkBindBufferMemoryInfo-commonparent` (*checked*): Both of `buffer`, and `memory` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkBindBufferMemoryInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_BUFFER_MEMORY_INFO`
-- `VUID-VkBindBufferMemoryInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkBindBufferMemoryDeviceGroupInfo
-- `VUID-VkBindBufferMemoryInfo-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle
-- `VUID-VkBindBufferMemoryInfo-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkBindBufferMemoryInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkBindBufferMemoryDeviceGroupInfo*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BindBufferMemoryInfo<'a> {
@@ -182,12 +182,12 @@ The rules of `VkBindImageMemoryInfo` that apply to this crate's API ([reference 
 - `VUID-VkBindImageMemoryInfo-image-07460` (*checked*): `image` must not have been bound to a memory object
 - `VUID-VkBindImageMemoryInfo-memoryOffset-01046` (*checked*): `memoryOffset` must be less than the size of `memory`
 - `VUID-VkBindImageMemoryInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkBindImageMemoryInfo-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkBindImageMemoryInfo-commonparent` (*checked*): Both of `image`, and `memory` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkBindImageMemoryInfo-pNext-01616` (*checked*): If the `pNext` chain does not include a VkBindImagePlaneMemoryInfo structure, `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a …
 - `VUID-VkBindImageMemoryInfo-pNext-01617` (*checked*): If the `pNext` chain does not include a VkBindImagePlaneMemoryInfo structure, the difference of the size of `memory` and `memoryOffset` must be greater than or equal to the `size` member of the …
 - `VUID-VkBindImageMemoryInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_MEMORY_INFO`
 - `VUID-VkBindImageMemoryInfo-pNext-pNext` (*by the types*): Each `pNext` member of any structure (including this one) in the `pNext` chain must be either `NULL` or a pointer to a valid instance of VkBindImageMemoryDeviceGroupInfo, …
-- `VUID-VkBindImageMemoryInfo-image-parameter` (*by the types*): `image` must be a valid VkImage handle
 - `VUID-VkBindImageMemoryInfo-memory-01625` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -260,9 +260,9 @@ unsafe impl<'a> Extends<BindImageMemoryInfo<'a>> for BindImagePlaneMemoryInfo<'a
 
 The rules of `VkBufferMemoryRequirementsInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferMemoryRequirementsInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkBufferMemoryRequirementsInfo2-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkBufferMemoryRequirementsInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_MEMORY_REQUIREMENTS_INFO_2`
-- `VUID-VkBufferMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBufferMemoryRequirementsInfo2-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkBufferMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryRequirementsInfo2<'a> {
@@ -459,8 +459,8 @@ The rules of `VkDeviceGroupDeviceCreateInfo` that apply to this crate's API ([re
 - `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00376` (*yours*; checked by the safe methods in every build, but no test breaks it): All elements of `pPhysicalDevices` must be in the same device group as enumerated by vkEnumeratePhysicalDeviceGroups
 - `VUID-VkDeviceGroupDeviceCreateInfo-physicalDeviceCount-00377` (*yours*; checked by the safe methods in every build, but no test breaks it): If `physicalDeviceCount` is not `0`, the `physicalDevice` parameter of vkCreateDevice must be an element of `pPhysicalDevices`
 - `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-00375` (*checked*): Each element of `pPhysicalDevices` must be unique
-- `VUID-VkDeviceGroupDeviceCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_DEVICE_CREATE_INFO`
-- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-parameter` (*by the types*): If `physicalDeviceCount` is not `0`, `pPhysicalDevices` must be a valid pointer to an array of `physicalDeviceCount` valid VkPhysicalDevice handles*/
+- `VUID-VkDeviceGroupDeviceCreateInfo-pPhysicalDevices-parameter` (*checked*): If `physicalDeviceCount` is not `0`, `pPhysicalDevices` must be a valid pointer to an array of `physicalDeviceCount` valid VkPhysicalDevice handles
+- `VUID-VkDeviceGroupDeviceCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_GROUP_DEVICE_CREATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceGroupDeviceCreateInfo<'a> {
@@ -833,9 +833,9 @@ The rules of `VkImageMemoryRequirementsInfo2` that apply to this crate's API ([r
 - `VUID-VkImageMemoryRequirementsInfo2-image-01897` (*yours*; explicit rule): If `image` was created with the `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` external memory handle type, then `image` must be bound to memory
 - `VUID-VkImageMemoryRequirementsInfo2-image-01590` (*checked*): If `image` was not created with the `VK_IMAGE_CREATE_DISJOINT_BIT` flag, there must not be a VkImagePlaneMemoryRequirementsInfo included in the `pNext` chain of the VkImageMemoryRequirementsInfo2 …
 - `VUID-VkImageMemoryRequirementsInfo2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
+- `VUID-VkImageMemoryRequirementsInfo2-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkImageMemoryRequirementsInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_MEMORY_REQUIREMENTS_INFO_2`
-- `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkImagePlaneMemoryRequirementsInfo
-- `VUID-VkImageMemoryRequirementsInfo2-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
+- `VUID-VkImageMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkImagePlaneMemoryRequirementsInfo*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryRequirementsInfo2<'a> {
@@ -895,9 +895,9 @@ for ImagePlaneMemoryRequirementsInfo<'a> {}
 
 The rules of `VkImageSparseMemoryRequirementsInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageSparseMemoryRequirementsInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkImageSparseMemoryRequirementsInfo2-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkImageSparseMemoryRequirementsInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_SPARSE_MEMORY_REQUIREMENTS_INFO_2`
-- `VUID-VkImageSparseMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkImageSparseMemoryRequirementsInfo2-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
+- `VUID-VkImageSparseMemoryRequirementsInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageSparseMemoryRequirementsInfo2<'a> {
@@ -999,12 +999,12 @@ The rules of `VkMemoryDedicatedAllocateInfo` that apply to this crate's API ([re
 - `VUID-VkMemoryDedicatedAllocateInfo-image-04751` (*yours*; explicit rule): If `image` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`, the memory being imported must …
 - `VUID-VkMemoryDedicatedAllocateInfo-buffer-04752` (*yours*; explicit rule): If `buffer` is not VK_NULL_HANDLE and VkMemoryAllocateInfo defines a memory import operation with handle type `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ZIRCON_VMO_BIT_FUCHSIA`, the memory being imported must …
 - `VUID-VkMemoryDedicatedAllocateInfo-image-01432` (*checked*): At least one of `image` and `buffer` must be VK_NULL_HANDLE
+- `VUID-VkMemoryDedicatedAllocateInfo-image-parameter` (*checked*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
+- `VUID-VkMemoryDedicatedAllocateInfo-buffer-parameter` (*checked*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle
 - `VUID-VkMemoryDedicatedAllocateInfo-commonparent` (*checked*): Both of `buffer`, and `image` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkMemoryDedicatedAllocateInfo-image-01433` (*checked*): If `image` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the image
 - `VUID-VkMemoryDedicatedAllocateInfo-buffer-01435` (*checked*): If `buffer` is not VK_NULL_HANDLE, `VkMemoryAllocateInfo::allocationSize` must equal the `VkMemoryRequirements::size` of the buffer
-- `VUID-VkMemoryDedicatedAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_DEDICATED_ALLOCATE_INFO`
-- `VUID-VkMemoryDedicatedAllocateInfo-image-parameter` (*by the types*): If `image` is not VK_NULL_HANDLE, `image` must be a valid VkImage handle
-- `VUID-VkMemoryDedicatedAllocateInfo-buffer-parameter` (*by the types*): If `buffer` is not VK_NULL_HANDLE, `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkMemoryDedicatedAllocateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MEMORY_DEDICATED_ALLOCATE_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct MemoryDedicatedAllocateInfo<'a> {
@@ -1889,8 +1889,8 @@ for SamplerYcbcrConversionImageFormatProperties<'a> {}
 
 The rules of `VkSamplerYcbcrConversionInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerYcbcrConversionInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerYcbcrConversionInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_YCBCR_CONVERSION_INFO`
-- `VUID-VkSamplerYcbcrConversionInfo-conversion-parameter` (*by the types*): `conversion` must be a valid VkSamplerYcbcrConversion handle*/
+- `VUID-VkSamplerYcbcrConversionInfo-conversion-parameter` (*checked*): `conversion` must be a valid VkSamplerYcbcrConversion handle
+- `VUID-VkSamplerYcbcrConversionInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SAMPLER_YCBCR_CONVERSION_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SamplerYcbcrConversionInfo<'a> {

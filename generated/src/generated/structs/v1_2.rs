@@ -221,9 +221,9 @@ The rules of `VkBufferDeviceAddressInfo` that apply to this crate's API ([refere
 
 - `VUID-VkBufferDeviceAddressInfo-buffer-02600` (*yours*; explicit rule): If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkBufferDeviceAddressInfo-buffer-02601` (*yours*; explicit rule): `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
+- `VUID-VkBufferDeviceAddressInfo-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkBufferDeviceAddressInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO`
-- `VUID-VkBufferDeviceAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBufferDeviceAddressInfo-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkBufferDeviceAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferDeviceAddressInfo<'a> {
@@ -367,9 +367,9 @@ for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 The rules of `VkDeviceMemoryOpaqueCaptureAddressInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryOpaqueCaptureAddressInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336` (*yours*; explicit rule): `memory` must have been allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_MEMORY_OPAQUE_CAPTURE_ADDRESS_INFO`
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter` (*by the types*): `memory` must be a valid VkDeviceMemory handle*/
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct DeviceMemoryOpaqueCaptureAddressInfo<'a> {
@@ -1773,8 +1773,8 @@ The rules of `VkRenderPassAttachmentBeginInfo` that apply to this crate's API ([
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-07010` (*yours*; explicit rule): If multisampled-render-to-single-sampled is enabled for any subpass, all element of `pAttachments` which have a sample count equal to `VK_SAMPLE_COUNT_1_BIT` must have a format that supports the …
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03218` (*checked*): Each element of `pAttachments` must only specify a single mip level
 - `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-03219` (*checked*): Each element of `pAttachments` must have been created with the identity swizzle
-- `VUID-VkRenderPassAttachmentBeginInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_ATTACHMENT_BEGIN_INFO`
-- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-parameter` (*by the types*): If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkImageView handles*/
+- `VUID-VkRenderPassAttachmentBeginInfo-pAttachments-parameter` (*checked*): If `attachmentCount` is not `0`, `pAttachments` must be a valid pointer to an array of `attachmentCount` valid VkImageView handles
+- `VUID-VkRenderPassAttachmentBeginInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDER_PASS_ATTACHMENT_BEGIN_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct RenderPassAttachmentBeginInfo<'a> {
@@ -1913,9 +1913,9 @@ The rules of `VkSemaphoreSignalInfo` that apply to this crate's API ([reference 
 - `VUID-VkSemaphoreSignalInfo-value-03259` (*yours*; explicit rule): `value` must be less than the value of any pending semaphore signal operations
 - `VUID-VkSemaphoreSignalInfo-value-03260` (*yours*; explicit rule): `value` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on `semaphore` by more than …
 - `VUID-VkSemaphoreSignalInfo-semaphore-03257` (*checked*): `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkSemaphoreSignalInfo-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkSemaphoreSignalInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_SIGNAL_INFO`
-- `VUID-VkSemaphoreSignalInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkSemaphoreSignalInfo-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkSemaphoreSignalInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSignalInfo<'a> {
@@ -1990,10 +1990,10 @@ The rules of `VkSemaphoreWaitInfo` that apply to this crate's API ([reference pa
 
 - `VUID-VkSemaphoreWaitInfo-pSemaphores-03256` (*checked*): All of the elements of `pSemaphores` must reference a semaphore that was created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`
 - `VUID-VkSemaphoreWaitInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkSemaphoreWaitFlagBits values
+- `VUID-VkSemaphoreWaitInfo-pSemaphores-parameter` (*checked*): `pSemaphores` must be a valid pointer to an array of `semaphoreCount` valid VkSemaphore handles
 - `VUID-VkSemaphoreWaitInfo-semaphoreCount-arraylength` (*checked*): `semaphoreCount` must be greater than `0`
 - `VUID-VkSemaphoreWaitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO`
 - `VUID-VkSemaphoreWaitInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkSemaphoreWaitInfo-pSemaphores-parameter` (*by the types*): `pSemaphores` must be a valid pointer to an array of `semaphoreCount` valid VkSemaphore handles
 - `VUID-VkSemaphoreWaitInfo-pValues-parameter` (*by the types*): `pValues` must be a valid pointer to an array of `semaphoreCount` `uint64_t` values*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

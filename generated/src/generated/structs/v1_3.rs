@@ -53,7 +53,9 @@ The rules of `VkBlitImageInfo2` that apply to this crate's API ([reference page]
 - `VUID-VkBlitImageInfo2-dstOffset-00248` (*checked*): For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage`
 - `VUID-VkBlitImageInfo2-dstOffset-00249` (*checked*): For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage`
 - `VUID-VkBlitImageInfo2-dstOffset-00251` (*checked*): For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage`
+- `VUID-VkBlitImageInfo2-srcImage-parameter` (*checked*): `srcImage` must be a valid VkImage handle
 - `VUID-VkBlitImageInfo2-srcImageLayout-parameter` (*checked*): `srcImageLayout` must be a valid VkImageLayout value
+- `VUID-VkBlitImageInfo2-dstImage-parameter` (*checked*): `dstImage` must be a valid VkImage handle
 - `VUID-VkBlitImageInfo2-dstImageLayout-parameter` (*checked*): `dstImageLayout` must be a valid VkImageLayout value
 - `VUID-VkBlitImageInfo2-filter-parameter` (*checked*): `filter` must be a valid VkFilter value
 - `VUID-VkBlitImageInfo2-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
@@ -62,8 +64,6 @@ The rules of `VkBlitImageInfo2` that apply to this crate's API ([reference page]
 - `VUID-VkBlitImageInfo2-dstImageLayout-00227` (*checked*): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkBlitImageInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BLIT_IMAGE_INFO_2`
 - `VUID-VkBlitImageInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBlitImageInfo2-srcImage-parameter` (*by the types*): `srcImage` must be a valid VkImage handle
-- `VUID-VkBlitImageInfo2-dstImage-parameter` (*by the types*): `dstImage` must be a valid VkImage handle
 - `VUID-VkBlitImageInfo2-pRegions-parameter` (*by the types*): `pRegions` must be a valid pointer to an array of `regionCount` valid VkImageBlit2 structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -351,11 +351,11 @@ The rules of `VkBufferMemoryBarrier2` that apply to this crate's API ([reference
 - `VUID-VkBufferMemoryBarrier2-srcAccessMask-parameter` (*checked*): `srcAccessMask` must be a valid combination of VkAccessFlagBits2 values
 - `VUID-VkBufferMemoryBarrier2-dstStageMask-parameter` (*checked*): `dstStageMask` must be a valid combination of VkPipelineStageFlagBits2 values
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-parameter` (*checked*): `dstAccessMask` must be a valid combination of VkAccessFlagBits2 values
+- `VUID-VkBufferMemoryBarrier2-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkBufferMemoryBarrier2-srcAccessMask-03908` (*checked*): If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, …
 - `VUID-VkBufferMemoryBarrier2-dstAccessMask-03908` (*checked*): If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, …
 - `VUID-VkBufferMemoryBarrier2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2`
-- `VUID-VkBufferMemoryBarrier2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkBufferMemoryBarrier2-buffer-parameter` (*by the types*): `buffer` must be a valid VkBuffer handle*/
+- `VUID-VkBufferMemoryBarrier2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct BufferMemoryBarrier2<'a> {
@@ -509,9 +509,9 @@ The rules of `VkCommandBufferSubmitInfo` that apply to this crate's API ([refere
 
 - `VUID-VkCommandBufferSubmitInfo-deviceMask-03891` (*yours*; explicit rule): If `deviceMask` is not `0`, it must be a valid device mask
 - `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890` (*checked*): `commandBuffer` must not have been allocated with `VK_COMMAND_BUFFER_LEVEL_SECONDARY`
+- `VUID-VkCommandBufferSubmitInfo-commandBuffer-parameter` (*checked*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-VkCommandBufferSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO`
-- `VUID-VkCommandBufferSubmitInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCommandBufferSubmitInfo-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle*/
+- `VUID-VkCommandBufferSubmitInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct CommandBufferSubmitInfo<'a> {
@@ -559,12 +559,12 @@ The rules of `VkCopyBufferInfo2` that apply to this crate's API ([reference page
 - `VUID-VkCopyBufferInfo2-srcBuffer-00119` (*checked*): If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkCopyBufferInfo2-dstBuffer-00120` (*checked*): `dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag
 - `VUID-VkCopyBufferInfo2-dstBuffer-00121` (*checked*): If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkCopyBufferInfo2-srcBuffer-parameter` (*checked*): `srcBuffer` must be a valid VkBuffer handle
+- `VUID-VkCopyBufferInfo2-dstBuffer-parameter` (*checked*): `dstBuffer` must be a valid VkBuffer handle
 - `VUID-VkCopyBufferInfo2-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
 - `VUID-VkCopyBufferInfo2-commonparent` (*checked*): Both of `dstBuffer`, and `srcBuffer` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCopyBufferInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_BUFFER_INFO_2`
 - `VUID-VkCopyBufferInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyBufferInfo2-srcBuffer-parameter` (*by the types*): `srcBuffer` must be a valid VkBuffer handle
-- `VUID-VkCopyBufferInfo2-dstBuffer-parameter` (*by the types*): `dstBuffer` must be a valid VkBuffer handle
 - `VUID-VkCopyBufferInfo2-pRegions-parameter` (*by the types*): `pRegions` must be a valid pointer to an array of `regionCount` valid VkBufferCopy2 structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -655,14 +655,14 @@ The rules of `VkCopyBufferToImageInfo2` that apply to this crate's API ([referen
 - `VUID-VkCopyBufferToImageInfo2-pRegions-07277` (*checked*): For each element of `pRegions`, `bufferRowLength` divided by the texel block extent width and then multiplied by the texel block size of `dstImage` must be less than or equal to 231-1
 - `VUID-VkCopyBufferToImageInfo2-pRegions-07273` (*checked*): For each element of `pRegions`, `bufferOffset` must be a multiple of the texel block size of the VkFormat of {imageparam}
 - `VUID-VkCopyBufferToImageInfo2-srcImage-04053` (*checked*): If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
+- `VUID-VkCopyBufferToImageInfo2-srcBuffer-parameter` (*checked*): `srcBuffer` must be a valid VkBuffer handle
+- `VUID-VkCopyBufferToImageInfo2-dstImage-parameter` (*checked*): `dstImage` must be a valid VkImage handle
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-parameter` (*checked*): `dstImageLayout` must be a valid VkImageLayout value
 - `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
 - `VUID-VkCopyBufferToImageInfo2-commonparent` (*checked*): Both of `dstImage`, and `srcBuffer` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181` (*checked*): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkCopyBufferToImageInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_BUFFER_TO_IMAGE_INFO_2`
 - `VUID-VkCopyBufferToImageInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyBufferToImageInfo2-srcBuffer-parameter` (*by the types*): `srcBuffer` must be a valid VkBuffer handle
-- `VUID-VkCopyBufferToImageInfo2-dstImage-parameter` (*by the types*): `dstImage` must be a valid VkImage handle
 - `VUID-VkCopyBufferToImageInfo2-pRegions-parameter` (*by the types*): `pRegions` must be a valid pointer to an array of `regionCount` valid VkBufferImageCopy2 structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -785,7 +785,9 @@ The rules of `VkCopyImageInfo2` that apply to this crate's API ([reference page]
 - `VUID-VkCopyImageInfo2-dstOffset-00150` (*checked*): For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of …
 - `VUID-VkCopyImageInfo2-dstOffset-00151` (*checked*): For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of …
 - `VUID-VkCopyImageInfo2-dstOffset-00153` (*checked*): If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to …
+- `VUID-VkCopyImageInfo2-srcImage-parameter` (*checked*): `srcImage` must be a valid VkImage handle
 - `VUID-VkCopyImageInfo2-srcImageLayout-parameter` (*checked*): `srcImageLayout` must be a valid VkImageLayout value
+- `VUID-VkCopyImageInfo2-dstImage-parameter` (*checked*): `dstImage` must be a valid VkImage handle
 - `VUID-VkCopyImageInfo2-dstImageLayout-parameter` (*checked*): `dstImageLayout` must be a valid VkImageLayout value
 - `VUID-VkCopyImageInfo2-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
 - `VUID-VkCopyImageInfo2-commonparent` (*checked*): Both of `dstImage`, and `srcImage` must have been created, allocated, or retrieved from the same VkDevice
@@ -795,8 +797,6 @@ The rules of `VkCopyImageInfo2` that apply to this crate's API ([reference page]
 - `VUID-VkCopyImageInfo2-dstImageLayout-00134` (*checked*): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkCopyImageInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_IMAGE_INFO_2`
 - `VUID-VkCopyImageInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyImageInfo2-srcImage-parameter` (*by the types*): `srcImage` must be a valid VkImage handle
-- `VUID-VkCopyImageInfo2-dstImage-parameter` (*by the types*): `dstImage` must be a valid VkImage handle
 - `VUID-VkCopyImageInfo2-pRegions-parameter` (*by the types*): `pRegions` must be a valid pointer to an array of `regionCount` valid VkImageCopy2 structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -898,14 +898,14 @@ The rules of `VkCopyImageToBufferInfo2` that apply to this crate's API ([referen
 - `VUID-VkCopyImageToBufferInfo2-pRegions-07277` (*checked*): For each element of `pRegions`, `bufferRowLength` divided by the texel block extent width and then multiplied by the texel block size of `srcImage` must be less than or equal to 231-1
 - `VUID-VkCopyImageToBufferInfo2-pRegions-07273` (*checked*): For each element of `pRegions`, `bufferOffset` must be a multiple of the texel block size of the VkFormat of {imageparam}
 - `VUID-VkCopyImageToBufferInfo2-srcImage-04053` (*checked*): If {imageparam} has a depth/stencil format, the `bufferOffset` member of any element of `pRegions` must be a multiple of `4`
+- `VUID-VkCopyImageToBufferInfo2-srcImage-parameter` (*checked*): `srcImage` must be a valid VkImage handle
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-parameter` (*checked*): `srcImageLayout` must be a valid VkImageLayout value
+- `VUID-VkCopyImageToBufferInfo2-dstBuffer-parameter` (*checked*): `dstBuffer` must be a valid VkBuffer handle
 - `VUID-VkCopyImageToBufferInfo2-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
 - `VUID-VkCopyImageToBufferInfo2-commonparent` (*checked*): Both of `dstBuffer`, and `srcImage` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCopyImageToBufferInfo2-srcImageLayout-00190` (*checked*): `srcImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkCopyImageToBufferInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_IMAGE_TO_BUFFER_INFO_2`
 - `VUID-VkCopyImageToBufferInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkCopyImageToBufferInfo2-srcImage-parameter` (*by the types*): `srcImage` must be a valid VkImage handle
-- `VUID-VkCopyImageToBufferInfo2-dstBuffer-parameter` (*by the types*): `dstBuffer` must be a valid VkBuffer handle
 - `VUID-VkCopyImageToBufferInfo2-pRegions-parameter` (*by the types*): `pRegions` must be a valid pointer to an array of `regionCount` valid VkBufferImageCopy2 structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

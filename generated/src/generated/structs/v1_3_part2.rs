@@ -172,12 +172,12 @@ The rules of `VkImageMemoryBarrier2` that apply to this crate's API ([reference 
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-parameter` (*checked*): `dstAccessMask` must be a valid combination of VkAccessFlagBits2 values
 - `VUID-VkImageMemoryBarrier2-oldLayout-parameter` (*checked*): `oldLayout` must be a valid VkImageLayout value
 - `VUID-VkImageMemoryBarrier2-newLayout-parameter` (*checked*): `newLayout` must be a valid VkImageLayout value
+- `VUID-VkImageMemoryBarrier2-image-parameter` (*checked*): `image` must be a valid VkImage handle
 - `VUID-VkImageMemoryBarrier2-subresourceRange-parameter` (*checked*): `subresourceRange` must be a valid VkImageSubresourceRange structure
 - `VUID-VkImageMemoryBarrier2-srcAccessMask-03908` (*checked*): If `srcAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `srcStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, …
 - `VUID-VkImageMemoryBarrier2-dstAccessMask-03908` (*checked*): If `dstAccessMask` includes `VK_ACCESS_2_SHADER_READ_BIT`, `dstStageMask` must include `VK_PIPELINE_STAGE_2_ALL_GRAPHICS_BIT`, `VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT`, …
 - `VUID-VkImageMemoryBarrier2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2`
-- `VUID-VkImageMemoryBarrier2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkSampleLocationsInfoEXT
-- `VUID-VkImageMemoryBarrier2-image-parameter` (*by the types*): `image` must be a valid VkImage handle*/
+- `VUID-VkImageMemoryBarrier2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkSampleLocationsInfoEXT*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct ImageMemoryBarrier2<'a> {
@@ -1215,16 +1215,16 @@ The rules of `VkRenderingAttachmentInfo` that apply to this crate's API ([refere
 - `VUID-VkRenderingAttachmentInfo-imageView-06144` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_FRAGMENT_SHADING_RATE_ATTACHMENT_OPTIMAL_KHR`
 - `VUID-VkRenderingAttachmentInfo-imageView-06145` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE, `imageLayout` must not be `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR`
 - `VUID-VkRenderingAttachmentInfo-imageView-06146` (*yours*; explicit rule): If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR`
+- `VUID-VkRenderingAttachmentInfo-imageView-parameter` (*checked*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
 - `VUID-VkRenderingAttachmentInfo-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
 - `VUID-VkRenderingAttachmentInfo-resolveMode-parameter` (*checked*): If `resolveMode` is not `0`, `resolveMode` must be a valid VkResolveModeFlagBits value
+- `VUID-VkRenderingAttachmentInfo-resolveImageView-parameter` (*checked*): If `resolveImageView` is not VK_NULL_HANDLE, `resolveImageView` must be a valid VkImageView handle
 - `VUID-VkRenderingAttachmentInfo-resolveImageLayout-parameter` (*checked*): `resolveImageLayout` must be a valid VkImageLayout value
 - `VUID-VkRenderingAttachmentInfo-loadOp-parameter` (*checked*): `loadOp` must be a valid VkAttachmentLoadOp value
 - `VUID-VkRenderingAttachmentInfo-storeOp-parameter` (*checked*): `storeOp` must be a valid VkAttachmentStoreOp value
 - `VUID-VkRenderingAttachmentInfo-commonparent` (*checked*): Both of `imageView`, and `resolveImageView` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkRenderingAttachmentInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO`
 - `VUID-VkRenderingAttachmentInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkRenderingAttachmentInfo-imageView-parameter` (*by the types*): If `imageView` is not VK_NULL_HANDLE, `imageView` must be a valid VkImageView handle
-- `VUID-VkRenderingAttachmentInfo-resolveImageView-parameter` (*by the types*): If `resolveImageView` is not VK_NULL_HANDLE, `resolveImageView` must be a valid VkImageView handle
 - `VUID-VkRenderingAttachmentInfo-clearValue-parameter` (*by the types*): `clearValue` must be a valid VkClearValue union*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
@@ -1473,7 +1473,9 @@ The rules of `VkResolveImageInfo2` that apply to this crate's API ([reference pa
 - `VUID-VkResolveImageInfo2-dstOffset-00277` (*checked*): For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of …
 - `VUID-VkResolveImageInfo2-srcImage-06762` (*checked*): `srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag
 - `VUID-VkResolveImageInfo2-dstImage-06764` (*checked*): `dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
+- `VUID-VkResolveImageInfo2-srcImage-parameter` (*checked*): `srcImage` must be a valid VkImage handle
 - `VUID-VkResolveImageInfo2-srcImageLayout-parameter` (*checked*): `srcImageLayout` must be a valid VkImageLayout value
+- `VUID-VkResolveImageInfo2-dstImage-parameter` (*checked*): `dstImage` must be a valid VkImage handle
 - `VUID-VkResolveImageInfo2-dstImageLayout-parameter` (*checked*): `dstImageLayout` must be a valid VkImageLayout value
 - `VUID-VkResolveImageInfo2-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
 - `VUID-VkResolveImageInfo2-commonparent` (*checked*): Both of `dstImage`, and `srcImage` must have been created, allocated, or retrieved from the same VkDevice
@@ -1481,8 +1483,6 @@ The rules of `VkResolveImageInfo2` that apply to this crate's API ([reference pa
 - `VUID-VkResolveImageInfo2-dstImageLayout-00263` (*checked*): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkResolveImageInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_RESOLVE_IMAGE_INFO_2`
 - `VUID-VkResolveImageInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkResolveImageInfo2-srcImage-parameter` (*by the types*): `srcImage` must be a valid VkImage handle
-- `VUID-VkResolveImageInfo2-dstImage-parameter` (*by the types*): `dstImage` must be a valid VkImage handle
 - `VUID-VkResolveImageInfo2-pRegions-parameter` (*by the types*): `pRegions` must be a valid pointer to an array of `regionCount` valid VkImageResolve2 structures*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -22,10 +22,10 @@ The rules of `VkSemaphoreSubmitInfo` that apply to this crate's API ([reference 
 - `VUID-VkSemaphoreSubmitInfo-device-03889` (*yours*; explicit rule): If the `device` that `semaphore` was created on is a device group, `deviceIndex` must be a valid device index
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03929` (*checked*): If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT`
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03930` (*checked*): If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-VkSemaphoreSubmitInfo-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkSemaphoreSubmitInfo-stageMask-parameter` (*checked*): `stageMask` must be a valid combination of VkPipelineStageFlagBits2 values
 - `VUID-VkSemaphoreSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO`
-- `VUID-VkSemaphoreSubmitInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkSemaphoreSubmitInfo-semaphore-parameter` (*by the types*): `semaphore` must be a valid VkSemaphore handle*/
+- `VUID-VkSemaphoreSubmitInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SemaphoreSubmitInfo<'a> {

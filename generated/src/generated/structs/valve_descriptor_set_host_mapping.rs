@@ -8,9 +8,9 @@ use super::*;
 
 The rules of `VkDescriptorSetBindingReferenceVALVE` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorSetBindingReferenceVALVE.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
+- `VUID-VkDescriptorSetBindingReferenceVALVE-descriptorSetLayout-parameter` (*checked*): `descriptorSetLayout` must be a valid VkDescriptorSetLayout handle
 - `VUID-VkDescriptorSetBindingReferenceVALVE-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_SET_BINDING_REFERENCE_VALVE`
-- `VUID-VkDescriptorSetBindingReferenceVALVE-pNext-pNext` (*by the types*): `pNext` must be `NULL`
-- `VUID-VkDescriptorSetBindingReferenceVALVE-descriptorSetLayout-parameter` (*by the types*): `descriptorSetLayout` must be a valid VkDescriptorSetLayout handle*/
+- `VUID-VkDescriptorSetBindingReferenceVALVE-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[cfg(feature = "valve_descriptor_set_host_mapping")]
 #[repr(transparent)]
 #[derive(Clone, Copy)]

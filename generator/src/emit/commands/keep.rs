@@ -26,10 +26,10 @@ pub(super) fn keep_expr(
         // objects keep only older ones, so no cycle can form.
         let walk = crate::emit::reach::walk_fn(info_ty);
         return Some(quote!({
-            let live = #device_path.live();
-            let mut kept: Vec<tuff_runtime::Retained> = Vec::new();
+            let mut reached = crate::validation::Reached::keeping(#device_path.live());
             __safety!("the safe info stores every array with its length and chains only structs pushed through `push_next`.");
-            unsafe { #walk(#var.as_raw(), live, &mut kept) };
+            unsafe { #walk(#var.as_raw(), &mut reached) };
+            let kept = reached.kept;
             (!kept.is_empty()).then(|| tuff_runtime::Vrc::new(kept) as tuff_runtime::Retained)
         }));
     }
@@ -47,7 +47,7 @@ pub(super) fn keep_expr(
                 let c = field_ident(&count);
                 parts.push(quote! {
                     __safety!("the safe setter stored this array with its length.");
-                    kept.extend(live.keep(unsafe { crate::state::raw_slice(#var.as_raw().#f, #var.as_raw().#c) }));
+                    kept.extend(unsafe { crate::state::raw_slice(#var.as_raw().#f, #var.as_raw().#c) }.iter().filter_map(|h| live.get(*h)));
                 });
             }
             _ => {}
@@ -84,13 +84,12 @@ pub(super) fn struct_retains(
     };
     vec![quote! {
         let kept: Vec<tuff_runtime::Retained> = {
-            let live = self.device().live();
-            let mut kept = Vec::new();
+            let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in #elems {
                 __safety!("the safe structs store every pointer with its length.");
-                unsafe { #walk(e.as_raw(), live, &mut kept) };
+                unsafe { #walk(e.as_raw(), &mut reached) };
             }
-            kept
+            reached.kept
         };
         for o in kept { self.retain(o); }
     }]
