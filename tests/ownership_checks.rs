@@ -6,9 +6,10 @@
 //! before any other check or driver call sees the handle.
 //!
 //! Each case makes the call on device A with one object of device B: the safe method
-//! must refuse it with the rule's VUID, and the validation layer, for the
-//! `_unchecked` twin (told to skip the call it reports), must name the same VUID.
-//! The same call with A's own object succeeds.
+//! must refuse it with the rule's VUID, and the same call with A's own object
+//! succeeds. Where the 1.3.239 validation layer can tell, it must name the same VUID
+//! for the `_unchecked` twin (told to skip the call it reports); for most of these
+//! calls it cannot: it crashes, or says nothing and passes the call on.
 //!
 //! SAFETY of the `unsafe` blocks: the methods called are `unsafe` for rules their
 //! `# Safety` sections list, which these calls keep but for the one each case breaks
@@ -42,11 +43,11 @@ struct Objects {
 
 fn objects(s: &Setup, d: &tuff::Device) -> Objects {
     let buffer = d
-        .create_buffer(
-            &tuff::BufferCreateInfo::new()
-                .size(256)
-                .usage(vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::TRANSFER_DST),
-        )
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(
+            vk::BufferUsageFlags::UNIFORM_BUFFER
+                | vk::BufferUsageFlags::TRANSFER_SRC
+                | vk::BufferUsageFlags::TRANSFER_DST,
+        ))
         .expect("buffer");
     let image = d
         .create_image(
@@ -394,6 +395,7 @@ fn immutable_samplers_of_another_device_are_refused() {
     case(
         &s,
         "VUID-VkDescriptorSetLayoutBinding-descriptorType-00282",
+        // The 1.3.239 layer says nothing and passes the call to the driver.
         Layer::Unusable,
         |foreign, unchecked| {
             let samplers = if foreign { &theirs } else { &mine };
@@ -426,6 +428,7 @@ fn a_pipeline_layout_of_another_devices_set_layout_is_refused() {
     case(
         &s,
         "VUID-VkPipelineLayoutCreateInfo-pSetLayouts-parameter",
+        // The 1.3.239 layer says nothing and passes the call to the driver.
         Layer::Unusable,
         |foreign, unchecked| {
             let layouts = if foreign { &theirs } else { &mine };
@@ -435,6 +438,88 @@ fn a_pipeline_layout_of_another_devices_set_layout_is_refused() {
                 false => s.device.create_pipeline_layout(&info),
             };
             r.map(drop)
+        },
+    );
+}
+
+/// A framebuffer's attachments, a handle array Vulkan reads unless the framebuffer
+/// is imageless: the create info's `commonparent` rule checks them.
+#[test]
+fn a_framebuffer_of_another_devices_view_is_refused() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let b = other_device(&s);
+    let mine = s.color_target(4, vk::ImageUsageFlags::empty());
+    let (theirs, _theirs_memory) = {
+        let o = objects(&s, &b);
+        let view = b
+            .create_image_view(
+                &tuff::ImageViewCreateInfo::new(&o.image)
+                    .view_type(vk::ImageViewType::TYPE_2D)
+                    .format(vk::Format::R8G8B8A8_UNORM)
+                    .subresource_range(color_range()),
+            )
+            .expect("view");
+        (view, o)
+    };
+    case(
+        &s,
+        "VUID-VkFramebufferCreateInfo-commonparent",
+        Layer::Names(&[]),
+        |foreign, unchecked| {
+            let view = if foreign { &theirs } else { &mine.view };
+            let info = tuff::FramebufferCreateInfo::new(&mine.render_pass)
+                .attachments(view)
+                .width(4)
+                .height(4)
+                .layers(1);
+            let r = match unchecked {
+                true => unsafe { s.device.create_framebuffer_unchecked(&info) },
+                false => s.device.create_framebuffer(&info),
+            };
+            r.map(drop)
+        },
+    );
+}
+
+/// A copy's destination, a wrapper argument of a recorded command.
+#[test]
+fn a_copy_into_another_devices_buffer_is_refused() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let b = other_device(&s);
+    let (src, mine, theirs) = (
+        objects(&s, &s.device),
+        objects(&s, &s.device),
+        objects(&s, &b),
+    );
+    case(
+        &s,
+        "VUID-vkCmdCopyBuffer-commonparent",
+        Layer::Names(&[]),
+        |foreign, unchecked| {
+            let dst = if foreign {
+                &theirs.buffer
+            } else {
+                &mine.buffer
+            };
+            let region = [vk::BufferCopy {
+                src_offset: 0,
+                dst_offset: 0,
+                size: 16,
+            }];
+            let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+            let mut rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let r = unsafe {
+                match unchecked {
+                    true => rec.copy_buffer_unchecked(&src.buffer, dst, &region),
+                    false => rec.copy_buffer(&src.buffer, dst, &region),
+                }
+            };
+            let ended = rec.end();
+            r.and(ended.map(drop))
         },
     );
 }
