@@ -76,7 +76,7 @@ const OWN_RULES: &[(&str, &str, &str)] = &[(
 
 /// How a walk visits member `m` of `item`, and under which rule it checks it: the
 /// member's own `-parameter` rule (a valid handle is one of the call's device); else
-/// one [`OWN_RULES`] names; else, for a member Vulkan reads whatever the other
+/// one `OWN_RULES` names; else, for a member Vulkan reads whatever the other
 /// members say, the struct's `commonparent` rule that names it. A member Vulkan
 /// ignores unless other members say otherwise (`noautovalidity`: a descriptor
 /// write's texel buffer views, an image info's sampler) is not checked by the walk:
