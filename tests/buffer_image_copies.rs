@@ -425,7 +425,19 @@ fn each_region_rule_is_checked_and_the_layer_agrees() {
             if *kind == Kind::OneD {
                 r.image_extent.height = 1;
             }
-            record(&mut rec, which, (&buffer, image), r, false)
+            // A copy into the depth aspect of a float depth format reads depth values
+            // from the buffer, which tuff cannot see: refused, and recorded through
+            // `_unchecked` (never submitted), which the layer accepts.
+            let float_depth = match (kind, which) {
+                (Kind::DepthStencil, 0) => Some("VUID-vkCmdCopyBufferToImage-None-00214"),
+                (Kind::DepthStencil, 2) => Some("VUID-VkCopyBufferToImageInfo2-None-00214"),
+                _ => None,
+            };
+            if let Some(rule) = float_depth {
+                let safe = record(&mut rec, which, (&buffer, image), r, false);
+                assert_eq!(vuid(safe), rule, "{kind:?} through command {which}");
+            }
+            record(&mut rec, which, (&buffer, image), r, float_depth.is_some())
                 .unwrap_or_else(|e| panic!("{kind:?} through command {which}: {e}"));
             rec.end().expect("end");
         }

@@ -726,6 +726,8 @@ struct SamplerParts {
     mode: vk::SamplerAddressMode,
     compare: bool,
     reduction: vk::SamplerReductionMode,
+    border: vk::BorderColor,
+    compare_op: vk::CompareOp,
 }
 
 fn create_sampler(s: &Setup, p: SamplerParts) -> (tuff::Result<()>, Vec<String>) {
@@ -739,9 +741,10 @@ fn create_sampler(s: &Setup, p: SamplerParts) -> (tuff::Result<()>, Vec<String>)
         .address_mode_w(p.mode)
         .unnormalized_coordinates(p.unnormalized)
         .compare_enable(p.compare)
-        .compare_op(vk::CompareOp::LESS)
+        .compare_op(p.compare_op)
+        .border_color(p.border)
         .push_next(&mut reduction);
-    let safe = unsafe { s.device.create_sampler(&info) }.map(drop);
+    let safe = s.device.create_sampler(&info).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_sampler_unchecked(&info) };
     });
@@ -759,13 +762,53 @@ fn sampler_rules_are_refused_and_the_layer_agrees() {
         mode: vk::SamplerAddressMode::CLAMP_TO_EDGE,
         compare: false,
         reduction: vk::SamplerReductionMode::WEIGHTED_AVERAGE,
+        border: vk::BorderColor::FLOAT_TRANSPARENT_BLACK,
+        compare_op: vk::CompareOp::NEVER,
+    };
+    // Read where used: a border colour for a border clamp, a compare op for a
+    // comparing sampler.
+    let border = SamplerParts {
+        mode: vk::SamplerAddressMode::CLAMP_TO_BORDER,
+        border: vk::BorderColor::INT_OPAQUE_WHITE,
+        ..valid
+    };
+    let comparing = SamplerParts {
+        compare: true,
+        compare_op: vk::CompareOp::LESS,
+        ..valid
     };
     for s in [&s, &full] {
-        let (safe, layer) = create_sampler(s, valid);
-        assert!(
-            safe.is_ok() && layer.is_empty(),
-            "the valid sampler: {safe:?} {layer:?}"
-        );
+        for parts in [valid, border, comparing] {
+            let (safe, layer) = create_sampler(s, parts);
+            assert!(
+                safe.is_ok() && layer.is_empty(),
+                "the valid sampler: {safe:?} {layer:?}"
+            );
+        }
+    }
+    // Values the rules ask for only where they are read are asked for always, as
+    // drivers read them whatever the modes (lavapipe crashes on an invalid border
+    // colour of a sampler that never clamps to the border).
+    for (rule, parts) in [
+        (
+            "VUID-VkSamplerCreateInfo-addressModeU-01078",
+            SamplerParts {
+                border: vk::BorderColor::from_raw(99),
+                ..valid
+            },
+        ),
+        (
+            "VUID-VkSamplerCreateInfo-compareEnable-01080",
+            SamplerParts {
+                compare_op: vk::CompareOp::from_raw(99),
+                ..valid
+            },
+        ),
+    ] {
+        let info = tuff::SamplerCreateInfo::new()
+            .border_color(parts.border)
+            .compare_op(parts.compare_op);
+        assert_eq!(tuff_setup::vuid(s.device.create_sampler(&info)), rule);
     }
     let mut v = Verdicts::default();
     for (s, vuid, parts) in [
@@ -795,12 +838,27 @@ fn sampler_rules_are_refused_and_the_layer_agrees() {
             },
         ),
         (
+            &s,
+            "VUID-VkSamplerCreateInfo-addressModeU-01078",
+            SamplerParts {
+                border: vk::BorderColor::from_raw(99),
+                ..border
+            },
+        ),
+        (
+            &s,
+            "VUID-VkSamplerCreateInfo-compareEnable-01080",
+            SamplerParts {
+                compare_op: vk::CompareOp::from_raw(99),
+                ..comparing
+            },
+        ),
+        (
             &full,
             "VUID-VkSamplerCreateInfo-compareEnable-01423",
             SamplerParts {
-                compare: true,
                 reduction: vk::SamplerReductionMode::MIN,
-                ..valid
+                ..comparing
             },
         ),
     ] {
@@ -808,6 +866,45 @@ fn sampler_rules_are_refused_and_the_layer_agrees() {
         v.judge(vuid, &[], safe, layer);
     }
     v.finish("samplers");
+}
+
+/// A device makes at most `maxSamplerAllocationCount` samplers: the next is refused
+/// with the rule's VUID and the layer names it for the unchecked call; once one
+/// goes, a new one is made again.
+#[test]
+fn samplers_are_counted_against_the_limit() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let max = s
+        .physical
+        .get_properties()
+        .limits
+        .max_sampler_allocation_count;
+    assert!(
+        max <= 1 << 20,
+        "a limit of {max} samplers is more than the test makes"
+    );
+    let info = tuff::SamplerCreateInfo::new();
+    let mut samplers: Vec<_> = (0..max)
+        .map(|_| s.device.create_sampler(&info).expect("below the limit"))
+        .collect();
+    let safe = s.device.create_sampler(&info).map(drop);
+    let layer = under_layer(&s, || {
+        // SAFETY: the layer skips the call, which breaks only the count.
+        let _ = unsafe { s.device.create_sampler_unchecked(&info) };
+    });
+    let mut v = Verdicts::default();
+    v.judge(
+        "VUID-vkCreateSampler-maxSamplerAllocationCount-04110",
+        &[],
+        safe,
+        layer,
+    );
+    v.finish("sampler count");
+    samplers.pop();
+    samplers.push(s.device.create_sampler(&info).expect("one went"));
+    drop(samplers);
+    vulkan::assert_silent(&s.messages);
 }
 
 /// An image create info's parts a case can change.

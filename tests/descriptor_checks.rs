@@ -78,7 +78,9 @@ struct Objects {
 
 fn objects(s: &Setup) -> Objects {
     let d = &s.device;
-    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = d
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let stages = vk::ShaderStageFlags::FRAGMENT;
     let b = |n: u32, ty: T, count: u32| {
         tuff::DescriptorSetLayoutBinding::new()
@@ -688,8 +690,9 @@ fn descriptors_of_another_device_are_refused() {
         )
     }
     .expect("buffer view");
-    let foreign_sampler =
-        unsafe { d2.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let foreign_sampler = d2
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let target = other.color_target(4, vk::ImageUsageFlags::SAMPLED);
     let read = L::SHADER_READ_ONLY_OPTIMAL;
     let foreign_image = [tuff::DescriptorImageInfo::new()
@@ -1060,7 +1063,9 @@ fn image_reader_with(
         )
         .expect("pool");
     let set = one_set(s, &pool, &set_layout);
-    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = d
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let images = image_info(&sampler, view, L::GENERAL);
     d.update_descriptor_sets(&[image_write(&set, 0, T::STORAGE_IMAGE, &images)], &[])
         .expect("the reader's image");
@@ -1355,7 +1360,9 @@ fn a_copy_carries_what_a_run_on_write_put_in_its_source() {
         )
         .expect("pool");
     let source = one_set(&s, &pool, &layout);
-    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = d
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let infos = [
         tuff::DescriptorImageInfo::new()
             .sampler(Some(&sampler))

@@ -610,8 +610,10 @@ fn image_draw(
     code: &[u8],
 ) -> ImageDraw {
     // A storage image descriptor reads no sampler; the struct takes one.
-    let sampler =
-        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = s
+        .device
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     descriptor_draw(
         s,
         p,
@@ -1458,9 +1460,7 @@ fn draws_sample_views_as_their_samplers_allow() {
         pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UINT, sampled);
     let (_image, _memory, view) =
         pipelines::storage_image_of(&s, vk::Format::R8G8B8A8_UNORM, sampled);
-    // SAFETY: valid create infos; the samplers outlive the sets that hold them.
-    let sampler =
-        |info: tuff::SamplerCreateInfo<'_>| unsafe { d.create_sampler(&info) }.expect("sampler");
+    let sampler = |info: tuff::SamplerCreateInfo<'_>| d.create_sampler(&info).expect("sampler");
     let linear = sampler(
         tuff::SamplerCreateInfo::new()
             .mag_filter(vk::Filter::LINEAR)
@@ -1509,9 +1509,10 @@ fn draws_do_not_reach_their_attachments_through_descriptors() {
     let usage = vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::SAMPLED;
     let target = s.color_target(SIZE, usage);
     let p = pipelines::pipelines(&s, &target);
-    // SAFETY: a valid create info.
-    let sampler =
-        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = s
+        .device
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let cases = [
         (
             include_bytes!("../shaders/spv/image_store.frag.spv").as_slice(),

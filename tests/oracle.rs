@@ -349,7 +349,7 @@ fn sampler_create_info(
         limits,
         &mut Objects::default(),
     );
-    let safe = unsafe { s.device.create_sampler(&info) }.map(drop);
+    let safe = s.device.create_sampler(&info).map(drop);
     // SAFETY: as in `buffer_create_info`.
     let layer = under_layer(s, || {
         drop(unsafe { s.device.create_sampler_unchecked(&info) })
@@ -1394,7 +1394,7 @@ fn cmd_copy_buffer_to_image(
     let region = [o.buffer_image_copy];
     record(
         s,
-        |r| unsafe { r.copy_buffer_to_image(&buffer, &image, a.dst_image_layout, &region) },
+        |r| r.copy_buffer_to_image(&buffer, &image, a.dst_image_layout, &region),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.copy_buffer_to_image_unchecked(&buffer, &image, a.dst_image_layout, &region)

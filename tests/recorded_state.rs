@@ -829,9 +829,8 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         reset(r);
         unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
     };
-    let end_inside = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
-        unsafe { r.end_query(&occlusion, 0) }.map(drop)
-    };
+    let end_inside =
+        |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| r.end_query(&occlusion, 0).map(drop);
     // Begun outside, ended inside.
     let outside_in = "VUID-vkCmdEndQuery-None-07008";
     let refused = in_render_pass(&s, one, begin, |r| {
@@ -853,8 +852,14 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         .expect("begin");
     reset(&mut rec);
     assert_eq!(
-        vuid(unsafe { rec.end_query(&occlusion, 0) }),
+        vuid(rec.end_query(&occlusion, 0)),
         "VUID-vkCmdEndQuery-None-01923"
+    );
+    // A precise occlusion query needs occlusionQueryPrecise, which `setup` leaves off.
+    let precise = vk::QueryControlFlags::PRECISE;
+    assert_eq!(
+        vuid(unsafe { rec.begin_query(&occlusion, 0, precise) }),
+        "VUID-vkCmdBeginQuery-queryType-00800"
     );
     unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
     assert_eq!(
@@ -865,7 +870,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         vuid(unsafe { rec.begin_query(&timestamps, 0, none) }),
         "VUID-vkCmdBeginQuery-queryType-02804"
     );
-    unsafe { rec.end_query(&occlusion, 0) }.expect("end query");
+    rec.end_query(&occlusion, 0).expect("end query");
     assert_eq!(
         vuid(unsafe { rec.begin_query(&occlusion, 2, none) }),
         "VUID-vkCmdBeginQuery-query-00802"
@@ -874,7 +879,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     // Begun and ended in the render pass's subpass: recorded.
     in_render_pass(&s, one, reset, |r| {
         unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
-        unsafe { r.end_query(&occlusion, 0) }.expect("end query");
+        r.end_query(&occlusion, 0).expect("end query");
     })
     .expect("a query in a subpass");
     assert_silent(&s.messages);
@@ -889,6 +894,16 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         // SAFETY: see the module docs; the command buffer is never submitted.
         drop(unsafe { rec.end_query_unchecked(&occlusion, 0) });
     });
+    layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryType-00800", || {
+        // SAFETY: as above.
+        drop(unsafe { rec.begin_query_unchecked(&occlusion, 0, precise) });
+    });
+    // The recorder follows the begin the layer skipped; end it as the layer sees
+    // nothing begun, so both agree again.
+    layer_names(&s.messages, "VUID-vkCmdEndQuery-None-01923", || {
+        // SAFETY: as above.
+        drop(unsafe { rec.end_query_unchecked(&occlusion, 0) });
+    });
     unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
     layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryPool-01922", || {
         // SAFETY: as above.
@@ -898,7 +913,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         // SAFETY: as above.
         drop(unsafe { rec.begin_query_unchecked(&timestamps, 0, none) });
     });
-    unsafe { rec.end_query(&occlusion, 0) }.expect("end query");
+    rec.end_query(&occlusion, 0).expect("end query");
     layer_names(&s.messages, "VUID-vkCmdBeginQuery-query-00802", || {
         // SAFETY: as above.
         drop(unsafe { rec.begin_query_unchecked(&occlusion, 2, none) });
@@ -1032,7 +1047,7 @@ fn render_pass2_rendering_and_subpass_queries_end_where_they_began() {
     query(&mut rec);
     rec.next_subpass(vk::SubpassContents::INLINE);
     assert_eq!(
-        vuid(unsafe { rec.end_query(&occlusion, 0) }),
+        vuid(rec.end_query(&occlusion, 0)),
         "VUID-vkCmdEndQuery-None-07007"
     );
     drop(rec);

@@ -78,7 +78,7 @@ fn record_gated_fill(
         )
         .expect("recorded")
     };
-    unsafe { rec.fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7) }.expect("fill");
+    rec.fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7).expect("fill");
     rec.end().expect("end");
 }
 
@@ -440,7 +440,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
     let mut rec = secondary
         .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
         .expect("begin secondary");
-    unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+    rec.fill_buffer(&buffer, 0, 256, 1).expect("fill");
     rec.end().expect("end secondary");
     assert_eq!(
         vuid(submit(&s, &[&secondary], &done)),
@@ -466,7 +466,7 @@ fn command_buffers_in_the_wrong_state_are_refused() {
                 .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
         )
         .expect("begin once");
-    unsafe { rec.fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
+    rec.fill_buffer(&buffer, 0, 256, 2).expect("fill");
     rec.end().expect("end once");
     submit(&s, &[&once], &done).expect("first submission");
     wait(&s, &done);
@@ -508,7 +508,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
     let inheritance = tuff::CommandBufferInheritanceInfo::new();
     let secondary_begin = tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
     let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
-    unsafe { rec.fill_buffer(&buffer, 0, 256, 3) }.expect("fill");
+    rec.fill_buffer(&buffer, 0, 256, 3).expect("fill");
     rec.end().expect("end secondary");
 
     let (_ppool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -540,7 +540,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
 
     // Recorded again once complete: the primary that executes it is now invalid.
     let mut rec = secondary.begin(&secondary_begin).expect("begin again");
-    unsafe { rec.fill_buffer(&buffer, 0, 256, 4) }.expect("fill");
+    rec.fill_buffer(&buffer, 0, 256, 4).expect("fill");
     rec.end().expect("end again");
     assert_eq!(
         vuid(submit(&s, &[&primary], &done)),
@@ -558,7 +558,7 @@ fn an_idle_queue_completes_what_was_submitted_to_it() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe { rec.fill_buffer(&buffer, 0, 256, 5) }.expect("fill");
+    rec.fill_buffer(&buffer, 0, 256, 5).expect("fill");
     rec.end().expect("end");
     let done = fence(&s);
     submit(&s, &[&cb], &done).expect("submit");
@@ -662,7 +662,7 @@ fn a_command_pool_is_not_reset_under_a_recorder_or_a_pending_buffer() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+    rec.fill_buffer(&buffer, 0, 256, 1).expect("fill");
     assert_eq!(
         vuid(s.device.reset_command_pool(&pool, none)),
         "VUID-vkEndCommandBuffer-commandBuffer-00059"
@@ -814,7 +814,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+        rec.fill_buffer(&buffer, 0, 256, 1).expect("fill");
         drop(rec);
     }
     assert_eq!(
@@ -824,7 +824,7 @@ fn a_recorder_dropped_without_end_leaves_nothing_to_submit_and_is_reset_at_begin
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin after an abandoned recording");
-    unsafe { rec.fill_buffer(&buffer, 0, 256, 2) }.expect("fill");
+    rec.fill_buffer(&buffer, 0, 256, 2).expect("fill");
     rec.end().expect("end");
     submit(&s, &[&cb], &done).expect("submit");
     wait(&s, &done);
@@ -935,8 +935,10 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
 fn a_set_layout_keeps_its_immutable_samplers() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let sampler =
-        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = s
+        .device
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let samplers = tuff::HandleSlice::new(&[&sampler]);
     let bindings = [tuff::DescriptorSetLayoutBinding::new()
         .binding(0)
@@ -1040,8 +1042,10 @@ fn arrays_that_share_a_count_cannot_disagree() {
     assert!(write.p_buffer_info.is_null());
 
     // A count that means something alone clears the array it no longer matches.
-    let sampler =
-        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = s
+        .device
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let binding = tuff::DescriptorSetLayoutBinding::new()
         .immutable_samplers(&sampler)
         .descriptor_count(5);
@@ -1060,8 +1064,10 @@ fn a_write_whose_type_selects_an_unset_array_is_refused() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let set = uniform_set(&s);
-    let sampler =
-        unsafe { s.device.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = s
+        .device
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let target = s.color_target(4, vk::ImageUsageFlags::SAMPLED);
     let images = [tuff::DescriptorImageInfo::new()
         .sampler(Some(&sampler))
@@ -1442,7 +1448,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             )
             .expect("recorded")
         };
-        unsafe { rec.fill_buffer(&buffer, 0, 256, 1) }.expect("fill");
+        rec.fill_buffer(&buffer, 0, 256, 1).expect("fill");
         rec.end().expect("end secondary");
         assert_eq!(
             vuid(submitter.submit(&s, &[&secondary], &done)),
@@ -1668,12 +1674,12 @@ fn buffer_copies_stay_inside_their_buffers() {
         .expect("begin");
     for (expected, src, dst, regions) in &cases {
         assert_eq!(
-            vuid(unsafe { rec.copy_buffer(src, dst, regions) }),
+            vuid(rec.copy_buffer(src, dst, regions)),
             *expected,
             "copy {regions:?}"
         );
     }
-    unsafe { rec.copy_buffer(&big, &small, &region(64, 0, 16)) }
+    rec.copy_buffer(&big, &small, &region(64, 0, 16))
         .expect("a copy inside both buffers");
     rec.end().expect("end");
     assert_silent(&s.messages);
@@ -1696,6 +1702,45 @@ fn buffer_copies_stay_inside_their_buffers() {
     }
     s.messages.abort_on_error(false);
     rec.end().expect("end");
+
+    // `vkCmdCopyBuffer2` by the same rules, under its own VUIDs (the 1.3.239 layer
+    // names some by `vkCmdCopyBuffer`'s).
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    for (expected, src, dst, regions) in &cases {
+        let regions2 = regions.map(|r| {
+            tuff::BufferCopy2::new()
+                .src_offset(r.src_offset)
+                .dst_offset(r.dst_offset)
+                .size(r.size)
+        });
+        let info = tuff::CopyBufferInfo2::new(src, dst).regions(&regions2);
+        let expected = expected
+            .replace("vkCmdCopyBuffer-", "VkCopyBufferInfo2-")
+            .replace("VkBufferCopy-", "VkBufferCopy2-");
+        assert_eq!(vuid(rec.copy_buffer2(&info)), expected, "copy {regions:?}");
+        s.messages.abort_on_error(true);
+        // SAFETY: the messenger makes the layer skip the call, which breaks only the
+        // rule under test; the command buffer is never submitted.
+        unsafe { rec.copy_buffer2_unchecked(&info) }.expect("recorded");
+        s.messages.abort_on_error(false);
+        let said = s.messages.take();
+        let v1 = expected
+            .replace("VkCopyBufferInfo2-", "vkCmdCopyBuffer-")
+            .replace("VkBufferCopy2-", "VkBufferCopy-");
+        assert!(
+            said.iter()
+                .any(|m| m.contains(&expected) || m.contains(&v1)),
+            "{expected}: the layer said {said:?}"
+        );
+    }
+    let region2 = [tuff::BufferCopy2::new().src_offset(64).size(16)];
+    rec.copy_buffer2(&tuff::CopyBufferInfo2::new(&big, &small).regions(&region2))
+        .expect("a copy inside both buffers");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
 }
 
 /// Memory bound with `bind_buffer_memory2` or `bind_image_memory2` stays alive while
@@ -1737,17 +1782,15 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    unsafe {
-        rec.copy_buffer(
-            &buffer,
-            &target,
-            &[vk::BufferCopy {
-                src_offset: 0,
-                dst_offset: 0,
-                size: 256,
-            }],
-        )
-    }
+    rec.copy_buffer(
+        &buffer,
+        &target,
+        &[vk::BufferCopy {
+            src_offset: 0,
+            dst_offset: 0,
+            size: 256,
+        }],
+    )
     .expect("copy");
     rec.end().expect("end");
     let done = fence(&s);
@@ -1841,7 +1884,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                         // under test; the command buffer is never submitted.
                         unsafe { rec.fill_buffer_unchecked(&buf, offset, size, 0) }
                     } else {
-                        unsafe { rec.fill_buffer(&buf, offset, size, 0) }
+                        rec.fill_buffer(&buf, offset, size, 0)
                     }
                 }),
             )
@@ -1859,7 +1902,7 @@ fn buffer_commands_stay_inside_their_buffers() {
                     // SAFETY: as for the fills.
                     unsafe { rec.update_buffer_unchecked(&buf, offset, data) }
                 } else {
-                    unsafe { rec.update_buffer(&buf, offset, data) }
+                    rec.update_buffer(&buf, offset, data)
                 }
             }),
         )
@@ -1949,12 +1992,13 @@ fn buffer_commands_stay_inside_their_buffers() {
     // 65,540 bytes: more than one update may carry (and than the buffer holds).
     let (large, _m3) = host_buffer(&s, 1 << 17, vk::BufferUsageFlags::TRANSFER_DST);
     assert_eq!(
-        vuid(unsafe { rec.update_buffer(&large, 0, big) }),
+        vuid(rec.update_buffer(&large, 0, big)),
         "VUID-vkCmdUpdateBuffer-dataSize-00037"
     );
     // The recorder goes on with correct calls, which run.
-    unsafe { rec.fill_buffer(&buffer, 0, 128, 7) }.expect("fill");
-    unsafe { rec.update_buffer(&buffer, 252, &[1, 2, 3, 4]) }.expect("update");
+    rec.fill_buffer(&buffer, 0, 128, 7).expect("fill");
+    rec.update_buffer(&buffer, 252, &[1, 2, 3, 4])
+        .expect("update");
     rec.bind_vertex_buffers(0, &buffer, &[252]).expect("vertex");
     rec.bind_index_buffer(&buffer, 4, vk::IndexType::UINT32)
         .expect("index");
@@ -4097,7 +4141,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
             } else {
                 // A refused copy is not recorded, and the recording goes on.
                 assert_eq!(
-                    vuid(unsafe { rec.copy_buffer_to_image(&buffer, &image, dst, &[*r]) }),
+                    vuid(rec.copy_buffer_to_image(&buffer, &image, dst, &[*r])),
                     to_image
                 );
                 rec.end().expect("end");
@@ -4106,10 +4150,7 @@ fn a_buffer_image_copy_past_the_buffer_is_refused_and_the_layer_agrees() {
                         to_buffer,
                         Box::new(|rec| rec.copy_image_to_buffer(&image, src, &buffer, &[*r])),
                     ),
-                    (
-                        to_image2,
-                        Box::new(|rec| unsafe { rec.copy_buffer_to_image2(&into) }),
-                    ),
+                    (to_image2, Box::new(|rec| rec.copy_buffer_to_image2(&into))),
                     (to_buffer2, Box::new(|rec| rec.copy_image_to_buffer2(&out))),
                 ];
                 for (expected, call) in calls {

@@ -61,7 +61,6 @@ fn timeline_signals_rise() {
     let submit = [tuff::SubmitInfo::new()
         .signal_semaphores(&signals)
         .push_next(&mut below)];
-    // SAFETY: an empty batch; the call is refused.
     assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), rule);
     layer_names(&s, rule, || {
         // SAFETY: the layer names the rule and skips the call.
@@ -73,7 +72,6 @@ fn timeline_signals_rise() {
     let submit = [tuff::SubmitInfo::new()
         .signal_semaphores(&signals)
         .push_next(&mut above)];
-    // SAFETY: an empty batch that signals above every value given so far.
     s.queue
         .submit(&submit, Some(&fence))
         .expect("a signal above");
@@ -105,7 +103,6 @@ fn protected_batches_need_protected_queues() {
     let rule = "VUID-vkQueueSubmit-queue-06448";
     let mut protected = tuff::ProtectedSubmitInfo::new().protected_submit(true);
     let submit = [tuff::SubmitInfo::new().push_next(&mut protected)];
-    // SAFETY: an empty batch; the call is refused.
     assert_eq!(vuid(s.queue.submit(&submit, Some(&fence))), rule);
     layer_names(&s, rule, || {
         // SAFETY: the layer names the rule and skips the call.

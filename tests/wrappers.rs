@@ -66,7 +66,9 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     // Shader modules, both pipelines and a descriptor update template, used by a
     // submission that is still in flight when the bag is dropped.
     let work = pipelines(s, &target);
-    let sampler = unsafe { d.create_sampler(&tuff::SamplerCreateInfo::new()) }.expect("sampler");
+    let sampler = d
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
     let bindings = [tuff::DescriptorSetLayoutBinding::new()
         .binding(0)
         .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
@@ -288,7 +290,8 @@ fn resources_dropped_while_their_submission_is_in_flight() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         for i in 0..64u64 {
-            unsafe { rec.fill_buffer(&buffer, i * 16384, 16384, round) }.expect("fill");
+            rec.fill_buffer(&buffer, i * 16384, 16384, round)
+                .expect("fill");
         }
         rec.end().expect("end");
         let cb_handles = tuff::HandleSlice::new(&[&cb]);
@@ -315,7 +318,7 @@ fn a_submitted_buffer_is_written() {
     let s = setup(true);
     let (buffer, memory) = buffer_with_memory(&s, 256);
     submit_and_wait(&s, |rec| {
-        unsafe { rec.fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5) }.expect("fill")
+        rec.fill_buffer(&buffer, 0, 256, 0xA5A5_A5A5).expect("fill")
     });
     // Read back through ash on the raw handles: Deref keeps the layer transparent.
     let bytes = access_memory(&s, &memory, 256, None);
@@ -975,17 +978,15 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
         // The copy's source goes, memory and all, while the copy may still run: the
         // submission keeps it (the layer would report memory freed in use).
         submit_and_wait(&s, |rec| {
-            unsafe {
-                rec.copy_buffer(
-                    &source,
-                    &target,
-                    &[vk::BufferCopy {
-                        src_offset: 0,
-                        dst_offset: 0,
-                        size: 256,
-                    }],
-                )
-            }
+            rec.copy_buffer(
+                &source,
+                &target,
+                &[vk::BufferCopy {
+                    src_offset: 0,
+                    dst_offset: 0,
+                    size: 256,
+                }],
+            )
             .expect("copy");
             source
         });
@@ -1291,7 +1292,7 @@ fn frames_in_flight_take_turns_and_keep_their_semaphores() {
     let record = |frame: &mut tuff::Frame<'_>, n: u32| {
         let target = &targets[frame.index];
         let mut rec = frame.record().expect("record");
-        unsafe { rec.fill_buffer(target, 0, vk::WHOLE_SIZE, n) }.expect("fill");
+        rec.fill_buffer(target, 0, vk::WHOLE_SIZE, n).expect("fill");
         let to_host = [tuff::BufferMemoryBarrier::new(target)
             .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
             .dst_access_mask(vk::AccessFlags::HOST_READ)

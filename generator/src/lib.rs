@@ -346,7 +346,13 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         })
         .map(|r| r.command.clone())
         .collect();
-    report.add_methods(&plans.methods, &plans.safety, &plans.enabling, &scenes);
+    report.add_methods(
+        &plans.methods,
+        &plans.safety,
+        &plans.enabling,
+        &scenes,
+        |command| model.home(command),
+    );
     let mut files = emission.files;
     files.extend(report::render(&report));
     files.push(emit::OutputFile {

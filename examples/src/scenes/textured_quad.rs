@@ -58,12 +58,7 @@ impl TexturedQuad {
             .address_mode_v(vk::SamplerAddressMode::CLAMP_TO_EDGE)
             .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE)
             .max_lod(0.0);
-        // SAFETY: the rules `create_sampler` leaves to its caller: this is the scene's
-        // only sampler (far below maxSamplerAllocationCount, at least 4,000); no
-        // address mode is CLAMP_TO_BORDER and comparison is off, so the border color
-        // and compare op are not read; nothing is chained (no YCbCr conversion, no
-        // border swizzle); no flags (no non-seamless cube maps).
-        let sampler = unsafe { d.create_sampler(&info) }?;
+        let sampler = d.create_sampler(&info)?;
         let bindings = [tuff::DescriptorSetLayoutBinding::new()
             .binding(0)
             .descriptor_type(vk::DescriptorType::COMBINED_IMAGE_SAMPLER)

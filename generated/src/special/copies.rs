@@ -1,7 +1,7 @@
 //! Transfer commands: buffer and image copies, fills and updates, each region against
 //! the resources it names, their usage, formats and protection.
 
-use super::buffer::{buffer_record, check_buffer_use, used_buffer};
+use super::buffer::{check_buffer_use, used_buffer};
 use super::{pool_family, refuse};
 use crate::handles::{Device, *};
 use crate::recorder::{Recorder, Scope};
@@ -11,6 +11,18 @@ use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
 use smallvec::SmallVec;
+
+const FILL_PROTECTED: Protection = Protection {
+    protected_src: "",
+    protected_dst: "VUID-vkCmdFillBuffer-commandBuffer-01811",
+    unprotected_dst: "VUID-vkCmdFillBuffer-commandBuffer-01812",
+};
+
+const UPDATE_PROTECTED: Protection = Protection {
+    protected_src: "",
+    protected_dst: "VUID-vkCmdUpdateBuffer-commandBuffer-01813",
+    unprotected_dst: "VUID-vkCmdUpdateBuffer-commandBuffer-01814",
+};
 
 /// The checks of `vkCmdFillBuffer` that keep the fill inside the buffer.
 pub(crate) fn cmd_fill_buffer_checks<S: Scope>(
@@ -29,6 +41,8 @@ pub(crate) fn cmd_fill_buffer_checks<S: Scope>(
         ),
         &"dstBuffer",
     )?;
+    let protected = dst.flags.contains(vk::BufferCreateFlags::PROTECTED);
+    check_protected(recorder, None, protected, &FILL_PROTECTED)?;
     if dst_offset >= dst.size {
         refuse("VUID-vkCmdFillBuffer-dstOffset-00024", format!("dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
     }
@@ -75,6 +89,8 @@ pub(crate) fn cmd_update_buffer_checks<S: Scope>(
         ),
         &"dstBuffer",
     )?;
+    let protected = dst.flags.contains(vk::BufferCreateFlags::PROTECTED);
+    check_protected(recorder, None, protected, &UPDATE_PROTECTED)?;
     let len = data.len() as u64;
     if dst_offset >= dst.size {
         refuse("VUID-vkCmdUpdateBuffer-dstOffset-00032", format!("dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size))?;
@@ -103,6 +119,69 @@ pub(crate) fn cmd_update_buffer_checks<S: Scope>(
     Ok(())
 }
 
+/// The rules of a copy between two buffers, by field: `vkCmdCopyBuffer`'s and
+/// `vkCmdCopyBuffer2`'s differ only in their names.
+pub(crate) struct BufferCopyRules {
+    /// The source has the transfer-source usage.
+    pub src_usage: &'static str,
+    /// The source is bound to memory (or sparse).
+    pub src_bound: &'static str,
+    /// The destination has the transfer-destination usage.
+    pub dst_usage: &'static str,
+    /// The destination is bound to memory (or sparse).
+    pub dst_bound: &'static str,
+    /// Each region's source offset lies inside the source.
+    pub src_offset: &'static str,
+    /// Each region's destination offset lies inside the destination.
+    pub dst_offset: &'static str,
+    /// Each region's size fits the source after its offset.
+    pub src_size: &'static str,
+    /// Each region's size fits the destination after its offset.
+    pub dst_size: &'static str,
+    /// Each region's size is not zero.
+    pub size: &'static str,
+    /// No source range overlaps a destination range.
+    pub overlap: &'static str,
+    /// The protected-memory rules.
+    pub protected: Protection,
+}
+
+const COPY_BUFFER: BufferCopyRules = BufferCopyRules {
+    src_usage: "VUID-vkCmdCopyBuffer-srcBuffer-00118",
+    src_bound: "VUID-vkCmdCopyBuffer-srcBuffer-00119",
+    dst_usage: "VUID-vkCmdCopyBuffer-dstBuffer-00120",
+    dst_bound: "VUID-vkCmdCopyBuffer-dstBuffer-00121",
+    src_offset: "VUID-vkCmdCopyBuffer-srcOffset-00113",
+    dst_offset: "VUID-vkCmdCopyBuffer-dstOffset-00114",
+    src_size: "VUID-vkCmdCopyBuffer-size-00115",
+    dst_size: "VUID-vkCmdCopyBuffer-size-00116",
+    size: "VUID-VkBufferCopy-size-01988",
+    overlap: "VUID-vkCmdCopyBuffer-pRegions-00117",
+    protected: Protection {
+        protected_src: "VUID-vkCmdCopyBuffer-commandBuffer-01822",
+        protected_dst: "VUID-vkCmdCopyBuffer-commandBuffer-01823",
+        unprotected_dst: "VUID-vkCmdCopyBuffer-commandBuffer-01824",
+    },
+};
+
+const COPY_BUFFER2: BufferCopyRules = BufferCopyRules {
+    src_usage: "VUID-VkCopyBufferInfo2-srcBuffer-00118",
+    src_bound: "VUID-VkCopyBufferInfo2-srcBuffer-00119",
+    dst_usage: "VUID-VkCopyBufferInfo2-dstBuffer-00120",
+    dst_bound: "VUID-VkCopyBufferInfo2-dstBuffer-00121",
+    src_offset: "VUID-VkCopyBufferInfo2-srcOffset-00113",
+    dst_offset: "VUID-VkCopyBufferInfo2-dstOffset-00114",
+    src_size: "VUID-VkCopyBufferInfo2-size-00115",
+    dst_size: "VUID-VkCopyBufferInfo2-size-00116",
+    size: "VUID-VkBufferCopy2-size-01988",
+    overlap: "VUID-VkCopyBufferInfo2-pRegions-00117",
+    protected: Protection {
+        protected_src: "VUID-vkCmdCopyBuffer2-commandBuffer-01822",
+        protected_dst: "VUID-vkCmdCopyBuffer2-commandBuffer-01823",
+        unprotected_dst: "VUID-vkCmdCopyBuffer2-commandBuffer-01824",
+    },
+};
+
 /// The checks of `vkCmdCopyBuffer` that keep the copy inside both buffers: a copy out
 /// of range reads or writes memory the buffers do not own.
 pub(crate) fn cmd_copy_buffer_checks<S: Scope>(
@@ -111,69 +190,102 @@ pub(crate) fn cmd_copy_buffer_checks<S: Scope>(
     dst_buffer: &Buffer,
     regions: &[vk::BufferCopy],
 ) -> Result<()> {
+    let regions = regions.iter().map(|r| (r.src_offset, r.dst_offset, r.size));
+    let buffers = (src_buffer.raw(), dst_buffer.raw());
+    check_buffer_copy(recorder, buffers, regions, &COPY_BUFFER)
+}
+
+/// As [`cmd_copy_buffer_checks`], for `vkCmdCopyBuffer2`.
+pub(crate) fn cmd_copy_buffer2_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    info: &CopyBufferInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
+    let regions = regions.iter().map(|r| (r.src_offset, r.dst_offset, r.size));
+    let buffers = (raw.src_buffer, raw.dst_buffer);
+    check_buffer_copy(recorder, buffers, regions, &COPY_BUFFER2)
+}
+
+/// A copy between two buffers, its regions read into one shape (source offset,
+/// destination offset, size), against both buffers' records.
+fn check_buffer_copy<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    (src_buffer, dst_buffer): (vk::Buffer, vk::Buffer),
+    regions: impl Iterator<Item = (u64, u64, u64)> + Clone,
+    rules: &BufferCopyRules,
+) -> Result<()> {
     let device = recorder.device();
-    let src = buffer_record(device, src_buffer)?;
-    let dst = buffer_record(device, dst_buffer)?;
+    let record = |b| {
+        device.live().buffer(b).ok_or(crate::Error::Misuse(
+            "the buffer was not created through the wrappers, so its size is unknown",
+        ))
+    };
+    let (src, dst) = (record(src_buffer)?, record(dst_buffer)?);
+    let usage = vk::BufferUsageFlags::TRANSFER_SRC;
     check_buffer_use(
         &src,
-        vk::BufferUsageFlags::TRANSFER_SRC,
-        (
-            "VUID-vkCmdCopyBuffer-srcBuffer-00118",
-            "VUID-vkCmdCopyBuffer-srcBuffer-00119",
-        ),
+        usage,
+        (rules.src_usage, rules.src_bound),
         &"srcBuffer",
     )?;
+    let usage = vk::BufferUsageFlags::TRANSFER_DST;
     check_buffer_use(
         &dst,
-        vk::BufferUsageFlags::TRANSFER_DST,
-        (
-            "VUID-vkCmdCopyBuffer-dstBuffer-00120",
-            "VUID-vkCmdCopyBuffer-dstBuffer-00121",
-        ),
+        usage,
+        (rules.dst_usage, rules.dst_bound),
         &"dstBuffer",
     )?;
-    for (i, r) in regions.iter().enumerate() {
-        if r.size == 0 {
+    let protected =
+        |b: &crate::state::BufferRecord| b.flags.contains(vk::BufferCreateFlags::PROTECTED);
+    check_protected(
+        recorder,
+        Some(protected(&src)),
+        protected(&dst),
+        &rules.protected,
+    )?;
+    for (i, (src_offset, dst_offset, size)) in regions.clone().enumerate() {
+        if size == 0 {
             refuse(
-                "VUID-VkBufferCopy-size-01988",
+                rules.size,
                 format!("pRegions[{i}].size must be greater than 0 (size = 0)"),
             )?;
         }
-        if r.src_offset >= src.size {
+        if src_offset >= src.size {
             refuse(
-                "VUID-vkCmdCopyBuffer-srcOffset-00113",
-                format!("pRegions[{i}].srcOffset must be less than the size of srcBuffer (srcOffset = {}, size of srcBuffer = {})", r.src_offset, src.size),
+                rules.src_offset,
+                format!("pRegions[{i}].srcOffset must be less than the size of srcBuffer (srcOffset = {src_offset}, size of srcBuffer = {})", src.size),
             )?;
         }
-        if r.dst_offset >= dst.size {
+        if dst_offset >= dst.size {
             refuse(
-                "VUID-vkCmdCopyBuffer-dstOffset-00114",
-                format!("pRegions[{i}].dstOffset must be less than the size of dstBuffer (dstOffset = {}, size of dstBuffer = {})", r.dst_offset, dst.size),
+                rules.dst_offset,
+                format!("pRegions[{i}].dstOffset must be less than the size of dstBuffer (dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size),
             )?;
         }
-        if r.size > src.size - r.src_offset {
+        if size > src.size - src_offset {
             refuse(
-                "VUID-vkCmdCopyBuffer-size-00115",
-                format!("pRegions[{i}].size must be at most the size of srcBuffer minus srcOffset (size = {}, srcOffset = {}, size of srcBuffer = {})", r.size, r.src_offset, src.size),
+                rules.src_size,
+                format!("pRegions[{i}].size must be at most the size of srcBuffer minus srcOffset (size = {size}, srcOffset = {src_offset}, size of srcBuffer = {})", src.size),
             )?;
         }
-        if r.size > dst.size - r.dst_offset {
+        if size > dst.size - dst_offset {
             refuse(
-                "VUID-vkCmdCopyBuffer-size-00116",
-                format!("pRegions[{i}].size must be at most the size of dstBuffer minus dstOffset (size = {}, dstOffset = {}, size of dstBuffer = {})", r.size, r.dst_offset, dst.size),
+                rules.dst_size,
+                format!("pRegions[{i}].size must be at most the size of dstBuffer minus dstOffset (size = {size}, dstOffset = {dst_offset}, size of dstBuffer = {})", dst.size),
             )?;
         }
     }
-    if src_buffer.raw() == dst_buffer.raw() {
+    if src_buffer == dst_buffer {
         // Every source range against every destination range, the region's own
         // included; the offsets and sizes are in range, so the ends do not overflow.
-        for (i, a) in regions.iter().enumerate() {
-            for (j, b) in regions.iter().enumerate() {
-                let (a0, a1) = (a.src_offset, a.src_offset + a.size);
-                let (b0, b1) = (b.dst_offset, b.dst_offset + b.size);
+        for (i, (a0, _, a)) in regions.clone().enumerate() {
+            for (j, (_, b0, b)) in regions.clone().enumerate() {
+                let (a1, b1) = (a0 + a, b0 + b);
                 if a0 < b1 && b0 < a1 {
                     refuse(
-                        "VUID-vkCmdCopyBuffer-pRegions-00117",
+                        rules.overlap,
                         format!("the source of pRegions[{i}] ({a0}..{a1}) overlaps the destination of pRegions[{j}] ({b0}..{b1}) in the same buffer"),
                     )?;
                 }
@@ -181,6 +293,54 @@ pub(crate) fn cmd_copy_buffer_checks<S: Scope>(
         }
     }
     Ok(())
+}
+
+/// The protected-memory rules of a transfer command that writes one buffer or image
+/// and reads at most one other, by field.
+pub(crate) struct Protection {
+    /// An unprotected command buffer: the source is not protected (empty where the
+    /// command reads no buffer or image).
+    pub protected_src: &'static str,
+    /// An unprotected command buffer: the destination is not protected.
+    pub protected_dst: &'static str,
+    /// A protected command buffer: the destination is not unprotected.
+    pub unprotected_dst: &'static str,
+}
+
+/// Refuses a transfer that mixes protected and unprotected memory where the device
+/// lacks `protectedNoFault`: an unprotected command buffer reading or writing a
+/// protected resource, or a protected one writing an unprotected resource. `src` and
+/// `dst` say whether each resource is protected (`src` is `None` for a command that
+/// reads none). Without protected objects (a device without protectedMemory can
+/// make none) nothing is asked of the driver.
+pub(crate) fn check_protected<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    src: Option<bool>,
+    dst: bool,
+    rules: &Protection,
+) -> Result<()> {
+    let in_protected = pool_family(recorder).protected;
+    let src = src.unwrap_or(false);
+    let breaks = if in_protected { !dst } else { src || dst };
+    if !breaks || super::render_pass::protected_no_fault(recorder.device()) {
+        return Ok(());
+    }
+    if in_protected {
+        refuse(
+            rules.unprotected_dst,
+            "a protected command buffer writes an unprotected destination, and the device lacks protectedNoFault",
+        )
+    } else if src {
+        refuse(
+            rules.protected_src,
+            "an unprotected command buffer reads a protected source, and the device lacks protectedNoFault",
+        )
+    } else {
+        refuse(
+            rules.protected_dst,
+            "an unprotected command buffer writes a protected destination, and the device lacks protectedNoFault",
+        )
+    }
 }
 
 /// The byte just past the last one that a buffer-image copy region reaches in its
@@ -290,8 +450,23 @@ where
     let family = pool_family(recorder);
     if let Some(record) = device.live().image(image) {
         check_regions(device, &record, family, regions.iter().copied(), rules)?;
+        if rules.to_image {
+            check_depth_values(&record, &regions, rules)?;
+        }
     }
-    check_protection(device, family, (buffer, image), rules)?;
+    let live = device.live();
+    let buffer_protected = live
+        .buffer(buffer)
+        .is_some_and(|b| b.flags.contains(vk::BufferCreateFlags::PROTECTED));
+    let image_protected = live
+        .image(image)
+        .is_some_and(|i| i.flags.contains(vk::ImageCreateFlags::PROTECTED));
+    let (src, dst) = if rules.to_image {
+        (buffer_protected, image_protected)
+    } else {
+        (image_protected, buffer_protected)
+    };
+    check_protected(recorder, Some(src), dst, &rules.protected)?;
     check_overlap(device, (buffer, image), &regions, rules)?;
     check_buffer_image_regions(
         device,
@@ -420,18 +595,17 @@ pub(crate) struct Rules {
     pub image_height: &'static str,
     /// `aspectMask` one bit.
     pub one_aspect: &'static str,
-    /// An unprotected command buffer: the image is not protected.
-    pub protected_image: &'static str,
-    /// An unprotected command buffer: the buffer is not protected.
-    pub protected_buffer: &'static str,
-    /// A protected command buffer: the destination is protected.
-    pub unprotected_dst: &'static str,
+    /// The protected-memory rules, the buffer or image read as the source.
+    pub protected: Protection,
     /// The buffer's and the image's memory do not overlap.
     pub overlap: &'static str,
     /// Each region's buffer range inside the buffer.
     pub range: &'static str,
     /// Whether the copy writes the image (else the buffer).
     pub to_image: bool,
+    /// Depth values read from the buffer lie in [0,1] (empty for a copy into a
+    /// buffer).
+    pub depth_values: &'static str,
 }
 
 /// `vkCmdCopyBufferToImage`.
@@ -473,12 +647,15 @@ pub(crate) const TO_IMAGE: Rules = Rules {
     row_length: "VUID-VkBufferImageCopy-bufferRowLength-00195",
     image_height: "VUID-VkBufferImageCopy-bufferImageHeight-00196",
     one_aspect: "VUID-VkBufferImageCopy-aspectMask-00212",
-    protected_image: "VUID-vkCmdCopyBufferToImage-commandBuffer-01829",
-    protected_buffer: "VUID-vkCmdCopyBufferToImage-commandBuffer-01828",
-    unprotected_dst: "VUID-vkCmdCopyBufferToImage-commandBuffer-01830",
+    protected: Protection {
+        protected_src: "VUID-vkCmdCopyBufferToImage-commandBuffer-01828",
+        protected_dst: "VUID-vkCmdCopyBufferToImage-commandBuffer-01829",
+        unprotected_dst: "VUID-vkCmdCopyBufferToImage-commandBuffer-01830",
+    },
     overlap: "VUID-vkCmdCopyBufferToImage-pRegions-00173",
     range: "VUID-vkCmdCopyBufferToImage-pRegions-00171",
     to_image: true,
+    depth_values: "VUID-vkCmdCopyBufferToImage-None-00214",
 };
 
 /// `vkCmdCopyImageToBuffer`.
@@ -520,12 +697,15 @@ pub(crate) const TO_BUFFER: Rules = Rules {
     row_length: "VUID-VkBufferImageCopy-bufferRowLength-00195",
     image_height: "VUID-VkBufferImageCopy-bufferImageHeight-00196",
     one_aspect: "VUID-VkBufferImageCopy-aspectMask-00212",
-    protected_image: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01831",
-    protected_buffer: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01832",
-    unprotected_dst: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01833",
+    protected: Protection {
+        protected_src: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01831",
+        protected_dst: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01832",
+        unprotected_dst: "VUID-vkCmdCopyImageToBuffer-commandBuffer-01833",
+    },
     overlap: "VUID-vkCmdCopyImageToBuffer-pRegions-00184",
     range: "VUID-vkCmdCopyImageToBuffer-pRegions-00183",
     to_image: false,
+    depth_values: "",
 };
 
 /// `vkCmdCopyBufferToImage2`.
@@ -568,12 +748,15 @@ pub(crate) const TO_IMAGE2: Rules = Rules {
     row_length: "VUID-VkBufferImageCopy2-bufferRowLength-00195",
     image_height: "VUID-VkBufferImageCopy2-bufferImageHeight-00196",
     one_aspect: "VUID-VkBufferImageCopy2-aspectMask-00212",
-    protected_image: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01829",
-    protected_buffer: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01828",
-    unprotected_dst: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01830",
+    protected: Protection {
+        protected_src: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01828",
+        protected_dst: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01829",
+        unprotected_dst: "VUID-vkCmdCopyBufferToImage2-commandBuffer-01830",
+    },
     overlap: "VUID-VkCopyBufferToImageInfo2-pRegions-00173",
     range: "VUID-VkCopyBufferToImageInfo2-pRegions-00171",
     to_image: true,
+    depth_values: "VUID-VkCopyBufferToImageInfo2-None-00214",
 };
 
 /// `vkCmdCopyImageToBuffer2`.
@@ -616,12 +799,15 @@ pub(crate) const TO_BUFFER2: Rules = Rules {
     row_length: "VUID-VkBufferImageCopy2-bufferRowLength-00195",
     image_height: "VUID-VkBufferImageCopy2-bufferImageHeight-00196",
     one_aspect: "VUID-VkBufferImageCopy2-aspectMask-00212",
-    protected_image: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831",
-    protected_buffer: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832",
-    unprotected_dst: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833",
+    protected: Protection {
+        protected_src: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831",
+        protected_dst: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832",
+        unprotected_dst: "VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833",
+    },
     overlap: "VUID-VkCopyImageToBufferInfo2-pRegions-00184",
     range: "VUID-VkCopyImageToBufferInfo2-pRegions-00183",
     to_image: false,
+    depth_values: "",
 };
 
 /// One region of a buffer-image copy.
@@ -956,39 +1142,29 @@ pub(crate) fn check_regions(
     Ok(())
 }
 
-/// The protected-memory rules of a copy between `buffer` and `image` recorded into
-/// a buffer of `family`'s pool.
-pub(crate) fn check_protection(
-    device: &Device,
-    family: PoolFamily,
-    (buffer, image): (vk::Buffer, vk::Image),
-    rules: &Rules,
-) -> Result<()> {
-    let buffer_protected = device
-        .live()
-        .buffer(buffer)
-        .is_some_and(|b| b.flags.contains(vk::BufferCreateFlags::PROTECTED));
-    let image_protected = device
-        .live()
-        .image(image)
-        .is_some_and(|i| i.flags.contains(vk::ImageCreateFlags::PROTECTED));
-    if family.protected {
-        let dst_protected = if rules.to_image {
-            image_protected
-        } else {
-            buffer_protected
-        };
-        check(rules.unprotected_dst, dst_protected, || {
-            "a protected command buffer writes an unprotected destination".into()
-        })
-    } else {
-        check(rules.protected_image, !image_protected, || {
-            "an unprotected command buffer copies a protected image".into()
-        })?;
-        check(rules.protected_buffer, !buffer_protected, || {
-            "an unprotected command buffer copies a protected buffer".into()
-        })
+/// Refuses a copy from a buffer into the depth aspect of a floating-point depth
+/// format: the rule wants every depth value read in [0,1], and what a buffer holds
+/// is the GPU's, which tuff cannot see. A unorm depth format holds [0,1] by its
+/// encoding, so copies into those pass; for a float one, the `_unchecked` method
+/// takes the caller's word for the values.
+fn check_depth_values(record: &ImageRecord, regions: &[Region], rules: &Rules) -> Result<()> {
+    let float = matches!(
+        record.format,
+        vk::Format::D32_SFLOAT | vk::Format::D32_SFLOAT_S8_UINT
+    );
+    for (n, r) in regions.iter().enumerate() {
+        if float
+            && r.subresource
+                .aspect_mask
+                .contains(vk::ImageAspectFlags::DEPTH)
+        {
+            refuse(
+                rules.depth_values,
+                format!("pRegions[{n}] copies into the depth aspect of a {:?} image, whose values must lie in [0,1]; tuff cannot see the buffer's contents, so only the `_unchecked` method, whose caller vouches for them, records it", record.format),
+            )?;
+        }
     }
+    Ok(())
 }
 
 /// Refuses a copy whose buffer regions reach the memory the image is bound to

@@ -154,10 +154,39 @@ pub(crate) fn begin_query_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     query_pool: &QueryPool,
     query: u32,
+    flags: vk::QueryControlFlags,
 ) -> Result<()> {
+    not_protected(recorder, "VUID-vkCmdBeginQuery-commandBuffer-01885")?;
     let Some(record) = recorder.device().live().query_pool(query_pool.raw()) else {
         return Ok(());
     };
+    if matches!(
+        record.query_type,
+        vk::QueryType::ACCELERATION_STRUCTURE_SIZE_KHR
+            | vk::QueryType::ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR
+            | vk::QueryType::ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR
+            | vk::QueryType::ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR
+    ) {
+        refuse(
+            "VUID-vkCmdBeginQuery-queryType-06741",
+            format!(
+                "a query of type {:?} is written by acceleration structure commands, never begun",
+                record.query_type
+            ),
+        )?;
+    }
+    if flags.contains(vk::QueryControlFlags::PRECISE) {
+        let precise = recorder
+            .device()
+            .live()
+            .with_features(|f| f.v10.occlusion_query_precise);
+        if record.query_type != vk::QueryType::OCCLUSION || precise != vk::TRUE {
+            refuse(
+                "VUID-vkCmdBeginQuery-queryType-00800",
+                format!("flags has PRECISE, which needs an occlusion query pool (this one's type is {:?}) and the occlusionQueryPrecise feature (enabled: {})", record.query_type, precise == vk::TRUE),
+            )?;
+        }
+    }
     if record.query_type == vk::QueryType::TIMESTAMP {
         refuse(
             "VUID-vkCmdBeginQuery-queryType-02804",
@@ -263,6 +292,7 @@ pub(crate) fn end_query_checks<S: Scope>(
     query_pool: &QueryPool,
     query: u32,
 ) -> Result<()> {
+    not_protected(recorder, "VUID-vkCmdEndQuery-commandBuffer-01886")?;
     if let Some(record) = recorder.device().live().query_pool(query_pool.raw()) {
         if query >= record.count {
             refuse(
@@ -327,4 +357,16 @@ pub(crate) fn end_query_done<S: Scope>(
     recorder
         .queries
         .retain(|q| !(q.pool == query_pool.raw() && q.query == query));
+}
+
+/// Refuses a query command in a protected command buffer, where queries are not
+/// allowed (the pool's protected flag, recorded at its creation).
+fn not_protected<S: Scope>(recorder: &Recorder<'_, S>, vuid: &'static str) -> Result<()> {
+    if super::pool_family(recorder).protected {
+        return refuse(
+            vuid,
+            "a query command in a protected command buffer (one of a pool created with PROTECTED)",
+        );
+    }
+    Ok(())
 }

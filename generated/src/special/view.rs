@@ -459,15 +459,17 @@ fn view_format_checks(
 }
 
 /// The device remembers a sampler Y'CbCr conversion's format, which views that use
-/// it must have.
+/// it must have, and its chroma filter, which samplers that use it check their
+/// filters against.
 pub(crate) fn conversion_created(
     device: &Device,
     conversion: SamplerYcbcrConversion,
     create_info: &SamplerYcbcrConversionCreateInfo<'_>,
 ) -> SamplerYcbcrConversion {
+    let info = create_info.as_raw();
     device
         .live()
-        .conversion_created(conversion.raw(), create_info.as_raw().format);
+        .conversion_created(conversion.raw(), info.format, info.chroma_filter);
     conversion
 }
 

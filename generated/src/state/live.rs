@@ -52,8 +52,12 @@ pub(crate) struct Live {
     pub(super) framebuffer_passes: Vutex<HashMap<u64, Vrc<RenderPassRecord>>>,
     /// The view formats each live image's create info listed, where it listed any.
     pub(super) view_formats: Vutex<HashMap<u64, Vec<vk::Format>>>,
-    /// Each live sampler Y'CbCr conversion's format.
-    pub(super) conversions: Vutex<HashMap<u64, vk::Format>>,
+    /// Each live sampler Y'CbCr conversion's format and chroma filter.
+    pub(super) conversions: Vutex<HashMap<u64, (vk::Format, vk::Filter)>>,
+    /// Held by a safe sampler creation from its count check until its sampler is
+    /// listed, so two threads cannot both take the last sampler
+    /// `maxSamplerAllocationCount` allows.
+    pub(super) sampling: Vutex<()>,
     /// Held by a safe allocation from its count check until its memory is listed,
     /// so two threads cannot both take the last allocation `maxMemoryAllocationCount`
     /// allows.
@@ -173,6 +177,7 @@ impl Default for Live {
             view_formats: Vutex::new(HashMap::default()),
             views: Vutex::new(HashMap::default()),
             conversions: Vutex::new(HashMap::default()),
+            sampling: Vutex::new(()),
             ledger: Default::default(),
             queues: Vutex::new(HashMap::default()),
             timelines: Vutex::new(HashMap::default()),

@@ -75,13 +75,27 @@ impl Live {
         self.views.lock().get(&raw.as_raw()).copied()
     }
 
-    /// Records a new sampler Y'CbCr conversion's format.
-    pub(crate) fn conversion_created(&self, raw: vk::SamplerYcbcrConversion, format: vk::Format) {
-        self.conversions.lock().insert(raw.as_raw(), format);
+    /// Records a new sampler Y'CbCr conversion's format and chroma filter.
+    pub(crate) fn conversion_created(
+        &self,
+        raw: vk::SamplerYcbcrConversion,
+        format: vk::Format,
+        chroma_filter: vk::Filter,
+    ) {
+        let record = (format, chroma_filter);
+        self.conversions.lock().insert(raw.as_raw(), record);
     }
 
     /// The format a live sampler Y'CbCr conversion was created with.
     pub(crate) fn conversion_format(&self, raw: vk::SamplerYcbcrConversion) -> Option<vk::Format> {
+        self.conversion(raw).map(|(format, _)| format)
+    }
+
+    /// The format and chroma filter a live sampler Y'CbCr conversion was created with.
+    pub(crate) fn conversion(
+        &self,
+        raw: vk::SamplerYcbcrConversion,
+    ) -> Option<(vk::Format, vk::Filter)> {
         self.conversions.lock().get(&raw.as_raw()).copied()
     }
 }

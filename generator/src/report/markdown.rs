@@ -1,6 +1,6 @@
 //! `VALIDATION.md`: the coverage tables, how to read them, and per-item detail.
 
-use super::{Report, Table};
+use super::{MethodTally, Report, Table};
 use crate::validity::{classify, Category};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -368,6 +368,7 @@ fn methods_section(s: &mut String, r: &Report) {
         );
     }
     refused_section(s, r);
+    core_unsafe_section(s, r);
     let _ = writeln!(
         s,
         "\n## Per method (emitted API)\n\n\
@@ -387,6 +388,39 @@ fn methods_section(s: &mut String, r: &Report) {
             "| `{}` | {scenes} | {safe} | {n} | {st} | {dy} | {user} | {} |",
             m.method, m.owned
         );
+    }
+}
+
+/// The core methods still `unsafe`, each with the rules its caller owns: the work
+/// that stands between a renderer and a program without `unsafe`.
+fn core_unsafe_section(s: &mut String, r: &Report) {
+    let core: Vec<&MethodTally> = r
+        .methods
+        .iter()
+        .filter(|m| m.home.starts_with("VK_VERSION_"))
+        .collect();
+    let mut unsafe_core: Vec<&&MethodTally> = core.iter().filter(|m| !m.safe).collect();
+    unsafe_core.sort_by(|a, b| a.method.cmp(&b.method));
+    let _ = writeln!(
+        s,
+        "\n### Core methods left `unsafe`, rule by rule\n\n\
+         Core (Vulkan 1.0 to 1.3): {} of {} methods safe. Each core method still `unsafe` \
+         follows, with every rule its caller owns, as its `# Safety` section lists them.\n",
+        core.len() - unsafe_core.len(),
+        core.len()
+    );
+    for m in unsafe_core {
+        let _ = writeln!(s, "- `{}` ({} rules):", m.method, m.owned);
+        if m.raw {
+            let _ = writeln!(
+                s,
+                "  - it takes a raw pointer or window-system value, or an externally \
+                 synchronized object the wrappers cannot lock, which its caller vouches for"
+            );
+        }
+        for o in &m.owned_rules {
+            let _ = writeln!(s, "  - `{}`: {}", o.vuid, o.text);
+        }
     }
 }
 

@@ -129,6 +129,12 @@ pub struct MethodTally {
     pub safe: bool,
     /// Rules the caller of the method owns: not enforced, in no reviewed class.
     pub owned: usize,
+    /// Those rules, by VUID and text.
+    pub owned_rules: Vec<crate::plan::safety::Owned>,
+    /// Whether the caller vouches for a raw parameter or an unlocked object.
+    pub raw: bool,
+    /// The version or extension the command belongs to (`VK_VERSION_1_0`).
+    pub home: String,
 }
 
 /// One reviewed class of rules a safe method may leave unchecked.
@@ -152,6 +158,7 @@ impl Report<'_> {
         safety: &BTreeMap<String, crate::plan::safety::MethodSafety>,
         enabling: &crate::plan::safety::Enabling,
         scenes: &std::collections::BTreeSet<String>,
+        home: impl Fn(&str) -> String,
     ) {
         self.refused = enabling.refused.clone();
         let mut classes: Vec<ClassTally> = crate::plan::safety::REVIEWED
@@ -198,13 +205,17 @@ impl Report<'_> {
                         _ => 3,
                     }] += 1;
                 }
-                let owned = safety.get(&row.command).map_or(0, |m| m.owned.len());
+                let method_safety = safety.get(&row.command);
+                let owned_rules = method_safety.map(|m| m.owned.clone()).unwrap_or_default();
                 MethodTally {
                     method: format!("{}::{}", row.receiver, row.method),
                     scenes: scenes.contains(&row.command),
                     counts,
-                    safe: safety.get(&row.command).is_none_or(|m| m.safe()),
-                    owned,
+                    safe: method_safety.is_none_or(|m| m.safe()),
+                    owned: owned_rules.len(),
+                    owned_rules,
+                    raw: method_safety.is_some_and(|m| m.raw),
+                    home: home(&row.command),
                 }
             })
             .collect();

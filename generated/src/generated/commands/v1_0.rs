@@ -1656,44 +1656,26 @@ The caller upholds the rules that [`Self::create_render_pass`] checks at run tim
     }
     /**`vkCreateSampler`
 
-# Safety
-
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`: There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
-- `VUID-VkSamplerBorderColorComponentMappingCreateInfoEXT-borderColorSwizzle-06437`: The `borderColorSwizzle` feature must be enabled
-- `VUID-VkSamplerCreateInfo-addressModeU-01078`: If any of `addressModeU`, `addressModeV` or `addressModeW` are `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`, `borderColor` must be a valid VkBorderColor value
-- `VUID-VkSamplerCreateInfo-compareEnable-01080`: If `compareEnable` is `VK_TRUE`, `compareOp` must be a valid VkCompareOp value
-- `VUID-VkSamplerCreateInfo-minFilter-01645`: If sampler {YCbCr} conversion is enabled and the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_SEPARATE_RECONSTRUCTION_FILTER_BIT`, `minFilter` and `magFilter` must be equal to the sampler {YCbCr} conversion&#8217;s `chromaFilter`
-- `VUID-VkSamplerCreateInfo-addressModeU-01646`: If sampler {YCbCr} conversion is enabled, `addressModeU`, `addressModeV`, and `addressModeW` must be `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE`, `anisotropyEnable` must be `VK_FALSE`, and `unnormalizedCoordinates` must be `VK_FALSE`
-- `VUID-VkSamplerCreateInfo-None-01647`: if sampler {YCbCr} conversion is enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
-- `VUID-VkSamplerCreateInfo-nonSeamlessCubeMap-06788`: If the `nonSeamlessCubeMap` feature is not enabled, `flags` must not include `VK_SAMPLER_CREATE_NON_SEAMLESS_CUBE_MAP_BIT_EXT`
-
 # Example
 
-Called, as `examples/src/scenes/textured_quad.rs` (line 66) does; the example programs run in CI:
+Called, as `examples/src/scenes/textured_quad.rs` (line 61) does; the example programs run in CI:
 
 ```ignore
-// SAFETY: the rules `create_sampler` leaves to its caller: this is the scene's
-// only sampler (far below maxSamplerAllocationCount, at least 4,000); no
-// address mode is CLAMP_TO_BORDER and comparison is off, so the border color
-// and compare op are not read; nothing is chained (no YCbCr conversion, no
-// border swizzle); no flags (no non-seamless cube maps).
-let sampler = unsafe { d.create_sampler(&info) }?;
+let sampler = d.create_sampler(&info)?;
 ```
 
 # Valid usage
 
 The rules of `vkCreateSampler` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSampler.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCreateSampler-maxSamplerAllocationCount-04110` (*yours*; explicit rule): There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
+- `VUID-vkCreateSampler-maxSamplerAllocationCount-04110` (*checked*): There must be less than VkPhysicalDeviceLimits::`maxSamplerAllocationCount` VkSampler objects currently created on the device
 - `VUID-vkCreateSampler-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkCreateSampler-pCreateInfo-parameter` (*by the types*): `pCreateInfo` must be a valid pointer to a valid VkSamplerCreateInfo structure
 - `VUID-vkCreateSampler-pAllocator-parameter` (*by the types*): If `pAllocator` is not `NULL`, `pAllocator` must be a valid pointer to a valid VkAllocationCallbacks structure
 - `VUID-vkCreateSampler-pSampler-parameter` (*by the types*): `pSampler` must be a valid pointer to a VkSampler handle*/
     #[doc(alias = "vkCreateSampler")]
     #[inline]
-    pub unsafe fn create_sampler<'a>(
+    pub fn create_sampler<'a>(
         &self,
         create_info: &SamplerCreateInfo<'a>,
     ) -> Result<Sampler> {
@@ -1702,6 +1684,7 @@ The rules of `vkCreateSampler` that apply to this crate's API ([reference page](
             r?;
         }
         crate::special::sampler::sampler_checks(self, create_info)?;
+        let _held = crate::special::sampler::create_sampler_hold(self)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_sampler_unchecked(create_info) }
@@ -1710,7 +1693,7 @@ The rules of `vkCreateSampler` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::create_sampler`] checks at run time: `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`, `VUID-VkSamplerCreateInfo-addressModeU-01079`, `VUID-VkSamplerCreateInfo-pNext-06726`, `VUID-VkSamplerCreateInfo-compareEnable-01423`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_sampler`] checks at run time: `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072`, `VUID-VkSamplerCreateInfo-addressModeU-01079`, `VUID-VkSamplerCreateInfo-pNext-06726`, `VUID-VkSamplerCreateInfo-compareEnable-01423`, `VUID-vkCreateSampler-maxSamplerAllocationCount-04110`, `VUID-VkSamplerCreateInfo-addressModeU-01078`, `VUID-VkSamplerCreateInfo-compareEnable-01080`, `VUID-VkSamplerCreateInfo-addressModeU-01646`, `VUID-VkSamplerCreateInfo-None-01647`, `VUID-VkSamplerCreateInfo-minFilter-01645`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_sampler_unchecked<'a>(
         &self,

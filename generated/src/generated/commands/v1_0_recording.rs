@@ -7,26 +7,22 @@ impl<'c, S: Scope> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdBeginQuery-None-00807`: All queries used by the command must be unavailable
-- `VUID-vkCmdBeginQuery-queryType-00800`: If the `occlusionQueryPrecise` feature is not enabled, or the `queryType` used to create `queryPool` was not `VK_QUERY_TYPE_OCCLUSION`, `flags` must not contain `VK_QUERY_CONTROL_PRECISE_BIT`
-- `VUID-vkCmdBeginQuery-queryType-06741`: The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR` or `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR`
-- `VUID-vkCmdBeginQuery-commandBuffer-01885`: `commandBuffer` must not be a protected command buffer
 
 # Valid usage
 
 The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginQuery.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkCmdBeginQuery-None-00807` (*yours*; explicit rule): All queries used by the command must be unavailable
-- `VUID-vkCmdBeginQuery-queryType-00800` (*yours*; explicit rule): If the `occlusionQueryPrecise` feature is not enabled, or the `queryType` used to create `queryPool` was not `VK_QUERY_TYPE_OCCLUSION`, `flags` must not contain `VK_QUERY_CONTROL_PRECISE_BIT`
 - `VUID-vkCmdBeginQuery-queryType-00803` (*yours*; checked by the safe methods in every build): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_OCCLUSION`, the `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdBeginQuery-queryType-00804` (*yours*; checked by the safe methods in every build): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PIPELINE_STATISTICS` and any of the `pipelineStatistics` indicate graphics operations, the `VkCommandPool` that `commandBuffer` was …
 - `VUID-vkCmdBeginQuery-queryType-00805` (*yours*; checked by the safe methods in every build): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PIPELINE_STATISTICS` and any of the `pipelineStatistics` indicate compute operations, the `VkCommandPool` that `commandBuffer` was …
 - `VUID-vkCmdBeginQuery-queryType-04728` (*yours*; explicit rule): The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR` or `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR`
-- `VUID-vkCmdBeginQuery-queryType-06741` (*yours*; explicit rule): The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR` or `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR`
+- `VUID-vkCmdBeginQuery-queryType-06741` (*yours*; checked by the safe methods in every build): The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR` or `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR`
 - `VUID-vkCmdBeginQuery-queryType-04729` (*yours*; explicit rule): The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_NV`
-- `VUID-vkCmdBeginQuery-commandBuffer-01885` (*yours*; explicit rule): `commandBuffer` must not be a protected command buffer
+- `VUID-vkCmdBeginQuery-commandBuffer-01885` (*yours*; checked by the safe methods in every build): `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdBeginQuery-query-00808` (*yours*; checked by the safe methods in every build, as the tested render-pass and query commands are): If called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries in `queryPool`
 - `VUID-vkCmdBeginQuery-queryType-07126` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_RESULT_STATUS_ONLY_KHR`, then the `VkCommandPool` that `commandBuffer` was allocated from must have been created with a queue family …
 - `VUID-vkCmdBeginQuery-None-07127` (*yours*; explicit rule): If there is a bound video session, then there must be no active queries
@@ -48,6 +44,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
 - `VUID-vkCmdBeginQuery-queryPool-03226` (*yours*; explicit rule): If `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR` and another query pool with a `queryType` `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR` has been used within …
 - `VUID-vkCmdBeginQuery-None-02863` (*yours*; explicit rule): If `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, this command must not be recorded in a command buffer that, either directly or through secondary command …
 - `VUID-vkCmdBeginQuery-queryType-02804` (*checked*): The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_TIMESTAMP`
+- `VUID-vkCmdBeginQuery-queryType-00800` (*checked*): If the `occlusionQueryPrecise` feature is not enabled, or the `queryType` used to create `queryPool` was not `VK_QUERY_TYPE_OCCLUSION`, `flags` must not contain `VK_QUERY_CONTROL_PRECISE_BIT`
 - `VUID-vkCmdBeginQuery-query-00802` (*checked*): `query` must be less than the number of queries in `queryPool`
 - `VUID-vkCmdBeginQuery-queryPool-01922` (*checked*): `queryPool` must have been created with a `queryType` that differs from that of any queries that are active within `commandBuffer`
 - `VUID-vkCmdBeginQuery-flags-parameter` (*checked*): `flags` must be a valid combination of VkQueryControlFlagBits values
@@ -65,7 +62,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
         flags: vk::QueryControlFlags,
     ) -> Result<()> {
         self.validate_origins_begin_query(query_pool)?;
-        crate::special::query::begin_query_checks(self, query_pool, query)?;
+        crate::special::query::begin_query_checks(self, query_pool, query, flags)?;
         {
             let r = self.validate_begin_query(flags);
             r?;
@@ -78,7 +75,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, `VUID-vkCmdBeginQuery-queryType-00800`, `VUID-vkCmdBeginQuery-queryType-06741`, `VUID-vkCmdBeginQuery-commandBuffer-01885`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn begin_query_unchecked(
         &mut self,
@@ -98,17 +95,11 @@ The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUI
     }
     /**`vkCmdEndQuery`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdEndQuery-commandBuffer-01886`: `commandBuffer` must not be a protected command buffer
-
 # Valid usage
 
 The rules of `vkCmdEndQuery` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdEndQuery.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdEndQuery-commandBuffer-01886` (*yours*; explicit rule): `commandBuffer` must not be a protected command buffer
+- `VUID-vkCmdEndQuery-commandBuffer-01886` (*yours*; checked by the safe methods in every build): `commandBuffer` must not be a protected command buffer
 - `VUID-vkCmdEndQuery-query-00812` (*yours*; checked by the safe methods in every build, as the tested render-pass and query commands are): If `vkCmdEndQuery` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries …
 - `VUID-vkCmdEndQuery-queryPool-03227` (*yours*; explicit rule): If `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR` and one or more of the counters used to create `queryPool` was `VK_PERFORMANCE_COUNTER_SCOPE_COMMAND_BUFFER_KHR`, …
 - `VUID-vkCmdEndQuery-queryPool-03228` (*yours*; explicit rule): If `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR` and one or more of the counters used to create `queryPool` was `VK_PERFORMANCE_COUNTER_SCOPE_RENDER_PASS_KHR`, …
@@ -123,11 +114,7 @@ The rules of `vkCmdEndQuery` that apply to this crate's API ([reference page](ht
 - `VUID-vkCmdEndQuery-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdEndQuery")]
     #[inline]
-    pub unsafe fn end_query(
-        &mut self,
-        query_pool: &QueryPool,
-        query: u32,
-    ) -> Result<()> {
+    pub fn end_query(&mut self, query_pool: &QueryPool, query: u32) -> Result<()> {
         self.validate_origins_end_query(query_pool)?;
         crate::special::query::end_query_checks(self, query_pool, query)?;
         {
@@ -142,7 +129,7 @@ The rules of `vkCmdEndQuery` that apply to this crate's API ([reference page](ht
 
 # Safety
 
-The caller upholds the rules that [`Self::end_query`] checks at run time: `VUID-vkCmdEndQuery-commonparent`, `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-query-00810`, `VUID-vkCmdEndQuery-None-01923`, `VUID-vkCmdEndQuery-None-07007`, `VUID-vkCmdEndQuery-None-07008`, `VUID-vkCmdEndQuery-query-00812`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::end_query`] checks at run time: `VUID-vkCmdEndQuery-commonparent`, `VUID-vkCmdEndQuery-commandBuffer-cmdpool`, `VUID-vkCmdEndQuery-query-00810`, `VUID-vkCmdEndQuery-None-01923`, `VUID-vkCmdEndQuery-None-07007`, `VUID-vkCmdEndQuery-None-07008`, `VUID-vkCmdEndQuery-query-00812`, `VUID-vkCmdEndQuery-commandBuffer-01886`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn end_query_unchecked(
         &mut self,

@@ -546,21 +546,13 @@ The caller upholds the rules that [`Self::clear_depth_stencil_image`] checks at 
     }
     /**`vkCmdCopyBuffer`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdCopyBuffer-commandBuffer-01822`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer-commandBuffer-01823`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer-commandBuffer-01824`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
-
 # Valid usage
 
 The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyBuffer-commandBuffer-01822` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer-commandBuffer-01823` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer-commandBuffer-01824` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-vkCmdCopyBuffer-commandBuffer-01822` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBuffer-commandBuffer-01823` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBuffer-commandBuffer-01824` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
 - `VUID-vkCmdCopyBuffer-srcOffset-00113` (*checked*): The `srcOffset` member of each element of `pRegions` must be less than the size of `srcBuffer`
 - `VUID-vkCmdCopyBuffer-dstOffset-00114` (*checked*): The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer`
 - `VUID-vkCmdCopyBuffer-size-00115` (*checked*): The `size` member of each element of `pRegions` must be less than or equal to the size of `srcBuffer` minus `srcOffset`
@@ -582,7 +574,7 @@ The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](
 - `VUID-vkCmdCopyBuffer-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyBuffer")]
     #[inline]
-    pub unsafe fn copy_buffer(
+    pub fn copy_buffer(
         &mut self,
         src_buffer: &Buffer,
         dst_buffer: &Buffer,
@@ -607,7 +599,7 @@ The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer`] checks at run time: `VUID-vkCmdCopyBuffer-commonparent`, `VUID-vkCmdCopyBuffer-commandBuffer-cmdpool`, `VUID-vkCmdCopyBuffer-regionCount-arraylength`, `VUID-vkCmdCopyBuffer-srcOffset-00113`, `VUID-vkCmdCopyBuffer-dstOffset-00114`, `VUID-vkCmdCopyBuffer-size-00115`, `VUID-vkCmdCopyBuffer-size-00116`, `VUID-VkBufferCopy-size-01988`, `VUID-vkCmdCopyBuffer-pRegions-00117`, `VUID-vkCmdCopyBuffer-srcBuffer-00118`, `VUID-vkCmdCopyBuffer-srcBuffer-00119`, `VUID-vkCmdCopyBuffer-dstBuffer-00120`, `VUID-vkCmdCopyBuffer-dstBuffer-00121`, `VUID-vkCmdCopyBuffer-commandBuffer-01822`, `VUID-vkCmdCopyBuffer-commandBuffer-01823`, `VUID-vkCmdCopyBuffer-commandBuffer-01824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_buffer_unchecked(
         &mut self,
@@ -635,19 +627,13 @@ The caller upholds the rules that [`Self::copy_buffer`] checks at run time: `VUI
     }
     /**`vkCmdCopyBufferToImage`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdCopyBufferToImage-None-00214`: For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range \[0,1\]
-
 # Valid usage
 
 The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01828` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01829` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdCopyBufferToImage-commandBuffer-01830` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-01828` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-01829` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdCopyBufferToImage-commandBuffer-01830` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-07737` (*yours*; checked by the safe methods in every build, but no test breaks it): If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any …
 - `VUID-vkCmdCopyBufferToImage-imageOffset-07738` (*yours*; checked by the safe methods in every build, but no test breaks it): The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as …
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-07739` (*yours*; checked by the safe methods in every build, but no test breaks it): If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT`, for each element of {regionsparam}, the `aspectMask` member of …
@@ -664,7 +650,6 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
 - `VUID-vkCmdCopyBufferToImage-dstImage-01997` (*yours*; checked by the safe methods in every build, but no test breaks it): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-vkCmdCopyBufferToImage-dstImageLayout-01396` (*yours*; explicit rule): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, `VK_IMAGE_LAYOUT_GENERAL`, or `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`
 - `VUID-vkCmdCopyBufferToImage-dstImage-02543` (*yours*; explicit rule): `dstImage` must not have been created with `flags` containing `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
-- `VUID-vkCmdCopyBufferToImage-None-00214` (*yours*; explicit rule): For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range \[0,1\]
 - `VUID-vkCmdCopyBufferToImage-imageOffset-00200` (*checked*): For each element of `pRegions`, `imageOffset.z` and (`imageExtent.depth` + `imageOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified …
 - `VUID-vkCmdCopyBufferToImage-srcImage-00201` (*checked*): If {imageparam} is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `imageOffset.z` must be `0` and `imageExtent.depth` must be `1`
 - `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203` (*checked*): For each element of `pRegions`, `bufferRowLength` must be a multiple of the texel block extent width of the VkFormat of {imageparam}
@@ -694,6 +679,7 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
 - `VUID-vkCmdCopyBufferToImage-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
 - `VUID-vkCmdCopyBufferToImage-commonparent` (*checked*): Each of `commandBuffer`, `dstImage`, and `srcBuffer` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181` (*checked*): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-vkCmdCopyBufferToImage-None-00214` (*checked*): For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range \[0,1\]
 - `VUID-vkCmdCopyBufferToImage-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdCopyBufferToImage-srcBuffer-parameter` (*by the types*): `srcBuffer` must be a valid VkBuffer handle
 - `VUID-vkCmdCopyBufferToImage-dstImage-parameter` (*by the types*): `dstImage` must be a valid VkImage handle
@@ -703,7 +689,7 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
 - `VUID-vkCmdCopyBufferToImage-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyBufferToImage")]
     #[inline]
-    pub unsafe fn copy_buffer_to_image(
+    pub fn copy_buffer_to_image(
         &mut self,
         src_buffer: &Buffer,
         dst_image: &Image,
@@ -750,7 +736,7 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`, `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`, `VUID-vkCmdCopyBufferToImage-pRegions-07274`, `VUID-vkCmdCopyBufferToImage-pRegions-07275`, `VUID-vkCmdCopyBufferToImage-imageExtent-00207`, `VUID-vkCmdCopyBufferToImage-imageExtent-00208`, `VUID-vkCmdCopyBufferToImage-pRegions-07273`, `VUID-vkCmdCopyBufferToImage-srcImage-04053`, `VUID-vkCmdCopyBufferToImage-pRegions-07277`, `VUID-vkCmdCopyBufferToImage-dstImage-00179`, `VUID-vkCmdCopyBufferToImage-pRegions-00173`, `VUID-vkCmdCopyBufferToImage-srcImage-00201`, `VUID-vkCmdCopyBufferToImage-imageOffset-00200`, `VUID-vkCmdCopyBufferToImage-aspectMask-00211`, `VUID-vkCmdCopyBufferToImage-srcImage-00199`, `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`, `VUID-vkCmdCopyBufferToImage-pRegions-06217`, `VUID-vkCmdCopyBufferToImage-pRegions-07276`, `VUID-vkCmdCopyBufferToImage-imageExtent-00209`, `VUID-vkCmdCopyBufferToImage-pRegions-07740`, `VUID-vkCmdCopyBufferToImage-pRegions-07741`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`, `VUID-vkCmdCopyBufferToImage-dstImage-01997`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`, `VUID-VkBufferImageCopy-bufferRowLength-00195`, `VUID-VkBufferImageCopy-bufferImageHeight-00196`, `VUID-VkBufferImageCopy-aspectMask-00212`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer_to_image`] checks at run time: `VUID-vkCmdCopyBufferToImage-commonparent`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-parameter`, `VUID-vkCmdCopyBufferToImage-commandBuffer-cmdpool`, `VUID-vkCmdCopyBufferToImage-regionCount-arraylength`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00174`, `VUID-vkCmdCopyBufferToImage-srcBuffer-00176`, `VUID-vkCmdCopyBufferToImage-dstImage-00177`, `VUID-vkCmdCopyBufferToImage-dstImage-00178`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01701`, `VUID-vkCmdCopyBufferToImage-imageSubresource-01702`, `VUID-vkCmdCopyBufferToImage-pRegions-06218`, `VUID-vkCmdCopyBufferToImage-pRegions-06219`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00181`, `VUID-vkCmdCopyBufferToImage-bufferRowLength-00203`, `VUID-vkCmdCopyBufferToImage-bufferImageHeight-00204`, `VUID-vkCmdCopyBufferToImage-pRegions-07274`, `VUID-vkCmdCopyBufferToImage-pRegions-07275`, `VUID-vkCmdCopyBufferToImage-imageExtent-00207`, `VUID-vkCmdCopyBufferToImage-imageExtent-00208`, `VUID-vkCmdCopyBufferToImage-pRegions-07273`, `VUID-vkCmdCopyBufferToImage-srcImage-04053`, `VUID-vkCmdCopyBufferToImage-pRegions-07277`, `VUID-vkCmdCopyBufferToImage-None-00214`, `VUID-vkCmdCopyBufferToImage-dstImage-00179`, `VUID-vkCmdCopyBufferToImage-pRegions-00173`, `VUID-vkCmdCopyBufferToImage-srcImage-00201`, `VUID-vkCmdCopyBufferToImage-imageOffset-00200`, `VUID-vkCmdCopyBufferToImage-aspectMask-00211`, `VUID-vkCmdCopyBufferToImage-srcImage-00199`, `VUID-vkCmdCopyBufferToImage-baseArrayLayer-00213`, `VUID-vkCmdCopyBufferToImage-pRegions-06217`, `VUID-vkCmdCopyBufferToImage-pRegions-07276`, `VUID-vkCmdCopyBufferToImage-imageExtent-00209`, `VUID-vkCmdCopyBufferToImage-pRegions-07740`, `VUID-vkCmdCopyBufferToImage-pRegions-07741`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01559`, `VUID-vkCmdCopyBufferToImage-bufferOffset-01558`, `VUID-vkCmdCopyBufferToImage-dstImage-01997`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage-commandBuffer-01830`, `VUID-VkBufferImageCopy-bufferRowLength-00195`, `VUID-VkBufferImageCopy-bufferImageHeight-00196`, `VUID-VkBufferImageCopy-aspectMask-00212`, `VUID-vkCmdCopyBufferToImage-dstImageLayout-00180`, `VUID-vkCmdCopyBufferToImage-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_buffer_to_image_unchecked(
         &mut self,
@@ -1046,9 +1032,9 @@ rec.copy_image_to_buffer(
 
 The rules of `vkCmdCopyImageToBuffer` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01831` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01832` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyImageToBuffer-commandBuffer-01833` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
 - `VUID-vkCmdCopyImageToBuffer-commandBuffer-07746` (*yours*; checked by the safe methods in every build, but no test breaks it): If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any …
 - `VUID-vkCmdCopyImageToBuffer-imageOffset-07747` (*yours*; checked by the safe methods in every build, but no test breaks it): The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as …
 - `VUID-vkCmdCopyImageToBuffer-srcImage-00199` (*yours*; checked by the safe methods in every build): If {imageparam} is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `imageOffset.y` must be `0` and `imageExtent.height` must be `1`
@@ -1597,20 +1583,13 @@ The caller upholds the rules that [`Self::dispatch_indirect`] checks at run time
     }
     /**`vkCmdFillBuffer`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdFillBuffer-commandBuffer-01811`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdFillBuffer-commandBuffer-01812`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
-
 # Valid usage
 
 The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdFillBuffer.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkCmdFillBuffer-commandBuffer-00030` (*yours*; explicit rule): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics or compute operations
-- `VUID-vkCmdFillBuffer-commandBuffer-01811` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdFillBuffer-commandBuffer-01812` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-vkCmdFillBuffer-commandBuffer-01811` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdFillBuffer-commandBuffer-01812` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
 - `VUID-vkCmdFillBuffer-dstOffset-00024` (*checked*): `dstOffset` must be less than the size of `dstBuffer`
 - `VUID-vkCmdFillBuffer-dstOffset-00025` (*checked*): `dstOffset` must be a multiple of `4`
 - `VUID-vkCmdFillBuffer-size-00026` (*checked*): If `size` is not equal to `VK_WHOLE_SIZE`, `size` must be greater than `0`
@@ -1627,7 +1606,7 @@ The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](
 - `VUID-vkCmdFillBuffer-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdFillBuffer")]
     #[inline]
-    pub unsafe fn fill_buffer(
+    pub fn fill_buffer(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
@@ -1653,7 +1632,7 @@ The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::fill_buffer`] checks at run time: `VUID-vkCmdFillBuffer-commonparent`, `VUID-vkCmdFillBuffer-commandBuffer-cmdpool`, `VUID-vkCmdFillBuffer-dstOffset-00024`, `VUID-vkCmdFillBuffer-dstOffset-00025`, `VUID-vkCmdFillBuffer-size-00026`, `VUID-vkCmdFillBuffer-size-00027`, `VUID-vkCmdFillBuffer-size-00028`, `VUID-vkCmdFillBuffer-dstBuffer-00029`, `VUID-vkCmdFillBuffer-dstBuffer-00031`, `VUID-vkCmdFillBuffer-commandBuffer-01811`, `VUID-vkCmdFillBuffer-commandBuffer-01812`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn fill_buffer_unchecked(
         &mut self,
@@ -1907,19 +1886,12 @@ The caller upholds the rules that [`Self::resolve_image`] checks at run time: `V
     }
     /**`vkCmdUpdateBuffer`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdUpdateBuffer-commandBuffer-01813`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdUpdateBuffer-commandBuffer-01814`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
-
 # Valid usage
 
 The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdUpdateBuffer.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdUpdateBuffer-commandBuffer-01813` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdUpdateBuffer-commandBuffer-01814` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-vkCmdUpdateBuffer-commandBuffer-01813` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdUpdateBuffer-commandBuffer-01814` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
 - `VUID-vkCmdUpdateBuffer-dstOffset-00032` (*checked*): `dstOffset` must be less than the size of `dstBuffer`
 - `VUID-vkCmdUpdateBuffer-dataSize-00033` (*checked*): `dataSize` must be less than or equal to the size of `dstBuffer` minus `dstOffset`
 - `VUID-vkCmdUpdateBuffer-dstBuffer-00034` (*checked*): `dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag
@@ -1938,7 +1910,7 @@ The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page
 - `VUID-vkCmdUpdateBuffer-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdUpdateBuffer")]
     #[inline]
-    pub unsafe fn update_buffer(
+    pub fn update_buffer(
         &mut self,
         dst_buffer: &Buffer,
         dst_offset: vk::DeviceSize,
@@ -1963,7 +1935,7 @@ The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::update_buffer`] checks at run time: `VUID-vkCmdUpdateBuffer-commonparent`, `VUID-vkCmdUpdateBuffer-commandBuffer-cmdpool`, `VUID-vkCmdUpdateBuffer-dataSize-arraylength`, `VUID-vkCmdUpdateBuffer-dstOffset-00032`, `VUID-vkCmdUpdateBuffer-dataSize-00033`, `VUID-vkCmdUpdateBuffer-dstBuffer-00034`, `VUID-vkCmdUpdateBuffer-dstBuffer-00035`, `VUID-vkCmdUpdateBuffer-dstOffset-00036`, `VUID-vkCmdUpdateBuffer-dataSize-00037`, `VUID-vkCmdUpdateBuffer-dataSize-00038`, `VUID-vkCmdUpdateBuffer-commandBuffer-01813`, `VUID-vkCmdUpdateBuffer-commandBuffer-01814`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn update_buffer_unchecked(
         &mut self,

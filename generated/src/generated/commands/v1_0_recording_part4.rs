@@ -88,7 +88,7 @@ The caller upholds the rules that [`Self::clear_attachments`] checks at run time
 
 # Example
 
-Called, as `examples/src/scenes/textured_quad.rs` (line 148) does; the example programs run in CI:
+Called, as `examples/src/scenes/textured_quad.rs` (line 143) does; the example programs run in CI:
 
 ```ignore
 rec.draw(4, 1, 0, 0)

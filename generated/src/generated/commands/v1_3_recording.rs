@@ -228,23 +228,13 @@ The caller upholds the rules that [`Self::blit_image2`] checks at run time: `VUI
     }
     /**`vkCmdCopyBuffer2`
 
-# Safety
-
-The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01822`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01823`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01824`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
-- `VUID-VkBufferCopy2-size-01988`: The `size` must be greater than `0`
-- `VUID-VkCopyBufferInfo2-pRegions-00117`: The union of the source regions, and the union of the destination regions, specified by the elements of `pRegions`, must not overlap in memory
-
 # Valid usage
 
 The rules of `vkCmdCopyBuffer2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBuffer2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01822` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01823` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBuffer2-commandBuffer-01824` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01822` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01823` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBuffer2-commandBuffer-01824` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
 - `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, or compute operations
 - `VUID-vkCmdCopyBuffer2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdCopyBuffer2-pCopyBufferInfo-parameter` (*by the types*): `pCopyBufferInfo` must be a valid pointer to a valid VkCopyBufferInfo2 structure
@@ -253,13 +243,15 @@ The rules of `vkCmdCopyBuffer2` that apply to this crate's API ([reference page]
 - `VUID-vkCmdCopyBuffer2-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyBuffer2")]
     #[inline]
-    pub unsafe fn copy_buffer2<'a>(&mut self, copy_buffer_info: &CopyBufferInfo2<'a>) {
+    pub fn copy_buffer2<'a>(
+        &mut self,
+        copy_buffer_info: &CopyBufferInfo2<'a>,
+    ) -> Result<()> {
         {
             let r = self.validate_copy_buffer2(copy_buffer_info);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::special::copies::cmd_copy_buffer2_checks(self, copy_buffer_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.copy_buffer2_unchecked(copy_buffer_info) }
@@ -268,45 +260,47 @@ The rules of `vkCmdCopyBuffer2` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer2`] checks at run time: `VUID-vkCmdCopyBuffer2-commandBuffer-cmdpool`, `VUID-VkBufferCopy2-size-01988`, `VUID-VkCopyBufferInfo2-pRegions-00117`, `VUID-vkCmdCopyBuffer2-commandBuffer-01822`, `VUID-vkCmdCopyBuffer2-commandBuffer-01823`, `VUID-vkCmdCopyBuffer2-commandBuffer-01824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_buffer2_unchecked<'a>(
         &mut self,
         copy_buffer_info: &CopyBufferInfo2<'a>,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_copy_buffer2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(self.raw(), copy_buffer_info as *const CopyBufferInfo2<'a> as *const _)
-        };
-        self.state_changed();
-        let kept: Vec<tuff_runtime::Retained> = {
-            let mut reached = crate::validation::Reached::keeping(self.device().live());
-            for e in core::iter::once(copy_buffer_info) {
-                // SAFETY: the safe structs store every pointer with its length.
-                unsafe { crate::reach::copy_buffer_info2(e.as_raw(), &mut reached) };
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    copy_buffer_info as *const CopyBufferInfo2<'a> as *const _,
+                )
+            };
+            self.state_changed();
+            let kept: Vec<tuff_runtime::Retained> = {
+                let mut reached = crate::validation::Reached::keeping(
+                    self.device().live(),
+                );
+                for e in core::iter::once(copy_buffer_info) {
+                    // SAFETY: the safe structs store every pointer with its length.
+                    unsafe { crate::reach::copy_buffer_info2(e.as_raw(), &mut reached) };
+                }
+                reached.kept
+            };
+            for o in kept {
+                self.retain(o);
             }
-            reached.kept
-        };
-        for o in kept {
-            self.retain(o);
         }
+        Ok(())
     }
     /**`vkCmdCopyBufferToImage2`
-
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkCopyBufferToImageInfo2-None-00214`: For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range \[0,1\]
 
 # Valid usage
 
 The rules of `vkCmdCopyBufferToImage2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyBufferToImage2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737` (*yours*; checked by the safe methods in every build, but no test breaks it): If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any …
 - `VUID-vkCmdCopyBufferToImage2-imageOffset-07738` (*yours*; checked by the safe methods in every build, but no test breaks it): The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as …
 - `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739` (*yours*; checked by the safe methods in every build, but no test breaks it): If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT`, for each element of {regionsparam}, the `aspectMask` member of …
@@ -318,7 +312,7 @@ The rules of `vkCmdCopyBufferToImage2` that apply to this crate's API ([referenc
 - `VUID-vkCmdCopyBufferToImage2-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyBufferToImage2")]
     #[inline]
-    pub unsafe fn copy_buffer_to_image2<'a>(
+    pub fn copy_buffer_to_image2<'a>(
         &mut self,
         copy_buffer_to_image_info: &CopyBufferToImageInfo2<'a>,
     ) -> Result<()> {
@@ -345,7 +339,7 @@ The rules of `vkCmdCopyBufferToImage2` that apply to this crate's API ([referenc
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`, `VUID-VkCopyBufferToImageInfo2-bufferImageHeight-00204`, `VUID-VkCopyBufferToImageInfo2-pRegions-07274`, `VUID-VkCopyBufferToImageInfo2-pRegions-07275`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00207`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00208`, `VUID-VkCopyBufferToImageInfo2-pRegions-07273`, `VUID-VkCopyBufferToImageInfo2-srcImage-04053`, `VUID-VkCopyBufferToImageInfo2-pRegions-07277`, `VUID-VkCopyBufferToImageInfo2-dstImage-00179`, `VUID-VkCopyBufferToImageInfo2-pRegions-00173`, `VUID-VkCopyBufferToImageInfo2-srcImage-00199`, `VUID-VkCopyBufferToImageInfo2-srcImage-00201`, `VUID-VkCopyBufferToImageInfo2-baseArrayLayer-00213`, `VUID-VkCopyBufferToImageInfo2-pRegions-00172`, `VUID-VkCopyBufferToImageInfo2-pRegions-07276`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00209`, `VUID-VkCopyBufferToImageInfo2-pRegions-07740`, `VUID-VkCopyBufferToImageInfo2-pRegions-07741`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01559`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558`, `VUID-VkCopyBufferToImageInfo2-dstImage-01997`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`, `VUID-VkBufferImageCopy2-bufferRowLength-00195`, `VUID-VkBufferImageCopy2-bufferImageHeight-00196`, `VUID-VkBufferImageCopy2-aspectMask-00212`, `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_buffer_to_image2`] checks at run time: `VUID-vkCmdCopyBufferToImage2-commandBuffer-cmdpool`, `VUID-VkCopyBufferToImageInfo2-bufferRowLength-00203`, `VUID-VkCopyBufferToImageInfo2-bufferImageHeight-00204`, `VUID-VkCopyBufferToImageInfo2-pRegions-07274`, `VUID-VkCopyBufferToImageInfo2-pRegions-07275`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00207`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00208`, `VUID-VkCopyBufferToImageInfo2-pRegions-07273`, `VUID-VkCopyBufferToImageInfo2-srcImage-04053`, `VUID-VkCopyBufferToImageInfo2-pRegions-07277`, `VUID-VkCopyBufferToImageInfo2-None-00214`, `VUID-VkCopyBufferToImageInfo2-dstImage-00179`, `VUID-VkCopyBufferToImageInfo2-pRegions-00173`, `VUID-VkCopyBufferToImageInfo2-srcImage-00199`, `VUID-VkCopyBufferToImageInfo2-srcImage-00201`, `VUID-VkCopyBufferToImageInfo2-baseArrayLayer-00213`, `VUID-VkCopyBufferToImageInfo2-pRegions-00172`, `VUID-VkCopyBufferToImageInfo2-pRegions-07276`, `VUID-VkCopyBufferToImageInfo2-imageExtent-00209`, `VUID-VkCopyBufferToImageInfo2-pRegions-07740`, `VUID-VkCopyBufferToImageInfo2-pRegions-07741`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01559`, `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558`, `VUID-VkCopyBufferToImageInfo2-dstImage-01997`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07737`, `VUID-vkCmdCopyBufferToImage2-imageOffset-07738`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-07739`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01828`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01829`, `VUID-vkCmdCopyBufferToImage2-commandBuffer-01830`, `VUID-VkBufferImageCopy2-bufferRowLength-00195`, `VUID-VkBufferImageCopy2-bufferImageHeight-00196`, `VUID-VkBufferImageCopy2-aspectMask-00212`, `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00180`, `VUID-VkCopyBufferToImageInfo2-pRegions-00171`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_buffer_to_image2_unchecked<'a>(
         &mut self,
@@ -516,9 +510,9 @@ The caller upholds the rules that [`Self::copy_image2`] checks at run time: `VUI
 
 The rules of `vkCmdCopyImageToBuffer2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImageToBuffer2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
-- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833` (*yours*; checked by the safe methods in every build, but no test breaks it): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01831` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01832` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be a protected buffer
+- `VUID-vkCmdCopyImageToBuffer2-commandBuffer-01833` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstBuffer` must not be an unprotected buffer
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-07746` (*yours*; checked by the safe methods in every build, but no test breaks it): If the queue family used to create the VkCommandPool which `commandBuffer` was allocated from does not support `VK_QUEUE_GRAPHICS_BIT` or `VK_QUEUE_COMPUTE_BIT`, the `bufferOffset` member of any …
 - `VUID-vkCmdCopyImageToBuffer2-imageOffset-07747` (*yours*; checked by the safe methods in every build, but no test breaks it): The `imageOffset` and `imageExtent` members of each element of {regionsparam} must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as …
 - `VUID-vkCmdCopyImageToBuffer2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, or compute operations

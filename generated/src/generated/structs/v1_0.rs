@@ -932,7 +932,7 @@ impl<'a> DescriptorBufferInfo<'a> {
 
 # Example
 
-Made, as `examples/src/scenes/textured_quad.rs` (line 91) does; the example programs run in CI:
+Made, as `examples/src/scenes/textured_quad.rs` (line 86) does; the example programs run in CI:
 
 ```ignore
 let texture = [tuff::DescriptorImageInfo::new()

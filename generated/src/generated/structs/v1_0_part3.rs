@@ -1389,12 +1389,10 @@ let info = tuff::SamplerCreateInfo::new()
 
 The rules of `VkSamplerCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSamplerCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSamplerCreateInfo-addressModeU-01078` (*yours*; explicit rule): If any of `addressModeU`, `addressModeV` or `addressModeW` are `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`, `borderColor` must be a valid VkBorderColor value
-- `VUID-VkSamplerCreateInfo-compareEnable-01080` (*yours*; explicit rule): If `compareEnable` is `VK_TRUE`, `compareOp` must be a valid VkCompareOp value
 - `VUID-VkSamplerCreateInfo-samplerMipLodBias-04467` (*yours*; explicit rule): If the VK_KHR_portability_subset extension is enabled, and VkPhysicalDevicePortabilitySubsetFeaturesKHR::`samplerMipLodBias` is `VK_FALSE`, `mipLodBias` must be zero
-- `VUID-VkSamplerCreateInfo-minFilter-01645` (*yours*; explicit rule): If sampler {YCbCr} conversion is enabled and the potential format features of the sampler {YCbCr} conversion do not support …
-- `VUID-VkSamplerCreateInfo-addressModeU-01646` (*yours*; explicit rule): If sampler {YCbCr} conversion is enabled, `addressModeU`, `addressModeV`, and `addressModeW` must be `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE`, `anisotropyEnable` must be `VK_FALSE`, and …
-- `VUID-VkSamplerCreateInfo-None-01647` (*yours*; explicit rule): if sampler {YCbCr} conversion is enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to …
+- `VUID-VkSamplerCreateInfo-minFilter-01645` (*yours*; checked by the safe methods in every build): If sampler {YCbCr} conversion is enabled and the potential format features of the sampler {YCbCr} conversion do not support …
+- `VUID-VkSamplerCreateInfo-addressModeU-01646` (*yours*; checked by the safe methods in every build): If sampler {YCbCr} conversion is enabled, `addressModeU`, `addressModeV`, and `addressModeW` must be `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE`, `anisotropyEnable` must be `VK_FALSE`, and …
+- `VUID-VkSamplerCreateInfo-None-01647` (*yours*; checked by the safe methods in every build): if sampler {YCbCr} conversion is enabled and the `pNext` chain includes a VkSamplerReductionModeCreateInfo structure, then the sampler reduction mode must be set to …
 - `VUID-VkSamplerCreateInfo-magFilter-01081` (*yours*; explicit rule): If either `magFilter` or `minFilter` is `VK_FILTER_CUBIC_EXT`, `anisotropyEnable` must be `VK_FALSE`
 - `VUID-VkSamplerCreateInfo-magFilter-01422` (*yours*; explicit rule): If either `magFilter` or `minFilter` is `VK_FILTER_CUBIC_EXT`, the `reductionMode` member of VkSamplerReductionModeCreateInfo must be `VK_SAMPLER_REDUCTION_MODE_WEIGHTED_AVERAGE`
 - `VUID-VkSamplerCreateInfo-flags-02574` (*yours*; explicit rule): If `flags` includes `VK_SAMPLER_CREATE_SUBSAMPLED_BIT_EXT`, then `minFilter` and `magFilter` must be equal
@@ -1428,7 +1426,9 @@ The rules of `VkSamplerCreateInfo` that apply to this crate's API ([reference pa
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01075` (*checked*): If `unnormalizedCoordinates` is `VK_TRUE`, `addressModeU` and `addressModeV` must each be either `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE` or `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01076` (*checked*): If `unnormalizedCoordinates` is `VK_TRUE`, `anisotropyEnable` must be `VK_FALSE`
 - `VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01077` (*checked*): If `unnormalizedCoordinates` is `VK_TRUE`, `compareEnable` must be `VK_FALSE`
+- `VUID-VkSamplerCreateInfo-addressModeU-01078` (*checked*): If any of `addressModeU`, `addressModeV` or `addressModeW` are `VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER`, `borderColor` must be a valid VkBorderColor value
 - `VUID-VkSamplerCreateInfo-addressModeU-01079` (*checked*): If `samplerMirrorClampToEdge` is not enabled, and if the VK_KHR_sampler_mirror_clamp_to_edge extension is not enabled, `addressModeU`, `addressModeV` and `addressModeW` must not be …
+- `VUID-VkSamplerCreateInfo-compareEnable-01080` (*checked*): If `compareEnable` is `VK_TRUE`, `compareOp` must be a valid VkCompareOp value
 - `VUID-VkSamplerCreateInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkSamplerCreateInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkSamplerCreateFlagBits values
 - `VUID-VkSamplerCreateInfo-magFilter-parameter` (*checked*): `magFilter` must be a valid VkFilter value

@@ -129,7 +129,7 @@ impl<'a> BlitImageInfo2<'a> {
 
 The rules of `VkBufferCopy2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferCopy2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferCopy2-size-01988` (*yours*; explicit rule): The `size` must be greater than `0`
+- `VUID-VkBufferCopy2-size-01988` (*checked*): The `size` must be greater than `0`
 - `VUID-VkBufferCopy2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_COPY_2`
 - `VUID-VkBufferCopy2-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]
@@ -550,11 +550,11 @@ impl<'a> CommandBufferSubmitInfo<'a> {
 
 The rules of `VkCopyBufferInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCopyBufferInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCopyBufferInfo2-pRegions-00117` (*yours*; explicit rule): The union of the source regions, and the union of the destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkCopyBufferInfo2-srcOffset-00113` (*checked*): The `srcOffset` member of each element of `pRegions` must be less than the size of `srcBuffer`
 - `VUID-VkCopyBufferInfo2-dstOffset-00114` (*checked*): The `dstOffset` member of each element of `pRegions` must be less than the size of `dstBuffer`
 - `VUID-VkCopyBufferInfo2-size-00115` (*checked*): The `size` member of each element of `pRegions` must be less than or equal to the size of `srcBuffer` minus `srcOffset`
 - `VUID-VkCopyBufferInfo2-size-00116` (*checked*): The `size` member of each element of `pRegions` must be less than or equal to the size of `dstBuffer` minus `dstOffset`
+- `VUID-VkCopyBufferInfo2-pRegions-00117` (*checked*): The union of the source regions, and the union of the destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkCopyBufferInfo2-srcBuffer-00118` (*checked*): `srcBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_SRC_BIT` usage flag
 - `VUID-VkCopyBufferInfo2-srcBuffer-00119` (*checked*): If `srcBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkCopyBufferInfo2-dstBuffer-00120` (*checked*): `dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag
@@ -626,7 +626,6 @@ The rules of `VkCopyBufferToImageInfo2` that apply to this crate's API ([referen
 - `VUID-VkCopyBufferToImageInfo2-dstImage-01997` (*yours*; checked by the safe methods in every build, but no test breaks it): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-01396` (*yours*; explicit rule): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, `VK_IMAGE_LAYOUT_GENERAL`, or `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`
 - `VUID-VkCopyBufferToImageInfo2-dstImage-02543` (*yours*; explicit rule): `dstImage` must not have been created with `flags` containing `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
-- `VUID-VkCopyBufferToImageInfo2-None-00214` (*yours*; explicit rule): For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range \[0,1\]
 - `VUID-VkCopyBufferToImageInfo2-pRegions-07740` (*yours*; checked by the safe methods in every build, but no test breaks it): If `dstImage` has a VkFormat with two planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
 - `VUID-VkCopyBufferToImageInfo2-pRegions-07741` (*yours*; checked by the safe methods in every build, but no test breaks it): If `dstImage` has a VkFormat with three planes then for each element of `pRegions`, `imageSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or …
 - `VUID-VkCopyBufferToImageInfo2-bufferOffset-01558` (*yours*; checked by the safe methods in every build, by the check of the texel block size): If {imageparam} does not have either a depth/stencil or a multi-planar format, then for each element of `pRegions`, `bufferOffset` must be a multiple of the format&#8217;s texel block size
@@ -661,6 +660,7 @@ The rules of `VkCopyBufferToImageInfo2` that apply to this crate's API ([referen
 - `VUID-VkCopyBufferToImageInfo2-regionCount-arraylength` (*checked*): `regionCount` must be greater than `0`
 - `VUID-VkCopyBufferToImageInfo2-commonparent` (*checked*): Both of `dstImage`, and `srcBuffer` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCopyBufferToImageInfo2-dstImageLayout-00181` (*checked*): `dstImageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-VkCopyBufferToImageInfo2-None-00214` (*checked*): For each element of `pRegions` whose `imageSubresource` contains a depth aspect, the data in `srcBuffer` must be in the range \[0,1\]
 - `VUID-VkCopyBufferToImageInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COPY_BUFFER_TO_IMAGE_INFO_2`
 - `VUID-VkCopyBufferToImageInfo2-pNext-pNext` (*by the types*): `pNext` must be `NULL`
 - `VUID-VkCopyBufferToImageInfo2-pRegions-parameter` (*by the types*): `pRegions` must be a valid pointer to an array of `regionCount` valid VkBufferImageCopy2 structures*/

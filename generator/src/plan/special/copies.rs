@@ -18,7 +18,10 @@ const COPY_BLOCK_DEPTH: &str = "checked by the safe methods in every build, but 
 const COPY_PLANES: &str = "checked by the safe methods in every build, but no test breaks it: no test copies a multi-planar image yet";
 const COPY_FEATURES: &str = "checked by the safe methods in every build, but no test breaks it: an image whose format lacks the transfer feature cannot have the transfer usage the copy also needs";
 const COPY_FAMILY: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe's only queue family has graphics and compute and an image transfer granularity of one texel";
-const COPY_PROTECTED: &str = "checked by the safe methods in every build, but no test breaks it: lavapipe has no protected memory";
+const COPY_PROTECTED: &str = "checked by the safe methods in every build (the pool's protected flag and the resources' create flags, recorded at their creation, against the device's protectedNoFault), but no test breaks it: lavapipe has no protected memory";
+const COPY_BUFFER_OVERLAP: &str =
+    "checks, when both buffers are one, that no source range overlaps a destination range";
+const COPY_DEPTH_VALUES: &str = "refuses every region into the depth aspect of a floating-point depth format (D32_SFLOAT, D32_SFLOAT_S8_UINT), whose values come from the buffer's contents, which tuff cannot see; a unorm depth format holds [0,1] by its encoding (the 1.3.239 layer does not check it: proven by the error alone)";
 const COPY_RANGE: &str = "checks each region against the buffers' sizes, kept from their creation";
 const BUFFER_IMAGE_RANGE: &str = "checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size";
 
@@ -38,6 +41,8 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-vkCmdFillBuffer-size-00028", How::Dynamic(RANGE)),
             ("VUID-vkCmdFillBuffer-dstBuffer-00029", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdFillBuffer-dstBuffer-00031", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdFillBuffer-commandBuffer-01811", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdFillBuffer-commandBuffer-01812", How::User(COPY_PROTECTED)),
         ],
         ..NONE
     },
@@ -55,6 +60,8 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-vkCmdUpdateBuffer-dstOffset-00036", How::Dynamic(RANGE)),
             ("VUID-vkCmdUpdateBuffer-dataSize-00037", How::Dynamic(RANGE)),
             ("VUID-vkCmdUpdateBuffer-dataSize-00038", How::Dynamic(RANGE)),
+            ("VUID-vkCmdUpdateBuffer-commandBuffer-01813", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdUpdateBuffer-commandBuffer-01814", How::User(COPY_PROTECTED)),
         ],
         ..NONE
     },
@@ -76,6 +83,7 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-vkCmdCopyBufferToImage-pRegions-07273", How::Dynamic(COPY_REGION)),
             ("VUID-vkCmdCopyBufferToImage-srcImage-04053", How::Dynamic(COPY_REGION)),
             ("VUID-vkCmdCopyBufferToImage-pRegions-07277", How::Dynamic(COPY_ROW_PITCH)),
+            ("VUID-vkCmdCopyBufferToImage-None-00214", How::Dynamic(COPY_DEPTH_VALUES)),
             ("VUID-vkCmdCopyBufferToImage-dstImage-00179", How::Dynamic(COPY_REGION)),
             ("VUID-vkCmdCopyBufferToImage-pRegions-00173", How::Dynamic(COPY_OVERLAP)),
             ("VUID-vkCmdCopyBufferToImage-srcImage-00201", How::Dynamic(COPY_REGION)),
@@ -169,6 +177,7 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-VkCopyBufferToImageInfo2-pRegions-07273", How::Dynamic(COPY_REGION)),
             ("VUID-VkCopyBufferToImageInfo2-srcImage-04053", How::Dynamic(COPY_REGION)),
             ("VUID-VkCopyBufferToImageInfo2-pRegions-07277", How::Dynamic(COPY_ROW_PITCH)),
+            ("VUID-VkCopyBufferToImageInfo2-None-00214", How::Dynamic(COPY_DEPTH_VALUES)),
             ("VUID-VkCopyBufferToImageInfo2-dstImage-00179", How::Dynamic(COPY_REGION)),
             ("VUID-VkCopyBufferToImageInfo2-pRegions-00173", How::Dynamic(COPY_OVERLAP)),
             ("VUID-VkCopyBufferToImageInfo2-srcImage-00199", How::User(COPY_SAME_AS_Y)),
@@ -253,12 +262,32 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-VkBufferCopy-size-01988", How::Dynamic(COPY_RANGE)),
             (
                 "VUID-vkCmdCopyBuffer-pRegions-00117",
-                How::Dynamic("checks, when both buffers are one, that no source range overlaps a destination range"),
+                How::Dynamic(COPY_BUFFER_OVERLAP),
             ),
             ("VUID-vkCmdCopyBuffer-srcBuffer-00118", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdCopyBuffer-srcBuffer-00119", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdCopyBuffer-dstBuffer-00120", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdCopyBuffer-dstBuffer-00121", How::Dynamic(BUFFER_USE)),
+            ("VUID-vkCmdCopyBuffer-commandBuffer-01822", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdCopyBuffer-commandBuffer-01823", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdCopyBuffer-commandBuffer-01824", How::User(COPY_PROTECTED)),
+        ],
+        ..NONE
+    },
+    // The recognised checks of the info's ranges and usages run first; the row adds
+    // the rules no recogniser reads, by the same function as `vkCmdCopyBuffer`.
+    Special {
+        command: "vkCmdCopyBuffer2",
+        check_last: call(
+            "special::copies::cmd_copy_buffer2_checks",
+            &["self", "copy_buffer_info"],
+        ),
+        settles: &[
+            ("VUID-VkBufferCopy2-size-01988", How::Dynamic(COPY_RANGE)),
+            ("VUID-VkCopyBufferInfo2-pRegions-00117", How::Dynamic(COPY_BUFFER_OVERLAP)),
+            ("VUID-vkCmdCopyBuffer2-commandBuffer-01822", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdCopyBuffer2-commandBuffer-01823", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdCopyBuffer2-commandBuffer-01824", How::User(COPY_PROTECTED)),
         ],
         ..NONE
     },

@@ -7,6 +7,9 @@
 use super::{call, How, Special, ACTIVE_QUERIES, ACTIVE_QUERIES_ALONE, NONE, UNPROVEN_FAMILY};
 
 const UNPROVEN_QUERIES: &str = "checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet";
+const PRECISE: &str = "checks a precise query's pool type, kept from its creation, and the device's occlusionQueryPrecise feature";
+const UNPROVEN_SIZE_QUERY: &str = "checked by the safe methods in every build (the pool's type, kept from its creation), but no test breaks it: no test makes an acceleration structure query pool";
+const UNPROVEN_PROTECTED: &str = "checked by the safe methods in every build (the pool's protected flag, recorded at its creation), but no test breaks it: lavapipe has no protected memory";
 const QUERY_POOL: &str =
     "checks the query against the pool's type and count, kept from its creation";
 const QUERY_RANGE: &str = "checks the queries against the pool's count, kept from its creation";
@@ -32,7 +35,7 @@ pub(super) const ROWS: &[Special] = &[
         command: "vkCmdBeginQuery",
         check: call(
             "special::query::begin_query_checks",
-            &["self", "query_pool", "query"],
+            &["self", "query_pool", "query", "flags"],
         ),
         after: call(
             "special::query::begin_query_done",
@@ -64,6 +67,18 @@ pub(super) const ROWS: &[Special] = &[
                 "VUID-vkCmdBeginQuery-query-00808",
                 How::User(UNPROVEN_QUERIES),
             ),
+            (
+                "VUID-vkCmdBeginQuery-queryType-00800",
+                How::Dynamic(PRECISE),
+            ),
+            (
+                "VUID-vkCmdBeginQuery-queryType-06741",
+                How::User(UNPROVEN_SIZE_QUERY),
+            ),
+            (
+                "VUID-vkCmdBeginQuery-commandBuffer-01885",
+                How::User(UNPROVEN_PROTECTED),
+            ),
         ],
         ..NONE
     },
@@ -94,6 +109,10 @@ pub(super) const ROWS: &[Special] = &[
             (
                 "VUID-vkCmdEndQuery-query-00812",
                 How::User(UNPROVEN_QUERIES),
+            ),
+            (
+                "VUID-vkCmdEndQuery-commandBuffer-01886",
+                How::User(UNPROVEN_PROTECTED),
             ),
         ],
         ..NONE

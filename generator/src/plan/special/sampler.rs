@@ -7,10 +7,15 @@ use super::{call, How, Special, NONE};
 
 const SAMPLER_MODES: &str = "checks the filters, address modes and a chained reduction mode together, against the device's samplerMirrorClampToEdge and samplerFilterMinmax features";
 
+const SAMPLER_COUNT: &str = "checks the live samplers the device lists (every one made through the wrappers, until destroyed) against maxSamplerAllocationCount, under a lock held until the new sampler is listed";
+const VALUES_READ: &str = "checks the border colour and the compare operation against the values of the versions and extensions enabled, always: drivers read them whatever the address modes and comparison (lavapipe crashes on an invalid border colour)";
+const UNPROVEN_CONVERSION: &str = "checked by the safe methods in every build (the address modes, anisotropy, coordinates, reduction mode and filters against the chained conversion's format and chroma filter, recorded at its creation), but no test breaks it: a conversion is made only by the `unsafe` `create_sampler_ycbcr_conversion`, which no test calls";
+
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[Special {
     command: "vkCreateSampler",
     check_last: call("special::sampler::sampler_checks", &["self", "create_info"]),
+    hold: call("special::sampler::create_sampler_hold", &["self"]),
     created: call(
         "special::sampler::sampler_created",
         &["self", "created", "create_info"],
@@ -31,6 +36,30 @@ pub(super) const ROWS: &[Special] = &[Special {
         (
             "VUID-VkSamplerCreateInfo-compareEnable-01423",
             How::Dynamic(SAMPLER_MODES),
+        ),
+        (
+            "VUID-vkCreateSampler-maxSamplerAllocationCount-04110",
+            How::Dynamic(SAMPLER_COUNT),
+        ),
+        (
+            "VUID-VkSamplerCreateInfo-addressModeU-01078",
+            How::Dynamic(VALUES_READ),
+        ),
+        (
+            "VUID-VkSamplerCreateInfo-compareEnable-01080",
+            How::Dynamic(VALUES_READ),
+        ),
+        (
+            "VUID-VkSamplerCreateInfo-addressModeU-01646",
+            How::User(UNPROVEN_CONVERSION),
+        ),
+        (
+            "VUID-VkSamplerCreateInfo-None-01647",
+            How::User(UNPROVEN_CONVERSION),
+        ),
+        (
+            "VUID-VkSamplerCreateInfo-minFilter-01645",
+            How::User(UNPROVEN_CONVERSION),
         ),
     ],
     ..NONE
