@@ -1255,11 +1255,11 @@ fn cmd_write_timestamp(
     record(
         s,
         |r| {
-            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            r.reset_query_pool(&pool, 0, 1).expect("reset");
             unsafe { r.write_timestamp(a.pipeline_stage, &pool, 0) }
         },
         |r| {
-            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            r.reset_query_pool(&pool, 0, 1).expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe { r.write_timestamp_unchecked(a.pipeline_stage, &pool, 0) }
         },
@@ -2118,11 +2118,11 @@ fn cmd_copy_query_pool_results(
     record(
         s,
         |r| {
-            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            r.reset_query_pool(&pool, 0, 1).expect("reset");
             unsafe { r.copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, stride, flags) }
         },
         |r| {
-            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            r.reset_query_pool(&pool, 0, 1).expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never
             // submitted.
             unsafe {
@@ -2878,11 +2878,11 @@ fn cmd_write_timestamp2(
     record(
         s,
         |r| {
-            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            r.reset_query_pool(&pool, 0, 1).expect("reset");
             unsafe { r.write_timestamp2(a.stage, &pool, 0) }
         },
         |r| {
-            unsafe { r.reset_query_pool(&pool, 0, 1) }.expect("reset");
+            r.reset_query_pool(&pool, 0, 1).expect("reset");
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe { r.write_timestamp2_unchecked(a.stage, &pool, 0) }
         },

@@ -612,13 +612,8 @@ fn a_query_reset_stays_inside_its_pool_and_the_layer_agrees() {
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        // SAFETY: no query of the pool is active.
-        assert_eq!(
-            vuid(unsafe { rec.reset_query_pool(&pool, first, count) }),
-            expected
-        );
-        // SAFETY: as above.
-        unsafe { rec.reset_query_pool(&pool, 0, 2) }.expect("the whole pool");
+        assert_eq!(vuid(rec.reset_query_pool(&pool, first, count)), expected);
+        rec.reset_query_pool(&pool, 0, 2).expect("the whole pool");
         rec.end().expect("end");
         let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
         let mut rec = cb
@@ -820,8 +815,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     let timestamps = pool(vk::QueryType::TIMESTAMP, 1);
     let none = vk::QueryControlFlags::empty();
     let reset = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
-        // SAFETY: no query of the pool is active.
-        unsafe { r.reset_query_pool(&occlusion, 0, 2) }.expect("reset");
+        r.reset_query_pool(&occlusion, 0, 2).expect("reset");
     };
     // SAFETY (each `begin_query` below): the pool was reset before, in the same
     // buffer, so its queries are unavailable.
@@ -894,6 +888,14 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         // SAFETY: see the module docs; the command buffer is never submitted.
         drop(unsafe { rec.end_query_unchecked(&occlusion, 0) });
     });
+    // A reset of an active query.
+    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
+    assert_eq!(
+        vuid(rec.reset_query_pool(&occlusion, 0, 2)),
+        "VUID-vkCmdResetQueryPool-None-02841"
+    );
+    // The 1.3.239 layer does not check it when recording: the error alone proves it.
+    rec.end_query(&occlusion, 0).expect("end query");
     layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryType-00800", || {
         // SAFETY: as above.
         drop(unsafe { rec.begin_query_unchecked(&occlusion, 0, precise) });
@@ -954,8 +956,7 @@ fn begun2<'c>(
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    // SAFETY: no query of the pool is active.
-    unsafe { rec.reset_query_pool(pool, 0, 1) }.expect("reset");
+    rec.reset_query_pool(pool, 0, 1).expect("reset");
     let clear = [vk::ClearValue::default()];
     rec.begin_render_pass2(
         &tuff::RenderPassBeginInfo::new(rp, fb)
@@ -975,8 +976,7 @@ fn rendered<'c>(
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    // SAFETY: no query of the pool is active.
-    unsafe { rec.reset_query_pool(pool, 0, 1) }.expect("reset");
+    rec.reset_query_pool(pool, 0, 1).expect("reset");
     let color = [tuff::RenderingAttachmentInfo::new()
         .image_view(Some(view))
         .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)

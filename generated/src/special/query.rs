@@ -144,6 +144,18 @@ pub(crate) fn cmd_reset_query_pool_range<S: Scope>(
             ),
         )?;
     }
+    let range = u64::from(first_query)..u64::from(first_query) + u64::from(query_count);
+    let pool = query_pool.raw();
+    if let Some(q) = recorder
+        .queries
+        .iter()
+        .find(|q| q.pool == pool && range.contains(&u64::from(q.query)))
+    {
+        refuse(
+            "VUID-vkCmdResetQueryPool-None-02841",
+            format!("query {} of the pool is active (begun and not ended in this recording), and the reset covers queries {range:?}", q.query),
+        )?;
+    }
     Ok(())
 }
 

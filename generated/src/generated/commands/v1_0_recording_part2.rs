@@ -1652,20 +1652,14 @@ The caller upholds the rules that [`Self::fill_buffer`] checks at run time: `VUI
     }
     /**`vkCmdResetQueryPool`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdResetQueryPool-None-02841`: All queries used by the command must not be active
-
 # Valid usage
 
 The rules of `vkCmdResetQueryPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetQueryPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdResetQueryPool-None-02841` (*yours*; explicit rule): All queries used by the command must not be active
 - `VUID-vkCmdResetQueryPool-firstQuery-02862` (*yours*; explicit rule): If `queryPool` was created with `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, this command must not be recorded in a command buffer that, either directly or through secondary command buffers, also contains …
 - `VUID-vkCmdResetQueryPool-firstQuery-00796` (*checked*): `firstQuery` must be less than the number of queries in `queryPool`
 - `VUID-vkCmdResetQueryPool-firstQuery-00797` (*checked*): The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
+- `VUID-vkCmdResetQueryPool-None-02841` (*checked*): All queries used by the command must not be active
 - `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, decode, encode, or opticalflow operations
 - `VUID-vkCmdResetQueryPool-commonparent` (*checked*): Both of `commandBuffer`, and `queryPool` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-vkCmdResetQueryPool-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
@@ -1675,7 +1669,7 @@ The rules of `vkCmdResetQueryPool` that apply to this crate's API ([reference pa
 - `VUID-vkCmdResetQueryPool-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdResetQueryPool")]
     #[inline]
-    pub unsafe fn reset_query_pool(
+    pub fn reset_query_pool(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -1700,7 +1694,7 @@ The rules of `vkCmdResetQueryPool` that apply to this crate's API ([reference pa
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commonparent`, `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-firstQuery-00796`, `VUID-vkCmdResetQueryPool-firstQuery-00797`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkCmdResetQueryPool-commonparent`, `VUID-vkCmdResetQueryPool-commandBuffer-cmdpool`, `VUID-vkCmdResetQueryPool-firstQuery-00796`, `VUID-vkCmdResetQueryPool-firstQuery-00797`, `VUID-vkCmdResetQueryPool-None-02841`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_query_pool_unchecked(
         &mut self,

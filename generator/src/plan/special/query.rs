@@ -7,6 +7,8 @@
 use super::{call, How, Special, ACTIVE_QUERIES, ACTIVE_QUERIES_ALONE, NONE, UNPROVEN_FAMILY};
 
 const UNPROVEN_QUERIES: &str = "checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet";
+const ACTIVE_RESET: &str =
+    "checks the reset's queries against those the recorder has begun and not ended";
 const PRECISE: &str = "checks a precise query's pool type, kept from its creation, and the device's occlusionQueryPrecise feature";
 const UNPROVEN_SIZE_QUERY: &str = "checked by the safe methods in every build (the pool's type, kept from its creation), but no test breaks it: no test makes an acceleration structure query pool";
 const UNPROVEN_PROTECTED: &str = "checked by the safe methods in every build (the pool's protected flag, recorded at its creation), but no test breaks it: lavapipe has no protected memory";
@@ -131,6 +133,10 @@ pub(super) const ROWS: &[Special] = &[
             (
                 "VUID-vkCmdResetQueryPool-firstQuery-00797",
                 How::Dynamic(QUERY_RANGE),
+            ),
+            (
+                "VUID-vkCmdResetQueryPool-None-02841",
+                How::Dynamic(ACTIVE_RESET),
             ),
         ],
         ..NONE
