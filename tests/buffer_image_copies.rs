@@ -528,3 +528,196 @@ fn a_copy_between_a_buffer_and_an_image_in_the_same_memory_is_refused() {
     );
     assert_silent(&s.messages);
 }
+
+/// An image of `format` with `usage`, bound to memory.
+fn clear_target(
+    s: &Setup,
+    format: vk::Format,
+    usage: vk::ImageUsageFlags,
+) -> (tuff::Image, tuff::DeviceMemory) {
+    let image = s
+        .device
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(format)
+                .extent(vk::Extent3D {
+                    width: 8,
+                    height: 8,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(usage),
+        )
+        .unwrap_or_else(|e| panic!("a {format:?} image: {e}"));
+    let memory = s.bind_image(&image);
+    (image, memory)
+}
+
+/// Each rule of a clear outside a render pass: the safe call names it, the layer
+/// names it for the unchecked one (which it skips); correct clears of a colour, a
+/// depth and a depth/stencil image record silently.
+#[test]
+fn clears_check_their_image_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let dst = vk::ImageUsageFlags::TRANSFER_DST;
+    let sampled = vk::ImageUsageFlags::SAMPLED;
+    let (rgba, _m0) = clear_target(&s, vk::Format::R8G8B8A8_UNORM, dst);
+    let (bc1, _m1) = clear_target(&s, vk::Format::BC1_RGBA_UNORM_BLOCK, dst);
+    let (d16, _m2) = clear_target(&s, vk::Format::D16_UNORM, dst);
+    let (ds, _m3) = clear_target(&s, vk::Format::D32_SFLOAT_S8_UINT, dst);
+    let (d16_sampled, _m4) = clear_target(&s, vk::Format::D16_UNORM, sampled);
+    let (ds_sampled, _m5) = clear_target(&s, vk::Format::D32_SFLOAT_S8_UINT, sampled);
+    let range = |aspect_mask, base_mip_level, base_array_layer| vk::ImageSubresourceRange {
+        aspect_mask,
+        base_mip_level,
+        level_count: vk::REMAINING_MIP_LEVELS,
+        base_array_layer,
+        layer_count: vk::REMAINING_ARRAY_LAYERS,
+    };
+    let attachment = vk::ImageLayout::DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    // (rule, a colour clear (else a depth/stencil one), image, layout, range)
+    let cases = [
+        (
+            "VUID-vkCmdClearColorImage-image-00007",
+            true,
+            &d16,
+            DST,
+            range(DEPTH, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearColorImage-image-00007",
+            true,
+            &bc1,
+            DST,
+            range(COLOR, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearColorImage-aspectMask-02498",
+            true,
+            &rgba,
+            DST,
+            range(DEPTH, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearColorImage-baseMipLevel-01470",
+            true,
+            &rgba,
+            DST,
+            range(COLOR, 1, 0),
+        ),
+        (
+            "VUID-vkCmdClearColorImage-baseArrayLayer-01472",
+            true,
+            &rgba,
+            DST,
+            range(COLOR, 0, 1),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-image-00014",
+            false,
+            &rgba,
+            DST,
+            range(COLOR, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-aspectMask-02824",
+            false,
+            &ds,
+            DST,
+            range(COLOR | DEPTH, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-image-02825",
+            false,
+            &d16,
+            DST,
+            range(STENCIL, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-imageLayout-00012",
+            false,
+            &ds,
+            attachment,
+            range(DEPTH, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-pRanges-02659",
+            false,
+            &ds_sampled,
+            DST,
+            range(STENCIL, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-pRanges-02660",
+            false,
+            &d16_sampled,
+            DST,
+            range(DEPTH, 0, 0),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474",
+            false,
+            &d16,
+            DST,
+            range(DEPTH, 1, 0),
+        ),
+        (
+            "VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476",
+            false,
+            &d16,
+            DST,
+            range(DEPTH, 0, 1),
+        ),
+    ];
+    let color = vk::ClearColorValue::default();
+    let depth = vk::ClearDepthStencilValue::default();
+    let mut wrong = Vec::new();
+    for (rule, is_color, image, layout, range) in cases {
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let ranges = [range];
+        let safe = vuid(if is_color {
+            rec.clear_color_image(image, layout, &color, &ranges)
+        } else {
+            rec.clear_depth_stencil_image(image, layout, &depth, &ranges)
+        });
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        // SAFETY: the layer skips the call, which breaks only the rule under test;
+        // the command buffer is never submitted.
+        let _ = unsafe {
+            if is_color {
+                rec.clear_color_image_unchecked(image, layout, &color, &ranges)
+            } else {
+                rec.clear_depth_stencil_image_unchecked(image, layout, &depth, &ranges)
+            }
+        };
+        s.messages.abort_on_error(false);
+        let layer = s.messages.take();
+        if safe != rule || !layer.iter().any(|m| m.contains(rule)) {
+            wrong.push(format!(
+                "{rule}: tuff said {safe}; the layer said {layer:?}"
+            ));
+        }
+        drop(rec);
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.clear_color_image(&rgba, DST, &color, &[range(COLOR, 0, 0)])
+        .expect("a colour clear");
+    rec.clear_depth_stencil_image(&d16, DST, &depth, &[range(DEPTH, 0, 0)])
+        .expect("a depth clear");
+    rec.clear_depth_stencil_image(&ds, DST, &depth, &[range(DEPTH | STENCIL, 0, 0)])
+        .expect("a depth/stencil clear");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}

@@ -569,7 +569,8 @@ fn layouts_are_followed_across_submissions() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     transition(&mut rec, &a, COLOR, UNDEFINED, DST).expect("to DST");
-    unsafe { rec.clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
+    rec.clear_color_image(&a, DST, &clear, &[range(COLOR)])
+        .expect("clear");
     rec.end().expect("end");
     // Reads the image in TRANSFER_SRC_OPTIMAL, which it sets nowhere.
     let (_pool2, mut read) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -622,7 +623,8 @@ fn a_secondary_is_checked_against_the_layouts_its_primary_leaves() {
     let mut rec = secondary
         .begin(&tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance)))
         .expect("begin");
-    unsafe { rec.clear_color_image(&a, DST, &clear, &[range(COLOR)]) }.expect("clear");
+    rec.clear_color_image(&a, DST, &clear, &[range(COLOR)])
+        .expect("clear");
     rec.end().expect("end");
     let (_pool2, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = primary
@@ -882,7 +884,8 @@ fn render_passes_need_their_initial_layouts_and_leave_their_final_ones() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     transition(&mut rec, &target.image, COLOR, UNDEFINED, DST).expect("to DST");
-    unsafe { rec.clear_color_image(&target.image, DST, &clear, &[range(COLOR)]) }.expect("clear");
+    rec.clear_color_image(&target.image, DST, &clear, &[range(COLOR)])
+        .expect("clear");
     transition(&mut rec, &target.image, COLOR, DST, ATTACHMENT).expect("to ATTACHMENT");
     rec.end().expect("end");
     submit(&s, &[&prepare, &load]).expect("prepared, then loaded and copied");

@@ -1299,9 +1299,7 @@ fn cmd_clear_color_image(
     let color = vk::ClearColorValue::default();
     record(
         s,
-        |r| unsafe {
-            r.clear_color_image(&image, a.image_layout, &color, &[o.image_subresource_range])
-        },
+        |r| r.clear_color_image(&image, a.image_layout, &color, &[o.image_subresource_range]),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.clear_color_image_unchecked(
@@ -2961,7 +2959,7 @@ fn clear_depth(
     let ranges = [o.image_subresource_range];
     record(
         s,
-        |r| unsafe { r.clear_depth_stencil_image(&image, a.image_layout, &value, &ranges) },
+        |r| r.clear_depth_stencil_image(&image, a.image_layout, &value, &ranges),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.clear_depth_stencil_image_unchecked(&image, a.image_layout, &value, &ranges)

@@ -535,17 +535,15 @@ fn present_one_frame(
         )],
     )
     .expect("recorded");
-    unsafe {
-        rec.clear_color_image(
-            image,
-            vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-            &vk::ClearColorValue {
-                float32: [0.1, 0.2, 0.3, 1.0],
-            },
-            &[range],
-        )
-        .expect("recorded")
-    };
+    rec.clear_color_image(
+        image,
+        vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+        &vk::ClearColorValue {
+            float32: [0.1, 0.2, 0.3, 1.0],
+        },
+        &[range],
+    )
+    .expect("recorded");
     rec.pipeline_barrier(
         vk::PipelineStageFlags::TRANSFER,
         vk::PipelineStageFlags::BOTTOM_OF_PIPE,

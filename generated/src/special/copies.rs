@@ -1211,3 +1211,236 @@ pub(crate) fn check_overlap(
     }
     Ok(())
 }
+
+/// The rules of a clear of an image outside a render pass instance, by field:
+/// `vkCmdClearColorImage`'s and `vkCmdClearDepthStencilImage`'s differ in their
+/// names and in which aspects and formats they take.
+pub(crate) struct ClearRules {
+    /// The format features of the image have `TRANSFER_DST`.
+    pub features: &'static str,
+    /// The format is one the command clears (colour, not compressed; depth/stencil).
+    pub format: &'static str,
+    /// The format needs no sampler Y'CbCr conversion (empty where no rule says so).
+    pub ycbcr: &'static str,
+    /// Each range's aspects are ones the command clears.
+    pub aspects: &'static str,
+    /// Each range's base level is below the image's level count.
+    pub base_level: &'static str,
+    /// Each range's base layer is below the image's layer count.
+    pub base_layer: &'static str,
+    /// The protected-memory rules.
+    pub protected: Protection,
+}
+
+const CLEAR_COLOR: ClearRules = ClearRules {
+    features: "VUID-vkCmdClearColorImage-image-01993",
+    format: "VUID-vkCmdClearColorImage-image-00007",
+    ycbcr: "VUID-vkCmdClearColorImage-image-01545",
+    aspects: "VUID-vkCmdClearColorImage-aspectMask-02498",
+    base_level: "VUID-vkCmdClearColorImage-baseMipLevel-01470",
+    base_layer: "VUID-vkCmdClearColorImage-baseArrayLayer-01472",
+    protected: Protection {
+        protected_src: "",
+        protected_dst: "VUID-vkCmdClearColorImage-commandBuffer-01805",
+        unprotected_dst: "VUID-vkCmdClearColorImage-commandBuffer-01806",
+    },
+};
+
+const CLEAR_DEPTH_STENCIL: ClearRules = ClearRules {
+    features: "VUID-vkCmdClearDepthStencilImage-image-01994",
+    format: "VUID-vkCmdClearDepthStencilImage-image-00014",
+    ycbcr: "",
+    aspects: "VUID-vkCmdClearDepthStencilImage-aspectMask-02824",
+    base_level: "VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474",
+    base_layer: "VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476",
+    protected: Protection {
+        protected_src: "",
+        protected_dst: "VUID-vkCmdClearDepthStencilImage-commandBuffer-01807",
+        unprotected_dst: "VUID-vkCmdClearDepthStencilImage-commandBuffer-01808",
+    },
+};
+
+/// Refuses a clear of a colour image that breaks a rule of its image or ranges.
+pub(crate) fn cmd_clear_color_image_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    image: &Image,
+    ranges: &[vk::ImageSubresourceRange],
+) -> Result<()> {
+    let color = vk::ImageAspectFlags::COLOR;
+    check_clear(recorder, image, ranges, color, &CLEAR_COLOR).map(drop)
+}
+
+/// Refuses a clear of a depth/stencil image that breaks a rule of its image, layout
+/// or ranges: the aspects it clears must be the format's, and the usage it was
+/// created with (its stencil usage, for the stencil aspect) must allow the clear.
+pub(crate) fn cmd_clear_depth_stencil_image_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    image: &Image,
+    image_layout: vk::ImageLayout,
+    ranges: &[vk::ImageSubresourceRange],
+) -> Result<()> {
+    use vk::ImageAspectFlags as A;
+    if ![
+        vk::ImageLayout::TRANSFER_DST_OPTIMAL,
+        vk::ImageLayout::GENERAL,
+    ]
+    .contains(&image_layout)
+    {
+        refuse(
+            "VUID-vkCmdClearDepthStencilImage-imageLayout-00012",
+            format!("imageLayout must be TRANSFER_DST_OPTIMAL or GENERAL (imageLayout = {image_layout:?})"),
+        )?;
+    }
+    let Some(record) = check_clear(
+        recorder,
+        image,
+        ranges,
+        A::DEPTH | A::STENCIL,
+        &CLEAR_DEPTH_STENCIL,
+    )?
+    else {
+        return Ok(());
+    };
+    let has = crate::formats::aspects(record.format).unwrap_or(A::empty());
+    let cleared = ranges.iter().fold(A::empty(), |a, r| a | r.aspect_mask);
+    if cleared.contains(A::STENCIL) && !has.contains(A::STENCIL) {
+        refuse(
+            "VUID-vkCmdClearDepthStencilImage-image-02825",
+            format!(
+                "a range clears the stencil aspect of a {:?} image, which has none",
+                record.format
+            ),
+        )?;
+    }
+    if cleared.contains(A::DEPTH) && !has.contains(A::DEPTH) {
+        refuse(
+            "VUID-vkCmdClearDepthStencilImage-image-02826",
+            format!(
+                "a range clears the depth aspect of a {:?} image, which has none",
+                record.format
+            ),
+        )?;
+    }
+    let dst = vk::ImageUsageFlags::TRANSFER_DST;
+    if cleared.contains(A::STENCIL) {
+        let (usage, vuid) = match record.stencil_usage {
+            Some(u) => (u, "VUID-vkCmdClearDepthStencilImage-pRanges-02658"),
+            None => (
+                record.usage,
+                "VUID-vkCmdClearDepthStencilImage-pRanges-02659",
+            ),
+        };
+        if !usage.contains(dst) {
+            refuse(
+                vuid,
+                format!("a range clears the stencil aspect, and the image's stencil usage {usage:?} lacks TRANSFER_DST"),
+            )?;
+        }
+    }
+    if cleared.contains(A::DEPTH) && !record.usage.contains(dst) {
+        refuse(
+            "VUID-vkCmdClearDepthStencilImage-pRanges-02660",
+            format!(
+                "a range clears the depth aspect, and the image's usage {:?} lacks TRANSFER_DST",
+                record.usage
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// The checks both clears share: the image's format, its features and protection,
+/// and each range's aspects, base level and base layer. Returns the image's record
+/// (`None` for an image the wrappers did not create, which they cannot check).
+fn check_clear<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    image: &Image,
+    ranges: &[vk::ImageSubresourceRange],
+    aspects: vk::ImageAspectFlags,
+    rules: &ClearRules,
+) -> Result<Option<ImageRecord>> {
+    use vk::ImageAspectFlags as A;
+    let device = recorder.device();
+    let Some(record) = device.live().image(image.raw()) else {
+        return Ok(None);
+    };
+    let has = crate::formats::aspects(record.format).unwrap_or(A::empty());
+    let depth_stencil = has.intersects(A::DEPTH | A::STENCIL);
+    let color = aspects == A::COLOR;
+    if color && (depth_stencil || super::image::compressed(record.format)) {
+        refuse(
+            rules.format,
+            format!(
+                "a colour clear takes neither a compressed nor a depth/stencil format ({:?})",
+                record.format
+            ),
+        )?;
+    }
+    if !color && !depth_stencil {
+        refuse(
+            rules.format,
+            format!(
+                "a depth/stencil clear takes a depth/stencil format, not {:?}",
+                record.format
+            ),
+        )?;
+    }
+    if !rules.ycbcr.is_empty() && crate::formats::chroma(record.format).is_some() {
+        refuse(
+            rules.ycbcr,
+            format!(
+                "{:?} needs a sampler Y'CbCr conversion, which a clear cannot use",
+                record.format
+            ),
+        )?;
+    }
+    let props = device
+        .live()
+        .format_properties(device.parent(), record.format)?;
+    let features = if record.tiling == vk::ImageTiling::LINEAR {
+        props.linear_tiling_features
+    } else {
+        props.optimal_tiling_features
+    };
+    if !features.contains(vk::FormatFeatureFlags::TRANSFER_DST) {
+        refuse(
+            rules.features,
+            format!(
+                "the {:?} features of {:?} ({features:?}) lack TRANSFER_DST",
+                record.tiling, record.format
+            ),
+        )?;
+    }
+    let protected = record.flags.contains(vk::ImageCreateFlags::PROTECTED);
+    check_protected(recorder, None, protected, &rules.protected)?;
+    for (i, r) in ranges.iter().enumerate() {
+        if r.aspect_mask.is_empty() || !aspects.contains(r.aspect_mask) {
+            refuse(
+                rules.aspects,
+                format!(
+                    "pRanges[{i}].aspectMask {:?} is not made of {aspects:?}",
+                    r.aspect_mask
+                ),
+            )?;
+        }
+        if r.base_mip_level >= record.mip_levels {
+            refuse(
+                rules.base_level,
+                format!(
+                    "pRanges[{i}].baseMipLevel {} is not below the image's {} levels",
+                    r.base_mip_level, record.mip_levels
+                ),
+            )?;
+        }
+        if r.base_array_layer >= record.array_layers {
+            refuse(
+                rules.base_layer,
+                format!(
+                    "pRanges[{i}].baseArrayLayer {} is not below the image's {} layers",
+                    r.base_array_layer, record.array_layers
+                ),
+            )?;
+        }
+    }
+    Ok(Some(record))
+}

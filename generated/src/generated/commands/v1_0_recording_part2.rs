@@ -304,44 +304,30 @@ The caller upholds the rules that [`Self::blit_image`] checks at run time: `VUID
     }
     /**`vkCmdClearColorImage`
 
-# Safety
-
-The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdClearColorImage-image-01993`: The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
-- `VUID-vkCmdClearColorImage-aspectMask-02498`: The VkImageSubresourceRange::`aspectMask` members of the elements of the `pRanges` array must each only include `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-vkCmdClearColorImage-baseMipLevel-01470`: The VkImageSubresourceRange::`baseMipLevel` members of the elements of the `pRanges` array must each be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkCmdClearColorImage-baseArrayLayer-01472`: The VkImageSubresourceRange::`baseArrayLayer` members of the elements of the `pRanges` array must each be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkCmdClearColorImage-image-00007`: `image` must not have a compressed or depth/stencil format
-- `VUID-vkCmdClearColorImage-pColor-04961`: `pColor` must be a valid pointer to a VkClearColorValue union
-- `VUID-vkCmdClearColorImage-image-01545`: `image` must not use any of the formats that require a sampler {YCbCr} conversion
-- `VUID-vkCmdClearColorImage-commandBuffer-01805`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
-- `VUID-vkCmdClearColorImage-commandBuffer-01806`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, must not be an unprotected image
-
 # Valid usage
 
 The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearColorImage.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdClearColorImage-image-01993` (*yours*; explicit rule): The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
-- `VUID-vkCmdClearColorImage-aspectMask-02498` (*yours*; explicit rule): The VkImageSubresourceRange::`aspectMask` members of the elements of the `pRanges` array must each only include `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-vkCmdClearColorImage-baseMipLevel-01470` (*yours*; explicit rule): The VkImageSubresourceRange::`baseMipLevel` members of the elements of the `pRanges` array must each be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkCmdClearColorImage-image-01993` (*yours*; checked by the safe methods in every build): The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-vkCmdClearColorImage-pRanges-01692` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` …
-- `VUID-vkCmdClearColorImage-baseArrayLayer-01472` (*yours*; explicit rule): The VkImageSubresourceRange::`baseArrayLayer` members of the elements of the `pRanges` array must each be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
 - `VUID-vkCmdClearColorImage-pRanges-01693` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the …
-- `VUID-vkCmdClearColorImage-image-00007` (*yours*; explicit rule): `image` must not have a compressed or depth/stencil format
-- `VUID-vkCmdClearColorImage-pColor-04961` (*yours*; explicit rule): `pColor` must be a valid pointer to a VkClearColorValue union
-- `VUID-vkCmdClearColorImage-image-01545` (*yours*; explicit rule): `image` must not use any of the formats that require a sampler {YCbCr} conversion
+- `VUID-vkCmdClearColorImage-image-01545` (*yours*; checked by the safe methods in every build): `image` must not use any of the formats that require a sampler {YCbCr} conversion
 - `VUID-vkCmdClearColorImage-imageLayout-01394` (*yours*; explicit rule): `imageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, `VK_IMAGE_LAYOUT_GENERAL`, or `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`
-- `VUID-vkCmdClearColorImage-commandBuffer-01805` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
-- `VUID-vkCmdClearColorImage-commandBuffer-01806` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, must not be an unprotected image
+- `VUID-vkCmdClearColorImage-commandBuffer-01805` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
+- `VUID-vkCmdClearColorImage-commandBuffer-01806` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, must not be an unprotected image
 - `VUID-vkCmdClearColorImage-image-00002` (*checked*): `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
 - `VUID-vkCmdClearColorImage-image-00003` (*checked*): If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-vkCmdClearColorImage-imageLayout-00004` (*checked*): `imageLayout` must specify the layout of the image subresource ranges of `image` specified in `pRanges` at the time this command is executed on a `VkDevice`
+- `VUID-vkCmdClearColorImage-aspectMask-02498` (*checked*): The VkImageSubresourceRange::`aspectMask` members of the elements of the `pRanges` array must each only include `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-vkCmdClearColorImage-baseMipLevel-01470` (*checked*): The VkImageSubresourceRange::`baseMipLevel` members of the elements of the `pRanges` array must each be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkCmdClearColorImage-baseArrayLayer-01472` (*checked*): The VkImageSubresourceRange::`baseArrayLayer` members of the elements of the `pRanges` array must each be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkCmdClearColorImage-image-00007` (*checked*): `image` must not have a compressed or depth/stencil format
 - `VUID-vkCmdClearColorImage-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
 - `VUID-vkCmdClearColorImage-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
 - `VUID-vkCmdClearColorImage-rangeCount-arraylength` (*checked*): `rangeCount` must be greater than `0`
 - `VUID-vkCmdClearColorImage-commonparent` (*checked*): Both of `commandBuffer`, and `image` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-vkCmdClearColorImage-imageLayout-00005` (*checked*): `imageLayout` must be `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-vkCmdClearColorImage-pColor-04961` (*by the types*): `pColor` must be a valid pointer to a VkClearColorValue union
 - `VUID-vkCmdClearColorImage-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdClearColorImage-image-parameter` (*by the types*): `image` must be a valid VkImage handle
 - `VUID-vkCmdClearColorImage-pRanges-parameter` (*by the types*): `pRanges` must be a valid pointer to an array of `rangeCount` valid VkImageSubresourceRange structures
@@ -350,7 +336,7 @@ The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference p
 - `VUID-vkCmdClearColorImage-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdClearColorImage")]
     #[inline]
-    pub unsafe fn clear_color_image(
+    pub fn clear_color_image(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -370,6 +356,7 @@ The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference p
             let r = self.validate_clear_color_image(image, image_layout, ranges);
             r?;
         }
+        crate::special::copies::cmd_clear_color_image_checks(self, image, ranges)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.clear_color_image_unchecked(image, image_layout, color, ranges) }
@@ -378,7 +365,7 @@ The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, `VUID-vkCmdClearColorImage-imageLayout-00004`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_color_image`] checks at run time: `VUID-vkCmdClearColorImage-commonparent`, `VUID-vkCmdClearColorImage-imageLayout-parameter`, `VUID-vkCmdClearColorImage-commandBuffer-cmdpool`, `VUID-vkCmdClearColorImage-rangeCount-arraylength`, `VUID-vkCmdClearColorImage-image-00002`, `VUID-vkCmdClearColorImage-image-00003`, `VUID-vkCmdClearColorImage-pRanges-01692`, `VUID-vkCmdClearColorImage-pRanges-01693`, `VUID-vkCmdClearColorImage-imageLayout-00005`, `VUID-vkCmdClearColorImage-imageLayout-00004`, `VUID-vkCmdClearColorImage-image-01993`, `VUID-vkCmdClearColorImage-image-00007`, `VUID-vkCmdClearColorImage-image-01545`, `VUID-vkCmdClearColorImage-aspectMask-02498`, `VUID-vkCmdClearColorImage-baseMipLevel-01470`, `VUID-vkCmdClearColorImage-baseArrayLayer-01472`, `VUID-vkCmdClearColorImage-pColor-04961`, `VUID-vkCmdClearColorImage-commandBuffer-01805`, `VUID-vkCmdClearColorImage-commandBuffer-01806`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn clear_color_image_unchecked(
         &mut self,
@@ -415,46 +402,28 @@ The caller upholds the rules that [`Self::clear_color_image`] checks at run time
     }
     /**`vkCmdClearDepthStencilImage`
 
-# Safety
-
-The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdClearDepthStencilImage-image-01994`: The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02658`: If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `image`
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02659`: If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `image`
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02660`: If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_DEPTH_BIT`, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `image`
-- `VUID-vkCmdClearDepthStencilImage-imageLayout-00012`: `imageLayout` must be either of `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
-- `VUID-vkCmdClearDepthStencilImage-aspectMask-02824`: The VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include bits other than `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-vkCmdClearDepthStencilImage-image-02825`: If the `image`&#8217;s format does not have a stencil component, then the VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include the `VK_IMAGE_ASPECT_STENCIL_BIT` bit
-- `VUID-vkCmdClearDepthStencilImage-image-02826`: If the `image`&#8217;s format does not have a depth component, then the VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include the `VK_IMAGE_ASPECT_DEPTH_BIT` bit
-- `VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474`: The VkImageSubresourceRange::`baseMipLevel` members of the elements of the `pRanges` array must each be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476`: The VkImageSubresourceRange::`baseArrayLayer` members of the elements of the `pRanges` array must each be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkCmdClearDepthStencilImage-image-00014`: `image` must have a depth/stencil format
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `image` must not be an unprotected image
-
 # Valid usage
 
 The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearDepthStencilImage.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdClearDepthStencilImage-image-01994` (*yours*; explicit rule): The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
+- `VUID-vkCmdClearDepthStencilImage-image-01994` (*yours*; checked by the safe methods in every build): The format features of `image` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
 - `VUID-vkCmdClearDepthStencilImage-image-00009` (*yours*; explicit rule): `image` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02658` (*yours*; explicit rule): If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been …
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02659` (*yours*; explicit rule): If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been …
-- `VUID-vkCmdClearDepthStencilImage-pRanges-02660` (*yours*; explicit rule): If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_DEPTH_BIT`, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create …
-- `VUID-vkCmdClearDepthStencilImage-imageLayout-00012` (*yours*; explicit rule): `imageLayout` must be either of `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
-- `VUID-vkCmdClearDepthStencilImage-aspectMask-02824` (*yours*; explicit rule): The VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include bits other than `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-vkCmdClearDepthStencilImage-image-02825` (*yours*; explicit rule): If the `image`&#8217;s format does not have a stencil component, then the VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include the …
-- `VUID-vkCmdClearDepthStencilImage-image-02826` (*yours*; explicit rule): If the `image`&#8217;s format does not have a depth component, then the VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include the …
-- `VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474` (*yours*; explicit rule): The VkImageSubresourceRange::`baseMipLevel` members of the elements of the `pRanges` array must each be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkCmdClearDepthStencilImage-pRanges-02658` (*yours*; checked by the safe methods in every build): If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been …
 - `VUID-vkCmdClearDepthStencilImage-pRanges-01694` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): For each VkImageSubresourceRange element of `pRanges`, if the `levelCount` member is not `VK_REMAINING_MIP_LEVELS`, then `baseMipLevel` + `levelCount` must be less than or equal to the `mipLevels` …
-- `VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476` (*yours*; explicit rule): The VkImageSubresourceRange::`baseArrayLayer` members of the elements of the `pRanges` array must each be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
 - `VUID-vkCmdClearDepthStencilImage-pRanges-01695` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): For each VkImageSubresourceRange element of `pRanges`, if the `layerCount` member is not `VK_REMAINING_ARRAY_LAYERS`, then `baseArrayLayer` + `layerCount` must be less than or equal to the …
-- `VUID-vkCmdClearDepthStencilImage-image-00014` (*yours*; explicit rule): `image` must have a depth/stencil format
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
-- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `image` must not be an unprotected image
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `image` must not be a protected image
+- `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `image` must not be an unprotected image
+- `VUID-vkCmdClearDepthStencilImage-pRanges-02659` (*checked*): If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `image` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been …
+- `VUID-vkCmdClearDepthStencilImage-pRanges-02660` (*checked*): If the `aspect` member of any element of `pRanges` includes `VK_IMAGE_ASPECT_DEPTH_BIT`, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create …
 - `VUID-vkCmdClearDepthStencilImage-image-00010` (*checked*): If `image` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-vkCmdClearDepthStencilImage-imageLayout-00011` (*checked*): `imageLayout` must specify the layout of the image subresource ranges of `image` specified in `pRanges` at the time this command is executed on a `VkDevice`
+- `VUID-vkCmdClearDepthStencilImage-imageLayout-00012` (*checked*): `imageLayout` must be either of `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
+- `VUID-vkCmdClearDepthStencilImage-aspectMask-02824` (*checked*): The VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include bits other than `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkCmdClearDepthStencilImage-image-02825` (*checked*): If the `image`&#8217;s format does not have a stencil component, then the VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include the …
+- `VUID-vkCmdClearDepthStencilImage-image-02826` (*checked*): If the `image`&#8217;s format does not have a depth component, then the VkImageSubresourceRange::`aspectMask` member of each element of the `pRanges` array must not include the …
+- `VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474` (*checked*): The VkImageSubresourceRange::`baseMipLevel` members of the elements of the `pRanges` array must each be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476` (*checked*): The VkImageSubresourceRange::`baseArrayLayer` members of the elements of the `pRanges` array must each be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkCmdClearDepthStencilImage-image-00014` (*checked*): `image` must have a depth/stencil format
 - `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter` (*checked*): `imageLayout` must be a valid VkImageLayout value
 - `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength` (*checked*): `rangeCount` must be greater than `0`
@@ -468,7 +437,7 @@ The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([refe
 - `VUID-vkCmdClearDepthStencilImage-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdClearDepthStencilImage")]
     #[inline]
-    pub unsafe fn clear_depth_stencil_image(
+    pub fn clear_depth_stencil_image(
         &mut self,
         image: &Image,
         image_layout: vk::ImageLayout,
@@ -494,6 +463,12 @@ The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([refe
                 );
             r?;
         }
+        crate::special::copies::cmd_clear_depth_stencil_image_checks(
+            self,
+            image,
+            image_layout,
+            ranges,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -509,7 +484,7 @@ The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([refe
 
 # Safety
 
-The caller upholds the rules that [`Self::clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_depth_stencil_image`] checks at run time: `VUID-vkCmdClearDepthStencilImage-commonparent`, `VUID-vkCmdClearDepthStencilImage-imageLayout-parameter`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-cmdpool`, `VUID-vkCmdClearDepthStencilImage-rangeCount-arraylength`, `VUID-vkCmdClearDepthStencilImage-image-00010`, `VUID-vkCmdClearDepthStencilImage-pRanges-01694`, `VUID-vkCmdClearDepthStencilImage-pRanges-01695`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00011`, `VUID-vkCmdClearDepthStencilImage-imageLayout-00012`, `VUID-vkCmdClearDepthStencilImage-image-01994`, `VUID-vkCmdClearDepthStencilImage-image-00014`, `VUID-vkCmdClearDepthStencilImage-aspectMask-02824`, `VUID-vkCmdClearDepthStencilImage-image-02825`, `VUID-vkCmdClearDepthStencilImage-image-02826`, `VUID-vkCmdClearDepthStencilImage-pRanges-02658`, `VUID-vkCmdClearDepthStencilImage-pRanges-02659`, `VUID-vkCmdClearDepthStencilImage-pRanges-02660`, `VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474`, `VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-01807`, `VUID-vkCmdClearDepthStencilImage-commandBuffer-01808`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn clear_depth_stencil_image_unchecked(
         &mut self,

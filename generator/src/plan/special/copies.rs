@@ -22,6 +22,11 @@ const COPY_PROTECTED: &str = "checked by the safe methods in every build (the po
 const COPY_BUFFER_OVERLAP: &str =
     "checks, when both buffers are one, that no source range overlaps a destination range";
 const COPY_DEPTH_VALUES: &str = "refuses every region into the depth aspect of a floating-point depth format (D32_SFLOAT, D32_SFLOAT_S8_UINT), whose values come from the buffer's contents, which tuff cannot see; a unorm depth format holds [0,1] by its encoding (the 1.3.239 layer does not check it: proven by the error alone)";
+const CLEAR_IMAGE: &str = "checks the image's format, aspects, levels, layers and usage, recorded at its creation, and the layout named, against each range";
+const CLEAR_FEATURES: &str = "checked by the safe methods in every build (the format features of the image's tiling, asked of the physical device once), but no test breaks it: a format without TRANSFER_DST cannot have the transfer usage the clear also needs on lavapipe";
+const CLEAR_YCBCR: &str = "checked by the safe methods in every build (the format's chroma subsampling, from the registry), but no test breaks it: lavapipe's formats that need a conversion lack TRANSFER_DST, which is refused first";
+const CLEAR_STENCIL_USAGE: &str = "checked by the safe methods in every build (the stencil usage chained at the image's creation), but no test breaks it yet";
+const CLEAR_VALUE: &str = "the value is a reference to the union, 16 bytes that every bit pattern fills with a value of each of its members";
 const COPY_RANGE: &str = "checks each region against the buffers' sizes, kept from their creation";
 const BUFFER_IMAGE_RANGE: &str = "checks each region's bytes, by Buffer and Image Addressing over the image's recorded format (the texel block of the region's aspect, from the registry's formats), lie inside the buffer's recorded size";
 
@@ -271,6 +276,54 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-vkCmdCopyBuffer-commandBuffer-01822", How::User(COPY_PROTECTED)),
             ("VUID-vkCmdCopyBuffer-commandBuffer-01823", How::User(COPY_PROTECTED)),
             ("VUID-vkCmdCopyBuffer-commandBuffer-01824", How::User(COPY_PROTECTED)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdClearColorImage",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ClearColor(image.raw(), image_layout, ranges)"]),
+        check_last: call(
+            "special::copies::cmd_clear_color_image_checks",
+            &["self", "image", "ranges"],
+        ),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ClearColor(image.raw(), image_layout, ranges)"]),
+        settles: &[
+            ("VUID-vkCmdClearColorImage-imageLayout-00004", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdClearColorImage-image-01993", How::User(CLEAR_FEATURES)),
+            ("VUID-vkCmdClearColorImage-image-00007", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearColorImage-image-01545", How::User(CLEAR_YCBCR)),
+            ("VUID-vkCmdClearColorImage-aspectMask-02498", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearColorImage-baseMipLevel-01470", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearColorImage-baseArrayLayer-01472", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearColorImage-pColor-04961", How::Static(CLEAR_VALUE)),
+            ("VUID-vkCmdClearColorImage-commandBuffer-01805", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdClearColorImage-commandBuffer-01806", How::User(COPY_PROTECTED)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdClearDepthStencilImage",
+        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
+        check_last: call(
+            "special::copies::cmd_clear_depth_stencil_image_checks",
+            &["self", "image", "image_layout", "ranges"],
+        ),
+        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
+        settles: &[
+            ("VUID-vkCmdClearDepthStencilImage-imageLayout-00011", How::Dynamic(LAYOUT)),
+            ("VUID-vkCmdClearDepthStencilImage-imageLayout-00012", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-image-01994", How::User(CLEAR_FEATURES)),
+            ("VUID-vkCmdClearDepthStencilImage-image-00014", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-aspectMask-02824", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-image-02825", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-image-02826", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-pRanges-02658", How::User(CLEAR_STENCIL_USAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-pRanges-02659", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-pRanges-02660", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-baseMipLevel-01474", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-baseArrayLayer-01476", How::Dynamic(CLEAR_IMAGE)),
+            ("VUID-vkCmdClearDepthStencilImage-commandBuffer-01807", How::User(COPY_PROTECTED)),
+            ("VUID-vkCmdClearDepthStencilImage-commandBuffer-01808", How::User(COPY_PROTECTED)),
         ],
         ..NONE
     },

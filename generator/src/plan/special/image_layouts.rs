@@ -69,24 +69,6 @@ pub(super) const ROWS: &[Special] = &[
         ..NONE
     },
     Special {
-        command: "vkCmdClearColorImage",
-        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ClearColor(image.raw(), image_layout, ranges)"]),
-        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ClearColor(image.raw(), image_layout, ranges)"]),
-        settles: &[
-            ("VUID-vkCmdClearColorImage-imageLayout-00004", How::Dynamic(LAYOUT)),
-        ],
-        ..NONE
-    },
-    Special {
-        command: "vkCmdClearDepthStencilImage",
-        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
-        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ClearDepthStencil(image.raw(), image_layout, ranges)"]),
-        settles: &[
-            ("VUID-vkCmdClearDepthStencilImage-imageLayout-00011", How::Dynamic(LAYOUT)),
-        ],
-        ..NONE
-    },
-    Special {
         command: "vkCmdPipelineBarrier2",
         check: call("special::image_layouts::dependency_checks", &["self", "core::slice::from_ref(dependency_info)"]),
         after: call("special::image_layouts::dependency_done", &["self", "core::slice::from_ref(dependency_info)"]),
