@@ -1108,8 +1108,16 @@ fn event(s: &Setup) -> tuff::Event {
 }
 
 /// A fixture for a command on one event with a stage mask: set, reset, reset2.
+/// `unsafe` before the name marks a method still `unsafe` (its caller keeps the
+/// rules of the event's waits).
 macro_rules! event_fixture {
+    (unsafe $name:ident, $args:ty, $stage:expr, $method:ident, $unchecked:ident) => {
+        event_fixture!(@ $name, $args, $stage, |r, e, m| unsafe { r.$method(e, m) }, $unchecked);
+    };
     ($name:ident, $args:ty, $stage:expr, $method:ident, $unchecked:ident) => {
+        event_fixture!(@ $name, $args, $stage, |r, e, m| r.$method(e, m), $unchecked);
+    };
+    (@ $name:ident, $args:ty, $stage:expr, |$r:ident, $e:ident, $m:ident| $call:expr, $unchecked:ident) => {
         fn $name(
             s: &Setup,
             limits: &Limits,
@@ -1120,7 +1128,10 @@ macro_rules! event_fixture {
             let e = event(s);
             record(
                 s,
-                |r| unsafe { r.$method(&e, a.stage_mask) },
+                |$r| {
+                    let ($e, $m) = (&e, a.stage_mask);
+                    $call
+                },
                 // SAFETY: as in `buffer_create_info`; the command buffer is never
                 // submitted.
                 |r| unsafe { r.$unchecked(&e, a.stage_mask) },
@@ -1137,14 +1148,14 @@ event_fixture!(
     set_event_unchecked
 );
 event_fixture!(
-    cmd_reset_event,
+    unsafe cmd_reset_event,
     args::CmdResetEvent,
     vk::PipelineStageFlags::TRANSFER,
     reset_event,
     reset_event_unchecked
 );
 event_fixture!(
-    cmd_reset_event2,
+    unsafe cmd_reset_event2,
     args::CmdResetEvent2,
     vk::PipelineStageFlags2::TRANSFER,
     reset_event2,
@@ -1166,7 +1177,8 @@ fn cmd_wait_events(
     record(
         s,
         |r| {
-            unsafe { r.set_event(&e, vk::PipelineStageFlags::TRANSFER) };
+            r.set_event(&e, vk::PipelineStageFlags::TRANSFER)
+                .expect("set");
             unsafe {
                 r.wait_events(
                     &tuff::HandleSlice::new(&events),
@@ -1179,7 +1191,8 @@ fn cmd_wait_events(
             }
         },
         |r| {
-            unsafe { r.set_event(&e, vk::PipelineStageFlags::TRANSFER) };
+            r.set_event(&e, vk::PipelineStageFlags::TRANSFER)
+                .expect("set");
             // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
             unsafe {
                 r.wait_events_unchecked(

@@ -1314,3 +1314,49 @@ fn a_buffer_with_a_device_address_needs_such_memory_and_the_layer_agrees() {
         drop(unsafe { d.bind_buffer_memory_unchecked(&other, &plain, 0) });
     });
 }
+
+/// An event set or reset from no stage at all needs synchronization2: on a device
+/// without it the safe call is refused with the rule's VUID and the layer names it
+/// for the unchecked one; from a stage the pool's family runs, both record.
+#[test]
+fn events_without_stages_need_synchronization2() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup_bare(true);
+    let event = s
+        .device
+        .create_event(&tuff::EventCreateInfo::new())
+        .expect("event");
+    let none = vk::PipelineStageFlags::empty();
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    assert_eq!(
+        vuid(rec.set_event(&event, none)),
+        "VUID-vkCmdSetEvent-stageMask-03937"
+    );
+    layer_names(&s.messages, "VUID-vkCmdSetEvent-stageMask-03937", || {
+        // SAFETY: the layer skips the call, which breaks only the rule under test;
+        // the command buffer is never submitted.
+        drop(unsafe { rec.set_event_unchecked(&event, none) });
+    });
+    // SAFETY: no wait on the event is recorded or pending.
+    let reset = unsafe { rec.reset_event(&event, none) };
+    assert_eq!(vuid(reset), "VUID-vkCmdResetEvent-stageMask-03937");
+    layer_names(&s.messages, "VUID-vkCmdResetEvent-stageMask-03937", || {
+        // SAFETY: as above.
+        drop(unsafe { rec.reset_event_unchecked(&event, none) });
+    });
+    // Two events: a reset after a set of one event without a barrier between them
+    // would race.
+    let other = s
+        .device
+        .create_event(&tuff::EventCreateInfo::new())
+        .expect("event");
+    let transfer = vk::PipelineStageFlags::TRANSFER;
+    rec.set_event(&event, transfer).expect("set from a stage");
+    // SAFETY: no wait on the event is recorded or pending.
+    unsafe { rec.reset_event(&other, transfer) }.expect("reset from a stage");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}

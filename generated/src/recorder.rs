@@ -432,6 +432,9 @@ pub struct Recorder<'c, S: Scope> {
     /// The command buffer's initial device mask (`VkDeviceGroupCommandBufferBeginInfo`,
     /// or every physical device of the device).
     pub(crate) device_mask: u32,
+    /// Its current device mask: the initial one until `vkCmdSetDeviceMask` sets
+    /// another.
+    pub(crate) current_device_mask: u32,
     alive: Alive,
     /// The command pool is externally synchronized by every command recorded into
     /// any of its buffers: held for the whole recording.
@@ -646,6 +649,7 @@ impl CommandBuffer {
             depth_stencil: DepthStencil::default(),
             verified: 0,
             device_mask: group.unwrap_or(all),
+            current_device_mask: group.unwrap_or(all),
             _state: PhantomData,
         })
     }
@@ -798,6 +802,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             depth_stencil: self.depth_stencil,
             verified: 0,
             device_mask: self.device_mask,
+            current_device_mask: self.current_device_mask,
             alive: self.alive,
             pool_sync: self.pool_sync,
             _state: PhantomData,

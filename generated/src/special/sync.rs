@@ -158,6 +158,85 @@ pub(crate) fn semaphore_created(
 
 /// The recording names `event` in an event command: its submission is checked
 /// against pending submissions to other queues that name it too.
+/// The rules of a command that sets or resets an event from a stage mask, by field:
+/// `vkCmdSetEvent`'s and `vkCmdResetEvent`'s differ only in their names.
+pub(crate) struct EventStageRules {
+    /// Each stage is supported by the queue family of the command buffer's pool.
+    pub family: &'static str,
+    /// The mask is not 0 unless synchronization2 is enabled.
+    pub empty: &'static str,
+    /// The command buffer's current device mask names exactly one physical device.
+    pub one_device: &'static str,
+}
+
+const SET_EVENT: EventStageRules = EventStageRules {
+    family: "VUID-vkCmdSetEvent-stageMask-06457",
+    empty: "VUID-vkCmdSetEvent-stageMask-03937",
+    one_device: "VUID-vkCmdSetEvent-commandBuffer-01152",
+};
+
+const RESET_EVENT: EventStageRules = EventStageRules {
+    family: "VUID-vkCmdResetEvent-stageMask-06458",
+    empty: "VUID-vkCmdResetEvent-stageMask-03937",
+    one_device: "VUID-vkCmdResetEvent-commandBuffer-01157",
+};
+
+/// Refuses a `vkCmdSetEvent` whose stage mask the pool's queue family cannot run
+/// or is empty without synchronization2, or that runs on other than one physical
+/// device.
+pub(crate) fn set_event_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    stage_mask: vk::PipelineStageFlags,
+) -> Result<()> {
+    event_stage_checks(recorder, stage_mask, &SET_EVENT)
+}
+
+/// As [`set_event_checks`], for `vkCmdResetEvent`.
+pub(crate) fn reset_event_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    stage_mask: vk::PipelineStageFlags,
+) -> Result<()> {
+    event_stage_checks(recorder, stage_mask, &RESET_EVENT)
+}
+
+fn event_stage_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    stage_mask: vk::PipelineStageFlags,
+    rules: &EventStageRules,
+) -> Result<()> {
+    let flags = recorder.pool_queue_flags();
+    if let Some(s) = super::stages::unsupported_stage(stage_mask, flags) {
+        refuse(
+            rules.family,
+            format!("stageMask includes {s:?}, which the pool's queue family ({flags:?}) does not support"),
+        )?;
+    }
+    let sync2 = recorder
+        .device()
+        .live()
+        .with_features(|f| f.v13.synchronization2);
+    if stage_mask.is_empty() && sync2 != vk::TRUE {
+        refuse(
+            rules.empty,
+            "stageMask is 0, and synchronization2 is not enabled",
+        )?;
+    }
+    let mask = recorder.current_device_mask;
+    if mask.count_ones() != 1 {
+        refuse(
+            rules.one_device,
+            format!("the command buffer's current device mask {mask:#x} names other than one physical device"),
+        )?;
+    }
+    Ok(())
+}
+
+/// The recorder follows the command buffer's current device mask, which event
+/// commands read.
+pub(crate) fn device_mask_set<S: Scope>(recorder: &mut Recorder<'_, S>, device_mask: u32) {
+    recorder.current_device_mask = device_mask;
+}
+
 pub(crate) fn event_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, event: &Event) {
     let raw = event.raw().as_raw();
     if !recorder.events.contains(&raw) {

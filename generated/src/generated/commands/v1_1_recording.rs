@@ -228,6 +228,7 @@ The caller upholds the rules that [`Self::set_device_mask`] checks at run time: 
         let fp = self.device().fns().fp_v1_1().cmd_set_device_mask;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), device_mask) };
+        crate::special::sync::device_mask_set(self, device_mask);
         self.state_changed();
     }
 }

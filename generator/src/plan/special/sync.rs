@@ -4,8 +4,11 @@
 //! Fences, semaphores and events: their creation, host waits and signals, timeline
 //! values, and events set, reset and waited on in recordings.
 
-use super::{call, How, Special, NONE, SEMAPHORE_TYPE};
+use super::{call, How, Special, NONE, SEMAPHORE_TYPE, UNPROVEN_FAMILY};
 
+const EVENT_STAGES: &str =
+    "checks the stage mask is not 0 where the device does not enable synchronization2";
+const UNPROVEN_ONE_DEVICE: &str = "checked by the safe methods in every build (the command buffer's current device mask, which the recorder follows from its begin and every vkCmdSetDeviceMask), but no test breaks it: lavapipe's devices have one physical device";
 const DEVICE_ONLY: &str =
     "checks the event was not created device-only, which the device records at its creation";
 const EXPORTABLE: &str = "checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone)";
@@ -112,12 +115,30 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdSetEvent",
+        check_last: call("special::sync::set_event_checks", &["self", "stage_mask"]),
         after: call("special::sync::event_recorded", &["self", "event"]),
+        settles: &[
+            ("VUID-vkCmdSetEvent-stageMask-06457", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdSetEvent-stageMask-03937", How::Dynamic(EVENT_STAGES)),
+            ("VUID-vkCmdSetEvent-commandBuffer-01152", How::User(UNPROVEN_ONE_DEVICE)),
+        ],
         ..NONE
     },
     Special {
         command: "vkCmdResetEvent",
+        check_last: call("special::sync::reset_event_checks", &["self", "stage_mask"]),
         after: call("special::sync::event_recorded", &["self", "event"]),
+        settles: &[
+            ("VUID-vkCmdResetEvent-stageMask-06458", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdResetEvent-stageMask-03937", How::Dynamic(EVENT_STAGES)),
+            ("VUID-vkCmdResetEvent-commandBuffer-01157", How::User(UNPROVEN_ONE_DEVICE)),
+        ],
+        ..NONE
+    },
+    // The current device mask, which the event commands read.
+    Special {
+        command: "vkCmdSetDeviceMask",
+        after: call("special::sync::device_mask_set", &["self", "device_mask"]),
         ..NONE
     },
     Special {
