@@ -716,12 +716,6 @@ oracle_cases! {
             v.format = vk::Format::from_raw(126);
             v.final_layout = vk::ImageLayout::from_raw(1000241002);
         },
-        "VUID-VkAttachmentDescription-synchronization2-06908" on bare => |v, l, o| {
-            v.initial_layout = vk::ImageLayout::from_raw(1000314001);
-        },
-        "VUID-VkAttachmentDescription-synchronization2-06909" on bare => |v, l, o| {
-            v.final_layout = vk::ImageLayout::from_raw(1000314001);
-        },
     },
     input_attachment_aspect_reference: vk::InputAttachmentAspectReference {
         "VUID-VkInputAttachmentAspectReference-aspectMask-01964" => |v, l, o| {
@@ -738,9 +732,6 @@ oracle_cases! {
         "VUID-VkSubpassDescription-attachment-06919" on full => |v, l, o| {
             o.attachment_reference_color_attachments.layout = vk::ImageLayout::from_raw(1000241000);
         },
-        "VUID-VkSubpassDescription-attachment-06922" => |v, l, o| {
-            o.attachment_reference_color_attachments.layout = vk::ImageLayout::from_raw(1000314000);
-        },
         "VUID-VkSubpassDescription-pipelineBindPoint-00844" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
         },
@@ -748,9 +739,6 @@ oracle_cases! {
     attachment_reference: vk::AttachmentReference {
         "VUID-VkAttachmentReference-layout-03077" => |v, l, o| {
             v.layout = vk::ImageLayout::from_raw(0);
-        },
-        "VUID-VkAttachmentReference-synchronization2-06910" on bare => |v, l, o| {
-            v.layout = vk::ImageLayout::from_raw(1000314001);
         },
     },
     subpass_dependency: vk::SubpassDependency {
@@ -826,12 +814,6 @@ oracle_cases! {
             v.format = vk::Format::from_raw(126);
             v.final_layout = vk::ImageLayout::from_raw(1000241002);
         },
-        "VUID-VkAttachmentDescription2-synchronization2-06908" on bare => |v, l, o| {
-            v.initial_layout = vk::ImageLayout::from_raw(1000314001);
-        },
-        "VUID-VkAttachmentDescription2-synchronization2-06909" on bare => |v, l, o| {
-            v.final_layout = vk::ImageLayout::from_raw(1000314001);
-        },
     },
     attachment_description_stencil_layout: vk::AttachmentDescriptionStencilLayout<'_> {
         "VUID-VkAttachmentDescriptionStencilLayout-stencilInitialLayout-03308" => |v, l, o| {
@@ -854,9 +836,6 @@ oracle_cases! {
         "VUID-VkSubpassDescription2-attachment-06919" on full => |v, l, o| {
             o.attachment_reference2_color_attachments.layout = vk::ImageLayout::from_raw(1000241000);
         },
-        "VUID-VkSubpassDescription2-attachment-06922" => |v, l, o| {
-            o.attachment_reference2_color_attachments.layout = vk::ImageLayout::from_raw(1000314000);
-        },
         "VUID-VkSubpassDescription2-pipelineBindPoint-03062" => |v, l, o| {
             v.pipeline_bind_point = vk::PipelineBindPoint::from_raw(1);
         },
@@ -867,9 +846,6 @@ oracle_cases! {
     attachment_reference2: vk::AttachmentReference2<'_> {
         "VUID-VkAttachmentReference2-layout-03077" => |v, l, o| {
             v.layout = vk::ImageLayout::from_raw(0);
-        },
-        "VUID-VkAttachmentReference2-synchronization2-06910" on bare => |v, l, o| {
-            v.layout = vk::ImageLayout::from_raw(1000314001);
         },
     },
     attachment_reference_stencil_layout: vk::AttachmentReferenceStencilLayout<'_> {

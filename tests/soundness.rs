@@ -160,7 +160,7 @@ fn submit2_holds_what_it_submits_until_its_fence_signals() {
         let submits = [tuff::SubmitInfo2::new()
             .command_buffer_infos(&cb_infos)
             .signal_semaphore_infos(&signal_infos)];
-        unsafe { s.queue.submit2(&submits, Some(&done)) }.expect("submit2");
+        s.queue.submit2(&submits, Some(&done)).expect("submit2");
         // Everything the submission uses goes while it waits for the host.
         drop(cb);
         drop(pool);
@@ -315,7 +315,7 @@ fn a_signalled_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueSubmit-fence-00063"
     );
     assert_eq!(
-        vuid(unsafe { s.queue.submit2(&[], Some(&signalled)) }),
+        vuid(s.queue.submit2(&[], Some(&signalled))),
         "VUID-vkQueueSubmit2-fence-04894"
     );
     assert_silent(&s.messages);
@@ -371,7 +371,7 @@ fn a_busy_fence_is_refused_and_the_layer_agrees() {
         "VUID-vkQueueSubmit-fence-00064"
     );
     assert_eq!(
-        vuid(unsafe { s.queue.submit2(&[], Some(&done)) }),
+        vuid(s.queue.submit2(&[], Some(&done))),
         "VUID-vkQueueSubmit2-fence-04895"
     );
     assert_eq!(
@@ -1374,12 +1374,10 @@ impl Submitter {
                     .iter()
                     .map(|cb| tuff::CommandBufferSubmitInfo::new(cb))
                     .collect();
-                unsafe {
-                    s.queue.submit2(
-                        &[tuff::SubmitInfo2::new().command_buffer_infos(&infos)],
-                        Some(fence),
-                    )
-                }
+                s.queue.submit2(
+                    &[tuff::SubmitInfo2::new().command_buffer_infos(&infos)],
+                    Some(fence),
+                )
             }
         }
     }

@@ -148,3 +148,94 @@ fn render_pass_instances_are_not_suspended() {
     }
     assert_silent(&s.messages);
 }
+
+/// `vkQueueSubmit2`'s batches by the rules of their own structs: a protected batch
+/// on a queue not created protected, a command buffer's device mask and a
+/// semaphore's device index past the device's one physical device, a timeline
+/// semaphore waited on for a value its own signal does not exceed, and a signal not
+/// above the semaphore's value. The safe call names each rule, and the layer names
+/// it for the unchecked one, which it skips; the correct batch runs.
+#[test]
+fn submit2_batches_are_checked_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let semaphore = timeline(&s, 4);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    cb.begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin")
+        .end()
+        .expect("end");
+    let wait = |value| {
+        [tuff::SemaphoreSubmitInfo::new(&semaphore)
+            .value(value)
+            .stage_mask(vk::PipelineStageFlags2::ALL_COMMANDS)]
+    };
+    let signal = |value, device_index| {
+        [tuff::SemaphoreSubmitInfo::new(&semaphore)
+            .value(value)
+            .stage_mask(vk::PipelineStageFlags2::ALL_COMMANDS)
+            .device_index(device_index)]
+    };
+    let cbs = |device_mask| [tuff::CommandBufferSubmitInfo::new(&cb).device_mask(device_mask)];
+    let (signal_6, signal_6_index_1, signal_3) = (signal(6, 0), signal(6, 1), signal(3, 0));
+    let (wait_6, no_wait) = (wait(6), []);
+    let (one, mask_2) = (cbs(0), cbs(2));
+    let batch = |flags, waits, buffers, signals| {
+        tuff::SubmitInfo2::new()
+            .flags(flags)
+            .wait_semaphore_infos(waits)
+            .command_buffer_infos(buffers)
+            .signal_semaphore_infos(signals)
+    };
+    let none = vk::SubmitFlags::empty();
+    let protected = vk::SubmitFlags::PROTECTED;
+    let cases = [
+        (
+            "VUID-vkQueueSubmit2-queue-06447",
+            batch(protected, &no_wait[..], &one[..], &signal_6[..]),
+        ),
+        (
+            "VUID-VkCommandBufferSubmitInfo-deviceMask-03891",
+            batch(none, &no_wait, &mask_2, &signal_6),
+        ),
+        (
+            "VUID-VkSemaphoreSubmitInfo-device-03888",
+            batch(none, &no_wait, &one, &signal_6_index_1),
+        ),
+        (
+            "VUID-VkSubmitInfo2-semaphore-03881",
+            batch(none, &wait_6, &one, &signal_6),
+        ),
+        (
+            "VUID-VkSubmitInfo2-semaphore-03882",
+            batch(none, &no_wait, &one, &signal_3),
+        ),
+    ];
+    for (rule, b) in cases {
+        let submits = [b];
+        assert_eq!(vuid(s.queue.submit2(&submits, Some(&fence))), rule);
+        // The 1.3.239 layer does not check a semaphore's device index: the error
+        // alone proves it (and the unchecked call would run).
+        if rule.ends_with("-03888") {
+            continue;
+        }
+        layer_names(&s, rule, || {
+            // SAFETY: the layer names the rule and skips the call.
+            let _ = unsafe { s.queue.submit2_unchecked(&submits, Some(&fence)) };
+        });
+    }
+    let submits = [batch(none, &no_wait, &one, &signal_6)];
+    s.queue
+        .submit2(&submits, Some(&fence))
+        .expect("a correct batch");
+    assert_eq!(
+        d.wait_for_fences(&fence, true, u64::MAX).expect("wait"),
+        tuff::SuccessOrTimeout::Success
+    );
+    assert_eq!(d.get_semaphore_counter_value(&semaphore).expect("value"), 6);
+    assert_silent(&s.messages);
+}

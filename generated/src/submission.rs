@@ -473,6 +473,13 @@ pub(crate) const SUBMIT_TIMELINE_VALUES: TimelineValueRules = TimelineValueRules
     signal_difference: "VUID-VkSubmitInfo-pSignalSemaphores-03244",
 };
 
+/// The rules of `vkQueueSubmit2`'s `VkSemaphoreSubmitInfo` values.
+pub(crate) const SUBMIT2_TIMELINE_VALUES: TimelineValueRules = TimelineValueRules {
+    signal_above: "VUID-VkSubmitInfo2-semaphore-03882",
+    wait_difference: "VUID-VkSubmitInfo2-semaphore-03884",
+    signal_difference: "VUID-VkSubmitInfo2-semaphore-03883",
+};
+
 /// Refuses timeline operations (in submission order) whose values the semaphore
 /// may not take: a signal must be above every value the semaphore has or is given
 /// before it executes, which is at most the largest value signalled or submitted to

@@ -112,7 +112,7 @@ fn submit2(
             .expect("fence")
     };
     let (a, b) = (fence(), fence());
-    let safe = unsafe { s.queue.submit2(safe, Some(&a)) };
+    let safe = s.queue.submit2(safe, Some(&a));
     // SAFETY: as in `buffer_create_info`; the queue is idle again before the
     // fences and semaphores are dropped.
     let layer = under_layer(s, || {

@@ -451,7 +451,6 @@ pub const CHECKED_EXTENSIONS: &[&str] = &[
     "VK_KHR_storage_buffer_storage_class",
     "VK_KHR_surface",
     "VK_KHR_swapchain",
-    "VK_KHR_synchronization2",
     "VK_KHR_timeline_semaphore",
     "VK_KHR_uniform_buffer_standard_layout",
     "VK_KHR_variable_pointers",

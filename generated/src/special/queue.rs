@@ -107,9 +107,9 @@ const SUBMIT_HOLD: HoldRules = HoldRules {
 /// The rules `vkQueueSubmit2` checks under the gate.
 const SUBMIT2_HOLD: HoldRules = HoldRules {
     submit: &submission::SUBMIT2,
-    events: "",
+    events: "VUID-vkQueueSubmit2-commandBuffer-03867",
     binary: &submission::SUBMIT2_BINARY,
-    values: None,
+    values: Some(&submission::SUBMIT2_TIMELINE_VALUES),
 };
 
 /// The rules `vkQueueBindSparse` checks under the gate.
@@ -175,7 +175,126 @@ pub(crate) fn queue_submit2_checks(
     fence: Option<&Fence>,
 ) -> Result<()> {
     let batches = Batches::of(queue.parent().live(), submits);
-    submit_checks(queue, fence, &batches.command_buffers, &submission::SUBMIT2)
+    submit_checks(queue, fence, &batches.command_buffers, &submission::SUBMIT2)?;
+    for (i, b) in submits.iter().enumerate() {
+        check_batch2(queue, i, b)?;
+    }
+    Ok(())
+}
+
+/// The rules of one `VkSubmitInfo2` that the first version's batches keep in other
+/// structs: its command buffers' pools (the queue's family, the batch's protection)
+/// and device masks, its semaphores' stages and device indices, and a timeline
+/// semaphore both waited on and signalled.
+fn check_batch2(queue: &Queue, i: usize, batch: &SubmitInfo2<'_>) -> Result<()> {
+    let device = queue.parent();
+    let live = device.live();
+    let b = batch.as_raw();
+    let protected = b.flags.contains(vk::SubmitFlags::PROTECTED);
+    if protected && !live.is_protected_queue(queue.raw()) {
+        refuse(
+            "VUID-vkQueueSubmit2-queue-06447",
+            format!("pSubmits[{i}].flags has PROTECTED, and the queue was not created protected"),
+        )?;
+    }
+    let count = live.physical_count();
+    let family = live.queue_family(queue.raw());
+    // SAFETY: the safe struct stores each array with its length.
+    let (waits, cbs, signals) = unsafe {
+        (
+            crate::state::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+            crate::state::raw_slice(b.p_command_buffer_infos, b.command_buffer_info_count),
+            crate::state::raw_slice(b.p_signal_semaphore_infos, b.signal_semaphore_info_count),
+        )
+    };
+    for (j, c) in cbs.iter().enumerate() {
+        if c.device_mask != 0 && count < 32 && c.device_mask >> count != 0 {
+            refuse(
+                "VUID-VkCommandBufferSubmitInfo-deviceMask-03891",
+                format!("pSubmits[{i}].pCommandBufferInfos[{j}].deviceMask {:#x} names a physical device the device's {count} do not include", c.device_mask),
+            )?;
+        }
+        let Some((pool_family, pool_protected)) = device
+            .command_buffer_uses(c.command_buffer)
+            .and_then(|u| u.pool())
+        else {
+            continue;
+        };
+        if family.is_some_and(|f| f != pool_family) {
+            refuse(
+                "VUID-vkQueueSubmit2-commandBuffer-03878",
+                format!("pSubmits[{i}].pCommandBufferInfos[{j}] comes from a pool of queue family {pool_family}, not the queue's"),
+            )?;
+        }
+        if protected && !pool_protected {
+            refuse(
+                "VUID-VkSubmitInfo2-flags-03886",
+                format!("pSubmits[{i}] is protected, and pCommandBufferInfos[{j}] is not a protected command buffer"),
+            )?;
+        }
+        if !protected && pool_protected {
+            refuse(
+                "VUID-VkSubmitInfo2-flags-03887",
+                format!("pSubmits[{i}] is not protected, and pCommandBufferInfos[{j}] is a protected command buffer"),
+            )?;
+        }
+    }
+    let flags = queue.queue_flags();
+    for (infos, name, stage_rule) in [
+        (
+            waits,
+            "pWaitSemaphoreInfos",
+            "VUID-vkQueueSubmit2-stageMask-03870",
+        ),
+        (
+            signals,
+            "pSignalSemaphoreInfos",
+            "VUID-vkQueueSubmit2-stageMask-03869",
+        ),
+    ] {
+        for (j, s) in infos.iter().enumerate() {
+            let at = format!("pSubmits[{i}].{name}[{j}]");
+            if let Some(stage) = super::stages::unsupported_stage2(s.stage_mask, flags) {
+                refuse(
+                    stage_rule,
+                    format!("{at}.stageMask includes {stage:?}, which the queue's capabilities ({flags:?}) do not support"),
+                )?;
+            }
+            if count == 1 && s.device_index != 0 {
+                refuse(
+                    "VUID-VkSemaphoreSubmitInfo-device-03888",
+                    format!(
+                        "{at}.deviceIndex is {}, and the device is not a device group",
+                        s.device_index
+                    ),
+                )?;
+            }
+            if count > 1 && s.device_index >= count {
+                refuse(
+                    "VUID-VkSemaphoreSubmitInfo-device-03889",
+                    format!(
+                        "{at}.deviceIndex is {}, and the device group has {count} physical devices",
+                        s.device_index
+                    ),
+                )?;
+            }
+        }
+    }
+    for (j, w) in waits.iter().enumerate() {
+        if !live.is_timeline(w.semaphore) {
+            continue;
+        }
+        if let Some(k) = signals
+            .iter()
+            .position(|s| s.semaphore == w.semaphore && w.value >= s.value)
+        {
+            refuse(
+                "VUID-VkSubmitInfo2-semaphore-03881",
+                format!("pSubmits[{i}] waits on a timeline semaphore for {} (pWaitSemaphoreInfos[{j}]) and signals it with {} (pSignalSemaphoreInfos[{k}]); the wait must be below the signal", w.value, signals[k].value),
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// The checks of `vkQueueBindSparse`: the fence and the batches' timeline values.

@@ -122,3 +122,35 @@ pub(crate) fn unsupported_stage(stages: S, flags: vk::QueueFlags) -> Option<S> {
         .map(|(s, _)| *s)
         .or_else(|| stages.contains(S::HOST).then_some(S::HOST))
 }
+
+/// As [`unsupported_stage`], for a `VkPipelineStageFlags2` mask: its low 32 bits
+/// are the first version's stages, and the stages synchronization2 adds belong to
+/// transfer (copy, resolve, blit, clear) or graphics (index and vertex attribute
+/// input, the pre-rasterization shaders).
+pub(crate) fn unsupported_stage2(
+    stages: vk::PipelineStageFlags2,
+    flags: vk::QueueFlags,
+) -> Option<vk::PipelineStageFlags2> {
+    use vk::PipelineStageFlags2 as S2;
+    use vk::QueueFlags as Q;
+    let graphics = flags.contains(Q::GRAPHICS);
+    let transfer = graphics || flags.contains(Q::COMPUTE) || flags.contains(Q::TRANSFER);
+    let each: [(S2, bool); 7] = [
+        (S2::COPY, transfer),
+        (S2::RESOLVE, transfer),
+        (S2::BLIT, transfer),
+        (S2::CLEAR, transfer),
+        (S2::INDEX_INPUT, graphics),
+        (S2::VERTEX_ATTRIBUTE_INPUT, graphics),
+        (S2::PRE_RASTERIZATION_SHADERS, graphics),
+    ];
+    // The low bits name the same stages as the first version's flags.
+    let low = S::from_raw(stages.as_raw() as u32);
+    unsupported_stage(low, flags)
+        .map(|s| S2::from_raw(u64::from(s.as_raw())))
+        .or_else(|| {
+            each.iter()
+                .find(|(s, ok)| stages.contains(*s) && !ok)
+                .map(|(s, _)| *s)
+        })
+}

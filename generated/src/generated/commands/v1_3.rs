@@ -387,41 +387,21 @@ The rules of `vkGetPhysicalDeviceToolProperties` that apply to this crate's API 
 impl Queue {
     /**`vkQueueSubmit2`
 
-# Safety
-
-The caller upholds these 14 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkQueueSubmit2-commandBuffer-03867`: If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a command that has been submitted to another queue and is still in the pending state
-- `VUID-vkQueueSubmit2-stageMask-03869`: The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
-- `VUID-vkQueueSubmit2-stageMask-03870`: The `stageMask` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
-- `VUID-vkQueueSubmit2-commandBuffer-03878`: The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family `queue` belongs to
-- `VUID-vkQueueSubmit2-queue-06447`: If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, the `flags` member of any element of `pSubmits` must not include `VK_SUBMIT_PROTECTED_BIT_KHR`
-- `VUID-VkCommandBufferSubmitInfo-deviceMask-03891`: If `deviceMask` is not `0`, it must be a valid device mask
-- `VUID-VkSemaphoreSubmitInfo-device-03888`: If the `device` that `semaphore` was created on is not a device group, `deviceIndex` must be `0`
-- `VUID-VkSemaphoreSubmitInfo-device-03889`: If the `device` that `semaphore` was created on is a device group, `deviceIndex` must be a valid device index
-- `VUID-VkSubmitInfo2-semaphore-03881`: If the same semaphore is used as the `semaphore` member of both an element of `pSignalSemaphoreInfos` and `pWaitSemaphoreInfos`, and that semaphore is a timeline semaphore, the `value` member of the `pSignalSemaphoreInfos` element must be greater than the `value` member of the `pWaitSemaphoreInfos` element
-- `VUID-VkSubmitInfo2-semaphore-03882`: If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value greater than the current value of the semaphore when the semaphore signal operation is executed
-- `VUID-VkSubmitInfo2-semaphore-03883`: If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
-- `VUID-VkSubmitInfo2-semaphore-03884`: If the `semaphore` member of any element of `pWaitSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on that semaphore by more than `maxTimelineSemaphoreValueDifference`
-- `VUID-VkSubmitInfo2-flags-03886`: If `flags` includes `VK_SUBMIT_PROTECTED_BIT`, all elements of `pCommandBuffers` must be protected command buffers
-- `VUID-VkSubmitInfo2-flags-03887`: If `flags` does not include `VK_SUBMIT_PROTECTED_BIT`, each element of `pCommandBuffers` must not be a protected command buffer
-
 # Valid usage
 
 The rules of `vkQueueSubmit2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkQueueSubmit2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkQueueSubmit2-commandBuffer-03867` (*yours*; explicit rule): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a …
+- `VUID-vkQueueSubmit2-commandBuffer-03867` (*yours*; checked by the safe methods in every build): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` referenced an VkEvent, that event must not be referenced by a …
 - `VUID-vkQueueSubmit2-semaphore-03868` (*yours*; checked by the safe methods in every build): The `semaphore` member of any binary semaphore element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must be unsignaled when the semaphore signal operation it defines is executed …
-- `VUID-vkQueueSubmit2-stageMask-03869` (*yours*; explicit rule): The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs …
-- `VUID-vkQueueSubmit2-stageMask-03870` (*yours*; explicit rule): The `stageMask` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
+- `VUID-vkQueueSubmit2-stageMask-03869` (*yours*; checked by the safe methods in every build): The `stageMask` member of any element of the `pSignalSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs …
+- `VUID-vkQueueSubmit2-stageMask-03870` (*yours*; checked by the safe methods in every build): The `stageMask` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must only include pipeline stages that are supported by the queue family which `queue` belongs to
 - `VUID-vkQueueSubmit2-semaphore-03871` (*yours*; checked by the safe methods in every build): When a semaphore wait operation for a binary semaphore is executed, as defined by the `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits`, there must be …
 - `VUID-vkQueueSubmit2-semaphore-03872` (*yours*; checked by the safe methods in every build): The `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` must be semaphores that are signaled, or have semaphore signal operations previously submitted …
 - `VUID-vkQueueSubmit2-commandBuffer-03877` (*yours*; checked by the safe methods in every build): If any secondary command buffers recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was not recorded with the …
-- `VUID-vkQueueSubmit2-commandBuffer-03878` (*yours*; explicit rule): The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family …
+- `VUID-vkQueueSubmit2-commandBuffer-03878` (*yours*; checked by the safe methods in every build): The `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must have been allocated from a `VkCommandPool` that was created for the same queue family …
 - `VUID-vkQueueSubmit2-commandBuffer-03879` (*yours*; explicit rule): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` includes a Queue Family Transfer Acquire Operation, there must …
 - `VUID-vkQueueSubmit2-semaphore-03873` (*yours*; checked by the safe methods in every build): Any `semaphore` member of any element of the `pWaitSemaphoreInfos` member of any element of `pSubmits` that was created with a VkSemaphoreTypeKHR of `VK_SEMAPHORE_TYPE_BINARY_KHR` must reference a …
 - `VUID-vkQueueSubmit2-commandBuffer-03880` (*yours*; explicit rule): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was a vkCmdBeginQuery whose `queryPool` was created with a …
-- `VUID-vkQueueSubmit2-queue-06447` (*yours*; explicit rule): If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, the `flags` member of any element of `pSubmits` must not include `VK_SUBMIT_PROTECTED_BIT_KHR`
 - `VUID-vkQueueSubmit2-fence-04894` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must be unsignaled
 - `VUID-vkQueueSubmit2-fence-04895` (*checked*): If `fence` is not VK_NULL_HANDLE, `fence` must not be associated with any other queue command that has not yet completed execution on that queue
 - `VUID-vkQueueSubmit2-synchronization2-03866` (*checked*): The `synchronization2` feature must be enabled
@@ -429,12 +409,13 @@ The rules of `vkQueueSubmit2` that apply to this crate's API ([reference page](h
 - `VUID-vkQueueSubmit2-commandBuffer-03875` (*checked*): If a command recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` was not recorded with the …
 - `VUID-vkQueueSubmit2-commandBuffer-03876` (*checked*): Any secondary command buffers recorded into the `commandBuffer` member of any element of the `pCommandBufferInfos` member of any element of `pSubmits` must be in the pending or executable state
 - `VUID-vkQueueSubmit2-commonparent` (*checked*): Both of `fence`, and `queue` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkQueueSubmit2-queue-06447` (*checked*): If `queue` was not created with `VK_DEVICE_QUEUE_CREATE_PROTECTED_BIT`, the `flags` member of any element of `pSubmits` must not include `VK_SUBMIT_PROTECTED_BIT_KHR`
 - `VUID-vkQueueSubmit2-queue-parameter` (*by the types*): `queue` must be a valid VkQueue handle
 - `VUID-vkQueueSubmit2-pSubmits-parameter` (*by the types*): If `submitCount` is not `0`, `pSubmits` must be a valid pointer to an array of `submitCount` valid VkSubmitInfo2 structures
 - `VUID-vkQueueSubmit2-fence-parameter` (*by the types*): If `fence` is not VK_NULL_HANDLE, `fence` must be a valid VkFence handle*/
     #[doc(alias = "vkQueueSubmit2")]
     #[inline]
-    pub unsafe fn submit2<'a>(
+    pub fn submit2<'a>(
         &self,
         submits: &[SubmitInfo2<'a>],
         fence: Option<&Fence>,
@@ -463,7 +444,7 @@ The rules of `vkQueueSubmit2` that apply to this crate's API ([reference page](h
 
 # Safety
 
-The caller upholds the rules that [`Self::submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-synchronization2-03866`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, `VUID-vkQueueSubmit2-semaphore-03873`, `VUID-vkQueueSubmit2-semaphore-03868`, `VUID-vkQueueSubmit2-semaphore-03872`, `VUID-vkQueueSubmit2-semaphore-03871`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::submit2`] checks at run time: `VUID-vkQueueSubmit2-commonparent`, `VUID-vkQueueSubmit2-synchronization2-03866`, `VUID-vkQueueSubmit2-fence-04894`, `VUID-vkQueueSubmit2-fence-04895`, `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890`, `VUID-vkQueueSubmit2-commandBuffer-03874`, `VUID-vkQueueSubmit2-commandBuffer-03875`, `VUID-vkQueueSubmit2-commandBuffer-03876`, `VUID-vkQueueSubmit2-commandBuffer-03877`, `VUID-vkQueueSubmit2-semaphore-03873`, `VUID-vkQueueSubmit2-semaphore-03868`, `VUID-vkQueueSubmit2-semaphore-03872`, `VUID-vkQueueSubmit2-semaphore-03871`, `VUID-vkQueueSubmit2-commandBuffer-03867`, `VUID-vkQueueSubmit2-stageMask-03869`, `VUID-vkQueueSubmit2-stageMask-03870`, `VUID-vkQueueSubmit2-commandBuffer-03878`, `VUID-vkQueueSubmit2-queue-06447`, `VUID-VkSubmitInfo2-flags-03886`, `VUID-VkSubmitInfo2-flags-03887`, `VUID-VkCommandBufferSubmitInfo-deviceMask-03891`, `VUID-VkSemaphoreSubmitInfo-device-03888`, `VUID-VkSemaphoreSubmitInfo-device-03889`, `VUID-VkSubmitInfo2-semaphore-03881`, `VUID-VkSubmitInfo2-semaphore-03882`, `VUID-VkSubmitInfo2-semaphore-03883`, `VUID-VkSubmitInfo2-semaphore-03884`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn submit2_unchecked<'a>(
         &self,

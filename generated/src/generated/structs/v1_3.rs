@@ -507,9 +507,9 @@ for CommandBufferInheritanceRenderingInfo<'a> {}
 
 The rules of `VkCommandBufferSubmitInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferSubmitInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCommandBufferSubmitInfo-deviceMask-03891` (*yours*; explicit rule): If `deviceMask` is not `0`, it must be a valid device mask
 - `VUID-VkCommandBufferSubmitInfo-commandBuffer-03890` (*checked*): `commandBuffer` must not have been allocated with `VK_COMMAND_BUFFER_LEVEL_SECONDARY`
 - `VUID-VkCommandBufferSubmitInfo-commandBuffer-parameter` (*checked*): `commandBuffer` must be a valid VkCommandBuffer handle
+- `VUID-VkCommandBufferSubmitInfo-deviceMask-03891` (*checked*): If `deviceMask` is not `0`, it must be a valid device mask
 - `VUID-VkCommandBufferSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO`
 - `VUID-VkCommandBufferSubmitInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]

@@ -8,7 +8,6 @@ use super::*;
 
 The rules of `VkSemaphoreSubmitInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSubmitInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreSubmitInfo-device-03888` (*yours*; explicit rule): If the `device` that `semaphore` was created on is not a device group, `deviceIndex` must be `0`
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03931` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_CONDITIONAL_RENDERING_BIT_EXT`
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03932` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03933` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT`
@@ -19,9 +18,10 @@ The rules of `VkSemaphoreSubmitInfo` that apply to this crate's API ([reference 
 - `VUID-VkSemaphoreSubmitInfo-stageMask-07317` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-VkSemaphoreSubmitInfo-stageMask-04957` (*yours*; explicit rule): If the `subpassShading` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`
 - `VUID-VkSemaphoreSubmitInfo-stageMask-04995` (*yours*; explicit rule): If the `invocationMask` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_INVOCATION_MASK_BIT_HUAWEI`
-- `VUID-VkSemaphoreSubmitInfo-device-03889` (*yours*; explicit rule): If the `device` that `semaphore` was created on is a device group, `deviceIndex` must be a valid device index
+- `VUID-VkSemaphoreSubmitInfo-device-03889` (*yours*; checked by the safe methods in every build): If the `device` that `semaphore` was created on is a device group, `deviceIndex` must be a valid device index
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03929` (*checked*): If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT`
 - `VUID-VkSemaphoreSubmitInfo-stageMask-03930` (*checked*): If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-VkSemaphoreSubmitInfo-device-03888` (*checked*): If the `device` that `semaphore` was created on is not a device group, `deviceIndex` must be `0`
 - `VUID-VkSemaphoreSubmitInfo-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkSemaphoreSubmitInfo-stageMask-parameter` (*checked*): `stageMask` must be a valid combination of VkPipelineStageFlagBits2 values
 - `VUID-VkSemaphoreSubmitInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO`
@@ -76,17 +76,17 @@ impl<'a> SemaphoreSubmitInfo<'a> {
 
 The rules of `VkSubmitInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSubmitInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSubmitInfo2-semaphore-03881` (*yours*; explicit rule): If the same semaphore is used as the `semaphore` member of both an element of `pSignalSemaphoreInfos` and `pWaitSemaphoreInfos`, and that semaphore is a timeline semaphore, the `value` member of the …
-- `VUID-VkSubmitInfo2-semaphore-03882` (*yours*; explicit rule): If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value greater than the current value of the semaphore when …
-- `VUID-VkSubmitInfo2-semaphore-03883` (*yours*; explicit rule): If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the …
-- `VUID-VkSubmitInfo2-semaphore-03884` (*yours*; explicit rule): If the `semaphore` member of any element of `pWaitSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the …
-- `VUID-VkSubmitInfo2-flags-03886` (*yours*; explicit rule): If `flags` includes `VK_SUBMIT_PROTECTED_BIT`, all elements of `pCommandBuffers` must be protected command buffers
-- `VUID-VkSubmitInfo2-flags-03887` (*yours*; explicit rule): If `flags` does not include `VK_SUBMIT_PROTECTED_BIT`, each element of `pCommandBuffers` must not be a protected command buffer
+- `VUID-VkSubmitInfo2-semaphore-03883` (*yours*; checked by the safe methods in every build): If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the …
+- `VUID-VkSubmitInfo2-semaphore-03884` (*yours*; checked by the safe methods in every build): If the `semaphore` member of any element of `pWaitSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value which does not differ from the current value of the …
+- `VUID-VkSubmitInfo2-flags-03886` (*yours*; checked by the safe methods in every build): If `flags` includes `VK_SUBMIT_PROTECTED_BIT`, all elements of `pCommandBuffers` must be protected command buffers
+- `VUID-VkSubmitInfo2-flags-03887` (*yours*; checked by the safe methods in every build): If `flags` does not include `VK_SUBMIT_PROTECTED_BIT`, each element of `pCommandBuffers` must not be a protected command buffer
 - `VUID-VkSubmitInfo2KHR-commandBuffer-06192` (*yours*; checked by the safe methods in every build): If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any resumed render pass instances, they must be suspended by a render pass instance earlier in submission order within …
 - `VUID-VkSubmitInfo2KHR-commandBuffer-06010` (*yours*; checked by the safe methods in every build): If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, they must be resumed by a render pass instance later in submission order within …
 - `VUID-VkSubmitInfo2KHR-commandBuffer-06011` (*yours*; checked by the safe methods in every build): If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, there must be no action or synchronization commands between that render pass instance …
 - `VUID-VkSubmitInfo2KHR-commandBuffer-06012` (*yours*; checked by the safe methods in every build): If any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, there must be no render pass instances between that render pass instance and the …
 - `VUID-VkSubmitInfo2KHR-variableSampleLocations-06013` (*yours*; explicit rule): If the `variableSampleLocations` limit is not supported, and any `commandBuffer` member of an element of `pCommandBufferInfos` contains any suspended render pass instances, where a graphics pipeline …
+- `VUID-VkSubmitInfo2-semaphore-03881` (*checked*): If the same semaphore is used as the `semaphore` member of both an element of `pSignalSemaphoreInfos` and `pWaitSemaphoreInfos`, and that semaphore is a timeline semaphore, the `value` member of the …
+- `VUID-VkSubmitInfo2-semaphore-03882` (*checked*): If the `semaphore` member of any element of `pSignalSemaphoreInfos` is a timeline semaphore, the `value` member of that element must have a value greater than the current value of the semaphore when …
 - `VUID-VkSubmitInfo2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkSubmitInfo2-flags-parameter` (*checked*): `flags` must be a valid combination of VkSubmitFlagBits values
 - `VUID-VkSubmitInfo2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBMIT_INFO_2`

@@ -26,6 +26,11 @@ const WAIT_STAGES: &str = "checks each wait stage mask: no host stage, no geomet
 const UNPROVEN_QUEUE_STAGES: &str = "checked by the safe methods in every build (each stage against the queue family's flags and the specification's table of supported stages), but no test breaks it: lavapipe's only queue family supports every stage";
 const GROUP_INDICES: &str = "checks a chained device group info's device indices and masks against the device's physical-device count, recorded at its creation";
 
+const UNPROVEN_GROUP_INDEX: &str = "checked by the safe methods in every build (the device's physical device count, recorded at its creation), but no test breaks it: lavapipe's devices are not device groups";
+const DEVICE_INDEX_ALONE: &str = "checks a semaphore's device index against the device's physical-device count, recorded at its creation (the 1.3.239 layer does not check it: proven by the error alone)";
+const DEVICE_MASK: &str = "checks a command buffer's device mask against the device's physical-device count, recorded at its creation";
+const WAIT_BELOW_SIGNAL: &str = "checks, for each timeline semaphore a batch both waits on and signals, that the wait's value is below the signal's";
+
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
     Special {
@@ -200,6 +205,62 @@ pub(super) const ROWS: &[Special] = &[
                 How::User(UNPROVEN_BINARY),
             ),
             ("VUID-vkQueueSubmit2-semaphore-03871", How::User(ONE_WAITER)),
+            (
+                "VUID-vkQueueSubmit2-commandBuffer-03867",
+                How::User(UNPROVEN_OTHER_QUEUE_EVENTS),
+            ),
+            (
+                "VUID-vkQueueSubmit2-stageMask-03869",
+                How::User(UNPROVEN_QUEUE_STAGES),
+            ),
+            (
+                "VUID-vkQueueSubmit2-stageMask-03870",
+                How::User(UNPROVEN_QUEUE_STAGES),
+            ),
+            (
+                "VUID-vkQueueSubmit2-commandBuffer-03878",
+                How::User(UNPROVEN_POOL_FAMILY),
+            ),
+            (
+                "VUID-vkQueueSubmit2-queue-06447",
+                How::Dynamic(PROTECTED_QUEUE),
+            ),
+            (
+                "VUID-VkSubmitInfo2-flags-03886",
+                How::User(UNPROVEN_PROTECTED_BUFFERS),
+            ),
+            (
+                "VUID-VkSubmitInfo2-flags-03887",
+                How::User(UNPROVEN_PROTECTED_BUFFERS),
+            ),
+            (
+                "VUID-VkCommandBufferSubmitInfo-deviceMask-03891",
+                How::Dynamic(DEVICE_MASK),
+            ),
+            (
+                "VUID-VkSemaphoreSubmitInfo-device-03888",
+                How::Dynamic(DEVICE_INDEX_ALONE),
+            ),
+            (
+                "VUID-VkSemaphoreSubmitInfo-device-03889",
+                How::User(UNPROVEN_GROUP_INDEX),
+            ),
+            (
+                "VUID-VkSubmitInfo2-semaphore-03881",
+                How::Dynamic(WAIT_BELOW_SIGNAL),
+            ),
+            (
+                "VUID-VkSubmitInfo2-semaphore-03882",
+                How::Dynamic(TIMELINE_RISES),
+            ),
+            (
+                "VUID-VkSubmitInfo2-semaphore-03883",
+                How::User(UNPROVEN_TIMELINE_DIFFERENCE),
+            ),
+            (
+                "VUID-VkSubmitInfo2-semaphore-03884",
+                How::User(UNPROVEN_TIMELINE_DIFFERENCE),
+            ),
         ],
         ..NONE
     },

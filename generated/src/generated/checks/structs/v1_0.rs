@@ -292,30 +292,6 @@ pub fn check_attachment_description(
             ),
         );
     }
-    if (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-        || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
-        && matches!(v.initial_layout.as_raw(), 1000314000 | 1000314001)
-    {
-        return refuse(
-            "VUID-VkAttachmentDescription-synchronization2-06908",
-            format!(
-                "If the `synchronization2` feature is not enabled, `initialLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`initialLayout` = {:?})",
-                v.initial_layout
-            ),
-        );
-    }
-    if (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-        || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
-        && matches!(v.final_layout.as_raw(), 1000314000 | 1000314001)
-    {
-        return refuse(
-            "VUID-VkAttachmentDescription-synchronization2-06909",
-            format!(
-                "If the `synchronization2` feature is not enabled, `finalLayout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`finalLayout` = {:?})",
-                v.final_layout
-            ),
-        );
-    }
     Ok(())
 }
 ///The rules of `VkAttachmentReference` that are checked at run time.
@@ -348,18 +324,6 @@ pub fn check_attachment_reference(
             format!(
                 "If the `separateDepthStencilLayouts` feature is not enabled, and `attachment` is not `VK_ATTACHMENT_UNUSED`, `layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`, (`attachment` = {:?}, `layout` = {:?})",
                 v.attachment, v.layout
-            ),
-        );
-    }
-    if (s.exts.has(origin::VK_KHR_SYNCHRONIZATION2)
-        || s.exts.has(origin::VK_VERSION_1_3)) && !s.feature(|f| f.v13.synchronization2)
-        && matches!(v.layout.as_raw(), 1000314000 | 1000314001)
-    {
-        return refuse(
-            "VUID-VkAttachmentReference-synchronization2-06910",
-            format!(
-                "If the `synchronization2` feature is not enabled, `layout` must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` or `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`layout` = {:?})",
-                v.layout
             ),
         );
     }
@@ -3578,66 +3542,6 @@ pub fn check_subpass_description(
                     "VUID-VkSubpassDescription-attachment-06920",
                     format!(
                         "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
-                    ),
-                );
-            }
-        }
-    }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) || s.exts.has(origin::VK_VERSION_1_3)
-    {
-        for (i, e) in {
-            // SAFETY: the safe setter stored this array and its count.
-            unsafe { members(v.p_input_attachments, v.input_attachment_count) }
-        }
-            .iter()
-            .enumerate()
-        {
-            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314001) {
-                return refuse(
-                    "VUID-VkSubpassDescription-attachment-06921",
-                    format!(
-                        "If the `attachment` member of an element of `pInputAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL_KHR` (`pInputAttachments[{}].attachment` = {:?}, `pInputAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
-                    ),
-                );
-            }
-        }
-    }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) || s.exts.has(origin::VK_VERSION_1_3)
-    {
-        for (i, e) in {
-            // SAFETY: the safe setter stored this array and its count.
-            unsafe { members(v.p_color_attachments, v.color_attachment_count) }
-        }
-            .iter()
-            .enumerate()
-        {
-            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
-                return refuse(
-                    "VUID-VkSubpassDescription-attachment-06922",
-                    format!(
-                        "If the `attachment` member of an element of `pColorAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pColorAttachments[{}].attachment` = {:?}, `pColorAttachments[{}].layout` = {:?})",
-                        i, e.attachment, i, e.layout
-                    ),
-                );
-            }
-        }
-    }
-    if s.exts.has(origin::VK_KHR_SYNCHRONIZATION2) || s.exts.has(origin::VK_VERSION_1_3)
-    {
-        for (i, e) in {
-            // SAFETY: the safe setter stored this array and its count.
-            unsafe { members(v.p_resolve_attachments, v.color_attachment_count) }
-        }
-            .iter()
-            .enumerate()
-        {
-            if e.attachment != u32::MAX && matches!(e.layout.as_raw(), 1000314000) {
-                return refuse(
-                    "VUID-VkSubpassDescription-attachment-06923",
-                    format!(
-                        "If the `attachment` member of an element of `pResolveAttachments` is not `VK_ATTACHMENT_UNUSED`, its `layout` member must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR` (`pResolveAttachments[{}].attachment` = {:?}, `pResolveAttachments[{}].layout` = {:?})",
                         i, e.attachment, i, e.layout
                     ),
                 );
