@@ -239,10 +239,9 @@ fn draws_check_their_pipeline_and_dynamic_state() {
     let extended = pipeline(&s, &p, &target.render_pass, 0, &all_dynamic);
     let set_named = |r: &mut Inside<'_>, state: D| match state {
         D::PRIMITIVE_TOPOLOGY => r.set_primitive_topology(vk::PrimitiveTopology::TRIANGLE_LIST),
-        D::VERTEX_INPUT_BINDING_STRIDE => {
-            unsafe { r.bind_vertex_buffers2(0, &args, &[0], &[], &[16]) }
-                .expect("vertex buffer with its stride")
-        }
+        D::VERTEX_INPUT_BINDING_STRIDE => r
+            .bind_vertex_buffers2(0, &args, &[0], &[], &[16])
+            .expect("vertex buffer with its stride"),
         D::RASTERIZER_DISCARD_ENABLE => r.set_rasterizer_discard_enable(false),
         D::DEPTH_BIAS_ENABLE => r.set_depth_bias_enable(false),
         D::PRIMITIVE_RESTART_ENABLE => r.set_primitive_restart_enable(false),
@@ -1662,6 +1661,64 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
         bind(&mut rec);
         dispatch(&mut rec, false).expect("a dispatch after the pipeline is bound again");
         rec.end().expect("end");
+    }
+    assert_silent(&s.messages);
+}
+
+/// With the vertex binding stride dynamic, a stride `bind_vertex_buffers2` sets is
+/// 0 or reaches past the attributes the vertex shader fetches from its binding
+/// (here 20 bytes): a shorter one is refused at the draw, where the pipeline that
+/// says which attributes are fetched is known.
+#[test]
+fn dynamic_strides_reach_past_their_attributes() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let layout = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
+    let dynamic = [D::VIEWPORT, D::SCISSOR, D::VERTEX_INPUT_BINDING_STRIDE];
+    let pipeline = pipelines::vertex_pipeline_with(&s, &layout, &target.render_pass, &dynamic);
+    let (vertices, _memory) = pipelines::host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    let rule = "VUID-vkCmdBindVertexBuffers2-pStrides-06209";
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    // (stride, refused)
+    for (stride, refused) in [(20, false), (0, false), (8, true)] {
+        for unchecked in [false, true] {
+            if unchecked && !refused {
+                continue;
+            }
+            let rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
+                .expect("bind");
+            set_viewport(&mut rec);
+            set_scissor(&mut rec);
+            rec.bind_vertex_buffers2(0, &vertices, &[0], &[], &[stride])
+                .expect("vertex buffer");
+            if unchecked {
+                s.messages.abort_on_error(true);
+                let _ = unsafe { rec.draw_unchecked(2, 1, 0, 0) };
+                s.messages.abort_on_error(false);
+                let said = s.messages.take();
+                assert!(
+                    said.iter().any(|m| m.contains(rule)),
+                    "the layer said {said:?}"
+                );
+            } else if refused {
+                assert_eq!(vuid(rec.draw(2, 1, 0, 0)), rule);
+            } else {
+                rec.draw(2, 1, 0, 0).expect("a draw with its stride");
+            }
+            drop(rec);
+        }
     }
     assert_silent(&s.messages);
 }

@@ -428,13 +428,9 @@ fn vertex_bindings_stay_under_the_device_limits_and_the_layer_agrees() {
         vuid(rec.bind_vertex_buffers(last, &tuff::HandleSlice::new(&two), &[0, 0])),
         first
     );
-    // SAFETY: no pipeline is bound, so no binding's stride has a vertex attribute to
-    // fit (the rule `bind_vertex_buffers2` leaves to its caller).
-    let refused =
-        unsafe { rec.bind_vertex_buffers2(last, &tuff::HandleSlice::new(&two), &[0, 0], &[], &[]) };
+    let refused = rec.bind_vertex_buffers2(last, &tuff::HandleSlice::new(&two), &[0, 0], &[], &[]);
     assert_eq!(vuid(refused), first2);
-    // SAFETY: as above.
-    let refused = unsafe { rec.bind_vertex_buffers2(0, &vertices, &[0], &[], &[stride]) };
+    let refused = rec.bind_vertex_buffers2(0, &vertices, &[0], &[], &[stride]);
     assert_eq!(vuid(refused), strides);
     // The last binding the device has is bound.
     rec.bind_vertex_buffers(last, &vertices, &[0])

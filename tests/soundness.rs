@@ -1827,13 +1827,11 @@ fn slices_sharing_a_count_have_its_length() {
         "VUID-vkCmdBindVertexBuffers-pOffsets-parameter"
     );
     assert_eq!(
-        vuid(unsafe {
-            rec.bind_vertex_buffers2(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 0], &[256], &[])
-        }),
+        vuid(rec.bind_vertex_buffers2(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 0], &[256], &[])),
         "VUID-vkCmdBindVertexBuffers2-pSizes-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.bind_vertex_buffers2(0, &a, &[0], &[], &[16, 16]) }),
+        vuid(rec.bind_vertex_buffers2(0, &a, &[0], &[], &[16, 16])),
         "VUID-vkCmdBindVertexBuffers2-pStrides-parameter"
     );
     assert_eq!(
@@ -1843,9 +1841,10 @@ fn slices_sharing_a_count_have_its_length() {
     // The same recorder goes on: equal lengths, and empty optional slices as NULL.
     rec.bind_vertex_buffers(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 16])
         .expect("one offset per buffer");
-    unsafe { rec.bind_vertex_buffers2(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 16], &[], &[]) }
+    rec.bind_vertex_buffers2(0, &tuff::HandleSlice::new(&[&a, &b]), &[0, 16], &[], &[])
         .expect("no sizes and no strides");
-    unsafe { rec.bind_vertex_buffers2(0, &a, &[0], &[128], &[]) }.expect("a size per buffer");
+    rec.bind_vertex_buffers2(0, &a, &[0], &[128], &[])
+        .expect("a size per buffer");
     rec.end().expect("end");
     assert_silent(&s.messages);
 }

@@ -155,6 +155,19 @@ pub fn vertex_pipeline(
     layout: &tuff::PipelineLayout,
     render_pass: &tuff::RenderPass,
 ) -> tuff::Pipeline {
+    let dynamic = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    vertex_pipeline_with(s, layout, render_pass, &dynamic)
+}
+
+/// [`vertex_pipeline`] with `dynamic` as its dynamic states.
+#[allow(dead_code)]
+pub fn vertex_pipeline_with(
+    s: &Setup,
+    layout: &tuff::PipelineLayout,
+    render_pass: &tuff::RenderPass,
+    dynamic: &[vk::DynamicState],
+) -> tuff::Pipeline {
+    let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(dynamic);
     let module = |bytes| crate::tuff_setup::shader(s, bytes);
     let vert = module(include_bytes!("../../shaders/spv/triangle.vert.spv"));
     let frag = module(include_bytes!("../../shaders/spv/triangle.frag.spv"));
@@ -182,8 +195,10 @@ pub fn vertex_pipeline(
         .vertex_binding_descriptions(&binding)
         .vertex_attribute_descriptions(&attributes);
     let (mut made, _) = with_graphics_info(&stages, layout, render_pass, |info| {
-        s.device
-            .create_graphics_pipelines(None, &[info.vertex_input_state(Some(&input))])
+        let info = info
+            .vertex_input_state(Some(&input))
+            .dynamic_state(Some(&dynamic));
+        s.device.create_graphics_pipelines(None, &[info])
     })
     .expect("vertex pipeline");
     made.pop().expect("one pipeline")

@@ -72,6 +72,7 @@ pub(crate) fn draw_checks<S: Scope>(
             Some(vertex_vuid),
             &rules.shader,
         )?;
+        stride_checks(recorder)?;
         draw_state_checks(recorder, rules)
     })?;
     let Some((first_vertex, vertex_count, first_instance, instance_count, vuid, multiview)) =
@@ -86,6 +87,33 @@ pub(crate) fn draw_checks<S: Scope>(
         (first_instance, instance_count),
         vuid,
     )
+}
+
+/// Refuses a draw whose bound pipeline has the vertex binding stride dynamic where
+/// a stride `vkCmdBindVertexBuffers2` set is neither 0 nor as long as the extent of
+/// the attributes the vertex shader fetches from its binding (the rule of the bind,
+/// checked where the pipeline that gives the attributes is known).
+fn stride_checks<S: Scope>(recorder: &Recorder<'_, S>) -> Result<()> {
+    let bound = &recorder.bound[0];
+    let Some(pipeline) = &bound.pipeline else {
+        return Ok(());
+    };
+    let dynamic = crate::state::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE);
+    if pipeline.dynamic & dynamic == 0 {
+        return Ok(());
+    }
+    for read in &pipeline.vertex_reads {
+        let Some(Some(range)) = bound.vertex_ranges.get(read.binding as usize) else {
+            continue;
+        };
+        if let Some(stride) = range.stride.filter(|s| *s != 0 && *s < read.end) {
+            refuse(
+                "VUID-vkCmdBindVertexBuffers2-pStrides-06209",
+                format!("the stride bound at binding {} is {stride}, and the attributes the bound pipeline's vertex shader fetches from it reach {} bytes", read.binding, read.end),
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// Refuses a draw that fetches vertices `(first, count)` or instances past the end

@@ -697,18 +697,11 @@ The caller upholds the rules that [`Self::resolve_image2`] checks at run time: `
 impl<'c, S: State> Recorder<'c, S> {
     /**`vkCmdBindVertexBuffers2`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBindVertexBuffers2-pStrides-06209`: If `pStrides` is not `NULL` each element of `pStrides` must be either 0 or greater than or equal to the maximum extent of all vertex input attributes fetched from the corresponding binding, where the extent is calculated as the VkVertexInputAttributeDescription::`offset` plus VkVertexInputAttributeDescription::`format` size
-
 # Valid usage
 
 The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBindVertexBuffers2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkCmdBindVertexBuffers2-firstBinding-03355` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `firstBinding` must be less than `VkPhysicalDeviceLimits::maxVertexInputBindings`
-- `VUID-vkCmdBindVertexBuffers2-pStrides-06209` (*yours*; explicit rule): If `pStrides` is not `NULL` each element of `pStrides` must be either 0 or greater than or equal to the maximum extent of all vertex input attributes fetched from the corresponding binding, where the …
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-04112` (*yours*; explicit rule): If an element of `pBuffers` is VK_NULL_HANDLE, then the corresponding element of `pOffsets` must be zero
 - `VUID-vkCmdBindVertexBuffers2-firstBinding-03356` (*checked*): The sum of `firstBinding` and `bindingCount` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindings`
 - `VUID-vkCmdBindVertexBuffers2-pOffsets-03357` (*checked*): All elements of `pOffsets` must be less than the size of the corresponding element in `pBuffers`
@@ -716,6 +709,7 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-03359` (*checked*): All elements of `pBuffers` must have been created with the `VK_BUFFER_USAGE_VERTEX_BUFFER_BIT` flag
 - `VUID-vkCmdBindVertexBuffers2-pBuffers-03360` (*checked*): Each element of `pBuffers` that is non-sparse must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-vkCmdBindVertexBuffers2-pStrides-03362` (*checked*): If `pStrides` is not `NULL` each element of `pStrides` must be less than or equal to `VkPhysicalDeviceLimits::maxVertexInputBindingStride`
+- `VUID-vkCmdBindVertexBuffers2-pStrides-06209` (*checked*): If `pStrides` is not `NULL` each element of `pStrides` must be either 0 or greater than or equal to the maximum extent of all vertex input attributes fetched from the corresponding binding, where the …
 - `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter` (*checked*): `pOffsets` must be a valid pointer to an array of `bindingCount` VkDeviceSize values
 - `VUID-vkCmdBindVertexBuffers2-pSizes-parameter` (*checked*): If `pSizes` is not `NULL`, `pSizes` must be a valid pointer to an array of `bindingCount` VkDeviceSize values
 - `VUID-vkCmdBindVertexBuffers2-pStrides-parameter` (*checked*): If `pStrides` is not `NULL`, `pStrides` must be a valid pointer to an array of `bindingCount` VkDeviceSize values
@@ -729,7 +723,7 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
 - `VUID-vkCmdBindVertexBuffers2-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBindVertexBuffers2")]
     #[inline]
-    pub unsafe fn bind_vertex_buffers2<'h>(
+    pub fn bind_vertex_buffers2<'h>(
         &mut self,
         first_binding: u32,
         buffers: impl crate::Handles<'h, Buffer>,
@@ -795,7 +789,7 @@ The rules of `vkCmdBindVertexBuffers2` that apply to this crate's API ([referenc
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_vertex_buffers2`] checks at run time: `VUID-vkCmdBindVertexBuffers2-commonparent`, `VUID-vkCmdBindVertexBuffers2-commandBuffer-cmdpool`, `VUID-vkCmdBindVertexBuffers2-bindingCount-arraylength`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03355`, `VUID-vkCmdBindVertexBuffers2-pOffsets-03357`, `VUID-vkCmdBindVertexBuffers2-pSizes-03358`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03359`, `VUID-vkCmdBindVertexBuffers2-pBuffers-03360`, `VUID-vkCmdBindVertexBuffers2-firstBinding-03356`, `VUID-vkCmdBindVertexBuffers2-pStrides-03362`, `VUID-vkCmdBindVertexBuffers2-pStrides-06209`, `VUID-vkCmdBindVertexBuffers2-pOffsets-parameter`, `VUID-vkCmdBindVertexBuffers2-pSizes-parameter`, `VUID-vkCmdBindVertexBuffers2-pStrides-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_vertex_buffers2_unchecked<'h>(
         &mut self,

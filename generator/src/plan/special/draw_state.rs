@@ -10,6 +10,7 @@ use super::{
 
 const SUBPASS_SAMPLES: &str = "checks the pipeline's sample count, kept from its creation, against the first one bound in a subpass without attachments (kept from the render pass's creation), where the physical device lacks variableMultisampleRate (the 1.3.239 layer does not check it at the bind: proven by the error alone)";
 const VERTEX_LIMITS: &str = "checks the bindings against maxVertexInputBindings and the strides against maxVertexInputBindingStride, read once";
+const STRIDE_EXTENT: &str = "checked at each draw, where the bound pipeline says which attributes the vertex shader fetches from each binding: a stride set for a pipeline with the stride dynamic is 0 or reaches the attributes' extent";
 const INDEX_ALIGNED: &str = "checks the offset plus the buffer's offset in its memory (kept from the bind) is a multiple of the index size; allocations start aligned for any resource";
 const PUSH: &str = "checks the range against the layout's push-constant ranges, kept from its creation, its alignment and the device's maxPushConstantsSize";
 const SCISSORS: &str = "checks each scissor's offset is not negative and its ends do not overflow";
@@ -57,6 +58,7 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-vkCmdBindVertexBuffers2-pBuffers-03360", How::Dynamic(BUFFER_USE)),
             ("VUID-vkCmdBindVertexBuffers2-firstBinding-03356", How::Dynamic(VERTEX_LIMITS)),
             ("VUID-vkCmdBindVertexBuffers2-pStrides-03362", How::Dynamic(VERTEX_LIMITS)),
+            ("VUID-vkCmdBindVertexBuffers2-pStrides-06209", How::Dynamic(STRIDE_EXTENT)),
         ],
         ..NONE
     },
