@@ -1722,3 +1722,88 @@ fn dynamic_strides_reach_past_their_attributes() {
     }
     assert_silent(&s.messages);
 }
+
+/// A clear of attachments inside a render pass instance: an attachment the subpass
+/// does not have, an empty rectangle, one past the render area or past the
+/// framebuffer's layers is refused with the rule's VUID, and the layer names it for
+/// the unchecked call, which it skips; a clear of the whole area records silently.
+#[test]
+fn attachment_clears_stay_inside_the_instance() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    let color = |color_attachment| vk::ClearAttachment {
+        aspect_mask: vk::ImageAspectFlags::COLOR,
+        color_attachment,
+        clear_value: vk::ClearValue::default(),
+    };
+    let rect = |x, y, width, height, layer_count| vk::ClearRect {
+        rect: vk::Rect2D {
+            offset: vk::Offset2D { x, y },
+            extent: vk::Extent2D { width, height },
+        },
+        base_array_layer: 0,
+        layer_count,
+    };
+    let whole = rect(0, 0, SIZE, SIZE, 1);
+    let cases = [
+        (
+            "VUID-vkCmdClearAttachments-aspectMask-07271",
+            color(1),
+            whole,
+        ),
+        (
+            "VUID-vkCmdClearAttachments-rect-02682",
+            color(0),
+            rect(0, 0, 0, SIZE, 1),
+        ),
+        (
+            "VUID-vkCmdClearAttachments-rect-02683",
+            color(0),
+            rect(0, 0, SIZE, 0, 1),
+        ),
+        (
+            "VUID-vkCmdClearAttachments-pRects-00016",
+            color(0),
+            rect(4, 0, SIZE, SIZE, 1),
+        ),
+        (
+            "VUID-vkCmdClearAttachments-pRects-06937",
+            color(0),
+            rect(0, 0, SIZE, SIZE, 2),
+        ),
+    ];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut wrong = Vec::new();
+    for (rule, attachment, r) in cases {
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+        let safe = vuid(rec.clear_attachments(&[attachment], &[r]));
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        // SAFETY: the layer skips the call, which breaks only the rule under test;
+        // the command buffer is never submitted.
+        let _ = unsafe { rec.clear_attachments_unchecked(&[attachment], &[r]) };
+        s.messages.abort_on_error(false);
+        let said = s.messages.take();
+        if safe != rule || !said.iter().any(|m| m.contains(rule)) {
+            wrong.push(format!("{rule}: tuff said {safe}; the layer said {said:?}"));
+        }
+        drop(rec);
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    let rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    rec.clear_attachments(&[color(0)], &[whole])
+        .expect("a clear of the whole area");
+    rec.end_render_pass().end().expect("end");
+    assert_silent(&s.messages);
+}

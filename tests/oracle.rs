@@ -2923,12 +2923,9 @@ fn create_private_data_slot(
 fn clear_attachments(s: &Setup, attachment: vk::ClearAttachment, rect: vk::ClearRect) -> Outcome {
     draw(
         s,
-        |r| {
-            unsafe { r.clear_attachments(&[attachment], &[rect]) };
-            Ok(())
-        },
+        |r| r.clear_attachments(&[attachment], &[rect]),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
-        |r| unsafe { r.clear_attachments_unchecked(&[attachment], &[rect]) },
+        |r| drop(unsafe { r.clear_attachments_unchecked(&[attachment], &[rect]) }),
     )
 }
 

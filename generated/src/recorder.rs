@@ -313,6 +313,10 @@ pub(crate) struct PassInstance {
     /// views and resolve views (`None` in a continuing secondary, whose inheritance
     /// info does not give them).
     pub rendering_images: Option<Vec<vk::Image>>,
+    /// The render area and the layer count of the instance (the framebuffer's, or
+    /// dynamic rendering's), where the recording began it (`None` in a continuing
+    /// secondary, whose inheritance info does not give them).
+    pub area: Option<(vk::Rect2D, u32)>,
 }
 
 impl PassInstance {

@@ -25,8 +25,15 @@ pub(crate) fn render_pass_begun<S: Scope>(
         .device()
         .live()
         .render_pass(render_pass_begin.as_raw().render_pass);
+    let begin = render_pass_begin.as_raw();
+    let area = recorder
+        .device()
+        .live()
+        .framebuffer_size(begin.framebuffer)
+        .map(|[_, _, layers]| (begin.render_area, layers));
     recorder.instance = Some(crate::recorder::PassInstance {
         subpass: 0,
+        area,
         render_pass: render_pass_begin.as_raw().render_pass,
         subpasses: record.as_ref().map_or(0, |r| r.view_masks.len() as u32),
         view_mask: record
@@ -122,6 +129,7 @@ pub(crate) fn rendering_begun<S: Scope>(
         rendering: Some(Vrc::new(rendering)),
         rendering_layouts: Some((layout(depth), layout(stencil))),
         rendering_samples: samples,
+        area: Some((raw.render_area, raw.layer_count)),
         ..Default::default()
     });
 }
@@ -737,6 +745,138 @@ fn check_aliasing(
                 )?;
             }
         }
+    }
+    Ok(())
+}
+
+const CLEAR_ATTACHMENTS_PROTECTED: super::copies::Protection = super::copies::Protection {
+    protected_src: "",
+    protected_dst: "VUID-vkCmdClearAttachments-commandBuffer-02504",
+    unprotected_dst: "VUID-vkCmdClearAttachments-commandBuffer-02505",
+};
+
+/// Refuses a clear of attachments that the current subpass (or dynamic rendering)
+/// does not have with the aspects cleared, and rectangles that are empty, leave the
+/// render area or the instance's layers, or (with multiview) name other than one
+/// layer from 0. In a continuing secondary, whose inheritance info gives no render
+/// area, a clear is refused: the area is known only where the instance is begun.
+pub(crate) fn clear_attachments_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    attachments: &[vk::ClearAttachment],
+    rects: &[vk::ClearRect],
+) -> Result<()> {
+    use vk::ImageAspectFlags as A;
+    let Some(instance) = &recorder.instance else {
+        return Ok(());
+    };
+    // The current subpass's color formats and its depth/stencil format.
+    let (colors, depth_stencil): (Vec<vk::Format>, [vk::Format; 2]) =
+        match (&instance.rendering, &instance.record) {
+            (Some(r), _) => (r.colors.clone(), [r.depth, r.stencil]),
+            (None, Some(record)) => {
+                let i = instance.subpass as usize;
+                let depth = record
+                    .depth_formats
+                    .get(i)
+                    .copied()
+                    .flatten()
+                    .unwrap_or(vk::Format::UNDEFINED);
+                (
+                    record.color_formats.get(i).cloned().unwrap_or_default(),
+                    [depth, depth],
+                )
+            }
+            (None, None) => (Vec::new(), [vk::Format::UNDEFINED; 2]),
+        };
+    let known = instance.rendering.is_some() || instance.record.is_some();
+    for (i, a) in attachments.iter().enumerate() {
+        if a.aspect_mask.contains(A::COLOR) {
+            if known && a.color_attachment as usize >= colors.len() {
+                refuse(
+                    "VUID-vkCmdClearAttachments-aspectMask-07271",
+                    format!("pAttachments[{i}].colorAttachment is {}, and the current subpass has {} color attachments", a.color_attachment, colors.len()),
+                )?;
+            }
+            continue;
+        }
+        for (aspect, format) in [(A::DEPTH, depth_stencil[0]), (A::STENCIL, depth_stencil[1])] {
+            let has = crate::formats::aspects(format).unwrap_or(A::empty());
+            if a.aspect_mask.contains(aspect)
+                && format != vk::Format::UNDEFINED
+                && !has.contains(aspect)
+            {
+                refuse(
+                    "VUID-vkCmdClearAttachments-pAttachments-07270",
+                    format!("pAttachments[{i}] clears {aspect:?}, which the current depth/stencil attachment's format {format:?} lacks"),
+                )?;
+            }
+        }
+    }
+    for (i, r) in rects.iter().enumerate() {
+        if r.rect.extent.width == 0 {
+            refuse(
+                "VUID-vkCmdClearAttachments-rect-02682",
+                format!("pRects[{i}].rect.extent.width is 0"),
+            )?;
+        }
+        if r.rect.extent.height == 0 {
+            refuse(
+                "VUID-vkCmdClearAttachments-rect-02683",
+                format!("pRects[{i}].rect.extent.height is 0"),
+            )?;
+        }
+        let Some((area, layers)) = instance.area else {
+            refuse(
+                "VUID-vkCmdClearAttachments-pRects-00016",
+                "the render area is not known in a continuing secondary command buffer (its inheritance info does not give it): clear_attachments_unchecked takes the caller's word that every rectangle lies inside it",
+            )?;
+            continue;
+        };
+        let inside = |o: i32, e: u32, ao: i32, ae: u32| {
+            i64::from(o) >= i64::from(ao)
+                && i64::from(o) + i64::from(e) <= i64::from(ao) + i64::from(ae)
+        };
+        let (o, e) = (r.rect.offset, r.rect.extent);
+        if !inside(o.x, e.width, area.offset.x, area.extent.width)
+            || !inside(o.y, e.height, area.offset.y, area.extent.height)
+        {
+            refuse(
+                "VUID-vkCmdClearAttachments-pRects-00016",
+                format!(
+                    "pRects[{i}].rect ({o:?}, {e:?}) leaves the render area ({:?}, {:?})",
+                    area.offset, area.extent
+                ),
+            )?;
+        }
+        if instance.view_mask != 0 && (r.base_array_layer != 0 || r.layer_count != 1) {
+            refuse(
+                "VUID-vkCmdClearAttachments-baseArrayLayer-00018",
+                format!("in a multiview instance pRects[{i}] clears layers {} to {}; it must clear layer 0 alone", r.base_array_layer, u64::from(r.base_array_layer) + u64::from(r.layer_count)),
+            )?;
+        }
+        if instance.view_mask == 0
+            && u64::from(r.base_array_layer) + u64::from(r.layer_count) > u64::from(layers)
+        {
+            refuse(
+                "VUID-vkCmdClearAttachments-pRects-06937",
+                format!(
+                    "pRects[{i}] clears layers {} to {}, past the instance's {layers} layers",
+                    r.base_array_layer,
+                    u64::from(r.base_array_layer) + u64::from(r.layer_count)
+                ),
+            )?;
+        }
+    }
+    let live = recorder.device().live();
+    let images = instance
+        .rendering_images
+        .as_deref()
+        .unwrap_or(&recorder.pass_images);
+    for image in images {
+        let protected = live
+            .image(*image)
+            .is_some_and(|i| i.flags.contains(vk::ImageCreateFlags::PROTECTED));
+        super::copies::check_protected(recorder, None, protected, &CLEAR_ATTACHMENTS_PROTECTED)?;
     }
     Ok(())
 }

@@ -5,34 +5,19 @@ use super::*;
 impl<'c, S: Inside> Recorder<'c, S> {
     /**`vkCmdClearAttachments`
 
-# Safety
-
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdClearAttachments-pAttachments-07270`: For each element of `pAttachments`, the corresponding attachment in the current render pass instance must either not be backed by an image view, or contain each of the aspects specified in `aspectMask`
-- `VUID-vkCmdClearAttachments-aspectMask-07271`: If the `aspectMask` member of any element of `pAttachments` contains `VK_IMAGE_ASPECT_COLOR_BIT`, the `colorAttachment` must be a valid color attachment index in the current render pass instance
-- `VUID-vkCmdClearAttachments-rect-02682`: The `rect` member of each element of `pRects` must have an `extent.width` greater than `0`
-- `VUID-vkCmdClearAttachments-rect-02683`: The `rect` member of each element of `pRects` must have an `extent.height` greater than `0`
-- `VUID-vkCmdClearAttachments-pRects-00016`: The rectangular region specified by each element of `pRects` must be contained within the render area of the current render pass instance
-- `VUID-vkCmdClearAttachments-pRects-06937`: The layers specified by each element of `pRects` must be contained within every attachment that `pAttachments` refers to, i.e. for each element of `pRects`, VkClearRect::`baseArrayLayer` + VkClearRect::`layerCount` must be less than or equal to the number of layers rendered to in the current render pass instance
-- `VUID-vkCmdClearAttachments-commandBuffer-02504`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, each attachment to be cleared must not be a protected image
-- `VUID-vkCmdClearAttachments-commandBuffer-02505`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, each attachment to be cleared must not be an unprotected image
-- `VUID-vkCmdClearAttachments-baseArrayLayer-00018`: If the render pass instance this is recorded in uses multiview, then `baseArrayLayer` must be zero and `layerCount` must be one
-- `VUID-VkClearAttachment-clearValue-00021`: `clearValue` must be a valid `VkClearValue` union
-
 # Valid usage
 
 The rules of `vkCmdClearAttachments` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdClearAttachments.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdClearAttachments-pAttachments-07270` (*yours*; explicit rule): For each element of `pAttachments`, the corresponding attachment in the current render pass instance must either not be backed by an image view, or contain each of the aspects specified in …
-- `VUID-vkCmdClearAttachments-aspectMask-07271` (*yours*; explicit rule): If the `aspectMask` member of any element of `pAttachments` contains `VK_IMAGE_ASPECT_COLOR_BIT`, the `colorAttachment` must be a valid color attachment index in the current render pass instance
-- `VUID-vkCmdClearAttachments-rect-02682` (*yours*; explicit rule): The `rect` member of each element of `pRects` must have an `extent.width` greater than `0`
-- `VUID-vkCmdClearAttachments-rect-02683` (*yours*; explicit rule): The `rect` member of each element of `pRects` must have an `extent.height` greater than `0`
-- `VUID-vkCmdClearAttachments-pRects-00016` (*yours*; explicit rule): The rectangular region specified by each element of `pRects` must be contained within the render area of the current render pass instance
-- `VUID-vkCmdClearAttachments-pRects-06937` (*yours*; explicit rule): The layers specified by each element of `pRects` must be contained within every attachment that `pAttachments` refers to, i.e. for each element of `pRects`, VkClearRect::`baseArrayLayer` + …
-- `VUID-vkCmdClearAttachments-commandBuffer-02504` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, each attachment to be cleared must not be a protected image
-- `VUID-vkCmdClearAttachments-commandBuffer-02505` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, each attachment to be cleared must not be an unprotected image
-- `VUID-vkCmdClearAttachments-baseArrayLayer-00018` (*yours*; explicit rule): If the render pass instance this is recorded in uses multiview, then `baseArrayLayer` must be zero and `layerCount` must be one
+- `VUID-vkCmdClearAttachments-pAttachments-07270` (*yours*; checked by the safe methods in every build): For each element of `pAttachments`, the corresponding attachment in the current render pass instance must either not be backed by an image view, or contain each of the aspects specified in …
+- `VUID-vkCmdClearAttachments-commandBuffer-02504` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, each attachment to be cleared must not be a protected image
+- `VUID-vkCmdClearAttachments-commandBuffer-02505` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, each attachment to be cleared must not be an unprotected image
+- `VUID-vkCmdClearAttachments-baseArrayLayer-00018` (*yours*; checked by the safe methods in every build): If the render pass instance this is recorded in uses multiview, then `baseArrayLayer` must be zero and `layerCount` must be one
+- `VUID-vkCmdClearAttachments-aspectMask-07271` (*checked*): If the `aspectMask` member of any element of `pAttachments` contains `VK_IMAGE_ASPECT_COLOR_BIT`, the `colorAttachment` must be a valid color attachment index in the current render pass instance
+- `VUID-vkCmdClearAttachments-rect-02682` (*checked*): The `rect` member of each element of `pRects` must have an `extent.width` greater than `0`
+- `VUID-vkCmdClearAttachments-rect-02683` (*checked*): The `rect` member of each element of `pRects` must have an `extent.height` greater than `0`
+- `VUID-vkCmdClearAttachments-pRects-00016` (*checked*): The rectangular region specified by each element of `pRects` must be contained within the render area of the current render pass instance
+- `VUID-vkCmdClearAttachments-pRects-06937` (*checked*): The layers specified by each element of `pRects` must be contained within every attachment that `pAttachments` refers to, i.e. for each element of `pRects`, VkClearRect::`baseArrayLayer` + …
 - `VUID-vkCmdClearAttachments-layerCount-01934` (*checked*): The `layerCount` member of each element of `pRects` must not be `0`
 - `VUID-vkCmdClearAttachments-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdClearAttachments-attachmentCount-arraylength` (*checked*): `attachmentCount` must be greater than `0`
@@ -45,17 +30,20 @@ The rules of `vkCmdClearAttachments` that apply to this crate's API ([reference 
 - `VUID-vkCmdClearAttachments-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdClearAttachments")]
     #[inline]
-    pub unsafe fn clear_attachments(
+    pub fn clear_attachments(
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
-    ) {
+    ) -> Result<()> {
         {
             let r = self.validate_clear_attachments(attachments, rects);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::special::pass_instance::clear_attachments_checks(
+            self,
+            attachments,
+            rects,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.clear_attachments_unchecked(attachments, rects) }
@@ -64,25 +52,28 @@ The rules of `vkCmdClearAttachments` that apply to this crate's API ([reference 
 
 # Safety
 
-The caller upholds the rules that [`Self::clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, `VUID-vkCmdClearAttachments-layerCount-01934`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::clear_attachments`] checks at run time: `VUID-vkCmdClearAttachments-commandBuffer-cmdpool`, `VUID-vkCmdClearAttachments-attachmentCount-arraylength`, `VUID-vkCmdClearAttachments-rectCount-arraylength`, `VUID-vkCmdClearAttachments-layerCount-01934`, `VUID-vkCmdClearAttachments-aspectMask-07271`, `VUID-vkCmdClearAttachments-pAttachments-07270`, `VUID-vkCmdClearAttachments-rect-02682`, `VUID-vkCmdClearAttachments-rect-02683`, `VUID-vkCmdClearAttachments-pRects-00016`, `VUID-vkCmdClearAttachments-pRects-06937`, `VUID-vkCmdClearAttachments-baseArrayLayer-00018`, `VUID-VkClearAttachment-clearValue-00021`, `VUID-vkCmdClearAttachments-commandBuffer-02504`, `VUID-vkCmdClearAttachments-commandBuffer-02505`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn clear_attachments_unchecked(
         &mut self,
         attachments: &[vk::ClearAttachment],
         rects: &[vk::ClearRect],
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_clear_attachments;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                attachments.len() as u32,
-                attachments.as_ptr().cast(),
-                rects.len() as u32,
-                rects.as_ptr().cast(),
-            )
-        };
-        self.state_changed();
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    attachments.len() as u32,
+                    attachments.as_ptr().cast(),
+                    rects.len() as u32,
+                    rects.as_ptr().cast(),
+                )
+            };
+            self.state_changed();
+        }
+        Ok(())
     }
     /**`vkCmdDraw`
 

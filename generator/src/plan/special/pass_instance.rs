@@ -14,6 +14,11 @@ const PASS_GROUP_LIMIT: &str = "checks each device render area against the devic
 const PASS_GROUP_MASK: &str = "checked by the safe methods in every build, but no test breaks it: in a group of one physical device, the only valid masks are the initial mask";
 const PASS_VIEWS: &str = "checks the views a chained VkRenderPassAttachmentBeginInfo gives against the imageless framebuffer's attachment image infos and the render pass's attachments, and the render pass against the one the framebuffer was created with (attachment formats and sample counts, each subpass's attachments and view mask), as the device recorded them";
 const PASS_FORMATS: &str = "checks the view formats the view's image lists against the attachment image info's (an image that lists none is judged by its view's format alone, as the 1.3.239 layer judges it)";
+const CLEAR_ATTACHMENTS: &str = "checks each attachment against the current subpass's (or dynamic rendering's) color count and depth/stencil format, and each rectangle against the render area and layer count the instance was begun with (in a continuing secondary, whose area is not known, a clear is refused)";
+const CLEAR_DEPTH_ASPECTS: &str = "checked by the safe methods in every build (the aspects cleared against the current depth/stencil attachment's format, kept from the render pass's creation), but no test breaks it yet";
+const CLEAR_MULTIVIEW: &str = "checked by the safe methods in every build (the current subpass's view mask, kept from the render pass's creation), but no test breaks it yet";
+const CLEAR_PROTECTED: &str = "checked by the safe methods in every build (the attachments' images' protected flags against the pool's, recorded at their creation, and the device's protectedNoFault), but no test breaks it: lavapipe has no protected memory";
+const CLEAR_VALUE: &str = "the value is a `vk::ClearValue`, 16 bytes that every bit pattern fills with a value of each of its members";
 const PASS_UNPROVEN: &str = "checked by the safe methods in every build, but no test breaks it yet";
 const PASS_FAMILY: &str = "checked by the safe methods in every build (each dependency's stages against the pool's queue family), but no test breaks it: lavapipe's only queue family supports every stage";
 const SUBPASSES: &str = "checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer)";
@@ -117,6 +122,26 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-VkSubmitInfo2KHR-commandBuffer-06010", How::User(NO_SUSPENSION)),
             ("VUID-VkSubmitInfo2KHR-commandBuffer-06011", How::User(NO_SUSPENSION)),
             ("VUID-VkSubmitInfo2KHR-commandBuffer-06012", How::User(NO_SUSPENSION)),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdClearAttachments",
+        check_last: call(
+            "special::pass_instance::clear_attachments_checks",
+            &["self", "attachments", "rects"],
+        ),
+        settles: &[
+            ("VUID-vkCmdClearAttachments-aspectMask-07271", How::Dynamic(CLEAR_ATTACHMENTS)),
+            ("VUID-vkCmdClearAttachments-pAttachments-07270", How::User(CLEAR_DEPTH_ASPECTS)),
+            ("VUID-vkCmdClearAttachments-rect-02682", How::Dynamic(CLEAR_ATTACHMENTS)),
+            ("VUID-vkCmdClearAttachments-rect-02683", How::Dynamic(CLEAR_ATTACHMENTS)),
+            ("VUID-vkCmdClearAttachments-pRects-00016", How::Dynamic(CLEAR_ATTACHMENTS)),
+            ("VUID-vkCmdClearAttachments-pRects-06937", How::Dynamic(CLEAR_ATTACHMENTS)),
+            ("VUID-vkCmdClearAttachments-baseArrayLayer-00018", How::User(CLEAR_MULTIVIEW)),
+            ("VUID-VkClearAttachment-clearValue-00021", How::Static(CLEAR_VALUE)),
+            ("VUID-vkCmdClearAttachments-commandBuffer-02504", How::User(CLEAR_PROTECTED)),
+            ("VUID-vkCmdClearAttachments-commandBuffer-02505", How::User(CLEAR_PROTECTED)),
         ],
         ..NONE
     },
