@@ -533,31 +533,66 @@ fn dynamic_rendering_draws_check_their_pipeline_formats() {
 fn direct_draws_fetch_inside_their_vertex_buffers() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
-    let layout = s
-        .device
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
-        .expect("layout");
-    // Binding 0: 20-byte vertices, each reaching 20 bytes past its start.
-    let pipeline = pipelines::vertex_pipeline(&s, &layout, &target.render_pass);
-    let (vertices, _memory) = pipelines::host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
-    let clear = [vk::ClearValue::default()];
-    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-        .render_area(area())
-        .clear_values(&clear);
-    let rule = "VUID-vkCmdDraw-None-02721";
-    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let dynamic = [D::VIEWPORT, D::SCISSOR];
     // (bound offset, vertex count, first vertex, refused)
-    for (offset, count, first, refused) in [
+    let cases = [
         (0, 3, 0, false),
         (0, 4, 0, true),
         (0, 2, 1, false),
         (0, 2, 2, true),
         (20, 2, 0, false),
         (20, 3, 0, true),
-    ] {
+    ]
+    .map(|(offset, count, first, refused)| VertexDraw {
+        bind: Box::new(move |r, vertices| r.bind_vertex_buffers(0, vertices, &[offset])),
+        count,
+        first,
+        refused,
+    });
+    // The 1.3.239 layer does not check vertex fetches: tuff's error alone proves
+    // the rule (the command buffer is never submitted).
+    vertex_draws(&s, &dynamic, cases, "VUID-vkCmdDraw-None-02721", false);
+}
+
+/// How a draw of [`vertex_draws`] binds its vertex buffer.
+type BindVertices = dyn Fn(&mut Inside<'_>, &tuff::Buffer) -> tuff::Result<()>;
+
+/// One draw of [`vertex_draws`]: how it binds the vertex buffer, the vertices it
+/// draws, and whether tuff refuses it.
+struct VertexDraw {
+    bind: Box<BindVertices>,
+    count: u32,
+    first: u32,
+    refused: bool,
+}
+
+/// Records each draw with the vertex pipeline (of `dynamic` states) and a 60-byte
+/// vertex buffer bound as the draw says: a refused one names `rule`, through
+/// `draw_unchecked` too where `layer` says the layer checks it (else the layer
+/// must say nothing); the others record.
+fn vertex_draws<const N: usize>(
+    s: &Setup,
+    dynamic: &[D],
+    draws: [VertexDraw; N],
+    rule: &str,
+    layer: bool,
+) {
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let layout = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
+    // Binding 0: 20-byte vertices, each reaching 20 bytes past its start.
+    let pipeline = pipelines::vertex_pipeline_with(s, &layout, &target.render_pass, dynamic);
+    let (vertices, _memory) = pipelines::host_buffer(s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
+    let clear = [vk::ClearValue::default()];
+    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(area())
+        .clear_values(&clear);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for d in draws {
         for unchecked in [false, true] {
-            if unchecked && !refused {
+            if unchecked && !d.refused {
                 continue;
             }
             let rec = cb
@@ -568,20 +603,23 @@ fn direct_draws_fetch_inside_their_vertex_buffers() {
                 .expect("bind");
             set_viewport(&mut rec);
             set_scissor(&mut rec);
-            rec.bind_vertex_buffers(0, &vertices, &[offset])
-                .expect("vertex buffer");
+            (d.bind)(&mut rec, &vertices).expect("vertex buffer");
             if unchecked {
                 s.messages.abort_on_error(true);
-                let _ = unsafe { rec.draw_unchecked(count, 1, first, 0) };
+                // SAFETY: the layer skips the call it reports, and the command
+                // buffer is never submitted.
+                let _ = unsafe { rec.draw_unchecked(d.count, 1, d.first, 0) };
                 s.messages.abort_on_error(false);
-                // The 1.3.239 layer does not check vertex fetches: tuff's error
-                // alone proves the rule (the command buffer is never submitted).
                 let said = s.messages.take();
-                assert!(said.is_empty(), "the layer said {said:?}");
-            } else if refused {
-                assert_eq!(vuid(rec.draw(count, 1, first, 0)), rule);
+                let named = said.iter().any(|m| m.contains(rule));
+                assert!(
+                    if layer { named } else { said.is_empty() },
+                    "the layer said {said:?}"
+                );
+            } else if d.refused {
+                assert_eq!(vuid(rec.draw(d.count, 1, d.first, 0)), rule);
             } else {
-                rec.draw(count, 1, first, 0)
+                rec.draw(d.count, 1, d.first, 0)
                     .expect("a draw inside the buffer");
             }
             drop(rec);
@@ -1673,54 +1711,18 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
 fn dynamic_strides_reach_past_their_attributes() {
     let _serial = vulkan::serial();
     let s = setup(true);
-    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
-    let layout = s
-        .device
-        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
-        .expect("layout");
     let dynamic = [D::VIEWPORT, D::SCISSOR, D::VERTEX_INPUT_BINDING_STRIDE];
-    let pipeline = pipelines::vertex_pipeline_with(&s, &layout, &target.render_pass, &dynamic);
-    let (vertices, _memory) = pipelines::host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
-    let clear = [vk::ClearValue::default()];
-    let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-        .render_area(area())
-        .clear_values(&clear);
-    let rule = "VUID-vkCmdBindVertexBuffers2-pStrides-06209";
-    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     // (stride, refused)
-    for (stride, refused) in [(20, false), (0, false), (8, true)] {
-        for unchecked in [false, true] {
-            if unchecked && !refused {
-                continue;
-            }
-            let rec = cb
-                .begin(&tuff::CommandBufferBeginInfo::new())
-                .expect("begin");
-            let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
-            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
-                .expect("bind");
-            set_viewport(&mut rec);
-            set_scissor(&mut rec);
-            rec.bind_vertex_buffers2(0, &vertices, &[0], &[], &[stride])
-                .expect("vertex buffer");
-            if unchecked {
-                s.messages.abort_on_error(true);
-                let _ = unsafe { rec.draw_unchecked(2, 1, 0, 0) };
-                s.messages.abort_on_error(false);
-                let said = s.messages.take();
-                assert!(
-                    said.iter().any(|m| m.contains(rule)),
-                    "the layer said {said:?}"
-                );
-            } else if refused {
-                assert_eq!(vuid(rec.draw(2, 1, 0, 0)), rule);
-            } else {
-                rec.draw(2, 1, 0, 0).expect("a draw with its stride");
-            }
-            drop(rec);
-        }
-    }
-    assert_silent(&s.messages);
+    let cases = [(20, false), (0, false), (8, true)].map(|(stride, refused)| VertexDraw {
+        bind: Box::new(move |r, vertices| {
+            r.bind_vertex_buffers2(0, vertices, &[0], &[], &[stride])
+        }),
+        count: 2,
+        first: 0,
+        refused,
+    });
+    let rule = "VUID-vkCmdBindVertexBuffers2-pStrides-06209";
+    vertex_draws(&s, &dynamic, cases, rule, true);
 }
 
 /// A clear of attachments inside a render pass instance: an attachment the subpass

@@ -50,33 +50,75 @@ fn check_pools(queue: &Queue, i: usize, batch: &SubmitInfo<'_>) -> Result<()> {
             ),
         )?;
     }
-    let family = live.queue_family(queue.raw());
     // SAFETY: the safe struct stores the array with its length.
     let cbs =
         unsafe { crate::state::raw_slice(batch.p_command_buffers, batch.command_buffer_count) };
-    for (j, raw) in cbs.iter().enumerate() {
+    let at = |j| format!("pSubmits[{i}].pCommandBuffers[{j}]");
+    check_batch_pools(queue, protected, cbs.iter().copied(), at, &SUBMIT_POOLS)
+}
+
+/// The rules of a batch's command buffers' pools, by field: `VkSubmitInfo`'s and
+/// `VkSubmitInfo2`'s differ only in their names.
+struct PoolRules {
+    /// The pool's queue family is the queue's.
+    family: &'static str,
+    /// A protected batch's command buffers are protected.
+    protected: &'static str,
+    /// An unprotected batch's command buffers are not.
+    unprotected: &'static str,
+}
+
+const SUBMIT_POOLS: PoolRules = PoolRules {
+    family: "VUID-vkQueueSubmit-pCommandBuffers-00074",
+    protected: "VUID-VkSubmitInfo-pNext-04148",
+    unprotected: "VUID-VkSubmitInfo-pNext-04120",
+};
+
+const SUBMIT2_POOLS: PoolRules = PoolRules {
+    family: "VUID-vkQueueSubmit2-commandBuffer-03878",
+    protected: "VUID-VkSubmitInfo2-flags-03886",
+    unprotected: "VUID-VkSubmitInfo2-flags-03887",
+};
+
+/// Refuses command buffers of a batch (`protected` or not) whose pool, as the device
+/// recorded it, is of another queue family than the queue's or of the other
+/// protection; `at` names the `j`th.
+fn check_batch_pools(
+    queue: &Queue,
+    protected: bool,
+    cbs: impl Iterator<Item = vk::CommandBuffer>,
+    at: impl Fn(usize) -> String,
+    rules: &PoolRules,
+) -> Result<()> {
+    let device = queue.parent();
+    let family = device.live().queue_family(queue.raw());
+    for (j, raw) in cbs.enumerate() {
         let Some((pool_family, pool_protected)) =
-            device.command_buffer_uses(*raw).and_then(|u| u.pool())
+            device.command_buffer_uses(raw).and_then(|u| u.pool())
         else {
             continue;
         };
         if family.is_some_and(|f| f != pool_family) {
             refuse(
-                "VUID-vkQueueSubmit-pCommandBuffers-00074",
-                format!("pSubmits[{i}].pCommandBuffers[{j}] comes from a pool of queue family {pool_family}, not the queue's"),
+                rules.family,
+                format!(
+                    "{} comes from a pool of queue family {pool_family}, not the queue's",
+                    at(j)
+                ),
             )?;
         }
-        if protected && !pool_protected {
-            refuse(
-                "VUID-VkSubmitInfo-pNext-04148",
-                format!("pSubmits[{i}] is protected, and pCommandBuffers[{j}] is not a protected command buffer"),
-            )?;
-        }
-        if !protected && pool_protected {
-            refuse(
-                "VUID-VkSubmitInfo-pNext-04120",
-                format!("pSubmits[{i}] is not protected, and pCommandBuffers[{j}] is a protected command buffer"),
-            )?;
+        if protected != pool_protected {
+            let (vuid, is) = match protected {
+                true => (
+                    rules.protected,
+                    "is protected, and the command buffer is not",
+                ),
+                false => (
+                    rules.unprotected,
+                    "is not protected, and the command buffer is",
+                ),
+            };
+            refuse(vuid, format!("{}: the batch {is}", at(j)))?;
         }
     }
     Ok(())
@@ -198,7 +240,6 @@ fn check_batch2(queue: &Queue, i: usize, batch: &SubmitInfo2<'_>) -> Result<()> 
         )?;
     }
     let count = live.physical_count();
-    let family = live.queue_family(queue.raw());
     // SAFETY: the safe struct stores each array with its length.
     let (waits, cbs, signals) = unsafe {
         (
@@ -214,31 +255,10 @@ fn check_batch2(queue: &Queue, i: usize, batch: &SubmitInfo2<'_>) -> Result<()> 
                 format!("pSubmits[{i}].pCommandBufferInfos[{j}].deviceMask {:#x} names a physical device the device's {count} do not include", c.device_mask),
             )?;
         }
-        let Some((pool_family, pool_protected)) = device
-            .command_buffer_uses(c.command_buffer)
-            .and_then(|u| u.pool())
-        else {
-            continue;
-        };
-        if family.is_some_and(|f| f != pool_family) {
-            refuse(
-                "VUID-vkQueueSubmit2-commandBuffer-03878",
-                format!("pSubmits[{i}].pCommandBufferInfos[{j}] comes from a pool of queue family {pool_family}, not the queue's"),
-            )?;
-        }
-        if protected && !pool_protected {
-            refuse(
-                "VUID-VkSubmitInfo2-flags-03886",
-                format!("pSubmits[{i}] is protected, and pCommandBufferInfos[{j}] is not a protected command buffer"),
-            )?;
-        }
-        if !protected && pool_protected {
-            refuse(
-                "VUID-VkSubmitInfo2-flags-03887",
-                format!("pSubmits[{i}] is not protected, and pCommandBufferInfos[{j}] is a protected command buffer"),
-            )?;
-        }
     }
+    let at = |j| format!("pSubmits[{i}].pCommandBufferInfos[{j}]");
+    let raws = cbs.iter().map(|c| c.command_buffer);
+    check_batch_pools(queue, protected, raws, at, &SUBMIT2_POOLS)?;
     let flags = queue.queue_flags();
     for (infos, name, stage_rule) in [
         (
