@@ -2130,7 +2130,7 @@ fn cmd_copy_query_pool_results(
         s,
         |r| {
             r.reset_query_pool(&pool, 0, 1).expect("reset");
-            unsafe { r.copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, stride, flags) }
+            r.copy_query_pool_results(&pool, 0, 1, &buffer, a.dst_offset, stride, flags)
         },
         |r| {
             r.reset_query_pool(&pool, 0, 1).expect("reset");

@@ -1356,3 +1356,104 @@ fn events_without_stages_need_synchronization2() {
     rec.end().expect("end");
     assert_silent(&s.messages);
 }
+
+/// A copy of query results into a buffer: queries past the pool, results past the
+/// buffer, partial timestamps and an active query are refused with the rule's VUID,
+/// and the layer names each for the unchecked call, which it skips; a copy of every
+/// result, at its stride, inside the buffer records silently.
+#[test]
+fn query_results_are_copied_inside_their_buffer() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let pool = |ty| {
+        s.device
+            .create_query_pool(
+                &tuff::QueryPoolCreateInfo::new()
+                    .query_type(ty)
+                    .query_count(2),
+            )
+            .expect("query pool")
+    };
+    let occlusion = pool(vk::QueryType::OCCLUSION);
+    let timestamps = pool(vk::QueryType::TIMESTAMP);
+    let (buffer, _memory) = pipelines::host_buffer(&s, 16, vk::BufferUsageFlags::TRANSFER_DST);
+    let none = vk::QueryResultFlags::empty();
+    let partial = vk::QueryResultFlags::PARTIAL;
+    // (rule, pool, first, count, dstOffset, flags)
+    let cases = [
+        (
+            "VUID-vkCmdCopyQueryPoolResults-firstQuery-00821",
+            &occlusion,
+            1,
+            2,
+            0,
+            none,
+        ),
+        (
+            "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824",
+            &occlusion,
+            0,
+            2,
+            8,
+            none,
+        ),
+        (
+            "VUID-vkCmdCopyQueryPoolResults-queryType-00827",
+            &timestamps,
+            0,
+            1,
+            0,
+            partial,
+        ),
+        (
+            "VUID-vkCmdCopyQueryPoolResults-None-07429",
+            &occlusion,
+            0,
+            1,
+            0,
+            none,
+        ),
+    ];
+    let (_cb_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut wrong = Vec::new();
+    for (rule, pool, first, count, offset, flags) in cases {
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        rec.reset_query_pool(pool, 0, 2).expect("reset");
+        if rule.ends_with("-07429") {
+            // SAFETY: the pool was reset just before, so the query is unavailable.
+            unsafe { rec.begin_query(pool, 0, vk::QueryControlFlags::empty()) }
+                .expect("begin query");
+        }
+        let safe = vuid(rec.copy_query_pool_results(pool, first, count, &buffer, offset, 8, flags));
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        // SAFETY: the layer skips the call, which breaks only the rule under test;
+        // the command buffer is never submitted.
+        let _ = unsafe {
+            rec.copy_query_pool_results_unchecked(pool, first, count, &buffer, offset, 8, flags)
+        };
+        s.messages.abort_on_error(false);
+        let said = s.messages.take();
+        // The 1.3.239 layer does not check an active query's copy: the error alone
+        // proves it.
+        let named = match rule.ends_with("-07429") {
+            true => said.is_empty(),
+            false => said.iter().any(|m| m.contains(rule)),
+        };
+        if safe != rule || !named {
+            wrong.push(format!("{rule}: tuff said {safe}; the layer said {said:?}"));
+        }
+        drop(rec);
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.reset_query_pool(&occlusion, 0, 2).expect("reset");
+    rec.copy_query_pool_results(&occlusion, 0, 2, &buffer, 8, 4, none)
+        .expect("both results inside the buffer");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}

@@ -382,3 +382,90 @@ fn not_protected<S: Scope>(recorder: &Recorder<'_, S>, vuid: &'static str) -> Re
     }
     Ok(())
 }
+
+/// The checks of `vkCmdCopyQueryPoolResults`: the queries inside the pool and none
+/// of them active in this recording, the flags the pool's type allows, and every
+/// result, at its stride, inside the destination buffer.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn cmd_copy_query_pool_results_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    query_pool: &QueryPool,
+    first_query: u32,
+    query_count: u32,
+    dst_buffer: &Buffer,
+    dst_offset: vk::DeviceSize,
+    stride: vk::DeviceSize,
+    flags: vk::QueryResultFlags,
+) -> Result<()> {
+    let live = recorder.device().live();
+    let pool = live.query_pool(query_pool.raw()).ok_or(Error::Misuse(
+        "the query pool was not created through the wrappers",
+    ))?;
+    if first_query >= pool.count {
+        refuse("VUID-vkCmdCopyQueryPoolResults-firstQuery-00820", format!("firstQuery must be less than the number of queries in queryPool (firstQuery = {first_query}, queries = {})", pool.count))?;
+    }
+    let end = u64::from(first_query) + u64::from(query_count);
+    if end > u64::from(pool.count) {
+        refuse("VUID-vkCmdCopyQueryPoolResults-firstQuery-00821", format!("firstQuery plus queryCount must be at most the number of queries in queryPool (firstQuery = {first_query}, queryCount = {query_count}, queries = {})", pool.count))?;
+    }
+    if pool.query_type == vk::QueryType::PERFORMANCE_QUERY_INTEL {
+        refuse(
+            "VUID-vkCmdCopyQueryPoolResults-queryType-02734",
+            "an INTEL performance query pool's results cannot be copied",
+        )?;
+    }
+    if pool.query_type == vk::QueryType::TIMESTAMP && flags.contains(vk::QueryResultFlags::PARTIAL)
+    {
+        refuse(
+            "VUID-vkCmdCopyQueryPoolResults-queryType-00827",
+            "a timestamp query pool's results cannot be partial",
+        )?;
+    }
+    let raw = query_pool.raw();
+    if let Some(q) = recorder
+        .queries
+        .iter()
+        .find(|q| q.pool == raw && (u64::from(first_query)..end).contains(&u64::from(q.query)))
+    {
+        refuse(
+            "VUID-vkCmdCopyQueryPoolResults-None-07429",
+            format!(
+                "query {} of the pool is active (begun and not ended in this recording)",
+                q.query
+            ),
+        )?;
+    }
+    let values: u64 = match pool.query_type {
+        vk::QueryType::OCCLUSION | vk::QueryType::TIMESTAMP => 1,
+        vk::QueryType::PIPELINE_STATISTICS => u64::from(pool.statistics.as_raw().count_ones()),
+        _ => {
+            return Err(Error::Misuse(
+                "tuff cannot size the results of this query type; copy them with copy_query_pool_results_unchecked",
+            ))
+        }
+    };
+    let unit: u64 = if flags.contains(vk::QueryResultFlags::TYPE_64) {
+        8
+    } else {
+        4
+    };
+    let status = flags.intersects(
+        vk::QueryResultFlags::WITH_AVAILABILITY | vk::QueryResultFlags::WITH_STATUS_KHR,
+    );
+    let each = (values + u64::from(status)) * unit;
+    let size = live.buffer(dst_buffer.raw()).map_or(0, |b| b.size);
+    let needed = match query_count {
+        0 => Some(0),
+        n => stride
+            .checked_mul(u64::from(n - 1))
+            .and_then(|s| s.checked_add(each))
+            .and_then(|s| s.checked_add(dst_offset)),
+    };
+    match needed {
+        Some(needed) if needed <= size => Ok(()),
+        _ => refuse(
+            "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824",
+            format!("dstBuffer must hold every result from dstOffset {dst_offset}: {query_count} queries of {each} bytes at a stride of {stride}, in a buffer of {size} bytes"),
+        ),
+    }
+}

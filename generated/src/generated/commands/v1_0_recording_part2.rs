@@ -1148,37 +1148,26 @@ The caller upholds the rules that [`Self::copy_image_to_buffer`] checks at run t
     }
     /**`vkCmdCopyQueryPoolResults`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820`: `firstQuery` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821`: The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
-- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824`: `dstBuffer` must have enough storage, from `dstOffset`, to contain the result of each query, as described here
-- `VUID-vkCmdCopyQueryPoolResults-queryType-00827`: If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_TIMESTAMP`, `flags` must not contain `VK_QUERY_RESULT_PARTIAL_BIT`
-- `VUID-vkCmdCopyQueryPoolResults-None-07429`: All queries used by the command must not be active
-- `VUID-vkCmdCopyQueryPoolResults-queryType-02734`: vkCmdCopyQueryPoolResults must not be called if the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_INTEL`
-
 # Valid usage
 
 The rules of `vkCmdCopyQueryPoolResults` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyQueryPoolResults.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820` (*yours*; explicit rule): `firstQuery` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821` (*yours*; explicit rule): The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
-- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824` (*yours*; explicit rule): `dstBuffer` must have enough storage, from `dstOffset`, to contain the result of each query, as described here
-- `VUID-vkCmdCopyQueryPoolResults-queryType-00827` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_TIMESTAMP`, `flags` must not contain `VK_QUERY_RESULT_PARTIAL_BIT`
-- `VUID-vkCmdCopyQueryPoolResults-None-07429` (*yours*; explicit rule): All queries used by the command must not be active
 - `VUID-vkCmdCopyQueryPoolResults-queryType-03232` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, VkPhysicalDevicePerformanceQueryPropertiesKHR::`allowCommandBufferQueryCopies` must be `VK_TRUE`
 - `VUID-vkCmdCopyQueryPoolResults-queryType-03233` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, `flags` must not contain `VK_QUERY_RESULT_WITH_AVAILABILITY_BIT`, `VK_QUERY_RESULT_PARTIAL_BIT` or …
 - `VUID-vkCmdCopyQueryPoolResults-queryType-03234` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, the `queryPool` must have been submitted once for each pass as retrieved via a call to …
-- `VUID-vkCmdCopyQueryPoolResults-queryType-02734` (*yours*; explicit rule): vkCmdCopyQueryPoolResults must not be called if the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_INTEL`
+- `VUID-vkCmdCopyQueryPoolResults-queryType-02734` (*yours*; checked by the safe methods in every build): vkCmdCopyQueryPoolResults must not be called if the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PERFORMANCE_QUERY_INTEL`
 - `VUID-vkCmdCopyQueryPoolResults-queryType-06901` (*yours*; explicit rule): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_RESULT_STATUS_ONLY_KHR`, then `flags` must include `VK_QUERY_RESULT_WITH_STATUS_BIT_KHR`
 - `VUID-vkCmdCopyQueryPoolResults-flags-06902` (*yours*; explicit rule): If `flags` includes `VK_QUERY_RESULT_WITH_STATUS_BIT_KHR`, then it must not include `VK_QUERY_RESULT_WITH_AVAILABILITY_BIT`
 - `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819` (*checked*): `dstOffset` must be less than the size of `dstBuffer`
+- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820` (*checked*): `firstQuery` must be less than the number of queries in `queryPool`
+- `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821` (*checked*): The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
 - `VUID-vkCmdCopyQueryPoolResults-flags-00822` (*checked*): If `VK_QUERY_RESULT_64_BIT` is not set in `flags` then `dstOffset` and `stride` must be multiples of `4`
 - `VUID-vkCmdCopyQueryPoolResults-flags-00823` (*checked*): If `VK_QUERY_RESULT_64_BIT` is set in `flags` then `dstOffset` and `stride` must be multiples of `8`
+- `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824` (*checked*): `dstBuffer` must have enough storage, from `dstOffset`, to contain the result of each query, as described here
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825` (*checked*): `dstBuffer` must have been created with `VK_BUFFER_USAGE_TRANSFER_DST_BIT` usage flag
 - `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826` (*checked*): If `dstBuffer` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdCopyQueryPoolResults-queryType-00827` (*checked*): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_TIMESTAMP`, `flags` must not contain `VK_QUERY_RESULT_PARTIAL_BIT`
+- `VUID-vkCmdCopyQueryPoolResults-None-07429` (*checked*): All queries used by the command must not be active
 - `VUID-vkCmdCopyQueryPoolResults-flags-parameter` (*checked*): `flags` must be a valid combination of VkQueryResultFlagBits values
 - `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, or compute operations
 - `VUID-vkCmdCopyQueryPoolResults-commonparent` (*checked*): Each of `commandBuffer`, `dstBuffer`, and `queryPool` must have been created, allocated, or retrieved from the same VkDevice
@@ -1190,7 +1179,7 @@ The rules of `vkCmdCopyQueryPoolResults` that apply to this crate's API ([refere
 - `VUID-vkCmdCopyQueryPoolResults-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyQueryPoolResults")]
     #[inline]
-    pub unsafe fn copy_query_pool_results(
+    pub fn copy_query_pool_results(
         &mut self,
         query_pool: &QueryPool,
         first_query: u32,
@@ -1199,7 +1188,7 @@ The rules of `vkCmdCopyQueryPoolResults` that apply to this crate's API ([refere
         dst_offset: vk::DeviceSize,
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) {
+    ) -> Result<()> {
         {
             let r = self
                 .validate_copy_query_pool_results(
@@ -1209,10 +1198,18 @@ The rules of `vkCmdCopyQueryPoolResults` that apply to this crate's API ([refere
                     stride,
                     flags,
                 );
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::special::query::cmd_copy_query_pool_results_checks(
+            self,
+            query_pool,
+            first_query,
+            query_count,
+            dst_buffer,
+            dst_offset,
+            stride,
+            flags,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1231,7 +1228,7 @@ The rules of `vkCmdCopyQueryPoolResults` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-flags-00822`, `VUID-vkCmdCopyQueryPoolResults-flags-00823`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_query_pool_results`] checks at run time: `VUID-vkCmdCopyQueryPoolResults-commonparent`, `VUID-vkCmdCopyQueryPoolResults-flags-parameter`, `VUID-vkCmdCopyQueryPoolResults-commandBuffer-cmdpool`, `VUID-vkCmdCopyQueryPoolResults-dstOffset-00819`, `VUID-vkCmdCopyQueryPoolResults-flags-00822`, `VUID-vkCmdCopyQueryPoolResults-flags-00823`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00825`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00826`, `VUID-vkCmdCopyQueryPoolResults-firstQuery-00820`, `VUID-vkCmdCopyQueryPoolResults-firstQuery-00821`, `VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824`, `VUID-vkCmdCopyQueryPoolResults-queryType-00827`, `VUID-vkCmdCopyQueryPoolResults-None-07429`, `VUID-vkCmdCopyQueryPoolResults-queryType-02734`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_query_pool_results_unchecked(
         &mut self,
@@ -1242,24 +1239,27 @@ The caller upholds the rules that [`Self::copy_query_pool_results`] checks at ru
         dst_offset: vk::DeviceSize,
         stride: vk::DeviceSize,
         flags: vk::QueryResultFlags,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_copy_query_pool_results;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe {
-            fp(
-                self.raw(),
-                query_pool.raw(),
-                first_query,
-                query_count,
-                dst_buffer.raw(),
-                dst_offset,
-                stride,
-                flags,
-            )
-        };
-        self.state_changed();
-        self.retain_with(query_pool.address(), || query_pool.retained());
-        self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe {
+                fp(
+                    self.raw(),
+                    query_pool.raw(),
+                    first_query,
+                    query_count,
+                    dst_buffer.raw(),
+                    dst_offset,
+                    stride,
+                    flags,
+                )
+            };
+            self.state_changed();
+            self.retain_with(query_pool.address(), || query_pool.retained());
+            self.retain_with(dst_buffer.address(), || dst_buffer.retained());
+        }
+        Ok(())
     }
     /**`vkCmdDispatch`
 

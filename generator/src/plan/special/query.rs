@@ -9,6 +9,10 @@ use super::{call, How, Special, ACTIVE_QUERIES, ACTIVE_QUERIES_ALONE, NONE, UNPR
 const UNPROVEN_QUERIES: &str = "checked by the safe methods in every build, as the tested render-pass and query commands are (the recorder's subpass and active queries), but no test breaks it through this command yet";
 const ACTIVE_RESET: &str =
     "checks the reset's queries against those the recorder has begun and not ended";
+const COPIED_RESULTS: &str = "checks that every result, sized by the pool's type and statistics (kept from its creation) and the flags, lies at its stride inside the destination buffer's recorded size from dstOffset";
+const ACTIVE_COPY: &str =
+    "checks the copied queries against those the recorder has begun and not ended";
+const UNPROVEN_INTEL: &str = "checked by the safe methods in every build (the pool's type, kept from its creation), but no test breaks it: VK_INTEL_performance_query is not one lavapipe has";
 const PRECISE: &str = "checks a precise query's pool type, kept from its creation, and the device's occlusionQueryPrecise feature";
 const UNPROVEN_SIZE_QUERY: &str = "checked by the safe methods in every build (the pool's type, kept from its creation), but no test breaks it: no test makes an acceleration structure query pool";
 const UNPROVEN_PROTECTED: &str = "checked by the safe methods in every build (the pool's protected flag, recorded at its creation), but no test breaks it: lavapipe has no protected memory";
@@ -137,6 +141,49 @@ pub(super) const ROWS: &[Special] = &[
             (
                 "VUID-vkCmdResetQueryPool-None-02841",
                 How::Dynamic(ACTIVE_RESET),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdCopyQueryPoolResults",
+        check_last: call(
+            "special::query::cmd_copy_query_pool_results_checks",
+            &[
+                "self",
+                "query_pool",
+                "first_query",
+                "query_count",
+                "dst_buffer",
+                "dst_offset",
+                "stride",
+                "flags",
+            ],
+        ),
+        settles: &[
+            (
+                "VUID-vkCmdCopyQueryPoolResults-firstQuery-00820",
+                How::Dynamic(QUERY_RANGE),
+            ),
+            (
+                "VUID-vkCmdCopyQueryPoolResults-firstQuery-00821",
+                How::Dynamic(QUERY_RANGE),
+            ),
+            (
+                "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824",
+                How::Dynamic(COPIED_RESULTS),
+            ),
+            (
+                "VUID-vkCmdCopyQueryPoolResults-queryType-00827",
+                How::Dynamic(QUERY_POOL),
+            ),
+            (
+                "VUID-vkCmdCopyQueryPoolResults-None-07429",
+                How::Dynamic(ACTIVE_COPY),
+            ),
+            (
+                "VUID-vkCmdCopyQueryPoolResults-queryType-02734",
+                How::User(UNPROVEN_INTEL),
             ),
         ],
         ..NONE
