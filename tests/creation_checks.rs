@@ -2052,3 +2052,61 @@ fn a_struct_of_an_extension_not_enabled_is_refused_in_a_chain() {
         },
     );
 }
+
+/// A buffer's device address needs the buffer made with `SHADER_DEVICE_ADDRESS`
+/// usage and bound to memory: each is refused with the rule's VUID, and the layer
+/// names it for the unchecked call (which it skips); a bound buffer with the usage
+/// has its address.
+#[test]
+fn buffer_addresses_need_their_usage_and_memory() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup_full_features(true);
+    let d = &s.device;
+    let buffer = |usage| {
+        d.create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
+            .expect("buffer")
+    };
+    let address =
+        vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS | vk::BufferUsageFlags::STORAGE_BUFFER;
+    let bind = |b: &tuff::Buffer| {
+        let reqs = d.get_buffer_memory_requirements(b).expect("requirements");
+        let mut flags =
+            tuff::MemoryAllocateFlagsInfo::new().flags(vk::MemoryAllocateFlags::DEVICE_ADDRESS);
+        let memory = d
+            .allocate_memory(
+                &tuff::MemoryAllocateInfo::new()
+                    .allocation_size(reqs.size)
+                    .memory_type_index(
+                        s.memory_type(reqs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                    )
+                    .push_next(&mut flags),
+            )
+            .expect("memory");
+        d.bind_buffer_memory(b, &memory, 0).expect("bind");
+        memory
+    };
+    let no_usage = buffer(vk::BufferUsageFlags::STORAGE_BUFFER);
+    let _m0 = bind(&no_usage);
+    let unbound = buffer(address);
+    let mut v = Verdicts::default();
+    for (rule, b) in [
+        ("VUID-VkBufferDeviceAddressInfo-buffer-02601", &no_usage),
+        ("VUID-VkBufferDeviceAddressInfo-buffer-02600", &unbound),
+    ] {
+        let info = tuff::BufferDeviceAddressInfo::new(b);
+        let safe = d.get_buffer_device_address(&info).map(drop);
+        let layer = under_layer(&s, || {
+            // SAFETY: the layer skips the call, which breaks only the rule under test.
+            let _ = unsafe { d.get_buffer_device_address_unchecked(&info) };
+        });
+        v.judge(rule, &[], safe, layer);
+    }
+    v.finish("buffer addresses");
+    let bound = buffer(address);
+    let _m1 = bind(&bound);
+    let at = d
+        .get_buffer_device_address(&tuff::BufferDeviceAddressInfo::new(&bound))
+        .expect("the address of a bound buffer");
+    assert_ne!(at, 0);
+    vulkan::assert_silent(&s.messages);
+}

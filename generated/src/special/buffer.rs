@@ -271,3 +271,45 @@ pub(crate) fn create_buffer_checks(
     }
     Ok(())
 }
+
+/// The checks of `vkGetBufferDeviceAddress` and `vkGetBufferOpaqueCaptureAddress`:
+/// on a device group, the multi-device feature; the buffer's usage; its memory
+/// bound (unless it is sparse or made for capture and replay).
+pub(crate) fn buffer_address_checks(
+    device: &Device,
+    info: &BufferDeviceAddressInfo<'_>,
+    multi_device: &'static str,
+) -> Result<()> {
+    let live = device.live();
+    let count = live.physical_count();
+    if count > 1 && live.with_features(|f| f.v12.buffer_device_address_multi_device) != vk::TRUE {
+        refuse(
+            multi_device,
+            format!("the device has {count} physical devices, and bufferDeviceAddressMultiDevice is not enabled"),
+        )?;
+    }
+    let record = live.buffer(info.buffer).ok_or(Error::Misuse(
+        "the buffer was not created through the wrappers",
+    ))?;
+    if !record
+        .usage
+        .contains(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS)
+    {
+        refuse(
+            "VUID-VkBufferDeviceAddressInfo-buffer-02601",
+            format!(
+                "the buffer's usage {:?} lacks SHADER_DEVICE_ADDRESS",
+                record.usage
+            ),
+        )?;
+    }
+    let unbound_ok = vk::BufferCreateFlags::SPARSE_BINDING
+        | vk::BufferCreateFlags::DEVICE_ADDRESS_CAPTURE_REPLAY;
+    if !record.flags.intersects(unbound_ok) && !record.bound {
+        refuse(
+            "VUID-VkBufferDeviceAddressInfo-buffer-02600",
+            "the buffer is neither sparse nor made for capture and replay, so memory must be bound to it before its address is asked",
+        )?;
+    }
+    Ok(())
+}

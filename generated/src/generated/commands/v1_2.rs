@@ -115,14 +115,6 @@ The caller upholds the rules that [`Self::create_render_pass2`] checks at run ti
     }
     /**`vkGetBufferDeviceAddress`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetBufferDeviceAddress-device-06543`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-VkBufferDeviceAddressInfo-buffer-02600`: If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
-- `VUID-VkBufferDeviceAddressInfo-buffer-02601`: `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
-
 # Valid usage
 
 The rules of `vkGetBufferDeviceAddress` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferDeviceAddress.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -130,12 +122,12 @@ The rules of `vkGetBufferDeviceAddress` that apply to this crate's API ([referen
 - `VUID-vkGetBufferDeviceAddress-bufferDeviceAddress-03324` (*yours*; explicit rule): The `bufferDeviceAddress` or `VkPhysicalDeviceBufferDeviceAddressFeaturesEXT::bufferDeviceAddress` feature must be enabled
 - `VUID-vkGetBufferDeviceAddress-device-03325` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` or `VkPhysicalDeviceBufferDeviceAddressFeaturesEXT::bufferDeviceAddressMultiDevice` feature must be …
 - `VUID-vkGetBufferDeviceAddress-None-06542` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `bufferDeviceAddress` feature must be enabled
-- `VUID-vkGetBufferDeviceAddress-device-06543` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetBufferDeviceAddress-device-06543` (*yours*; checked by the safe methods in every build): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
 - `VUID-vkGetBufferDeviceAddress-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkGetBufferDeviceAddress-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferDeviceAddressInfo structure*/
     #[doc(alias = "vkGetBufferDeviceAddress")]
     #[inline]
-    pub unsafe fn get_buffer_device_address<'a>(
+    pub fn get_buffer_device_address<'a>(
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> Result<vk::DeviceAddress> {
@@ -143,6 +135,11 @@ The rules of `vkGetBufferDeviceAddress` that apply to this crate's API ([referen
             let r = self.validate_get_buffer_device_address(info);
             r?;
         }
+        crate::special::buffer::buffer_address_checks(
+            self,
+            info,
+            "VUID-vkGetBufferDeviceAddress-device-06543",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         Ok(unsafe { self.get_buffer_device_address_unchecked(info) })
@@ -151,7 +148,7 @@ The rules of `vkGetBufferDeviceAddress` that apply to this crate's API ([referen
 
 # Safety
 
-The caller upholds the rules that [`Self::get_buffer_device_address`] checks at run time: `VUID-vkGetBufferDeviceAddress-None-06542`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_buffer_device_address`] checks at run time: `VUID-vkGetBufferDeviceAddress-None-06542`, `VUID-vkGetBufferDeviceAddress-device-06543`, `VUID-VkBufferDeviceAddressInfo-buffer-02600`, `VUID-VkBufferDeviceAddressInfo-buffer-02601`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_buffer_device_address_unchecked<'a>(
         &self,
@@ -163,25 +160,17 @@ The caller upholds the rules that [`Self::get_buffer_device_address`] checks at 
     }
     /**`vkGetBufferOpaqueCaptureAddress`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetBufferOpaqueCaptureAddress-device-03327`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-VkBufferDeviceAddressInfo-buffer-02600`: If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
-- `VUID-VkBufferDeviceAddressInfo-buffer-02601`: `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
-
 # Valid usage
 
 The rules of `vkGetBufferOpaqueCaptureAddress` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetBufferOpaqueCaptureAddress.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetBufferOpaqueCaptureAddress-None-03326` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `bufferDeviceAddress` feature must be enabled
-- `VUID-vkGetBufferOpaqueCaptureAddress-device-03327` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetBufferOpaqueCaptureAddress-device-03327` (*yours*; checked by the safe methods in every build): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
 - `VUID-vkGetBufferOpaqueCaptureAddress-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkGetBufferOpaqueCaptureAddress-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkBufferDeviceAddressInfo structure*/
     #[doc(alias = "vkGetBufferOpaqueCaptureAddress")]
     #[inline]
-    pub unsafe fn get_buffer_opaque_capture_address<'a>(
+    pub fn get_buffer_opaque_capture_address<'a>(
         &self,
         info: &BufferDeviceAddressInfo<'a>,
     ) -> Result<u64> {
@@ -189,6 +178,11 @@ The rules of `vkGetBufferOpaqueCaptureAddress` that apply to this crate's API ([
             let r = self.validate_get_buffer_opaque_capture_address(info);
             r?;
         }
+        crate::special::buffer::buffer_address_checks(
+            self,
+            info,
+            "VUID-vkGetBufferOpaqueCaptureAddress-device-03327",
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         Ok(unsafe { self.get_buffer_opaque_capture_address_unchecked(info) })
@@ -197,7 +191,7 @@ The rules of `vkGetBufferOpaqueCaptureAddress` that apply to this crate's API ([
 
 # Safety
 
-The caller upholds the rules that [`Self::get_buffer_opaque_capture_address`] checks at run time: `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_buffer_opaque_capture_address`] checks at run time: `VUID-vkGetBufferOpaqueCaptureAddress-None-03326`, `VUID-vkGetBufferOpaqueCaptureAddress-device-03327`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_buffer_opaque_capture_address_unchecked<'a>(
         &self,

@@ -219,8 +219,8 @@ for AttachmentReferenceStencilLayout<'a> {}
 
 The rules of `VkBufferDeviceAddressInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBufferDeviceAddressInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBufferDeviceAddressInfo-buffer-02600` (*yours*; explicit rule): If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
-- `VUID-VkBufferDeviceAddressInfo-buffer-02601` (*yours*; explicit rule): `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
+- `VUID-VkBufferDeviceAddressInfo-buffer-02600` (*checked*): If `buffer` is non-sparse and was not created with the `VK_BUFFER_CREATE_DEVICE_ADDRESS_CAPTURE_REPLAY_BIT` flag, then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkBufferDeviceAddressInfo-buffer-02601` (*checked*): `buffer` must have been created with `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT`
 - `VUID-VkBufferDeviceAddressInfo-buffer-parameter` (*checked*): `buffer` must be a valid VkBuffer handle
 - `VUID-VkBufferDeviceAddressInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO`
 - `VUID-VkBufferDeviceAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
