@@ -1108,7 +1108,7 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                 let mut rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                unsafe { rec.fill_buffer(buffer, 0, 256, 1) }.expect("fill");
+                rec.fill_buffer(buffer, 0, 256, 1).expect("fill");
                 rec.end().expect("end");
                 for _ in 0..200 {
                     queue
@@ -1148,7 +1148,7 @@ fn buffers_of_one_pool_are_recorded_and_freed_from_two_threads_one_at_a_time() {
                     let mut rec = cb
                         .begin(&tuff::CommandBufferBeginInfo::new())
                         .expect("begin");
-                    unsafe { rec.fill_buffer(buffer, 0, 256, i) }.expect("fill");
+                    rec.fill_buffer(buffer, 0, 256, i).expect("fill");
                     rec.end().expect("end");
                 }
                 // Freed while the other thread may be recording from the same pool.
