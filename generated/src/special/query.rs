@@ -67,25 +67,8 @@ pub(crate) fn get_query_pool_results_checks(
             "a timestamp query pool's results cannot be partial",
         )?;
     }
-    let values: u64 = match pool.query_type {
-        vk::QueryType::OCCLUSION | vk::QueryType::TIMESTAMP => 1,
-        vk::QueryType::PIPELINE_STATISTICS => u64::from(pool.statistics.as_raw().count_ones()),
-        _ => {
-            return Err(Error::Misuse(
-                "tuff cannot size the results of this query type; read them with get_query_pool_results_unchecked",
-            ))
-        }
-    };
-    let status = flags.intersects(
-        vk::QueryResultFlags::WITH_AVAILABILITY | vk::QueryResultFlags::WITH_STATUS_KHR,
-    );
-    let each = (values + u64::from(status)) * unit;
-    let needed = match query_count {
-        0 => Some(0),
-        n => stride
-            .checked_mul(u64::from(n - 1))
-            .and_then(|s| s.checked_add(each)),
-    };
+    let unchecked = "tuff cannot size the results of this query type; read them with get_query_pool_results_unchecked";
+    let (each, needed) = results_size(&pool, query_count, stride, flags, unchecked)?;
     match needed {
         Some(needed) if needed <= data.len() as u64 => Ok(()),
         _ => refuse(
@@ -435,14 +418,34 @@ pub(crate) fn cmd_copy_query_pool_results_checks<S: Scope>(
             ),
         )?;
     }
+    let unchecked = "tuff cannot size the results of this query type; copy them with copy_query_pool_results_unchecked";
+    let (each, needed) = results_size(&pool, query_count, stride, flags, unchecked)?;
+    let size = live.buffer(dst_buffer.raw()).map_or(0, |b| b.size);
+    let needed = needed.and_then(|n| n.checked_add(dst_offset));
+    match needed {
+        Some(needed) if needed <= size => Ok(()),
+        _ => refuse(
+            "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824",
+            format!("dstBuffer must hold every result from dstOffset {dst_offset}: {query_count} queries of {each} bytes at a stride of {stride}, in a buffer of {size} bytes"),
+        ),
+    }
+}
+
+/// The bytes of one query's results (its values, by the pool's type and statistics,
+/// and its availability or status where `flags` ask for them, each 4 or 8 bytes),
+/// and those of `count` results at `stride` (`None` past u64). A type whose results
+/// tuff cannot size is refused with `unchecked`, which names the method to use.
+fn results_size(
+    pool: &QueryPoolRecord,
+    count: u32,
+    stride: vk::DeviceSize,
+    flags: vk::QueryResultFlags,
+    unchecked: &'static str,
+) -> Result<(u64, Option<u64>)> {
     let values: u64 = match pool.query_type {
         vk::QueryType::OCCLUSION | vk::QueryType::TIMESTAMP => 1,
         vk::QueryType::PIPELINE_STATISTICS => u64::from(pool.statistics.as_raw().count_ones()),
-        _ => {
-            return Err(Error::Misuse(
-                "tuff cannot size the results of this query type; copy them with copy_query_pool_results_unchecked",
-            ))
-        }
+        _ => return Err(Error::Misuse(unchecked)),
     };
     let unit: u64 = if flags.contains(vk::QueryResultFlags::TYPE_64) {
         8
@@ -453,19 +456,11 @@ pub(crate) fn cmd_copy_query_pool_results_checks<S: Scope>(
         vk::QueryResultFlags::WITH_AVAILABILITY | vk::QueryResultFlags::WITH_STATUS_KHR,
     );
     let each = (values + u64::from(status)) * unit;
-    let size = live.buffer(dst_buffer.raw()).map_or(0, |b| b.size);
-    let needed = match query_count {
+    let all = match count {
         0 => Some(0),
         n => stride
             .checked_mul(u64::from(n - 1))
-            .and_then(|s| s.checked_add(each))
-            .and_then(|s| s.checked_add(dst_offset)),
+            .and_then(|s| s.checked_add(each)),
     };
-    match needed {
-        Some(needed) if needed <= size => Ok(()),
-        _ => refuse(
-            "VUID-vkCmdCopyQueryPoolResults-dstBuffer-00824",
-            format!("dstBuffer must hold every result from dstOffset {dst_offset}: {query_count} queries of {each} bytes at a stride of {stride}, in a buffer of {size} bytes"),
-        ),
-    }
+    Ok((each, all))
 }
