@@ -448,19 +448,19 @@ where
     let regions: SmallVec<[Region; 4]> = regions.iter().map(Region::from).collect();
     let device = recorder.device();
     let family = pool_family(recorder);
-    if let Some(record) = device.live().image(image) {
-        check_regions(device, &record, family, regions.iter().copied(), rules)?;
+    let image_record = device.live().image(image);
+    if let Some(record) = &image_record {
+        check_regions(device, record, family, regions.iter().copied(), rules)?;
         if rules.to_image {
-            check_depth_values(&record, &regions, rules)?;
+            check_depth_values(record, &regions, rules)?;
         }
     }
-    let live = device.live();
-    let buffer_protected = live
+    let buffer_protected = device
+        .live()
         .buffer(buffer)
         .is_some_and(|b| b.flags.contains(vk::BufferCreateFlags::PROTECTED));
-    let image_protected = live
-        .image(image)
-        .is_some_and(|i| i.flags.contains(vk::ImageCreateFlags::PROTECTED));
+    let image_protected =
+        image_record.is_some_and(|i| i.flags.contains(vk::ImageCreateFlags::PROTECTED));
     let (src, dst) = if rules.to_image {
         (buffer_protected, image_protected)
     } else {

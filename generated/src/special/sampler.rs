@@ -50,8 +50,15 @@ pub(crate) fn create_sampler_hold(device: &Device) -> Result<tuff_runtime::Vutex
 /// against the device's features.
 pub(crate) fn sampler_checks(device: &Device, create_info: &SamplerCreateInfo<'_>) -> Result<()> {
     let info = create_info.as_raw();
-    values_read(device, info)?;
-    conversion_checks(device, info)?;
+    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
+    let reduction: Option<&vk::SamplerReductionModeCreateInfo<'_>> = unsafe {
+        chained(
+            info.p_next,
+            vk::StructureType::SAMPLER_REDUCTION_MODE_CREATE_INFO,
+        )
+    };
+    values_valid(device, info)?;
+    conversion_checks(device, info, reduction)?;
     if info.unnormalized_coordinates == vk::TRUE && info.min_filter != info.mag_filter {
         refuse(
             "VUID-VkSamplerCreateInfo-unnormalizedCoordinates-01072",
@@ -75,13 +82,6 @@ pub(crate) fn sampler_checks(device: &Device, create_info: &SamplerCreateInfo<'_
             format!("address modes {modes:?} use MIRROR_CLAMP_TO_EDGE, but the device does not enable samplerMirrorClampToEdge"),
         )?;
     }
-    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
-    let reduction: Option<&vk::SamplerReductionModeCreateInfo<'_>> = unsafe {
-        chained(
-            info.p_next,
-            vk::StructureType::SAMPLER_REDUCTION_MODE_CREATE_INFO,
-        )
-    };
     let Some(mode) = reduction
         .map(|r| r.reduction_mode)
         .filter(|m| *m != vk::SamplerReductionMode::WEIGHTED_AVERAGE)
@@ -108,14 +108,14 @@ pub(crate) fn sampler_checks(device: &Device, create_info: &SamplerCreateInfo<'_
 /// comparison is on; the registry marks them `noautovalidity`), but drivers read
 /// them at creation whatever the modes (lavapipe crashes on an invalid border
 /// colour), so the safe method asks it always, naming the rule that would apply.
-fn values_read(device: &Device, info: &vk::SamplerCreateInfo<'_>) -> Result<()> {
+fn values_valid(device: &Device, info: &vk::SamplerCreateInfo<'_>) -> Result<()> {
+    use vk::BorderColor as B;
     let scope = device.scope();
     let custom = [crate::checks::origin::VK_EXT_CUSTOM_BORDER_COLOR];
-    let valid = match info.border_color.as_raw() {
-        0..=5 => true,
-        // FLOAT_CUSTOM_EXT and INT_CUSTOM_EXT.
-        1000287003 | 1000287004 => scope.enabled(&custom),
-        _ => false,
+    let valid = match info.border_color {
+        B::FLOAT_CUSTOM_EXT | B::INT_CUSTOM_EXT => scope.enabled(&custom),
+        b => (B::FLOAT_TRANSPARENT_BLACK.as_raw()..=B::INT_OPAQUE_WHITE.as_raw())
+            .contains(&b.as_raw()),
     };
     if !valid {
         refuse(
@@ -134,7 +134,11 @@ fn values_read(device: &Device, info: &vk::SamplerCreateInfo<'_>) -> Result<()> 
 /// without anisotropy or unnormalized coordinates, reduces by weighted average, and
 /// filters as the conversion's chroma filter unless the conversion's format can
 /// reconstruct chroma with its own filter.
-fn conversion_checks(device: &Device, info: &vk::SamplerCreateInfo<'_>) -> Result<()> {
+fn conversion_checks(
+    device: &Device,
+    info: &vk::SamplerCreateInfo<'_>,
+    reduction: Option<&vk::SamplerReductionModeCreateInfo<'_>>,
+) -> Result<()> {
     // SAFETY: the `pNext` of a safe struct, and the type its sType names.
     let conversion: Option<&vk::SamplerYcbcrConversionInfo<'_>> = unsafe {
         chained(
@@ -161,13 +165,6 @@ fn conversion_checks(device: &Device, info: &vk::SamplerCreateInfo<'_>) -> Resul
             format!("a sampler with a Y'CbCr conversion clamps to the edge without anisotropy or unnormalized coordinates (address modes {modes:?}, anisotropyEnable {}, unnormalizedCoordinates {})", info.anisotropy_enable, info.unnormalized_coordinates),
         )?;
     }
-    // SAFETY: the `pNext` of a safe struct, and the type its sType names.
-    let reduction: Option<&vk::SamplerReductionModeCreateInfo<'_>> = unsafe {
-        chained(
-            info.p_next,
-            vk::StructureType::SAMPLER_REDUCTION_MODE_CREATE_INFO,
-        )
-    };
     if let Some(r) =
         reduction.filter(|r| r.reduction_mode != vk::SamplerReductionMode::WEIGHTED_AVERAGE)
     {
