@@ -1877,6 +1877,26 @@ oracle_cases! {
             v.offset += 1;
         },
     },
+    cmd_dispatch_base: args::CmdDispatchBase {
+        "VUID-vkCmdDispatchBase-baseGroupX-00421" => |v, l, o| {
+            v.base_group_x = l.max_compute_work_group_count[0] as _;
+        },
+        "VUID-vkCmdDispatchBase-baseGroupX-00422" => |v, l, o| {
+            v.base_group_y = l.max_compute_work_group_count[1] as _;
+        },
+        "VUID-vkCmdDispatchBase-baseGroupZ-00423" => |v, l, o| {
+            v.base_group_z = l.max_compute_work_group_count[2] as _;
+        },
+        "VUID-vkCmdDispatchBase-groupCountX-00424" => |v, l, o| {
+            v.base_group_x = (l.max_compute_work_group_count[0] as i64 - v.group_count_x as i64 + 1) as _;
+        },
+        "VUID-vkCmdDispatchBase-groupCountY-00425" => |v, l, o| {
+            v.base_group_y = (l.max_compute_work_group_count[1] as i64 - v.group_count_y as i64 + 1) as _;
+        },
+        "VUID-vkCmdDispatchBase-groupCountZ-00426" => |v, l, o| {
+            v.base_group_z = (l.max_compute_work_group_count[2] as i64 - v.group_count_z as i64 + 1) as _;
+        },
+    },
     create_private_data_slot: args::CreatePrivateDataSlot {
         "VUID-vkCreatePrivateDataSlot-privateData-04564" on bare => |v, l, o| {
         },

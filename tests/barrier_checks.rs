@@ -8,10 +8,12 @@
 //! call with the rule's VUID, and the validation layer, for the `_unchecked` twin
 //! (told to skip the call it reports), must name the same VUID.
 //!
-//! SAFETY of the `unsafe` blocks: `pipeline_barrier` is `unsafe` for rules its
-//! `# Safety` section lists, which these barriers keep but for the one each case
-//! breaks on purpose, which tuff refuses and the layer skips; no command buffer is
-//! submitted.
+//! Each case runs in both versions: `vkCmdPipelineBarrier`, and the same barriers
+//! as synchronization2's structs (each under the command's stages) through
+//! `vkCmdPipelineBarrier2`, whose rules have the same numbers.
+//!
+//! SAFETY of the `unsafe` blocks: each `_unchecked` call breaks only the rule under
+//! test, which the layer reports and so skips; no command buffer is submitted.
 
 #[path = "common/tuff_setup.rs"]
 mod tuff_setup;
@@ -26,6 +28,8 @@ type L = vk::ImageLayout;
 type U = vk::ImageUsageFlags;
 type S = vk::PipelineStageFlags;
 type A = vk::AccessFlags;
+type S2 = vk::PipelineStageFlags2;
+type A2 = vk::AccessFlags2;
 const COLOR: vk::ImageAspectFlags = vk::ImageAspectFlags::COLOR;
 const DEPTH: vk::ImageAspectFlags = vk::ImageAspectFlags::DEPTH;
 const STENCIL: vk::ImageAspectFlags = vk::ImageAspectFlags::STENCIL;
@@ -140,6 +144,59 @@ fn buffer_barrier(buffer: &tuff::Buffer) -> tuff::BufferMemoryBarrier<'_> {
         .size(vk::WHOLE_SIZE)
 }
 
+/// The wrappers the cases' barriers name, by which the second version's structs
+/// (which borrow them) are built from the first's (which hold raw handles).
+struct Handles<'h> {
+    images: Vec<&'h tuff::Image>,
+    buffers: Vec<&'h tuff::Buffer>,
+}
+
+impl<'h> Handles<'h> {
+    fn of(o: &'h Objects, more: &[&'h tuff::Image]) -> Self {
+        let mut images = vec![&o.color, &o.no_src, &o.no_dst, &o.depth];
+        images.extend(more);
+        Handles {
+            images,
+            buffers: vec![&o.buffer],
+        }
+    }
+
+    fn image(&self, raw: vk::Image) -> &'h tuff::Image {
+        use tuff::Handle as _;
+        self.images
+            .iter()
+            .find(|i| i.raw() == raw)
+            .expect("a barrier names an image of the cases")
+    }
+
+    fn buffer(&self, raw: vk::Buffer) -> &'h tuff::Buffer {
+        use tuff::Handle as _;
+        self.buffers
+            .iter()
+            .find(|b| b.raw() == raw)
+            .expect("a barrier names the buffer of the cases")
+    }
+}
+
+/// Which command records a case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Version {
+    One,
+    Two,
+}
+
+impl Version {
+    /// The rule of this version with the number `rule` (a first-version VUID) has.
+    fn rule(self, rule: &str) -> String {
+        match self {
+            Version::One => rule.to_string(),
+            Version::Two => rule
+                .replace("MemoryBarrier-", "MemoryBarrier2-")
+                .replace("vkCmdPipelineBarrier-", "vkCmdPipelineBarrier2-"),
+        }
+    }
+}
+
 /// One pipeline barrier: its stages, flags and barriers.
 struct Barrier<'a> {
     stages: (S, S),
@@ -171,8 +228,8 @@ impl<'a> Barrier<'a> {
         unchecked: bool,
     ) -> tuff::Result<()> {
         let (src, dst) = self.stages;
-        unsafe {
-            if unchecked {
+        if unchecked {
+            unsafe {
                 rec.pipeline_barrier_unchecked(
                     src,
                     dst,
@@ -181,16 +238,97 @@ impl<'a> Barrier<'a> {
                     &self.buffers,
                     &self.images,
                 )
-            } else {
-                rec.pipeline_barrier(
-                    src,
-                    dst,
-                    self.flags,
-                    &self.memory,
-                    &self.buffers,
-                    &self.images,
-                )
             }
+        } else {
+            rec.pipeline_barrier(
+                src,
+                dst,
+                self.flags,
+                &self.memory,
+                &self.buffers,
+                &self.images,
+            )
+        }
+    }
+
+    /// Records the same barriers through `vkCmdPipelineBarrier2`, each under the
+    /// command's stages.
+    fn record2<St: tuff::recorder::State>(
+        &self,
+        rec: &mut tuff::Recorder<'_, St>,
+        unchecked: bool,
+        handles: &Handles<'_>,
+    ) -> tuff::Result<()> {
+        let widen = |s: S| S2::from_raw(u64::from(s.as_raw()));
+        let access = |a: A| A2::from_raw(u64::from(a.as_raw()));
+        let (src, dst) = (widen(self.stages.0), widen(self.stages.1));
+        // The second version's stages are its barriers': an execution dependency
+        // without barriers is a memory barrier without access types.
+        let none = [tuff::MemoryBarrier::new()];
+        let bare = self.memory.is_empty() && self.buffers.is_empty() && self.images.is_empty();
+        let memory: Vec<_> = if bare { &none[..] } else { &self.memory[..] }
+            .iter()
+            .map(|b| {
+                tuff::MemoryBarrier2::new()
+                    .src_stage_mask(src)
+                    .dst_stage_mask(dst)
+                    .src_access_mask(access(b.src_access_mask))
+                    .dst_access_mask(access(b.dst_access_mask))
+            })
+            .collect();
+        let buffers: Vec<_> = self
+            .buffers
+            .iter()
+            .map(|b| {
+                tuff::BufferMemoryBarrier2::new(handles.buffer(b.buffer))
+                    .src_stage_mask(src)
+                    .dst_stage_mask(dst)
+                    .src_access_mask(access(b.src_access_mask))
+                    .dst_access_mask(access(b.dst_access_mask))
+                    .src_queue_family_index(b.src_queue_family_index)
+                    .dst_queue_family_index(b.dst_queue_family_index)
+                    .offset(b.offset)
+                    .size(b.size)
+            })
+            .collect();
+        let images: Vec<_> = self
+            .images
+            .iter()
+            .map(|b| {
+                tuff::ImageMemoryBarrier2::new(handles.image(b.image))
+                    .src_stage_mask(src)
+                    .dst_stage_mask(dst)
+                    .src_access_mask(access(b.src_access_mask))
+                    .dst_access_mask(access(b.dst_access_mask))
+                    .src_queue_family_index(b.src_queue_family_index)
+                    .dst_queue_family_index(b.dst_queue_family_index)
+                    .old_layout(b.old_layout)
+                    .new_layout(b.new_layout)
+                    .subresource_range(b.subresource_range)
+            })
+            .collect();
+        let info = tuff::DependencyInfo::new()
+            .dependency_flags(self.flags)
+            .memory_barriers(&memory)
+            .buffer_memory_barriers(&buffers)
+            .image_memory_barriers(&images);
+        if unchecked {
+            unsafe { rec.pipeline_barrier2_unchecked(&info) }
+        } else {
+            rec.pipeline_barrier2(&info)
+        }
+    }
+
+    /// Records the barriers through `version`'s command.
+    fn record_as<St: tuff::recorder::State>(
+        &self,
+        rec: &mut tuff::Recorder<'_, St>,
+        unchecked: bool,
+        (version, handles): (Version, &Handles<'_>),
+    ) -> tuff::Result<()> {
+        match version {
+            Version::One => self.record(rec, unchecked),
+            Version::Two => self.record2(rec, unchecked, handles),
         }
     }
 }
@@ -213,32 +351,33 @@ fn try_case(
     s: &Setup,
     what: &str,
     barrier: &Barrier<'_>,
-    rule: &str,
+    (rule, version, handles): (&str, Version, &Handles<'_>),
     layer_says: Layer,
 ) -> Option<String> {
+    let rule: &str = &version.rule(rule);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let safe = match barrier.record(&mut rec, false) {
+    let safe = match barrier.record_as(&mut rec, false, (version, handles)) {
         Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
         other => format!("{other:?}"),
     };
     s.messages.take();
     s.messages.abort_on_error(true);
-    let _ = barrier.record(&mut rec, true);
+    let _ = barrier.record_as(&mut rec, true, (version, handles));
     s.messages.abort_on_error(false);
     let layer = s.messages.take();
     rec.end().expect("end");
     let errors: Vec<_> = layer.iter().filter(|m| m.starts_with("ERROR")).collect();
     let named = match layer_says {
         Layer::Names => errors.iter().any(|m| m.contains(rule)),
-        Layer::NamesAs(other) => errors.iter().any(|m| m.contains(other)),
+        Layer::NamesAs(other) => errors.iter().any(|m| m.contains(&version.rule(other))),
         Layer::Silent => errors.is_empty(),
     };
     (safe != rule || !named).then(|| {
         format!(
-            "{what}: tuff said {safe}, expected {rule}; the layer said {:?}",
+            "{what} ({version:?}): tuff said {safe}, expected {rule}; the layer said {:?}",
             layer
                 .iter()
                 .map(|m| m.split(']').next().unwrap_or(m))
@@ -309,19 +448,23 @@ fn barriers_are_checked_against_their_resources_and_the_layer_agrees() {
             "srcQueueFamilyIndex-03939",
         ),
     ];
+    let handles = Handles::of(&o, &[]);
     let mut wrong = Vec::new();
-    for (image, aspect, layout, tail) in layout_cases {
-        let rule = format!("VUID-VkImageMemoryBarrier-{tail}");
-        let b = Barrier::new().image(image_barrier(image, aspect, L::UNDEFINED, layout));
-        // The 1.3.239 layer does not check the usage of synchronization2's layouts.
-        let layer = if tail.starts_with("srcQueueFamilyIndex") {
-            Layer::Silent
-        } else {
-            Layer::Names
-        };
-        wrong.extend(try_case(&s, &format!("to {layout:?}"), &b, &rule, layer));
+    for version in [Version::One, Version::Two] {
+        for &(image, aspect, layout, tail) in &layout_cases {
+            let rule = format!("VUID-VkImageMemoryBarrier-{tail}");
+            let b = Barrier::new().image(image_barrier(image, aspect, L::UNDEFINED, layout));
+            // The 1.3.239 layer does not check the usage of synchronization2's layouts.
+            let layer = if tail.starts_with("srcQueueFamilyIndex") {
+                Layer::Silent
+            } else {
+                Layer::Names
+            };
+            let what = format!("to {layout:?}");
+            wrong.extend(try_case(&s, &what, &b, (&rule, version, &handles), layer));
+        }
     }
-    let mut cases: Vec<(&str, Barrier<'_>, &str, Layer)> = vec![
+    let cases: Vec<(&str, Barrier<'_>, &str, Layer)> = vec![
         (
             "a barrier to UNDEFINED",
             Barrier::new().image(image_barrier(&o.color, COLOR, L::GENERAL, L::UNDEFINED)),
@@ -446,8 +589,14 @@ fn barriers_are_checked_against_their_resources_and_the_layer_agrees() {
             Layer::Names,
         ),
     ];
-    for (what, b, rule, layer) in cases.drain(..) {
-        wrong.extend(try_case(&s, what, &b, rule, layer));
+    for version in [Version::One, Version::Two] {
+        for (what, b, rule, layer) in &cases {
+            // The second version's access types are its structs' own rules.
+            if version == Version::Two && rule.contains("-028") {
+                continue;
+            }
+            wrong.extend(try_case(&s, what, b, (rule, version, &handles), *layer));
+        }
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
     assert_silent(&s.messages);
@@ -473,7 +622,18 @@ fn an_empty_stage_mask_needs_synchronization2() {
             stages,
             ..Barrier::new()
         };
-        wrong.extend(try_case(&s, rule, &b, rule, Layer::Names));
+        // The second version needs synchronization2, which allows an empty mask.
+        let handles = Handles {
+            images: Vec::new(),
+            buffers: Vec::new(),
+        };
+        wrong.extend(try_case(
+            &s,
+            rule,
+            &b,
+            (rule, Version::One, &handles),
+            Layer::Names,
+        ));
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
     assert_silent(&s.messages);
@@ -486,30 +646,34 @@ fn separate_depth_and_stencil_layouts_are_checked() {
     let _serial = vulkan::serial();
     let s = setup_full_features(true);
     let o = objects(&s);
+    let handles = Handles::of(&o, &[]);
     let mut wrong = Vec::new();
-    for (aspect, layout, tail) in [
-        (
-            DEPTH,
-            L::DEPTH_READ_ONLY_OPTIMAL,
-            "srcQueueFamilyIndex-04065",
-        ),
-        (
-            DEPTH,
-            L::DEPTH_ATTACHMENT_OPTIMAL,
-            "srcQueueFamilyIndex-04066",
-        ),
-        (
-            STENCIL,
-            L::STENCIL_READ_ONLY_OPTIMAL,
-            "srcQueueFamilyIndex-04067",
-        ),
-        (
-            STENCIL,
-            L::STENCIL_ATTACHMENT_OPTIMAL,
-            "srcQueueFamilyIndex-04068",
-        ),
-        (COLOR, L::GENERAL, "image-03319"),
-    ] {
+    for (aspect, layout, tail, version) in [Version::One, Version::Two].into_iter().flat_map(|v| {
+        [
+            (
+                DEPTH,
+                L::DEPTH_READ_ONLY_OPTIMAL,
+                "srcQueueFamilyIndex-04065",
+            ),
+            (
+                DEPTH,
+                L::DEPTH_ATTACHMENT_OPTIMAL,
+                "srcQueueFamilyIndex-04066",
+            ),
+            (
+                STENCIL,
+                L::STENCIL_READ_ONLY_OPTIMAL,
+                "srcQueueFamilyIndex-04067",
+            ),
+            (
+                STENCIL,
+                L::STENCIL_ATTACHMENT_OPTIMAL,
+                "srcQueueFamilyIndex-04068",
+            ),
+            (COLOR, L::GENERAL, "image-03319"),
+        ]
+        .map(|(a, l, t)| (a, l, t, v))
+    }) {
         let rule = format!("VUID-VkImageMemoryBarrier-{tail}");
         let b = Barrier::new().image(image_barrier(&o.depth, aspect, L::UNDEFINED, layout));
         // The 1.3.239 layer does not check the usage of separate depth and stencil
@@ -519,7 +683,7 @@ fn separate_depth_and_stencil_layouts_are_checked() {
         } else {
             Layer::Names
         };
-        wrong.extend(try_case(&s, &rule, &b, &rule, layer));
+        wrong.extend(try_case(&s, &rule, &b, (&rule, version, &handles), layer));
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
     assert_silent(&s.messages);
@@ -644,26 +808,32 @@ fn barriers_inside_render_pass_instances_are_checked() {
             "VUID-vkCmdPipelineBarrier-pDependencies-02285",
         ),
     ];
+    let handles = Handles::of(&o, &[&target.image]);
+    let versions = [Version::One, Version::Two];
     let mut wrong = Vec::new();
-    for (b, rule) in &cases {
+    for (version, (b, rule)) in versions
+        .iter()
+        .flat_map(|v| cases.iter().map(move |c| (*v, c)))
+    {
+        let rule = &version.rule(rule);
         let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
         let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
-        let safe = match b.record(&mut rec, false) {
+        let safe = match b.record_as(&mut rec, false, (version, &handles)) {
             Err(tuff::Error::Validation { vuid, .. }) => vuid.to_string(),
             other => format!("{other:?}"),
         };
         s.messages.take();
         s.messages.abort_on_error(true);
-        let _ = b.record(&mut rec, true);
+        let _ = b.record_as(&mut rec, true, (version, &handles));
         s.messages.abort_on_error(false);
         let layer = s.messages.take();
         rec.end_render_pass().end().expect("end");
         if safe != *rule || !layer.iter().any(|m| m.contains(rule)) {
             wrong.push(format!(
-                "tuff said {safe}, expected {rule}; the layer said {:?}",
+                "{version:?}: tuff said {safe}, expected {rule}; the layer said {:?}",
                 layer
                     .iter()
                     .map(|m| m.split(']').next().unwrap_or(m))
@@ -673,6 +843,7 @@ fn barriers_inside_render_pass_instances_are_checked() {
     }
     // Dynamic rendering.
     let rule = "VUID-vkCmdPipelineBarrier-None-06191";
+    let rule2 = &Version::Two.rule(rule);
     let color = [tuff::RenderingAttachmentInfo::new()
         .image_view(Some(&target.view))
         .image_layout(attachment)
@@ -702,17 +873,184 @@ fn barriers_inside_render_pass_instances_are_checked() {
         .record(&mut rec, false)
         .expect("to COLOR_ATTACHMENT_OPTIMAL");
     let mut rec = unsafe { rec.begin_rendering(&info) };
-    assert_eq!(vuid(b.record(&mut rec, false)), rule);
-    s.messages.take();
-    s.messages.abort_on_error(true);
-    let _ = b.record(&mut rec, true);
-    s.messages.abort_on_error(false);
-    let layer = s.messages.take();
-    assert!(
-        layer.iter().any(|m| m.contains(rule)),
-        "the layer did not name {rule}: {layer:?}"
-    );
+    for (version, rule) in [(Version::One, rule), (Version::Two, rule2)] {
+        assert_eq!(
+            vuid(b.record_as(&mut rec, false, (version, &handles))),
+            rule
+        );
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        let _ = b.record_as(&mut rec, true, (version, &handles));
+        s.messages.abort_on_error(false);
+        let layer = s.messages.take();
+        assert!(
+            layer.iter().any(|m| m.contains(rule)),
+            "the layer did not name {rule}: {layer:?}"
+        );
+    }
     rec.end_rendering().end().expect("end");
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert_silent(&s.messages);
+}
+
+/// Records `info` through `vkCmdPipelineBarrier2`, safely (which must name `rule`)
+/// and unchecked under the layer (which must say what `layer_says`); returns what
+/// went wrong.
+fn try_dependency(
+    s: &Setup,
+    what: &str,
+    info: &tuff::DependencyInfo<'_>,
+    rule: &str,
+    layer_says: Layer,
+) -> Option<String> {
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let safe = vuid(rec.pipeline_barrier2(info));
+    s.messages.take();
+    s.messages.abort_on_error(true);
+    let _ = unsafe { rec.pipeline_barrier2_unchecked(info) };
+    s.messages.abort_on_error(false);
+    let layer = s.messages.take();
+    rec.end().expect("end");
+    let errors: Vec<_> = layer.iter().filter(|m| m.starts_with("ERROR")).collect();
+    let named = match layer_says {
+        Layer::Names => errors.iter().any(|m| m.contains(rule)),
+        Layer::NamesAs(other) => errors.iter().any(|m| m.contains(other)),
+        Layer::Silent => errors.is_empty(),
+    };
+    (safe != rule || !named).then(|| {
+        format!(
+            "{what}: tuff said {safe}, expected {rule}; the layer said {:?}",
+            layer
+                .iter()
+                .map(|m| m.split(']').next().unwrap_or(m))
+                .collect::<Vec<_>>()
+        )
+    })
+}
+
+/// A second-version barrier that names the host stage transfers no queue family
+/// ownership (03851, 03854), and a layout transition after host writes starts from
+/// a layout the host can write (03855); a host barrier that does neither is recorded.
+#[test]
+fn a_host_barrier_transfers_nothing_and_moves_from_host_layouts() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    fn host(b: tuff::ImageMemoryBarrier2<'_>) -> tuff::ImageMemoryBarrier2<'_> {
+        b.src_stage_mask(S2::HOST)
+            .src_access_mask(A2::HOST_WRITE)
+            .dst_stage_mask(S2::TRANSFER)
+            .dst_access_mask(A2::TRANSFER_READ)
+    }
+    let image = |old: L, new: L| {
+        host(
+            tuff::ImageMemoryBarrier2::new(&o.color)
+                .old_layout(old)
+                .new_layout(new)
+                .src_queue_family_index(IGNORED)
+                .dst_queue_family_index(IGNORED)
+                .subresource_range(range(COLOR)),
+        )
+    };
+    let release = [image(L::GENERAL, L::GENERAL)
+        .src_queue_family_index(s.family)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_EXTERNAL)];
+    let from_transfer = [image(L::TRANSFER_DST_OPTIMAL, L::GENERAL)];
+    let buffer = [tuff::BufferMemoryBarrier2::new(&o.buffer)
+        .src_stage_mask(S2::HOST)
+        .src_access_mask(A2::HOST_WRITE)
+        .dst_stage_mask(S2::TRANSFER)
+        .dst_access_mask(A2::TRANSFER_READ)
+        .src_queue_family_index(s.family)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_EXTERNAL)
+        .offset(0)
+        .size(vk::WHOLE_SIZE)];
+    let mut wrong = Vec::new();
+    for (what, info, rule) in [
+        (
+            "a buffer released by a host barrier",
+            tuff::DependencyInfo::new().buffer_memory_barriers(&buffer),
+            "VUID-VkBufferMemoryBarrier2-srcStageMask-03851",
+        ),
+        (
+            "an image released by a host barrier",
+            tuff::DependencyInfo::new().image_memory_barriers(&release),
+            "VUID-VkImageMemoryBarrier2-srcStageMask-03854",
+        ),
+        (
+            "an image moved from TRANSFER_DST_OPTIMAL after host writes",
+            tuff::DependencyInfo::new().image_memory_barriers(&from_transfer),
+            "VUID-VkImageMemoryBarrier2-srcStageMask-03855",
+        ),
+    ] {
+        // The 1.3.239 layer does not check these rules: tuff's error alone proves
+        // them.
+        wrong.extend(try_dependency(&s, what, &info, rule, Layer::Silent));
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    // From a layout the host writes, on one queue family: recorded.
+    let fine = [image(L::GENERAL, L::TRANSFER_SRC_OPTIMAL)];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.pipeline_barrier2(&tuff::DependencyInfo::new().image_memory_barriers(&fine))
+        .expect("a host barrier from GENERAL");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}
+
+/// The second version's event commands read their dependency infos' barriers as a
+/// pipeline barrier does: a barrier to `UNDEFINED` is refused by `set_event2` and
+/// `wait_events2` (whose `unsafe` is for their event rules), as the layer says.
+#[test]
+fn event_commands_check_their_barriers_as_pipeline_barriers_do() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let event = s
+        .device
+        .create_event(&tuff::EventCreateInfo::new())
+        .expect("event");
+    let to_none = [tuff::ImageMemoryBarrier2::new(&o.color)
+        .src_stage_mask(S2::TRANSFER)
+        .dst_stage_mask(S2::TRANSFER)
+        .old_layout(L::GENERAL)
+        .new_layout(L::UNDEFINED)
+        .src_queue_family_index(IGNORED)
+        .dst_queue_family_index(IGNORED)
+        .subresource_range(range(COLOR))];
+    let infos = [tuff::DependencyInfo::new().image_memory_barriers(&to_none)];
+    let rule = "VUID-VkImageMemoryBarrier2-newLayout-01198";
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    // SAFETY (both): the event is set and waited on in this recording only, which
+    // is never submitted; the calls are refused.
+    assert_eq!(vuid(unsafe { rec.set_event2(&event, &infos[0]) }), rule);
+    assert_eq!(vuid(unsafe { rec.wait_events2(&event, &infos) }), rule);
+    for command in ["set_event2", "wait_events2"] {
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        // SAFETY: as above; the layer skips the call.
+        unsafe {
+            if command == "set_event2" {
+                let _ = rec.set_event2_unchecked(&event, &infos[0]);
+            } else {
+                let _ = rec.wait_events2_unchecked(&event, &infos);
+            }
+        }
+        s.messages.abort_on_error(false);
+        let said = s.messages.take();
+        assert!(
+            said.iter().any(|m| m.contains(rule)),
+            "{command}: the layer did not name {rule}: {said:?}"
+        );
+    }
+    rec.end().expect("end");
     assert_silent(&s.messages);
 }

@@ -1658,7 +1658,7 @@ fn dispatch_commands() -> [(&'static str, Dispatch); 3] {
             if unchecked {
                 unsafe { r.dispatch_base_unchecked(0, 0, 0, 1, 1, 1) }
             } else {
-                unsafe { r.dispatch_base(0, 0, 0, 1, 1, 1) }
+                r.dispatch_base(0, 0, 0, 1, 1, 1)
             }
         }),
         ("vkCmdDispatchIndirect", |r, args, unchecked| {

@@ -1656,7 +1656,7 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
             "vkCmdDispatchBase",
             Box::new(|r, unchecked| match unchecked {
                 true => unsafe { r.dispatch_base_unchecked(0, 0, 0, 1, 1, 1) },
-                false => unsafe { r.dispatch_base(0, 0, 0, 1, 1, 1) },
+                false => r.dispatch_base(0, 0, 0, 1, 1, 1),
             }),
         ),
         (

@@ -505,7 +505,7 @@ fn a_barrier_from_a_layout_the_image_is_not_in_is_refused_and_the_layer_agrees()
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .subresource_range(range(COLOR))];
     let dependency = tuff::DependencyInfo::new().image_memory_barriers(&barrier2);
-    assert_eq!(vuid(unsafe { rec.pipeline_barrier2(&dependency) }), rule2);
+    assert_eq!(vuid(rec.pipeline_barrier2(&dependency)), rule2);
     layer_names(&s, rule2, || {
         let _ = unsafe { rec.pipeline_barrier2_unchecked(&dependency) };
     });

@@ -366,7 +366,7 @@ fn barrier(s: &Setup, info: &tuff::DependencyInfo<'_>) -> Outcome {
         .expect("begin");
     // A refused barrier is not recorded; one the implicit checks refuse poisons
     // the recording, whose end returns the error.
-    let recorded = unsafe { rec.pipeline_barrier2(info) };
+    let recorded = rec.pipeline_barrier2(info);
     let ended = rec.end();
     let safe = recorded.and(ended);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
@@ -1017,6 +1017,14 @@ mod args {
         pub offset: vk::DeviceSize,
     }
     pub struct CmdDispatch {
+        pub group_count_x: u32,
+        pub group_count_y: u32,
+        pub group_count_z: u32,
+    }
+    pub struct CmdDispatchBase {
+        pub base_group_x: u32,
+        pub base_group_y: u32,
+        pub base_group_z: u32,
         pub group_count_x: u32,
         pub group_count_y: u32,
         pub group_count_z: u32,
@@ -2656,6 +2664,68 @@ fn cmd_dispatch(
     )
 }
 
+fn cmd_dispatch_base(
+    s: &Setup,
+    limits: &Limits,
+    change: &dyn Fn(&mut args::CmdDispatchBase, &Limits, &mut Objects),
+) -> Outcome {
+    let mut a = args::CmdDispatchBase {
+        base_group_x: 0,
+        base_group_y: 0,
+        base_group_z: 0,
+        // Two groups each way: a base group that breaks a sum's rule alone (the
+        // count's limit less one) then stays below the limit itself.
+        group_count_x: 2,
+        group_count_y: 2,
+        group_count_z: 2,
+    };
+    change(&mut a, limits, &mut Objects::default());
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(s, &target);
+    // A pipeline made for base groups, so that a case's base group breaks only its
+    // rule (VUID-vkCmdDispatchBase-baseGroupX-00427 asks for the flag).
+    let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(Some(&p.comp));
+    let based = s
+        .device
+        .create_compute_pipeline(
+            None,
+            &tuff::ComputePipelineCreateInfo::new(stage, &p.compute_layout)
+                .flags(vk::PipelineCreateFlags::DISPATCH_BASE),
+        )
+        .expect("a pipeline made for base groups");
+    let bind = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
+        r.bind_pipeline(vk::PipelineBindPoint::COMPUTE, &based)
+            .expect("bind");
+        r.bind_descriptor_sets(
+            vk::PipelineBindPoint::COMPUTE,
+            &p.compute_layout,
+            0,
+            &p.set,
+            &[],
+        )
+        .expect("sets");
+    };
+    let base = (a.base_group_x, a.base_group_y, a.base_group_z);
+    let count = (a.group_count_x, a.group_count_y, a.group_count_z);
+    record(
+        s,
+        |r| {
+            bind(r);
+            r.dispatch_base(base.0, base.1, base.2, count.0, count.1, count.2)
+        },
+        |r| {
+            bind(r);
+            // SAFETY: as in `buffer_create_info`; the command buffer is never
+            // submitted.
+            drop(unsafe {
+                r.dispatch_base_unchecked(base.0, base.1, base.2, count.0, count.1, count.2)
+            });
+        },
+    )
+}
+
 fn cmd_set_depth_bounds(
     s: &Setup,
     limits: &Limits,
@@ -2830,7 +2900,7 @@ fn cmd_pipeline_barrier2(
     let info = tuff::DependencyInfo::new();
     record(
         s,
-        |r| unsafe { r.pipeline_barrier2(&info) },
+        |r| r.pipeline_barrier2(&info),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.pipeline_barrier2_unchecked(&info) },
     )

@@ -1457,3 +1457,76 @@ fn query_results_are_copied_inside_their_buffer() {
     rec.end().expect("end");
     assert_silent(&s.messages);
 }
+
+/// A dispatch from a base group other than zero needs the bound compute pipeline to
+/// have been created with `DISPATCH_BASE` (00427): refused without it, as the layer
+/// says through `_unchecked`, and recorded with it.
+#[test]
+fn a_base_group_needs_a_dispatch_base_pipeline() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(4, vk::ImageUsageFlags::empty());
+    let p = pipelines::pipelines(&s, &target);
+    let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(Some(&p.comp));
+    let based = s
+        .device
+        .create_compute_pipeline(
+            None,
+            &tuff::ComputePipelineCreateInfo::new(stage, &p.compute_layout)
+                .flags(vk::PipelineCreateFlags::DISPATCH_BASE),
+        )
+        .expect("a pipeline made for base groups");
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let compute = vk::PipelineBindPoint::COMPUTE;
+    rec.bind_pipeline(compute, &p.compute).expect("bind");
+    rec.bind_descriptor_sets(compute, &p.compute_layout, 0, &p.set, &[])
+        .expect("sets");
+    let rule = "VUID-vkCmdDispatchBase-baseGroupX-00427";
+    for base in [[1, 0, 0], [0, 1, 0], [0, 0, 1]] {
+        assert_eq!(
+            vuid(rec.dispatch_base(base[0], base[1], base[2], 1, 1, 1)),
+            rule
+        );
+    }
+    // From group zero any pipeline dispatches.
+    rec.dispatch_base(0, 0, 0, 1, 1, 1)
+        .expect("a dispatch from group zero");
+    layer_names(&s.messages, rule, || {
+        // SAFETY: see the module docs; the command buffer is never submitted.
+        drop(unsafe { rec.dispatch_base_unchecked(1, 0, 0, 1, 1, 1) });
+    });
+    rec.bind_pipeline(compute, &based).expect("bind");
+    rec.dispatch_base(1, 1, 1, 1, 1, 1)
+        .expect("a dispatch from a base group with a pipeline made for it");
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}
+
+/// A device mask names only physical devices the device has (00108); lavapipe's
+/// devices have one, so every other bit is refused, as the layer says through
+/// `_unchecked`, and the one device's mask is recorded.
+#[test]
+fn a_device_mask_names_the_devices_physical_devices() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let rule = "VUID-vkCmdSetDeviceMask-deviceMask-00108";
+    for mask in [0b10, 0b11, 1 << 31] {
+        assert_eq!(vuid(rec.set_device_mask(mask)), rule);
+    }
+    rec.set_device_mask(1).expect("the one physical device");
+    layer_names(&s.messages, rule, || {
+        // SAFETY: see the module docs; the command buffer is never submitted.
+        drop(unsafe { rec.set_device_mask_unchecked(0b10) });
+    });
+    rec.end().expect("end");
+    assert_silent(&s.messages);
+}

@@ -317,6 +317,10 @@ pub(crate) struct PassInstance {
     /// dynamic rendering's), where the recording began it (`None` in a continuing
     /// secondary, whose inheritance info does not give them).
     pub area: Option<(vk::Rect2D, u32)>,
+    /// The device mask of a chained `VkDeviceGroupRenderPassBeginInfo`, where the
+    /// recording began the instance with one (otherwise the command buffer's initial
+    /// device mask is the instance's).
+    pub device_mask: Option<u32>,
 }
 
 impl PassInstance {

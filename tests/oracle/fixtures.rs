@@ -174,7 +174,7 @@ pub fn cmd_set_device_mask(
     let mask = a.device_mask;
     record(
         s,
-        |r| unsafe { r.set_device_mask(mask) },
+        |r| r.set_device_mask(mask),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.set_device_mask_unchecked(mask) },
     )

@@ -435,7 +435,6 @@ pub const CHECKED_EXTENSIONS: &[&str] = &[
     "VK_KHR_maintenance4",
     "VK_KHR_multiview",
     "VK_KHR_present_wait",
-    "VK_KHR_ray_tracing_maintenance1",
     "VK_KHR_relaxed_block_layout",
     "VK_KHR_separate_depth_stencil_layouts",
     "VK_KHR_shader_atomic_int64",

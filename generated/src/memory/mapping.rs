@@ -63,29 +63,11 @@ impl DeviceMemory {
     /// ```
     pub fn map(&self) -> Result<MappedMemory<'_>> {
         let device = self.parent();
-        let state = device.live().memory(self.raw(), |r| {
-            if r.mapped {
-                None
-            } else {
-                r.mapped = true;
-                Some((r.size, r.memory_type_index, r.host))
-            }
-        });
-        let (size, type_index, host) = match state {
-            Some(Some(record)) => record,
-            Some(None) => {
-                return Err(Error::Validation {
-                    vuid: "VUID-vkMapMemory-memory-00678",
-                    message: "the memory is already mapped".into(),
-                })
-            }
-            // Every wrapper comes from `allocate_memory`, which records it.
-            None => return Err(Error::Vk(vk::Result::ERROR_MEMORY_MAP_FAILED)),
-        };
-        let mut mark = Mark {
-            memory: self,
-            armed: true,
-        };
+        // Every wrapper comes from `allocate_memory`, which records it.
+        let (size, type_index, host) = device
+            .live()
+            .memory(self.raw(), |r| (r.size, r.memory_type_index, r.host))
+            .ok_or(Error::Vk(vk::Result::ERROR_MEMORY_MAP_FAILED))?;
         let (flags, atom) = match host {
             Some(host) => host,
             None => {
@@ -109,31 +91,44 @@ impl DeviceMemory {
                 message: format!("memory type {type_index} is not HOST_VISIBLE"),
             });
         }
-        let mut ptr = core::ptr::null_mut();
-        // SAFETY: the memory is a live allocation of this device, host-visible, not
-        // mapped now (the record says so and is marked mapped until the guard goes),
-        // and mapped whole, so offset and size are in range.
-        let r = unsafe {
-            (device.fns().fp_v1_0().map_memory)(
-                device.raw(),
-                self.raw(),
-                0,
-                vk::WHOLE_SIZE,
-                vk::MemoryMapFlags::empty(),
-                &mut ptr,
-            )
-        };
-        if r != vk::Result::SUCCESS {
-            return Err(Error::Vk(r));
-        }
-        let Some(ptr) = NonNull::new(ptr.cast::<u8>()) else {
-            // SAFETY: the call above mapped the memory; a null pointer is useless, so
-            // it is unmapped again before the mark goes.
-            unsafe { (device.fns().fp_v1_0().unmap_memory)(device.raw(), self.raw()) };
-            return Err(Error::Vk(vk::Result::ERROR_MEMORY_MAP_FAILED));
-        };
+        // Mapped and marked under the records' lock, which the safe flushes and
+        // invalidates hold while they check a mapping and use it: none of them sees
+        // the mark before the mapping exists.
+        let mapped = device.live().memory(self.raw(), |r| {
+            if r.mapped {
+                return Err(Error::Validation {
+                    vuid: "VUID-vkMapMemory-memory-00678",
+                    message: "the memory is already mapped".into(),
+                });
+            }
+            let mut ptr = core::ptr::null_mut();
+            // SAFETY: the memory is a live allocation of this device, host-visible,
+            // not mapped now (the record says so, under its lock), and mapped whole,
+            // so offset and size are in range.
+            let r_map = unsafe {
+                (device.fns().fp_v1_0().map_memory)(
+                    device.raw(),
+                    self.raw(),
+                    0,
+                    vk::WHOLE_SIZE,
+                    vk::MemoryMapFlags::empty(),
+                    &mut ptr,
+                )
+            };
+            if r_map != vk::Result::SUCCESS {
+                return Err(Error::Vk(r_map));
+            }
+            let Some(ptr) = NonNull::new(ptr.cast::<u8>()) else {
+                // SAFETY: the call above mapped the memory; a null pointer is useless,
+                // so it is unmapped again.
+                unsafe { (device.fns().fp_v1_0().unmap_memory)(device.raw(), self.raw()) };
+                return Err(Error::Vk(vk::Result::ERROR_MEMORY_MAP_FAILED));
+            };
+            r.mapped = true;
+            Ok(ptr)
+        });
+        let ptr = mapped.ok_or(Error::Vk(vk::Result::ERROR_MEMORY_MAP_FAILED))??;
         // From here the guard's Drop unmaps and clears the mark.
-        mark.armed = false;
         Ok(MappedMemory {
             memory: self,
             ptr,
@@ -141,24 +136,6 @@ impl DeviceMemory {
             coherent: flags.contains(vk::MemoryPropertyFlags::HOST_COHERENT),
             atom,
         })
-    }
-}
-
-/// Clears a memory's mapped mark when dropped while armed, so that an early return
-/// (or a panic) between marking and handing out the guard leaves it mappable.
-struct Mark<'a> {
-    memory: &'a DeviceMemory,
-    armed: bool,
-}
-
-impl Drop for Mark<'_> {
-    fn drop(&mut self) {
-        if self.armed {
-            let device = self.memory.parent();
-            device
-                .live()
-                .memory(self.memory.raw(), |r| r.mapped = false);
-        }
     }
 }
 
@@ -271,9 +248,16 @@ impl Drop for MappedMemory<'_> {
         let device = self.memory.parent();
         // SAFETY: this guard mapped the memory, which its borrow keeps alive, and no
         // pointer into the mapping outlives the guard.
-        unsafe { (device.fns().fp_v1_0().unmap_memory)(device.raw(), self.memory.raw()) };
-        device
-            .live()
-            .memory(self.memory.raw(), |r| r.mapped = false);
+        let unmap =
+            || unsafe { (device.fns().fp_v1_0().unmap_memory)(device.raw(), self.memory.raw()) };
+        // Unmapped under the records' lock, beside no safe flush or invalidate (see
+        // `map`); the record lives as long as the memory.
+        let found = device.live().memory(self.memory.raw(), |r| {
+            unmap();
+            r.mapped = false;
+        });
+        if found.is_none() {
+            unmap();
+        }
     }
 }

@@ -690,6 +690,31 @@ pub(crate) fn dispatch_checks<S: Scope>(
     })
 }
 
+/// A dispatch with a base group other than zero needs a compute pipeline created
+/// with `DISPATCH_BASE` (00427); the pipeline itself was checked bound before.
+pub(crate) fn dispatch_base_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    base_group_x: u32,
+    base_group_y: u32,
+    base_group_z: u32,
+) -> Result<()> {
+    let base = [base_group_x, base_group_y, base_group_z];
+    let Some(pipeline) = &recorder.bound[1].pipeline else {
+        return Ok(());
+    };
+    if base != [0; 3]
+        && !pipeline
+            .flags
+            .contains(vk::PipelineCreateFlags::DISPATCH_BASE)
+    {
+        refuse(
+            "VUID-vkCmdDispatchBase-baseGroupX-00427",
+            format!("the base group is {base:?}, and the bound compute pipeline was not created with VK_PIPELINE_CREATE_DISPATCH_BASE_BIT"),
+        )?;
+    }
+    Ok(())
+}
+
 /// A draw or dispatch has a pipeline bound at its bind point (02700), a set bound
 /// at every set number of that pipeline's layout, of the same set layout (02697),
 /// the descriptors and push constants its shaders read ([`bound_descriptor_checks`],

@@ -646,6 +646,129 @@ pub(crate) fn image_requirements2_planes(
     }
 }
 
+/// The requirements of an image not yet made: its create info chains no swapchain
+/// (06416), and a disjoint image names one of its format's planes (06417, 06419).
+pub(crate) fn device_image_requirements_checks(
+    _device: &Device,
+    info: &DeviceImageMemoryRequirements<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: a safe struct's create info is a reference the struct borrows.
+    let Some(create) = (unsafe { raw.p_create_info.as_ref() }) else {
+        return Ok(());
+    };
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    if unsafe {
+        chains(
+            create.p_next,
+            vk::StructureType::IMAGE_SWAPCHAIN_CREATE_INFO_KHR,
+        )
+    } {
+        refuse(
+            "VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416",
+            "pCreateInfo chains a VkImageSwapchainCreateInfoKHR",
+        )?;
+    }
+    if !create.flags.contains(vk::ImageCreateFlags::DISJOINT) {
+        return Ok(());
+    }
+    let aspects = crate::formats::aspects(create.format).unwrap_or_default();
+    let plane = raw.plane_aspect;
+    if aspects.contains(vk::ImageAspectFlags::PLANE_0) && plane == vk::ImageAspectFlags::NONE {
+        refuse(
+            "VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417",
+            format!(
+                "the image is disjoint, of the multi-planar format {:?}, and planeAspect is NONE",
+                create.format
+            ),
+        )?;
+    }
+    let tiling = [vk::ImageTiling::LINEAR, vk::ImageTiling::OPTIMAL];
+    let planes = vk::ImageAspectFlags::PLANE_0
+        | vk::ImageAspectFlags::PLANE_1
+        | vk::ImageAspectFlags::PLANE_2;
+    if tiling.contains(&create.tiling)
+        && (plane.as_raw().count_ones() != 1 || !(aspects & planes).contains(plane))
+    {
+        refuse(
+            "VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419",
+            format!("the image is disjoint, of {:?} tiling, and planeAspect {plane:?} is not one plane of its format {:?} (aspects {aspects:?})", create.tiling, create.format),
+        )?;
+    }
+    Ok(())
+}
+
+/// `vkGetDeviceGroupPeerMemoryFeatures`: a heap of the physical device (00691), and
+/// two different device indices of the device's physical devices (00692 to 00694).
+/// On a device of one physical device no call is valid.
+pub(crate) fn peer_memory_checks(
+    device: &Device,
+    heap_index: u32,
+    local_device_index: u32,
+    remote_device_index: u32,
+) -> Result<()> {
+    let heaps = device.parent().get_memory_properties().memory_heap_count;
+    if heap_index >= heaps {
+        refuse(
+            "VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691",
+            format!("heapIndex ({heap_index}) must be less than the physical device's {heaps} memory heaps"),
+        )?;
+    }
+    let count = device.live().physical_count();
+    for (index, vuid, name) in [
+        (
+            local_device_index,
+            "VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692",
+            "localDeviceIndex",
+        ),
+        (
+            remote_device_index,
+            "VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693",
+            "remoteDeviceIndex",
+        ),
+    ] {
+        if index >= count {
+            refuse(
+                vuid,
+                format!("{name} ({index}) is not a device index of the device's {count} physical devices"),
+            )?;
+        }
+    }
+    if local_device_index == remote_device_index {
+        refuse(
+            "VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694",
+            format!("localDeviceIndex and remoteDeviceIndex are both {local_device_index}"),
+        )?;
+    }
+    Ok(())
+}
+
+/// `vkGetDeviceMemoryOpaqueCaptureAddress`: on a device group, the multi-device
+/// feature (03335); the memory allocated with a device address (03336).
+pub(crate) fn memory_capture_address_checks(
+    device: &Device,
+    info: &DeviceMemoryOpaqueCaptureAddressInfo<'_>,
+) -> Result<()> {
+    let live = device.live();
+    let count = live.physical_count();
+    if count > 1 && live.with_features(|f| f.v12.buffer_device_address_multi_device) != vk::TRUE {
+        refuse(
+            "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335",
+            format!("the device has {count} physical devices, and bufferDeviceAddressMultiDevice is not enabled"),
+        )?;
+    }
+    let asked = live.memory(info.memory, |m| m.asked).ok_or(Error::Misuse(
+        "the memory was not allocated through the wrappers",
+    ))?;
+    if !asked.device_address {
+        refuse(
+            "VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336",
+            "the memory was not allocated with VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT",
+        )?;
+    }
+    Ok(())
+}
+
 /// The checks of `vkAllocateMemory` against the physical device's memory types and
 /// heaps, and of its chained flags against the device's features.
 pub(crate) fn allocate_memory_checks(
@@ -933,6 +1056,57 @@ fn exports(p: &vk::ExternalMemoryProperties, all: vk::ExternalMemoryHandleTypeFl
     p.external_memory_features
         .contains(vk::ExternalMemoryFeatureFlags::EXPORTABLE)
         && p.compatible_handle_types.contains(all)
+}
+
+/// Flushes and invalidates name memory a live [`crate::MappedMemory`] maps (00684).
+/// Its mapping is always the whole memory (`DeviceMemory::map`), so each range is
+/// checked against the memory's size (00685, 00686) and `nonCoherentAtomSize` (00687,
+/// 01390). The records stay locked until the call has returned, so that no mapping
+/// ends (or begins) on another thread meanwhile.
+pub(crate) fn mapped_ranges_hold<'d>(
+    device: &'d Device,
+    memory_ranges: &[MappedMemoryRange<'_>],
+) -> Result<crate::state::MemoryRecords<'d>> {
+    let records = device.live().memories_locked();
+    for (i, range) in memory_ranges.iter().enumerate() {
+        let record = records.get(&range.memory.as_raw()).ok_or(Error::Misuse(
+            "the memory was not allocated through the wrappers",
+        ))?;
+        if !record.mapped {
+            refuse(
+                "VUID-VkMappedMemoryRange-memory-00684",
+                format!("pMemoryRanges[{i}].memory is not mapped (no MappedMemory of it lives)"),
+            )?;
+        }
+        let atom = record.host.map_or(1, |(_, atom)| atom.max(1));
+        let (offset, size, end) = (range.offset, range.size, record.size);
+        if size == vk::WHOLE_SIZE {
+            if offset >= end {
+                refuse(
+                    "VUID-VkMappedMemoryRange-size-00686",
+                    format!("pMemoryRanges[{i}].offset ({offset}) is not inside the mapping, which is the whole memory of {end} bytes"),
+                )?;
+            }
+        } else if offset.checked_add(size).is_none_or(|e| e > end) {
+            refuse(
+                "VUID-VkMappedMemoryRange-size-00685",
+                format!("pMemoryRanges[{i}] ({size} bytes at {offset}) is not inside the mapping, which is the whole memory of {end} bytes"),
+            )?;
+        }
+        if offset % atom != 0 {
+            refuse(
+                "VUID-VkMappedMemoryRange-offset-00687",
+                format!("pMemoryRanges[{i}].offset ({offset}) is not a multiple of nonCoherentAtomSize ({atom})"),
+            )?;
+        }
+        if size != vk::WHOLE_SIZE && size % atom != 0 && offset + size != end {
+            refuse(
+                "VUID-VkMappedMemoryRange-size-01390",
+                format!("pMemoryRanges[{i}].size ({size}) is not a multiple of nonCoherentAtomSize ({atom}), and the range ends before the memory's end ({end})"),
+            )?;
+        }
+    }
+    Ok(records)
 }
 
 /// Holds other safe allocations off while this one is checked against

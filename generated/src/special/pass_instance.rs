@@ -31,9 +31,12 @@ pub(crate) fn render_pass_begun<S: Scope>(
         .live()
         .framebuffer_size(begin.framebuffer)
         .map(|[_, _, layers]| (begin.render_area, layers));
+    // SAFETY: the chain of a safe struct, and the type its sType names.
+    let device_mask = unsafe { group_device_mask(begin.p_next) };
     recorder.instance = Some(crate::recorder::PassInstance {
         subpass: 0,
         area,
+        device_mask,
         render_pass: render_pass_begin.as_raw().render_pass,
         subpasses: record.as_ref().map_or(0, |r| r.view_masks.len() as u32),
         view_mask: record
@@ -130,8 +133,26 @@ pub(crate) fn rendering_begun<S: Scope>(
         rendering_layouts: Some((layout(depth), layout(stencil))),
         rendering_samples: samples,
         area: Some((raw.render_area, raw.layer_count)),
+        // SAFETY: the chain of a safe struct, and the type its sType names.
+        device_mask: unsafe { group_device_mask(raw.p_next) },
         ..Default::default()
     });
+}
+
+/// The device mask of a `VkDeviceGroupRenderPassBeginInfo` in a begin info's chain.
+///
+/// # Safety
+///
+/// `p_next` is a valid chain whose nodes are the types their `sType`s name.
+unsafe fn group_device_mask(p_next: *const std::ffi::c_void) -> Option<u32> {
+    // SAFETY: as the caller promises.
+    let group: Option<&vk::DeviceGroupRenderPassBeginInfo<'_>> = unsafe {
+        super::chained(
+            p_next,
+            vk::StructureType::DEVICE_GROUP_RENDER_PASS_BEGIN_INFO,
+        )
+    };
+    group.map(|g| g.device_mask)
 }
 
 /// A next subpass exists.

@@ -1,7 +1,7 @@
 //! Fences, semaphores and events: their creation, host waits and signals, timeline
 //! values, and events set, reset and waited on in recordings.
 
-use super::barriers::check_barrier_structs;
+use super::barriers::{check_barrier_structs, Barriers};
 use super::image_layouts::{cmd_pipeline_barrier_done, dependency_done};
 use super::{chained, refuse, vulkan12_properties};
 use crate::handles::*;
@@ -231,6 +231,41 @@ fn event_stage_checks<S: Scope>(
     Ok(())
 }
 
+/// A new current device mask names only physical devices of the device (00108),
+/// of the command buffer's initial mask (00110) and, inside a render pass instance,
+/// of the instance's mask (00111).
+pub(crate) fn set_device_mask_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    device_mask: u32,
+) -> Result<()> {
+    let count = recorder.device().live().physical_count().min(32);
+    let all = ((1u64 << count) - 1) as u32;
+    if device_mask & !all != 0 {
+        refuse(
+            "VUID-vkCmdSetDeviceMask-deviceMask-00108",
+            format!(
+                "deviceMask {device_mask:#x} names a physical device the device has not ({count})"
+            ),
+        )?;
+    }
+    let initial = recorder.device_mask;
+    if device_mask & !initial != 0 {
+        refuse(
+            "VUID-vkCmdSetDeviceMask-deviceMask-00110",
+            format!("deviceMask {device_mask:#x} is not within the command buffer's initial device mask {initial:#x}"),
+        )?;
+    }
+    if let Some(pass) = recorder.instance.as_ref().and_then(|i| i.device_mask) {
+        if device_mask & !pass != 0 {
+            refuse(
+                "VUID-vkCmdSetDeviceMask-deviceMask-00111",
+                format!("deviceMask {device_mask:#x} is not within the render pass instance's device mask {pass:#x}"),
+            )?;
+        }
+    }
+    Ok(())
+}
+
 /// The recorder follows the command buffer's current device mask, which event
 /// commands read.
 pub(crate) fn device_mask_set<S: Scope>(recorder: &mut Recorder<'_, S>, device_mask: u32) {
@@ -430,6 +465,28 @@ pub(crate) fn event_created(
     event
 }
 
+/// The checks of the second version's event wait: each dependency info's barriers
+/// against the resources they name, as a pipeline barrier's, and the layouts its
+/// image barriers move from.
+pub(crate) fn wait_events2_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    dependency_infos: &[DependencyInfo<'_>],
+) -> Result<()> {
+    for info in dependency_infos {
+        check_barrier_structs(recorder, &Barriers::of2(info))?;
+    }
+    super::image_layouts::dependency_checks(recorder, dependency_infos)
+}
+
+/// The checks of the second version's event signal: its barriers against the
+/// resources they name, as a pipeline barrier's.
+pub(crate) fn set_event2_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    dependency_info: &DependencyInfo<'_>,
+) -> Result<()> {
+    check_barrier_structs(recorder, &Barriers::of2(dependency_info))
+}
+
 /// The checks of an event wait's barriers, and the layouts its image barriers move
 /// from.
 pub(crate) fn wait_events_checks<S: Scope>(
@@ -437,6 +494,14 @@ pub(crate) fn wait_events_checks<S: Scope>(
     buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) -> Result<()> {
-    check_barrier_structs(recorder, buffer_memory_barriers, image_memory_barriers)?;
+    // The structs' rules of the first version read no stage mask.
+    let none = vk::PipelineStageFlags::empty();
+    let barriers = Barriers::of(
+        (none, none),
+        &[],
+        buffer_memory_barriers,
+        image_memory_barriers,
+    );
+    check_barrier_structs(recorder, &barriers)?;
     super::image_layouts::cmd_pipeline_barrier_checks(recorder, image_memory_barriers)
 }

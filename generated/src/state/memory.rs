@@ -20,6 +20,10 @@ pub(crate) struct MemoryRecord {
     pub(crate) asked: MemoryAsked,
 }
 
+/// The records of a device's memories, by raw handle, locked.
+pub(crate) type MemoryRecords<'a> =
+    tuff_runtime::VutexGuard<'a, rustc_hash::FxHashMap<u64, MemoryRecord>>;
+
 /// Where a buffer or image is bound: the raw memory, the offset there and the
 /// bytes it takes.
 pub(crate) type Binding = (u64, u64, u64);
@@ -131,6 +135,13 @@ impl Live {
                 asked,
             },
         );
+    }
+
+    /// Locks the records of the device's memories until the guard goes: a check
+    /// that a memory is mapped holds them while the driver uses the mapping, as
+    /// `DeviceMemory::map` and the unmap hold them while they change one.
+    pub(crate) fn memories_locked(&self) -> MemoryRecords<'_> {
+        self.memories.lock()
     }
 
     /// Locks out other safe allocations, and says how many device memories made

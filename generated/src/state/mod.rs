@@ -38,7 +38,7 @@ pub(crate) use self::features::Features;
 pub(crate) use self::framebuffer::AttachmentImage;
 pub(crate) use self::image::ImageRecord;
 pub(crate) use self::live::{limits, Live};
-pub(crate) use self::memory::{Binding, MemoryAsked};
+pub(crate) use self::memory::{Binding, MemoryAsked, MemoryRecords};
 pub(crate) use self::pipeline::{
     dynamic_bit, DepthStencil, LayoutRecord, PipelineRecord, RenderingFormats, VertexRead,
 };

@@ -97,6 +97,7 @@ pub const FIXTURES: &[&str] = &[
     "VkBufferImageCopy2",
     "VkImageSubresourceLayers",
     "vkCmdDispatch",
+    "vkCmdDispatchBase",
     "vkCmdSetDepthBounds",
     "VkSemaphoreTypeCreateInfo",
     "vkCmdDrawIndirectCount",

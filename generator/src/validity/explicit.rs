@@ -591,6 +591,10 @@ fn normalised(text: &str) -> String {
             .expect("pattern"),
         ]
     });
+    // `maxViewportDimensions`[0]: one name, as `plain` writes an indexed member (before
+    // the sums, so that `L`[0] minus `a` reads as a sum under one limit).
+    static INDEXED: OnceLock<Regex> = OnceLock::new();
+    let s = re(&INDEXED, r"`([\w:]+)`\[(\d+)\]").replace_all(&s, "`$1[$2]`");
     let s = sum.replace_all(&s, "$1 + $2 must");
     let s = paren.replace_all(&s, "$1 + $2 must");
     let s = minus.replace_all(&s, "$3 + $1 must be less than or equal to $2");
@@ -599,9 +603,6 @@ fn normalised(text: &str) -> String {
         &BARE,
         r"(must (?:not )?be(?: (?:greater|less) than(?: or equal to)?)?) (\d+(?:\.\d+)?|zero)(,| and |$)",
     );
-    // `maxViewportDimensions`[0]: one name, as `plain` writes an indexed member.
-    static INDEXED: OnceLock<Regex> = OnceLock::new();
-    let s = re(&INDEXED, r"`([\w:]+)`\[(\d+)\]").replace_all(&s, "`$1[$2]`");
     bare.replace_all(&s, |c: &regex::Captures| {
         let n = if &c[2] == "zero" { "0" } else { &c[2] };
         format!("{} `{n}`{}", &c[1], &c[3])

@@ -9,6 +9,9 @@ impl<'c> Recorder<'c, Outside> {
         base_group_x: u32,
         base_group_y: u32,
         base_group_z: u32,
+        group_count_x: u32,
+        group_count_y: u32,
+        group_count_z: u32,
     ) -> Result<()> {
         let s = &self.device().scope();
         if !crate::validation::supports(
@@ -65,6 +68,57 @@ impl<'c> Recorder<'c, Outside> {
                 format!(
                     "`baseGroupZ` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] (`baseGroupZ` = {:?})",
                     base_group_z
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+            && s
+                .limits()
+                .is_some_and(|l| {
+                    (base_group_x as i128 + group_count_x as i128)
+                        > (l.max_compute_work_group_count[0] as i128)
+                })
+        {
+            return refuse(
+                "VUID-vkCmdDispatchBase-groupCountX-00424",
+                format!(
+                    "`groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[0] minus `baseGroupX` (`baseGroupX` = {:?}, `groupCountX` = {:?})",
+                    base_group_x, group_count_x
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+            && s
+                .limits()
+                .is_some_and(|l| {
+                    (base_group_y as i128 + group_count_y as i128)
+                        > (l.max_compute_work_group_count[1] as i128)
+                })
+        {
+            return refuse(
+                "VUID-vkCmdDispatchBase-groupCountY-00425",
+                format!(
+                    "`groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[1] minus `baseGroupY` (`baseGroupY` = {:?}, `groupCountY` = {:?})",
+                    base_group_y, group_count_y
+                ),
+            );
+        }
+        if (s.exts.has(origin::VK_VERSION_1_1)
+            || s.exts.has(origin::VK_KHR_DEVICE_GROUP))
+            && s
+                .limits()
+                .is_some_and(|l| {
+                    (base_group_z as i128 + group_count_z as i128)
+                        > (l.max_compute_work_group_count[2] as i128)
+                })
+        {
+            return refuse(
+                "VUID-vkCmdDispatchBase-groupCountZ-00426",
+                format!(
+                    "`groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`[2] minus `baseGroupZ` (`baseGroupZ` = {:?}, `groupCountZ` = {:?})",
+                    base_group_z, group_count_z
                 ),
             );
         }

@@ -44,11 +44,10 @@ impl Device {
         crate::checks::check_memory_requirements2(memory_requirements, s)?;
         Ok(())
     }
-    ///The dynamic checks of [`Self::get_device_image_memory_requirements`], run before the call.
-    pub(crate) fn validate_get_device_image_memory_requirements<'a>(
+    ///Where the handles [`Self::get_device_image_memory_requirements`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_device_image_memory_requirements<'a>(
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
-        memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
         let s = &self.scope();
         {
@@ -63,8 +62,37 @@ impl Device {
             };
             reached.owned()?;
         }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::get_device_image_memory_requirements`], run before the call.
+    pub(crate) fn validate_get_device_image_memory_requirements<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+        memory_requirements: &mut MemoryRequirements2<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
         crate::checks::check_device_image_memory_requirements(info, s)?;
         crate::checks::check_memory_requirements2(memory_requirements, s)?;
+        Ok(())
+    }
+    ///Where the handles [`Self::get_device_image_sparse_memory_requirements`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_get_device_image_sparse_memory_requirements<'a>(
+        &self,
+        info: &DeviceImageMemoryRequirements<'a>,
+    ) -> Result<()> {
+        let s = &self.scope();
+        {
+            let mut reached = crate::validation::Reached::checking(s);
+            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
+            // requires.
+            unsafe {
+                crate::reach::device_image_memory_requirements(
+                    info.as_raw(),
+                    &mut reached,
+                )
+            };
+            reached.owned()?;
+        }
         Ok(())
     }
     ///The dynamic checks of [`Self::get_device_image_sparse_memory_requirements`], run before the call.
@@ -73,18 +101,6 @@ impl Device {
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<()> {
         let s = &self.scope();
-        {
-            let mut reached = crate::validation::Reached::checking(s);
-            // SAFETY: a safe struct, whose setters store every pointer with its length, as the walk
-            // requires.
-            unsafe {
-                crate::reach::device_image_memory_requirements(
-                    info.as_raw(),
-                    &mut reached,
-                )
-            };
-            reached.owned()?;
-        }
         crate::checks::check_device_image_memory_requirements(info, s)?;
         Ok(())
     }

@@ -857,8 +857,8 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::set_event2`], run before the call.
-    pub(crate) fn validate_set_event2<'a>(
+    ///Where the handles [`Self::set_event2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_set_event2<'a>(
         &self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
@@ -879,6 +879,14 @@ impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
             };
             reached.owned()?;
         }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::set_event2`], run before the call.
+    pub(crate) fn validate_set_event2<'a>(
+        &self,
+        dependency_info: &DependencyInfo<'a>,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         if !crate::validation::supports(
             self.pool_queue_flags(),
             vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,

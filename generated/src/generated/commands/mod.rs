@@ -28,7 +28,6 @@ mod v1_2;
 mod v1_2_recording;
 mod v1_3;
 mod v1_3_recording;
-mod v1_3_recording_part2;
 #[cfg(feature = "amd_buffer_marker")]
 mod amd_buffer_marker;
 #[cfg(feature = "amd_display_native_hdr")]

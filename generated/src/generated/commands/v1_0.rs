@@ -1947,17 +1947,6 @@ The rules of `vkDeviceWaitIdle` that apply to this crate's API ([reference page]
     }
     /**`vkFlushMappedMemoryRanges`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkMappedMemoryRange-memory-00684`: `memory` must be currently host mapped
-- `VUID-VkMappedMemoryRange-size-00685`: If `size` is not equal to `VK_WHOLE_SIZE`, `offset` and `size` must specify a range contained within the currently mapped range of `memory`
-- `VUID-VkMappedMemoryRange-size-00686`: If `size` is equal to `VK_WHOLE_SIZE`, `offset` must be within the currently mapped range of `memory`
-- `VUID-VkMappedMemoryRange-offset-00687`: `offset` must be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`
-- `VUID-VkMappedMemoryRange-size-01389`: If `size` is equal to `VK_WHOLE_SIZE`, the end of the current mapping of `memory` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize` bytes from the beginning of the memory object, or be equal to the end of the memory object
-- `VUID-VkMappedMemoryRange-size-01390`: If `size` is not equal to `VK_WHOLE_SIZE`, `size` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`, or `offset` plus `size` must equal the size of `memory`
-
 # Valid usage
 
 The rules of `vkFlushMappedMemoryRanges` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkFlushMappedMemoryRanges.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -1967,7 +1956,7 @@ The rules of `vkFlushMappedMemoryRanges` that apply to this crate's API ([refere
 - `VUID-vkFlushMappedMemoryRanges-pMemoryRanges-parameter` (*by the types*): `pMemoryRanges` must be a valid pointer to an array of `memoryRangeCount` valid VkMappedMemoryRange structures*/
     #[doc(alias = "vkFlushMappedMemoryRanges")]
     #[inline]
-    pub unsafe fn flush_mapped_memory_ranges<'a>(
+    pub fn flush_mapped_memory_ranges<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
@@ -1975,6 +1964,7 @@ The rules of `vkFlushMappedMemoryRanges` that apply to this crate's API ([refere
             let r = self.validate_flush_mapped_memory_ranges(memory_ranges);
             r?;
         }
+        let _held = crate::special::memory::mapped_ranges_hold(self, memory_ranges)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.flush_mapped_memory_ranges_unchecked(memory_ranges) }
@@ -1983,7 +1973,7 @@ The rules of `vkFlushMappedMemoryRanges` that apply to this crate's API ([refere
 
 # Safety
 
-The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at run time: `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::flush_mapped_memory_ranges`] checks at run time: `VUID-vkFlushMappedMemoryRanges-memoryRangeCount-arraylength`, `VUID-VkMappedMemoryRange-memory-00684`, `VUID-VkMappedMemoryRange-size-00685`, `VUID-VkMappedMemoryRange-size-00686`, `VUID-VkMappedMemoryRange-offset-00687`, `VUID-VkMappedMemoryRange-size-01389`, `VUID-VkMappedMemoryRange-size-01390`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn flush_mapped_memory_ranges_unchecked<'a>(
         &self,
@@ -2568,17 +2558,6 @@ The caller upholds the rules that [`Self::get_render_area_granularity`] checks a
     }
     /**`vkInvalidateMappedMemoryRanges`
 
-# Safety
-
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkMappedMemoryRange-memory-00684`: `memory` must be currently host mapped
-- `VUID-VkMappedMemoryRange-size-00685`: If `size` is not equal to `VK_WHOLE_SIZE`, `offset` and `size` must specify a range contained within the currently mapped range of `memory`
-- `VUID-VkMappedMemoryRange-size-00686`: If `size` is equal to `VK_WHOLE_SIZE`, `offset` must be within the currently mapped range of `memory`
-- `VUID-VkMappedMemoryRange-offset-00687`: `offset` must be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`
-- `VUID-VkMappedMemoryRange-size-01389`: If `size` is equal to `VK_WHOLE_SIZE`, the end of the current mapping of `memory` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize` bytes from the beginning of the memory object, or be equal to the end of the memory object
-- `VUID-VkMappedMemoryRange-size-01390`: If `size` is not equal to `VK_WHOLE_SIZE`, `size` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`, or `offset` plus `size` must equal the size of `memory`
-
 # Valid usage
 
 The rules of `vkInvalidateMappedMemoryRanges` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkInvalidateMappedMemoryRanges.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -2588,7 +2567,7 @@ The rules of `vkInvalidateMappedMemoryRanges` that apply to this crate's API ([r
 - `VUID-vkInvalidateMappedMemoryRanges-pMemoryRanges-parameter` (*by the types*): `pMemoryRanges` must be a valid pointer to an array of `memoryRangeCount` valid VkMappedMemoryRange structures*/
     #[doc(alias = "vkInvalidateMappedMemoryRanges")]
     #[inline]
-    pub unsafe fn invalidate_mapped_memory_ranges<'a>(
+    pub fn invalidate_mapped_memory_ranges<'a>(
         &self,
         memory_ranges: &[MappedMemoryRange<'a>],
     ) -> Result<()> {
@@ -2596,6 +2575,7 @@ The rules of `vkInvalidateMappedMemoryRanges` that apply to this crate's API ([r
             let r = self.validate_invalidate_mapped_memory_ranges(memory_ranges);
             r?;
         }
+        let _held = crate::special::memory::mapped_ranges_hold(self, memory_ranges)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.invalidate_mapped_memory_ranges_unchecked(memory_ranges) }

@@ -409,28 +409,47 @@ The caller upholds the rules that [`Self::get_descriptor_set_layout_support`] ch
     }
     /**`vkGetDeviceGroupPeerMemoryFeatures`
 
-# Safety
-
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691`: `heapIndex` must be less than `memoryHeapCount`
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692`: `localDeviceIndex` must be a valid device index
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693`: `remoteDeviceIndex` must be a valid device index
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694`: `localDeviceIndex` must not equal `remoteDeviceIndex`
-
 # Valid usage
 
 The rules of `vkGetDeviceGroupPeerMemoryFeatures` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceGroupPeerMemoryFeatures.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691` (*yours*; explicit rule): `heapIndex` must be less than `memoryHeapCount`
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692` (*yours*; explicit rule): `localDeviceIndex` must be a valid device index
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693` (*yours*; explicit rule): `remoteDeviceIndex` must be a valid device index
-- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694` (*yours*; explicit rule): `localDeviceIndex` must not equal `remoteDeviceIndex`
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691` (*checked*): `heapIndex` must be less than `memoryHeapCount`
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692` (*checked*): `localDeviceIndex` must be a valid device index
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693` (*checked*): `remoteDeviceIndex` must be a valid device index
+- `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694` (*checked*): `localDeviceIndex` must not equal `remoteDeviceIndex`
 - `VUID-vkGetDeviceGroupPeerMemoryFeatures-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkGetDeviceGroupPeerMemoryFeatures-pPeerMemoryFeatures-parameter` (*by the types*): `pPeerMemoryFeatures` must be a valid pointer to a VkPeerMemoryFeatureFlags value*/
     #[doc(alias = "vkGetDeviceGroupPeerMemoryFeatures")]
     #[inline]
-    pub unsafe fn get_group_peer_memory_features(
+    pub fn get_group_peer_memory_features(
+        &self,
+        heap_index: u32,
+        local_device_index: u32,
+        remote_device_index: u32,
+    ) -> Result<vk::PeerMemoryFeatureFlags> {
+        crate::special::memory::peer_memory_checks(
+            self,
+            heap_index,
+            local_device_index,
+            remote_device_index,
+        )?;
+        // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
+        // docs).
+        Ok(unsafe {
+            self.get_group_peer_memory_features_unchecked(
+                heap_index,
+                local_device_index,
+                remote_device_index,
+            )
+        })
+    }
+    /**`vkGetDeviceGroupPeerMemoryFeatures` without its dynamic checks.
+
+# Safety
+
+The caller upholds the rules that [`Self::get_group_peer_memory_features`] checks at run time: `VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691`, `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692`, `VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693`, `VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+    #[inline]
+    pub unsafe fn get_group_peer_memory_features_unchecked(
         &self,
         heap_index: u32,
         local_device_index: u32,

@@ -5,15 +5,6 @@ use super::*;
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdDispatchBase`
 
-# Safety
-
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdDispatchBase-groupCountX-00424`: `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\] minus `baseGroupX`
-- `VUID-vkCmdDispatchBase-groupCountY-00425`: `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\] minus `baseGroupY`
-- `VUID-vkCmdDispatchBase-groupCountZ-00426`: `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\] minus `baseGroupZ`
-- `VUID-vkCmdDispatchBase-baseGroupX-00427`: If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
-
 # Valid usage
 
 The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdDispatchBase.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -26,13 +17,6 @@ The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page
 - `VUID-vkCmdDispatchBase-None-04115` (*yours*; checked by the safe methods in every build): If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image …
 - `VUID-vkCmdDispatchBase-OpImageWrite-04469` (*yours*; checked by the safe methods in every build): If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer …
 - `VUID-vkCmdDispatchBase-None-07288` (*yours*; explicit rule): Any shader invocation executed by this command must terminate
-- `VUID-vkCmdDispatchBase-baseGroupX-00421` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `baseGroupX` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\]
-- `VUID-vkCmdDispatchBase-baseGroupX-00422` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `baseGroupY` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\]
-- `VUID-vkCmdDispatchBase-baseGroupZ-00423` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): `baseGroupZ` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\]
-- `VUID-vkCmdDispatchBase-groupCountX-00424` (*yours*; explicit rule): `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\] minus `baseGroupX`
-- `VUID-vkCmdDispatchBase-groupCountY-00425` (*yours*; explicit rule): `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\] minus `baseGroupY`
-- `VUID-vkCmdDispatchBase-groupCountZ-00426` (*yours*; explicit rule): `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\] minus `baseGroupZ`
-- `VUID-vkCmdDispatchBase-baseGroupX-00427` (*yours*; explicit rule): If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
 - `VUID-vkCmdDispatchBase-aspectMask-06478` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view must have been created with an `aspectMask` that contains `VK_IMAGE_ASPECT_DEPTH_BIT`
 - `VUID-vkCmdDispatchBase-None-06479` (*yours*; checked by the safe methods in every build): If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
 - `VUID-vkCmdDispatchBase-OpTypeImage-07027` (*yours*; checked by the safe methods in every build): For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
@@ -79,6 +63,13 @@ The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page
 - `VUID-vkCmdDispatchBase-None-02859` (*checked*): There must not have been any calls to dynamic state setting commands for any state not specified as dynamic in the `VkPipeline` object bound to the pipeline bind point used by this command, since that …
 - `VUID-vkCmdDispatchBase-viewType-07752` (*checked*): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `viewType` must match the `Dim` operand of the `OpTypeImage` as described in Instruction/Sampler/Image View …
 - `VUID-vkCmdDispatchBase-format-07753` (*checked*): If a VkImageView is accessed as a result of this command, then the image view&#8217;s `format` must match the numeric format from the `Sampled` `Type` operand of the `OpTypeImage` as described in the …
+- `VUID-vkCmdDispatchBase-baseGroupX-00421` (*checked*): `baseGroupX` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\]
+- `VUID-vkCmdDispatchBase-baseGroupX-00422` (*checked*): `baseGroupY` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\]
+- `VUID-vkCmdDispatchBase-baseGroupZ-00423` (*checked*): `baseGroupZ` must be less than `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\]
+- `VUID-vkCmdDispatchBase-groupCountX-00424` (*checked*): `groupCountX` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\] minus `baseGroupX`
+- `VUID-vkCmdDispatchBase-groupCountY-00425` (*checked*): `groupCountY` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\] minus `baseGroupY`
+- `VUID-vkCmdDispatchBase-groupCountZ-00426` (*checked*): `groupCountZ` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\] minus `baseGroupZ`
+- `VUID-vkCmdDispatchBase-baseGroupX-00427` (*checked*): If any of `baseGroupX`, `baseGroupY`, or `baseGroupZ` are not zero, then the bound compute pipeline must have been created with the `VK_PIPELINE_CREATE_DISPATCH_BASE` flag
 - `VUID-vkCmdDispatchBase-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support compute operations
 - `VUID-vkCmdDispatchBase-OpTypeImage-07028` (*checked*): For any VkImageView being read as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …
 - `VUID-vkCmdDispatchBase-maintenance4-06425` (*checked*): If the `maintenance4` feature is not enabled, then for each push constant that is statically used by the `VkPipeline` bound to the pipeline bind point used by this command, a push constant value must …
@@ -90,7 +81,7 @@ The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page
 - `VUID-vkCmdDispatchBase-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdDispatchBase")]
     #[inline]
-    pub unsafe fn dispatch_base(
+    pub fn dispatch_base(
         &mut self,
         base_group_x: u32,
         base_group_y: u32,
@@ -130,9 +121,22 @@ The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page
         )?;
         {
             let r = self
-                .validate_dispatch_base(base_group_x, base_group_y, base_group_z);
+                .validate_dispatch_base(
+                    base_group_x,
+                    base_group_y,
+                    base_group_z,
+                    group_count_x,
+                    group_count_y,
+                    group_count_z,
+                );
             r?;
         }
+        crate::special::draw::dispatch_base_checks(
+            self,
+            base_group_x,
+            base_group_y,
+            base_group_z,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -150,7 +154,7 @@ The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-None-02859`, `VUID-vkCmdDispatchBase-commandBuffer-02701`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-magFilter-04553`, `VUID-vkCmdDispatchBase-mipmapMode-04770`, `VUID-vkCmdDispatchBase-None-02702`, `VUID-vkCmdDispatchBase-None-02703`, `VUID-vkCmdDispatchBase-None-02704`, `VUID-vkCmdDispatchBase-None-04115`, `VUID-vkCmdDispatchBase-OpImageWrite-04469`, `VUID-vkCmdDispatchBase-OpTypeImage-07029`, `VUID-vkCmdDispatchBase-OpTypeImage-07030`, `VUID-vkCmdDispatchBase-None-06550`, `VUID-vkCmdDispatchBase-ConstOffset-06551`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::dispatch_base`] checks at run time: `VUID-vkCmdDispatchBase-commandBuffer-cmdpool`, `VUID-vkCmdDispatchBase-baseGroupX-00421`, `VUID-vkCmdDispatchBase-baseGroupX-00422`, `VUID-vkCmdDispatchBase-baseGroupZ-00423`, `VUID-vkCmdDispatchBase-groupCountX-00424`, `VUID-vkCmdDispatchBase-groupCountY-00425`, `VUID-vkCmdDispatchBase-groupCountZ-00426`, `VUID-vkCmdDispatchBase-None-02700`, `VUID-vkCmdDispatchBase-None-02697`, `VUID-vkCmdDispatchBase-None-02859`, `VUID-vkCmdDispatchBase-commandBuffer-02701`, `VUID-vkCmdDispatchBase-viewType-07752`, `VUID-vkCmdDispatchBase-format-07753`, `VUID-vkCmdDispatchBase-None-02699`, `VUID-vkCmdDispatchBase-maintenance4-06425`, `VUID-vkCmdDispatchBase-None-02691`, `VUID-vkCmdDispatchBase-None-06479`, `VUID-vkCmdDispatchBase-OpTypeImage-07027`, `VUID-vkCmdDispatchBase-OpTypeImage-07028`, `VUID-vkCmdDispatchBase-commandBuffer-02707`, `VUID-vkCmdDispatchBase-magFilter-04553`, `VUID-vkCmdDispatchBase-mipmapMode-04770`, `VUID-vkCmdDispatchBase-None-02702`, `VUID-vkCmdDispatchBase-None-02703`, `VUID-vkCmdDispatchBase-None-02704`, `VUID-vkCmdDispatchBase-None-04115`, `VUID-vkCmdDispatchBase-OpImageWrite-04469`, `VUID-vkCmdDispatchBase-OpTypeImage-07029`, `VUID-vkCmdDispatchBase-OpTypeImage-07030`, `VUID-vkCmdDispatchBase-None-06550`, `VUID-vkCmdDispatchBase-ConstOffset-06551`, `VUID-vkCmdDispatchBase-baseGroupX-00427`, `VUID-vkCmdDispatchBase-commandBuffer-02712`, `VUID-vkCmdDispatchBase-commandBuffer-02713`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn dispatch_base_unchecked(
         &mut self,
@@ -186,33 +190,24 @@ The caller upholds the rules that [`Self::dispatch_base`] checks at run time: `V
 impl<'c, S: Scope> Recorder<'c, S> {
     /**`vkCmdSetDeviceMask`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdSetDeviceMask-deviceMask-00108`: `deviceMask` must be a valid device mask value
-- `VUID-vkCmdSetDeviceMask-deviceMask-00110`: `deviceMask` must not include any set bits that were not in the VkDeviceGroupCommandBufferBeginInfo::`deviceMask` value when the command buffer began recording
-- `VUID-vkCmdSetDeviceMask-deviceMask-00111`: If `vkCmdSetDeviceMask` is called inside a render pass instance, `deviceMask` must not include any set bits that were not in the VkDeviceGroupRenderPassBeginInfo::`deviceMask` value when the render pass instance began recording
-
 # Valid usage
 
 The rules of `vkCmdSetDeviceMask` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetDeviceMask.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetDeviceMask-deviceMask-00108` (*yours*; explicit rule): `deviceMask` must be a valid device mask value
-- `VUID-vkCmdSetDeviceMask-deviceMask-00110` (*yours*; explicit rule): `deviceMask` must not include any set bits that were not in the VkDeviceGroupCommandBufferBeginInfo::`deviceMask` value when the command buffer began recording
-- `VUID-vkCmdSetDeviceMask-deviceMask-00111` (*yours*; explicit rule): If `vkCmdSetDeviceMask` is called inside a render pass instance, `deviceMask` must not include any set bits that were not in the VkDeviceGroupRenderPassBeginInfo::`deviceMask` value when the render …
+- `VUID-vkCmdSetDeviceMask-deviceMask-00110` (*yours*; checked by the safe methods in every build): `deviceMask` must not include any set bits that were not in the VkDeviceGroupCommandBufferBeginInfo::`deviceMask` value when the command buffer began recording
+- `VUID-vkCmdSetDeviceMask-deviceMask-00111` (*yours*; checked by the safe methods in every build): If `vkCmdSetDeviceMask` is called inside a render pass instance, `deviceMask` must not include any set bits that were not in the VkDeviceGroupRenderPassBeginInfo::`deviceMask` value when the render …
+- `VUID-vkCmdSetDeviceMask-deviceMask-00108` (*checked*): `deviceMask` must be a valid device mask value
 - `VUID-vkCmdSetDeviceMask-deviceMask-00109` (*checked*): `deviceMask` must not be zero
 - `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, or transfer operations
 - `VUID-vkCmdSetDeviceMask-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdSetDeviceMask-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdSetDeviceMask")]
     #[inline]
-    pub unsafe fn set_device_mask(&mut self, device_mask: u32) {
+    pub fn set_device_mask(&mut self, device_mask: u32) -> Result<()> {
+        crate::special::sync::set_device_mask_checks(self, device_mask)?;
         {
             let r = self.validate_set_device_mask(device_mask);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -222,13 +217,16 @@ The rules of `vkCmdSetDeviceMask` that apply to this crate's API ([reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, `VUID-vkCmdSetDeviceMask-deviceMask-00109`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_device_mask`] checks at run time: `VUID-vkCmdSetDeviceMask-commandBuffer-cmdpool`, `VUID-vkCmdSetDeviceMask-deviceMask-00109`, `VUID-vkCmdSetDeviceMask-deviceMask-00108`, `VUID-vkCmdSetDeviceMask-deviceMask-00110`, `VUID-vkCmdSetDeviceMask-deviceMask-00111`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
-    pub unsafe fn set_device_mask_unchecked(&mut self, device_mask: u32) {
+    pub unsafe fn set_device_mask_unchecked(&mut self, device_mask: u32) -> Result<()> {
         let fp = self.device().fns().fp_v1_1().cmd_set_device_mask;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), device_mask) };
-        crate::special::sync::device_mask_set(self, device_mask);
-        self.state_changed();
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), device_mask) };
+            crate::special::sync::device_mask_set(self, device_mask);
+            self.state_changed();
+        }
+        Ok(())
     }
 }

@@ -203,24 +203,17 @@ The caller upholds the rules that [`Self::get_buffer_opaque_capture_address`] ch
     }
     /**`vkGetDeviceMemoryOpaqueCaptureAddress`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335`: If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336`: `memory` must have been allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`
-
 # Valid usage
 
 The rules of `vkGetDeviceMemoryOpaqueCaptureAddress` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceMemoryOpaqueCaptureAddress.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): The `bufferDeviceAddress` feature must be enabled
-- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335` (*yours*; explicit rule): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
+- `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335` (*yours*; checked by the safe methods in every build): If `device` was created with multiple physical devices, then the `bufferDeviceAddressMultiDevice` feature must be enabled
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-pInfo-parameter` (*by the types*): `pInfo` must be a valid pointer to a valid VkDeviceMemoryOpaqueCaptureAddressInfo structure*/
     #[doc(alias = "vkGetDeviceMemoryOpaqueCaptureAddress")]
     #[inline]
-    pub unsafe fn get_device_memory_opaque_capture_address<'a>(
+    pub fn get_device_memory_opaque_capture_address<'a>(
         &self,
         info: &DeviceMemoryOpaqueCaptureAddressInfo<'a>,
     ) -> Result<u64> {
@@ -228,6 +221,7 @@ The rules of `vkGetDeviceMemoryOpaqueCaptureAddress` that apply to this crate's 
             let r = self.validate_get_device_memory_opaque_capture_address(info);
             r?;
         }
+        crate::special::memory::memory_capture_address_checks(self, info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         Ok(unsafe { self.get_device_memory_opaque_capture_address_unchecked(info) })
@@ -236,7 +230,7 @@ The rules of `vkGetDeviceMemoryOpaqueCaptureAddress` that apply to this crate's 
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_memory_opaque_capture_address`] checks at run time: `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_device_memory_opaque_capture_address`] checks at run time: `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-None-03334`, `VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335`, `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_device_memory_opaque_capture_address_unchecked<'a>(
         &self,

@@ -111,14 +111,6 @@ The caller upholds the rules that [`Self::get_device_buffer_memory_requirements`
     }
     /**`vkGetDeviceImageMemoryRequirements`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`: If `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set and if the `pCreateInfo::tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
-
 # Valid usage
 
 The rules of `vkGetDeviceImageMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -128,11 +120,13 @@ The rules of `vkGetDeviceImageMemoryRequirements` that apply to this crate's API
 - `VUID-vkGetDeviceImageMemoryRequirements-pMemoryRequirements-parameter` (*by the types*): `pMemoryRequirements` must be a valid pointer to a VkMemoryRequirements2 structure*/
     #[doc(alias = "vkGetDeviceImageMemoryRequirements")]
     #[inline]
-    pub unsafe fn get_device_image_memory_requirements<'a>(
+    pub fn get_device_image_memory_requirements<'a>(
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
         memory_requirements: &mut MemoryRequirements2<'a>,
     ) -> Result<()> {
+        self.validate_origins_get_device_image_memory_requirements(info)?;
+        crate::special::memory::device_image_requirements_checks(self, info)?;
         {
             let r = self
                 .validate_get_device_image_memory_requirements(
@@ -155,7 +149,7 @@ The rules of `vkGetDeviceImageMemoryRequirements` that apply to this crate's API
 
 # Safety
 
-The caller upholds the rules that [`Self::get_device_image_memory_requirements`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::get_device_image_memory_requirements`] checks at run time: `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`, `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`, `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_device_image_memory_requirements_unchecked<'a>(
         &self,
@@ -174,14 +168,6 @@ The caller upholds the rules that [`Self::get_device_image_memory_requirements`]
     }
     /**`vkGetDeviceImageSparseMemoryRequirements`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416`: The `pCreateInfo::pNext` chain must not contain a VkImageSwapchainCreateInfoKHR structure
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417`: If `pCreateInfo::format` specifies a multi-planar format and `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set then `planeAspect` must not be `VK_IMAGE_ASPECT_NONE_KHR`
-- `VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419`: If `pCreateInfo::flags` has `VK_IMAGE_CREATE_DISJOINT_BIT` set and if the `pCreateInfo::tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
-
 # Valid usage
 
 The rules of `vkGetDeviceImageSparseMemoryRequirements` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetDeviceImageSparseMemoryRequirements.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -192,10 +178,12 @@ The rules of `vkGetDeviceImageSparseMemoryRequirements` that apply to this crate
 - `VUID-vkGetDeviceImageSparseMemoryRequirements-pSparseMemoryRequirements-parameter` (*by the types*): If the value referenced by `pSparseMemoryRequirementCount` is not `0`, and `pSparseMemoryRequirements` is not `NULL`, `pSparseMemoryRequirements` must be a valid pointer to an array of …*/
     #[doc(alias = "vkGetDeviceImageSparseMemoryRequirements")]
     #[inline]
-    pub unsafe fn get_device_image_sparse_memory_requirements<'a>(
+    pub fn get_device_image_sparse_memory_requirements<'a>(
         &self,
         info: &DeviceImageMemoryRequirements<'a>,
     ) -> Result<Vec<vk::SparseImageMemoryRequirements2<'static>>> {
+        self.validate_origins_get_device_image_sparse_memory_requirements(info)?;
+        crate::special::memory::device_image_requirements_checks(self, info)?;
         {
             let r = self.validate_get_device_image_sparse_memory_requirements(info);
             r?;

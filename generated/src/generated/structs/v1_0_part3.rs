@@ -73,13 +73,13 @@ impl<'a> InstanceCreateInfo<'a> {
 
 The rules of `VkMappedMemoryRange` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkMappedMemoryRange.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkMappedMemoryRange-memory-00684` (*yours*; explicit rule): `memory` must be currently host mapped
-- `VUID-VkMappedMemoryRange-size-00685` (*yours*; explicit rule): If `size` is not equal to `VK_WHOLE_SIZE`, `offset` and `size` must specify a range contained within the currently mapped range of `memory`
-- `VUID-VkMappedMemoryRange-size-00686` (*yours*; explicit rule): If `size` is equal to `VK_WHOLE_SIZE`, `offset` must be within the currently mapped range of `memory`
-- `VUID-VkMappedMemoryRange-offset-00687` (*yours*; explicit rule): `offset` must be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`
-- `VUID-VkMappedMemoryRange-size-01389` (*yours*; explicit rule): If `size` is equal to `VK_WHOLE_SIZE`, the end of the current mapping of `memory` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize` bytes from the beginning of the memory …
-- `VUID-VkMappedMemoryRange-size-01390` (*yours*; explicit rule): If `size` is not equal to `VK_WHOLE_SIZE`, `size` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`, or `offset` plus `size` must equal the size of `memory`
+- `VUID-VkMappedMemoryRange-memory-00684` (*checked*): `memory` must be currently host mapped
+- `VUID-VkMappedMemoryRange-size-00685` (*checked*): If `size` is not equal to `VK_WHOLE_SIZE`, `offset` and `size` must specify a range contained within the currently mapped range of `memory`
+- `VUID-VkMappedMemoryRange-size-00686` (*checked*): If `size` is equal to `VK_WHOLE_SIZE`, `offset` must be within the currently mapped range of `memory`
+- `VUID-VkMappedMemoryRange-offset-00687` (*checked*): `offset` must be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`
+- `VUID-VkMappedMemoryRange-size-01390` (*checked*): If `size` is not equal to `VK_WHOLE_SIZE`, `size` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize`, or `offset` plus `size` must equal the size of `memory`
 - `VUID-VkMappedMemoryRange-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
+- `VUID-VkMappedMemoryRange-size-01389` (*by the types*): If `size` is equal to `VK_WHOLE_SIZE`, the end of the current mapping of `memory` must either be a multiple of VkPhysicalDeviceLimits::`nonCoherentAtomSize` bytes from the beginning of the memory …
 - `VUID-VkMappedMemoryRange-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE`
 - `VUID-VkMappedMemoryRange-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/
 #[repr(transparent)]

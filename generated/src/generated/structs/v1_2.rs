@@ -366,7 +366,7 @@ for DescriptorSetVariableDescriptorCountLayoutSupport<'a> {}
 
 The rules of `VkDeviceMemoryOpaqueCaptureAddressInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDeviceMemoryOpaqueCaptureAddressInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336` (*yours*; explicit rule): `memory` must have been allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`
+- `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336` (*checked*): `memory` must have been allocated with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-parameter` (*checked*): `memory` must be a valid VkDeviceMemory handle
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DEVICE_MEMORY_OPAQUE_CAPTURE_ADDRESS_INFO`
 - `VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/

@@ -13,210 +13,389 @@ const BARRIER_CONCURRENT: &str = "checked by the safe methods in every build, bu
 const BARRIER_PLANES: &str = "checked by the safe methods in every build, but no test breaks it: no test makes a disjoint multi-planar image yet";
 const BARRIER_FAMILY: &str = "checked by the safe methods in every build (the specification's table of the stages each queue capability supports), but no test breaks it: lavapipe's only queue family supports every stage";
 
+const BARRIER_HOST: &str = "checks the barrier's own stage masks: naming the host stage, it transfers no ownership and moves an image only from a layout the host can access (the 1.3.239 layer does not check it: the error alone proves it)";
+
 /// The rows of this concern.
-pub(super) const ROWS: &[Special] = &[Special {
-    command: "vkCmdPipelineBarrier",
-    check: call(
-        "special::barriers::pipeline_barrier_checks",
-        &[
-            "self",
-            "src_stage_mask",
-            "dst_stage_mask",
-            "dependency_flags",
-            "memory_barriers",
-            "buffer_memory_barriers",
-            "image_memory_barriers",
+pub(super) const ROWS: &[Special] = &[
+    PIPELINE_BARRIER2,
+    Special {
+        command: "vkCmdPipelineBarrier",
+        check: call(
+            "special::barriers::pipeline_barrier_checks",
+            &[
+                "self",
+                "src_stage_mask",
+                "dst_stage_mask",
+                "dependency_flags",
+                "memory_barriers",
+                "buffer_memory_barriers",
+                "image_memory_barriers",
+            ],
+        ),
+        after: call(
+            "special::image_layouts::cmd_pipeline_barrier_done",
+            &["self", "image_memory_barriers"],
+        ),
+        settles: &[
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01197",
+                How::Dynamic(LAYOUT_BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-pDependencies-02285",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-image-04073",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01208",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01209",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01210",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01211",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01212",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01213",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01658",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-oldLayout-01659",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-newLayout-01198",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-image-01671",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-image-03319",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-image-03320",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-image-04072",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03938",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03939",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04066",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04067",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04068",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-VkBufferMemoryBarrier-buffer-04089",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087",
+                How::Dynamic(BARRIER_ALONE),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-srcAccessMask-02815",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-dstAccessMask-02816",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-dependencyFlags-01186",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-oldLayout-01181",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-None-06191",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-srcStageMask-03937",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-dstStageMask-03937",
+                How::Dynamic(BARRIER),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817",
+                How::Dynamic(BARRIER_ACCESS),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818",
+                How::Dynamic(BARRIER_ACCESS),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819",
+                How::Dynamic(BARRIER_ACCESS),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820",
+                How::Dynamic(BARRIER_ACCESS),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-image-04071",
+                How::User(BARRIER_CONCURRENT),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-synchronization2-03857",
+                How::User(BARRIER_CONCURRENT),
+            ),
+            (
+                "VUID-VkBufferMemoryBarrier-buffer-04088",
+                How::User(BARRIER_CONCURRENT),
+            ),
+            (
+                "VUID-VkBufferMemoryBarrier-synchronization2-03853",
+                How::User(BARRIER_CONCURRENT),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-image-01672",
+                How::User(BARRIER_PLANES),
+            ),
+            (
+                "VUID-VkImageMemoryBarrier-image-01673",
+                How::User(BARRIER_PLANES),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-srcStageMask-06461",
+                How::User(BARRIER_FAMILY),
+            ),
+            (
+                "VUID-vkCmdPipelineBarrier-dstStageMask-06462",
+                How::User(BARRIER_FAMILY),
+            ),
         ],
+        ..NONE
+    },
+];
+
+/// `vkCmdPipelineBarrier2`: the first version's rules, each barrier under its own
+/// stages (its structs' access types are their own rules, checked by the emitted
+/// checks).
+const PIPELINE_BARRIER2: Special = Special {
+    command: "vkCmdPipelineBarrier2",
+    check: call(
+        "special::barriers::pipeline_barrier2_checks",
+        &["self", "dependency_info"],
     ),
     after: call(
-        "special::image_layouts::cmd_pipeline_barrier_done",
-        &["self", "image_memory_barriers"],
+        "special::image_layouts::dependency_done",
+        &["self", "core::slice::from_ref(dependency_info)"],
     ),
     settles: &[
         (
-            "VUID-VkImageMemoryBarrier-oldLayout-01197",
+            "VUID-VkImageMemoryBarrier2-oldLayout-01197",
             How::Dynamic(LAYOUT_BARRIER),
         ),
         (
-            "VUID-vkCmdPipelineBarrier-pDependencies-02285",
+            "VUID-vkCmdPipelineBarrier2-pDependencies-02285",
             How::Dynamic(BARRIER),
         ),
         (
-            "VUID-vkCmdPipelineBarrier-image-04073",
+            "VUID-vkCmdPipelineBarrier2-bufferMemoryBarrierCount-01178",
             How::Dynamic(BARRIER),
         ),
         (
-            "VUID-VkImageMemoryBarrier-oldLayout-01208",
+            "VUID-vkCmdPipelineBarrier2-image-04073",
             How::Dynamic(BARRIER),
         ),
         (
-            "VUID-VkImageMemoryBarrier-oldLayout-01209",
+            "VUID-vkCmdPipelineBarrier2-oldLayout-01181",
             How::Dynamic(BARRIER),
         ),
         (
-            "VUID-VkImageMemoryBarrier-oldLayout-01210",
+            "VUID-vkCmdPipelineBarrier2-srcQueueFamilyIndex-01182",
             How::Dynamic(BARRIER),
         ),
         (
-            "VUID-VkImageMemoryBarrier-oldLayout-01211",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-oldLayout-01212",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-oldLayout-01213",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-oldLayout-01658",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-oldLayout-01659",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-newLayout-01198",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-image-01671",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-image-03319",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-image-03320",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-image-04072",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03938",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-03939",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04065",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04066",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04067",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04068",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-srcQueueFamilyIndex-04070",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-VkBufferMemoryBarrier-buffer-04089",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-VkBufferMemoryBarrier-srcQueueFamilyIndex-04087",
-            How::Dynamic(BARRIER_ALONE),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-srcAccessMask-02815",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-dstAccessMask-02816",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-dependencyFlags-01186",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-bufferMemoryBarrierCount-01178",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-oldLayout-01181",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-srcQueueFamilyIndex-01182",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-None-06191",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-srcStageMask-03937",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-dstStageMask-03937",
-            How::Dynamic(BARRIER),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02817",
-            How::Dynamic(BARRIER_ACCESS),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-pBufferMemoryBarriers-02818",
-            How::Dynamic(BARRIER_ACCESS),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02819",
-            How::Dynamic(BARRIER_ACCESS),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-pImageMemoryBarriers-02820",
-            How::Dynamic(BARRIER_ACCESS),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-image-04071",
-            How::User(BARRIER_CONCURRENT),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-synchronization2-03857",
-            How::User(BARRIER_CONCURRENT),
-        ),
-        (
-            "VUID-VkBufferMemoryBarrier-buffer-04088",
-            How::User(BARRIER_CONCURRENT),
-        ),
-        (
-            "VUID-VkBufferMemoryBarrier-synchronization2-03853",
-            How::User(BARRIER_CONCURRENT),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-image-01672",
-            How::User(BARRIER_PLANES),
-        ),
-        (
-            "VUID-VkImageMemoryBarrier-image-01673",
-            How::User(BARRIER_PLANES),
-        ),
-        (
-            "VUID-vkCmdPipelineBarrier-srcStageMask-06461",
+            "VUID-vkCmdPipelineBarrier2-srcStageMask-03849",
             How::User(BARRIER_FAMILY),
         ),
         (
-            "VUID-vkCmdPipelineBarrier-dstStageMask-06462",
+            "VUID-vkCmdPipelineBarrier2-dstStageMask-03850",
             How::User(BARRIER_FAMILY),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier2-dependencyFlags-01186",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-vkCmdPipelineBarrier2-None-06191",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier2-srcStageMask-03851",
+            How::Dynamic(BARRIER_HOST),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier2-srcQueueFamilyIndex-04087",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier2-buffer-04088",
+            How::User(BARRIER_CONCURRENT),
+        ),
+        (
+            "VUID-VkBufferMemoryBarrier2-buffer-04089",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01208",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01209",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01210",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01211",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01212",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01213",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-newLayout-01198",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcStageMask-03854",
+            How::Dynamic(BARRIER_HOST),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcStageMask-03855",
+            How::Dynamic(BARRIER_HOST),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01658",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-oldLayout-01659",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04065",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04066",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04067",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04068",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03938",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-03939",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-srcQueueFamilyIndex-04070",
+            How::Dynamic(BARRIER_ALONE),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-image-04071",
+            How::User(BARRIER_CONCURRENT),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-image-04072",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-image-01671",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-image-01672",
+            How::User(BARRIER_PLANES),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-image-01673",
+            How::User(BARRIER_PLANES),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-image-03319",
+            How::Dynamic(BARRIER),
+        ),
+        (
+            "VUID-VkImageMemoryBarrier2-image-03320",
+            How::Dynamic(BARRIER),
         ),
     ],
     ..NONE
-}];
+};

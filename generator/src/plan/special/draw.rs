@@ -37,6 +37,7 @@ const UNPROVEN_PROTECTED_BUFFER: &str = "checked by the safe methods in every bu
 const IMAGE_VIEW_NUMERIC: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding that an image variable of the pipeline's modules declares, its format's numeric type (vk.xml's numericFormat, or the depth or stencil aspect it views) against the variable's sampled type, float against integer (every variable a module declares counts)";
 const INDEXED_FETCH: &str = "checks, once per indexed draw and unless the device enabled robustBufferAccess (which keeps every vertex fetch inside the bound range), that the vertices every index of the bound index type can name (its largest value, plus the vertex offset; a negative offset is refused) and the instances drawn lie inside the range of each bound vertex buffer the pipeline's vertex shader reads, as for a direct draw; the index buffer's contents are the device's, so no smaller bound is known (the 1.3.239 layer does not check it: proven by the error alone)";
 const COMPUTE_STATIC: &str = "checks, once per change of the bound state, that no dynamic state setting command was recorded since the bound compute pipeline was bound (a compute pipeline has every state static; the recorder keeps a bit per state set since, cleared by each compute bind); the 1.3.239 layer does not check it for dispatches: the error alone proves it";
+const DISPATCH_BASE: &str = "checks, when a base group is not zero, that the compute pipeline bound (whose create flags the device records) was created with VK_PIPELINE_CREATE_DISPATCH_BASE_BIT";
 const COMPUTE_NO_DYNAMIC: &str = "a compute pipeline has no dynamic state (VkComputePipelineCreateInfo has no pDynamicState), so a dispatch's pipeline requires none to be set";
 const SAMPLER_LINEAR: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules sample, against the samplers that may sample it (a combined image sampler's own and its binding's immutable ones; for a separate image, every sampler the modules declare, as which sampler an OpSampledImage pairs with which image is not followed): with a LINEAR filter or mipmap mode (and no depth comparison), the view's format features (VkFormatProperties3, for its image's tiling) must have SAMPLED_IMAGE_FILTER_LINEAR; samplers record their filters when they are made";
 const SAMPLER_UNNORMALIZED: &str = "checks, once per change of the bound state, each image view the bound sets hold at a binding whose variable the pipeline's modules sample, against the samplers that may sample it (as for the linear filter rule): with unnormalized coordinates, a view of type 1D or 2D only, and no OpImageSample instruction with ImplicitLod, Dref or Proj, LOD bias or offset on the variable (read from the module's SPIR-V when it was made, followed from the variable as for atomics)";
@@ -251,8 +252,12 @@ macro_rules! shader_rules {
 /// vertex shader reads.
 macro_rules! bound {
     ($command:literal, COMPUTE, $sets:expr, $protected:literal, [$($extra:expr),* $(,)?]) => {
+        bound!($command, COMPUTE, $sets, $protected, None, [$($extra),*])
+    };
+    ($command:literal, COMPUTE, $sets:expr, $protected:literal, $last:expr, [$($extra:expr),* $(,)?]) => {
         Special {
             command: $command,
+            check_last: $last,
             after: call(
                 "special::draw::descriptor_layouts_used",
                 &["self", "vk::PipelineBindPoint::COMPUTE"],
@@ -526,7 +531,12 @@ pub(super) const ROWS: &[Special] = &[
         COMPUTE,
         How::Dynamic(SETS_BOUND),
         "VUID-vkCmdDispatchBase-commandBuffer-02712",
+        call(
+            "special::draw::dispatch_base_checks",
+            &["self", "base_group_x", "base_group_y", "base_group_z"]
+        ),
         [
+            ("VUID-vkCmdDispatchBase-baseGroupX-00427", How::Dynamic(DISPATCH_BASE)),
             ("VUID-vkCmdDispatchBase-commandBuffer-02712", How::User(UNPROVEN_PROTECTED_BUFFER)),
             ("VUID-vkCmdDispatchBase-commandBuffer-02713", How::User(UNPROVEN_PROTECTED_BUFFER)),
         ]

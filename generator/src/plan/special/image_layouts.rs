@@ -4,7 +4,7 @@
 //! The image layouts recorded commands name, checked against those the recording
 //! and the device's submissions leave.
 
-use super::{call, How, Special, LAYOUT, LAYOUT_BARRIER, NONE};
+use super::{call, How, Special, LAYOUT, NONE};
 
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
@@ -66,13 +66,6 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-VkResolveImageInfo2-srcImageLayout-00260", How::Dynamic(LAYOUT)),
             ("VUID-VkResolveImageInfo2-dstImageLayout-00262", How::Dynamic(LAYOUT)),
         ],
-        ..NONE
-    },
-    Special {
-        command: "vkCmdPipelineBarrier2",
-        check: call("special::image_layouts::dependency_checks", &["self", "core::slice::from_ref(dependency_info)"]),
-        after: call("special::image_layouts::dependency_done", &["self", "core::slice::from_ref(dependency_info)"]),
-        settles: &[("VUID-VkImageMemoryBarrier2-oldLayout-01197", How::Dynamic(LAYOUT_BARRIER))],
         ..NONE
     },
 ];

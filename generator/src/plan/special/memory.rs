@@ -25,8 +25,148 @@ const BIND_BOUND: &str = "refuses an object the device recorded as bound (and on
 const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
+const PEER_INDICES: &str = "checks the heap index against the physical device's memory heaps, and both device indices against the physical devices the device was created with (recorded at its creation), which must differ (the 1.3.239 layer does not check them: the error alone proves them)";
+const CAPTURE_MEMORY: &str = "checks the memory's allocation flags, kept from its allocation, include VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT";
+const UNPROVEN_CAPTURE_MULTI_DEVICE: &str = "checked by the safe methods in every build (the device's physical-device count and features, recorded at its creation), but no test breaks it: lavapipe's devices are not device groups";
+
+const DEVICE_IMAGE_PLANES: &str = "checks the create info's chain, and a disjoint image's plane aspect against its format's planes (the 1.3.239 layer does not check them: the error alone proves them)";
+
+/// The rows of `vkGetDeviceImageMemoryRequirements` and its sparse twin, which take
+/// the same info: both check its rules, the first row settles them.
+macro_rules! device_image_requirements {
+    ($command:literal, $settles:expr) => {
+        Special {
+            command: $command,
+            check: call(
+                "special::memory::device_image_requirements_checks",
+                &["self", "info"],
+            ),
+            settles: $settles,
+            ..NONE
+        }
+    };
+}
+
+const MAPPED_RANGE: &str = "checks, under the lock of the device's memory records that mapping and unmapping take, that a MappedMemory of the memory lives (it maps the whole memory), and the range against the memory's size and nonCoherentAtomSize";
+const MAPPED_PAST_END: &str = "checks, as for the other rules of the range, that an offset with VK_WHOLE_SIZE lies before the memory's end, where the mapping ends (the 1.3.239 layer checks only an offset below the mapping's start, which a mapping of the whole memory cannot have: the error alone proves it)";
+const MAPPED_WHOLE: &str =
+    "`DeviceMemory::map` maps the whole memory, so the mapping ends where the memory does";
+
+/// The rows of `vkFlushMappedMemoryRanges` and `vkInvalidateMappedMemoryRanges`, whose
+/// rules are their struct's: both check them, the first row settles them.
+macro_rules! mapped_ranges {
+    ($command:literal, $settles:expr) => {
+        Special {
+            command: $command,
+            hold: call(
+                "special::memory::mapped_ranges_hold",
+                &["self", "memory_ranges"],
+            ),
+            settles: $settles,
+            ..NONE
+        }
+    };
+}
+
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
+    mapped_ranges!(
+        "vkFlushMappedMemoryRanges",
+        &[
+            (
+                "VUID-VkMappedMemoryRange-memory-00684",
+                How::Dynamic(MAPPED_RANGE)
+            ),
+            (
+                "VUID-VkMappedMemoryRange-size-00685",
+                How::Dynamic(MAPPED_RANGE)
+            ),
+            (
+                "VUID-VkMappedMemoryRange-size-00686",
+                How::Dynamic(MAPPED_PAST_END)
+            ),
+            (
+                "VUID-VkMappedMemoryRange-offset-00687",
+                How::Dynamic(MAPPED_RANGE)
+            ),
+            (
+                "VUID-VkMappedMemoryRange-size-01389",
+                How::Static(MAPPED_WHOLE)
+            ),
+            (
+                "VUID-VkMappedMemoryRange-size-01390",
+                How::Dynamic(MAPPED_RANGE)
+            ),
+        ]
+    ),
+    mapped_ranges!("vkInvalidateMappedMemoryRanges", &[]),
+    device_image_requirements!(
+        "vkGetDeviceImageMemoryRequirements",
+        &[
+            (
+                "VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06416",
+                How::Dynamic(DEVICE_IMAGE_PLANES)
+            ),
+            (
+                "VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06417",
+                How::Dynamic(DEVICE_IMAGE_PLANES)
+            ),
+            (
+                "VUID-VkDeviceImageMemoryRequirementsKHR-pCreateInfo-06419",
+                How::Dynamic(DEVICE_IMAGE_PLANES)
+            ),
+        ]
+    ),
+    device_image_requirements!("vkGetDeviceImageSparseMemoryRequirements", &[]),
+    Special {
+        command: "vkGetDeviceGroupPeerMemoryFeatures",
+        check: call(
+            "special::memory::peer_memory_checks",
+            &[
+                "self",
+                "heap_index",
+                "local_device_index",
+                "remote_device_index",
+            ],
+        ),
+        settles: &[
+            (
+                "VUID-vkGetDeviceGroupPeerMemoryFeatures-heapIndex-00691",
+                How::Dynamic(PEER_INDICES),
+            ),
+            (
+                "VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00692",
+                How::Dynamic(PEER_INDICES),
+            ),
+            (
+                "VUID-vkGetDeviceGroupPeerMemoryFeatures-remoteDeviceIndex-00693",
+                How::Dynamic(PEER_INDICES),
+            ),
+            (
+                "VUID-vkGetDeviceGroupPeerMemoryFeatures-localDeviceIndex-00694",
+                How::Dynamic(PEER_INDICES),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkGetDeviceMemoryOpaqueCaptureAddress",
+        check_last: call(
+            "special::memory::memory_capture_address_checks",
+            &["self", "info"],
+        ),
+        settles: &[
+            (
+                "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335",
+                How::User(UNPROVEN_CAPTURE_MULTI_DEVICE),
+            ),
+            (
+                "VUID-VkDeviceMemoryOpaqueCaptureAddressInfo-memory-03336",
+                How::Dynamic(CAPTURE_MEMORY),
+            ),
+        ],
+        ..NONE
+    },
     Special {
         command: "vkBindBufferMemory",
         check: call(

@@ -8,6 +8,8 @@ use super::{call, How, Special, NONE, SEMAPHORE_TYPE, UNPROVEN_FAMILY};
 
 const EVENT_STAGES: &str =
     "checks the stage mask is not 0 where the device does not enable synchronization2";
+const DEVICE_MASK: &str = "checks that the mask names no physical device past the device's count (the device records how many it was created with)";
+const UNPROVEN_INITIAL_MASK: &str = "checked by the safe methods in every build (against the initial device mask the recorder keeps from the command buffer's begin, and the mask a chained VkDeviceGroupRenderPassBeginInfo gave the render pass instance), but no test breaks it: lavapipe's devices have one physical device, whose only valid mask is every device's";
 const UNPROVEN_ONE_DEVICE: &str = "checked by the safe methods in every build (the command buffer's current device mask, which the recorder follows from its begin and every vkCmdSetDeviceMask), but no test breaks it: lavapipe's devices have one physical device";
 const DEVICE_ONLY: &str =
     "checks the event was not created device-only, which the device records at its creation";
@@ -109,7 +111,7 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdWaitEvents2",
-        check: call("special::image_layouts::dependency_checks", &["self", "dependency_infos"]),
+        check: call("special::sync::wait_events2_checks", &["self", "dependency_infos"]),
         after: call("special::sync::wait_events2_done", &["self", "events", "dependency_infos"]),
         ..NONE
     },
@@ -138,11 +140,18 @@ pub(super) const ROWS: &[Special] = &[
     // The current device mask, which the event commands read.
     Special {
         command: "vkCmdSetDeviceMask",
+        check: call("special::sync::set_device_mask_checks", &["self", "device_mask"]),
         after: call("special::sync::device_mask_set", &["self", "device_mask"]),
+        settles: &[
+            ("VUID-vkCmdSetDeviceMask-deviceMask-00108", How::Dynamic(DEVICE_MASK)),
+            ("VUID-vkCmdSetDeviceMask-deviceMask-00110", How::User(UNPROVEN_INITIAL_MASK)),
+            ("VUID-vkCmdSetDeviceMask-deviceMask-00111", How::User(UNPROVEN_INITIAL_MASK)),
+        ],
         ..NONE
     },
     Special {
         command: "vkCmdSetEvent2",
+        check: call("special::sync::set_event2_checks", &["self", "dependency_info"]),
         after: call("special::sync::event_recorded", &["self", "event"]),
         ..NONE
     },
