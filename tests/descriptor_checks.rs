@@ -183,13 +183,11 @@ fn objects(s: &Setup) -> Objects {
         )
         .expect("buffer");
     let texel_view = |buffer: &tuff::Buffer| {
-        unsafe {
-            d.create_buffer_view(
-                &tuff::BufferViewCreateInfo::new(buffer)
-                    .format(vk::Format::R8G8B8A8_UNORM)
-                    .range(vk::WHOLE_SIZE),
-            )
-        }
+        d.create_buffer_view(
+            &tuff::BufferViewCreateInfo::new(buffer)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .range(vk::WHOLE_SIZE),
+        )
         .expect("buffer view")
     };
     // Each view names a buffer whose only texel usage is the other type's.
@@ -682,14 +680,13 @@ fn descriptors_of_another_device_are_refused() {
         256,
         vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::UNIFORM_TEXEL_BUFFER,
     );
-    let foreign_view = unsafe {
-        d2.create_buffer_view(
+    let foreign_view = d2
+        .create_buffer_view(
             &tuff::BufferViewCreateInfo::new(&foreign_buffer)
                 .format(vk::Format::R8G8B8A8_UNORM)
                 .range(vk::WHOLE_SIZE),
         )
-    }
-    .expect("buffer view");
+        .expect("buffer view");
     let foreign_sampler = d2
         .create_sampler(&tuff::SamplerCreateInfo::new())
         .expect("sampler");
@@ -963,8 +960,7 @@ fn sets_in_use_are_not_rewritten() {
         said.iter().any(|m| m.contains(in_use)),
         "the layer did not name {in_use}; it said {said:?}"
     );
-    // SAFETY: a timeline semaphore, signaled to a value above its current one.
-    unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1)) }
+    d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1))
         .expect("open the gate");
     assert_eq!(
         d.wait_for_fences(&fence, true, u64::MAX)
@@ -1669,4 +1665,94 @@ fn dispatch_commands() -> [(&'static str, Dispatch); 3] {
             }
         }),
     ]
+}
+
+/// A descriptor update template's entries name bindings of its set layout (00354)
+/// and fit them and the consecutive bindings after them as a write must (00355), at
+/// multiples of 4 in an inline uniform block (02226, 02227).
+#[test]
+fn template_entries_fit_their_set_layout() {
+    let _serial = vulkan::serial();
+    let s = setup_full_features(true);
+    let o = objects(&s);
+    let d = &s.device;
+    let layouts = tuff::HandleSlice::new(&[&o._sampler_layout]);
+    let pipeline_layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&layouts))
+        .expect("pipeline layout");
+    let entry = |binding, element, count, ty| vk::DescriptorUpdateTemplateEntry {
+        dst_binding: binding,
+        dst_array_element: element,
+        descriptor_count: count,
+        descriptor_type: ty,
+        offset: 0,
+        stride: 64,
+    };
+    let cases = [
+        (
+            entry(30, 0, 1, T::UNIFORM_BUFFER),
+            "VUID-VkDescriptorUpdateTemplateEntry-dstBinding-00354",
+            false,
+        ),
+        (
+            entry(binding::UNIFORM, 1, 2, T::UNIFORM_BUFFER),
+            "VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355",
+            false,
+        ),
+        (
+            entry(binding::INLINE, 2, 4, T::INLINE_UNIFORM_BLOCK),
+            "VUID-VkDescriptorUpdateTemplateEntry-descriptor-02226",
+            true,
+        ),
+        (
+            entry(binding::INLINE, 0, 6, T::INLINE_UNIFORM_BLOCK),
+            "VUID-VkDescriptorUpdateTemplateEntry-descriptor-02227",
+            true,
+        ),
+    ];
+    fn template<'a>(
+        layout: &'a tuff::DescriptorSetLayout,
+        pipeline_layout: &'a tuff::PipelineLayout,
+        entries: &'a [vk::DescriptorUpdateTemplateEntry],
+    ) -> tuff::DescriptorUpdateTemplateCreateInfo<'a> {
+        tuff::DescriptorUpdateTemplateCreateInfo::new(layout, pipeline_layout)
+            .template_type(vk::DescriptorUpdateTemplateType::DESCRIPTOR_SET)
+            .descriptor_update_entries(entries)
+    }
+    let mut wrong = Vec::new();
+    // The 1.3.239 layer checks the inline uniform block rules at the template's
+    // creation and not the bindings (it reads them at an update): tuff's error alone
+    // proves those, and lavapipe only stores the entries.
+    for (e, rule, layer_checks) in &cases {
+        let entries = [*e];
+        let info = template(&o._sampler_layout, &pipeline_layout, &entries);
+        let safe = vuid(d.create_descriptor_update_template(&info));
+        s.messages.take();
+        s.messages.abort_on_error(true);
+        // SAFETY: the template breaks only the rule under test, which the layer
+        // reports and so skips.
+        drop(unsafe { d.create_descriptor_update_template_unchecked(&info) });
+        s.messages.abort_on_error(false);
+        let said = s.messages.take();
+        let named = if *layer_checks {
+            said.iter().any(|m| m.contains(rule))
+        } else {
+            said.is_empty()
+        };
+        if safe != *rule || !named {
+            wrong.push(format!(
+                "tuff said {safe}, expected {rule}; the layer said {said:?}"
+            ));
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    // Both uniform buffers, and the whole inline block in two aligned pieces.
+    let entries = [
+        entry(binding::UNIFORM, 0, 2, T::UNIFORM_BUFFER),
+        entry(binding::INLINE, 0, 8, T::INLINE_UNIFORM_BLOCK),
+        entry(binding::INLINE, 8, 8, T::INLINE_UNIFORM_BLOCK),
+    ];
+    d.create_descriptor_update_template(&template(&o._sampler_layout, &pipeline_layout, &entries))
+        .expect("a template whose entries fit");
+    assert_silent(&s.messages);
 }

@@ -280,3 +280,102 @@ fn the_requirements_of_an_image_not_made_name_its_plane() {
     assert!(out.memory_requirements.size >= 16 * 16 * 4);
     assert_silent(&s.messages);
 }
+
+/// An image's subresource layout is asked of a linear image (07789), for one aspect
+/// (00997) of its format (04461, 04464), at a level (01716) and layer (01717) it has.
+#[test]
+fn a_subresource_layout_is_asked_of_a_linear_image() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let image = |format, tiling, usage| {
+        let image = d
+            .create_image(
+                &tuff::ImageCreateInfo::new()
+                    .image_type(vk::ImageType::TYPE_2D)
+                    .format(format)
+                    .extent(vk::Extent3D {
+                        width: 4,
+                        height: 4,
+                        depth: 1,
+                    })
+                    .mip_levels(1)
+                    .array_layers(1)
+                    .samples(vk::SampleCountFlags::TYPE_1)
+                    .tiling(tiling)
+                    .usage(usage),
+            )
+            .unwrap_or_else(|e| panic!("a {tiling:?} {format:?} image: {e}"));
+        let memory = s.bind_image(&image);
+        (image, memory)
+    };
+    let linear = vk::ImageTiling::LINEAR;
+    let transfer = vk::ImageUsageFlags::TRANSFER_SRC;
+    let (color, _m1) = image(vk::Format::R8G8B8A8_UNORM, linear, transfer);
+    let (optimal, _m2) = image(
+        vk::Format::R8G8B8A8_UNORM,
+        vk::ImageTiling::OPTIMAL,
+        transfer,
+    );
+    type A = vk::ImageAspectFlags;
+    let at = |aspect, mip_level, array_layer| vk::ImageSubresource {
+        aspect_mask: aspect,
+        mip_level,
+        array_layer,
+    };
+    let cases = [
+        (
+            &optimal,
+            at(A::COLOR, 0, 0),
+            "VUID-vkGetImageSubresourceLayout-image-07789",
+        ),
+        (
+            &color,
+            at(A::COLOR | A::DEPTH, 0, 0),
+            "VUID-vkGetImageSubresourceLayout-aspectMask-00997",
+        ),
+        (
+            &color,
+            at(A::COLOR, 1, 0),
+            "VUID-vkGetImageSubresourceLayout-mipLevel-01716",
+        ),
+        (
+            &color,
+            at(A::COLOR, 0, 1),
+            "VUID-vkGetImageSubresourceLayout-arrayLayer-01717",
+        ),
+        (
+            &color,
+            at(A::DEPTH, 0, 0),
+            "VUID-vkGetImageSubresourceLayout-format-04461",
+        ),
+    ];
+    for (image, subresource, rule) in &cases {
+        assert_eq!(
+            vuid(d.get_image_subresource_layout(image, subresource)),
+            *rule
+        );
+        layer_names(&s.messages, rule, || {
+            // SAFETY: see the module docs.
+            let _ = unsafe { d.get_image_subresource_layout_unchecked(image, subresource) };
+        });
+    }
+    // A depth aspect of a colour format is refused under 04461 first; the layer
+    // names 04464 for it too.
+    layer_names(
+        &s.messages,
+        "VUID-vkGetImageSubresourceLayout-format-04464",
+        || {
+            // SAFETY: see the module docs.
+            let _ =
+                unsafe { d.get_image_subresource_layout_unchecked(&color, &at(A::DEPTH, 0, 0)) };
+        },
+    );
+    // (Lavapipe makes no linear depth or stencil image, whose aspects 04462 and
+    // 04463 are about.)
+    let layout = d
+        .get_image_subresource_layout(&color, &at(A::COLOR, 0, 0))
+        .expect("the layout of a linear colour image");
+    assert!(layout.size >= 4 * 4 * 4);
+    assert_silent(&s.messages);
+}

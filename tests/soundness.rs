@@ -1283,10 +1283,10 @@ fn timeline_semaphores_are_used_only_with_their_values() {
         "VUID-VkSemaphoreWaitInfo-pSemaphores-03256"
     );
     assert_eq!(
-        vuid(unsafe {
+        vuid(
             s.device
                 .signal_semaphore(&tuff::SemaphoreSignalInfo::new(&binary).value(1))
-        }),
+        ),
         "VUID-VkSemaphoreSignalInfo-semaphore-03257"
     );
 

@@ -49,8 +49,7 @@ fn timeline_signals_rise() {
     let s = setup(true);
     let d = &s.device;
     let semaphore = timeline(&s, 0);
-    // SAFETY: a timeline semaphore, signalled above its current value.
-    unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&semaphore).value(5)) }
+    d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&semaphore).value(5))
         .expect("host signal");
     let fence = d
         .create_fence(&tuff::FenceCreateInfo::new())
@@ -237,5 +236,85 @@ fn submit2_batches_are_checked_and_the_layer_agrees() {
         tuff::SuccessOrTimeout::Success
     );
     assert_eq!(d.get_semaphore_counter_value(&semaphore).expect("value"), 6);
+    assert_silent(&s.messages);
+}
+
+/// A host signal of a timeline semaphore is above its value (03258) and below every
+/// pending signal (03259). Below a pending signal it is safe only where that signal
+/// waits for the host's (the wait-before-signal pattern); where a pending signal
+/// could run first, the safe method signals nothing.
+#[test]
+fn host_signals_rise_above_the_value_and_stay_below_pending_signals() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let semaphore = timeline(&s, 5);
+    let signal = |value| tuff::SemaphoreSignalInfo::new(&semaphore).value(value);
+    let rule = "VUID-VkSemaphoreSignalInfo-value-03258";
+    for value in [3, 5] {
+        assert_eq!(vuid(d.signal_semaphore(&signal(value))), rule);
+    }
+    layer_names(&s, rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { d.signal_semaphore_unchecked(&signal(5)) };
+    });
+    d.signal_semaphore(&signal(6))
+        .expect("a host signal above the value");
+    assert_eq!(d.get_semaphore_counter_value(&semaphore).expect("value"), 6);
+    // A batch that waits for 7 and then signals 10: pending until the host signals 7.
+    let semaphores = tuff::HandleSlice::new(&[&semaphore]);
+    let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
+    let mut wait_then_signal = tuff::TimelineSemaphoreSubmitInfo::new()
+        .wait_semaphore_values(&[7])
+        .signal_semaphore_values(&[10]);
+    let submit = [tuff::SubmitInfo::new()
+        .wait_semaphores(&semaphores, &stages)
+        .expect("one stage mask a semaphore")
+        .signal_semaphores(&semaphores)
+        .push_next(&mut wait_then_signal)];
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    s.queue.submit(&submit, Some(&fence)).expect("submit");
+    let rule = "VUID-VkSemaphoreSignalInfo-value-03259";
+    assert_eq!(vuid(d.signal_semaphore(&signal(12))), rule);
+    layer_names(&s, rule, || {
+        // SAFETY: the layer names the rule and skips the call.
+        let _ = unsafe { d.signal_semaphore_unchecked(&signal(12)) };
+    });
+    d.signal_semaphore(&signal(7))
+        .expect("the host's signal that the batch waits for");
+    assert_eq!(
+        d.wait_for_fences(&fence, true, u64::MAX).expect("wait"),
+        tuff::SuccessOrTimeout::Success
+    );
+    assert_eq!(
+        d.get_semaphore_counter_value(&semaphore).expect("value"),
+        10
+    );
+    // A batch that signals 20 without waiting could run before a host signal below
+    // it: refused until its fence shows it done (for the value it reads, where the
+    // batch has already run).
+    let mut signal_only = tuff::TimelineSemaphoreSubmitInfo::new().signal_semaphore_values(&[20]);
+    let submit = [tuff::SubmitInfo::new()
+        .signal_semaphores(&semaphores)
+        .push_next(&mut signal_only)];
+    let fence = d
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    s.queue.submit(&submit, Some(&fence)).expect("submit");
+    match d.signal_semaphore(&signal(15)) {
+        Err(tuff::Error::Misuse(_)) => {}
+        Err(tuff::Error::Validation { vuid, .. }) => {
+            assert_eq!(vuid, "VUID-VkSemaphoreSignalInfo-value-03258")
+        }
+        other => panic!("a host signal below a pending one: {other:?}"),
+    }
+    assert_eq!(
+        d.wait_for_fences(&fence, true, u64::MAX).expect("wait"),
+        tuff::SuccessOrTimeout::Success
+    );
+    d.signal_semaphore(&signal(21))
+        .expect("a host signal after the submission");
     assert_silent(&s.messages);
 }

@@ -54,14 +54,13 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
     let d = &s.device;
     let mut bag: Vec<Box<dyn Any>> = Vec::new();
     let (buffer, memory) = buffer_with_memory(s, 4096);
-    let view = unsafe {
-        d.create_buffer_view(
+    let view = d
+        .create_buffer_view(
             &tuff::BufferViewCreateInfo::new(&buffer)
                 .format(vk::Format::R32_UINT)
                 .range(vk::WHOLE_SIZE),
         )
-    }
-    .expect("buffer view");
+        .expect("buffer view");
     let target = s.color_target(16, vk::ImageUsageFlags::SAMPLED);
     // Shader modules, both pipelines and a descriptor update template, used by a
     // submission that is still in flight when the bag is dropped.
@@ -1850,8 +1849,7 @@ fn binary_semaphores_fences_and_acquires_are_tracked_and_the_layer_agrees() {
     let _ = unsafe { d.acquire_next_image_khr_unchecked(&swapchain, 0, Some(&acquired), None) };
     let said = s.messages.take();
     assert!(said.is_empty(), "the layer said: {said:?}");
-    // SAFETY: a timeline semaphore, signaled to a value above its current one.
-    unsafe { d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1)) }
+    d.signal_semaphore(&tuff::SemaphoreSignalInfo::new(&gate).value(1))
         .expect("open the gate");
     assert_eq!(
         d.wait_for_fences(&done, true, u64::MAX)

@@ -452,9 +452,9 @@ pub(crate) fn timeline_initial(info: &crate::structs::SemaphoreCreateInfo<'_>) -
         })
 }
 
-/// One timeline operation of a submission: the semaphore, its value, and whether
-/// it signals (`true`) or waits.
-pub(crate) type TimelineOp = (vk::Semaphore, u64, bool);
+/// One timeline operation of a submission: the semaphore, its value, whether it
+/// signals (`true`) or waits, and the index of its batch in the call.
+pub(crate) type TimelineOp = (vk::Semaphore, u64, bool, usize);
 
 /// The rules a timeline operation's value breaks, by what they check.
 pub(crate) struct TimelineValueRules {
@@ -497,7 +497,7 @@ pub(crate) fn check_timeline_values(
         return Ok(());
     }
     let mut timelines = live.timelines();
-    for (i, (semaphore, value, signal)) in ops.iter().enumerate() {
+    for (i, (semaphore, value, signal, _)) in ops.iter().enumerate() {
         let Some(t) = timelines.get_mut(&semaphore.as_raw()) else {
             continue;
         };
@@ -505,8 +505,8 @@ pub(crate) fn check_timeline_values(
         let earlier = ops[..i].iter().filter(|(s, ..)| s == semaphore);
         let max_signal = earlier
             .clone()
-            .filter(|(.., s)| *s)
-            .map(|(_, v, _)| *v)
+            .filter(|(_, _, s, _)| *s)
+            .map(|(_, v, ..)| *v)
             .fold(t.max_signal.max(t.known), u64::max);
         if *signal && *value <= max_signal {
             return refuse(
@@ -518,7 +518,7 @@ pub(crate) fn check_timeline_values(
             .pending
             .iter()
             .map(|(v, ..)| *v)
-            .chain(earlier.map(|(_, v, _)| *v))
+            .chain(earlier.map(|(_, v, ..)| *v))
             .chain([t.known, max_signal]);
         let (lo, hi) = values.fold((u64::MAX, 0), |(lo, hi), v| (lo.min(v), hi.max(v)));
         if value.abs_diff(lo) > max_difference || value.abs_diff(hi) > max_difference {
@@ -545,10 +545,11 @@ pub(crate) fn record_timeline_values(
         return;
     }
     let mut timelines = live.timelines();
-    for (semaphore, value, signal) in ops {
+    for (semaphore, value, signal, batch) in ops {
         if let Some(t) = timelines.get_mut(&semaphore.as_raw()) {
             t.prune();
-            t.pending.push((*value, *signal, Vrc::downgrade(sub)));
+            t.pending
+                .push((*value, *signal, Vrc::downgrade(sub), *batch));
             if *signal {
                 t.max_signal = t.max_signal.max(*value);
             }
@@ -849,13 +850,15 @@ impl Batches {
         for (semaphore, value, _) in waits {
             self.ops.push(SemOp::Wait(semaphore));
             if let Some(value) = value.filter(|_| live.is_timeline(semaphore)) {
-                self.timeline.push((semaphore, value, false));
+                self.timeline
+                    .push((semaphore, value, false, self.completes.len()));
             }
         }
         for (semaphore, value, whole) in signals {
             self.ops.push(SemOp::Signal(semaphore));
             if let Some(value) = value.filter(|_| live.is_timeline(semaphore)) {
-                self.timeline.push((semaphore, value, true));
+                self.timeline
+                    .push((semaphore, value, true, self.completes.len()));
                 if whole {
                     completes.push((semaphore, value));
                 }

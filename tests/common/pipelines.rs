@@ -303,14 +303,13 @@ pub fn pipelines(s: &Setup, target: &ColorTarget) -> Pipelines {
             stride,
         },
     ];
-    let template = unsafe {
-        d.create_descriptor_update_template(
+    let template = d
+        .create_descriptor_update_template(
             &tuff::DescriptorUpdateTemplateCreateInfo::new(&compute_set_layout, &compute_layout)
                 .template_type(vk::DescriptorUpdateTemplateType::DESCRIPTOR_SET)
                 .descriptor_update_entries(&entries),
         )
-    }
-    .expect("descriptor update template");
+        .expect("descriptor update template");
     let data = [
         vk::DescriptorBufferInfo {
             buffer: *uniform.0,

@@ -411,7 +411,6 @@ pub const CHECKED_EXTENSIONS: &[&str] = &[
     "VK_KHR_copy_commands2",
     "VK_KHR_create_renderpass2",
     "VK_KHR_deferred_host_operations",
-    "VK_KHR_descriptor_update_template",
     "VK_KHR_device_group_creation",
     "VK_KHR_display",
     "VK_KHR_driver_properties",

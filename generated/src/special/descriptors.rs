@@ -61,6 +61,47 @@ pub(crate) fn descriptor_pool_created(
     pool.with_flags(create_info.flags)
 }
 
+/// Each entry of a descriptor update template names a binding of the set layout the
+/// template updates (00354; for push descriptors, the pipeline layout's set `set`),
+/// and its elements fit in that binding and the consecutive bindings after it (00355),
+/// at multiples of 4 in an inline uniform block (02226, 02227).
+pub(crate) fn descriptor_update_template_checks(
+    device: &Device,
+    create_info: &DescriptorUpdateTemplateCreateInfo<'_>,
+) -> Result<()> {
+    let raw = create_info.as_raw();
+    let live = device.live();
+    let layout = if raw.template_type == vk::DescriptorUpdateTemplateType::DESCRIPTOR_SET {
+        live.set_layout(raw.descriptor_set_layout)
+    } else {
+        live.pipeline_layout(raw.pipeline_layout)
+            .and_then(|l| l.sets.get(raw.set as usize).cloned())
+    };
+    let Some(layout) = layout else {
+        return Ok(());
+    };
+    // SAFETY: the safe setter stored the entries with their count.
+    let entries = unsafe {
+        crate::state::raw_slice(
+            raw.p_descriptor_update_entries,
+            raw.descriptor_update_entry_count,
+        )
+    };
+    for (n, e) in entries.iter().enumerate() {
+        let at = format!("pDescriptorUpdateEntries[{n}]");
+        let first = find_binding(&layout, e.dst_binding, &at, TEMPLATE_BINDING)?;
+        check_span(
+            &layout,
+            first,
+            e.dst_array_element,
+            e.descriptor_count,
+            &at,
+            TEMPLATE_SPAN,
+        )?;
+    }
+    Ok(())
+}
+
 /// The template remembers its entries, which say how to read the data of an update.
 pub(crate) fn descriptor_update_template_created(
     template: DescriptorUpdateTemplate,
@@ -351,6 +392,19 @@ type SpanRules = (
     &'static str,
     &'static str,
     &'static str,
+);
+
+const TEMPLATE_BINDING: BindingRules = (
+    "VUID-VkDescriptorUpdateTemplateEntry-dstBinding-00354",
+    "VUID-VkDescriptorUpdateTemplateEntry-dstBinding-00354",
+);
+
+const TEMPLATE_SPAN: SpanRules = (
+    "VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355",
+    "VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355",
+    "VUID-VkDescriptorUpdateTemplateEntry-descriptor-02226",
+    "VUID-VkDescriptorUpdateTemplateEntry-descriptor-02227",
+    "VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355",
 );
 
 const WRITE_SPAN: SpanRules = (

@@ -876,3 +876,93 @@ fn chroma_rules(
     }
     Ok(())
 }
+
+/// `vkGetImageSubresourceLayout`: a linear image (or, where the DRM format modifier
+/// extension made one, an image of that tiling, whose aspects are that extension's
+/// rules), a level and layer it has, and one aspect of its format.
+pub(crate) fn subresource_layout_checks(
+    device: &Device,
+    image: &Image,
+    subresource: &vk::ImageSubresource,
+) -> Result<()> {
+    let Some(record) = device.live().image(image.raw()) else {
+        return Ok(());
+    };
+    let tiling = record.tiling;
+    if tiling != vk::ImageTiling::LINEAR && tiling != vk::ImageTiling::DRM_FORMAT_MODIFIER_EXT {
+        refuse(
+            "VUID-vkGetImageSubresourceLayout-image-07789",
+            format!("the image's tiling is {tiling:?}, not LINEAR"),
+        )?;
+    }
+    let aspect = subresource.aspect_mask;
+    if aspect.as_raw().count_ones() != 1 {
+        refuse(
+            "VUID-vkGetImageSubresourceLayout-aspectMask-00997",
+            format!("aspectMask {aspect:?} is not one aspect"),
+        )?;
+    }
+    if subresource.mip_level >= record.mip_levels {
+        refuse(
+            "VUID-vkGetImageSubresourceLayout-mipLevel-01716",
+            format!(
+                "mipLevel {} is not one of the image's {} levels",
+                subresource.mip_level, record.mip_levels
+            ),
+        )?;
+    }
+    if subresource.array_layer >= record.array_layers {
+        refuse(
+            "VUID-vkGetImageSubresourceLayout-arrayLayer-01717",
+            format!(
+                "arrayLayer {} is not one of the image's {} layers",
+                subresource.array_layer, record.array_layers
+            ),
+        )?;
+    }
+    if tiling != vk::ImageTiling::LINEAR {
+        return Ok(());
+    }
+    type F = vk::ImageAspectFlags;
+    let has = crate::formats::aspects(record.format).unwrap_or(F::COLOR);
+    let format = record.format;
+    let planes = [F::PLANE_0, F::PLANE_1, F::PLANE_2]
+        .into_iter()
+        .filter(|p| has.contains(*p))
+        .count();
+    let refused = match planes {
+        2 if aspect != F::PLANE_0 && aspect != F::PLANE_1 => Some((
+            "VUID-vkGetImageSubresourceLayout-format-01581",
+            "PLANE_0 or PLANE_1",
+        )),
+        3 if ![F::PLANE_0, F::PLANE_1, F::PLANE_2].contains(&aspect) => Some((
+            "VUID-vkGetImageSubresourceLayout-format-01582",
+            "PLANE_0, PLANE_1 or PLANE_2",
+        )),
+        0 if has == F::COLOR && aspect != F::COLOR => {
+            Some(("VUID-vkGetImageSubresourceLayout-format-04461", "COLOR"))
+        }
+        // Read as written: a format with both depth and stencil takes no single
+        // aspect, as the aspect must contain each.
+        0 if has.contains(F::DEPTH) && !aspect.contains(F::DEPTH) => {
+            Some(("VUID-vkGetImageSubresourceLayout-format-04462", "DEPTH"))
+        }
+        0 if has.contains(F::STENCIL) && !aspect.contains(F::STENCIL) => {
+            Some(("VUID-vkGetImageSubresourceLayout-format-04463", "STENCIL"))
+        }
+        _ => None,
+    };
+    if let Some((vuid, wanted)) = refused {
+        refuse(
+            vuid,
+            format!("aspectMask is {aspect:?}, and an image of {format:?} takes {wanted}"),
+        )?;
+    }
+    if !has.intersects(F::DEPTH | F::STENCIL) && aspect.intersects(F::DEPTH | F::STENCIL) {
+        refuse(
+            "VUID-vkGetImageSubresourceLayout-format-04464",
+            format!("aspectMask is {aspect:?}, and {format:?} has no depth or stencil"),
+        )?;
+    }
+    Ok(())
+}

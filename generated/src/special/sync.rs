@@ -100,6 +100,90 @@ pub(crate) fn wait_semaphores_done(
     }
 }
 
+/// Takes the device's submission gate for a host signal of a timeline semaphore
+/// (held until the call and its bookkeeping are done, so that no submission or other
+/// host signal changes the semaphore meanwhile) and checks the value under it: above
+/// the semaphore's value, read from the driver (03258), below every pending signal
+/// (03259) and within `maxTimelineSemaphoreValueDifference` of the value and of the
+/// pending operations (03260).
+///
+/// A signal below a pending one is valid only if the host's runs first. The safe
+/// method signals only where it must: each pending signal's batch waits on the same
+/// semaphore for a value above the one it has and no more than the host's (the
+/// wait-before-signal pattern), so no signal can run before the host's, and the
+/// value read holds until the call. Otherwise it is refused (`Error::Misuse`).
+pub(crate) fn signal_semaphore_hold<'d>(
+    device: &'d Device,
+    signal_info: &SemaphoreSignalInfo<'_>,
+) -> Result<tuff_runtime::VutexGuard<'d, ()>> {
+    let gate = device.live().descriptor_gate();
+    let semaphore = signal_info.semaphore;
+    let value = signal_info.value;
+    type Op = (
+        u64,
+        bool,
+        tuff_runtime::Vweak<crate::state::Submission>,
+        usize,
+    );
+    let pending: Vec<Op> = {
+        let mut timelines = device.live().timelines();
+        let Some(t) = timelines.get_mut(&semaphore.as_raw()) else {
+            return Ok(gate);
+        };
+        t.prune();
+        t.pending.clone()
+    };
+    if let Some((below, ..)) = pending
+        .iter()
+        .find(|(v, signal, ..)| *signal && *v <= value)
+    {
+        refuse(
+            "VUID-VkSemaphoreSignalInfo-value-03259",
+            format!("a submitted signal of the semaphore to {below}, not known complete, is not above {value}"),
+        )?;
+    }
+    let mut current = 0;
+    // SAFETY: a live timeline semaphore of this device (its type was checked) and a
+    // pointer to a local.
+    let r = unsafe {
+        (device.fns().fp_v1_2().get_semaphore_counter_value)(device.raw(), semaphore, &mut current)
+    };
+    if r != vk::Result::SUCCESS {
+        return Err(Error::Vk(r));
+    }
+    if value <= current {
+        refuse(
+            "VUID-VkSemaphoreSignalInfo-value-03258",
+            format!("the semaphore's value is {current}, and the signal's {value} is not above it"),
+        )?;
+    }
+    // A pending signal waits, in its batch, for a value only the host's signal
+    // reaches: every other signal that could reach it is pending and waits too.
+    let blocked = |(_, _, sub, batch): &Op| {
+        pending.iter().any(|(w, signal, other, other_batch)| {
+            !*signal && other.ptr_eq(sub) && other_batch == batch && *w > current && *w <= value
+        })
+    };
+    if pending.iter().any(|op| op.1 && !blocked(op)) {
+        return Err(Error::Misuse(
+            "the safe signal_semaphore signals a timeline semaphore only where no submitted signal of it can run first (each pending signal's batch waits on it for a value above the current one, at most the host's); wait for the submission's fence, or use signal_semaphore_unchecked",
+        ));
+    }
+    let difference = timeline_difference(device);
+    let far = pending
+        .iter()
+        .map(|(v, ..)| *v)
+        .chain([current])
+        .find(|v| v.abs_diff(value) > difference);
+    if let Some(far) = far {
+        refuse(
+            "VUID-VkSemaphoreSignalInfo-value-03260",
+            format!("{value} differs from {far}, the semaphore's value or a pending operation's, by more than maxTimelineSemaphoreValueDifference ({difference})"),
+        )?;
+    }
+    Ok(gate)
+}
+
 /// Refuses a binary semaphore.
 pub(crate) fn signal_semaphore_checks(
     device: &Device,

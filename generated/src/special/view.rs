@@ -6,6 +6,105 @@ use crate::structs::*;
 use crate::{Handle, Result};
 use ash::vk;
 
+/// A buffer view's buffer has a texel buffer usage (00932) whose format feature the
+/// format has (00933, 00934); its offset is aligned to minTexelBufferOffsetAlignment
+/// (02749, and so 02750 and 02751), and its range a whole number of texels (00929) no more than
+/// `maxTexelBufferElements` of them (00930, 04059).
+pub(crate) fn buffer_view_checks(
+    device: &Device,
+    create_info: &BufferViewCreateInfo<'_>,
+) -> Result<()> {
+    let info = create_info.as_raw();
+    let live = device.live();
+    let Some(buffer) = live.buffer(info.buffer) else {
+        return Ok(());
+    };
+    type U = vk::BufferUsageFlags;
+    let uniform = buffer.usage.contains(U::UNIFORM_TEXEL_BUFFER);
+    let storage = buffer.usage.contains(U::STORAGE_TEXEL_BUFFER);
+    if !uniform && !storage {
+        refuse(
+            "VUID-VkBufferViewCreateInfo-buffer-00932",
+            format!(
+                "the buffer's usage {:?} has no texel buffer usage",
+                buffer.usage
+            ),
+        )?;
+    }
+    let format = info.format;
+    let features = live
+        .format_properties(device.parent(), format)?
+        .buffer_features;
+    type F = vk::FormatFeatureFlags;
+    for (used, feature, vuid) in [
+        (
+            uniform,
+            F::UNIFORM_TEXEL_BUFFER,
+            "VUID-VkBufferViewCreateInfo-buffer-00933",
+        ),
+        (
+            storage,
+            F::STORAGE_TEXEL_BUFFER,
+            "VUID-VkBufferViewCreateInfo-buffer-00934",
+        ),
+    ] {
+        if used && !features.contains(feature) {
+            refuse(
+                vuid,
+                format!("the buffer features of {format:?} ({features:?}) lack {feature:?}"),
+            )?;
+        }
+    }
+    let Some((texel, [w, h, d])) = crate::formats::block(format, vk::ImageAspectFlags::COLOR)
+    else {
+        return Ok(());
+    };
+    let (texel, per_block) = (u64::from(texel.max(1)), u64::from(w * h * d));
+    let limits = super::limits(device);
+    // The relaxed alignments texelBufferAlignment allows are powers of two no larger
+    // than minTexelBufferOffsetAlignment, so an offset aligned to it is aligned to
+    // them too (02750, 02751). Which of the two applies is not followed: a program
+    // that relies on the relaxed one is refused.
+    let align = limits.min_texel_buffer_offset_alignment.max(1);
+    if info.offset % align != 0 {
+        refuse(
+            "VUID-VkBufferViewCreateInfo-offset-02749",
+            format!(
+                "offset {} is not a multiple of minTexelBufferOffsetAlignment ({align})",
+                info.offset
+            ),
+        )?;
+    }
+    let whole = info.range == vk::WHOLE_SIZE;
+    let range = if whole {
+        buffer.size.saturating_sub(info.offset)
+    } else {
+        info.range
+    };
+    if !whole && range % texel != 0 {
+        refuse(
+            "VUID-VkBufferViewCreateInfo-range-00929",
+            format!(
+                "range {range} is not a multiple of the texel block size of {format:?} ({texel})"
+            ),
+        )?;
+    }
+    let elements = range / texel * per_block;
+    let max = u64::from(limits.max_texel_buffer_elements);
+    if elements > max {
+        let vuid = if whole {
+            "VUID-VkBufferViewCreateInfo-range-04059"
+        } else {
+            "VUID-VkBufferViewCreateInfo-range-00930"
+        };
+        refuse(
+            vuid,
+            format!("the view holds {elements} texels, more than maxTexelBufferElements ({max})"),
+        )?;
+    }
+    Ok(())
+}
+
 /// The device remembers the buffer and format of a new buffer view.
 pub(crate) fn buffer_view_created(
     device: &Device,

@@ -17,8 +17,8 @@ pub(crate) struct Timeline {
     /// The largest value any signal operation submitted, or the host, gives it.
     pub(crate) max_signal: u64,
     /// The wait (`false`) and signal (`true`) operations submitted and not known
-    /// complete, with their values.
-    pub(crate) pending: Vec<(u64, bool, Vweak<Submission>)>,
+    /// complete, with their values, submissions and batch indices.
+    pub(crate) pending: Vec<(u64, bool, Vweak<Submission>, usize)>,
 }
 
 impl Timeline {
@@ -35,7 +35,7 @@ impl Timeline {
     /// reached.
     pub(crate) fn prune(&mut self) {
         let mut known = self.known;
-        self.pending.retain(|(value, signal, sub)| {
+        self.pending.retain(|(value, signal, sub, _)| {
             let done = sub.upgrade().is_none_or(|s| s.is_complete());
             if done && *signal {
                 known = known.max(*value);

@@ -492,20 +492,6 @@ The caller upholds the rules that [`Self::create_buffer`] checks at run time: `V
     }
     /**`vkCreateBufferView`
 
-# Safety
-
-The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkBufferViewCreateInfo-range-00929`: If `range` is not equal to `VK_WHOLE_SIZE`, `range` must be an integer multiple of the texel block size of `format`
-- `VUID-VkBufferViewCreateInfo-range-00930`: If `range` is not equal to `VK_WHOLE_SIZE`, the number of texel buffer elements given by ({lfloor}`range` / (texel block size){rfloor} {times} (texels per block)) where texel block size and texels per block are as defined in the Compatible Formats table for `format`, must be less than or equal to `VkPhysicalDeviceLimits::maxTexelBufferElements`
-- `VUID-VkBufferViewCreateInfo-range-04059`: If `range` is equal to `VK_WHOLE_SIZE`, the number of texel buffer elements given by ({lfloor}(size - `offset`) / (texel block size){rfloor} {times} (texels per block)) where size is the size of `buffer`, and texel block size and texels per block are as defined in the Compatible Formats table for `format`, must be less than or equal to `VkPhysicalDeviceLimits::maxTexelBufferElements`
-- `VUID-VkBufferViewCreateInfo-buffer-00932`: `buffer` must have been created with a `usage` value containing at least one of `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT` or `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT`
-- `VUID-VkBufferViewCreateInfo-buffer-00933`: If `buffer` was created with `usage` containing `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT`, `format` must be supported for uniform texel buffers, as specified by the `VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by vkGetPhysicalDeviceFormatProperties
-- `VUID-VkBufferViewCreateInfo-buffer-00934`: If `buffer` was created with `usage` containing `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT`, `format` must be supported for storage texel buffers, as specified by the `VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT` flag in `VkFormatProperties::bufferFeatures` returned by vkGetPhysicalDeviceFormatProperties
-- `VUID-VkBufferViewCreateInfo-offset-02749`: If the `texelBufferAlignment` feature is not enabled, `offset` must be a multiple of `VkPhysicalDeviceLimits::minTexelBufferOffsetAlignment`
-- `VUID-VkBufferViewCreateInfo-buffer-02750`: If the `texelBufferAlignment` feature is enabled and if `buffer` was created with `usage` containing `VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT`, `offset` must be a multiple of the lesser of VkPhysicalDeviceTexelBufferAlignmentProperties::`storageTexelBufferOffsetAlignmentBytes` or, if VkPhysicalDeviceTexelBufferAlignmentProperties::`storageTexelBufferOffsetSingleTexelAlignment` is `VK_TRUE`, the size of a texel of the requested `format`. If the size of a texel is a multiple of three bytes, then the size of a single component of `format` is used instead
-- `VUID-VkBufferViewCreateInfo-buffer-02751`: If the `texelBufferAlignment` feature is enabled and if `buffer` was created with `usage` containing `VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT`, `offset` must be a multiple of the lesser of VkPhysicalDeviceTexelBufferAlignmentProperties::`uniformTexelBufferOffsetAlignmentBytes` or, if VkPhysicalDeviceTexelBufferAlignmentProperties::`uniformTexelBufferOffsetSingleTexelAlignment` is `VK_TRUE`, the size of a texel of the requested `format`. If the size of a texel is a multiple of three bytes, then the size of a single component of `format` is used instead
-
 # Valid usage
 
 The rules of `vkCreateBufferView` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateBufferView.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -516,7 +502,7 @@ The rules of `vkCreateBufferView` that apply to this crate's API ([reference pag
 - `VUID-vkCreateBufferView-pView-parameter` (*by the types*): `pView` must be a valid pointer to a VkBufferView handle*/
     #[doc(alias = "vkCreateBufferView")]
     #[inline]
-    pub unsafe fn create_buffer_view<'a>(
+    pub fn create_buffer_view<'a>(
         &self,
         create_info: &BufferViewCreateInfo<'a>,
     ) -> Result<BufferView> {
@@ -524,6 +510,7 @@ The rules of `vkCreateBufferView` that apply to this crate's API ([reference pag
             let r = self.validate_create_buffer_view(create_info);
             r?;
         }
+        crate::special::view::buffer_view_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_buffer_view_unchecked(create_info) }
@@ -532,7 +519,7 @@ The rules of `vkCreateBufferView` that apply to this crate's API ([reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::create_buffer_view`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_buffer_view`] checks at run time: `VUID-VkBufferViewCreateInfo-buffer-00932`, `VUID-VkBufferViewCreateInfo-buffer-00933`, `VUID-VkBufferViewCreateInfo-buffer-00934`, `VUID-VkBufferViewCreateInfo-range-00929`, `VUID-VkBufferViewCreateInfo-range-00930`, `VUID-VkBufferViewCreateInfo-range-04059`, `VUID-VkBufferViewCreateInfo-offset-02749`, `VUID-VkBufferViewCreateInfo-buffer-02750`, `VUID-VkBufferViewCreateInfo-buffer-02751`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_buffer_view_unchecked<'a>(
         &self,
@@ -2296,38 +2283,23 @@ The caller upholds the rules that [`Self::get_image_sparse_memory_requirements`]
     }
     /**`vkGetImageSubresourceLayout`
 
-# Safety
-
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkGetImageSubresourceLayout-image-07789`: `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_LINEAR`
-- `VUID-vkGetImageSubresourceLayout-aspectMask-00997`: The `aspectMask` member of `pSubresource` must only have a single bit set
-- `VUID-vkGetImageSubresourceLayout-mipLevel-01716`: The `mipLevel` member of `pSubresource` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkGetImageSubresourceLayout-arrayLayer-01717`: The `arrayLayer` member of `pSubresource` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkGetImageSubresourceLayout-format-04461`: If `format` is a color format, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-04462`: If `format` has a depth component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_DEPTH_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-04463`: If `format` has a stencil component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-04464`: If `format` does not contain a stencil or depth component, the `aspectMask` member of `pSubresource` must not contain `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-01581`: If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with two planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-01582`: If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with three planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`
-
 # Valid usage
 
 The rules of `vkGetImageSubresourceLayout` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkGetImageSubresourceLayout.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkGetImageSubresourceLayout-image-07789` (*yours*; explicit rule): `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_LINEAR`
 - `VUID-vkGetImageSubresourceLayout-image-07790` (*yours*; explicit rule): `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`
 - `VUID-vkGetImageSubresourceLayout-tiling-02271` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_DRM_FORMAT_MODIFIER_EXT`, then the `aspectMask` member of `pSubresource` must be VK_IMAGE_ASPECT_MEMORY_PLANE{ibit}BIT_EXT and the index i must be …
-- `VUID-vkGetImageSubresourceLayout-aspectMask-00997` (*yours*; explicit rule): The `aspectMask` member of `pSubresource` must only have a single bit set
-- `VUID-vkGetImageSubresourceLayout-mipLevel-01716` (*yours*; explicit rule): The `mipLevel` member of `pSubresource` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkGetImageSubresourceLayout-arrayLayer-01717` (*yours*; explicit rule): The `arrayLayer` member of `pSubresource` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
-- `VUID-vkGetImageSubresourceLayout-format-04461` (*yours*; explicit rule): If `format` is a color format, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-04462` (*yours*; explicit rule): If `format` has a depth component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_DEPTH_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-04463` (*yours*; explicit rule): If `format` has a stencil component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-04464` (*yours*; explicit rule): If `format` does not contain a stencil or depth component, the `aspectMask` member of `pSubresource` must not contain `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
-- `VUID-vkGetImageSubresourceLayout-format-01581` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with two planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or …
-- `VUID-vkGetImageSubresourceLayout-format-01582` (*yours*; explicit rule): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with three planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, …
+- `VUID-vkGetImageSubresourceLayout-format-04462` (*yours*; checked by the safe methods in every build): If `format` has a depth component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_DEPTH_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04463` (*yours*; checked by the safe methods in every build): If `format` has a stencil component, the `aspectMask` member of `pSubresource` must contain `VK_IMAGE_ASPECT_STENCIL_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-01581` (*yours*; checked by the safe methods in every build): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with two planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or …
+- `VUID-vkGetImageSubresourceLayout-format-01582` (*yours*; checked by the safe methods in every build): If the `tiling` of the `image` is `VK_IMAGE_TILING_LINEAR` and its `format` is a multi-planar format with three planes, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, …
 - `VUID-vkGetImageSubresourceLayout-image-01895` (*yours*; explicit rule): If `image` was created with the `VK_EXTERNAL_MEMORY_HANDLE_TYPE_ANDROID_HARDWARE_BUFFER_BIT_ANDROID` external memory handle type, then `image` must be bound to memory
+- `VUID-vkGetImageSubresourceLayout-image-07789` (*checked*): `image` must have been created with `tiling` equal to `VK_IMAGE_TILING_LINEAR`
+- `VUID-vkGetImageSubresourceLayout-aspectMask-00997` (*checked*): The `aspectMask` member of `pSubresource` must only have a single bit set
+- `VUID-vkGetImageSubresourceLayout-mipLevel-01716` (*checked*): The `mipLevel` member of `pSubresource` must be less than the `mipLevels` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout-arrayLayer-01717` (*checked*): The `arrayLayer` member of `pSubresource` must be less than the `arrayLayers` specified in VkImageCreateInfo when `image` was created
+- `VUID-vkGetImageSubresourceLayout-format-04461` (*checked*): If `format` is a color format, the `aspectMask` member of `pSubresource` must be `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-vkGetImageSubresourceLayout-format-04464` (*checked*): If `format` does not contain a stencil or depth component, the `aspectMask` member of `pSubresource` must not contain `VK_IMAGE_ASPECT_DEPTH_BIT` or `VK_IMAGE_ASPECT_STENCIL_BIT`
 - `VUID-vkGetImageSubresourceLayout-image-parent` (*checked*): `image` must have been created, allocated, or retrieved from `device`
 - `VUID-vkGetImageSubresourceLayout-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkGetImageSubresourceLayout-image-parameter` (*by the types*): `image` must be a valid VkImage handle
@@ -2335,7 +2307,7 @@ The rules of `vkGetImageSubresourceLayout` that apply to this crate's API ([refe
 - `VUID-vkGetImageSubresourceLayout-pLayout-parameter` (*by the types*): `pLayout` must be a valid pointer to a VkSubresourceLayout structure*/
     #[doc(alias = "vkGetImageSubresourceLayout")]
     #[inline]
-    pub unsafe fn get_image_subresource_layout(
+    pub fn get_image_subresource_layout(
         &self,
         image: &Image,
         subresource: &vk::ImageSubresource,
@@ -2344,6 +2316,7 @@ The rules of `vkGetImageSubresourceLayout` that apply to this crate's API ([refe
             let r = self.validate_get_image_subresource_layout(image, subresource);
             r?;
         }
+        crate::special::image::subresource_layout_checks(self, image, subresource)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         Ok(unsafe { self.get_image_subresource_layout_unchecked(image, subresource) })
@@ -2352,7 +2325,7 @@ The rules of `vkGetImageSubresourceLayout` that apply to this crate's API ([refe
 
 # Safety
 
-The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::get_image_subresource_layout`] checks at run time: `VUID-vkGetImageSubresourceLayout-image-parent`, `VUID-vkGetImageSubresourceLayout-image-07789`, `VUID-vkGetImageSubresourceLayout-aspectMask-00997`, `VUID-vkGetImageSubresourceLayout-mipLevel-01716`, `VUID-vkGetImageSubresourceLayout-arrayLayer-01717`, `VUID-vkGetImageSubresourceLayout-format-04461`, `VUID-vkGetImageSubresourceLayout-format-04462`, `VUID-vkGetImageSubresourceLayout-format-04463`, `VUID-vkGetImageSubresourceLayout-format-04464`, `VUID-vkGetImageSubresourceLayout-format-01581`, `VUID-vkGetImageSubresourceLayout-format-01582`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn get_image_subresource_layout_unchecked(
         &self,

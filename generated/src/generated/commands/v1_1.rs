@@ -149,16 +149,6 @@ The caller upholds the rules that [`Self::bind_image_memory2`] checks at run tim
     }
     /**`vkCreateDescriptorUpdateTemplate`
 
-# Safety
-
-The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350`: If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_DESCRIPTOR_SET`, `descriptorSetLayout` must be a valid `VkDescriptorSetLayout` handle
-- `VUID-VkDescriptorUpdateTemplateEntry-dstBinding-00354`: `dstBinding` must be a valid binding in the descriptor set layout implicitly specified when using a descriptor update template to update descriptors
-- `VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355`: `dstArrayElement` and `descriptorCount` must be less than or equal to the number of array elements in the descriptor set binding implicitly specified when using a descriptor update template to update descriptors, and all applicable consecutive bindings, as described by consecutive binding updates
-- `VUID-VkDescriptorUpdateTemplateEntry-descriptor-02226`: If `descriptor` type is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `dstArrayElement` must be an integer multiple of `4`
-- `VUID-VkDescriptorUpdateTemplateEntry-descriptor-02227`: If `descriptor` type is `VK_DESCRIPTOR_TYPE_INLINE_UNIFORM_BLOCK`, `descriptorCount` must be an integer multiple of `4`
-
 # Valid usage
 
 The rules of `vkCreateDescriptorUpdateTemplate` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateDescriptorUpdateTemplate.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -169,7 +159,7 @@ The rules of `vkCreateDescriptorUpdateTemplate` that apply to this crate's API (
 - `VUID-vkCreateDescriptorUpdateTemplate-pDescriptorUpdateTemplate-parameter` (*by the types*): `pDescriptorUpdateTemplate` must be a valid pointer to a VkDescriptorUpdateTemplate handle*/
     #[doc(alias = "vkCreateDescriptorUpdateTemplate")]
     #[inline]
-    pub unsafe fn create_descriptor_update_template<'a>(
+    pub fn create_descriptor_update_template<'a>(
         &self,
         create_info: &DescriptorUpdateTemplateCreateInfo<'a>,
     ) -> Result<DescriptorUpdateTemplate> {
@@ -177,6 +167,10 @@ The rules of `vkCreateDescriptorUpdateTemplate` that apply to this crate's API (
             let r = self.validate_create_descriptor_update_template(create_info);
             r?;
         }
+        crate::special::descriptors::descriptor_update_template_checks(
+            self,
+            create_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_descriptor_update_template_unchecked(create_info) }
@@ -185,7 +179,7 @@ The rules of `vkCreateDescriptorUpdateTemplate` that apply to this crate's API (
 
 # Safety
 
-The caller upholds the rules that [`Self::create_descriptor_update_template`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_descriptor_update_template`] checks at run time: `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350`, `VUID-VkDescriptorUpdateTemplateEntry-dstBinding-00354`, `VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355`, `VUID-VkDescriptorUpdateTemplateEntry-descriptor-02226`, `VUID-VkDescriptorUpdateTemplateEntry-descriptor-02227`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_descriptor_update_template_unchecked<'a>(
         &self,

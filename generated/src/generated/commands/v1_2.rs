@@ -343,14 +343,6 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
     }
     /**`vkSignalSemaphore`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkSemaphoreSignalInfo-value-03258`: `value` must have a value greater than the current value of the semaphore
-- `VUID-VkSemaphoreSignalInfo-value-03259`: `value` must be less than the value of any pending semaphore signal operations
-- `VUID-VkSemaphoreSignalInfo-value-03260`: `value` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on `semaphore` by more than `maxTimelineSemaphoreValueDifference`
-
 # Valid usage
 
 The rules of `vkSignalSemaphore` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkSignalSemaphore.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -359,12 +351,13 @@ The rules of `vkSignalSemaphore` that apply to this crate's API ([reference page
 - `VUID-vkSignalSemaphore-pSignalInfo-parameter` (*by the types*): `pSignalInfo` must be a valid pointer to a valid VkSemaphoreSignalInfo structure*/
     #[doc(alias = "vkSignalSemaphore")]
     #[inline]
-    pub unsafe fn signal_semaphore<'a>(
+    pub fn signal_semaphore<'a>(
         &self,
         signal_info: &SemaphoreSignalInfo<'a>,
     ) -> Result<()> {
         self.validate_origins_signal_semaphore(signal_info)?;
         crate::special::sync::signal_semaphore_checks(self, signal_info)?;
+        let _held = crate::special::sync::signal_semaphore_hold(self, signal_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.signal_semaphore_unchecked(signal_info) }
@@ -373,7 +366,7 @@ The rules of `vkSignalSemaphore` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::signal_semaphore`] checks at run time: `VUID-VkSemaphoreSignalInfo-semaphore-03257`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::signal_semaphore`] checks at run time: `VUID-VkSemaphoreSignalInfo-semaphore-03257`, `VUID-VkSemaphoreSignalInfo-value-03258`, `VUID-VkSemaphoreSignalInfo-value-03259`, `VUID-VkSemaphoreSignalInfo-value-03260`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn signal_semaphore_unchecked<'a>(
         &self,

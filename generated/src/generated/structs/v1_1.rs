@@ -311,7 +311,6 @@ safe_struct!(DescriptorSetLayoutSupport, 'a; zeroed chained);
 
 The rules of `VkDescriptorUpdateTemplateCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkDescriptorUpdateTemplateCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_DESCRIPTOR_SET`, `descriptorSetLayout` must be a valid `VkDescriptorSetLayout` handle
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00351` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_PUSH_DESCRIPTORS_KHR`, `pipelineBindPoint` must be a valid VkPipelineBindPoint value
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00352` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_PUSH_DESCRIPTORS_KHR`, `pipelineLayout` must be a valid `VkPipelineLayout` handle
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00353` (*yours*; explicit rule): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_PUSH_DESCRIPTORS_KHR`, `set` must be the unique set number in the pipeline layout that uses a descriptor set layout that was created with …
@@ -320,6 +319,7 @@ The rules of `VkDescriptorUpdateTemplateCreateInfo` that apply to this crate's A
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-parameter` (*checked*): `templateType` must be a valid VkDescriptorUpdateTemplateType value
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-descriptorUpdateEntryCount-arraylength` (*checked*): `descriptorUpdateEntryCount` must be greater than `0`
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-commonparent` (*checked*): Both of `descriptorSetLayout`, and `pipelineLayout` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350` (*by the types*): If `templateType` is `VK_DESCRIPTOR_UPDATE_TEMPLATE_TYPE_DESCRIPTOR_SET`, `descriptorSetLayout` must be a valid `VkDescriptorSetLayout` handle
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_DESCRIPTOR_UPDATE_TEMPLATE_CREATE_INFO`
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`
 - `VUID-VkDescriptorUpdateTemplateCreateInfo-pDescriptorUpdateEntries-parameter` (*by the types*): `pDescriptorUpdateEntries` must be a valid pointer to an array of `descriptorUpdateEntryCount` valid VkDescriptorUpdateTemplateEntry structures*/

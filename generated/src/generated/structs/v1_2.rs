@@ -1909,10 +1909,10 @@ unsafe impl<'a> Extends<SamplerCreateInfo<'a>> for SamplerReductionModeCreateInf
 
 The rules of `VkSemaphoreSignalInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkSemaphoreSignalInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkSemaphoreSignalInfo-value-03258` (*yours*; explicit rule): `value` must have a value greater than the current value of the semaphore
-- `VUID-VkSemaphoreSignalInfo-value-03259` (*yours*; explicit rule): `value` must be less than the value of any pending semaphore signal operations
-- `VUID-VkSemaphoreSignalInfo-value-03260` (*yours*; explicit rule): `value` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on `semaphore` by more than …
+- `VUID-VkSemaphoreSignalInfo-value-03260` (*yours*; checked by the safe methods in every build): `value` must have a value which does not differ from the current value of the semaphore or the value of any outstanding semaphore wait or signal operation on `semaphore` by more than …
 - `VUID-VkSemaphoreSignalInfo-semaphore-03257` (*checked*): `semaphore` must have been created with a VkSemaphoreType of `VK_SEMAPHORE_TYPE_TIMELINE`
+- `VUID-VkSemaphoreSignalInfo-value-03258` (*checked*): `value` must have a value greater than the current value of the semaphore
+- `VUID-VkSemaphoreSignalInfo-value-03259` (*checked*): `value` must be less than the value of any pending semaphore signal operations
 - `VUID-VkSemaphoreSignalInfo-semaphore-parameter` (*checked*): `semaphore` must be a valid VkSemaphore handle
 - `VUID-VkSemaphoreSignalInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SEMAPHORE_SIGNAL_INFO`
 - `VUID-VkSemaphoreSignalInfo-pNext-pNext` (*by the types*): `pNext` must be `NULL`*/

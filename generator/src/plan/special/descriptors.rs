@@ -28,6 +28,10 @@ const UNPROVEN_PLANE_SAMPLER: &str = "checked by the safe methods in every build
 const UNPROVEN_AFTER_BIND_LAYOUTS: &str = "checked by the safe methods in every build (the layouts' UPDATE_AFTER_BIND_POOL flags, recorded at their creation), but no test breaks it: lavapipe 22.3 offers update-after-bind for no descriptor type";
 const SET_BINDINGS: &str = "checks the binding, type and array elements against the set's layout, kept from its creation, consecutive bindings included";
 
+const TEMPLATE_LAYOUT: &str = "the safe create info's constructor takes the descriptor set layout (a wrapper, so a valid handle) whatever the template type";
+const TEMPLATE_BINDINGS: &str = "checks each entry against the bindings of the set layout the template updates (the pipeline layout's set `set` for push descriptors), recorded at their creation, as a write to a set is checked (the 1.3.239 layer does not check it at the template's creation: the error alone proves it)";
+const TEMPLATE_ENTRIES: &str = "checks each entry against the bindings of the set layout the template updates (the pipeline layout's set `set` for push descriptors), recorded at their creation, as a write to a set is checked";
+
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
     Special {
@@ -207,6 +211,14 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCreateDescriptorUpdateTemplate",
+        check_last: call("special::descriptors::descriptor_update_template_checks", &["self", "create_info"]),
+        settles: &[
+            ("VUID-VkDescriptorUpdateTemplateCreateInfo-templateType-00350", How::Static(TEMPLATE_LAYOUT)),
+            ("VUID-VkDescriptorUpdateTemplateEntry-dstBinding-00354", How::Dynamic(TEMPLATE_BINDINGS)),
+            ("VUID-VkDescriptorUpdateTemplateEntry-dstArrayElement-00355", How::Dynamic(TEMPLATE_BINDINGS)),
+            ("VUID-VkDescriptorUpdateTemplateEntry-descriptor-02226", How::Dynamic(TEMPLATE_ENTRIES)),
+            ("VUID-VkDescriptorUpdateTemplateEntry-descriptor-02227", How::Dynamic(TEMPLATE_ENTRIES)),
+        ],
         created: call("special::descriptors::descriptor_update_template_created", &["created", "create_info"]),
         ..NONE
     },

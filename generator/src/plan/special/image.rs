@@ -15,8 +15,63 @@ const IMAGE_RULES: &str = "checks the type, extent, flags, usage and format agai
 const FULL_CHAIN: &str = "checks the level count against the levels of a full chain for the extent";
 const IMAGE_LIMITS: &str = "checks the create info against its Image Creation Limits, queried from the physical device for its format, type, tiling, usage and flags (with a chained format list, stencil usage and each external handle type, intersected)";
 
+const SUBRESOURCE_LAYOUT: &str = "checks the subresource against the image's tiling, levels, layers and format, recorded at its creation";
+const SUBRESOURCE_NO_DEPTH: &str = "a format without depth or stencil is a colour format, whose aspect must be COLOR (04461), or a multi-planar one, whose aspect must be a plane (01581, 01582): an aspect with depth or stencil is refused under those rules, which the checks name (the test breaks this rule with a colour image, and the layer names it beside 04461)";
+const UNPROVEN_DEPTH_LAYOUT: &str = "checked by the safe methods in every build (the image's format and tiling, recorded at its creation; read as written, a format with both depth and stencil takes no single aspect), but no test breaks it: lavapipe makes no linear depth or stencil image";
+const UNPROVEN_PLANES_LAYOUT: &str = "checked by the safe methods in every build (the image's format and tiling, recorded at its creation), but no test breaks it: lavapipe has no linear multi-planar format";
+
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkGetImageSubresourceLayout",
+        check_last: call(
+            "special::image::subresource_layout_checks",
+            &["self", "image", "subresource"],
+        ),
+        settles: &[
+            (
+                "VUID-vkGetImageSubresourceLayout-image-07789",
+                How::Dynamic(SUBRESOURCE_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-aspectMask-00997",
+                How::Dynamic(SUBRESOURCE_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-mipLevel-01716",
+                How::Dynamic(SUBRESOURCE_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-arrayLayer-01717",
+                How::Dynamic(SUBRESOURCE_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-format-04461",
+                How::Dynamic(SUBRESOURCE_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-format-04462",
+                How::User(UNPROVEN_DEPTH_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-format-04463",
+                How::User(UNPROVEN_DEPTH_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-format-04464",
+                How::Dynamic(SUBRESOURCE_NO_DEPTH),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-format-01581",
+                How::User(UNPROVEN_PLANES_LAYOUT),
+            ),
+            (
+                "VUID-vkGetImageSubresourceLayout-format-01582",
+                How::User(UNPROVEN_PLANES_LAYOUT),
+            ),
+        ],
+        ..NONE
+    },
     Special {
         command: "vkCreateImage",
         check_last: call(

@@ -8,6 +8,8 @@ use super::{call, How, Special, NONE, SEMAPHORE_TYPE, UNPROVEN_FAMILY};
 
 const EVENT_STAGES: &str =
     "checks the stage mask is not 0 where the device does not enable synchronization2";
+const HOST_SIGNAL: &str = "checks, under the device's submission gate held until the call's bookkeeping is done, the value against the semaphore's value read from the driver and the submitted operations the device records; a host signal while a submitted signal of the semaphore may be pending is refused (Error::Misuse), as the device could pass the host's value before the call";
+const UNPROVEN_HOST_DIFFERENCE: &str = "checked by the safe methods in every build (against the value read from the driver and the pending operations the device records), but no test breaks it: lavapipe's maxTimelineSemaphoreValueDifference is the largest value a u64 holds";
 const DEVICE_MASK: &str = "checks that the mask names no physical device past the device's count (the device records how many it was created with)";
 const UNPROVEN_INITIAL_MASK: &str = "checked by the safe methods in every build (against the initial device mask the recorder keeps from the command buffer's begin, and the mask a chained VkDeviceGroupRenderPassBeginInfo gave the render pass instance), but no test breaks it: lavapipe's devices have one physical device, whose only valid mask is every device's";
 const UNPROVEN_ONE_DEVICE: &str = "checked by the safe methods in every build (the command buffer's current device mask, which the recorder follows from its begin and every vkCmdSetDeviceMask), but no test breaks it: lavapipe's devices have one physical device";
@@ -49,11 +51,14 @@ pub(super) const ROWS: &[Special] = &[
     Special {
         command: "vkSignalSemaphore",
         check: call("special::sync::signal_semaphore_checks", &["self", "signal_info"]),
+        hold: call("special::sync::signal_semaphore_hold", &["self", "signal_info"]),
         after: call("special::sync::signal_semaphore_done", &["self", "signal_info"]),
-        settles: &[(
-            "VUID-VkSemaphoreSignalInfo-semaphore-03257",
-            How::Dynamic(SEMAPHORE_TYPE),
-        )],
+        settles: &[
+            ("VUID-VkSemaphoreSignalInfo-semaphore-03257", How::Dynamic(SEMAPHORE_TYPE)),
+            ("VUID-VkSemaphoreSignalInfo-value-03258", How::Dynamic(HOST_SIGNAL)),
+            ("VUID-VkSemaphoreSignalInfo-value-03259", How::Dynamic(HOST_SIGNAL)),
+            ("VUID-VkSemaphoreSignalInfo-value-03260", How::User(UNPROVEN_HOST_DIFFERENCE)),
+        ],
         ..NONE
     },
     Special {
