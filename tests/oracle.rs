@@ -2064,7 +2064,7 @@ fn cmd_resolve_image(
     let (dst, _m2) = make_image(s, &o.dst_image);
     record(
         s,
-        |r| unsafe {
+        |r| {
             r.resolve_image(
                 &src,
                 a.src_image_layout,

@@ -1688,57 +1688,32 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
     }
     /**`vkCmdResolveImage`
 
-# Safety
-
-The caller upholds these 18 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdResolveImage-commandBuffer-01837`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdResolveImage-commandBuffer-01838`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdResolveImage-commandBuffer-01839`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-vkCmdResolveImage-pRegions-00255`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-vkCmdResolveImage-srcImage-00257`: `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdResolveImage-dstImage-00259`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdResolveImage-dstImage-02003`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-vkCmdResolveImage-srcImage-01386`: `srcImage` and `dstImage` must have been created with the same image format
-- `VUID-vkCmdResolveImage-srcImage-04446`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
-- `VUID-vkCmdResolveImage-srcImage-04447`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
-- `VUID-vkCmdResolveImage-srcImage-00271`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-vkCmdResolveImage-srcImage-00273`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-vkCmdResolveImage-dstImage-00276`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-vkCmdResolveImage-dstImage-00278`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-vkCmdResolveImage-srcImage-06763`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
-- `VUID-vkCmdResolveImage-dstImage-06765`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
-- `VUID-VkImageResolve-aspectMask-00266`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must only contain `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageResolve-layerCount-00267`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
-
 # Valid usage
 
 The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdResolveImage-commandBuffer-01837` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdResolveImage-commandBuffer-01838` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdResolveImage-commandBuffer-01839` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-vkCmdResolveImage-pRegions-00255` (*yours*; explicit rule): The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-vkCmdResolveImage-srcImage-00257` (*yours*; explicit rule): `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdResolveImage-dstImage-00259` (*yours*; explicit rule): `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdResolveImage-dstImage-02003` (*yours*; explicit rule): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-vkCmdResolveImage-srcImage-01386` (*yours*; explicit rule): `srcImage` and `dstImage` must have been created with the same image format
-- `VUID-vkCmdResolveImage-srcImage-04446` (*yours*; explicit rule): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
-- `VUID-vkCmdResolveImage-srcImage-04447` (*yours*; explicit rule): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
-- `VUID-vkCmdResolveImage-srcImage-00271` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-vkCmdResolveImage-srcImage-00273` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-vkCmdResolveImage-dstImage-00276` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-vkCmdResolveImage-dstImage-00278` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
+- `VUID-vkCmdResolveImage-commandBuffer-01837` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdResolveImage-commandBuffer-01838` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdResolveImage-commandBuffer-01839` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdResolveImage-dstImage-02003` (*yours*; checked by the safe methods in every build): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-vkCmdResolveImage-srcImage-04446` (*yours*; checked by the safe methods in every build): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
+- `VUID-vkCmdResolveImage-srcImage-04447` (*yours*; checked by the safe methods in every build): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
+- `VUID-vkCmdResolveImage-srcImage-00271` (*yours*; checked by the safe methods in every build): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
+- `VUID-vkCmdResolveImage-dstImage-00276` (*yours*; checked by the safe methods in every build): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
 - `VUID-vkCmdResolveImage-srcImageLayout-01400` (*yours*; explicit rule): `srcImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-vkCmdResolveImage-dstImageLayout-01401` (*yours*; explicit rule): `dstImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-vkCmdResolveImage-linearColorAttachment-06519` (*yours*; explicit rule): If the `linearColorAttachment` feature is enabled and the image is created with `VK_IMAGE_TILING_LINEAR`, the format features of `dstImage` must contain …
 - `VUID-vkCmdResolveImage-dstImage-02546` (*yours*; explicit rule): `dstImage` and `srcImage` must not have been created with `flags` containing `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
-- `VUID-vkCmdResolveImage-srcImage-06763` (*yours*; explicit rule): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
-- `VUID-vkCmdResolveImage-dstImage-06765` (*yours*; explicit rule): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
+- `VUID-vkCmdResolveImage-srcImage-06763` (*yours*; checked by the safe methods in every build): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
+- `VUID-vkCmdResolveImage-dstImage-06765` (*yours*; checked by the safe methods in every build): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
+- `VUID-vkCmdResolveImage-pRegions-00255` (*checked*): The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-vkCmdResolveImage-srcImage-00256` (*checked*): If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdResolveImage-srcImage-00257` (*checked*): `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-vkCmdResolveImage-dstImage-00258` (*checked*): If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-vkCmdResolveImage-dstImage-00259` (*checked*): `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-vkCmdResolveImage-srcImageLayout-00260` (*checked*): `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdResolveImage-dstImageLayout-00262` (*checked*): `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-vkCmdResolveImage-srcImage-01386` (*checked*): `srcImage` and `dstImage` must have been created with the same image format
 - `VUID-vkCmdResolveImage-srcSubresource-01709` (*checked*): The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created
 - `VUID-vkCmdResolveImage-dstSubresource-01710` (*checked*): The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created
 - `VUID-vkCmdResolveImage-srcSubresource-01711` (*checked*): The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was …
@@ -1746,9 +1721,11 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
 - `VUID-vkCmdResolveImage-srcOffset-00269` (*checked*): For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of …
 - `VUID-vkCmdResolveImage-srcOffset-00270` (*checked*): For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of …
 - `VUID-vkCmdResolveImage-srcOffset-00272` (*checked*): For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of …
+- `VUID-vkCmdResolveImage-srcImage-00273` (*checked*): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
 - `VUID-vkCmdResolveImage-dstOffset-00274` (*checked*): For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of …
 - `VUID-vkCmdResolveImage-dstOffset-00275` (*checked*): For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of …
 - `VUID-vkCmdResolveImage-dstOffset-00277` (*checked*): For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of …
+- `VUID-vkCmdResolveImage-dstImage-00278` (*checked*): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
 - `VUID-vkCmdResolveImage-srcImage-06762` (*checked*): `srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag
 - `VUID-vkCmdResolveImage-dstImage-06764` (*checked*): `dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
 - `VUID-vkCmdResolveImage-srcImageLayout-parameter` (*checked*): `srcImageLayout` must be a valid VkImageLayout value
@@ -1767,7 +1744,7 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
 - `VUID-vkCmdResolveImage-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdResolveImage")]
     #[inline]
-    pub unsafe fn resolve_image(
+    pub fn resolve_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -1797,6 +1774,11 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
                 );
             r?;
         }
+        crate::special::resolves::cmd_resolve_image_checks(
+            self,
+            (src_image.raw(), dst_image.raw()),
+            regions,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1813,7 +1795,7 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
 
 # Safety
 
-The caller upholds the rules that [`Self::resolve_image`] checks at run time: `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, `VUID-vkCmdResolveImage-srcImageLayout-00260`, `VUID-vkCmdResolveImage-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::resolve_image`] checks at run time: `VUID-vkCmdResolveImage-commonparent`, `VUID-vkCmdResolveImage-srcImageLayout-parameter`, `VUID-vkCmdResolveImage-dstImageLayout-parameter`, `VUID-vkCmdResolveImage-commandBuffer-cmdpool`, `VUID-vkCmdResolveImage-regionCount-arraylength`, `VUID-vkCmdResolveImage-srcImage-00256`, `VUID-vkCmdResolveImage-dstImage-00258`, `VUID-vkCmdResolveImage-srcSubresource-01709`, `VUID-vkCmdResolveImage-dstSubresource-01710`, `VUID-vkCmdResolveImage-srcSubresource-01711`, `VUID-vkCmdResolveImage-dstSubresource-01712`, `VUID-vkCmdResolveImage-srcOffset-00269`, `VUID-vkCmdResolveImage-srcOffset-00270`, `VUID-vkCmdResolveImage-srcOffset-00272`, `VUID-vkCmdResolveImage-dstOffset-00274`, `VUID-vkCmdResolveImage-dstOffset-00275`, `VUID-vkCmdResolveImage-dstOffset-00277`, `VUID-vkCmdResolveImage-srcImage-06762`, `VUID-vkCmdResolveImage-dstImage-06764`, `VUID-vkCmdResolveImage-srcImageLayout-00261`, `VUID-vkCmdResolveImage-dstImageLayout-00263`, `VUID-vkCmdResolveImage-srcImageLayout-00260`, `VUID-vkCmdResolveImage-dstImageLayout-00262`, `VUID-vkCmdResolveImage-commandBuffer-01837`, `VUID-vkCmdResolveImage-commandBuffer-01838`, `VUID-vkCmdResolveImage-commandBuffer-01839`, `VUID-vkCmdResolveImage-pRegions-00255`, `VUID-vkCmdResolveImage-srcImage-00257`, `VUID-vkCmdResolveImage-dstImage-00259`, `VUID-vkCmdResolveImage-dstImage-02003`, `VUID-vkCmdResolveImage-srcImage-01386`, `VUID-vkCmdResolveImage-srcImage-04446`, `VUID-vkCmdResolveImage-srcImage-04447`, `VUID-vkCmdResolveImage-srcImage-00271`, `VUID-vkCmdResolveImage-srcImage-00273`, `VUID-vkCmdResolveImage-dstImage-00276`, `VUID-vkCmdResolveImage-dstImage-00278`, `VUID-vkCmdResolveImage-srcImage-06763`, `VUID-vkCmdResolveImage-dstImage-06765`, `VUID-VkImageResolve-aspectMask-00266`, `VUID-VkImageResolve-layerCount-00267`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn resolve_image_unchecked(
         &mut self,

@@ -596,36 +596,13 @@ The caller upholds the rules that [`Self::copy_image_to_buffer2`] checks at run 
     }
     /**`vkCmdResolveImage2`
 
-# Safety
-
-The caller upholds these 18 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdResolveImage2-commandBuffer-01837`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdResolveImage2-commandBuffer-01838`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdResolveImage2-commandBuffer-01839`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-VkImageResolve2-aspectMask-00266`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must only contain `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageResolve2-layerCount-00267`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
-- `VUID-VkResolveImageInfo2-pRegions-00255`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-VkResolveImageInfo2-srcImage-00257`: `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkResolveImageInfo2-dstImage-00259`: `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkResolveImageInfo2-dstImage-02003`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkResolveImageInfo2-srcImage-01386`: `srcImage` and `dstImage` must have been created with the same image format
-- `VUID-VkResolveImageInfo2-srcImage-04446`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
-- `VUID-VkResolveImageInfo2-srcImage-04447`: If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
-- `VUID-VkResolveImageInfo2-srcImage-00271`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-VkResolveImageInfo2-srcImage-00273`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-VkResolveImageInfo2-dstImage-00276`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-VkResolveImageInfo2-dstImage-00278`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-VkResolveImageInfo2-srcImage-06763`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
-- `VUID-VkResolveImageInfo2-dstImage-06765`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
-
 # Valid usage
 
 The rules of `vkCmdResolveImage2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResolveImage2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdResolveImage2-commandBuffer-01837` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdResolveImage2-commandBuffer-01838` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdResolveImage2-commandBuffer-01839` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdResolveImage2-commandBuffer-01837` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdResolveImage2-commandBuffer-01838` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdResolveImage2-commandBuffer-01839` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
 - `VUID-vkCmdResolveImage2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdResolveImage2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdResolveImage2-pResolveImageInfo-parameter` (*by the types*): `pResolveImageInfo` must be a valid pointer to a valid VkResolveImageInfo2 structure
@@ -634,7 +611,7 @@ The rules of `vkCmdResolveImage2` that apply to this crate's API ([reference pag
 - `VUID-vkCmdResolveImage2-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdResolveImage2")]
     #[inline]
-    pub unsafe fn resolve_image2<'a>(
+    pub fn resolve_image2<'a>(
         &mut self,
         resolve_image_info: &ResolveImageInfo2<'a>,
     ) -> Result<()> {
@@ -647,6 +624,7 @@ The rules of `vkCmdResolveImage2` that apply to this crate's API ([reference pag
             let r = self.validate_resolve_image2(resolve_image_info);
             r?;
         }
+        crate::special::resolves::cmd_resolve_image2_checks(self, resolve_image_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.resolve_image2_unchecked(resolve_image_info) }
@@ -655,7 +633,7 @@ The rules of `vkCmdResolveImage2` that apply to this crate's API ([reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, `VUID-VkResolveImageInfo2-srcImageLayout-00260`, `VUID-VkResolveImageInfo2-dstImageLayout-00262`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::resolve_image2`] checks at run time: `VUID-vkCmdResolveImage2-commandBuffer-cmdpool`, `VUID-VkResolveImageInfo2-srcImageLayout-00260`, `VUID-VkResolveImageInfo2-dstImageLayout-00262`, `VUID-vkCmdResolveImage2-commandBuffer-01837`, `VUID-vkCmdResolveImage2-commandBuffer-01838`, `VUID-vkCmdResolveImage2-commandBuffer-01839`, `VUID-VkResolveImageInfo2-pRegions-00255`, `VUID-VkResolveImageInfo2-srcImage-00257`, `VUID-VkResolveImageInfo2-dstImage-00259`, `VUID-VkResolveImageInfo2-dstImage-02003`, `VUID-VkResolveImageInfo2-srcImage-01386`, `VUID-VkResolveImageInfo2-srcImage-04446`, `VUID-VkResolveImageInfo2-srcImage-04447`, `VUID-VkResolveImageInfo2-srcImage-00271`, `VUID-VkResolveImageInfo2-srcImage-00273`, `VUID-VkResolveImageInfo2-dstImage-00276`, `VUID-VkResolveImageInfo2-dstImage-00278`, `VUID-VkResolveImageInfo2-srcImage-06763`, `VUID-VkResolveImageInfo2-dstImage-06765`, `VUID-VkImageResolve2-aspectMask-00266`, `VUID-VkImageResolve2-layerCount-00267`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn resolve_image2_unchecked<'a>(
         &mut self,

@@ -264,8 +264,8 @@ impl<'a> ImageMemoryBarrier2<'a> {
 
 The rules of `VkImageResolve2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageResolve2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageResolve2-aspectMask-00266` (*yours*; explicit rule): The `aspectMask` member of `srcSubresource` and `dstSubresource` must only contain `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkImageResolve2-layerCount-00267` (*yours*; explicit rule): The `layerCount` member of `srcSubresource` and `dstSubresource` must match
+- `VUID-VkImageResolve2-aspectMask-00266` (*checked*): The `aspectMask` member of `srcSubresource` and `dstSubresource` must only contain `VK_IMAGE_ASPECT_COLOR_BIT`
+- `VUID-VkImageResolve2-layerCount-00267` (*checked*): The `layerCount` member of `srcSubresource` and `dstSubresource` must match
 - `VUID-VkImageResolve2-srcSubresource-parameter` (*checked*): `srcSubresource` must be a valid VkImageSubresourceLayers structure
 - `VUID-VkImageResolve2-dstSubresource-parameter` (*checked*): `dstSubresource` must be a valid VkImageSubresourceLayers structure
 - `VUID-VkImageResolve2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_IMAGE_RESOLVE_2`
@@ -1440,27 +1440,25 @@ impl<'a> RenderingInfo<'a> {
 
 The rules of `VkResolveImageInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkResolveImageInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkResolveImageInfo2-pRegions-00255` (*yours*; explicit rule): The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-VkResolveImageInfo2-srcImage-00257` (*yours*; explicit rule): `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkResolveImageInfo2-dstImage-00259` (*yours*; explicit rule): `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkResolveImageInfo2-dstImage-02003` (*yours*; explicit rule): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkResolveImageInfo2-srcImage-01386` (*yours*; explicit rule): `srcImage` and `dstImage` must have been created with the same image format
-- `VUID-VkResolveImageInfo2-srcImage-04446` (*yours*; explicit rule): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
-- `VUID-VkResolveImageInfo2-srcImage-04447` (*yours*; explicit rule): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
-- `VUID-VkResolveImageInfo2-srcImage-00271` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-VkResolveImageInfo2-srcImage-00273` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-VkResolveImageInfo2-dstImage-00276` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-VkResolveImageInfo2-dstImage-00278` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
+- `VUID-VkResolveImageInfo2-dstImage-02003` (*yours*; checked by the safe methods in every build): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkResolveImageInfo2-srcImage-04446` (*yours*; checked by the safe methods in every build): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
+- `VUID-VkResolveImageInfo2-srcImage-04447` (*yours*; checked by the safe methods in every build): If either `srcImage` or `dstImage` are of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
+- `VUID-VkResolveImageInfo2-srcImage-00271` (*yours*; checked by the safe methods in every build): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
+- `VUID-VkResolveImageInfo2-dstImage-00276` (*yours*; checked by the safe methods in every build): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
 - `VUID-VkResolveImageInfo2-srcImageLayout-01400` (*yours*; explicit rule): `srcImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkResolveImageInfo2-dstImageLayout-01401` (*yours*; explicit rule): `dstImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkResolveImageInfo2-linearColorAttachment-06519` (*yours*; explicit rule): If the `linearColorAttachment` feature is enabled and the image is created with `VK_IMAGE_TILING_LINEAR`, the format features of `dstImage` must contain …
 - `VUID-VkResolveImageInfo2-dstImage-02546` (*yours*; explicit rule): `dstImage` and `srcImage` must not have been created with `flags` containing `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
-- `VUID-VkResolveImageInfo2-srcImage-06763` (*yours*; explicit rule): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
-- `VUID-VkResolveImageInfo2-dstImage-06765` (*yours*; explicit rule): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
+- `VUID-VkResolveImageInfo2-srcImage-06763` (*yours*; checked by the safe methods in every build): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
+- `VUID-VkResolveImageInfo2-dstImage-06765` (*yours*; checked by the safe methods in every build): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
+- `VUID-VkResolveImageInfo2-pRegions-00255` (*checked*): The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
 - `VUID-VkResolveImageInfo2-srcImage-00256` (*checked*): If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkResolveImageInfo2-srcImage-00257` (*checked*): `srcImage` must have a sample count equal to any valid sample count value other than `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkResolveImageInfo2-dstImage-00258` (*checked*): If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
+- `VUID-VkResolveImageInfo2-dstImage-00259` (*checked*): `dstImage` must have a sample count equal to `VK_SAMPLE_COUNT_1_BIT`
 - `VUID-VkResolveImageInfo2-srcImageLayout-00260` (*checked*): `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkResolveImageInfo2-dstImageLayout-00262` (*checked*): `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkResolveImageInfo2-srcImage-01386` (*checked*): `srcImage` and `dstImage` must have been created with the same image format
 - `VUID-VkResolveImageInfo2-srcSubresource-01709` (*checked*): The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created
 - `VUID-VkResolveImageInfo2-dstSubresource-01710` (*checked*): The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created
 - `VUID-VkResolveImageInfo2-srcSubresource-01711` (*checked*): The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was …
@@ -1468,9 +1466,11 @@ The rules of `VkResolveImageInfo2` that apply to this crate's API ([reference pa
 - `VUID-VkResolveImageInfo2-srcOffset-00269` (*checked*): For each element of `pRegions`, `srcOffset.x` and (`extent.width` + `srcOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of …
 - `VUID-VkResolveImageInfo2-srcOffset-00270` (*checked*): For each element of `pRegions`, `srcOffset.y` and (`extent.height` + `srcOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of …
 - `VUID-VkResolveImageInfo2-srcOffset-00272` (*checked*): For each element of `pRegions`, `srcOffset.z` and (`extent.depth` + `srcOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of …
+- `VUID-VkResolveImageInfo2-srcImage-00273` (*checked*): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
 - `VUID-VkResolveImageInfo2-dstOffset-00274` (*checked*): For each element of `pRegions`, `dstOffset.x` and (`extent.width` + `dstOffset.x`) must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of …
 - `VUID-VkResolveImageInfo2-dstOffset-00275` (*checked*): For each element of `pRegions`, `dstOffset.y` and (`extent.height` + `dstOffset.y`) must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of …
 - `VUID-VkResolveImageInfo2-dstOffset-00277` (*checked*): For each element of `pRegions`, `dstOffset.z` and (`extent.depth` + `dstOffset.z`) must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of …
+- `VUID-VkResolveImageInfo2-dstImage-00278` (*checked*): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
 - `VUID-VkResolveImageInfo2-srcImage-06762` (*checked*): `srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag
 - `VUID-VkResolveImageInfo2-dstImage-06764` (*checked*): `dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
 - `VUID-VkResolveImageInfo2-srcImage-parameter` (*checked*): `srcImage` must be a valid VkImage handle

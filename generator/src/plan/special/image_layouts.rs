@@ -29,16 +29,6 @@ pub(super) const ROWS: &[Special] = &[
         ..NONE
     },
     Special {
-        command: "vkCmdResolveImage",
-        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ResolveImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
-        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ResolveImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
-        settles: &[
-            ("VUID-vkCmdResolveImage-srcImageLayout-00260", How::Dynamic(LAYOUT)),
-            ("VUID-vkCmdResolveImage-dstImageLayout-00262", How::Dynamic(LAYOUT)),
-        ],
-        ..NONE
-    },
-    Special {
         command: "vkCmdCopyImage2",
         check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::CopyImage2(copy_image_info)"]),
         after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::CopyImage2(copy_image_info)"]),
@@ -55,16 +45,6 @@ pub(super) const ROWS: &[Special] = &[
         settles: &[
             ("VUID-VkBlitImageInfo2-srcImageLayout-00221", How::Dynamic(LAYOUT)),
             ("VUID-VkBlitImageInfo2-dstImageLayout-00226", How::Dynamic(LAYOUT)),
-        ],
-        ..NONE
-    },
-    Special {
-        command: "vkCmdResolveImage2",
-        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::ResolveImage2(resolve_image_info)"]),
-        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::ResolveImage2(resolve_image_info)"]),
-        settles: &[
-            ("VUID-VkResolveImageInfo2-srcImageLayout-00260", How::Dynamic(LAYOUT)),
-            ("VUID-VkResolveImageInfo2-dstImageLayout-00262", How::Dynamic(LAYOUT)),
         ],
         ..NONE
     },

@@ -32,6 +32,7 @@ mod pipeline_layout;
 mod query;
 mod queue;
 mod render_pass;
+mod resolves;
 mod sampler;
 mod shader;
 mod surface;
@@ -267,6 +268,7 @@ pub const TABLES: &[(&str, &[Special])] = &[
     ("query", query::ROWS),
     ("queue", queue::ROWS),
     ("render_pass", render_pass::ROWS),
+    ("resolves", resolves::ROWS),
     ("sampler", sampler::ROWS),
     ("shader", shader::ROWS),
     ("surface", surface::ROWS),
