@@ -369,15 +369,31 @@ fn try_case(
     s.messages.abort_on_error(false);
     let layer = s.messages.take();
     rec.end().expect("end");
+    let what = format!("{what} ({version:?})");
+    verdict(&what, (safe.as_str(), rule), &layer, layer_says, &|other| {
+        version.rule(other)
+    })
+}
+
+/// What went wrong with a case, if anything: tuff's error was not `rule`, or the
+/// layer did not say what `says` expects (`as_rule` names a `NamesAs` rule in the
+/// case's version).
+fn verdict(
+    what: &str,
+    (safe, rule): (&str, &str),
+    layer: &[String],
+    says: Layer,
+    as_rule: &dyn Fn(&str) -> String,
+) -> Option<String> {
     let errors: Vec<_> = layer.iter().filter(|m| m.starts_with("ERROR")).collect();
-    let named = match layer_says {
+    let named = match says {
         Layer::Names => errors.iter().any(|m| m.contains(rule)),
-        Layer::NamesAs(other) => errors.iter().any(|m| m.contains(&version.rule(other))),
+        Layer::NamesAs(other) => errors.iter().any(|m| m.contains(&as_rule(other))),
         Layer::Silent => errors.is_empty(),
     };
     (safe != rule || !named).then(|| {
         format!(
-            "{what} ({version:?}): tuff said {safe}, expected {rule}; the layer said {:?}",
+            "{what}: tuff said {safe}, expected {rule}; the layer said {:?}",
             layer
                 .iter()
                 .map(|m| m.split(']').next().unwrap_or(m))
@@ -914,21 +930,7 @@ fn try_dependency(
     s.messages.abort_on_error(false);
     let layer = s.messages.take();
     rec.end().expect("end");
-    let errors: Vec<_> = layer.iter().filter(|m| m.starts_with("ERROR")).collect();
-    let named = match layer_says {
-        Layer::Names => errors.iter().any(|m| m.contains(rule)),
-        Layer::NamesAs(other) => errors.iter().any(|m| m.contains(other)),
-        Layer::Silent => errors.is_empty(),
-    };
-    (safe != rule || !named).then(|| {
-        format!(
-            "{what}: tuff said {safe}, expected {rule}; the layer said {:?}",
-            layer
-                .iter()
-                .map(|m| m.split(']').next().unwrap_or(m))
-                .collect::<Vec<_>>()
-        )
-    })
+    verdict(what, (safe, rule), &layer, layer_says, &str::to_string)
 }
 
 /// A second-version barrier that names the host stage transfers no queue family
