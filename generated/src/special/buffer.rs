@@ -272,6 +272,20 @@ pub(crate) fn create_buffer_checks(
     Ok(())
 }
 
+/// On a device of more than one physical device, a device address (of a buffer or a
+/// memory) needs bufferDeviceAddressMultiDevice.
+pub(crate) fn check_multi_device_address(device: &Device, vuid: &'static str) -> Result<()> {
+    let live = device.live();
+    let count = live.physical_count();
+    if count > 1 && live.with_features(|f| f.v12.buffer_device_address_multi_device) != vk::TRUE {
+        refuse(
+            vuid,
+            format!("the device has {count} physical devices, and bufferDeviceAddressMultiDevice is not enabled"),
+        )?;
+    }
+    Ok(())
+}
+
 /// The checks of `vkGetBufferDeviceAddress` and `vkGetBufferOpaqueCaptureAddress`:
 /// on a device group, the multi-device feature; the buffer's usage; its memory
 /// bound (unless it is sparse or made for capture and replay).
@@ -280,14 +294,8 @@ pub(crate) fn buffer_address_checks(
     info: &BufferDeviceAddressInfo<'_>,
     multi_device: &'static str,
 ) -> Result<()> {
+    check_multi_device_address(device, multi_device)?;
     let live = device.live();
-    let count = live.physical_count();
-    if count > 1 && live.with_features(|f| f.v12.buffer_device_address_multi_device) != vk::TRUE {
-        refuse(
-            multi_device,
-            format!("the device has {count} physical devices, and bufferDeviceAddressMultiDevice is not enabled"),
-        )?;
-    }
     let record = live.buffer(info.buffer).ok_or(Error::Misuse(
         "the buffer was not created through the wrappers",
     ))?;

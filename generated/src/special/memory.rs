@@ -749,14 +749,11 @@ pub(crate) fn memory_capture_address_checks(
     device: &Device,
     info: &DeviceMemoryOpaqueCaptureAddressInfo<'_>,
 ) -> Result<()> {
+    super::buffer::check_multi_device_address(
+        device,
+        "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335",
+    )?;
     let live = device.live();
-    let count = live.physical_count();
-    if count > 1 && live.with_features(|f| f.v12.buffer_device_address_multi_device) != vk::TRUE {
-        refuse(
-            "VUID-vkGetDeviceMemoryOpaqueCaptureAddress-device-03335",
-            format!("the device has {count} physical devices, and bufferDeviceAddressMultiDevice is not enabled"),
-        )?;
-    }
     let asked = live.memory(info.memory, |m| m.asked).ok_or(Error::Misuse(
         "the memory was not allocated through the wrappers",
     ))?;
