@@ -1277,7 +1277,7 @@ fn cmd_write_timestamp(
         s,
         |r| {
             r.reset_query_pool(&pool, 0, 1).expect("reset");
-            unsafe { r.write_timestamp(a.pipeline_stage, &pool, 0) }
+            r.write_timestamp(a.pipeline_stage, &pool, 0)
         },
         |r| {
             r.reset_query_pool(&pool, 0, 1).expect("reset");
@@ -2960,7 +2960,7 @@ fn cmd_write_timestamp2(
         s,
         |r| {
             r.reset_query_pool(&pool, 0, 1).expect("reset");
-            unsafe { r.write_timestamp2(a.stage, &pool, 0) }
+            r.write_timestamp2(a.stage, &pool, 0)
         },
         |r| {
             r.reset_query_pool(&pool, 0, 1).expect("reset");
@@ -3090,7 +3090,7 @@ fn reset_query_pool(
 ) -> Outcome {
     change(&mut args::ResetQueryPool, limits, &mut Objects::default());
     let pool = timestamps(s);
-    let safe = unsafe { s.device.reset_query_pool(&pool, 0, 1) };
+    let safe = s.device.reset_query_pool(&pool, 0, 1);
     let layer = under_layer(s, || {
         // SAFETY: as in `buffer_create_info`; the pool is used by no command.
         unsafe { s.device.reset_query_pool_unchecked(&pool, 0, 1) };

@@ -813,11 +813,9 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     let reset = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
         r.reset_query_pool(&occlusion, 0, 2).expect("reset");
     };
-    // SAFETY (each `begin_query` below): the pool was reset before, in the same
-    // buffer, so its queries are unavailable.
     let begin = |r: &mut tuff::Recorder<'_, tuff::Outside>| {
         reset(r);
-        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
+        r.begin_query(&occlusion, 0, none).expect("begin query");
     };
     let end_inside =
         |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| r.end_query(&occlusion, 0).map(drop);
@@ -831,7 +829,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     // the end the driver sees.
     let left = "VUID-vkCmdEndRenderPass-None-07004";
     let refused = in_render_pass(&s, one, reset, |r| {
-        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
+        r.begin_query(&occlusion, 0, none).expect("begin query");
     });
     assert_eq!(vuid(refused), left);
     // Ended without being begun; two active queries of one type; a timestamp pool; a
@@ -848,27 +846,27 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
     // A precise occlusion query needs occlusionQueryPrecise, which `setup` leaves off.
     let precise = vk::QueryControlFlags::PRECISE;
     assert_eq!(
-        vuid(unsafe { rec.begin_query(&occlusion, 0, precise) }),
+        vuid(rec.begin_query(&occlusion, 0, precise)),
         "VUID-vkCmdBeginQuery-queryType-00800"
     );
-    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
+    rec.begin_query(&occlusion, 0, none).expect("begin query");
     assert_eq!(
-        vuid(unsafe { rec.begin_query(&occlusion, 1, none) }),
+        vuid(rec.begin_query(&occlusion, 1, none)),
         "VUID-vkCmdBeginQuery-queryPool-01922"
     );
     assert_eq!(
-        vuid(unsafe { rec.begin_query(&timestamps, 0, none) }),
+        vuid(rec.begin_query(&timestamps, 0, none)),
         "VUID-vkCmdBeginQuery-queryType-02804"
     );
     rec.end_query(&occlusion, 0).expect("end query");
     assert_eq!(
-        vuid(unsafe { rec.begin_query(&occlusion, 2, none) }),
+        vuid(rec.begin_query(&occlusion, 2, none)),
         "VUID-vkCmdBeginQuery-query-00802"
     );
     rec.end().expect("end");
     // Begun and ended in the render pass's subpass: recorded.
     in_render_pass(&s, one, reset, |r| {
-        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
+        r.begin_query(&occlusion, 0, none).expect("begin query");
         r.end_query(&occlusion, 0).expect("end query");
     })
     .expect("a query in a subpass");
@@ -885,7 +883,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         drop(unsafe { rec.end_query_unchecked(&occlusion, 0) });
     });
     // A reset of an active query.
-    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
+    rec.begin_query(&occlusion, 0, none).expect("begin query");
     assert_eq!(
         vuid(rec.reset_query_pool(&occlusion, 0, 2)),
         "VUID-vkCmdResetQueryPool-None-02841"
@@ -902,7 +900,9 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         // SAFETY: as above.
         drop(unsafe { rec.end_query_unchecked(&occlusion, 0) });
     });
-    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
+    // Used since the last reset (by the begin before the reset refused above).
+    reset(&mut rec);
+    rec.begin_query(&occlusion, 0, none).expect("begin query");
     layer_names(&s.messages, "VUID-vkCmdBeginQuery-queryPool-01922", || {
         // SAFETY: as above.
         drop(unsafe { rec.begin_query_unchecked(&occlusion, 1, none) });
@@ -927,7 +927,7 @@ fn queries_end_where_they_began_and_the_layer_agrees() {
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     reset(&mut rec);
-    unsafe { rec.begin_query(&occlusion, 0, none) }.expect("begin query");
+    rec.begin_query(&occlusion, 0, none).expect("begin query");
     let raw = rec.raw();
     layer_names(
         &s.messages,
@@ -984,8 +984,8 @@ fn rendered<'c>(
         .color_attachments(&color);
     // SAFETY: the view is the target's, in the layout the rendering names.
     let mut rec = unsafe { rec.begin_rendering(&rendering) };
-    // SAFETY: the pool was reset before, in the same buffer.
-    unsafe { rec.begin_query(pool, 0, vk::QueryControlFlags::empty()) }.expect("begin query");
+    rec.begin_query(pool, 0, vk::QueryControlFlags::empty())
+        .expect("begin query");
     rec
 }
 
@@ -1018,8 +1018,7 @@ fn render_pass2_rendering_and_subpass_queries_end_where_they_began() {
     let none = vk::QueryControlFlags::empty();
     let end_info = tuff::SubpassEndInfo::new();
     let query = |r: &mut tuff::Recorder<'_, tuff::InRenderPass>| {
-        // SAFETY: the pool was reset before, in the same buffer.
-        unsafe { r.begin_query(&occlusion, 0, none) }.expect("begin query");
+        r.begin_query(&occlusion, 0, none).expect("begin query");
     };
 
     // Ended in the first of two subpasses.
@@ -1422,8 +1421,7 @@ fn query_results_are_copied_inside_their_buffer() {
             .expect("begin");
         rec.reset_query_pool(pool, 0, 2).expect("reset");
         if rule.ends_with("-07429") {
-            // SAFETY: the pool was reset just before, so the query is unavailable.
-            unsafe { rec.begin_query(pool, 0, vk::QueryControlFlags::empty()) }
+            rec.begin_query(pool, 0, vk::QueryControlFlags::empty())
                 .expect("begin query");
         }
         let safe = vuid(rec.copy_query_pool_results(pool, first, count, &buffer, offset, 8, flags));

@@ -411,6 +411,8 @@ pub struct Recorder<'c, S: Scope> {
     pub(crate) queries: Vec<ActiveQuery>,
     /// The image layouts the recording needs at its start and leaves so far.
     pub(crate) layouts: crate::state::layouts::Recording,
+    /// The queries the recording needs reset at its start and leaves so far.
+    pub(crate) query_states: crate::state::queries::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
     pub(crate) pass_images: Vec<vk::Image>,
     /// The descriptor sets bound so far, each with its generation then: an update
@@ -647,6 +649,7 @@ impl CommandBuffer {
             instance: None,
             queries: Vec::new(),
             layouts: Default::default(),
+            query_states: Default::default(),
             pass_images: Vec::new(),
             sets: Vec::new(),
             events: Vec::new(),
@@ -757,6 +760,14 @@ impl<'c, S: Scope> Recorder<'c, S> {
         (self.device.live(), &mut self.layouts)
     }
 
+    /// The device's records and the recording's query states, borrowed together
+    /// for a command that resets or uses queries.
+    pub(crate) fn query_states_mut(
+        &mut self,
+    ) -> (&crate::state::Live, &mut crate::state::queries::Recording) {
+        (self.device.live(), &mut self.query_states)
+    }
+
     /// The queue flags of the family of the command buffer's pool.
     #[inline]
     pub(crate) fn pool_queue_flags(&self) -> vk::QueueFlags {
@@ -800,6 +811,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             instance: self.instance,
             queries: self.queries,
             layouts: self.layouts,
+            query_states: self.query_states,
             pass_images: self.pass_images,
             sets: self.sets,
             events: self.events,
@@ -835,6 +847,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         self.cb.uses().ended(true);
         self.cb.uses().set_layouts(self.layouts);
+        self.cb.uses().set_queries(self.query_states);
         self.cb.uses().set_sets(self.sets);
         self.cb.uses().set_events(self.events);
         Ok(())

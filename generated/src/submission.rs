@@ -235,6 +235,31 @@ pub(crate) fn check_layouts(device: &Device, cbs: &[vk::CommandBuffer]) -> Resul
     Ok(())
 }
 
+/// Refuses command buffers that use, before resetting it, a query that the
+/// device's earlier submissions, its host resets and the command buffers before
+/// them in `cbs` leave other than reset (the rule of the command that uses it).
+pub(crate) fn check_queries(device: &Device, cbs: &[vk::CommandBuffer]) -> Result<()> {
+    let mut overlay = crate::state::queries::Overlay::new(device.live());
+    for raw in cbs {
+        if let Some(queries) = device.command_buffer_uses(*raw).and_then(|u| u.queries()) {
+            overlay.check(&queries)?;
+            overlay.apply(&queries);
+        }
+    }
+    Ok(())
+}
+
+/// Records the query states that `cbs`, submitted in this order as `sub`, leave.
+fn record_queries(device: &Device, cbs: &[vk::CommandBuffer], sub: &Vrc<Submission>) {
+    let mut overlay = crate::state::queries::Overlay::new(device.live());
+    for raw in cbs {
+        if let Some(queries) = device.command_buffer_uses(*raw).and_then(|u| u.queries()) {
+            overlay.apply(&queries);
+        }
+    }
+    overlay.commit(sub);
+}
+
 /// The descriptor sets that `cbs` and the secondaries they execute bound (each with
 /// the generation it had then), and the events their event commands name.
 fn used(device: &Device, cbs: &[vk::CommandBuffer]) -> (Vec<(u64, u64)>, Vec<u64>) {
@@ -326,6 +351,7 @@ pub(crate) fn submitted(
         }
     }
     record_layouts(device, cbs);
+    record_queries(device, cbs, &sub);
     let (sets, events) = used(device, cbs);
     device.live().sets_submitted(&sets, &sub);
     device.live().events_submitted(&events, queue, &sub);

@@ -11,7 +11,8 @@ use crate::submission::{self};
 use crate::{Error, Handle, Result};
 use ash::vk;
 
-/// Refuses a pending secondary that may not run twice at once.
+/// Refuses a pending secondary that may not run twice at once, and secondaries
+/// that need layouts or query states other than those the recording leaves.
 pub(crate) fn cmd_execute_commands_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     command_buffers: &[&CommandBuffer],
@@ -24,7 +25,18 @@ pub(crate) fn cmd_execute_commands_checks<S: Scope>(
             });
         }
     }
-    execute_layout_checks(recorder, command_buffers)
+    execute_layout_checks(recorder, command_buffers)?;
+    super::query::execute_queries_checks(recorder, command_buffers)
+}
+
+/// The recording executes the secondaries: the layouts and query states they
+/// leave are the primary's.
+pub(crate) fn cmd_execute_commands_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    command_buffers: &[&CommandBuffer],
+) {
+    super::image_layouts::execute_layouts_done(recorder, command_buffers);
+    super::query::execute_queries_done(recorder, command_buffers);
 }
 
 /// A primary is pending while it may run; so are the secondaries it executes.
@@ -90,7 +102,8 @@ pub(crate) fn create_command_pool_checks(
     Ok(())
 }
 
-/// The pool remembers its flags, and its family's queue flags for the `cmdpool` checks.
+/// The pool remembers its flags, and its family's queue flags for the `cmdpool` checks
+/// (and the granularity and timestamp bits other checks read).
 pub(crate) fn command_pool_created(
     device: &Device,
     pool: CommandPool,
@@ -104,12 +117,16 @@ pub(crate) fn command_pool_created(
             .fns()
             .get_physical_device_queue_family_properties(physical.raw())
     };
-    // The family's flags and granularity, from one query (an index past the families
-    // has neither).
-    let (flags, granularity) = families
+    // The family's flags, granularity and timestamp bits, from one query (an index
+    // past the families has none).
+    let (flags, granularity, timestamp_bits) = families
         .get(create_info.queue_family_index as usize)
         .map_or(Default::default(), |f| {
-            (f.queue_flags, f.min_image_transfer_granularity)
+            (
+                f.queue_flags,
+                f.min_image_transfer_granularity,
+                f.timestamp_valid_bits,
+            )
         });
     device.live().pool_created(
         pool.raw(),
@@ -117,6 +134,7 @@ pub(crate) fn command_pool_created(
             index: create_info.queue_family_index,
             flags,
             granularity,
+            timestamp_bits,
             protected: create_info
                 .flags
                 .contains(vk::CommandPoolCreateFlags::PROTECTED),

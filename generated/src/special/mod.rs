@@ -73,6 +73,7 @@ pub(crate) fn pool_family<S: Scope>(recorder: &Recorder<'_, S>) -> PoolFamily {
                 height: 1,
                 depth: 1,
             },
+            timestamp_bits: 64,
             protected: false,
         })
 }

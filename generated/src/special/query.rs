@@ -257,7 +257,21 @@ pub(crate) fn begin_query_checks<S: Scope>(
             )?;
         }
     }
-    Ok(())
+    recorder.query_states.check_use(
+        query_pool.raw(),
+        query,
+        used_count(recorder),
+        "VUID-vkCmdBeginQuery-None-00807",
+    )
+}
+
+/// How many queries a command that begins or writes one uses: one per view of the
+/// current subpass inside a multiview render pass instance, else one.
+fn used_count<S: Scope>(recorder: &Recorder<'_, S>) -> u32 {
+    recorder
+        .instance
+        .as_ref()
+        .map_or(1, |i| i.view_mask.count_ones().max(1))
 }
 
 /// The recorder remembers the active query.
@@ -272,6 +286,15 @@ pub(crate) fn begin_query_done<S: Scope>(
         .query_pool(query_pool.raw())
         .map_or(vk::QueryType::from_raw(i32::MAX), |r| r.query_type);
     let subpass = recorder.instance.as_ref().map(|i| i.subpass);
+    let count = used_count(recorder);
+    let (live, states) = recorder.query_states_mut();
+    states.used(
+        live,
+        query_pool.raw(),
+        query,
+        count,
+        "VUID-vkCmdBeginQuery-None-00807",
+    );
     recorder.queries.push(crate::recorder::ActiveQuery {
         pool: query_pool.raw(),
         query,
@@ -463,4 +486,296 @@ fn results_size(
             .and_then(|s| s.checked_add(each)),
     };
     Ok((each, all))
+}
+
+/// The recording resets the queries: the commands after it may use them.
+pub(crate) fn cmd_reset_query_pool_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    query_pool: &QueryPool,
+    first_query: u32,
+    query_count: u32,
+) {
+    let (live, states) = recorder.query_states_mut();
+    states.reset(live, query_pool.raw(), first_query, query_count);
+}
+
+/// The rules of a timestamp write, by version.
+struct TimestampRules {
+    /// The stage is one the pool's queue family supports.
+    family: &'static str,
+    /// The pool is a timestamp pool.
+    pool_type: &'static str,
+    /// The query is inside the pool.
+    query: &'static str,
+    /// The pool's queue family writes timestamps.
+    valid_bits: &'static str,
+    /// Inside a multiview render pass instance, the views' queries are inside the
+    /// pool.
+    views: &'static str,
+    /// Every query the command uses is unavailable.
+    unavailable: &'static str,
+}
+
+const WRITE_TIMESTAMP: TimestampRules = TimestampRules {
+    family: "VUID-vkCmdWriteTimestamp-pipelineStage-04074",
+    pool_type: "VUID-vkCmdWriteTimestamp-queryPool-01416",
+    query: "VUID-vkCmdWriteTimestamp-query-04904",
+    valid_bits: "VUID-vkCmdWriteTimestamp-timestampValidBits-00829",
+    views: "VUID-vkCmdWriteTimestamp-query-00831",
+    unavailable: "VUID-vkCmdWriteTimestamp-None-00830",
+};
+
+const WRITE_TIMESTAMP2: TimestampRules = TimestampRules {
+    family: "VUID-vkCmdWriteTimestamp2-stage-03860",
+    pool_type: "VUID-vkCmdWriteTimestamp2-queryPool-03861",
+    query: "VUID-vkCmdWriteTimestamp2-query-04903",
+    valid_bits: "VUID-vkCmdWriteTimestamp2-timestampValidBits-03863",
+    views: "VUID-vkCmdWriteTimestamp2-query-03865",
+    unavailable: "VUID-vkCmdWriteTimestamp2-None-03864",
+};
+
+/// The checks of `vkCmdWriteTimestamp`.
+pub(crate) fn write_timestamp_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    pipeline_stage: vk::PipelineStageFlags,
+    query_pool: &QueryPool,
+    query: u32,
+) -> Result<()> {
+    if let Some(s) = super::stages::unsupported_stage(pipeline_stage, recorder.pool_queue_flags()) {
+        refuse(
+            WRITE_TIMESTAMP.family,
+            format!(
+                "pipelineStage {s:?} is not a stage of the command pool's queue family ({:?})",
+                recorder.pool_queue_flags()
+            ),
+        )?;
+    }
+    timestamp_checks(recorder, query_pool, query, &WRITE_TIMESTAMP)
+}
+
+/// The checks of `vkCmdWriteTimestamp2`: one stage, of the pool's queue family,
+/// and those of the first version.
+pub(crate) fn write_timestamp2_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    stage: vk::PipelineStageFlags2,
+    query_pool: &QueryPool,
+    query: u32,
+) -> Result<()> {
+    if stage.as_raw().count_ones() != 1 {
+        refuse(
+            "VUID-vkCmdWriteTimestamp2-stage-03859",
+            format!("`stage` must only include a single pipeline stage (it is {stage:?})"),
+        )?;
+    }
+    if let Some(s) = super::stages::unsupported_stage2(stage, recorder.pool_queue_flags()) {
+        refuse(
+            WRITE_TIMESTAMP2.family,
+            format!(
+                "stage {s:?} is not a stage of the command pool's queue family ({:?})",
+                recorder.pool_queue_flags()
+            ),
+        )?;
+    }
+    timestamp_checks(recorder, query_pool, query, &WRITE_TIMESTAMP2)
+}
+
+/// What both versions of a timestamp write check of the pool and the query.
+fn timestamp_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+    rules: &TimestampRules,
+) -> Result<()> {
+    let bits = super::pool_family(recorder).timestamp_bits;
+    if bits == 0 {
+        refuse(
+            rules.valid_bits,
+            "the command pool's queue family has timestampValidBits 0: its queues write no timestamps",
+        )?;
+    }
+    let Some(record) = recorder.device().live().query_pool(query_pool.raw()) else {
+        return Ok(());
+    };
+    if record.query_type != vk::QueryType::TIMESTAMP {
+        refuse(
+            rules.pool_type,
+            format!(
+                "`queryPool` must have been created with a `queryType` of \
+                 `VK_QUERY_TYPE_TIMESTAMP` (it is {:?})",
+                record.query_type
+            ),
+        )?;
+    }
+    if query >= record.count {
+        refuse(
+            rules.query,
+            format!(
+                "`query` must be less than the number of queries in `queryPool` (`query` = \
+                 {query}, queries = {})",
+                record.count
+            ),
+        )?;
+    }
+    let count = used_count(recorder);
+    if recorder.instance.is_some() && u64::from(query) + u64::from(count) > u64::from(record.count)
+    {
+        refuse(
+            rules.views,
+            format!(
+                "the sum of `query` and the number of bits set in the current subpass's view mask \
+                 must be less than or equal to the number of queries in `queryPool` (`query` = \
+                 {query}, views = {count}, queries = {})",
+                record.count
+            ),
+        )?;
+    }
+    recorder
+        .query_states
+        .check_use(query_pool.raw(), query, count, rules.unavailable)
+}
+
+/// The recording uses the timestamp's queries.
+pub(crate) fn write_timestamp_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+) {
+    timestamp_written(recorder, query_pool, query, &WRITE_TIMESTAMP);
+}
+
+/// As [`write_timestamp_done`], for the second version.
+pub(crate) fn write_timestamp2_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+) {
+    timestamp_written(recorder, query_pool, query, &WRITE_TIMESTAMP2);
+}
+
+fn timestamp_written<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    query_pool: &QueryPool,
+    query: u32,
+    rules: &TimestampRules,
+) {
+    let count = used_count(recorder);
+    let (live, states) = recorder.query_states_mut();
+    states.used(live, query_pool.raw(), query, count, rules.unavailable);
+}
+
+/// Refuses secondaries that use queries the recording used since their reset.
+pub(crate) fn execute_queries_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    command_buffers: &[&CommandBuffer],
+) -> Result<()> {
+    let mut so_far = recorder.query_states.clone();
+    for cb in command_buffers {
+        if let Some(theirs) = cb.uses().queries() {
+            so_far.check_then(&theirs)?;
+            so_far.then(&theirs);
+        }
+    }
+    Ok(())
+}
+
+/// The recording executes the secondaries' query resets and uses.
+pub(crate) fn execute_queries_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    command_buffers: &[&CommandBuffer],
+) {
+    for cb in command_buffers {
+        if let Some(theirs) = cb.uses().queries() {
+            recorder.query_states.then(&theirs);
+        }
+    }
+}
+
+/// The checks of the host's `vkResetQueryPool`: the queries inside the pool.
+pub(crate) fn reset_query_pool_checks(
+    device: &Device,
+    query_pool: &QueryPool,
+    first_query: u32,
+    query_count: u32,
+) -> Result<()> {
+    let Some(record) = device.live().query_pool(query_pool.raw()) else {
+        return Ok(());
+    };
+    if first_query >= record.count {
+        refuse(
+            "VUID-vkResetQueryPool-firstQuery-02666",
+            format!(
+                "`firstQuery` must be less than the number of queries in `queryPool` \
+                 (`firstQuery` = {first_query}, queries = {})",
+                record.count
+            ),
+        )?;
+    }
+    if u64::from(first_query) + u64::from(query_count) > u64::from(record.count) {
+        refuse(
+            "VUID-vkResetQueryPool-firstQuery-02667",
+            format!(
+                "The sum of `firstQuery` and `queryCount` must be less than or equal to the \
+                 number of queries in `queryPool` (`firstQuery` = {first_query}, `queryCount` = \
+                 {query_count}, queries = {})",
+                record.count
+            ),
+        )?;
+    }
+    Ok(())
+}
+
+/// Held through a host read of a pool's results, so that no host reset runs at
+/// the same time (`VUID-vkResetQueryPool-firstQuery-02742`).
+pub(crate) fn get_query_pool_results_hold(
+    device: &Device,
+) -> Result<tuff_runtime::VutexGuard<'_, ()>> {
+    Ok(device.live().query_host())
+}
+
+/// Held through a host reset and its bookkeeping: no host read or other reset of
+/// the device's queries runs at the same time
+/// (`VUID-vkResetQueryPool-firstQuery-02742`), and no submission runs between its
+/// check that no submission touching the queries may still be executing and its
+/// record (the device's submission gate, taken second: a host read waiting for
+/// results holds the first, and a submission it waits for needs the gate).
+pub(crate) fn reset_query_pool_hold<'d>(
+    device: &'d Device,
+    query_pool: &QueryPool,
+    first_query: u32,
+    query_count: u32,
+) -> Result<(
+    tuff_runtime::VutexGuard<'d, ()>,
+    tuff_runtime::VutexGuard<'d, ()>,
+)> {
+    let host = device.live().query_host();
+    let gate = device.live().descriptor_gate();
+    for sub in device
+        .live()
+        .query_submissions(query_pool.raw(), first_query, query_count)
+    {
+        if !sub.poll(device) {
+            refuse(
+                "VUID-vkResetQueryPool-firstQuery-02741",
+                format!("a submission whose commands use queries {first_query}..{} of the pool may still be executing: wait for its fence first", u64::from(first_query) + u64::from(query_count)),
+            )?;
+        }
+    }
+    Ok((host, gate))
+}
+
+/// The host reset the queries: commands may use them again.
+pub(crate) fn reset_query_pool_done(
+    device: &Device,
+    query_pool: &QueryPool,
+    first_query: u32,
+    query_count: u32,
+) {
+    if let Some(record) = device.live().query_pool(query_pool.raw()) {
+        device.live().queries_reset_on_host(
+            query_pool.raw(),
+            record.count,
+            first_query,
+            query_count,
+        );
+    }
 }

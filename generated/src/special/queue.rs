@@ -165,8 +165,9 @@ const BIND_SPARSE_HOLD: HoldRules = HoldRules {
 /// Takes the device's descriptor gate for a submission command (held until its
 /// bookkeeping is done, so no submission on another queue or update changes what
 /// is checked here meanwhile) and refuses command buffers that an update of a set
-/// they bind left invalid, events another queue's pending submission names, and
-/// semaphore operations that the states the device records forbid.
+/// they bind left invalid, queries they use that are not reset, events another
+/// queue's pending submission names, and semaphore operations that the states the
+/// device records forbid.
 fn hold<'q, B: Batch>(
     queue: &'q Queue,
     batches: &[B],
@@ -175,6 +176,9 @@ fn hold<'q, B: Batch>(
     let device = queue.parent();
     let b = Batches::of(device.live(), batches);
     let gate = submission::sets_hold(device, &b.command_buffers, rules.submit.executable)?;
+    // Under the gate: a host reset of queries checks the submissions made, and
+    // records its reset, under it too.
+    submission::check_queries(device, &b.command_buffers)?;
     if !rules.events.is_empty() {
         submission::check_events(device, queue.raw(), &b.command_buffers, rules.events)?;
     }

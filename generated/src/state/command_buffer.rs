@@ -58,6 +58,9 @@ struct UsesState {
     pool: Option<(u32, bool)>,
     /// The events the last recording's event commands name.
     events: Vec<u64>,
+    /// The queries the last recording needs reset at its start and what it leaves
+    /// them; `None` while recording, or when it names none.
+    queries: Option<Vrc<crate::state::queries::Recording>>,
 }
 
 /// Where a command buffer stands, as the submission checks read it.
@@ -147,6 +150,7 @@ impl Uses {
             state.executable = false;
             state.generation += 1;
             state.layouts = None;
+            state.queries = None;
             state.sets.clear();
             state.events.clear();
             core::mem::take(&mut state.secondaries)
@@ -175,6 +179,7 @@ impl Uses {
             state.simultaneous = flags.contains(vk::CommandBufferUsageFlags::SIMULTANEOUS_USE);
             state.one_time = flags.contains(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
             state.layouts = None;
+            state.queries = None;
             core::mem::take(&mut state.secondaries)
         };
         drop(old);
@@ -207,6 +212,17 @@ impl Uses {
     /// The queue family of the buffer's pool and whether it is protected, if known.
     pub(crate) fn pool(&self) -> Option<(u32, bool)> {
         self.state.lock().pool
+    }
+
+    /// The query states of the recording that just ended.
+    pub(crate) fn set_queries(&self, queries: crate::state::queries::Recording) {
+        let queries = (!queries.is_empty()).then(|| Vrc::new(queries));
+        self.state.lock().queries = queries;
+    }
+
+    /// The queries the last recording needs reset at its start and what it leaves.
+    pub(crate) fn queries(&self) -> Option<Vrc<crate::state::queries::Recording>> {
+        self.state.lock().queries.clone()
     }
 
     /// The descriptor sets the recording that just ended bound (raw set, generation).

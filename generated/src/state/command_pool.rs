@@ -13,6 +13,8 @@ pub(crate) struct PoolFamily {
     pub flags: vk::QueueFlags,
     /// Its `minImageTransferGranularity`.
     pub granularity: vk::Extent3D,
+    /// Its `timestampValidBits`: 0 where its queues write no timestamps.
+    pub timestamp_bits: u32,
     /// Whether the pool was created with `VK_COMMAND_POOL_CREATE_PROTECTED_BIT`.
     pub protected: bool,
 }

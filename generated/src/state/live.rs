@@ -17,6 +17,7 @@ use super::framebuffer::{AttachmentImage, FramebufferRecord};
 use super::image::ImageRecord;
 use super::memory::Binding;
 use super::pipeline::{LayoutRecord, PipelineRecord};
+use super::queries::PoolQueries;
 use super::query::QueryPoolRecord;
 use super::render_pass::RenderPassRecord;
 use super::swapchain::SwapchainState;
@@ -113,6 +114,11 @@ pub(crate) struct Live {
     pub(super) swapchain_states: Vutex<HashMap<u64, SwapchainState>>,
     /// Each query pool's type, query count and statistics.
     pub(super) query_pools: Vutex<HashMap<u64, QueryPoolRecord>>,
+    /// Each query pool's query states as the submissions and host resets so far
+    /// leave them, and the submissions that touch its queries.
+    pub(super) query_states: Vutex<HashMap<u64, PoolQueries>>,
+    /// Held by the host's reads and resets of queries, which may not run at once.
+    pub(super) query_host: Vutex<()>,
     /// Each pipeline layout's push-constant ranges and sets.
     pub(super) pipeline_layouts: Vutex<HashMap<u64, Vrc<LayoutRecord>>>,
     /// Each pipeline's bind point and layout.
@@ -204,6 +210,8 @@ impl Default for Live {
             swapchain_states: Vutex::new(HashMap::default()),
             shader_modules: Vutex::new(HashMap::default()),
             query_pools: Vutex::new(HashMap::default()),
+            query_states: Vutex::new(HashMap::default()),
+            query_host: Vutex::new(()),
             pipeline_layouts: Vutex::new(HashMap::default()),
             pipelines: Vutex::new(HashMap::default()),
             set_layouts: Vutex::new(HashMap::default()),
@@ -350,6 +358,7 @@ impl Live {
             }
             vk::ObjectType::QUERY_POOL => {
                 self.query_pools.lock().remove(&key.1);
+                self.forget_query_states(key.1);
             }
             vk::ObjectType::SWAPCHAIN_KHR => {
                 self.swapchains.lock().remove(&key.1);

@@ -18,6 +18,7 @@ pub(crate) mod layouts;
 mod live;
 mod memory;
 mod pipeline;
+pub(crate) mod queries;
 mod query;
 mod queue;
 mod render_pass;

@@ -18,6 +18,7 @@ pub(crate) struct QueryPoolRecord {
 impl Live {
     /// Records a new query pool's creation parameters.
     pub(crate) fn query_pool_created(&self, raw: vk::QueryPool, record: QueryPoolRecord) {
+        self.forget_query_states(raw.as_raw());
         self.query_pools.lock().insert(raw.as_raw(), record);
     }
 

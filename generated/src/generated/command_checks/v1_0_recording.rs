@@ -302,10 +302,9 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::write_timestamp`], run before the call.
-    pub(crate) fn validate_write_timestamp(
+    ///Where the handles [`Self::write_timestamp`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_write_timestamp(
         &self,
-        pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -315,6 +314,14 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::write_timestamp`], run before the call.
+    pub(crate) fn validate_write_timestamp(
+        &self,
+        pipeline_stage: vk::PipelineStageFlags,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         crate::checks::enum_pipeline_stage_flag_bits(
             pipeline_stage,
             s,

@@ -109,8 +109,8 @@ impl Device {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::reset_query_pool`], run before the call.
-    pub(crate) fn validate_reset_query_pool(
+    ///Where the handles [`Self::reset_query_pool`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_reset_query_pool(
         &self,
         query_pool: &QueryPool,
     ) -> Result<()> {
@@ -121,6 +121,11 @@ impl Device {
                 "`queryPool` does not come from `device`",
             );
         }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::reset_query_pool`], run before the call.
+    pub(crate) fn validate_reset_query_pool(&self) -> Result<()> {
+        let s = &self.scope();
         if (s.exts.has(origin::VK_VERSION_1_2)
             || s.exts.has(origin::VK_EXT_HOST_QUERY_RESET))
             && !s.feature(|f| f.v12.host_query_reset)

@@ -718,10 +718,9 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         Ok(())
     }
-    ///The dynamic checks of [`Self::write_timestamp2`], run before the call.
-    pub(crate) fn validate_write_timestamp2(
+    ///Where the handles [`Self::write_timestamp2`] names come from, checked before its special case's check.
+    pub(crate) fn validate_origins_write_timestamp2(
         &self,
-        stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
     ) -> Result<()> {
         let s = &self.device().scope();
@@ -731,6 +730,14 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "`queryPool` does not come from the VkDevice the command is called on",
             );
         }
+        Ok(())
+    }
+    ///The dynamic checks of [`Self::write_timestamp2`], run before the call.
+    pub(crate) fn validate_write_timestamp2(
+        &self,
+        stage: vk::PipelineStageFlags2,
+    ) -> Result<()> {
+        let s = &self.device().scope();
         crate::checks::flags_pipeline_stage_flags2(
             stage,
             s,

@@ -2442,6 +2442,7 @@ The rules of `vkGetQueryPoolResults` that apply to this crate's API ([reference 
             let r = self.validate_get_query_pool_results(data, flags);
             r?;
         }
+        let _held = crate::special::query::get_query_pool_results_hold(self)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {

@@ -5,17 +5,10 @@ use super::*;
 impl<'c, S: Scope> Recorder<'c, S> {
     /**`vkCmdBeginQuery`
 
-# Safety
-
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBeginQuery-None-00807`: All queries used by the command must be unavailable
-
 # Valid usage
 
 The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginQuery.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBeginQuery-None-00807` (*yours*; explicit rule): All queries used by the command must be unavailable
 - `VUID-vkCmdBeginQuery-queryType-00803` (*yours*; checked by the safe methods in every build): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_OCCLUSION`, the `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdBeginQuery-queryType-00804` (*yours*; checked by the safe methods in every build): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PIPELINE_STATISTICS` and any of the `pipelineStatistics` indicate graphics operations, the `VkCommandPool` that `commandBuffer` was …
 - `VUID-vkCmdBeginQuery-queryType-00805` (*yours*; checked by the safe methods in every build): If the `queryType` used to create `queryPool` was `VK_QUERY_TYPE_PIPELINE_STATISTICS` and any of the `pipelineStatistics` indicate compute operations, the `VkCommandPool` that `commandBuffer` was …
@@ -43,6 +36,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
 - `VUID-vkCmdBeginQuery-queryPool-03225` (*yours*; explicit rule): If `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR` and one of the counters used to create `queryPool` was `VK_PERFORMANCE_COUNTER_SCOPE_RENDER_PASS_KHR`, the begin …
 - `VUID-vkCmdBeginQuery-queryPool-03226` (*yours*; explicit rule): If `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR` and another query pool with a `queryType` `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR` has been used within …
 - `VUID-vkCmdBeginQuery-None-02863` (*yours*; explicit rule): If `queryPool` was created with a `queryType` of `VK_QUERY_TYPE_PERFORMANCE_QUERY_KHR`, this command must not be recorded in a command buffer that, either directly or through secondary command …
+- `VUID-vkCmdBeginQuery-None-00807` (*checked*): All queries used by the command must be unavailable
 - `VUID-vkCmdBeginQuery-queryType-02804` (*checked*): The `queryType` used to create `queryPool` must not be `VK_QUERY_TYPE_TIMESTAMP`
 - `VUID-vkCmdBeginQuery-queryType-00800` (*checked*): If the `occlusionQueryPrecise` feature is not enabled, or the `queryType` used to create `queryPool` was not `VK_QUERY_TYPE_OCCLUSION`, `flags` must not contain `VK_QUERY_CONTROL_PRECISE_BIT`
 - `VUID-vkCmdBeginQuery-query-00802` (*checked*): `query` must be less than the number of queries in `queryPool`
@@ -55,7 +49,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
 - `VUID-vkCmdBeginQuery-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdBeginQuery")]
     #[inline]
-    pub unsafe fn begin_query(
+    pub fn begin_query(
         &mut self,
         query_pool: &QueryPool,
         query: u32,
@@ -75,7 +69,7 @@ The rules of `vkCmdBeginQuery` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, `VUID-vkCmdBeginQuery-queryType-00800`, `VUID-vkCmdBeginQuery-queryType-06741`, `VUID-vkCmdBeginQuery-commandBuffer-01885`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUID-vkCmdBeginQuery-commonparent`, `VUID-vkCmdBeginQuery-flags-parameter`, `VUID-vkCmdBeginQuery-commandBuffer-cmdpool`, `VUID-vkCmdBeginQuery-queryType-02804`, `VUID-vkCmdBeginQuery-query-00802`, `VUID-vkCmdBeginQuery-queryType-00803`, `VUID-vkCmdBeginQuery-queryType-00804`, `VUID-vkCmdBeginQuery-queryType-00805`, `VUID-vkCmdBeginQuery-queryPool-01922`, `VUID-vkCmdBeginQuery-query-00808`, `VUID-vkCmdBeginQuery-queryType-00800`, `VUID-vkCmdBeginQuery-queryType-06741`, `VUID-vkCmdBeginQuery-commandBuffer-01885`, `VUID-vkCmdBeginQuery-None-00807`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn begin_query_unchecked(
         &mut self,
@@ -533,27 +527,13 @@ The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUI
     }
     /**`vkCmdWriteTimestamp`
 
-# Safety
-
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04074`: `pipelineStage` must be a valid stage for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWriteTimestamp-queryPool-01416`: `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
-- `VUID-vkCmdWriteTimestamp-queryPool-00828`: The query identified by `queryPool` and `query` must be unavailable
-- `VUID-vkCmdWriteTimestamp-timestampValidBits-00829`: The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
-- `VUID-vkCmdWriteTimestamp-query-04904`: `query` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdWriteTimestamp-None-00830`: All queries used by the command must be unavailable
-- `VUID-vkCmdWriteTimestamp-query-00831`: If `vkCmdWriteTimestamp` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries in `queryPool`
-
 # Valid usage
 
 The rules of `vkCmdWriteTimestamp` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWriteTimestamp-pipelineStage-04074` (*yours*; explicit rule): `pipelineStage` must be a valid stage for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWriteTimestamp-queryPool-01416` (*yours*; explicit rule): `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
-- `VUID-vkCmdWriteTimestamp-queryPool-00828` (*yours*; explicit rule): The query identified by `queryPool` and `query` must be unavailable
-- `VUID-vkCmdWriteTimestamp-timestampValidBits-00829` (*yours*; explicit rule): The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
-- `VUID-vkCmdWriteTimestamp-query-04904` (*yours*; explicit rule): `query` must be less than the number of queries in `queryPool`
+- `VUID-vkCmdWriteTimestamp-pipelineStage-04074` (*yours*; checked by the safe methods in every build): `pipelineStage` must be a valid stage for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdWriteTimestamp-queryPool-00828` (*yours*; checked by the safe methods in every build, by the check of the rule for every query the command uses): The query identified by `queryPool` and `query` must be unavailable
+- `VUID-vkCmdWriteTimestamp-timestampValidBits-00829` (*yours*; checked by the safe methods in every build): The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04077` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04078` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04079` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
@@ -563,30 +543,37 @@ The rules of `vkCmdWriteTimestamp` that apply to this crate's API ([reference pa
 - `VUID-vkCmdWriteTimestamp-shadingRateImage-07314` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-vkCmdWriteTimestamp-fragmentShadingRate-07315` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-vkCmdWriteTimestamp-pipelineStage-06490` (*yours*; explicit rule): `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE`
-- `VUID-vkCmdWriteTimestamp-None-00830` (*yours*; explicit rule): All queries used by the command must be unavailable
-- `VUID-vkCmdWriteTimestamp-query-00831` (*yours*; explicit rule): If `vkCmdWriteTimestamp` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of …
+- `VUID-vkCmdWriteTimestamp-query-00831` (*yours*; checked by the safe methods in every build): If `vkCmdWriteTimestamp` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of …
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04075` (*checked*): If the `geometryShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
 - `VUID-vkCmdWriteTimestamp-pipelineStage-04076` (*checked*): If the `tessellationShader` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-vkCmdWriteTimestamp-queryPool-01416` (*checked*): `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
+- `VUID-vkCmdWriteTimestamp-query-04904` (*checked*): `query` must be less than the number of queries in `queryPool`
 - `VUID-vkCmdWriteTimestamp-pipelineStage-parameter` (*checked*): `pipelineStage` must be a valid VkPipelineStageFlagBits value
 - `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, compute, decode, encode, or opticalflow operations
 - `VUID-vkCmdWriteTimestamp-commonparent` (*checked*): Both of `commandBuffer`, and `queryPool` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-vkCmdWriteTimestamp-synchronization2-06489` (*checked*): If the `synchronization2` feature is not enabled, `pipelineStage` must not be `VK_PIPELINE_STAGE_NONE`
+- `VUID-vkCmdWriteTimestamp-None-00830` (*checked*): All queries used by the command must be unavailable
 - `VUID-vkCmdWriteTimestamp-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdWriteTimestamp-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle
 - `VUID-vkCmdWriteTimestamp-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdWriteTimestamp")]
     #[inline]
-    pub unsafe fn write_timestamp(
+    pub fn write_timestamp(
         &mut self,
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
         query: u32,
-    ) {
+    ) -> Result<()> {
+        self.validate_origins_write_timestamp(query_pool)?;
+        crate::special::query::write_timestamp_checks(
+            self,
+            pipeline_stage,
+            query_pool,
+            query,
+        )?;
         {
-            let r = self.validate_write_timestamp(pipeline_stage, query_pool);
-            if !self.accept(r) {
-                return;
-            }
+            let r = self.validate_write_timestamp(pipeline_stage);
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -596,18 +583,22 @@ The rules of `vkCmdWriteTimestamp` that apply to this crate's API ([reference pa
 
 # Safety
 
-The caller upholds the rules that [`Self::write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, `VUID-vkCmdWriteTimestamp-synchronization2-06489`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_timestamp`] checks at run time: `VUID-vkCmdWriteTimestamp-commonparent`, `VUID-vkCmdWriteTimestamp-pipelineStage-parameter`, `VUID-vkCmdWriteTimestamp-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp-pipelineStage-04075`, `VUID-vkCmdWriteTimestamp-pipelineStage-04076`, `VUID-vkCmdWriteTimestamp-synchronization2-06489`, `VUID-vkCmdWriteTimestamp-pipelineStage-04074`, `VUID-vkCmdWriteTimestamp-queryPool-01416`, `VUID-vkCmdWriteTimestamp-query-04904`, `VUID-vkCmdWriteTimestamp-timestampValidBits-00829`, `VUID-vkCmdWriteTimestamp-query-00831`, `VUID-vkCmdWriteTimestamp-None-00830`, `VUID-vkCmdWriteTimestamp-queryPool-00828`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_timestamp_unchecked(
         &mut self,
         pipeline_stage: vk::PipelineStageFlags,
         query_pool: &QueryPool,
         query: u32,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_0().cmd_write_timestamp;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), pipeline_stage, query_pool.raw(), query) };
-        self.state_changed();
-        self.retain_with(query_pool.address(), || query_pool.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), pipeline_stage, query_pool.raw(), query) };
+            crate::special::query::write_timestamp_done(self, query_pool, query);
+            self.state_changed();
+            self.retain_with(query_pool.address(), || query_pool.retained());
+        }
+        Ok(())
     }
 }

@@ -1681,6 +1681,12 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), query_pool.raw(), first_query, query_count) };
+            crate::special::query::cmd_reset_query_pool_done(
+                self,
+                query_pool,
+                first_query,
+                query_count,
+            );
             self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
         }

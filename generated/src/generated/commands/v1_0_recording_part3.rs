@@ -553,7 +553,10 @@ The caller upholds the rules that [`Self::execute_commands`] checks at run time:
                     crate::Handles::raws(command_buffers_given).as_ptr(),
                 )
             };
-            crate::special::image_layouts::execute_layouts_done(self, command_buffers);
+            crate::special::command_buffers::cmd_execute_commands_done(
+                self,
+                command_buffers,
+            );
             self.state_changed();
         }
         Ok(())

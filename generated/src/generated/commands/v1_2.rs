@@ -287,39 +287,43 @@ The caller upholds the rules that [`Self::get_semaphore_counter_value`] checks a
     }
     /**`vkResetQueryPool`
 
-# Safety
-
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkResetQueryPool-firstQuery-02666`: `firstQuery` must be less than the number of queries in `queryPool`
-- `VUID-vkResetQueryPool-firstQuery-02667`: The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
-- `VUID-vkResetQueryPool-firstQuery-02741`: Submitted commands that refer to the range specified by `firstQuery` and `queryCount` in `queryPool` must have completed execution
-- `VUID-vkResetQueryPool-firstQuery-02742`: The range of queries specified by `firstQuery` and `queryCount` in `queryPool` must not be in use by calls to vkGetQueryPoolResults or `vkResetQueryPool` in other threads
-
 # Valid usage
 
 The rules of `vkResetQueryPool` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetQueryPool.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetQueryPool-firstQuery-02666` (*yours*; explicit rule): `firstQuery` must be less than the number of queries in `queryPool`
-- `VUID-vkResetQueryPool-firstQuery-02667` (*yours*; explicit rule): The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
-- `VUID-vkResetQueryPool-firstQuery-02741` (*yours*; explicit rule): Submitted commands that refer to the range specified by `firstQuery` and `queryCount` in `queryPool` must have completed execution
-- `VUID-vkResetQueryPool-firstQuery-02742` (*yours*; explicit rule): The range of queries specified by `firstQuery` and `queryCount` in `queryPool` must not be in use by calls to vkGetQueryPoolResults or `vkResetQueryPool` in other threads
 - `VUID-vkResetQueryPool-None-02665` (*checked*): The `hostQueryReset` feature must be enabled
+- `VUID-vkResetQueryPool-firstQuery-02666` (*checked*): `firstQuery` must be less than the number of queries in `queryPool`
+- `VUID-vkResetQueryPool-firstQuery-02667` (*checked*): The sum of `firstQuery` and `queryCount` must be less than or equal to the number of queries in `queryPool`
+- `VUID-vkResetQueryPool-firstQuery-02741` (*checked*): Submitted commands that refer to the range specified by `firstQuery` and `queryCount` in `queryPool` must have completed execution
 - `VUID-vkResetQueryPool-queryPool-parent` (*checked*): `queryPool` must have been created, allocated, or retrieved from `device`
+- `VUID-vkResetQueryPool-firstQuery-02742` (*by the types*): The range of queries specified by `firstQuery` and `queryCount` in `queryPool` must not be in use by calls to vkGetQueryPoolResults or `vkResetQueryPool` in other threads
 - `VUID-vkResetQueryPool-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkResetQueryPool-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle*/
     #[doc(alias = "vkResetQueryPool")]
     #[inline]
-    pub unsafe fn reset_query_pool(
+    pub fn reset_query_pool(
         &self,
         query_pool: &QueryPool,
         first_query: u32,
         query_count: u32,
     ) -> Result<()> {
+        self.validate_origins_reset_query_pool(query_pool)?;
+        crate::special::query::reset_query_pool_checks(
+            self,
+            query_pool,
+            first_query,
+            query_count,
+        )?;
         {
-            let r = self.validate_reset_query_pool(query_pool);
+            let r = self.validate_reset_query_pool();
             r?;
         }
+        let _held = crate::special::query::reset_query_pool_hold(
+            self,
+            query_pool,
+            first_query,
+            query_count,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.reset_query_pool_unchecked(query_pool, first_query, query_count) };
@@ -329,7 +333,7 @@ The rules of `vkResetQueryPool` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, `VUID-vkResetQueryPool-None-02665`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_query_pool`] checks at run time: `VUID-vkResetQueryPool-queryPool-parent`, `VUID-vkResetQueryPool-None-02665`, `VUID-vkResetQueryPool-firstQuery-02666`, `VUID-vkResetQueryPool-firstQuery-02667`, `VUID-vkResetQueryPool-firstQuery-02741`, `VUID-vkResetQueryPool-firstQuery-02742`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_query_pool_unchecked(
         &self,
@@ -340,6 +344,12 @@ The caller upholds the rules that [`Self::reset_query_pool`] checks at run time:
         let fp = self.fns().fp_v1_2().reset_query_pool;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), query_pool.raw(), first_query, query_count) };
+        crate::special::query::reset_query_pool_done(
+            self,
+            query_pool,
+            first_query,
+            query_count,
+        );
     }
     /**`vkSignalSemaphore`
 

@@ -1713,31 +1713,15 @@ The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VU
     }
     /**`vkCmdWriteTimestamp2`
 
-# Safety
-
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdWriteTimestamp2-stage-03859`: `stage` must only include a single pipeline stage
-- `VUID-vkCmdWriteTimestamp2-stage-03860`: `stage` must only include stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWriteTimestamp2-queryPool-03861`: `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
-- `VUID-vkCmdWriteTimestamp2-queryPool-03862`: The query identified by `queryPool` and `query` must be unavailable
-- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`: The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
-- `VUID-vkCmdWriteTimestamp2-query-04903`: `query` must be less than the number of queries in `queryPool`
-- `VUID-vkCmdWriteTimestamp2-None-03864`: All queries used by the command must be unavailable
-- `VUID-vkCmdWriteTimestamp2-query-03865`: If `vkCmdWriteTimestamp2` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of queries in `queryPool`
-
 # Valid usage
 
 The rules of `vkCmdWriteTimestamp2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWriteTimestamp2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkCmdWriteTimestamp2-stage-03929` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `geometryShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT`
 - `VUID-vkCmdWriteTimestamp2-stage-03930` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If the `tessellationShader` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT`
-- `VUID-vkCmdWriteTimestamp2-stage-03859` (*yours*; explicit rule): `stage` must only include a single pipeline stage
-- `VUID-vkCmdWriteTimestamp2-stage-03860` (*yours*; explicit rule): `stage` must only include stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWriteTimestamp2-queryPool-03861` (*yours*; explicit rule): `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
-- `VUID-vkCmdWriteTimestamp2-queryPool-03862` (*yours*; explicit rule): The query identified by `queryPool` and `query` must be unavailable
-- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863` (*yours*; explicit rule): The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
-- `VUID-vkCmdWriteTimestamp2-query-04903` (*yours*; explicit rule): `query` must be less than the number of queries in `queryPool`
+- `VUID-vkCmdWriteTimestamp2-stage-03860` (*yours*; checked by the safe methods in every build): `stage` must only include stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
+- `VUID-vkCmdWriteTimestamp2-queryPool-03862` (*yours*; checked by the safe methods in every build, by the check of the rule for every query the command uses): The query identified by `queryPool` and `query` must be unavailable
+- `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863` (*yours*; checked by the safe methods in every build): The command pool&#8217;s queue family must support a non-zero `timestampValidBits`
 - `VUID-vkCmdWriteTimestamp2-stage-03931` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_CONDITIONAL_RENDERING_BIT_EXT`
 - `VUID-vkCmdWriteTimestamp2-stage-03932` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
 - `VUID-vkCmdWriteTimestamp2-stage-03933` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT`
@@ -1748,28 +1732,31 @@ The rules of `vkCmdWriteTimestamp2` that apply to this crate's API ([reference p
 - `VUID-vkCmdWriteTimestamp2-stage-07317` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-vkCmdWriteTimestamp2-stage-04957` (*yours*; explicit rule): If the `subpassShading` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`
 - `VUID-vkCmdWriteTimestamp2-stage-04995` (*yours*; explicit rule): If the `invocationMask` feature is not enabled, `stage` must not contain `VK_PIPELINE_STAGE_2_INVOCATION_MASK_BIT_HUAWEI`
-- `VUID-vkCmdWriteTimestamp2-None-03864` (*yours*; explicit rule): All queries used by the command must be unavailable
-- `VUID-vkCmdWriteTimestamp2-query-03865` (*yours*; explicit rule): If `vkCmdWriteTimestamp2` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of …
+- `VUID-vkCmdWriteTimestamp2-query-03865` (*yours*; checked by the safe methods in every build): If `vkCmdWriteTimestamp2` is called within a render pass instance, the sum of `query` and the number of bits set in the current subpass&#8217;s view mask must be less than or equal to the number of …
 - `VUID-vkCmdWriteTimestamp2-synchronization2-03858` (*checked*): The `synchronization2` feature must be enabled
+- `VUID-vkCmdWriteTimestamp2-stage-03859` (*checked*): `stage` must only include a single pipeline stage
+- `VUID-vkCmdWriteTimestamp2-queryPool-03861` (*checked*): `queryPool` must have been created with a `queryType` of `VK_QUERY_TYPE_TIMESTAMP`
+- `VUID-vkCmdWriteTimestamp2-query-04903` (*checked*): `query` must be less than the number of queries in `queryPool`
 - `VUID-vkCmdWriteTimestamp2-stage-parameter` (*checked*): `stage` must be a valid combination of VkPipelineStageFlagBits2 values
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, compute, decode, or encode operations
 - `VUID-vkCmdWriteTimestamp2-commonparent` (*checked*): Both of `commandBuffer`, and `queryPool` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdWriteTimestamp2-None-03864` (*checked*): All queries used by the command must be unavailable
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdWriteTimestamp2-queryPool-parameter` (*by the types*): `queryPool` must be a valid VkQueryPool handle
 - `VUID-vkCmdWriteTimestamp2-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdWriteTimestamp2")]
     #[inline]
-    pub unsafe fn write_timestamp2(
+    pub fn write_timestamp2(
         &mut self,
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
         query: u32,
-    ) {
+    ) -> Result<()> {
+        self.validate_origins_write_timestamp2(query_pool)?;
+        crate::special::query::write_timestamp2_checks(self, stage, query_pool, query)?;
         {
-            let r = self.validate_write_timestamp2(stage, query_pool);
-            if !self.accept(r) {
-                return;
-            }
+            let r = self.validate_write_timestamp2(stage);
+            r?;
         }
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
@@ -1779,19 +1766,23 @@ The rules of `vkCmdWriteTimestamp2` that apply to this crate's API ([reference p
 
 # Safety
 
-The caller upholds the rules that [`Self::write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::write_timestamp2`] checks at run time: `VUID-vkCmdWriteTimestamp2-commonparent`, `VUID-vkCmdWriteTimestamp2-stage-parameter`, `VUID-vkCmdWriteTimestamp2-commandBuffer-cmdpool`, `VUID-vkCmdWriteTimestamp2-stage-03929`, `VUID-vkCmdWriteTimestamp2-stage-03930`, `VUID-vkCmdWriteTimestamp2-synchronization2-03858`, `VUID-vkCmdWriteTimestamp2-stage-03859`, `VUID-vkCmdWriteTimestamp2-stage-03860`, `VUID-vkCmdWriteTimestamp2-queryPool-03861`, `VUID-vkCmdWriteTimestamp2-query-04903`, `VUID-vkCmdWriteTimestamp2-timestampValidBits-03863`, `VUID-vkCmdWriteTimestamp2-query-03865`, `VUID-vkCmdWriteTimestamp2-None-03864`, `VUID-vkCmdWriteTimestamp2-queryPool-03862`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn write_timestamp2_unchecked(
         &mut self,
         stage: vk::PipelineStageFlags2,
         query_pool: &QueryPool,
         query: u32,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_write_timestamp2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), stage, query_pool.raw(), query) };
-        self.state_changed();
-        self.retain_with(query_pool.address(), || query_pool.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), stage, query_pool.raw(), query) };
+            crate::special::query::write_timestamp2_done(self, query_pool, query);
+            self.state_changed();
+            self.retain_with(query_pool.address(), || query_pool.retained());
+        }
+        Ok(())
     }
 }
 impl<'c, S: OutsideRenderPass> Recorder<'c, S> {

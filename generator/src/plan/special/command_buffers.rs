@@ -20,7 +20,7 @@ pub(super) const ROWS: &[Special] = &[
         command: "vkCmdExecuteCommands",
         check: call("special::command_buffers::cmd_execute_commands_checks", &["self", "command_buffers"]),
         before: call("special::command_buffers::cmd_execute_commands_before", &["self", "command_buffers"]),
-        after: call("special::image_layouts::execute_layouts_done", &["self", "command_buffers"]),
+        after: call("special::command_buffers::cmd_execute_commands_done", &["self", "command_buffers"]),
         settles: &[(
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
             How::Dynamic("refuses a secondary without SIMULTANEOUS_USE that a submission may still be executing"),

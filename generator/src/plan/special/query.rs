@@ -20,6 +20,14 @@ const QUERY_POOL: &str =
     "checks the query against the pool's type and count, kept from its creation";
 const QUERY_RANGE: &str = "checks the queries against the pool's count, kept from its creation";
 const STATISTICS: &str = "checks the statistics bits against those the API defines (the 1.3.239 layer does not check it: proven by the error alone)";
+const UNAVAILABLE: &str = "checks each query the command uses (one per view of a multiview subpass) is reset and not used since: in the recording, at the command; and where the recording uses it before any reset of its own, at each submission, against the states the device's earlier submissions and host resets leave, in submission order (the 1.3.239 layer reports the rule as UNASSIGNED-CoreValidation-DrawState-QueryNotReset, at the submission)";
+const UNAVAILABLE_SAME: &str = "checked by the safe methods in every build, by the check of the rule for every query the command uses (VUID-vkCmdWriteTimestamp-None-00830, or -03864 for the second version), whose condition includes this one and whose VUID the error names (the 1.3.239 layer reports both as UNASSIGNED-CoreValidation-DrawState-QueryNotReset)";
+const UNPROVEN_TIMESTAMP_BITS: &str = "checked by the safe methods in every build (the pool's queue family's timestampValidBits, recorded at the pool's creation), but no test breaks it: lavapipe's one queue family writes 64-bit timestamps";
+const UNPROVEN_TIMESTAMP_VIEWS: &str = "checked by the safe methods in every build (the current subpass's view mask, which the recorder keeps, against the pool's count, kept from its creation), as vkCmdBeginQuery's -00808 is, but no test breaks it through this command yet";
+const TIMESTAMP_POOL: &str = "checks the pool's type and count, kept from its creation";
+const ONE_STAGE: &str = "checks that exactly one bit of the mask is set";
+const HOST_RESET_PENDING: &str = "checks the submissions that touch the pool's queries in the range (the device records each with the span of queries its recordings touch) are complete, asking their fences; the check and the reset's record hold the device's submission gate, so no submission comes between them (the 1.3.239 layer does not check it: the error alone proves it)";
+const HOST_RESET_THREADS: &str = "the host's reads of results and resets of one device's queries hold one lock of the device through the call";
 const QUERIES: &str = "checks the queries against the pool's count, type and statistics, kept from its creation, and that `data` holds every result at its stride";
 
 /// The rows of this concern.
@@ -85,6 +93,7 @@ pub(super) const ROWS: &[Special] = &[
                 "VUID-vkCmdBeginQuery-commandBuffer-01885",
                 How::User(UNPROVEN_PROTECTED),
             ),
+            ("VUID-vkCmdBeginQuery-None-00807", How::Dynamic(UNAVAILABLE)),
         ],
         ..NONE
     },
@@ -127,6 +136,10 @@ pub(super) const ROWS: &[Special] = &[
         command: "vkCmdResetQueryPool",
         check: call(
             "special::query::cmd_reset_query_pool_range",
+            &["self", "query_pool", "first_query", "query_count"],
+        ),
+        after: call(
+            "special::query::cmd_reset_query_pool_done",
             &["self", "query_pool", "first_query", "query_count"],
         ),
         settles: &[
@@ -189,7 +202,130 @@ pub(super) const ROWS: &[Special] = &[
         ..NONE
     },
     Special {
+        command: "vkCmdWriteTimestamp",
+        check: call(
+            "special::query::write_timestamp_checks",
+            &["self", "pipeline_stage", "query_pool", "query"],
+        ),
+        after: call(
+            "special::query::write_timestamp_done",
+            &["self", "query_pool", "query"],
+        ),
+        settles: &[
+            (
+                "VUID-vkCmdWriteTimestamp-pipelineStage-04074",
+                How::User(UNPROVEN_FAMILY),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp-queryPool-01416",
+                How::Dynamic(TIMESTAMP_POOL),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp-query-04904",
+                How::Dynamic(TIMESTAMP_POOL),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp-timestampValidBits-00829",
+                How::User(UNPROVEN_TIMESTAMP_BITS),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp-query-00831",
+                How::User(UNPROVEN_TIMESTAMP_VIEWS),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp-None-00830",
+                How::Dynamic(UNAVAILABLE),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp-queryPool-00828",
+                How::User(UNAVAILABLE_SAME),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkCmdWriteTimestamp2",
+        check: call(
+            "special::query::write_timestamp2_checks",
+            &["self", "stage", "query_pool", "query"],
+        ),
+        after: call(
+            "special::query::write_timestamp2_done",
+            &["self", "query_pool", "query"],
+        ),
+        settles: &[
+            (
+                "VUID-vkCmdWriteTimestamp2-stage-03859",
+                How::Dynamic(ONE_STAGE),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp2-stage-03860",
+                How::User(UNPROVEN_FAMILY),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp2-queryPool-03861",
+                How::Dynamic(TIMESTAMP_POOL),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp2-query-04903",
+                How::Dynamic(TIMESTAMP_POOL),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp2-timestampValidBits-03863",
+                How::User(UNPROVEN_TIMESTAMP_BITS),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp2-query-03865",
+                How::User(UNPROVEN_TIMESTAMP_VIEWS),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp2-None-03864",
+                How::Dynamic(UNAVAILABLE),
+            ),
+            (
+                "VUID-vkCmdWriteTimestamp2-queryPool-03862",
+                How::User(UNAVAILABLE_SAME),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
+        command: "vkResetQueryPool",
+        check: call(
+            "special::query::reset_query_pool_checks",
+            &["self", "query_pool", "first_query", "query_count"],
+        ),
+        hold: call(
+            "special::query::reset_query_pool_hold",
+            &["self", "query_pool", "first_query", "query_count"],
+        ),
+        after: call(
+            "special::query::reset_query_pool_done",
+            &["self", "query_pool", "first_query", "query_count"],
+        ),
+        settles: &[
+            (
+                "VUID-vkResetQueryPool-firstQuery-02666",
+                How::Dynamic(QUERY_RANGE),
+            ),
+            (
+                "VUID-vkResetQueryPool-firstQuery-02667",
+                How::Dynamic(QUERY_RANGE),
+            ),
+            (
+                "VUID-vkResetQueryPool-firstQuery-02741",
+                How::Dynamic(HOST_RESET_PENDING),
+            ),
+            (
+                "VUID-vkResetQueryPool-firstQuery-02742",
+                How::Static(HOST_RESET_THREADS),
+            ),
+        ],
+        ..NONE
+    },
+    Special {
         command: "vkGetQueryPoolResults",
+        hold: call("special::query::get_query_pool_results_hold", &["self"]),
         check: call(
             "special::query::get_query_pool_results_checks",
             &[
