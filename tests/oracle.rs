@@ -1349,7 +1349,7 @@ fn cmd_copy_image(
     let region = [o.image_copy];
     record(
         s,
-        |r| unsafe { r.copy_image(&src, a.src_image_layout, &dst, a.dst_image_layout, &region) },
+        |r| r.copy_image(&src, a.src_image_layout, &dst, a.dst_image_layout, &region),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe {
             r.copy_image_unchecked(&src, a.src_image_layout, &dst, a.dst_image_layout, &region)

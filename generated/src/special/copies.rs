@@ -608,6 +608,45 @@ pub(crate) struct Rules {
     pub depth_values: &'static str,
 }
 
+/// No rule: the base of a command that checks some of these (`..NO_RULES`).
+pub(crate) const NO_RULES: Rules = Rules {
+    one_d: "",
+    flat: "",
+    layers_3d: "",
+    mip: "",
+    x_range: "",
+    y_range: "",
+    z_range: "",
+    contained: "",
+    row_block: "",
+    height_block: "",
+    offset_block: ["", "", ""],
+    extent_block: ["", "", ""],
+    aspect: "",
+    two_planes: "",
+    three_planes: "",
+    row_pitch: "",
+    offset_size: "",
+    offset_depth: "",
+    samples: "",
+    features: ("", vk::FormatFeatureFlags::empty()),
+    transfer_offset: "",
+    granularity: "",
+    no_graphics_depth: "",
+    row_length: "",
+    image_height: "",
+    one_aspect: "",
+    protected: Protection {
+        protected_src: "",
+        protected_dst: "",
+        unprotected_dst: "",
+    },
+    overlap: "",
+    range: "",
+    to_image: false,
+    depth_values: "",
+};
+
 /// `vkCmdCopyBufferToImage`.
 pub(crate) const TO_IMAGE: Rules = Rules {
     one_d: "VUID-vkCmdCopyBufferToImage-srcImage-00199",

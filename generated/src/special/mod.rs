@@ -27,6 +27,7 @@ pub(crate) mod draw_descriptors;
 pub(crate) mod draw_state;
 pub(crate) mod framebuffer;
 pub(crate) mod image;
+pub(crate) mod image_copies;
 pub(crate) mod image_layouts;
 pub(crate) mod memory;
 pub(crate) mod pass_instance;

@@ -385,63 +385,13 @@ The caller upholds the rules that [`Self::copy_buffer_to_image2`] checks at run 
     }
     /**`vkCmdCopyImage2`
 
-# Safety
-
-The caller upholds these 45 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdCopyImage2-commandBuffer-01825`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdCopyImage2-commandBuffer-01826`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdCopyImage2-commandBuffer-01827`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-VkCopyImageInfo2-pRegions-00124`: The union of all source regions, and the union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory
-- `VUID-VkCopyImageInfo2-srcImage-00136`: The sample count of `srcImage` and `dstImage` must match
-- `VUID-VkCopyImageInfo2-srcOffset-01783`: The `srcOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
-- `VUID-VkCopyImageInfo2-dstOffset-01784`: The `dstOffset` and `extent` members of each element of `pRegions` must respect the image transfer granularity requirements of `commandBuffer`&#8217;s command pool&#8217;s queue family, as described in VkQueueFamilyProperties
-- `VUID-VkCopyImageInfo2-srcImage-00146`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-VkCopyImageInfo2-srcImage-01785`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-VkCopyImageInfo2-dstImage-01786`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.z` must be `0` and `extent.depth` must be `1`
-- `VUID-VkCopyImageInfo2-dstImage-00152`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffset.y` must be `0` and `extent.height` must be `1`
-- `VUID-VkCopyImageInfo2-pRegions-07278`: For each element of `pRegions`, `srcOffset.x` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
-- `VUID-VkCopyImageInfo2-pRegions-07279`: For each element of `pRegions`, `srcOffset.y` must be a multiple of the texel block extent height of the VkFormat of `srcImage`
-- `VUID-VkCopyImageInfo2-pRegions-07280`: For each element of `pRegions`, `srcOffset.z` must be a multiple of the texel block extent depth of the VkFormat of `srcImage`
-- `VUID-VkCopyImageInfo2-pRegions-07281`: For each element of `pRegions`, `dstOffset.x` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
-- `VUID-VkCopyImageInfo2-pRegions-07282`: For each element of `pRegions`, `dstOffset.y` must be a multiple of the texel block extent height of the VkFormat of `dstImage`
-- `VUID-VkCopyImageInfo2-pRegions-07283`: For each element of `pRegions`, `dstOffset.z` must be a multiple of the texel block extent depth of the VkFormat of `dstImage`
-- `VUID-VkCopyImageInfo2-srcImage-01728`: For each element of `pRegions`, if the sum of `srcOffset.x` and `extent.width` does not equal the width of the the subresource specified by `srcSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of `srcImage`
-- `VUID-VkCopyImageInfo2-srcImage-01729`: For each element of `pRegions`, if the sum of `srcOffset.y` and `extent.height` does not equal the height of the the subresource specified by `srcSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of `srcImage`
-- `VUID-VkCopyImageInfo2-srcImage-01730`: For each element of `pRegions`, if the sum of `srcOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `srcSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of `srcImage`
-- `VUID-VkCopyImageInfo2-dstImage-01732`: For each element of `pRegions`, if the sum of `dstOffset.x` and `extent.width` does not equal the width of the the subresource specified by `dstSubresource`, `extent.width` must be a multiple of the texel block extent width of the VkFormat of `dstImage`
-- `VUID-VkCopyImageInfo2-dstImage-01733`: For each element of `pRegions`, if the sum of `dstOffset.y` and `extent.height` does not equal the height of the the subresource specified by `dstSubresource`, `extent.height` must be a multiple of the texel block extent height of the VkFormat of `dstImage`
-- `VUID-VkCopyImageInfo2-dstImage-01734`: For each element of `pRegions`, if the sum of `dstOffset.z` and `extent.depth` does not equal the depth of the the subresource specified by `dstSubresource`, `extent.depth` must be a multiple of the texel block extent depth of the VkFormat of `dstImage`
-- `VUID-VkCopyImageInfo2-srcImage-01995`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_TRANSFER_SRC_BIT`
-- `VUID-VkCopyImageInfo2-dstImage-01996`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_TRANSFER_DST_BIT`
-- `VUID-VkCopyImageInfo2-srcImage-04443`: If `srcImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` must be `0` and `srcSubresource.layerCount` must be `1`
-- `VUID-VkCopyImageInfo2-dstImage-04444`: If `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `dstSubresource.baseArrayLayer` must be `0` and `dstSubresource.layerCount` must be `1`
-- `VUID-VkCopyImageInfo2-srcImage-07743`: If `srcImage` and `dstImage` have a different VkImageType, one must be `VK_IMAGE_TYPE_3D` and the other must be `VK_IMAGE_TYPE_2D`
-- `VUID-VkCopyImageInfo2-srcImage-07744`: If `srcImage` and `dstImage` have the same VkImageType, the `layerCount` member of `srcSubresource` and `dstSubresource` in each element of `pRegions` must match
-- `VUID-VkCopyImageInfo2-srcImage-01790`: If `srcImage` and `dstImage` are both of type `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `extent.depth` must be `1`
-- `VUID-VkCopyImageInfo2-srcImage-01546`: If `srcImage` is non-sparse then the image or disjoint plane to be copied must be bound completely and contiguously to a single `VkDeviceMemory` object
-- `VUID-VkCopyImageInfo2-dstImage-01547`: If `dstImage` is non-sparse then the image or disjoint plane that is the destination of the copy must be bound completely and contiguously to a single `VkDeviceMemory` object
-- `VUID-VkCopyImageInfo2-srcImage-01548`: If the VkFormat of each of `srcImage` and `dstImage` is not a multi-planar format, the VkFormat of each of `srcImage` and `dstImage` must be size-compatible
-- `VUID-VkCopyImageInfo2-None-01549`: In a copy to or from a plane of a multi-planar image, the VkFormat of the image and plane must be compatible according to the description of compatible planes for the plane being copied
-- `VUID-VkCopyImageInfo2-srcImage-01551`: If neither `srcImage` nor `dstImage` has a multi-planar image format then for each element of `pRegions`, `srcSubresource.aspectMask` and `dstSubresource.aspectMask` must match
-- `VUID-VkCopyImageInfo2-srcImage-01552`: If `srcImage` has a VkFormat with two planes then for each element of `pRegions`, `srcSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
-- `VUID-VkCopyImageInfo2-srcImage-01553`: If `srcImage` has a VkFormat with three planes then for each element of `pRegions`, `srcSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-VkCopyImageInfo2-dstImage-01554`: If `dstImage` has a VkFormat with two planes then for each element of `pRegions`, `dstSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`
-- `VUID-VkCopyImageInfo2-dstImage-01555`: If `dstImage` has a VkFormat with three planes then for each element of `pRegions`, `dstSubresource.aspectMask` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT`, or `VK_IMAGE_ASPECT_PLANE_2_BIT`
-- `VUID-VkCopyImageInfo2-srcImage-01556`: If `srcImage` has a multi-planar image format and the `dstImage` does not have a multi-planar image format, then for each element of `pRegions`, `dstSubresource.aspectMask` must be `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkCopyImageInfo2-dstImage-01557`: If `dstImage` has a multi-planar image format and the `srcImage` does not have a multi-planar image format, then for each element of `pRegions`, `srcSubresource.aspectMask` must be `VK_IMAGE_ASPECT_COLOR_BIT`
-- `VUID-VkCopyImageInfo2-aspect-06662`: If the `aspect` member of any element of `pRegions` includes any flag other than `VK_IMAGE_ASPECT_STENCIL_BIT` or `srcImage` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `srcImage`
-- `VUID-VkCopyImageInfo2-aspect-06663`: If the `aspect` member of any element of `pRegions` includes any flag other than `VK_IMAGE_ASPECT_STENCIL_BIT` or `dstImage` was not created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageCreateInfo::`usage` used to create `dstImage`
-- `VUID-VkCopyImageInfo2-aspect-06664`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `srcImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `srcImage`
-- `VUID-VkCopyImageInfo2-aspect-06665`: If the `aspect` member of any element of `pRegions` includes `VK_IMAGE_ASPECT_STENCIL_BIT`, and `dstImage` was created with separate stencil usage, `VK_IMAGE_USAGE_TRANSFER_DST_BIT` must have been included in the VkImageStencilUsageCreateInfo::`stencilUsage` used to create `dstImage`
-
 # Valid usage
 
 The rules of `vkCmdCopyImage2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdCopyImage2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdCopyImage2-commandBuffer-01825` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdCopyImage2-commandBuffer-01826` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdCopyImage2-commandBuffer-01827` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdCopyImage2-commandBuffer-01825` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdCopyImage2-commandBuffer-01826` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdCopyImage2-commandBuffer-01827` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
 - `VUID-vkCmdCopyImage2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support transfer, graphics, or compute operations
 - `VUID-vkCmdCopyImage2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdCopyImage2-pCopyImageInfo-parameter` (*by the types*): `pCopyImageInfo` must be a valid pointer to a valid VkCopyImageInfo2 structure
@@ -450,7 +400,7 @@ The rules of `vkCmdCopyImage2` that apply to this crate's API ([reference page](
 - `VUID-vkCmdCopyImage2-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdCopyImage2")]
     #[inline]
-    pub unsafe fn copy_image2<'a>(
+    pub fn copy_image2<'a>(
         &mut self,
         copy_image_info: &CopyImageInfo2<'a>,
     ) -> Result<()> {
@@ -463,6 +413,7 @@ The rules of `vkCmdCopyImage2` that apply to this crate's API ([reference page](
             let r = self.validate_copy_image2(copy_image_info);
             r?;
         }
+        crate::special::image_copies::cmd_copy_image2_checks(self, copy_image_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.copy_image2_unchecked(copy_image_info) }
@@ -471,7 +422,7 @@ The rules of `vkCmdCopyImage2` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, `VUID-VkCopyImageInfo2-srcImageLayout-00128`, `VUID-VkCopyImageInfo2-dstImageLayout-00133`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::copy_image2`] checks at run time: `VUID-vkCmdCopyImage2-commandBuffer-cmdpool`, `VUID-VkCopyImageInfo2-srcImageLayout-00128`, `VUID-VkCopyImageInfo2-dstImageLayout-00133`, `VUID-vkCmdCopyImage2-commandBuffer-01825`, `VUID-vkCmdCopyImage2-commandBuffer-01826`, `VUID-vkCmdCopyImage2-commandBuffer-01827`, `VUID-VkCopyImageInfo2-pRegions-00124`, `VUID-VkCopyImageInfo2-srcImage-00136`, `VUID-VkCopyImageInfo2-srcOffset-01783`, `VUID-VkCopyImageInfo2-dstOffset-01784`, `VUID-VkCopyImageInfo2-srcImage-00146`, `VUID-VkCopyImageInfo2-dstImage-00152`, `VUID-VkCopyImageInfo2-srcImage-01785`, `VUID-VkCopyImageInfo2-dstImage-01786`, `VUID-VkCopyImageInfo2-pRegions-07278`, `VUID-VkCopyImageInfo2-pRegions-07279`, `VUID-VkCopyImageInfo2-pRegions-07280`, `VUID-VkCopyImageInfo2-pRegions-07281`, `VUID-VkCopyImageInfo2-pRegions-07282`, `VUID-VkCopyImageInfo2-pRegions-07283`, `VUID-VkCopyImageInfo2-srcImage-01728`, `VUID-VkCopyImageInfo2-srcImage-01729`, `VUID-VkCopyImageInfo2-srcImage-01730`, `VUID-VkCopyImageInfo2-dstImage-01732`, `VUID-VkCopyImageInfo2-dstImage-01733`, `VUID-VkCopyImageInfo2-dstImage-01734`, `VUID-VkCopyImageInfo2-srcImage-01995`, `VUID-VkCopyImageInfo2-dstImage-01996`, `VUID-VkCopyImageInfo2-srcImage-04443`, `VUID-VkCopyImageInfo2-dstImage-04444`, `VUID-VkCopyImageInfo2-srcImage-07743`, `VUID-VkCopyImageInfo2-srcImage-07744`, `VUID-VkCopyImageInfo2-srcImage-01790`, `VUID-VkCopyImageInfo2-srcImage-01546`, `VUID-VkCopyImageInfo2-dstImage-01547`, `VUID-VkCopyImageInfo2-srcImage-01548`, `VUID-VkCopyImageInfo2-None-01549`, `VUID-VkCopyImageInfo2-srcImage-01551`, `VUID-VkCopyImageInfo2-srcImage-01552`, `VUID-VkCopyImageInfo2-srcImage-01553`, `VUID-VkCopyImageInfo2-dstImage-01554`, `VUID-VkCopyImageInfo2-dstImage-01555`, `VUID-VkCopyImageInfo2-srcImage-01556`, `VUID-VkCopyImageInfo2-dstImage-01557`, `VUID-VkCopyImageInfo2-aspect-06662`, `VUID-VkCopyImageInfo2-aspect-06663`, `VUID-VkCopyImageInfo2-aspect-06664`, `VUID-VkCopyImageInfo2-aspect-06665`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn copy_image2_unchecked<'a>(
         &mut self,

@@ -9,32 +9,12 @@ use super::{call, How, Special, LAYOUT, NONE};
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
     Special {
-        command: "vkCmdCopyImage",
-        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
-        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
-        settles: &[
-            ("VUID-vkCmdCopyImage-srcImageLayout-00128", How::Dynamic(LAYOUT)),
-            ("VUID-vkCmdCopyImage-dstImageLayout-00133", How::Dynamic(LAYOUT)),
-        ],
-        ..NONE
-    },
-    Special {
         command: "vkCmdBlitImage",
         check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::BlitImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
         after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::BlitImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)"]),
         settles: &[
             ("VUID-vkCmdBlitImage-srcImageLayout-00221", How::Dynamic(LAYOUT)),
             ("VUID-vkCmdBlitImage-dstImageLayout-00226", How::Dynamic(LAYOUT)),
-        ],
-        ..NONE
-    },
-    Special {
-        command: "vkCmdCopyImage2",
-        check: call("special::image_layouts::image_layout_checks", &["self", "crate::special::image_layouts::Names::CopyImage2(copy_image_info)"]),
-        after: call("special::image_layouts::image_layouts_named", &["self", "crate::special::image_layouts::Names::CopyImage2(copy_image_info)"]),
-        settles: &[
-            ("VUID-VkCopyImageInfo2-srcImageLayout-00128", How::Dynamic(LAYOUT)),
-            ("VUID-VkCopyImageInfo2-dstImageLayout-00133", How::Dynamic(LAYOUT)),
         ],
         ..NONE
     },

@@ -24,6 +24,7 @@ mod draw;
 mod draw_state;
 mod framebuffer;
 mod image;
+mod image_copies;
 mod image_layouts;
 mod memory;
 mod pass_instance;
@@ -260,6 +261,7 @@ pub const TABLES: &[(&str, &[Special])] = &[
     ("draw_state", draw_state::ROWS),
     ("framebuffer", framebuffer::ROWS),
     ("image", image::ROWS),
+    ("image_copies", image_copies::ROWS),
     ("image_layouts", image_layouts::ROWS),
     ("memory", memory::ROWS),
     ("pass_instance", pass_instance::ROWS),
