@@ -1374,7 +1374,7 @@ fn cmd_blit_image(
     let nearest = vk::Filter::NEAREST;
     record(
         s,
-        |r| unsafe {
+        |r| {
             r.blit_image(
                 &src,
                 a.src_image_layout,

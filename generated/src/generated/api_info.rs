@@ -408,7 +408,6 @@ pub const CHECKED_EXTENSIONS: &[&str] = &[
     "VK_KHR_8bit_storage",
     "VK_KHR_android_surface",
     "VK_KHR_bind_memory2",
-    "VK_KHR_copy_commands2",
     "VK_KHR_create_renderpass2",
     "VK_KHR_deferred_host_operations",
     "VK_KHR_device_group_creation",

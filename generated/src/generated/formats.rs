@@ -459,6 +459,57 @@ pub(crate) fn color_numeric(format: vk::Format) -> Option<u32> {
         },
     )
 }
+/// For a color format of integer texels, whether they are signed (`SINT`:
+/// `true`) or not (`UINT`: `false`); `None` for any other format.
+pub(crate) fn integer_signed(format: vk::Format) -> Option<bool> {
+    let signed: u32 = match format.as_raw() {
+        13 => 0,
+        14 => 1,
+        20 => 0,
+        21 => 1,
+        27 => 0,
+        28 => 1,
+        34 => 0,
+        35 => 1,
+        41 => 0,
+        42 => 1,
+        48 => 0,
+        49 => 1,
+        55 => 0,
+        56 => 1,
+        62 => 0,
+        63 => 1,
+        68 => 0,
+        69 => 1,
+        74 => 0,
+        75 => 1,
+        81 => 0,
+        82 => 1,
+        88 => 0,
+        89 => 1,
+        95 => 0,
+        96 => 1,
+        98 => 0,
+        99 => 1,
+        101 => 0,
+        102 => 1,
+        104 => 0,
+        105 => 1,
+        107 => 0,
+        108 => 1,
+        110 => 0,
+        111 => 1,
+        113 => 0,
+        114 => 1,
+        116 => 0,
+        117 => 1,
+        119 => 0,
+        120 => 1,
+        1000464000 => 1,
+        _ => return None,
+    };
+    Some(signed == 1)
+}
 /// How many components a color format has (vk.xml's `<component>`s); `None`
 /// for a depth/stencil format or one the registry does not describe.
 pub(crate) fn color_components(format: vk::Format) -> Option<u32> {

@@ -16,6 +16,7 @@
 #[cfg(feature = "khr_acceleration_structure")]
 pub(crate) mod acceleration;
 pub(crate) mod barriers;
+pub(crate) mod blits;
 pub(crate) mod buffer;
 pub(crate) mod command_buffers;
 pub(crate) mod copies;

@@ -148,6 +148,17 @@ pub(super) fn emit(model: &Model) -> TokenStream {
             _ => Some(1),
         }
     });
+    // Whether a color format's integer texels are signed (1, SINT) or not (0, UINT).
+    let sign_arms = value_arms(model, |f| {
+        if !f.color() {
+            return None;
+        }
+        match f.numeric.first()?.as_str() {
+            "SINT" => Some(1),
+            "UINT" => Some(0),
+            _ => None,
+        }
+    });
     // How many components a color format's texels have (what a texel written to
     // it with OpImageWrite must have at least).
     let component_arms = value_arms(model, |f| {
@@ -235,6 +246,16 @@ pub(super) fn emit(model: &Model) -> TokenStream {
                 #(#numeric_arms)*
                 _ => return None,
             })
+        }
+
+        /// For a color format of integer texels, whether they are signed (`SINT`:
+        /// `true`) or not (`UINT`: `false`); `None` for any other format.
+        pub(crate) fn integer_signed(format: vk::Format) -> Option<bool> {
+            let signed: u32 = match format.as_raw() {
+                #(#sign_arms)*
+                _ => return None,
+            };
+            Some(signed == 1)
         }
 
         /// How many components a color format has (vk.xml's `<component>`s); `None`

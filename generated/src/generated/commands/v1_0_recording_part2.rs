@@ -116,84 +116,55 @@ The caller upholds the rules that [`Self::begin_render_pass`] checks at run time
     }
     /**`vkCmdBlitImage`
 
-# Safety
-
-The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBlitImage-commandBuffer-01834`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdBlitImage-commandBuffer-01835`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdBlitImage-commandBuffer-01836`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-vkCmdBlitImage-pRegions-00215`: The source region specified by each element of `pRegions` must be a region that is contained within `srcImage`
-- `VUID-vkCmdBlitImage-pRegions-00216`: The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
-- `VUID-vkCmdBlitImage-pRegions-00217`: The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
-- `VUID-vkCmdBlitImage-srcImage-01999`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
-- `VUID-vkCmdBlitImage-dstImage-02000`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
-- `VUID-vkCmdBlitImage-srcImage-00229`: If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
-- `VUID-vkCmdBlitImage-srcImage-00230`: If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
-- `VUID-vkCmdBlitImage-srcImage-00231`: If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
-- `VUID-vkCmdBlitImage-srcImage-00232`: If `srcImage` was created with a depth/stencil format, `filter` must be `VK_FILTER_NEAREST`
-- `VUID-vkCmdBlitImage-srcImage-00233`: `srcImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdBlitImage-dstImage-00234`: `dstImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdBlitImage-filter-02001`: If `filter` is `VK_FILTER_LINEAR`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdBlitImage-srcImage-00240`: If either `srcImage` or `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` and `dstSubresource.baseArrayLayer` must each be `0`, and `srcSubresource.layerCount` and `dstSubresource.layerCount` must each be `1`
-- `VUID-vkCmdBlitImage-srcImage-00245`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffsets[0].y` must be `0` and `srcOffsets[1].y` must be `1`
-- `VUID-vkCmdBlitImage-srcImage-00247`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffsets[0].z` must be `0` and `srcOffsets[1].z` must be `1`
-- `VUID-vkCmdBlitImage-dstImage-00250`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffsets[0].y` must be `0` and `dstOffsets[1].y` must be `1`
-- `VUID-vkCmdBlitImage-dstImage-00252`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffsets[0].z` must be `0` and `dstOffsets[1].z` must be `1`
-- `VUID-vkCmdBlitImage-srcImage-06421`: `srcImage` must not use a format that requires a sampler {YCbCr} conversion
-- `VUID-vkCmdBlitImage-dstImage-06422`: `dstImage` must not use a format that requires a sampler {YCbCr} conversion
-- `VUID-VkImageBlit-aspectMask-00238`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must match
-- `VUID-VkImageBlit-layerCount-00239`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
-
 # Valid usage
 
 The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBlitImage-commandBuffer-01834` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdBlitImage-commandBuffer-01835` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdBlitImage-commandBuffer-01836` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-vkCmdBlitImage-pRegions-00215` (*yours*; explicit rule): The source region specified by each element of `pRegions` must be a region that is contained within `srcImage`
-- `VUID-vkCmdBlitImage-pRegions-00216` (*yours*; explicit rule): The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
-- `VUID-vkCmdBlitImage-pRegions-00217` (*yours*; explicit rule): The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
-- `VUID-vkCmdBlitImage-srcImage-01999` (*yours*; explicit rule): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
-- `VUID-vkCmdBlitImage-dstImage-02000` (*yours*; explicit rule): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
-- `VUID-vkCmdBlitImage-srcImage-00229` (*yours*; explicit rule): If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
-- `VUID-vkCmdBlitImage-srcImage-00230` (*yours*; explicit rule): If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
-- `VUID-vkCmdBlitImage-srcImage-00231` (*yours*; explicit rule): If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
-- `VUID-vkCmdBlitImage-srcImage-00232` (*yours*; explicit rule): If `srcImage` was created with a depth/stencil format, `filter` must be `VK_FILTER_NEAREST`
-- `VUID-vkCmdBlitImage-srcImage-00233` (*yours*; explicit rule): `srcImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdBlitImage-dstImage-00234` (*yours*; explicit rule): `dstImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-vkCmdBlitImage-filter-02001` (*yours*; explicit rule): If `filter` is `VK_FILTER_LINEAR`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-vkCmdBlitImage-srcImage-00240` (*yours*; explicit rule): If either `srcImage` or `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` and `dstSubresource.baseArrayLayer` must each be `0`, and …
-- `VUID-vkCmdBlitImage-srcImage-00245` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffsets[0].y` must be `0` and `srcOffsets[1].y` must be `1`
-- `VUID-vkCmdBlitImage-srcImage-00247` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffsets[0].z` must be `0` and `srcOffsets[1].z` must be `1`
-- `VUID-vkCmdBlitImage-dstImage-00250` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffsets[0].y` must be `0` and `dstOffsets[1].y` must be `1`
-- `VUID-vkCmdBlitImage-dstImage-00252` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffsets[0].z` must be `0` and `dstOffsets[1].z` must be `1`
-- `VUID-vkCmdBlitImage-srcImage-06421` (*yours*; explicit rule): `srcImage` must not use a format that requires a sampler {YCbCr} conversion
-- `VUID-vkCmdBlitImage-dstImage-06422` (*yours*; explicit rule): `dstImage` must not use a format that requires a sampler {YCbCr} conversion
+- `VUID-vkCmdBlitImage-commandBuffer-01834` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdBlitImage-commandBuffer-01835` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdBlitImage-commandBuffer-01836` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdBlitImage-pRegions-00215` (*yours*; checked by the safe methods in every build): The source region specified by each element of `pRegions` must be a region that is contained within `srcImage`
+- `VUID-vkCmdBlitImage-pRegions-00216` (*yours*; checked by the safe methods in every build): The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
+- `VUID-vkCmdBlitImage-srcImage-01999` (*yours*; checked by the safe methods in every build): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
+- `VUID-vkCmdBlitImage-dstImage-02000` (*yours*; checked by the safe methods in every build): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
+- `VUID-vkCmdBlitImage-srcImage-06421` (*yours*; checked by the safe methods in every build): `srcImage` must not use a format that requires a sampler {YCbCr} conversion
+- `VUID-vkCmdBlitImage-dstImage-06422` (*yours*; checked by the safe methods in every build): `dstImage` must not use a format that requires a sampler {YCbCr} conversion
 - `VUID-vkCmdBlitImage-srcImageLayout-01398` (*yours*; explicit rule): `srcImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-vkCmdBlitImage-dstImageLayout-01399` (*yours*; explicit rule): `dstImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-vkCmdBlitImage-filter-02002` (*yours*; explicit rule): If `filter` is `VK_FILTER_CUBIC_EXT`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_CUBIC_BIT_EXT`
 - `VUID-vkCmdBlitImage-filter-00237` (*yours*; explicit rule): If `filter` is `VK_FILTER_CUBIC_EXT`, `srcImage` must be of type `VK_IMAGE_TYPE_2D`
 - `VUID-vkCmdBlitImage-dstImage-02545` (*yours*; explicit rule): `dstImage` and `srcImage` must not have been created with `flags` containing `VK_IMAGE_CREATE_SUBSAMPLED_BIT_EXT`
+- `VUID-vkCmdBlitImage-pRegions-00217` (*checked*): The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
 - `VUID-vkCmdBlitImage-srcImage-00219` (*checked*): `srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag
 - `VUID-vkCmdBlitImage-srcImage-00220` (*checked*): If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-vkCmdBlitImage-srcImageLayout-00221` (*checked*): `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-vkCmdBlitImage-dstImage-00224` (*checked*): `dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
 - `VUID-vkCmdBlitImage-dstImage-00225` (*checked*): If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-vkCmdBlitImage-dstImageLayout-00226` (*checked*): `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-vkCmdBlitImage-srcImage-00229` (*checked*): If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
+- `VUID-vkCmdBlitImage-srcImage-00230` (*checked*): If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
+- `VUID-vkCmdBlitImage-srcImage-00231` (*checked*): If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
+- `VUID-vkCmdBlitImage-srcImage-00232` (*checked*): If `srcImage` was created with a depth/stencil format, `filter` must be `VK_FILTER_NEAREST`
+- `VUID-vkCmdBlitImage-srcImage-00233` (*checked*): `srcImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-vkCmdBlitImage-dstImage-00234` (*checked*): `dstImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-vkCmdBlitImage-filter-02001` (*checked*): If `filter` is `VK_FILTER_LINEAR`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-vkCmdBlitImage-srcSubresource-01705` (*checked*): The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created
 - `VUID-vkCmdBlitImage-dstSubresource-01706` (*checked*): The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created
 - `VUID-vkCmdBlitImage-srcSubresource-01707` (*checked*): The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was …
 - `VUID-vkCmdBlitImage-dstSubresource-01708` (*checked*): The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was …
+- `VUID-vkCmdBlitImage-srcImage-00240` (*checked*): If either `srcImage` or `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` and `dstSubresource.baseArrayLayer` must each be `0`, and …
 - `VUID-vkCmdBlitImage-aspectMask-00241` (*checked*): For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage`
 - `VUID-vkCmdBlitImage-aspectMask-00242` (*checked*): For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage`
 - `VUID-vkCmdBlitImage-srcOffset-00243` (*checked*): For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage`
 - `VUID-vkCmdBlitImage-srcOffset-00244` (*checked*): For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage`
+- `VUID-vkCmdBlitImage-srcImage-00245` (*checked*): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffsets[0].y` must be `0` and `srcOffsets[1].y` must be `1`
 - `VUID-vkCmdBlitImage-srcOffset-00246` (*checked*): For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage`
+- `VUID-vkCmdBlitImage-srcImage-00247` (*checked*): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffsets[0].z` must be `0` and `srcOffsets[1].z` must be `1`
 - `VUID-vkCmdBlitImage-dstOffset-00248` (*checked*): For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage`
 - `VUID-vkCmdBlitImage-dstOffset-00249` (*checked*): For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage`
+- `VUID-vkCmdBlitImage-dstImage-00250` (*checked*): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffsets[0].y` must be `0` and `dstOffsets[1].y` must be `1`
 - `VUID-vkCmdBlitImage-dstOffset-00251` (*checked*): For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage`
+- `VUID-vkCmdBlitImage-dstImage-00252` (*checked*): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffsets[0].z` must be `0` and `dstOffsets[1].z` must be `1`
 - `VUID-vkCmdBlitImage-srcImageLayout-parameter` (*checked*): `srcImageLayout` must be a valid VkImageLayout value
 - `VUID-vkCmdBlitImage-dstImageLayout-parameter` (*checked*): `dstImageLayout` must be a valid VkImageLayout value
 - `VUID-vkCmdBlitImage-filter-parameter` (*checked*): `filter` must be a valid VkFilter value
@@ -211,7 +182,7 @@ The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](h
 - `VUID-vkCmdBlitImage-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBlitImage")]
     #[inline]
-    pub unsafe fn blit_image(
+    pub fn blit_image(
         &mut self,
         src_image: &Image,
         src_image_layout: vk::ImageLayout,
@@ -243,6 +214,12 @@ The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](h
                 );
             r?;
         }
+        crate::special::blits::cmd_blit_image_checks(
+            self,
+            (src_image.raw(), dst_image.raw()),
+            regions,
+            filter,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -260,7 +237,7 @@ The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](h
 
 # Safety
 
-The caller upholds the rules that [`Self::blit_image`] checks at run time: `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, `VUID-vkCmdBlitImage-srcImageLayout-00221`, `VUID-vkCmdBlitImage-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::blit_image`] checks at run time: `VUID-vkCmdBlitImage-commonparent`, `VUID-vkCmdBlitImage-srcImageLayout-parameter`, `VUID-vkCmdBlitImage-dstImageLayout-parameter`, `VUID-vkCmdBlitImage-filter-parameter`, `VUID-vkCmdBlitImage-commandBuffer-cmdpool`, `VUID-vkCmdBlitImage-regionCount-arraylength`, `VUID-vkCmdBlitImage-srcImage-00219`, `VUID-vkCmdBlitImage-srcImage-00220`, `VUID-vkCmdBlitImage-dstImage-00224`, `VUID-vkCmdBlitImage-dstImage-00225`, `VUID-vkCmdBlitImage-srcSubresource-01705`, `VUID-vkCmdBlitImage-dstSubresource-01706`, `VUID-vkCmdBlitImage-srcSubresource-01707`, `VUID-vkCmdBlitImage-dstSubresource-01708`, `VUID-vkCmdBlitImage-aspectMask-00241`, `VUID-vkCmdBlitImage-aspectMask-00242`, `VUID-vkCmdBlitImage-srcOffset-00243`, `VUID-vkCmdBlitImage-srcOffset-00244`, `VUID-vkCmdBlitImage-srcOffset-00246`, `VUID-vkCmdBlitImage-dstOffset-00248`, `VUID-vkCmdBlitImage-dstOffset-00249`, `VUID-vkCmdBlitImage-dstOffset-00251`, `VUID-vkCmdBlitImage-srcImageLayout-00222`, `VUID-vkCmdBlitImage-dstImageLayout-00227`, `VUID-vkCmdBlitImage-srcImageLayout-00221`, `VUID-vkCmdBlitImage-dstImageLayout-00226`, `VUID-vkCmdBlitImage-commandBuffer-01834`, `VUID-vkCmdBlitImage-commandBuffer-01835`, `VUID-vkCmdBlitImage-commandBuffer-01836`, `VUID-vkCmdBlitImage-pRegions-00215`, `VUID-vkCmdBlitImage-pRegions-00216`, `VUID-vkCmdBlitImage-pRegions-00217`, `VUID-vkCmdBlitImage-srcImage-01999`, `VUID-vkCmdBlitImage-dstImage-02000`, `VUID-vkCmdBlitImage-srcImage-00229`, `VUID-vkCmdBlitImage-srcImage-00230`, `VUID-vkCmdBlitImage-srcImage-00231`, `VUID-vkCmdBlitImage-srcImage-00232`, `VUID-vkCmdBlitImage-srcImage-00233`, `VUID-vkCmdBlitImage-dstImage-00234`, `VUID-vkCmdBlitImage-filter-02001`, `VUID-vkCmdBlitImage-srcImage-00240`, `VUID-vkCmdBlitImage-srcImage-00245`, `VUID-vkCmdBlitImage-srcImage-00247`, `VUID-vkCmdBlitImage-dstImage-00250`, `VUID-vkCmdBlitImage-dstImage-00252`, `VUID-vkCmdBlitImage-srcImage-06421`, `VUID-vkCmdBlitImage-dstImage-06422`, `VUID-VkImageBlit-aspectMask-00238`, `VUID-VkImageBlit-layerCount-00239`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn blit_image_unchecked(
         &mut self,

@@ -128,42 +128,13 @@ The caller upholds the rules that [`Self::begin_rendering`] checks at run time: 
     }
     /**`vkCmdBlitImage2`
 
-# Safety
-
-The caller upholds these 24 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBlitImage2-commandBuffer-01834`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdBlitImage2-commandBuffer-01835`: If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdBlitImage2-commandBuffer-01836`: If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
-- `VUID-VkBlitImageInfo2-pRegions-00215`: The source region specified by each element of `pRegions` must be a region that is contained within `srcImage`
-- `VUID-VkBlitImageInfo2-pRegions-00216`: The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
-- `VUID-VkBlitImageInfo2-pRegions-00217`: The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
-- `VUID-VkBlitImageInfo2-srcImage-01999`: The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
-- `VUID-VkBlitImageInfo2-dstImage-02000`: The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
-- `VUID-VkBlitImageInfo2-srcImage-00229`: If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
-- `VUID-VkBlitImageInfo2-srcImage-00230`: If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
-- `VUID-VkBlitImageInfo2-srcImage-00231`: If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
-- `VUID-VkBlitImageInfo2-srcImage-00232`: If `srcImage` was created with a depth/stencil format, `filter` must be `VK_FILTER_NEAREST`
-- `VUID-VkBlitImageInfo2-srcImage-00233`: `srcImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkBlitImageInfo2-dstImage-00234`: `dstImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkBlitImageInfo2-filter-02001`: If `filter` is `VK_FILTER_LINEAR`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-VkBlitImageInfo2-srcImage-00240`: If either `srcImage` or `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` and `dstSubresource.baseArrayLayer` must each be `0`, and `srcSubresource.layerCount` and `dstSubresource.layerCount` must each be `1`
-- `VUID-VkBlitImageInfo2-srcImage-00245`: If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffsets[0].y` must be `0` and `srcOffsets[1].y` must be `1`
-- `VUID-VkBlitImageInfo2-srcImage-00247`: If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffsets[0].z` must be `0` and `srcOffsets[1].z` must be `1`
-- `VUID-VkBlitImageInfo2-dstImage-00250`: If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffsets[0].y` must be `0` and `dstOffsets[1].y` must be `1`
-- `VUID-VkBlitImageInfo2-dstImage-00252`: If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffsets[0].z` must be `0` and `dstOffsets[1].z` must be `1`
-- `VUID-VkBlitImageInfo2-srcImage-06421`: `srcImage` must not use a format that requires a sampler {YCbCr} conversion
-- `VUID-VkBlitImageInfo2-dstImage-06422`: `dstImage` must not use a format that requires a sampler {YCbCr} conversion
-- `VUID-VkImageBlit2-aspectMask-00238`: The `aspectMask` member of `srcSubresource` and `dstSubresource` must match
-- `VUID-VkImageBlit2-layerCount-00239`: The `layerCount` member of `srcSubresource` and `dstSubresource` must match
-
 # Valid usage
 
 The rules of `vkCmdBlitImage2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBlitImage2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBlitImage2-commandBuffer-01834` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
-- `VUID-vkCmdBlitImage2-commandBuffer-01835` (*yours*; explicit rule): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
-- `VUID-vkCmdBlitImage2-commandBuffer-01836` (*yours*; explicit rule): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
+- `VUID-vkCmdBlitImage2-commandBuffer-01834` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `srcImage` must not be a protected image
+- `VUID-vkCmdBlitImage2-commandBuffer-01835` (*yours*; checked by the safe methods in every build): If `commandBuffer` is an unprotected command buffer and `protectedNoFault` is not supported, `dstImage` must not be a protected image
+- `VUID-vkCmdBlitImage2-commandBuffer-01836` (*yours*; checked by the safe methods in every build): If `commandBuffer` is a protected command buffer and `protectedNoFault` is not supported, `dstImage` must not be an unprotected image
 - `VUID-vkCmdBlitImage2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdBlitImage2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdBlitImage2-pBlitImageInfo-parameter` (*by the types*): `pBlitImageInfo` must be a valid pointer to a valid VkBlitImageInfo2 structure
@@ -172,7 +143,7 @@ The rules of `vkCmdBlitImage2` that apply to this crate's API ([reference page](
 - `VUID-vkCmdBlitImage2-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBlitImage2")]
     #[inline]
-    pub unsafe fn blit_image2<'a>(
+    pub fn blit_image2<'a>(
         &mut self,
         blit_image_info: &BlitImageInfo2<'a>,
     ) -> Result<()> {
@@ -185,6 +156,7 @@ The rules of `vkCmdBlitImage2` that apply to this crate's API ([reference page](
             let r = self.validate_blit_image2(blit_image_info);
             r?;
         }
+        crate::special::blits::cmd_blit_image2_checks(self, blit_image_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.blit_image2_unchecked(blit_image_info) }
@@ -193,7 +165,7 @@ The rules of `vkCmdBlitImage2` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, `VUID-VkBlitImageInfo2-srcImageLayout-00221`, `VUID-VkBlitImageInfo2-dstImageLayout-00226`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::blit_image2`] checks at run time: `VUID-vkCmdBlitImage2-commandBuffer-cmdpool`, `VUID-VkBlitImageInfo2-srcImageLayout-00221`, `VUID-VkBlitImageInfo2-dstImageLayout-00226`, `VUID-vkCmdBlitImage2-commandBuffer-01834`, `VUID-vkCmdBlitImage2-commandBuffer-01835`, `VUID-vkCmdBlitImage2-commandBuffer-01836`, `VUID-VkBlitImageInfo2-pRegions-00215`, `VUID-VkBlitImageInfo2-pRegions-00216`, `VUID-VkBlitImageInfo2-pRegions-00217`, `VUID-VkBlitImageInfo2-srcImage-01999`, `VUID-VkBlitImageInfo2-dstImage-02000`, `VUID-VkBlitImageInfo2-srcImage-00229`, `VUID-VkBlitImageInfo2-srcImage-00230`, `VUID-VkBlitImageInfo2-srcImage-00231`, `VUID-VkBlitImageInfo2-srcImage-00232`, `VUID-VkBlitImageInfo2-srcImage-00233`, `VUID-VkBlitImageInfo2-dstImage-00234`, `VUID-VkBlitImageInfo2-filter-02001`, `VUID-VkBlitImageInfo2-srcImage-00240`, `VUID-VkBlitImageInfo2-srcImage-00245`, `VUID-VkBlitImageInfo2-srcImage-00247`, `VUID-VkBlitImageInfo2-dstImage-00250`, `VUID-VkBlitImageInfo2-dstImage-00252`, `VUID-VkBlitImageInfo2-srcImage-06421`, `VUID-VkBlitImageInfo2-dstImage-06422`, `VUID-VkImageBlit2-aspectMask-00238`, `VUID-VkImageBlit2-layerCount-00239`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn blit_image2_unchecked<'a>(
         &mut self,

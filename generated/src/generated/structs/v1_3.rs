@@ -8,25 +8,12 @@ use super::*;
 
 The rules of `VkBlitImageInfo2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBlitImageInfo2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBlitImageInfo2-pRegions-00215` (*yours*; explicit rule): The source region specified by each element of `pRegions` must be a region that is contained within `srcImage`
-- `VUID-VkBlitImageInfo2-pRegions-00216` (*yours*; explicit rule): The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
-- `VUID-VkBlitImageInfo2-pRegions-00217` (*yours*; explicit rule): The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
-- `VUID-VkBlitImageInfo2-srcImage-01999` (*yours*; explicit rule): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
-- `VUID-VkBlitImageInfo2-dstImage-02000` (*yours*; explicit rule): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
-- `VUID-VkBlitImageInfo2-srcImage-00229` (*yours*; explicit rule): If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
-- `VUID-VkBlitImageInfo2-srcImage-00230` (*yours*; explicit rule): If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
-- `VUID-VkBlitImageInfo2-srcImage-00231` (*yours*; explicit rule): If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
-- `VUID-VkBlitImageInfo2-srcImage-00232` (*yours*; explicit rule): If `srcImage` was created with a depth/stencil format, `filter` must be `VK_FILTER_NEAREST`
-- `VUID-VkBlitImageInfo2-srcImage-00233` (*yours*; explicit rule): `srcImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkBlitImageInfo2-dstImage-00234` (*yours*; explicit rule): `dstImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkBlitImageInfo2-filter-02001` (*yours*; explicit rule): If `filter` is `VK_FILTER_LINEAR`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
-- `VUID-VkBlitImageInfo2-srcImage-00240` (*yours*; explicit rule): If either `srcImage` or `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` and `dstSubresource.baseArrayLayer` must each be `0`, and …
-- `VUID-VkBlitImageInfo2-srcImage-00245` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffsets[0].y` must be `0` and `srcOffsets[1].y` must be `1`
-- `VUID-VkBlitImageInfo2-srcImage-00247` (*yours*; explicit rule): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffsets[0].z` must be `0` and `srcOffsets[1].z` must be `1`
-- `VUID-VkBlitImageInfo2-dstImage-00250` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffsets[0].y` must be `0` and `dstOffsets[1].y` must be `1`
-- `VUID-VkBlitImageInfo2-dstImage-00252` (*yours*; explicit rule): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffsets[0].z` must be `0` and `dstOffsets[1].z` must be `1`
-- `VUID-VkBlitImageInfo2-srcImage-06421` (*yours*; explicit rule): `srcImage` must not use a format that requires a sampler {YCbCr} conversion
-- `VUID-VkBlitImageInfo2-dstImage-06422` (*yours*; explicit rule): `dstImage` must not use a format that requires a sampler {YCbCr} conversion
+- `VUID-VkBlitImageInfo2-pRegions-00215` (*yours*; checked by the safe methods in every build): The source region specified by each element of `pRegions` must be a region that is contained within `srcImage`
+- `VUID-VkBlitImageInfo2-pRegions-00216` (*yours*; checked by the safe methods in every build): The destination region specified by each element of `pRegions` must be a region that is contained within `dstImage`
+- `VUID-VkBlitImageInfo2-srcImage-01999` (*yours*; checked by the safe methods in every build): The format features of `srcImage` must contain `VK_FORMAT_FEATURE_BLIT_SRC_BIT`
+- `VUID-VkBlitImageInfo2-dstImage-02000` (*yours*; checked by the safe methods in every build): The format features of `dstImage` must contain `VK_FORMAT_FEATURE_BLIT_DST_BIT`
+- `VUID-VkBlitImageInfo2-srcImage-06421` (*yours*; checked by the safe methods in every build): `srcImage` must not use a format that requires a sampler {YCbCr} conversion
+- `VUID-VkBlitImageInfo2-dstImage-06422` (*yours*; checked by the safe methods in every build): `dstImage` must not use a format that requires a sampler {YCbCr} conversion
 - `VUID-VkBlitImageInfo2-srcImageLayout-01398` (*yours*; explicit rule): `srcImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkBlitImageInfo2-dstImageLayout-01399` (*yours*; explicit rule): `dstImageLayout` must be `VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL` or `VK_IMAGE_LAYOUT_GENERAL`
 - `VUID-VkBlitImageInfo2-filter-02002` (*yours*; explicit rule): If `filter` is `VK_FILTER_CUBIC_EXT`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_CUBIC_BIT_EXT`
@@ -35,24 +22,37 @@ The rules of `VkBlitImageInfo2` that apply to this crate's API ([reference page]
 - `VUID-VkBlitImageInfo2-pRegions-04561` (*yours*; explicit rule): If any element of `pRegions` contains VkCopyCommandTransformInfoQCOM in its `pNext` chain, then `srcImage` and `dstImage` must not be block-compressed images
 - `VUID-VkBlitImageInfo2KHR-pRegions-06207` (*yours*; explicit rule): If any element of `pRegions` contains VkCopyCommandTransformInfoQCOM in its `pNext` chain, then `srcImage` must be of type `VK_IMAGE_TYPE_2D`
 - `VUID-VkBlitImageInfo2KHR-pRegions-06208` (*yours*; explicit rule): If any element of `pRegions` contains VkCopyCommandTransformInfoQCOM in its `pNext` chain, then `srcImage` must not have a multi-planar format
+- `VUID-VkBlitImageInfo2-pRegions-00217` (*checked*): The union of all destination regions, specified by the elements of `pRegions`, must not overlap in memory with any texel that may be sampled during the blit operation
 - `VUID-VkBlitImageInfo2-srcImage-00219` (*checked*): `srcImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_SRC_BIT` usage flag
 - `VUID-VkBlitImageInfo2-srcImage-00220` (*checked*): If `srcImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkBlitImageInfo2-srcImageLayout-00221` (*checked*): `srcImageLayout` must specify the layout of the image subresources of `srcImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
 - `VUID-VkBlitImageInfo2-dstImage-00224` (*checked*): `dstImage` must have been created with `VK_IMAGE_USAGE_TRANSFER_DST_BIT` usage flag
 - `VUID-VkBlitImageInfo2-dstImage-00225` (*checked*): If `dstImage` is non-sparse then it must be bound completely and contiguously to a single `VkDeviceMemory` object
 - `VUID-VkBlitImageInfo2-dstImageLayout-00226` (*checked*): `dstImageLayout` must specify the layout of the image subresources of `dstImage` specified in `pRegions` at the time this command is executed on a `VkDevice`
+- `VUID-VkBlitImageInfo2-srcImage-00229` (*checked*): If either of `srcImage` or `dstImage` was created with a signed integer VkFormat, the other must also have been created with a signed integer VkFormat
+- `VUID-VkBlitImageInfo2-srcImage-00230` (*checked*): If either of `srcImage` or `dstImage` was created with an unsigned integer VkFormat, the other must also have been created with an unsigned integer VkFormat
+- `VUID-VkBlitImageInfo2-srcImage-00231` (*checked*): If either of `srcImage` or `dstImage` was created with a depth/stencil format, the other must have exactly the same format
+- `VUID-VkBlitImageInfo2-srcImage-00232` (*checked*): If `srcImage` was created with a depth/stencil format, `filter` must be `VK_FILTER_NEAREST`
+- `VUID-VkBlitImageInfo2-srcImage-00233` (*checked*): `srcImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkBlitImageInfo2-dstImage-00234` (*checked*): `dstImage` must have been created with a `samples` value of `VK_SAMPLE_COUNT_1_BIT`
+- `VUID-VkBlitImageInfo2-filter-02001` (*checked*): If `filter` is `VK_FILTER_LINEAR`, then the format features of `srcImage` must contain `VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT`
 - `VUID-VkBlitImageInfo2-srcSubresource-01705` (*checked*): The `srcSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `srcImage` was created
 - `VUID-VkBlitImageInfo2-dstSubresource-01706` (*checked*): The `dstSubresource.mipLevel` member of each element of `pRegions` must be less than the `mipLevels` specified in VkImageCreateInfo when `dstImage` was created
 - `VUID-VkBlitImageInfo2-srcSubresource-01707` (*checked*): The `srcSubresource.baseArrayLayer` + `srcSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `srcImage` was …
 - `VUID-VkBlitImageInfo2-dstSubresource-01708` (*checked*): The `dstSubresource.baseArrayLayer` + `dstSubresource.layerCount` of each element of `pRegions` must be less than or equal to the `arrayLayers` specified in VkImageCreateInfo when `dstImage` was …
+- `VUID-VkBlitImageInfo2-srcImage-00240` (*checked*): If either `srcImage` or `dstImage` is of type `VK_IMAGE_TYPE_3D`, then for each element of `pRegions`, `srcSubresource.baseArrayLayer` and `dstSubresource.baseArrayLayer` must each be `0`, and …
 - `VUID-VkBlitImageInfo2-aspectMask-00241` (*checked*): For each element of `pRegions`, `srcSubresource.aspectMask` must specify aspects present in `srcImage`
 - `VUID-VkBlitImageInfo2-aspectMask-00242` (*checked*): For each element of `pRegions`, `dstSubresource.aspectMask` must specify aspects present in `dstImage`
 - `VUID-VkBlitImageInfo2-srcOffset-00243` (*checked*): For each element of `pRegions`, `srcOffsets[0].x` and `srcOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `srcSubresource` of `srcImage`
 - `VUID-VkBlitImageInfo2-srcOffset-00244` (*checked*): For each element of `pRegions`, `srcOffsets[0].y` and `srcOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `srcSubresource` of `srcImage`
+- `VUID-VkBlitImageInfo2-srcImage-00245` (*checked*): If `srcImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `srcOffsets[0].y` must be `0` and `srcOffsets[1].y` must be `1`
 - `VUID-VkBlitImageInfo2-srcOffset-00246` (*checked*): For each element of `pRegions`, `srcOffsets[0].z` and `srcOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `srcSubresource` of `srcImage`
+- `VUID-VkBlitImageInfo2-srcImage-00247` (*checked*): If `srcImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `srcOffsets[0].z` must be `0` and `srcOffsets[1].z` must be `1`
 - `VUID-VkBlitImageInfo2-dstOffset-00248` (*checked*): For each element of `pRegions`, `dstOffsets[0].x` and `dstOffsets[1].x` must both be greater than or equal to `0` and less than or equal to the width of the specified `dstSubresource` of `dstImage`
 - `VUID-VkBlitImageInfo2-dstOffset-00249` (*checked*): For each element of `pRegions`, `dstOffsets[0].y` and `dstOffsets[1].y` must both be greater than or equal to `0` and less than or equal to the height of the specified `dstSubresource` of `dstImage`
+- `VUID-VkBlitImageInfo2-dstImage-00250` (*checked*): If `dstImage` is of type `VK_IMAGE_TYPE_1D`, then for each element of `pRegions`, `dstOffsets[0].y` must be `0` and `dstOffsets[1].y` must be `1`
 - `VUID-VkBlitImageInfo2-dstOffset-00251` (*checked*): For each element of `pRegions`, `dstOffsets[0].z` and `dstOffsets[1].z` must both be greater than or equal to `0` and less than or equal to the depth of the specified `dstSubresource` of `dstImage`
+- `VUID-VkBlitImageInfo2-dstImage-00252` (*checked*): If `dstImage` is of type `VK_IMAGE_TYPE_1D` or `VK_IMAGE_TYPE_2D`, then for each element of `pRegions`, `dstOffsets[0].z` must be `0` and `dstOffsets[1].z` must be `1`
 - `VUID-VkBlitImageInfo2-srcImage-parameter` (*checked*): `srcImage` must be a valid VkImage handle
 - `VUID-VkBlitImageInfo2-srcImageLayout-parameter` (*checked*): `srcImageLayout` must be a valid VkImageLayout value
 - `VUID-VkBlitImageInfo2-dstImage-parameter` (*checked*): `dstImage` must be a valid VkImage handle
@@ -1164,8 +1164,8 @@ unsafe impl<'a> Extends<FormatProperties2<'a>> for FormatProperties3<'a> {}
 
 The rules of `VkImageBlit2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkImageBlit2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkImageBlit2-aspectMask-00238` (*yours*; explicit rule): The `aspectMask` member of `srcSubresource` and `dstSubresource` must match
-- `VUID-VkImageBlit2-layerCount-00239` (*yours*; explicit rule): The `layerCount` member of `srcSubresource` and `dstSubresource` must match
+- `VUID-VkImageBlit2-aspectMask-00238` (*checked*): The `aspectMask` member of `srcSubresource` and `dstSubresource` must match
+- `VUID-VkImageBlit2-layerCount-00239` (*checked*): The `layerCount` member of `srcSubresource` and `dstSubresource` must match
 - `VUID-VkImageBlit2-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkImageBlit2-srcSubresource-parameter` (*checked*): `srcSubresource` must be a valid VkImageSubresourceLayers structure
 - `VUID-VkImageBlit2-dstSubresource-parameter` (*checked*): `dstSubresource` must be a valid VkImageSubresourceLayers structure

@@ -14,6 +14,7 @@
 
 mod acceleration;
 mod barriers;
+mod blits;
 mod buffer;
 mod command_buffers;
 mod copies;
@@ -25,7 +26,6 @@ mod draw_state;
 mod framebuffer;
 mod image;
 mod image_copies;
-mod image_layouts;
 mod memory;
 mod pass_instance;
 mod pipeline;
@@ -251,6 +251,7 @@ pub(super) const BUFFER_USE: &str = "checks the buffer's usage, kept from its cr
 pub const TABLES: &[(&str, &[Special])] = &[
     ("acceleration", acceleration::ROWS),
     ("barriers", barriers::ROWS),
+    ("blits", blits::ROWS),
     ("buffer", buffer::ROWS),
     ("command_buffers", command_buffers::ROWS),
     ("copies", copies::ROWS),
@@ -262,7 +263,6 @@ pub const TABLES: &[(&str, &[Special])] = &[
     ("framebuffer", framebuffer::ROWS),
     ("image", image::ROWS),
     ("image_copies", image_copies::ROWS),
-    ("image_layouts", image_layouts::ROWS),
     ("memory", memory::ROWS),
     ("pass_instance", pass_instance::ROWS),
     ("pipeline", pipeline::ROWS),
