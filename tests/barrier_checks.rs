@@ -1031,9 +1031,9 @@ fn event_commands_check_their_barriers_as_pipeline_barriers_do() {
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    // SAFETY (both): the event is set and waited on in this recording only, which
-    // is never submitted; the calls are refused.
-    assert_eq!(vuid(unsafe { rec.set_event2(&event, &infos[0]) }), rule);
+    assert_eq!(vuid(rec.set_event2(&event, &infos[0])), rule);
+    // SAFETY: the event is set and waited on in this recording only, which is never
+    // submitted; the call is refused.
     assert_eq!(vuid(unsafe { rec.wait_events2(&event, &infos) }), rule);
     for command in ["set_event2", "wait_events2"] {
         s.messages.take();

@@ -2920,7 +2920,7 @@ fn cmd_set_event2(
     let info = tuff::DependencyInfo::new();
     record(
         s,
-        |r| unsafe { r.set_event2(&e, &info) },
+        |r| r.set_event2(&e, &info),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| unsafe { r.set_event2_unchecked(&e, &info) },
     )

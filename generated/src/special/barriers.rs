@@ -206,7 +206,7 @@ impl Barriers {
     }
 
     /// Every barrier's scopes.
-    fn scopes(&self) -> impl Iterator<Item = &Scopes> {
+    pub(crate) fn scopes(&self) -> impl Iterator<Item = &Scopes> {
         self.memory
             .iter()
             .chain(self.buffers.iter().map(|b| &b.scopes))

@@ -568,7 +568,63 @@ pub(crate) fn set_event2_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     dependency_info: &DependencyInfo<'_>,
 ) -> Result<()> {
-    check_barrier_structs(recorder, &Barriers::of2(dependency_info))
+    let flags = dependency_info.dependency_flags;
+    if !flags.is_empty() {
+        refuse(
+            "VUID-vkCmdSetEvent2-dependencyFlags-03825",
+            format!(
+                "The `dependencyFlags` member of `pDependencyInfo` must be `0` (it is {flags:?})"
+            ),
+        )?;
+    }
+    let barriers = Barriers::of2(dependency_info);
+    let family = recorder.pool_queue_flags();
+    for (n, b) in barriers.scopes().enumerate() {
+        for (mask, vuid) in [
+            (b.src_stage, "VUID-vkCmdSetEvent2-srcStageMask-03827"),
+            (b.dst_stage, "VUID-vkCmdSetEvent2-dstStageMask-03828"),
+        ] {
+            if let Some(s) = super::stages::unsupported_stage2(mask, family) {
+                refuse(
+                    vuid,
+                    format!("barrier {n}'s stage mask includes {s:?}, which the pool's queue family ({family:?}) does not support"),
+                )?;
+            }
+        }
+    }
+    let mask = recorder.current_device_mask;
+    if mask.count_ones() != 1 {
+        refuse(
+            "VUID-vkCmdSetEvent2-commandBuffer-03826",
+            format!("the command buffer's current device mask {mask:#x} names other than one physical device"),
+        )?;
+    }
+    check_barrier_structs(recorder, &barriers)
+}
+
+/// Held through a host reset of an event: refuses it while a submission whose
+/// command buffers name the event may still be executing (a wait there needs an
+/// execution dependency with the reset, which the host gives only by waiting for
+/// the submission), under the device's submission gate, so that no submission
+/// comes between the check and the reset.
+pub(crate) fn reset_event_hold<'d>(
+    device: &'d Device,
+    event: &Event,
+) -> Result<tuff_runtime::VutexGuard<'d, ()>> {
+    let gate = device.live().descriptor_gate();
+    // No queue of the device has the null handle: the submissions to every queue.
+    let pending = device
+        .live()
+        .event_submissions(event.raw().as_raw(), vk::Queue::null());
+    for sub in pending {
+        if !sub.poll(device) {
+            refuse(
+                "VUID-vkResetEvent-event-03821",
+                "a submission whose command buffers name the event (and may wait on it) may still be executing: wait for its fence before the host resets the event",
+            )?;
+        }
+    }
+    Ok(gate)
 }
 
 /// The checks of an event wait's barriers, and the layouts its image barriers move

@@ -2770,26 +2770,19 @@ The caller upholds the rules that [`Self::reset_descriptor_pool`] checks at run 
     }
     /**`vkResetEvent`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkResetEvent-event-03821`: There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
-- `VUID-vkResetEvent-event-03822`: There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
-
 # Valid usage
 
 The rules of `vkResetEvent` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkResetEvent.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkResetEvent-event-03821` (*yours*; explicit rule): There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
-- `VUID-vkResetEvent-event-03822` (*yours*; explicit rule): There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
+- `VUID-vkResetEvent-event-03822` (*yours*; checked by the safe methods in every build, by the check of VUID-vkResetEvent-event-03821, whose condition): There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
+- `VUID-vkResetEvent-event-03821` (*checked*): There must be an execution dependency between `vkResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
 - `VUID-vkResetEvent-event-parent` (*checked*): `event` must have been created, allocated, or retrieved from `device`
 - `VUID-vkResetEvent-event-03823` (*checked*): `event` must not have been created with `VK_EVENT_CREATE_DEVICE_ONLY_BIT`
 - `VUID-vkResetEvent-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkResetEvent-event-parameter` (*by the types*): `event` must be a valid VkEvent handle*/
     #[doc(alias = "vkResetEvent")]
     #[inline]
-    pub unsafe fn reset_event(&self, event: &Event) -> Result<()> {
+    pub fn reset_event(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]
         let _host_sync = {
             let mut syncs: Vec<tuff_runtime::HostSync> = Vec::new();
@@ -2798,6 +2791,7 @@ The rules of `vkResetEvent` that apply to this crate's API ([reference page](htt
         };
         self.validate_origins_reset_event(event)?;
         crate::special::sync::host_event(self, event, "VUID-vkResetEvent-event-03823")?;
+        let _held = crate::special::sync::reset_event_hold(self, event)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.reset_event_unchecked(event) }
@@ -2806,7 +2800,7 @@ The rules of `vkResetEvent` that apply to this crate's API ([reference page](htt
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, `VUID-vkResetEvent-event-03823`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkResetEvent-event-parent`, `VUID-vkResetEvent-event-03823`, `VUID-vkResetEvent-event-03821`, `VUID-vkResetEvent-event-03822`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_event_unchecked(&self, event: &Event) -> Result<()> {
         #[allow(clippy::vec_init_then_push)]

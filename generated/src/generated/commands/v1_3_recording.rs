@@ -1784,24 +1784,15 @@ The caller upholds the rules that [`Self::reset_event2`] checks at run time: `VU
     }
     /**`vkCmdSetEvent2`
 
-# Safety
-
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdSetEvent2-dependencyFlags-03825`: The `dependencyFlags` member of `pDependencyInfo` must be `0`
-- `VUID-vkCmdSetEvent2-srcStageMask-03827`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdSetEvent2-dstStageMask-03828`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdSetEvent2-commandBuffer-03826`: The current device mask of `commandBuffer` must include exactly one physical device
-
 # Valid usage
 
 The rules of `vkCmdSetEvent2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdSetEvent2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdSetEvent2-dependencyFlags-03825` (*yours*; explicit rule): The `dependencyFlags` member of `pDependencyInfo` must be `0`
-- `VUID-vkCmdSetEvent2-srcStageMask-03827` (*yours*; explicit rule): The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue …
-- `VUID-vkCmdSetEvent2-dstStageMask-03828` (*yours*; explicit rule): The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue …
-- `VUID-vkCmdSetEvent2-commandBuffer-03826` (*yours*; explicit rule): The current device mask of `commandBuffer` must include exactly one physical device
+- `VUID-vkCmdSetEvent2-srcStageMask-03827` (*yours*; checked by the safe methods in every build): The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue …
+- `VUID-vkCmdSetEvent2-dstStageMask-03828` (*yours*; checked by the safe methods in every build): The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfo` must only include pipeline stages valid for the queue …
+- `VUID-vkCmdSetEvent2-commandBuffer-03826` (*yours*; checked by the safe methods in every build): The current device mask of `commandBuffer` must include exactly one physical device
 - `VUID-vkCmdSetEvent2-synchronization2-03824` (*checked*): The `synchronization2` feature must be enabled
+- `VUID-vkCmdSetEvent2-dependencyFlags-03825` (*checked*): The `dependencyFlags` member of `pDependencyInfo` must be `0`
 - `VUID-vkCmdSetEvent2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, decode, or encode operations
 - `VUID-vkCmdSetEvent2-commonparent` (*checked*): Both of `commandBuffer`, and `event` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-vkCmdSetEvent2-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
@@ -1811,7 +1802,7 @@ The rules of `vkCmdSetEvent2` that apply to this crate's API ([reference page](h
 - `VUID-vkCmdSetEvent2-renderpass` (*by the types*): This command must only be called outside of a render pass instance*/
     #[doc(alias = "vkCmdSetEvent2")]
     #[inline]
-    pub unsafe fn set_event2<'a>(
+    pub fn set_event2<'a>(
         &mut self,
         event: &Event,
         dependency_info: &DependencyInfo<'a>,
@@ -1830,7 +1821,7 @@ The rules of `vkCmdSetEvent2` that apply to this crate's API ([reference page](h
 
 # Safety
 
-The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-synchronization2-03824`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID-vkCmdSetEvent2-commonparent`, `VUID-vkCmdSetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdSetEvent2-synchronization2-03824`, `VUID-vkCmdSetEvent2-dependencyFlags-03825`, `VUID-vkCmdSetEvent2-srcStageMask-03827`, `VUID-vkCmdSetEvent2-dstStageMask-03828`, `VUID-vkCmdSetEvent2-commandBuffer-03826`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn set_event2_unchecked<'a>(
         &mut self,

@@ -12,6 +12,9 @@ const HOST_SIGNAL: &str = "checks, under the device's submission gate held until
 const UNPROVEN_HOST_DIFFERENCE: &str = "checked by the safe methods in every build (against the value read from the driver and the pending operations the device records), but no test breaks it: lavapipe's maxTimelineSemaphoreValueDifference is the largest value a u64 holds";
 const DEVICE_MASK: &str = "checks that the mask names no physical device past the device's count (the device records how many it was created with)";
 const UNPROVEN_INITIAL_MASK: &str = "checked by the safe methods in every build (against the initial device mask the recorder keeps from the command buffer's begin, and the mask a chained VkDeviceGroupRenderPassBeginInfo gave the render pass instance), but no test breaks it: lavapipe's devices have one physical device, whose only valid mask is every device's";
+const SET_EVENT2_FLAGS: &str = "checks the dependency info's flags are 0";
+const HOST_RESET_PENDING: &str = "checks, under the device's submission gate held through the reset, that no submission whose command buffers name the event (the events each recording's set, reset and wait commands name, recorded per submission) may still be executing, asking their fences: a stricter bound than the rule's, which a wait alone needs (the 1.3.239 layer does not check it: the error alone proves it)";
+const HOST_RESET_SAME: &str = "checked by the safe methods in every build, by the check of VUID-vkResetEvent-event-03821, whose condition (a pending submission names the event) includes this one and whose VUID the error names";
 const UNPROVEN_ONE_DEVICE: &str = "checked by the safe methods in every build (the command buffer's current device mask, which the recorder follows from its begin and every vkCmdSetDeviceMask), but no test breaks it: lavapipe's devices have one physical device";
 const DEVICE_ONLY: &str =
     "checks the event was not created device-only, which the device records at its creation";
@@ -81,7 +84,12 @@ pub(super) const ROWS: &[Special] = &[
             "special::sync::host_event",
             &["self", "event", "\"VUID-vkResetEvent-event-03823\""],
         ),
-        settles: &[("VUID-vkResetEvent-event-03823", How::Dynamic(DEVICE_ONLY))],
+        hold: call("special::sync::reset_event_hold", &["self", "event"]),
+        settles: &[
+            ("VUID-vkResetEvent-event-03823", How::Dynamic(DEVICE_ONLY)),
+            ("VUID-vkResetEvent-event-03821", How::Dynamic(HOST_RESET_PENDING)),
+            ("VUID-vkResetEvent-event-03822", How::User(HOST_RESET_SAME)),
+        ],
         ..NONE
     },
     Special {
@@ -158,6 +166,12 @@ pub(super) const ROWS: &[Special] = &[
         command: "vkCmdSetEvent2",
         check: call("special::sync::set_event2_checks", &["self", "dependency_info"]),
         after: call("special::sync::event_recorded", &["self", "event"]),
+        settles: &[
+            ("VUID-vkCmdSetEvent2-dependencyFlags-03825", How::Dynamic(SET_EVENT2_FLAGS)),
+            ("VUID-vkCmdSetEvent2-srcStageMask-03827", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdSetEvent2-dstStageMask-03828", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdSetEvent2-commandBuffer-03826", How::User(UNPROVEN_ONE_DEVICE)),
+        ],
         ..NONE
     },
     Special {
