@@ -1793,3 +1793,38 @@ fn compute_pipeline_rules_are_refused_and_the_layer_agrees() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// A pipeline cache made by the safe method starts empty: initial data is refused
+/// (00769), as tuff cannot tell whether it came from `vkGetPipelineCacheData`; data
+/// the caller vouches for goes through the `_unchecked` twin.
+#[test]
+fn a_pipeline_cache_takes_initial_data_only_on_the_callers_word() {
+    let _serial = vulkan::serial();
+    let s = tuff_setup::setup(true);
+    let d = &s.device;
+    let empty = d
+        .create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new())
+        .expect("an empty cache");
+    let data = d.get_pipeline_cache_data(&empty).expect("data");
+    let rule = "VUID-VkPipelineCacheCreateInfo-initialDataSize-00769";
+    let info = tuff::PipelineCacheCreateInfo::new().initial_data(&data);
+    assert_eq!(tuff_setup::vuid(d.create_pipeline_cache(&info)), rule);
+    // Bytes from nowhere: the 1.3.239 layer does not check the rule, so tuff's error
+    // alone proves it (lavapipe ignores data whose header is not its own). A layer
+    // that starts checking it fails here.
+    let nowhere = [0u8; 64];
+    s.messages.take();
+    // SAFETY: lavapipe checks the header of initial data and ignores data that is
+    // not its own.
+    let ignored = unsafe {
+        d.create_pipeline_cache_unchecked(
+            &tuff::PipelineCacheCreateInfo::new().initial_data(&nowhere),
+        )
+    };
+    let said = s.messages.take();
+    assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
+    drop(ignored);
+    // SAFETY: the data came from vkGetPipelineCacheData of this device.
+    let _reloaded = unsafe { d.create_pipeline_cache_unchecked(&info) }.expect("reloaded");
+    vulkan::assert_silent(&s.messages);
+}

@@ -326,8 +326,8 @@ fn a_cache_is_not_merged_into_itself_and_the_layer_agrees() {
     let s = setup(true);
     let d = &s.device;
     let new_cache = || {
-        // SAFETY: no initial data, so no rule about it applies.
-        unsafe { d.create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new()) }.expect("cache")
+        d.create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new())
+            .expect("cache")
     };
     let (a, b) = (new_cache(), new_cache());
     let expected = "VUID-vkMergePipelineCaches-dstCache-00770";

@@ -117,7 +117,8 @@ fn make_all(s: &Setup) -> Vec<Box<dyn Any>> {
                 .push_constant_ranges(&ranges),
         )
         .expect("pipeline layout");
-    let cache = unsafe { d.create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new()) }
+    let cache = d
+        .create_pipeline_cache(&tuff::PipelineCacheCreateInfo::new())
         .expect("pipeline cache");
     let cache_data = d
         .get_pipeline_cache_data(&cache)

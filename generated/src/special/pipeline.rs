@@ -497,6 +497,22 @@ pub(crate) fn graphics_pipelines_created(
     created
 }
 
+/// A cache starts empty: initial data is refused, as tuff cannot tell whether it
+/// came from `vkGetPipelineCacheData` (a driver may trust its contents past the
+/// header). Data saved to disk comes back through `create_pipeline_cache_unchecked`.
+pub(crate) fn create_pipeline_cache_checks(
+    create_info: &PipelineCacheCreateInfo<'_>,
+) -> Result<()> {
+    let size = create_info.as_raw().initial_data_size;
+    if size != 0 {
+        refuse(
+            "VUID-VkPipelineCacheCreateInfo-initialDataSize-00769",
+            format!("{size} bytes of initial data: tuff cannot tell whether they came from vkGetPipelineCacheData, which the rule needs (a driver may trust their contents past the header); `create_pipeline_cache_unchecked` takes them on the caller's word"),
+        )?;
+    }
+    Ok(())
+}
+
 /// A merge into a cache that is not also one of its sources.
 pub(crate) fn merge_pipeline_caches_checks(
     dst_cache: &PipelineCache,

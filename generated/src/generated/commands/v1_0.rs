@@ -1364,13 +1364,6 @@ The caller upholds the rules that [`Self::create_image_view`] checks at run time
     }
     /**`vkCreatePipelineCache`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00768`: If `initialDataSize` is not `0`, it must be equal to the size of `pInitialData`, as returned by `vkGetPipelineCacheData` when `pInitialData` was originally retrieved
-- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00769`: If `initialDataSize` is not `0`, `pInitialData` must have been retrieved from a previous call to `vkGetPipelineCacheData`
-
 # Valid usage
 
 The rules of `vkCreatePipelineCache` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreatePipelineCache.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -1381,10 +1374,11 @@ The rules of `vkCreatePipelineCache` that apply to this crate's API ([reference 
 - `VUID-vkCreatePipelineCache-pPipelineCache-parameter` (*by the types*): `pPipelineCache` must be a valid pointer to a VkPipelineCache handle*/
     #[doc(alias = "vkCreatePipelineCache")]
     #[inline]
-    pub unsafe fn create_pipeline_cache<'a>(
+    pub fn create_pipeline_cache<'a>(
         &self,
         create_info: &PipelineCacheCreateInfo<'a>,
     ) -> Result<PipelineCache> {
+        crate::special::pipeline::create_pipeline_cache_checks(create_info)?;
         {
             let r = self.validate_create_pipeline_cache(create_info);
             r?;
@@ -1397,7 +1391,7 @@ The rules of `vkCreatePipelineCache` that apply to this crate's API ([reference 
 
 # Safety
 
-The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run time (those of the structs it takes).*/
+The caller upholds the rules that [`Self::create_pipeline_cache`] checks at run time: `VUID-VkPipelineCacheCreateInfo-initialDataSize-00769`, `VUID-VkPipelineCacheCreateInfo-initialDataSize-00768`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_pipeline_cache_unchecked<'a>(
         &self,

@@ -239,8 +239,8 @@ impl<'a> MemoryBarrier<'a> {
 
 The rules of `VkPipelineCacheCreateInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkPipelineCacheCreateInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00768` (*yours*; explicit rule): If `initialDataSize` is not `0`, it must be equal to the size of `pInitialData`, as returned by `vkGetPipelineCacheData` when `pInitialData` was originally retrieved
-- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00769` (*yours*; explicit rule): If `initialDataSize` is not `0`, `pInitialData` must have been retrieved from a previous call to `vkGetPipelineCacheData`
+- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00768` (*yours*; checked by the safe methods in every build, by the check of VUID-VkPipelineCacheCreateInfo-initialDataSize-00769, which refuses any initial data and whose VUID the error names): If `initialDataSize` is not `0`, it must be equal to the size of `pInitialData`, as returned by `vkGetPipelineCacheData` when `pInitialData` was originally retrieved
+- `VUID-VkPipelineCacheCreateInfo-initialDataSize-00769` (*checked*): If `initialDataSize` is not `0`, `pInitialData` must have been retrieved from a previous call to `vkGetPipelineCacheData`
 - `VUID-VkPipelineCacheCreateInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkPipelineCacheCreateFlagBits values
 - `VUID-VkPipelineCacheCreateInfo-pipelineCreationCacheControl-02892` (*checked*): If the `pipelineCreationCacheControl` feature is not enabled, `flags` must not include `VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT`
 - `VUID-VkPipelineCacheCreateInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO`

@@ -6,6 +6,8 @@
 
 use super::{call, How, Special, MULTI_VIEWPORT, NONE, VIEWPORTS};
 
+const CACHE_DATA: &str = "refuses any initial data: where the bytes came from is what the rule is about, which tuff cannot see (data saved to disk comes back through the `unsafe` `create_pipeline_cache_unchecked`, on the caller's word); the 1.3.239 layer does not check it: the error alone proves it";
+const CACHE_DATA_SAME: &str = "checked by the safe methods in every build, by the check of VUID-VkPipelineCacheCreateInfo-initialDataSize-00769, which refuses any initial data and whose VUID the error names";
 const MERGE_SELF: &str = "checks the destination cache is none of the sources";
 const STAGE_MODULE: &str = "checks each stage of a compute or graphics pipeline names a module, the only way its code can have had the shader promise (proven by the error alone: the layer is not asked, since a NULL module would reach the driver)";
 const SHADER_LAYOUT: &str = "checks every resource variable the stage's module declares (a superset of those it uses) has a binding in the layout of a descriptor type that can back it, visible to the stage and with as many descriptors, and that its push-constant block lies inside a range for the stage";
@@ -48,6 +50,15 @@ const UNPROVEN_DEPTH_FORMAT: &str = "checked by the safe methods in every build,
 
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
+    Special {
+        command: "vkCreatePipelineCache",
+        check: call("special::pipeline::create_pipeline_cache_checks", &["create_info"]),
+        settles: &[
+            ("VUID-VkPipelineCacheCreateInfo-initialDataSize-00769", How::Dynamic(CACHE_DATA)),
+            ("VUID-VkPipelineCacheCreateInfo-initialDataSize-00768", How::User(CACHE_DATA_SAME)),
+        ],
+        ..NONE
+    },
     Special {
         command: "vkMergePipelineCaches",
         check: call(
