@@ -1255,6 +1255,13 @@ fn memory_is_bound_only_to_what_it_was_allocated_for_and_the_layer_agrees() {
     });
     let not_external = "VUID-vkBindBufferMemory-memory-02726";
     assert_eq!(vuid(d.bind_buffer_memory(&b, &exportable, 0)), not_external);
+    // The second version checks each info alike, under its struct's VUIDs.
+    let two =
+        |buffer, memory| d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(buffer, memory)]);
+    let to_other2 = "VUID-VkBindBufferMemoryInfo-memory-01508";
+    let not_external2 = "VUID-VkBindBufferMemoryInfo-memory-02726";
+    assert_eq!(vuid(two(&b, &dedicated)), to_other2);
+    assert_eq!(vuid(two(&b, &exportable)), not_external2);
     // The dedicated memory binds to its buffer.
     d.bind_buffer_memory(&a, &dedicated, 0)
         .expect("the dedicated buffer");
@@ -1267,6 +1274,14 @@ fn memory_is_bound_only_to_what_it_was_allocated_for_and_the_layer_agrees() {
         // SAFETY: see the module docs.
         drop(unsafe { d.bind_buffer_memory_unchecked(&b, &exportable, 0) });
     });
+    for (memory, rule) in [(&dedicated, to_other2), (&exportable, not_external2)] {
+        layer_names(&s.messages, rule, || {
+            // SAFETY: see the module docs.
+            drop(unsafe {
+                d.bind_buffer_memory2_unchecked(&[tuff::BindBufferMemoryInfo::new(&b, memory)])
+            });
+        });
+    }
 }
 
 #[test]
@@ -1286,6 +1301,11 @@ fn a_buffer_with_a_device_address_needs_such_memory_and_the_layer_agrees() {
     });
     let expected = "VUID-vkBindBufferMemory-bufferDeviceAddress-03339";
     assert_eq!(vuid(d.bind_buffer_memory(&buffer, &plain, 0)), expected);
+    let expected2 = "VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339";
+    assert_eq!(
+        vuid(d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&buffer, &plain)])),
+        expected2
+    );
     let addressable = memory_for(&s, &buffer, |info| {
         let mut flags =
             tuff::MemoryAllocateFlagsInfo::new().flags(vk::MemoryAllocateFlags::DEVICE_ADDRESS);
@@ -1306,6 +1326,57 @@ fn a_buffer_with_a_device_address_needs_such_memory_and_the_layer_agrees() {
         // SAFETY: see the module docs.
         drop(unsafe { d.bind_buffer_memory_unchecked(&other, &plain, 0) });
     });
+    // The 1.3.239 layer names the first version's VUID for the second's call.
+    layer_names(&s.messages, expected, || {
+        // SAFETY: see the module docs.
+        drop(unsafe {
+            d.bind_buffer_memory2_unchecked(&[tuff::BindBufferMemoryInfo::new(&other, &plain)])
+        });
+    });
+}
+
+/// A device group binding names one device index per physical device (01606),
+/// each valid (01607); lavapipe's devices have one physical device.
+#[test]
+fn a_device_group_buffer_binding_names_the_devices_it_has() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let d = &s.device;
+    let buffer = || {
+        d.create_buffer(
+            &tuff::BufferCreateInfo::new()
+                .size(64)
+                .usage(vk::BufferUsageFlags::TRANSFER_SRC),
+        )
+        .expect("buffer")
+    };
+    let (a, b) = (buffer(), buffer());
+    let memory = memory_for(&s, &a, |info| d.allocate_memory(&info).expect("memory"));
+    for (indices, rule) in [
+        (
+            &[0u32, 0][..],
+            "VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606",
+        ),
+        (
+            &[1u32][..],
+            "VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607",
+        ),
+    ] {
+        let mut group = tuff::BindBufferMemoryDeviceGroupInfo::new().device_indices(indices);
+        let info = [tuff::BindBufferMemoryInfo::new(&a, &memory).push_next(&mut group)];
+        assert_eq!(vuid(d.bind_buffer_memory2(&info)), rule);
+        layer_names(&s.messages, rule, || {
+            // SAFETY: see the module docs.
+            drop(unsafe { d.bind_buffer_memory2_unchecked(&info) });
+        });
+    }
+    let mut group = tuff::BindBufferMemoryDeviceGroupInfo::new().device_indices(&[0]);
+    d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&a, &memory).push_next(&mut group)])
+        .expect("the one device's instance");
+    let other = memory_for(&s, &b, |info| d.allocate_memory(&info).expect("memory"));
+    d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&b, &other)])
+        .expect("no device group info");
+    assert_silent(&s.messages);
 }
 
 /// An event set or reset from no stage at all needs synchronization2: on a device

@@ -1768,7 +1768,7 @@ fn memory_bound_by_bind2_lives_as_long_as_its_object() {
                 ),
         )
         .expect("memory");
-    unsafe { d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&buffer, &memory)]) }
+    d.bind_buffer_memory2(&[tuff::BindBufferMemoryInfo::new(&buffer, &memory)])
         .expect("bind");
     drop(memory);
     assert_eq!(
@@ -3820,7 +3820,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
         assert_eq!(vuid(d.bind_buffer_memory(&b, &memory, offset)), one);
         let two = format!("VUID-VkBindBufferMemoryInfo-{rule}");
         let infos = [tuff::BindBufferMemoryInfo::new(&b, &memory).memory_offset(offset)];
-        assert_eq!(vuid(unsafe { d.bind_buffer_memory2(&infos) }), two);
+        assert_eq!(vuid(d.bind_buffer_memory2(&infos)), two);
         assert_silent(&s.messages);
         // SAFETY: the layer skips the call it reports (its messenger says so), so the
         // driver never binds the memory.
@@ -3876,7 +3876,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     );
     let infos = [tuff::BindBufferMemoryInfo::new(&b, &again)];
     assert_eq!(
-        vuid(unsafe { d.bind_buffer_memory2(&infos) }),
+        vuid(d.bind_buffer_memory2(&infos)),
         "VUID-VkBindBufferMemoryInfo-buffer-07459"
     );
     let again_i = memory_for(&s, &i_reqs, i_reqs.size);
@@ -3916,7 +3916,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
         tuff::BindBufferMemoryInfo::new(&fresh, &m2),
     ];
     assert_eq!(
-        vuid(unsafe { d.bind_buffer_memory2(&twice) }),
+        vuid(d.bind_buffer_memory2(&twice)),
         "VUID-VkBindBufferMemoryInfo-buffer-07459"
     );
     assert_silent(&s.messages);

@@ -393,6 +393,42 @@ const KIND_BUFFER: KindRules = KindRules {
     device_address: Some("VUID-vkBindBufferMemory-bufferDeviceAddress-03339"),
 };
 
+const KIND_BUFFER2: KindRules = KindRules {
+    requires_dedicated: "VUID-VkBindBufferMemoryInfo-buffer-01444",
+    dedicated: "VUID-VkBindBufferMemoryInfo-memory-01508",
+    protected: "VUID-VkBindBufferMemoryInfo-None-01898",
+    unprotected: "VUID-VkBindBufferMemoryInfo-None-01899",
+    export: "VUID-VkBindBufferMemoryInfo-memory-02726",
+    device_address: Some("VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339"),
+};
+
+/// Refuses a buffer's device group binding whose device indices are not one per
+/// physical device of the device, each a valid index, or that names other than
+/// the one instance of a device of one physical device (tuff does not record which
+/// instances a memory of a device group has).
+fn check_device_indices(device: &Device, indices: &[u32], at: usize) -> Result<()> {
+    let count = device.live().physical_count();
+    if !indices.is_empty() && indices.len() as u64 != u64::from(count) {
+        refuse(
+            "VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606",
+            format!("pBindInfos[{at}] gives {} device indices, and the device has {count} physical devices", indices.len()),
+        )?;
+    }
+    if let Some(bad) = indices.iter().find(|d| **d >= count) {
+        refuse(
+            "VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607",
+            format!("pBindInfos[{at}] names device index {bad}, and the device has {count} physical devices"),
+        )?;
+    }
+    if count > 1 && !indices.is_empty() {
+        refuse(
+            "VUID-VkBindBufferMemoryInfo-pNext-01605",
+            format!("pBindInfos[{at}] names memory instances of a device group, which tuff does not follow; bind_buffer_memory2_unchecked takes them on the caller's word"),
+        )?;
+    }
+    Ok(())
+}
+
 const KIND_IMAGE: KindRules = KindRules {
     requires_dedicated: "VUID-vkBindImageMemory-image-01445",
     dedicated: "VUID-vkBindImageMemory-memory-01509",
@@ -438,8 +474,8 @@ pub(crate) fn bind_buffer_memory_checks(
     )
 }
 
-/// As [`bind_buffer_memory_checks`], for each info; a buffer named twice is bound
-/// twice.
+/// As [`bind_buffer_memory_checks`], for each info, and each chained device group
+/// info's device indices; a buffer named twice is bound twice.
 pub(crate) fn bind_buffer_memory2_checks(
     device: &Device,
     bind_infos: &[BindBufferMemoryInfo<'_>],
@@ -449,6 +485,39 @@ pub(crate) fn bind_buffer_memory2_checks(
             refuse(
                 BIND_BUFFER2.bound,
                 format!("pBindInfos[{i}] binds a buffer an earlier info binds"),
+            )?;
+        }
+        // SAFETY: the safe struct chains only structs pushed through `push_next`,
+        // each a valid Vulkan struct of the type its sType names.
+        let group = unsafe {
+            chained::<vk::BindBufferMemoryDeviceGroupInfo<'_>>(
+                info.p_next,
+                vk::StructureType::BIND_BUFFER_MEMORY_DEVICE_GROUP_INFO,
+            )
+        };
+        if let Some(group) = group {
+            // SAFETY: the safe setter stored the indices with their count.
+            let indices = unsafe {
+                crate::state::raw_slice(group.p_device_indices, group.device_index_count)
+            };
+            check_device_indices(device, indices, i)?;
+        }
+        if let Some(r) = device.live().buffer(info.buffer) {
+            let object = Bound {
+                ty: vk::ObjectType::BUFFER,
+                raw: info.buffer.as_raw(),
+                protected: r.flags.contains(vk::BufferCreateFlags::PROTECTED),
+                external: r.external,
+                device_address: r
+                    .usage
+                    .contains(vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS),
+            };
+            check_memory_kind(
+                device,
+                &KIND_BUFFER2,
+                &object,
+                info.memory,
+                info.memory_offset,
             )?;
         }
         let record = device

@@ -5,21 +5,6 @@ use super::*;
 impl Device {
     /**`vkBindBufferMemory2`
 
-# Safety
-
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606`: `deviceIndexCount` must either be zero or equal to the number of physical devices in the logical device
-- `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607`: All elements of `pDeviceIndices` must be valid device indices
-- `VUID-VkBindBufferMemoryInfo-buffer-01444`: If `buffer` requires a dedicated allocation (as reported by vkGetBufferMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `buffer`), `memory` must have been allocated with VkMemoryDedicatedAllocateInfo::`buffer` equal to `buffer`
-- `VUID-VkBindBufferMemoryInfo-memory-01508`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`buffer` was not VK_NULL_HANDLE, then `buffer` must equal VkMemoryDedicatedAllocateInfo::`buffer`, and `memoryOffset` must be zero
-- `VUID-VkBindBufferMemoryInfo-None-01898`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit set, the buffer must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-VkBindBufferMemoryInfo-None-01899`: If `buffer` was created with the `VK_BUFFER_CREATE_PROTECTED_BIT` bit not set, the buffer must not be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-VkBindBufferMemoryInfo-memory-02726`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
-- `VUID-VkBindBufferMemoryInfo-memory-02727`: If `memory` was allocated by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryBufferCreateInfo::`handleTypes` when `buffer` was created
-- `VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339`: If the VkPhysicalDeviceBufferDeviceAddressFeatures::`bufferDeviceAddress` feature is enabled and `buffer` was created with the `VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT` bit set, `memory` must have been allocated with the `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT` bit set
-- `VUID-VkBindBufferMemoryInfo-pNext-01605`: If the `pNext` chain includes a VkBindBufferMemoryDeviceGroupInfo structure, all instances of `memory` specified by VkBindBufferMemoryDeviceGroupInfo::`pDeviceIndices` must have been allocated
-
 # Valid usage
 
 The rules of `vkBindBufferMemory2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindBufferMemory2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -29,7 +14,7 @@ The rules of `vkBindBufferMemory2` that apply to this crate's API ([reference pa
 - `VUID-vkBindBufferMemory2-pBindInfos-parameter` (*by the types*): `pBindInfos` must be a valid pointer to an array of `bindInfoCount` valid VkBindBufferMemoryInfo structures*/
     #[doc(alias = "vkBindBufferMemory2")]
     #[inline]
-    pub unsafe fn bind_buffer_memory2<'a>(
+    pub fn bind_buffer_memory2<'a>(
         &self,
         bind_infos: &[BindBufferMemoryInfo<'a>],
     ) -> Result<()> {
@@ -47,7 +32,7 @@ The rules of `vkBindBufferMemory2` that apply to this crate's API ([reference pa
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run time: `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`, `VUID-VkBindBufferMemoryInfo-buffer-07459`, `VUID-VkBindBufferMemoryInfo-buffer-01030`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01031`, `VUID-VkBindBufferMemoryInfo-memory-01035`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`, `VUID-VkBindBufferMemoryInfo-size-01037`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run time: `VUID-vkBindBufferMemory2-bindInfoCount-arraylength`, `VUID-VkBindBufferMemoryInfo-buffer-07459`, `VUID-VkBindBufferMemoryInfo-buffer-01030`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01031`, `VUID-VkBindBufferMemoryInfo-memory-01035`, `VUID-VkBindBufferMemoryInfo-memoryOffset-01036`, `VUID-VkBindBufferMemoryInfo-size-01037`, `VUID-VkBindBufferMemoryInfo-buffer-01444`, `VUID-VkBindBufferMemoryInfo-memory-01508`, `VUID-VkBindBufferMemoryInfo-None-01898`, `VUID-VkBindBufferMemoryInfo-None-01899`, `VUID-VkBindBufferMemoryInfo-memory-02726`, `VUID-VkBindBufferMemoryInfo-memory-02727`, `VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339`, `VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606`, `VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607`, `VUID-VkBindBufferMemoryInfo-pNext-01605`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_buffer_memory2_unchecked<'a>(
         &self,

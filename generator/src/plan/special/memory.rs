@@ -6,6 +6,8 @@
 
 use super::{call, How, Keeps, Special, NONE, UNPROVEN};
 
+const DEVICE_INDICES: &str = "checks a chained device group info's device indices against the device's physical-device count, recorded at its creation";
+const UNPROVEN_INSTANCES: &str = "checked by the safe methods in every build (a chained device group info with device indices is refused on a device of more than one physical device, whose memory instances tuff does not follow; on one physical device its only instance exists), but no test breaks it: lavapipe's devices have one physical device";
 const MEMORY_KIND: &str = "checks what the allocation asked for (its dedicated object, exportable handle types and device address, kept from its allocation) against the object the bind gives it to";
 const UNPROVEN_DEDICATED: &str = "checked by the safe methods in every build (VkMemoryDedicatedRequirements, queried at the bind, against the allocation's dedicated object), but no test breaks it: lavapipe requires no dedicated allocation";
 const UNPROVEN_PROTECTED: &str = "checked by the safe methods in every build (the object's protected flag against its memory's type), but no test breaks it: lavapipe has no protected memory";
@@ -261,6 +263,46 @@ pub(super) const ROWS: &[Special] = &[
             (
                 "VUID-VkBindBufferMemoryInfo-size-01037",
                 How::Dynamic(BIND_MEMORY),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-buffer-01444",
+                How::User(UNPROVEN_DEDICATED),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-memory-01508",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-None-01898",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-None-01899",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-memory-02726",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-memory-02727",
+                How::Static(NO_IMPORT),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-bufferDeviceAddress-03339",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-VkBindBufferMemoryDeviceGroupInfo-deviceIndexCount-01606",
+                How::Dynamic(DEVICE_INDICES),
+            ),
+            (
+                "VUID-VkBindBufferMemoryDeviceGroupInfo-pDeviceIndices-01607",
+                How::Dynamic(DEVICE_INDICES),
+            ),
+            (
+                "VUID-VkBindBufferMemoryInfo-pNext-01605",
+                How::User(UNPROVEN_INSTANCES),
             ),
         ],
         ..NONE
