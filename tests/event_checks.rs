@@ -82,14 +82,8 @@ fn the_host_resets_an_event_no_pending_submission_names() {
         .expect("event");
     d.reset_event(&event)
         .expect("a reset nothing pending names");
-    // A batch that sets the event after waiting for a timeline value the host
-    // signals later: pending until then.
-    let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
-        .semaphore_type(vk::SemaphoreType::TIMELINE)
-        .initial_value(0);
-    let semaphore = d
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
-        .expect("timeline semaphore");
+    // A batch that sets the event after waiting for the host's signal: pending
+    // until then.
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
@@ -97,29 +91,7 @@ fn the_host_resets_an_event_no_pending_submission_names() {
     rec.set_event(&event, vk::PipelineStageFlags::TRANSFER)
         .expect("set");
     rec.end().expect("end");
-    let semaphores = tuff::HandleSlice::new(&[&semaphore]);
-    let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    let mut wait = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1]);
-    let submit = [tuff::SubmitInfo::new()
-        .wait_semaphores(&semaphores, &stages)
-        .expect("one stage mask a semaphore")
-        .command_buffers(&cbs)
-        .push_next(&mut wait)];
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
-    s.queue.submit(&submit, Some(&fence)).expect("submit");
-    // Signals the batch's wait however this test ends: the fence's drop waits for it.
-    struct Release<'a>(&'a tuff::Device, &'a tuff::Semaphore);
-    impl Drop for Release<'_> {
-        fn drop(&mut self) {
-            let _ = self
-                .0
-                .signal_semaphore(&tuff::SemaphoreSignalInfo::new(self.1).value(1));
-        }
-    }
-    let release = Release(d, &semaphore);
+    let pending = tuff_setup::Pending::submit(&s, &cb);
     let rule = "VUID-vkResetEvent-event-03821";
     assert_eq!(vuid(d.reset_event(&event)), rule);
     // The 1.3.239 layer does not check the rule: tuff's error alone proves it. A
@@ -129,11 +101,7 @@ fn the_host_resets_an_event_no_pending_submission_names() {
     let _ = unsafe { d.reset_event_unchecked(&event) };
     let said = s.messages.take();
     assert!(said.is_empty(), "the layer now checks {rule}: {said:?}");
-    drop(release);
-    assert_eq!(
-        d.wait_for_fences(&fence, true, u64::MAX).expect("wait"),
-        tuff::SuccessOrTimeout::Success
-    );
+    pending.release();
     d.reset_event(&event).expect("the batch is complete");
     assert_silent(&s.messages);
 }

@@ -417,43 +417,15 @@ fn host_resets_stay_inside_the_pool_and_wait_for_pending_submissions() {
         });
     }
     d.reset_query_pool(&pool, 0, 4).expect("every query");
-    // A batch that writes query 1 after waiting for a timeline value the host
-    // signals later: pending until then.
-    let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
-        .semaphore_type(vk::SemaphoreType::TIMELINE)
-        .initial_value(0);
-    let semaphore = d
-        .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
-        .expect("timeline semaphore");
+    // A batch that writes query 1 after waiting for the host's signal: pending
+    // until then.
     let (_cp, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
     rec.write_timestamp(BOTTOM, &pool, 1).expect("timestamp");
     rec.end().expect("end");
-    let semaphores = tuff::HandleSlice::new(&[&semaphore]);
-    let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    let mut wait = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1]);
-    let submit = [tuff::SubmitInfo::new()
-        .wait_semaphores(&semaphores, &stages)
-        .expect("one stage mask a semaphore")
-        .command_buffers(&cbs)
-        .push_next(&mut wait)];
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
-    s.queue.submit(&submit, Some(&fence)).expect("submit");
-    // Signals the batch's wait however this test ends: the fence's drop waits for it.
-    struct Release<'a>(&'a tuff::Device, &'a tuff::Semaphore);
-    impl Drop for Release<'_> {
-        fn drop(&mut self) {
-            let _ = self
-                .0
-                .signal_semaphore(&tuff::SemaphoreSignalInfo::new(self.1).value(1));
-        }
-    }
-    let release = Release(d, &semaphore);
+    let pending = tuff_setup::Pending::submit(&s, &cb);
     let rule = "VUID-vkResetQueryPool-firstQuery-02741";
     assert_eq!(vuid(d.reset_query_pool(&pool, 0, 2)), rule);
     // The 1.3.239 layer does not check the rule: tuff's error alone proves it
@@ -468,11 +440,7 @@ fn host_resets_stay_inside_the_pool_and_wait_for_pending_submissions() {
     // Queries the pending batch does not use can be reset.
     d.reset_query_pool(&pool, 2, 2)
         .expect("queries no submission uses");
-    drop(release);
-    assert_eq!(
-        d.wait_for_fences(&fence, true, u64::MAX).expect("wait"),
-        tuff::SuccessOrTimeout::Success
-    );
+    pending.release();
     d.reset_query_pool(&pool, 0, 2)
         .expect("the batch is complete");
     assert_silent(&s.messages);

@@ -487,3 +487,69 @@ pub fn breaks(
         Layer::Silent => assert!(said.is_empty(), "the layer now checks {rule}: {said:?}"),
     }
 }
+
+/// A submission kept pending: its batch waits for value 1 of a timeline semaphore,
+/// which the host signals when [`Pending::release`] runs or the value drops (so a
+/// failed assertion does not leave the fence's drop waiting forever).
+pub struct Pending<'a> {
+    device: &'a tuff::Device,
+    semaphore: tuff::Semaphore,
+    pub fence: tuff::Fence,
+}
+
+impl<'a> Pending<'a> {
+    /// Submits `cb` after a wait for the host's signal.
+    pub fn submit(s: &'a Setup, cb: &tuff::CommandBuffer) -> Self {
+        let d = &s.device;
+        let mut timeline_type = tuff::SemaphoreTypeCreateInfo::new()
+            .semaphore_type(vk::SemaphoreType::TIMELINE)
+            .initial_value(0);
+        let semaphore = d
+            .create_semaphore(&tuff::SemaphoreCreateInfo::new().push_next(&mut timeline_type))
+            .expect("timeline semaphore");
+        let semaphores = tuff::HandleSlice::new(&[&semaphore]);
+        let stages = [vk::PipelineStageFlags::ALL_COMMANDS];
+        let cbs = tuff::HandleSlice::new(&[cb]);
+        let mut wait = tuff::TimelineSemaphoreSubmitInfo::new().wait_semaphore_values(&[1]);
+        let submit = [tuff::SubmitInfo::new()
+            .wait_semaphores(&semaphores, &stages)
+            .expect("one stage mask a semaphore")
+            .command_buffers(&cbs)
+            .push_next(&mut wait)];
+        let fence = d
+            .create_fence(&tuff::FenceCreateInfo::new())
+            .expect("fence");
+        s.queue.submit(&submit, Some(&fence)).expect("submit");
+        Pending {
+            device: d,
+            semaphore,
+            fence,
+        }
+    }
+
+    /// Signals the batch's wait and waits for its fence.
+    pub fn release(self) {
+        self.signal();
+        let waited = self
+            .device
+            .wait_for_fences(&self.fence, true, u64::MAX)
+            .expect("wait");
+        assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+    }
+
+    fn signal(&self) {
+        let info = tuff::SemaphoreSignalInfo::new(&self.semaphore).value(1);
+        if self.device.get_semaphore_counter_value(&self.semaphore) == Ok(0) {
+            self.device.signal_semaphore(&info).expect("signal");
+        }
+    }
+}
+
+impl Drop for Pending<'_> {
+    fn drop(&mut self) {
+        if self.device.get_semaphore_counter_value(&self.semaphore) == Ok(0) {
+            let info = tuff::SemaphoreSignalInfo::new(&self.semaphore).value(1);
+            let _ = self.device.signal_semaphore(&info);
+        }
+    }
+}

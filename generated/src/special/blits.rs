@@ -5,7 +5,8 @@
 //! version's VUID.
 
 use super::copies::{check_protected, Protection};
-use super::refuse;
+use super::image::{bindings_overlap, tiling_features};
+use super::{check, refuse};
 use crate::recorder::{Recorder, Scope};
 use crate::state::ImageRecord;
 use crate::structs::BlitImageInfo2;
@@ -163,30 +164,6 @@ pub(crate) fn cmd_blit_image2_checks<S: Scope>(
     )
 }
 
-fn check(vuid: &'static str, holds: bool, message: impl FnOnce() -> String) -> Result<()> {
-    if holds {
-        Ok(())
-    } else {
-        refuse(vuid, message())
-    }
-}
-
-/// The format features of an image's format for its tiling.
-fn features<S: Scope>(
-    recorder: &Recorder<'_, S>,
-    image: &ImageRecord,
-) -> Result<vk::FormatFeatureFlags> {
-    let device = recorder.device();
-    let props = device
-        .live()
-        .format_properties(device.parent(), image.format)?;
-    Ok(if image.tiling == vk::ImageTiling::LINEAR {
-        props.linear_tiling_features
-    } else {
-        props.optimal_tiling_features
-    })
-}
-
 /// The size of mip level `mip` of an image.
 fn level(image: &ImageRecord, mip: u32) -> [i64; 3] {
     let e = image.extent;
@@ -272,7 +249,10 @@ fn check_blit<S: Scope>(
         || format!("a depth/stencil source ({sf:?}) blitted with filter {filter:?}, not NEAREST"),
     )?;
     type F = vk::FormatFeatureFlags;
-    let (src_features, dst_features) = (features(recorder, &src)?, features(recorder, &dst)?);
+    let (src_features, dst_features) = (
+        tiling_features(recorder.device(), &src)?,
+        tiling_features(recorder.device(), &dst)?,
+    );
     check(rules.src_blit, src_features.contains(F::BLIT_SRC), || {
         format!("the source's features {src_features:?} lack BLIT_SRC")
     })?;
@@ -387,14 +367,8 @@ fn check_blit<S: Scope>(
                 })?;
             }
         }
-    } else if let (Some((sm, soff, ssize)), Some((dm, doff, dsize))) =
-        (live.binding(src_image), live.binding(dst_image))
-    {
-        let apart =
-            sm != dm || soff.saturating_add(ssize) <= doff || doff.saturating_add(dsize) <= soff;
-        check(rules.overlap, apart, || {
-            format!("the source's memory ({soff}..+{ssize}) and the destination's ({doff}..+{dsize}) overlap")
-        })?;
+    } else if let Some(m) = bindings_overlap(live, src_image, dst_image) {
+        refuse(rules.overlap, m)?;
     }
     Ok(())
 }

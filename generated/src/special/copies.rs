@@ -2,7 +2,7 @@
 //! the resources it names, their usage, formats and protection.
 
 use super::buffer::{check_buffer_use, used_buffer};
-use super::{pool_family, refuse};
+use super::{check, pool_family, refuse};
 use crate::handles::{Device, *};
 use crate::recorder::{Recorder, Scope};
 use crate::state::ImageRecord;
@@ -892,14 +892,6 @@ impl From<&vk::BufferImageCopy2<'_>> for Region {
     }
 }
 
-fn check(vuid: &'static str, holds: bool, message: impl FnOnce() -> String) -> Result<()> {
-    if vuid.is_empty() || holds {
-        Ok(())
-    } else {
-        refuse(vuid, message())
-    }
-}
-
 /// The size of mip level `mip` of `image`'s aspect `aspect` (a plane of a
 /// subsampled format is smaller).
 fn level_extent(image: &ImageRecord, aspect: vk::ImageAspectFlags, mip: u32) -> [i64; 3] {
@@ -933,14 +925,7 @@ pub(crate) fn check_regions(
         || format!("the image has {:?} samples", image.samples),
     )?;
     if !rules.features.0.is_empty() {
-        let props = device
-            .live()
-            .format_properties(device.parent(), image.format)?;
-        let features = if image.tiling == vk::ImageTiling::LINEAR {
-            props.linear_tiling_features
-        } else {
-            props.optimal_tiling_features
-        };
+        let features = super::image::tiling_features(device, image)?;
         check(
             rules.features.0,
             features.contains(rules.features.1),
@@ -1433,14 +1418,7 @@ fn check_clear<S: Scope>(
             ),
         )?;
     }
-    let props = device
-        .live()
-        .format_properties(device.parent(), record.format)?;
-    let features = if record.tiling == vk::ImageTiling::LINEAR {
-        props.linear_tiling_features
-    } else {
-        props.optimal_tiling_features
-    };
+    let features = super::image::tiling_features(device, &record)?;
     if !features.contains(vk::FormatFeatureFlags::TRANSFER_DST) {
         refuse(
             rules.features,

@@ -966,3 +966,36 @@ pub(crate) fn subresource_layout_checks(
     }
     Ok(())
 }
+
+/// The format features of an image's format for its tiling (the device asks the
+/// physical device once per format).
+pub(crate) fn tiling_features(
+    device: &Device,
+    image: &ImageRecord,
+) -> Result<vk::FormatFeatureFlags> {
+    let props = device
+        .live()
+        .format_properties(device.parent(), image.format)?;
+    Ok(if image.tiling == vk::ImageTiling::LINEAR {
+        props.linear_tiling_features
+    } else {
+        props.optimal_tiling_features
+    })
+}
+
+/// Where two images' bindings, as the device recorded them, share bytes of one
+/// memory: the message to refuse with; `None` when they are apart or either has no
+/// binding recorded. Where in its binding a region of an optimally tiled image lies
+/// is the driver's, so a command between two such images cannot tell more.
+pub(crate) fn bindings_overlap(
+    live: &crate::state::Live,
+    a: vk::Image,
+    b: vk::Image,
+) -> Option<String> {
+    let ((am, aoff, asize), (bm, boff, bsize)) = (live.binding(a)?, live.binding(b)?);
+    let apart =
+        am != bm || aoff.saturating_add(asize) <= boff || boff.saturating_add(bsize) <= aoff;
+    (!apart).then(|| {
+        format!("the source's memory ({aoff}..+{asize}) and the destination's ({boff}..+{bsize}) overlap")
+    })
+}

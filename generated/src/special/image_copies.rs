@@ -7,7 +7,8 @@
 //! written once, named by the version's VUID.
 
 use super::copies::{check_protected, check_regions, Protection, Region, Rules, NO_RULES};
-use super::{pool_family, refuse};
+use super::image::bindings_overlap;
+use super::{check, pool_family, refuse};
 use crate::recorder::{Recorder, Scope};
 use crate::state::ImageRecord;
 use crate::structs::CopyImageInfo2;
@@ -195,14 +196,6 @@ pub(crate) fn cmd_copy_image2_checks<S: Scope>(
         &read,
         &COPY_IMAGE2,
     )
-}
-
-fn check(vuid: &'static str, holds: bool, message: impl FnOnce() -> String) -> Result<()> {
-    if holds {
-        Ok(())
-    } else {
-        refuse(vuid, message())
-    }
 }
 
 /// How many planes an image's format has (0: not multi-planar).
@@ -467,14 +460,8 @@ fn check_image_copy<S: Scope>(
                 )?;
             }
         }
-    } else if let (Some((sm, soff, ssize)), Some((dm, doff, dsize))) =
-        (live.binding(src_image), live.binding(dst_image))
-    {
-        let apart =
-            sm != dm || soff.saturating_add(ssize) <= doff || doff.saturating_add(dsize) <= soff;
-        check(rules.overlap, apart, || {
-            format!("the source's memory ({soff}..+{ssize}) and the destination's ({doff}..+{dsize}) overlap")
-        })?;
+    } else if let Some(m) = bindings_overlap(live, src_image, dst_image) {
+        refuse(rules.overlap, m)?;
     }
     Ok(())
 }

@@ -59,6 +59,20 @@ pub(crate) use crate::support::refuse;
 use crate::Handle;
 use ash::vk;
 
+/// Refuses with `vuid` and the message unless `holds`; a rule a command does not
+/// have (`vuid` empty) holds.
+pub(crate) fn check(
+    vuid: &'static str,
+    holds: bool,
+    message: impl FnOnce() -> String,
+) -> crate::Result<()> {
+    if vuid.is_empty() || holds {
+        Ok(())
+    } else {
+        refuse(vuid, message())
+    }
+}
+
 /// The queue family of the recorder's command pool, as its pool's creation
 /// recorded it (all capabilities, for a pool the wrappers did not record).
 pub(crate) fn pool_family<S: Scope>(recorder: &Recorder<'_, S>) -> PoolFamily {

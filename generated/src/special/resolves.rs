@@ -4,7 +4,8 @@
 //! rule is written once, named by the version's VUID.
 
 use super::copies::{check_protected, Protection};
-use super::refuse;
+use super::image::{bindings_overlap, tiling_features};
+use super::{check, refuse};
 use crate::recorder::{Recorder, Scope};
 use crate::state::ImageRecord;
 use crate::structs::ResolveImageInfo2;
@@ -139,30 +140,6 @@ pub(crate) fn cmd_resolve_image2_checks<S: Scope>(
     check_resolve(recorder, (raw.src_image, raw.dst_image), read, &RESOLVE2)
 }
 
-fn check(vuid: &'static str, holds: bool, message: impl FnOnce() -> String) -> Result<()> {
-    if holds {
-        Ok(())
-    } else {
-        refuse(vuid, message())
-    }
-}
-
-/// The format features of an image's format for its tiling.
-fn features<S: Scope>(
-    recorder: &Recorder<'_, S>,
-    image: &ImageRecord,
-) -> Result<vk::FormatFeatureFlags> {
-    let device = recorder.device();
-    let props = device
-        .live()
-        .format_properties(device.parent(), image.format)?;
-    Ok(if image.tiling == vk::ImageTiling::LINEAR {
-        props.linear_tiling_features
-    } else {
-        props.optimal_tiling_features
-    })
-}
-
 fn check_resolve<S: Scope>(
     recorder: &Recorder<'_, S>,
     (src_image, dst_image): (vk::Image, vk::Image),
@@ -197,7 +174,10 @@ fn check_resolve<S: Scope>(
         )
     })?;
     type F = vk::FormatFeatureFlags;
-    let (src_features, dst_features) = (features(recorder, &src)?, features(recorder, &dst)?);
+    let (src_features, dst_features) = (
+        tiling_features(recorder.device(), &src)?,
+        tiling_features(recorder.device(), &dst)?,
+    );
     check(
         rules.dst_color_attachment,
         dst_features.contains(F::COLOR_ATTACHMENT),
@@ -215,14 +195,8 @@ fn check_resolve<S: Scope>(
     )?;
     // The images' bindings: regions of two images that share memory may overlap
     // there (where in its binding an optimally tiled region lies is the driver's).
-    if let (Some((sm, soff, ssize)), Some((dm, doff, dsize))) =
-        (live.binding(src_image), live.binding(dst_image))
-    {
-        let apart =
-            sm != dm || soff.saturating_add(ssize) <= doff || doff.saturating_add(dsize) <= soff;
-        check(rules.overlap, apart, || {
-            format!("the source's memory ({soff}..+{ssize}) and the destination's ({doff}..+{dsize}) overlap")
-        })?;
+    if let Some(m) = bindings_overlap(live, src_image, dst_image) {
+        refuse(rules.overlap, m)?;
     }
     let any_3d =
         src.image_type == vk::ImageType::TYPE_3D || dst.image_type == vk::ImageType::TYPE_3D;
