@@ -1,6 +1,7 @@
 //! The rules that apply to each emitted method: its command's own and those of every
 //! struct it takes, through members and `pNext` chains (but those the safe structs
-//! refuse, `special::UNCHAINED`), for the report's per-method table and the safety
+//! refuse, `special::UNCHAINED`), and of the indirect arguments it reads from GPU
+//! memory (`special::INDIRECT`), for the report's per-method table and the safety
 //! decision.
 
 use super::commands::Plan;
@@ -37,6 +38,13 @@ pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
                 .filter(|(_, shape)| !matches!(shape, super::commands::Param::Allocator))
                 .map(|(p, _)| p.type_name.clone())
                 .collect();
+            // The indirect arguments a command reads from GPU memory.
+            todo.extend(
+                super::special::INDIRECT
+                    .iter()
+                    .filter(|(command, _)| *command == plan.name)
+                    .map(|(_, read)| read.to_string()),
+            );
             while let Some(t) = todo.pop() {
                 let Some(def) = model.types.get(&t) else {
                     continue;

@@ -1345,9 +1345,12 @@ The caller upholds the rules that [`Self::dispatch`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds the rule that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchIndirect-offset-00407`: The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
+- `VUID-VkDispatchIndirectCommand-x-00417`: `x` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\]
+- `VUID-VkDispatchIndirectCommand-y-00418`: `y` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[1\]
+- `VUID-VkDispatchIndirectCommand-z-00419`: `z` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[2\]
 
 # Valid usage
 

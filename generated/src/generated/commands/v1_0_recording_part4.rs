@@ -824,7 +824,7 @@ The caller upholds the rules that [`Self::draw_indexed`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 6 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825`: If `robustBufferAccess2` is not enabled, (`indexSize` {times} (`firstIndex` + `indexCount`) + `offset`) must be less than or equal to the size of the bound index buffer, with `indexSize` being based on the type specified by `indexType`, where the index buffer, `indexType`, and `offset` are specified via `vkCmdBindIndexBuffer`
@@ -832,6 +832,8 @@ The caller upholds these 6 rules that no check of this method enforces (its comm
 - `VUID-vkCmdDrawIndexedIndirect-drawCount-00539`: If `drawCount` is equal to `1`, (`offset` + `sizeof`(`VkDrawIndexedIndirectCommand`)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndexedIndirect-drawCount-00540`: If `drawCount` is greater than `1`, (`stride` {times} (`drawCount` - 1) + `offset` + `sizeof`(`VkDrawIndexedIndirectCommand`)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndexedIndirect-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
+- `VUID-VkDrawIndexedIndirectCommand-None-00552`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
+- `VUID-VkDrawIndexedIndirectCommand-firstInstance-00554`: If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0`
 
 # Valid usage
 
@@ -1188,13 +1190,15 @@ The caller upholds the rules that [`Self::draw_indexed_indirect`] checks at run 
 
 # Safety
 
-The caller upholds these 5 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndirect-drawCount-00476`: If `drawCount` is greater than `1`, `stride` must be a multiple of `4` and must be greater than or equal to `sizeof`(`VkDrawIndirectCommand`)
 - `VUID-vkCmdDrawIndirect-drawCount-00487`: If `drawCount` is equal to `1`, (`offset` + `sizeof`(VkDrawIndirectCommand)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndirect-drawCount-00488`: If `drawCount` is greater than `1`, (`stride` {times} (`drawCount` - 1) + `offset` + `sizeof`(VkDrawIndirectCommand)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndirect-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
+- `VUID-VkDrawIndirectCommand-None-00500`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
+- `VUID-VkDrawIndirectCommand-firstInstance-00501`: If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0`
 
 # Valid usage
 

@@ -112,7 +112,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 10 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
@@ -124,6 +124,8 @@ The caller upholds these 10 rules that no check of this method enforces (its com
 - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-03154`: If count stored in `countBuffer` is greater than `1`, (`stride` {times} (`drawCount` - 1) + `offset` + sizeof(`VkDrawIndexedIndirectCommand`)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndexedIndirectCount-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
 - `VUID-vkCmdDrawIndexedIndirectCount-None-04445`: If `drawIndirectCount` is not enabled this function must not be used
+- `VUID-VkDrawIndexedIndirectCommand-None-00552`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
+- `VUID-VkDrawIndexedIndirectCommand-firstInstance-00554`: If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0`
 
 # Valid usage
 
@@ -514,7 +516,7 @@ The caller upholds the rules that [`Self::draw_indexed_indirect_count`] checks a
 
 # Safety
 
-The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
+The caller upholds these 11 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
@@ -525,6 +527,8 @@ The caller upholds these 9 rules that no check of this method enforces (its comm
 - `VUID-vkCmdDrawIndirectCount-countBuffer-03122`: If the count stored in `countBuffer` is greater than `1`, (`stride` {times} (`drawCount` - 1) + `offset` + sizeof(`VkDrawIndirectCommand`)) must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDrawIndirectCount-maxMultiviewInstanceIndex-02688`: If the draw is recorded in a render pass instance with multiview enabled, the maximum instance index must be less than or equal to VkPhysicalDeviceMultiviewProperties::`maxMultiviewInstanceIndex`
 - `VUID-vkCmdDrawIndirectCount-None-04445`: If `drawIndirectCount` is not enabled this function must not be used
+- `VUID-VkDrawIndirectCommand-None-00500`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
+- `VUID-VkDrawIndirectCommand-firstInstance-00501`: If the `drawIndirectFirstInstance` feature is not enabled, `firstInstance` must be `0`
 
 # Valid usage
 
