@@ -1021,7 +1021,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     } else {
         quote!(unsafe)
     };
-    let owned_doc = owned_rules_doc(owned, safety.is_empty());
+    let owned_doc = owned_rules_doc(&plan.name, owned, safety.is_empty());
     // No `-> ()`: a unit return is left out, as hand-written code would.
     let ret_arrow = if returns_unit {
         quote!()
@@ -1343,11 +1343,25 @@ fn given_ident(name: &proc_macro2::Ident) -> proc_macro2::Ident {
 
 /// The `# Safety` text of a method whose caller owns `owned` (empty when it owns
 /// none), with the section's heading when `heading` says no other text gave it one.
-fn owned_rules_doc(owned: &[crate::plan::safety::Owned], heading: bool) -> String {
+fn owned_rules_doc(command: &str, owned: &[crate::plan::safety::Owned], heading: bool) -> String {
     if owned.is_empty() {
         return String::new();
     }
     let mut s = String::from(if heading { "\n\n# Safety\n\n" } else { "\n\n" });
+    // An indirect command reads its arguments from GPU memory when it executes.
+    let read = crate::plan::special::INDIRECT
+        .iter()
+        .find(|(c, _)| *c == command)
+        .map(|(_, read)| *read);
+    if let Some(read) = read.filter(|r| {
+        owned
+            .iter()
+            .any(|o| o.vuid.starts_with(&format!("VUID-{r}-")))
+    }) {
+        s.push_str(&format!(
+            "The `{read}` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. "
+        ));
+    }
     s.push_str(&format!(
         "The caller upholds {} that no check of this method enforces (its command's and those of the structs it takes):\n",
         if owned.len() == 1 { "the rule".to_owned() } else { format!("these {} rules", owned.len()) }

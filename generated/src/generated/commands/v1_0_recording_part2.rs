@@ -1345,7 +1345,7 @@ The caller upholds the rules that [`Self::dispatch`] checks at run time: `VUID-v
 
 # Safety
 
-The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The `VkDispatchIndirectCommand` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchIndirect-offset-00407`: The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
 - `VUID-VkDispatchIndirectCommand-x-00417`: `x` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\]

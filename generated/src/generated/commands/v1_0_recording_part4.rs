@@ -824,7 +824,7 @@ The caller upholds the rules that [`Self::draw_indexed`] checks at run time: `VU
 
 # Safety
 
-The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
+The `VkDrawIndexedIndirectCommand` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. The caller upholds these 8 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirect-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825`: If `robustBufferAccess2` is not enabled, (`indexSize` {times} (`firstIndex` + `indexCount`) + `offset`) must be less than or equal to the size of the bound index buffer, with `indexSize` being based on the type specified by `indexType`, where the index buffer, `indexType`, and `offset` are specified via `vkCmdBindIndexBuffer`
@@ -1190,7 +1190,7 @@ The caller upholds the rules that [`Self::draw_indexed_indirect`] checks at run 
 
 # Safety
 
-The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
+The `VkDrawIndirectCommand` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. The caller upholds these 7 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirect-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndirect-drawCount-00476`: If `drawCount` is greater than `1`, `stride` must be a multiple of `4` and must be greater than or equal to `sizeof`(`VkDrawIndirectCommand`)

@@ -112,7 +112,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
 
 # Safety
 
-The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
+The `VkDrawIndexedIndirectCommand` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. The caller upholds these 12 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndexedIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndexedIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
@@ -516,7 +516,7 @@ The caller upholds the rules that [`Self::draw_indexed_indirect_count`] checks a
 
 # Safety
 
-The caller upholds these 11 rules that no check of this method enforces (its command's and those of the structs it takes):
+The `VkDrawIndirectCommand` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. The caller upholds these 11 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDrawIndirectCount-None-02721`: For a given vertex buffer binding, any attribute data fetched must be entirely contained within the corresponding vertex buffer binding, as described in Vertex Input Description
 - `VUID-vkCmdDrawIndirectCount-countBuffer-02717`: The count stored in `countBuffer` must be less than or equal to `VkPhysicalDeviceLimits::maxDrawIndirectCount`
