@@ -106,27 +106,14 @@ pub(crate) fn cmd_reset_query_pool_range<S: Scope>(
     let Some(record) = recorder.device().live().query_pool(query_pool.raw()) else {
         return Ok(());
     };
-    if first_query >= record.count {
-        refuse(
+    reset_range(
+        record.count,
+        (first_query, query_count),
+        (
             "VUID-vkCmdResetQueryPool-firstQuery-00796",
-            format!(
-                "`firstQuery` must be less than the number of queries in `queryPool` \
-                 (`firstQuery` = {first_query}, queries = {})",
-                record.count
-            ),
-        )?;
-    }
-    if u64::from(first_query) + u64::from(query_count) > u64::from(record.count) {
-        refuse(
             "VUID-vkCmdResetQueryPool-firstQuery-00797",
-            format!(
-                "The sum of `firstQuery` and `queryCount` must be less than or equal to the \
-                 number of queries in `queryPool` (`firstQuery` = {first_query}, `queryCount` = \
-                 {query_count}, queries = {})",
-                record.count
-            ),
-        )?;
-    }
+        ),
+    )?;
     let range = u64::from(first_query)..u64::from(first_query) + u64::from(query_count);
     let pool = query_pool.raw();
     if let Some(q) = recorder
@@ -700,24 +687,40 @@ pub(crate) fn reset_query_pool_checks(
     let Some(record) = device.live().query_pool(query_pool.raw()) else {
         return Ok(());
     };
-    if first_query >= record.count {
-        refuse(
+    reset_range(
+        record.count,
+        (first_query, query_count),
+        (
             "VUID-vkResetQueryPool-firstQuery-02666",
+            "VUID-vkResetQueryPool-firstQuery-02667",
+        ),
+    )
+}
+
+/// Refuses a reset of queries `first..first + count` that starts or ends past a
+/// pool of `len` queries (`vuids`: the first query's rule, the end's), on the
+/// device or on the host alike.
+fn reset_range(
+    len: u32,
+    (first, count): (u32, u32),
+    vuids: (&'static str, &'static str),
+) -> Result<()> {
+    if first >= len {
+        refuse(
+            vuids.0,
             format!(
                 "`firstQuery` must be less than the number of queries in `queryPool` \
-                 (`firstQuery` = {first_query}, queries = {})",
-                record.count
+                 (`firstQuery` = {first}, queries = {len})"
             ),
         )?;
     }
-    if u64::from(first_query) + u64::from(query_count) > u64::from(record.count) {
+    if u64::from(first) + u64::from(count) > u64::from(len) {
         refuse(
-            "VUID-vkResetQueryPool-firstQuery-02667",
+            vuids.1,
             format!(
                 "The sum of `firstQuery` and `queryCount` must be less than or equal to the \
-                 number of queries in `queryPool` (`firstQuery` = {first_query}, `queryCount` = \
-                 {query_count}, queries = {})",
-                record.count
+                 number of queries in `queryPool` (`firstQuery` = {first}, `queryCount` = \
+                 {count}, queries = {len})"
             ),
         )?;
     }
