@@ -1120,7 +1120,7 @@ fn event(s: &Setup) -> tuff::Event {
 /// rules of the event's waits).
 macro_rules! event_fixture {
     (unsafe $name:ident, $args:ty, $stage:expr, $method:ident, $unchecked:ident) => {
-        event_fixture!(@ $name, $args, $stage, |r, e, m| unsafe { r.$method(e, m) }, $unchecked);
+        event_fixture!(@ $name, $args, $stage, |r, e, m| r.$method(e, m), $unchecked);
     };
     ($name:ident, $args:ty, $stage:expr, $method:ident, $unchecked:ident) => {
         event_fixture!(@ $name, $args, $stage, |r, e, m| r.$method(e, m), $unchecked);
@@ -1187,16 +1187,14 @@ fn cmd_wait_events(
         |r| {
             r.set_event(&e, vk::PipelineStageFlags::TRANSFER)
                 .expect("set");
-            unsafe {
-                r.wait_events(
-                    &tuff::HandleSlice::new(&events),
-                    a.src_stage_mask,
-                    a.dst_stage_mask,
-                    &[],
-                    &[],
-                    &[],
-                )
-            }
+            r.wait_events(
+                &tuff::HandleSlice::new(&events),
+                a.src_stage_mask,
+                a.dst_stage_mask,
+                &[],
+                &[],
+                &[],
+            )
         },
         |r| {
             r.set_event(&e, vk::PipelineStageFlags::TRANSFER)
@@ -2940,7 +2938,7 @@ fn cmd_wait_events2(
     let infos = [tuff::DependencyInfo::new()];
     record(
         s,
-        |r| unsafe { r.wait_events2(&e, &infos) },
+        |r| r.wait_events2(&e, &infos),
         // SAFETY: as in `buffer_create_info`; the command buffer is never submitted.
         |r| drop(unsafe { r.wait_events2_unchecked(&e, &infos) }),
     )

@@ -1404,8 +1404,7 @@ fn events_without_stages_need_synchronization2() {
         // the command buffer is never submitted.
         drop(unsafe { rec.set_event_unchecked(&event, none) });
     });
-    // SAFETY: no wait on the event is recorded or pending.
-    let reset = unsafe { rec.reset_event(&event, none) };
+    let reset = rec.reset_event(&event, none);
     assert_eq!(vuid(reset), "VUID-vkCmdResetEvent-stageMask-03937");
     layer_names(&s.messages, "VUID-vkCmdResetEvent-stageMask-03937", || {
         // SAFETY: as above.
@@ -1419,8 +1418,8 @@ fn events_without_stages_need_synchronization2() {
         .expect("event");
     let transfer = vk::PipelineStageFlags::TRANSFER;
     rec.set_event(&event, transfer).expect("set from a stage");
-    // SAFETY: no wait on the event is recorded or pending.
-    unsafe { rec.reset_event(&other, transfer) }.expect("reset from a stage");
+    rec.reset_event(&other, transfer)
+        .expect("reset from a stage");
     rec.end().expect("end");
     assert_silent(&s.messages);
 }

@@ -67,17 +67,15 @@ fn record_gated_fill(
     let mut rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin");
-    unsafe {
-        rec.wait_events(
-            gate,
-            vk::PipelineStageFlags::HOST,
-            vk::PipelineStageFlags::TRANSFER,
-            &[],
-            &[],
-            &[],
-        )
-        .expect("recorded")
-    };
+    rec.wait_events(
+        gate,
+        vk::PipelineStageFlags::HOST,
+        vk::PipelineStageFlags::TRANSFER,
+        &[],
+        &[],
+        &[],
+    )
+    .expect("recorded");
     rec.fill_buffer(buffer, 0, vk::WHOLE_SIZE, 7).expect("fill");
     rec.end().expect("end");
 }
@@ -515,17 +513,15 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
     let mut rec = primary
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin primary");
-    unsafe {
-        rec.wait_events(
-            &gate,
-            vk::PipelineStageFlags::HOST,
-            vk::PipelineStageFlags::TRANSFER,
-            &[],
-            &[],
-            &[],
-        )
-        .expect("recorded")
-    };
+    rec.wait_events(
+        &gate,
+        vk::PipelineStageFlags::HOST,
+        vk::PipelineStageFlags::TRANSFER,
+        &[],
+        &[],
+        &[],
+    )
+    .expect("recorded");
     unsafe { rec.execute_commands(&secondary) }.expect("execute");
     rec.end().expect("end primary");
     submit(&s, &[&primary], &done).expect("submit");
@@ -897,17 +893,15 @@ fn views_given_at_render_pass_begin_live_while_the_submission_is_pending() {
         let mut rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        unsafe {
-            rec.wait_events(
-                &gate,
-                vk::PipelineStageFlags::HOST,
-                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
-                &[],
-                &[],
-                &[],
-            )
-            .expect("recorded")
-        };
+        rec.wait_events(
+            &gate,
+            vk::PipelineStageFlags::HOST,
+            vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+            &[],
+            &[],
+            &[],
+        )
+        .expect("recorded");
         let rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
         rec.end_render_pass().end().expect("end");
         submit(&s, &[&cb], &done).expect("submit");
@@ -1435,17 +1429,15 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
         let secondary_begin =
             tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
         let mut rec = secondary.begin(&secondary_begin).expect("begin secondary");
-        unsafe {
-            rec.wait_events(
-                &gate,
-                vk::PipelineStageFlags::HOST,
-                vk::PipelineStageFlags::TRANSFER,
-                &[],
-                &[],
-                &[],
-            )
-            .expect("recorded")
-        };
+        rec.wait_events(
+            &gate,
+            vk::PipelineStageFlags::HOST,
+            vk::PipelineStageFlags::TRANSFER,
+            &[],
+            &[],
+            &[],
+        )
+        .expect("recorded");
         rec.fill_buffer(&buffer, 0, 256, 1).expect("fill");
         rec.end().expect("end secondary");
         assert_eq!(
@@ -1835,7 +1827,7 @@ fn slices_sharing_a_count_have_its_length() {
         "VUID-vkCmdBindVertexBuffers2-pStrides-parameter"
     );
     assert_eq!(
-        vuid(unsafe { rec.wait_events2(&gate, &[]) }),
+        vuid(rec.wait_events2(&gate, &[])),
         "VUID-vkCmdWaitEvents2-pDependencyInfos-parameter"
     );
     // The same recorder goes on: equal lengths, and empty optional slices as NULL.

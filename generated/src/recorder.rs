@@ -413,6 +413,8 @@ pub struct Recorder<'c, S: Scope> {
     pub(crate) layouts: crate::state::layouts::Recording,
     /// The queries the recording needs reset at its start and leaves so far.
     pub(crate) query_states: crate::state::queries::Recording,
+    /// What the recording does to events so far.
+    pub(crate) event_states: crate::state::events::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
     pub(crate) pass_images: Vec<vk::Image>,
     /// The descriptor sets bound so far, each with its generation then: an update
@@ -650,6 +652,7 @@ impl CommandBuffer {
             queries: Vec::new(),
             layouts: Default::default(),
             query_states: Default::default(),
+            event_states: Default::default(),
             pass_images: Vec::new(),
             sets: Vec::new(),
             events: Vec::new(),
@@ -812,6 +815,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             queries: self.queries,
             layouts: self.layouts,
             query_states: self.query_states,
+            event_states: self.event_states,
             pass_images: self.pass_images,
             sets: self.sets,
             events: self.events,
@@ -848,6 +852,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         self.cb.uses().ended(true);
         self.cb.uses().set_layouts(self.layouts);
         self.cb.uses().set_queries(self.query_states);
+        self.cb.uses().set_event_states(self.event_states);
         self.cb.uses().set_sets(self.sets);
         self.cb.uses().set_events(self.events);
         Ok(())

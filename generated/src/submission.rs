@@ -260,6 +260,38 @@ fn record_queries(device: &Device, cbs: &[vk::CommandBuffer], sub: &Vrc<Submissi
     overlay.commit(sub);
 }
 
+/// Refuses command buffers whose waits on events break on the states the device's
+/// earlier submissions, the host and the command buffers before them in `cbs`
+/// leave, or whose resets race a wait that may still be executing (the rule of the
+/// command that waits or resets).
+pub(crate) fn check_event_states(device: &Device, cbs: &[vk::CommandBuffer]) -> Result<()> {
+    let mut overlay = crate::state::events::Overlay::new(device.live());
+    for raw in cbs {
+        if let Some(events) = device
+            .command_buffer_uses(*raw)
+            .and_then(|u| u.event_states())
+        {
+            overlay.check(&events, |sub| !sub.poll(device))?;
+            overlay.apply(&events);
+        }
+    }
+    Ok(())
+}
+
+/// Records the event states that `cbs`, submitted in this order as `sub`, leave.
+fn record_event_states(device: &Device, cbs: &[vk::CommandBuffer], sub: &Vrc<Submission>) {
+    let mut overlay = crate::state::events::Overlay::new(device.live());
+    for raw in cbs {
+        if let Some(events) = device
+            .command_buffer_uses(*raw)
+            .and_then(|u| u.event_states())
+        {
+            overlay.apply(&events);
+        }
+    }
+    overlay.commit(sub);
+}
+
 /// The descriptor sets that `cbs` and the secondaries they execute bound (each with
 /// the generation it had then), and the events their event commands name.
 fn used(device: &Device, cbs: &[vk::CommandBuffer]) -> (Vec<(u64, u64)>, Vec<u64>) {
@@ -352,6 +384,7 @@ pub(crate) fn submitted(
     }
     record_layouts(device, cbs);
     record_queries(device, cbs, &sub);
+    record_event_states(device, cbs, &sub);
     let (sets, events) = used(device, cbs);
     device.live().sets_submitted(&sets, &sub);
     device.live().events_submitted(&events, queue, &sub);

@@ -631,6 +631,19 @@ fn expanded(stages: S2) -> S2 {
     stages | widen(super::stages::expand(low))
 }
 
+/// Every stage a mask of either version names: its meta stages spelled out, and
+/// the stages synchronization2 split out of the first version's (as events order
+/// waits and resets).
+pub(crate) fn every_stage(stages: S2) -> S2 {
+    let stages = expanded(stages);
+    stages | covered_stages(vk::PipelineStageFlags::from_raw(stages.as_raw() as u32))
+}
+
+/// [`every_stage`] of a first-version mask.
+pub(crate) fn every_stage1(stages: vk::PipelineStageFlags) -> S2 {
+    every_stage(widen(stages))
+}
+
 /// The checks of a pipeline barrier command of its own: the stages against the queue
 /// family and the access types, the dependency flags and barriers against the
 /// render pass instance it is recorded in, or outside one. `masks` are the first
@@ -639,6 +652,19 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
     recorder: &Recorder<'_, S>,
     masks: Option<(vk::PipelineStageFlags, vk::PipelineStageFlags)>,
     dependency_flags: vk::DependencyFlags,
+    barriers: &Barriers,
+    rules: &PipelineBarrierRules,
+) -> Result<()> {
+    check_barrier_scopes(recorder, masks, barriers, rules)?;
+    check_in_pass(recorder, masks, dependency_flags, barriers, rules)
+}
+
+/// The checks of a barrier command's scopes, which event waits share with pipeline
+/// barriers: the stages against the queue family (the host stage aside) and, without
+/// synchronization2, not empty; each access type against its stages.
+pub(crate) fn check_barrier_scopes<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    masks: Option<(vk::PipelineStageFlags, vk::PipelineStageFlags)>,
     barriers: &Barriers,
     rules: &PipelineBarrierRules,
 ) -> Result<()> {
@@ -746,6 +772,18 @@ pub(crate) fn check_pipeline_barrier<S: Scope>(
             access(b.dst_access, b.dst_stage, dst_vuid, &at)?;
         }
     }
+    Ok(())
+}
+
+/// The checks of a pipeline barrier against the render pass instance it is
+/// recorded in (its subpass's dependency on itself, the attachments), or outside one.
+fn check_in_pass<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    masks: Option<(vk::PipelineStageFlags, vk::PipelineStageFlags)>,
+    dependency_flags: vk::DependencyFlags,
+    barriers: &Barriers,
+    rules: &PipelineBarrierRules,
+) -> Result<()> {
     match &recorder.instance {
         None => {
             if dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
@@ -879,4 +917,55 @@ pub(crate) fn pipeline_barrier2_checks<S: Scope>(
     )?;
     check_barrier_structs(recorder, &barriers)?;
     super::image_layouts::dependency_checks(recorder, core::slice::from_ref(dependency_info))
+}
+
+/// After `vkCmdPipelineBarrier`: the event waits it orders before later resets,
+/// and the layouts its image barriers leave.
+pub(crate) fn pipeline_barrier_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    src_stage_mask: vk::PipelineStageFlags,
+    dst_stage_mask: vk::PipelineStageFlags,
+    image_memory_barriers: &[ImageMemoryBarrier<'_>],
+) {
+    recorder
+        .event_states
+        .barrier(every_stage1(src_stage_mask), every_stage1(dst_stage_mask));
+    super::image_layouts::cmd_pipeline_barrier_done(recorder, image_memory_barriers);
+}
+
+/// The stage masks of each barrier of a dependency info (source, destination).
+pub(crate) fn stage_pairs(info: &vk::DependencyInfo<'_>) -> Vec<(S2, S2)> {
+    // SAFETY: a safe struct's arrays, each stored with its length.
+    let (memory, buffers, images) = unsafe {
+        (
+            crate::state::raw_slice(info.p_memory_barriers, info.memory_barrier_count),
+            crate::state::raw_slice(
+                info.p_buffer_memory_barriers,
+                info.buffer_memory_barrier_count,
+            ),
+            crate::state::raw_slice(
+                info.p_image_memory_barriers,
+                info.image_memory_barrier_count,
+            ),
+        )
+    };
+    memory
+        .iter()
+        .map(|b| (b.src_stage_mask, b.dst_stage_mask))
+        .chain(buffers.iter().map(|b| (b.src_stage_mask, b.dst_stage_mask)))
+        .chain(images.iter().map(|b| (b.src_stage_mask, b.dst_stage_mask)))
+        .collect()
+}
+
+/// After `vkCmdPipelineBarrier2`: as the first version's.
+pub(crate) fn pipeline_barrier2_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    dependency_info: &DependencyInfo<'_>,
+) {
+    for (src, dst) in stage_pairs(dependency_info.as_raw()) {
+        recorder
+            .event_states
+            .barrier(every_stage(src), every_stage(dst));
+    }
+    super::image_layouts::dependency_done(recorder, core::slice::from_ref(dependency_info));
 }

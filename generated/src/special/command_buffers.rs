@@ -12,7 +12,7 @@ use crate::{Error, Handle, Result};
 use ash::vk;
 
 /// Refuses a pending secondary that may not run twice at once, and secondaries
-/// that need layouts or query states other than those the recording leaves.
+/// that need layouts, query or event states other than those the recording leaves.
 pub(crate) fn cmd_execute_commands_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     command_buffers: &[&CommandBuffer],
@@ -26,7 +26,8 @@ pub(crate) fn cmd_execute_commands_checks<S: Scope>(
         }
     }
     execute_layout_checks(recorder, command_buffers)?;
-    super::query::execute_queries_checks(recorder, command_buffers)
+    super::query::execute_queries_checks(recorder, command_buffers)?;
+    super::sync::execute_events_checks(recorder, command_buffers)
 }
 
 /// The recording executes the secondaries: the layouts and query states they
@@ -37,6 +38,7 @@ pub(crate) fn cmd_execute_commands_done<S: Scope>(
 ) {
     super::image_layouts::execute_layouts_done(recorder, command_buffers);
     super::query::execute_queries_done(recorder, command_buffers);
+    super::sync::execute_events_done(recorder, command_buffers);
 }
 
 /// A primary is pending while it may run; so are the secondaries it executes.

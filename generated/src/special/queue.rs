@@ -181,6 +181,7 @@ fn hold<'q, B: Batch>(
     submission::check_queries(device, &b.command_buffers)?;
     if !rules.events.is_empty() {
         submission::check_events(device, queue.raw(), &b.command_buffers, rules.events)?;
+        submission::check_event_states(device, &b.command_buffers)?;
     }
     submission::check_binary_ops(device, queue.raw(), &b.ops, rules.binary)?;
     if let Some(values) = rules.values {

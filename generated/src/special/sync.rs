@@ -1,16 +1,21 @@
 //! Fences, semaphores and events: their creation, host waits and signals, timeline
 //! values, and events set, reset and waited on in recordings.
 
-use super::barriers::{check_barrier_structs, Barriers};
+use super::barriers::{
+    check_barrier_scopes, check_barrier_structs, every_stage, every_stage1, stage_pairs, Barriers,
+    PipelineBarrierRules,
+};
 use super::image_layouts::{cmd_pipeline_barrier_done, dependency_done};
 use super::{chained, refuse, vulkan12_properties};
 use crate::handles::*;
 use crate::recorder::{Recorder, Scope};
+use crate::state::events::{judge1, judge2, Need, Signal};
 use crate::structs::{BufferMemoryBarrier, ImageMemoryBarrier, *};
 use crate::submission::{self};
 use crate::{Error, Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
+use std::sync::Arc;
 
 /// Refuses a fence whose queue operation may still be executing.
 pub(crate) fn reset_fences_checks(device: &Device, fences: &[&Fence]) -> Result<()> {
@@ -275,13 +280,212 @@ pub(crate) fn set_event_checks<S: Scope>(
     event_stage_checks(recorder, stage_mask, &SET_EVENT)
 }
 
-/// As [`set_event_checks`], for `vkCmdResetEvent`.
+/// As [`set_event_checks`], for `vkCmdResetEvent`, and no wait on the event that
+/// the recording made without a barrier ordering the reset after it.
 pub(crate) fn reset_event_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
+    event: &Event,
     stage_mask: vk::PipelineStageFlags,
 ) -> Result<()> {
-    event_stage_checks(recorder, stage_mask, &RESET_EVENT)
+    event_stage_checks(recorder, stage_mask, &RESET_EVENT)?;
+    recorder
+        .event_states
+        .check_reset(event.raw().as_raw(), every_stage1(stage_mask), false)
 }
+
+/// `vkCmdResetEvent2`: no wait on the event that the recording made without a
+/// barrier ordering the reset after it, on one physical device.
+pub(crate) fn reset_event2_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    event: &Event,
+    stage_mask: vk::PipelineStageFlags2,
+) -> Result<()> {
+    one_device(recorder, "VUID-vkCmdResetEvent2-commandBuffer-03833")?;
+    recorder
+        .event_states
+        .check_reset(event.raw().as_raw(), every_stage(stage_mask), true)
+}
+
+/// The command buffer's current device mask names one physical device.
+fn one_device<S: Scope>(recorder: &Recorder<'_, S>, vuid: &'static str) -> Result<()> {
+    let mask = recorder.current_device_mask;
+    if mask.count_ones() != 1 {
+        refuse(
+            vuid,
+            format!("the command buffer's current device mask {mask:#x} names other than one physical device"),
+        )?;
+    }
+    Ok(())
+}
+
+/// After `vkCmdSetEvent`: the event is set with `stage_mask`.
+pub(crate) fn set_event_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    event: &Event,
+    stage_mask: vk::PipelineStageFlags,
+) {
+    event_recorded(recorder, event);
+    recorder
+        .event_states
+        .set(event.raw().as_raw(), Signal::Set1(stage_mask));
+}
+
+/// After `vkCmdSetEvent2`: the event is set with the dependency info.
+pub(crate) fn set_event2_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    event: &Event,
+    dependency_info: &DependencyInfo<'_>,
+) {
+    event_recorded(recorder, event);
+    let digest = digest(dependency_info.as_raw());
+    recorder
+        .event_states
+        .set(event.raw().as_raw(), Signal::Set2(digest));
+}
+
+/// After `vkCmdResetEvent`: the event is unsignaled.
+pub(crate) fn reset_event_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    event: &Event,
+    stage_mask: vk::PipelineStageFlags,
+) {
+    event_recorded(recorder, event);
+    recorder
+        .event_states
+        .reset(event.raw().as_raw(), every_stage1(stage_mask), false);
+}
+
+/// After `vkCmdResetEvent2`: the event is unsignaled.
+pub(crate) fn reset_event2_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    event: &Event,
+    stage_mask: vk::PipelineStageFlags2,
+) {
+    event_recorded(recorder, event);
+    recorder
+        .event_states
+        .reset(event.raw().as_raw(), every_stage(stage_mask), true);
+}
+
+/// A dependency info as `vkCmdWaitEvents2` compares it with the one `vkCmdSetEvent2`
+/// gave (they must be exactly equal): each member of it and of its barriers, a
+/// chained struct by its address.
+fn digest(info: &vk::DependencyInfo<'_>) -> Arc<[u64]> {
+    // SAFETY: a safe struct's arrays, each stored with its length.
+    let (memory, buffers, images) = unsafe {
+        (
+            crate::state::raw_slice(info.p_memory_barriers, info.memory_barrier_count),
+            crate::state::raw_slice(
+                info.p_buffer_memory_barriers,
+                info.buffer_memory_barrier_count,
+            ),
+            crate::state::raw_slice(
+                info.p_image_memory_barriers,
+                info.image_memory_barrier_count,
+            ),
+        )
+    };
+    let mut d = vec![
+        u64::from(info.dependency_flags.as_raw()),
+        info.p_next as usize as u64,
+        memory.len() as u64,
+        buffers.len() as u64,
+        images.len() as u64,
+    ];
+    for b in memory {
+        d.extend([
+            b.p_next as usize as u64,
+            b.src_stage_mask.as_raw(),
+            b.src_access_mask.as_raw(),
+            b.dst_stage_mask.as_raw(),
+            b.dst_access_mask.as_raw(),
+        ]);
+    }
+    for b in buffers {
+        d.extend([
+            b.p_next as usize as u64,
+            b.src_stage_mask.as_raw(),
+            b.src_access_mask.as_raw(),
+            b.dst_stage_mask.as_raw(),
+            b.dst_access_mask.as_raw(),
+            u64::from(b.src_queue_family_index),
+            u64::from(b.dst_queue_family_index),
+            b.buffer.as_raw(),
+            b.offset,
+            b.size,
+        ]);
+    }
+    for b in images {
+        let r = b.subresource_range;
+        d.extend([
+            b.p_next as usize as u64,
+            b.src_stage_mask.as_raw(),
+            b.src_access_mask.as_raw(),
+            b.dst_stage_mask.as_raw(),
+            b.dst_access_mask.as_raw(),
+            b.old_layout.as_raw() as u64,
+            b.new_layout.as_raw() as u64,
+            u64::from(b.src_queue_family_index),
+            u64::from(b.dst_queue_family_index),
+            b.image.as_raw(),
+            u64::from(r.aspect_mask.as_raw()),
+            u64::from(r.base_mip_level),
+            u64::from(r.level_count),
+            u64::from(r.base_array_layer),
+            u64::from(r.layer_count),
+        ]);
+    }
+    d.into()
+}
+
+/// Whether each barrier of a dependency info holds only host operations in its
+/// first scope, and whether it has any barrier.
+fn host_scope(info: &vk::DependencyInfo<'_>) -> (bool, bool) {
+    let pairs = stage_pairs(info);
+    (
+        pairs
+            .iter()
+            .all(|(src, _)| *src == vk::PipelineStageFlags2::HOST),
+        !pairs.is_empty(),
+    )
+}
+
+/// The rules a first-version wait on events shares with a pipeline barrier (those
+/// of a barrier inside a render pass instance are the pipeline barrier's alone).
+const WAIT_EVENTS: PipelineBarrierRules = PipelineBarrierRules {
+    src_zero: "VUID-vkCmdWaitEvents-srcStageMask-03937",
+    dst_zero: "VUID-vkCmdWaitEvents-dstStageMask-03937",
+    src_unsupported: "VUID-vkCmdWaitEvents-srcStageMask-06459",
+    dst_unsupported: "VUID-vkCmdWaitEvents-dstStageMask-06460",
+    memory_src_access: "VUID-vkCmdWaitEvents-srcAccessMask-02815",
+    memory_dst_access: "VUID-vkCmdWaitEvents-dstAccessMask-02816",
+    buffer_src_access: "VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817",
+    buffer_dst_access: "VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818",
+    image_src_access: "VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819",
+    image_dst_access: "VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820",
+    view_local: "",
+    dynamic_rendering: "",
+    self_dependency: "",
+    image_attachment: "",
+    buffer_in_pass: "",
+    layout_in_pass: "",
+    transfer_in_pass: "",
+};
+
+/// The rules the second version's wait shares with a pipeline barrier.
+const WAIT_EVENTS2: PipelineBarrierRules = PipelineBarrierRules {
+    src_zero: "",
+    dst_zero: "",
+    src_unsupported: "VUID-vkCmdWaitEvents2-srcStageMask-03842",
+    dst_unsupported: "VUID-vkCmdWaitEvents2-dstStageMask-03843",
+    memory_src_access: "",
+    memory_dst_access: "",
+    buffer_src_access: "",
+    buffer_dst_access: "",
+    image_src_access: "",
+    image_dst_access: "",
+    ..WAIT_EVENTS
+};
 
 fn event_stage_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
@@ -363,15 +567,31 @@ pub(crate) fn event_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, event: &E
     }
 }
 
-/// After `vkCmdWaitEvents`: the events it names, and the layouts its barriers leave.
+/// After `vkCmdWaitEvents`: the events it names and waits on (what the recording
+/// does not know of them, each submission checks), and the layouts its barriers
+/// leave.
 pub(crate) fn wait_events_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     events: &[&Event],
+    src_stage_mask: vk::PipelineStageFlags,
+    dst_stage_mask: vk::PipelineStageFlags,
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) {
     for e in events {
         event_recorded(recorder, e);
     }
+    let raw: Vec<u64> = events.iter().map(|e| e.raw().as_raw()).collect();
+    let known = recorder.event_states.known(&raw);
+    let need = known
+        .iter()
+        .any(|(_, s)| s.is_none())
+        .then_some(Need::Wait1 {
+            src: src_stage_mask,
+            events: known,
+        });
+    recorder
+        .event_states
+        .waited(&raw, every_stage1(dst_stage_mask), false, need);
     cmd_pipeline_barrier_done(recorder, image_memory_barriers);
 }
 
@@ -382,8 +602,25 @@ pub(crate) fn wait_events2_done<S: Scope>(
     events: &[&Event],
     dependency_infos: &[DependencyInfo<'_>],
 ) {
-    for e in events {
+    for (e, info) in events.iter().zip(dependency_infos) {
         event_recorded(recorder, e);
+        let raw = e.raw().as_raw();
+        let info = info.as_raw();
+        let need = recorder.event_states.signal(raw).is_none().then(|| {
+            let (host_scope, barriers) = host_scope(info);
+            Need::Wait2 {
+                event: raw,
+                digest: digest(info),
+                host_scope,
+                barriers,
+            }
+        });
+        let stages = stage_pairs(info)
+            .iter()
+            .fold(vk::PipelineStageFlags2::empty(), |a, (_, dst)| {
+                a | every_stage(*dst)
+            });
+        recorder.event_states.waited(&[raw], stages, true, need);
     }
     dependency_done(recorder, dependency_infos);
 }
@@ -557,9 +794,40 @@ pub(crate) fn wait_events2_checks<S: Scope>(
     dependency_infos: &[DependencyInfo<'_>],
 ) -> Result<()> {
     for info in dependency_infos {
-        check_barrier_structs(recorder, &Barriers::of2(info))?;
+        let barriers = Barriers::of2(info);
+        check_barrier_scopes(recorder, None, &barriers, &WAIT_EVENTS2)?;
+        if recorder.instance.is_some()
+            && barriers
+                .scopes()
+                .any(|b| b.src_stage.contains(vk::PipelineStageFlags2::HOST))
+        {
+            refuse(
+                "VUID-vkCmdWaitEvents2-dependencyFlags-03844",
+                "a barrier's srcStageMask includes the host stage inside a render pass instance",
+            )?;
+        }
+        check_barrier_structs(recorder, &barriers)?;
     }
+    one_device(recorder, "VUID-vkCmdWaitEvents2-commandBuffer-03846")?;
     super::image_layouts::dependency_checks(recorder, dependency_infos)
+}
+
+/// The events of a second-version wait, as far as the recording set or reset them,
+/// are signaled as each dependency info says (after the command's other checks).
+pub(crate) fn wait_events2_signals<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    events: &[&Event],
+    dependency_infos: &[DependencyInfo<'_>],
+) -> Result<()> {
+    for (e, info) in events.iter().zip(dependency_infos) {
+        let raw = e.raw().as_raw();
+        if let Some(state) = recorder.event_states.signal(raw) {
+            let info = info.as_raw();
+            let (host, barriers) = host_scope(info);
+            judge2(raw, &digest(info), host, barriers, state)?;
+        }
+    }
+    Ok(())
 }
 
 /// The checks of the second version's event signal: its barriers against the
@@ -627,13 +895,74 @@ pub(crate) fn reset_event_hold<'d>(
     Ok(gate)
 }
 
+/// Held through the host's set of an event: the device's submission gate, so that
+/// no submission's check of the event's state comes between the set and its record.
+pub(crate) fn set_event_hold(device: &Device) -> Result<tuff_runtime::VutexGuard<'_, ()>> {
+    Ok(device.live().descriptor_gate())
+}
+
+/// After the host's `vkSetEvent`: the event is set by the host; or, where a
+/// submission that sets or resets it may still be executing, its state is not
+/// known (which comes last is timing).
+pub(crate) fn host_event_set(device: &Device, event: &Event) {
+    let raw = event.raw().as_raw();
+    let racing = device
+        .live()
+        .event_writer(raw)
+        .is_some_and(|s| !s.poll(device));
+    let signal = if racing {
+        Signal::Unknown
+    } else {
+        Signal::Host
+    };
+    device.live().event_signaled_on_host(raw, signal);
+}
+
+/// After the host's `vkResetEvent` (which no pending submission names): unsignaled.
+pub(crate) fn host_event_reset(device: &Device, event: &Event) {
+    device
+        .live()
+        .event_signaled_on_host(event.raw().as_raw(), Signal::Unset);
+}
+
 /// The checks of an event wait's barriers, and the layouts its image barriers move
 /// from.
 pub(crate) fn wait_events_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
+    src_stage_mask: vk::PipelineStageFlags,
+    dst_stage_mask: vk::PipelineStageFlags,
+    memory_barriers: &[MemoryBarrier<'_>],
     buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) -> Result<()> {
+    let masks = (src_stage_mask, dst_stage_mask);
+    let scoped = Barriers::of(
+        masks,
+        memory_barriers,
+        buffer_memory_barriers,
+        image_memory_barriers,
+    );
+    check_barrier_scopes(recorder, Some(masks), &scoped, &WAIT_EVENTS)?;
+    if recorder.instance.is_some() && src_stage_mask.contains(vk::PipelineStageFlags::HOST) {
+        refuse(
+            "VUID-vkCmdWaitEvents-srcStageMask-07308",
+            "srcStageMask includes the host stage inside a render pass instance",
+        )?;
+    }
+    let families = scoped
+        .buffers
+        .iter()
+        .map(|b| b.families)
+        .chain(scoped.images.iter().map(|b| b.families));
+    for (src, dst) in families {
+        if src != dst {
+            refuse(
+                "VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803",
+                format!("a barrier transfers queue family ownership ({src} to {dst}), which an event wait cannot"),
+            )?;
+        }
+    }
+    one_device(recorder, "VUID-vkCmdWaitEvents-commandBuffer-01167")?;
     // The structs' rules of the first version read no stage mask.
     let none = vk::PipelineStageFlags::empty();
     let barriers = Barriers::of(
@@ -644,4 +973,51 @@ pub(crate) fn wait_events_checks<S: Scope>(
     );
     check_barrier_structs(recorder, &barriers)?;
     super::image_layouts::cmd_pipeline_barrier_checks(recorder, image_memory_barriers)
+}
+
+/// Refuses secondaries whose event waits break on the states the recording leaves
+/// them, or whose resets race its waits.
+pub(crate) fn execute_events_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    command_buffers: &[&CommandBuffer],
+) -> Result<()> {
+    let mut so_far = recorder.event_states.clone();
+    for cb in command_buffers {
+        if let Some(theirs) = cb.uses().event_states() {
+            so_far.check_then(&theirs)?;
+            so_far.then(&theirs);
+        }
+    }
+    Ok(())
+}
+
+/// The recording executes the secondaries' event commands.
+pub(crate) fn execute_events_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    command_buffers: &[&CommandBuffer],
+) {
+    for cb in command_buffers {
+        if let Some(theirs) = cb.uses().event_states() {
+            recorder.event_states.then(&theirs);
+        }
+    }
+}
+
+/// The events of a first-version wait, where the recording set or reset them all,
+/// were set with the stage masks `src_stage_mask` ORs (after the command's other
+/// checks; where one's state comes from before the recording, the submission checks).
+pub(crate) fn wait_events_signals<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    events: &[&Event],
+    src_stage_mask: vk::PipelineStageFlags,
+) -> Result<()> {
+    let raw: Vec<u64> = events.iter().map(|e| e.raw().as_raw()).collect();
+    let known = recorder.event_states.known(&raw);
+    if known.iter().all(|(_, s)| s.is_some()) {
+        judge1(
+            src_stage_mask,
+            known.iter().filter_map(|(e, s)| Some((*e, s.as_ref()?))),
+        )?;
+    }
+    Ok(())
 }

@@ -61,6 +61,8 @@ struct UsesState {
     /// The queries the last recording needs reset at its start and what it leaves
     /// them; `None` while recording, or when it names none.
     queries: Option<Vrc<crate::state::queries::Recording>>,
+    /// What the last recording does to events, if it names any.
+    event_states: Option<Vrc<crate::state::events::Recording>>,
 }
 
 /// Where a command buffer stands, as the submission checks read it.
@@ -151,6 +153,7 @@ impl Uses {
             state.generation += 1;
             state.layouts = None;
             state.queries = None;
+            state.event_states = None;
             state.sets.clear();
             state.events.clear();
             core::mem::take(&mut state.secondaries)
@@ -223,6 +226,18 @@ impl Uses {
     /// The queries the last recording needs reset at its start and what it leaves.
     pub(crate) fn queries(&self) -> Option<Vrc<crate::state::queries::Recording>> {
         self.state.lock().queries.clone()
+    }
+
+    /// What the recording that just ended does to events.
+    pub(crate) fn set_event_states(&self, events: crate::state::events::Recording) {
+        let events = (!events.is_empty()).then(|| Vrc::new(events));
+        self.state.lock().event_states = events;
+    }
+
+    /// What the last recording does to events: the states it leaves, the waits
+    /// that read states from before it, and its resets.
+    pub(crate) fn event_states(&self) -> Option<Vrc<crate::state::events::Recording>> {
+        self.state.lock().event_states.clone()
     }
 
     /// The descriptor sets the recording that just ended bound (raw set, generation).

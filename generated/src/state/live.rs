@@ -170,6 +170,9 @@ pub(crate) struct Live {
     /// The submissions whose command buffers name each event, with their queues,
     /// weakly; those known complete are pruned as new ones come.
     pub(super) event_uses: Vutex<HashMap<u64, EventSubmissions>>,
+    /// Each event's state as the submissions and the host so far leave it, with
+    /// the last submissions that set, reset or wait on it.
+    pub(super) event_records: Vutex<HashMap<u64, super::events::EventRecord>>,
 }
 
 impl Default for Live {
@@ -189,6 +192,7 @@ impl Default for Live {
             timelines: Vutex::new(HashMap::default()),
             timeline_difference: std::sync::OnceLock::new(),
             event_uses: Vutex::new(HashMap::default()),
+            event_records: Vutex::new(HashMap::default()),
             binaries: Vutex::new(HashMap::default()),
             device_only_events: Vutex::new(std::collections::HashSet::new()),
             render_passes: Vutex::new(HashMap::default()),
@@ -302,6 +306,7 @@ impl Live {
         if unlisted && ty == vk::ObjectType::EVENT {
             self.device_only_events.lock().remove(&key.1);
             self.event_uses.lock().remove(&key.1);
+            self.forget_event(key.1);
         }
         if unlisted && ty == vk::ObjectType::RENDER_PASS {
             let gone = self.render_passes.lock().remove(&key.1);

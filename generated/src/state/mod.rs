@@ -11,6 +11,7 @@ mod buffer;
 mod command_buffer;
 mod command_pool;
 mod descriptors;
+pub(crate) mod events;
 mod features;
 mod framebuffer;
 mod image;

@@ -2809,6 +2809,7 @@ The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUI
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        crate::special::sync::host_event_reset(self, event);
         Ok(())
     }
     /**`vkResetFences`
@@ -2905,6 +2906,7 @@ The rules of `vkSetEvent` that apply to this crate's API ([reference page](https
         };
         self.validate_origins_set_event(event)?;
         crate::special::sync::host_event(self, event, "VUID-vkSetEvent-event-03941")?;
+        let _held = crate::special::sync::set_event_hold(self)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.set_event_unchecked(event) }
@@ -2928,6 +2930,7 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
         if r.as_raw() < 0 {
             return Err(Error::Vk(r));
         }
+        crate::special::sync::host_event_set(self, event);
         Ok(())
     }
     /**`vkUpdateDescriptorSets`

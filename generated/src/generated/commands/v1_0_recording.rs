@@ -290,8 +290,10 @@ The caller upholds the rules that [`Self::pipeline_barrier`] checks at run time:
                     image_memory_barriers.as_ptr().cast(),
                 )
             };
-            crate::special::image_layouts::cmd_pipeline_barrier_done(
+            crate::special::barriers::pipeline_barrier_done(
                 self,
+                src_stage_mask,
+                dst_stage_mask,
                 image_memory_barriers,
             );
             self.state_changed();
@@ -330,41 +332,12 @@ The caller upholds the rules that [`Self::pipeline_barrier`] checks at run time:
     }
     /**`vkCmdWaitEvents`
 
-# Safety
-
-The caller upholds these 15 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdWaitEvents-srcAccessMask-02815`: The `srcAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
-- `VUID-vkCmdWaitEvents-dstAccessMask-02816`: The `dstAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
-- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817`: For any element of `pBufferMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `srcQueueFamilyIndex` is the queue family index that was used to create the command pool that `commandBuffer` was allocated from, then its `srcAccessMask` member must only contain access flags that are supported by one or more of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
-- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818`: For any element of `pBufferMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `dstQueueFamilyIndex` is the queue family index that was used to create the command pool that `commandBuffer` was allocated from, then its `dstAccessMask` member must only contain access flags that are supported by one or more of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
-- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819`: For any element of `pImageMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `srcQueueFamilyIndex` is the queue family index that was used to create the command pool that `commandBuffer` was allocated from, then its `srcAccessMask` member must only contain access flags that are supported by one or more of the pipeline stages in `srcStageMask`, as specified in the table of supported access types
-- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820`: For any element of `pImageMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `dstQueueFamilyIndex` is the queue family index that was used to create the command pool that `commandBuffer` was allocated from, then its `dstAccessMask` member must only contain access flags that are supported by one or more of the pipeline stages in `dstStageMask`, as specified in the table of supported access types
-- `VUID-vkCmdWaitEvents-srcStageMask-06459`: Any pipeline stage included in `srcStageMask` must be supported by the capabilities of the queue family specified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo structure that was used to create the `VkCommandPool` that `commandBuffer` was allocated from, as specified in the table of supported pipeline stages
-- `VUID-vkCmdWaitEvents-dstStageMask-06460`: Any pipeline stage included in `dstStageMask` must be supported by the capabilities of the queue family specified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo structure that was used to create the `VkCommandPool` that `commandBuffer` was allocated from, as specified in the table of supported pipeline stages
-- `VUID-vkCmdWaitEvents-srcStageMask-01158`: `srcStageMask` must be the bitwise OR of the `stageMask` parameter used in previous calls to `vkCmdSetEvent` with any of the elements of `pEvents` and `VK_PIPELINE_STAGE_HOST_BIT` if any of the elements of `pEvents` was set using `vkSetEvent`
-- `VUID-vkCmdWaitEvents-srcStageMask-07308`: If `vkCmdWaitEvents` is being called inside a render pass instance, `srcStageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT`
-- `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803`: The `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members of any element of `pBufferMemoryBarriers` or `pImageMemoryBarriers` must be equal
-- `VUID-vkCmdWaitEvents-srcStageMask-03937`: If the `synchronization2` feature is not enabled, `srcStageMask` must not be `0`
-- `VUID-vkCmdWaitEvents-dstStageMask-03937`: If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
-- `VUID-vkCmdWaitEvents-pEvents-03847`: Elements of `pEvents` must not have been signaled by vkCmdSetEvent2
-- `VUID-vkCmdWaitEvents-commandBuffer-01167`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
-
 # Valid usage
 
 The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWaitEvents.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWaitEvents-srcAccessMask-02815` (*yours*; explicit rule): The `srcAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `srcStageMask`, as specified in the table of …
-- `VUID-vkCmdWaitEvents-dstAccessMask-02816` (*yours*; explicit rule): The `dstAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `dstStageMask`, as specified in the table of …
-- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817` (*yours*; explicit rule): For any element of `pBufferMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `srcQueueFamilyIndex` is the queue family index that was used to create …
-- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818` (*yours*; explicit rule): For any element of `pBufferMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `dstQueueFamilyIndex` is the queue family index that was used to create …
-- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819` (*yours*; explicit rule): For any element of `pImageMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `srcQueueFamilyIndex` is the queue family index that was used to create …
-- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820` (*yours*; explicit rule): For any element of `pImageMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `dstQueueFamilyIndex` is the queue family index that was used to create …
-- `VUID-vkCmdWaitEvents-srcStageMask-06459` (*yours*; explicit rule): Any pipeline stage included in `srcStageMask` must be supported by the capabilities of the queue family specified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo structure that was …
-- `VUID-vkCmdWaitEvents-dstStageMask-06460` (*yours*; explicit rule): Any pipeline stage included in `dstStageMask` must be supported by the capabilities of the queue family specified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo structure that was …
-- `VUID-vkCmdWaitEvents-srcStageMask-01158` (*yours*; explicit rule): `srcStageMask` must be the bitwise OR of the `stageMask` parameter used in previous calls to `vkCmdSetEvent` with any of the elements of `pEvents` and `VK_PIPELINE_STAGE_HOST_BIT` if any of the …
-- `VUID-vkCmdWaitEvents-srcStageMask-07308` (*yours*; explicit rule): If `vkCmdWaitEvents` is being called inside a render pass instance, `srcStageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT`
-- `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803` (*yours*; explicit rule): The `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members of any element of `pBufferMemoryBarriers` or `pImageMemoryBarriers` must be equal
+- `VUID-vkCmdWaitEvents-srcStageMask-06459` (*yours*; checked by the safe methods in every build): Any pipeline stage included in `srcStageMask` must be supported by the capabilities of the queue family specified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo structure that was …
+- `VUID-vkCmdWaitEvents-dstStageMask-06460` (*yours*; checked by the safe methods in every build): Any pipeline stage included in `dstStageMask` must be supported by the capabilities of the queue family specified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo structure that was …
 - `VUID-vkCmdWaitEvents-srcStageMask-04092` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
 - `VUID-vkCmdWaitEvents-dstStageMask-04092` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
 - `VUID-vkCmdWaitEvents-srcStageMask-04093` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
@@ -381,21 +354,30 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
 - `VUID-vkCmdWaitEvents-dstStageMask-07318` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-vkCmdWaitEvents-srcStageMask-07319` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-vkCmdWaitEvents-dstStageMask-07319` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
-- `VUID-vkCmdWaitEvents-srcStageMask-03937` (*yours*; explicit rule): If the `synchronization2` feature is not enabled, `srcStageMask` must not be `0`
-- `VUID-vkCmdWaitEvents-dstStageMask-03937` (*yours*; explicit rule): If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
-- `VUID-vkCmdWaitEvents-pEvents-03847` (*yours*; explicit rule): Elements of `pEvents` must not have been signaled by vkCmdSetEvent2
 - `VUID-vkCmdWaitEvents-srcStageMask-04996` (*yours*; explicit rule): `srcStageMask` must not be `0`
 - `VUID-vkCmdWaitEvents-dstStageMask-04996` (*yours*; explicit rule): `dstStageMask` must not be `0`
-- `VUID-vkCmdWaitEvents-commandBuffer-01167` (*yours*; explicit rule): `commandBuffer`&#8217;s current device mask must include exactly one physical device
+- `VUID-vkCmdWaitEvents-commandBuffer-01167` (*yours*; checked by the safe methods in every build): `commandBuffer`&#8217;s current device mask must include exactly one physical device
 - `VUID-vkCmdWaitEvents-srcStageMask-04090` (*checked*): If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
 - `VUID-vkCmdWaitEvents-srcStageMask-04091` (*checked*): If the `tessellationShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
 - `VUID-vkCmdWaitEvents-dstStageMask-04090` (*checked*): If the `geometryShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
 - `VUID-vkCmdWaitEvents-dstStageMask-04091` (*checked*): If the `tessellationShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
+- `VUID-vkCmdWaitEvents-srcAccessMask-02815` (*checked*): The `srcAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `srcStageMask`, as specified in the table of …
+- `VUID-vkCmdWaitEvents-dstAccessMask-02816` (*checked*): The `dstAccessMask` member of each element of `pMemoryBarriers` must only include access flags that are supported by one or more of the pipeline stages in `dstStageMask`, as specified in the table of …
+- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817` (*checked*): For any element of `pBufferMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `srcQueueFamilyIndex` is the queue family index that was used to create …
+- `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818` (*checked*): For any element of `pBufferMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `dstQueueFamilyIndex` is the queue family index that was used to create …
+- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819` (*checked*): For any element of `pImageMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `srcQueueFamilyIndex` is the queue family index that was used to create …
+- `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820` (*checked*): For any element of `pImageMemoryBarriers`, if its `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members are equal, or if its `dstQueueFamilyIndex` is the queue family index that was used to create …
+- `VUID-vkCmdWaitEvents-srcStageMask-01158` (*checked*): `srcStageMask` must be the bitwise OR of the `stageMask` parameter used in previous calls to `vkCmdSetEvent` with any of the elements of `pEvents` and `VK_PIPELINE_STAGE_HOST_BIT` if any of the …
+- `VUID-vkCmdWaitEvents-srcStageMask-07308` (*checked*): If `vkCmdWaitEvents` is being called inside a render pass instance, `srcStageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT`
+- `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803` (*checked*): The `srcQueueFamilyIndex` and `dstQueueFamilyIndex` members of any element of `pBufferMemoryBarriers` or `pImageMemoryBarriers` must be equal
 - `VUID-vkCmdWaitEvents-srcStageMask-parameter` (*checked*): `srcStageMask` must be a valid combination of VkPipelineStageFlagBits values
 - `VUID-vkCmdWaitEvents-dstStageMask-parameter` (*checked*): `dstStageMask` must be a valid combination of VkPipelineStageFlagBits values
 - `VUID-vkCmdWaitEvents-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, decode, or encode operations
 - `VUID-vkCmdWaitEvents-eventCount-arraylength` (*checked*): `eventCount` must be greater than `0`
 - `VUID-vkCmdWaitEvents-commonparent` (*checked*): Both of `commandBuffer`, and the elements of `pEvents` must have been created, allocated, or retrieved from the same VkDevice
+- `VUID-vkCmdWaitEvents-srcStageMask-03937` (*checked*): If the `synchronization2` feature is not enabled, `srcStageMask` must not be `0`
+- `VUID-vkCmdWaitEvents-dstStageMask-03937` (*checked*): If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
+- `VUID-vkCmdWaitEvents-pEvents-03847` (*checked*): Elements of `pEvents` must not have been signaled by vkCmdSetEvent2
 - `VUID-vkCmdWaitEvents-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdWaitEvents-pEvents-parameter` (*by the types*): `pEvents` must be a valid pointer to an array of `eventCount` valid VkEvent handles
 - `VUID-vkCmdWaitEvents-pMemoryBarriers-parameter` (*by the types*): If `memoryBarrierCount` is not `0`, `pMemoryBarriers` must be a valid pointer to an array of `memoryBarrierCount` valid VkMemoryBarrier structures
@@ -404,7 +386,7 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
 - `VUID-vkCmdWaitEvents-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdWaitEvents")]
     #[inline]
-    pub unsafe fn wait_events<'a, 'h>(
+    pub fn wait_events<'a, 'h>(
         &mut self,
         events: impl crate::Handles<'h, Event>,
         src_stage_mask: vk::PipelineStageFlags,
@@ -423,6 +405,9 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
         )?;
         crate::special::sync::wait_events_checks(
             self,
+            src_stage_mask,
+            dst_stage_mask,
+            memory_barriers,
             buffer_memory_barriers,
             image_memory_barriers,
         )?;
@@ -438,6 +423,7 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
                 );
             r?;
         }
+        crate::special::sync::wait_events_signals(self, events, src_stage_mask)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -455,7 +441,7 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUID-vkCmdWaitEvents-commonparent`, `VUID-vkCmdWaitEvents-srcStageMask-parameter`, `VUID-vkCmdWaitEvents-dstStageMask-parameter`, `VUID-vkCmdWaitEvents-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents-eventCount-arraylength`, `VUID-vkCmdWaitEvents-srcStageMask-04090`, `VUID-vkCmdWaitEvents-srcStageMask-04091`, `VUID-vkCmdWaitEvents-dstStageMask-04090`, `VUID-vkCmdWaitEvents-dstStageMask-04091`, `VUID-vkCmdWaitEvents-srcStageMask-01158`, `VUID-vkCmdWaitEvents-pEvents-03847`, `VUID-vkCmdWaitEvents-srcAccessMask-02815`, `VUID-vkCmdWaitEvents-dstAccessMask-02816`, `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817`, `VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818`, `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819`, `VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820`, `VUID-vkCmdWaitEvents-srcStageMask-06459`, `VUID-vkCmdWaitEvents-dstStageMask-06460`, `VUID-vkCmdWaitEvents-srcStageMask-07308`, `VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803`, `VUID-vkCmdWaitEvents-srcStageMask-03937`, `VUID-vkCmdWaitEvents-dstStageMask-03937`, `VUID-vkCmdWaitEvents-commandBuffer-01167`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn wait_events_unchecked<'a, 'h>(
         &mut self,
@@ -490,7 +476,13 @@ The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUI
                     image_memory_barriers.as_ptr().cast(),
                 )
             };
-            crate::special::sync::wait_events_done(self, events, image_memory_barriers);
+            crate::special::sync::wait_events_done(
+                self,
+                events,
+                src_stage_mask,
+                dst_stage_mask,
+                image_memory_barriers,
+            );
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let mut reached = crate::validation::Reached::keeping(

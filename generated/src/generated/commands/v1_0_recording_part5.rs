@@ -111,19 +111,11 @@ The caller upholds the rules that [`Self::next_subpass`] checks at run time: `VU
 impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
     /**`vkCmdResetEvent`
 
-# Safety
-
-The caller upholds these 2 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdResetEvent-event-03834`: There must be an execution dependency between `vkCmdResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
-- `VUID-vkCmdResetEvent-event-03835`: There must be an execution dependency between `vkCmdResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
-
 # Valid usage
 
 The rules of `vkCmdResetEvent` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
 - `VUID-vkCmdResetEvent-stageMask-06458` (*yours*; checked by the safe methods in every build): Any pipeline stage included in `stageMask` must be supported by the capabilities of the queue family specified by the `queueFamilyIndex` member of the VkCommandPoolCreateInfo structure that was used …
-- `VUID-vkCmdResetEvent-event-03834` (*yours*; explicit rule): There must be an execution dependency between `vkCmdResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent-stageMask-04092` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
 - `VUID-vkCmdResetEvent-stageMask-04093` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
 - `VUID-vkCmdResetEvent-stageMask-04094` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
@@ -132,23 +124,24 @@ The rules of `vkCmdResetEvent` that apply to this crate's API ([reference page](
 - `VUID-vkCmdResetEvent-stageMask-04097` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
 - `VUID-vkCmdResetEvent-stageMask-07318` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-vkCmdResetEvent-stageMask-07319` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
-- `VUID-vkCmdResetEvent-event-03835` (*yours*; explicit rule): There must be an execution dependency between `vkCmdResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent-stageMask-04996` (*yours*; explicit rule): `stageMask` must not be `0`
 - `VUID-vkCmdResetEvent-commandBuffer-01157` (*yours*; checked by the safe methods in every build): `commandBuffer`&#8217;s current device mask must include exactly one physical device
 - `VUID-vkCmdResetEvent-stageMask-04090` (*checked*): If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
 - `VUID-vkCmdResetEvent-stageMask-04091` (*checked*): If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT`
 - `VUID-vkCmdResetEvent-stageMask-01153` (*checked*): `stageMask` must not include `VK_PIPELINE_STAGE_HOST_BIT`
+- `VUID-vkCmdResetEvent-event-03834` (*checked*): There must be an execution dependency between `vkCmdResetEvent` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent-stageMask-parameter` (*checked*): `stageMask` must be a valid combination of VkPipelineStageFlagBits values
 - `VUID-vkCmdResetEvent-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, decode, or encode operations
 - `VUID-vkCmdResetEvent-commonparent` (*checked*): Both of `commandBuffer`, and `event` must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-vkCmdResetEvent-stageMask-03937` (*checked*): If the `synchronization2` feature is not enabled, `stageMask` must not be `0`
+- `VUID-vkCmdResetEvent-event-03835` (*checked*): There must be an execution dependency between `vkCmdResetEvent` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdResetEvent-event-parameter` (*by the types*): `event` must be a valid VkEvent handle
 - `VUID-vkCmdResetEvent-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state
 - `VUID-vkCmdResetEvent-renderpass` (*by the types*): This command must only be called outside of a render pass instance*/
     #[doc(alias = "vkCmdResetEvent")]
     #[inline]
-    pub unsafe fn reset_event(
+    pub fn reset_event(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags,
@@ -157,7 +150,7 @@ The rules of `vkCmdResetEvent` that apply to this crate's API ([reference page](
             let r = self.validate_reset_event(event, stage_mask);
             r?;
         }
-        crate::special::sync::reset_event_checks(self, stage_mask)?;
+        crate::special::sync::reset_event_checks(self, event, stage_mask)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.reset_event_unchecked(event, stage_mask) }
@@ -166,7 +159,7 @@ The rules of `vkCmdResetEvent` that apply to this crate's API ([reference page](
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkCmdResetEvent-commonparent`, `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-stageMask-04090`, `VUID-vkCmdResetEvent-stageMask-04091`, `VUID-vkCmdResetEvent-stageMask-01153`, `VUID-vkCmdResetEvent-stageMask-06458`, `VUID-vkCmdResetEvent-stageMask-03937`, `VUID-vkCmdResetEvent-commandBuffer-01157`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUID-vkCmdResetEvent-commonparent`, `VUID-vkCmdResetEvent-stageMask-parameter`, `VUID-vkCmdResetEvent-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent-stageMask-04090`, `VUID-vkCmdResetEvent-stageMask-04091`, `VUID-vkCmdResetEvent-stageMask-01153`, `VUID-vkCmdResetEvent-event-03834`, `VUID-vkCmdResetEvent-event-03835`, `VUID-vkCmdResetEvent-stageMask-06458`, `VUID-vkCmdResetEvent-stageMask-03937`, `VUID-vkCmdResetEvent-commandBuffer-01157`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_event_unchecked(
         &mut self,
@@ -177,7 +170,7 @@ The caller upholds the rules that [`Self::reset_event`] checks at run time: `VUI
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), event.raw(), stage_mask) };
-            crate::special::sync::event_recorded(self, event);
+            crate::special::sync::reset_event_done(self, event, stage_mask);
             self.state_changed();
             self.retain_with(event.address(), || event.retained());
         }
@@ -242,7 +235,7 @@ The caller upholds the rules that [`Self::set_event`] checks at run time: `VUID-
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), event.raw(), stage_mask) };
-            crate::special::sync::event_recorded(self, event);
+            crate::special::sync::set_event_done(self, event, stage_mask);
             self.state_changed();
             self.retain_with(event.address(), || event.retained());
         }

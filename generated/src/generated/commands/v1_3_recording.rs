@@ -1501,10 +1501,7 @@ The caller upholds the rules that [`Self::pipeline_barrier2`] checks at run time
             unsafe {
                 fp(self.raw(), dependency_info as *const DependencyInfo<'a> as *const _)
             };
-            crate::special::image_layouts::dependency_done(
-                self,
-                core::slice::from_ref(dependency_info),
-            );
+            crate::special::barriers::pipeline_barrier2_done(self, dependency_info);
             self.state_changed();
             let kept: Vec<tuff_runtime::Retained> = {
                 let mut reached = crate::validation::Reached::keeping(
@@ -1524,34 +1521,20 @@ The caller upholds the rules that [`Self::pipeline_barrier2`] checks at run time
     }
     /**`vkCmdWaitEvents2`
 
-# Safety
-
-The caller upholds these 9 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdWaitEvents2-pEvents-03837`: Members of `pEvents` must not have been signaled by vkCmdSetEvent
-- `VUID-vkCmdWaitEvents2-pEvents-03838`: For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
-- `VUID-vkCmdWaitEvents2-pEvents-03839`: For any element i of `pEvents`, if that event is signaled by vkSetEvent, barriers in the ith element of `pDependencyInfos` must include only host operations in their first synchronization scope
-- `VUID-vkCmdWaitEvents2-pEvents-03840`: For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` include only host operations, the ith element of `pEvents` must be signaled before vkCmdWaitEvents2 is executed
-- `VUID-vkCmdWaitEvents2-pEvents-03841`: For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` do not include host operations, the ith element of `pEvents` must be signaled by a corresponding vkCmdSetEvent2 that occurred earlier in submission order
-- `VUID-vkCmdWaitEvents2-srcStageMask-03842`: The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must either include only pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from, or include only `VK_PIPELINE_STAGE_2_HOST_BIT`
-- `VUID-vkCmdWaitEvents2-dstStageMask-03843`: The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must only include pipeline stages valid for the queue family that was used to create the command pool that `commandBuffer` was allocated from
-- `VUID-vkCmdWaitEvents2-dependencyFlags-03844`: If `vkCmdWaitEvents2` is being called inside a render pass instance, the `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must not include `VK_PIPELINE_STAGE_2_HOST_BIT`
-- `VUID-vkCmdWaitEvents2-commandBuffer-03846`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
-
 # Valid usage
 
 The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdWaitEvents2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdWaitEvents2-pEvents-03837` (*yours*; explicit rule): Members of `pEvents` must not have been signaled by vkCmdSetEvent
-- `VUID-vkCmdWaitEvents2-pEvents-03838` (*yours*; explicit rule): For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
-- `VUID-vkCmdWaitEvents2-pEvents-03839` (*yours*; explicit rule): For any element i of `pEvents`, if that event is signaled by vkSetEvent, barriers in the ith element of `pDependencyInfos` must include only host operations in their first synchronization scope
-- `VUID-vkCmdWaitEvents2-pEvents-03840` (*yours*; explicit rule): For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` include only host operations, the ith element of `pEvents` must be signaled before vkCmdWaitEvents2 is executed
-- `VUID-vkCmdWaitEvents2-pEvents-03841` (*yours*; explicit rule): For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` do not include host operations, the ith element of `pEvents` must be signaled by a corresponding vkCmdSetEvent2 …
-- `VUID-vkCmdWaitEvents2-srcStageMask-03842` (*yours*; explicit rule): The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must either include only pipeline stages valid for …
-- `VUID-vkCmdWaitEvents2-dstStageMask-03843` (*yours*; explicit rule): The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must only include pipeline stages valid for the …
-- `VUID-vkCmdWaitEvents2-dependencyFlags-03844` (*yours*; explicit rule): If `vkCmdWaitEvents2` is being called inside a render pass instance, the `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of …
-- `VUID-vkCmdWaitEvents2-commandBuffer-03846` (*yours*; explicit rule): `commandBuffer`&#8217;s current device mask must include exactly one physical device
+- `VUID-vkCmdWaitEvents2-srcStageMask-03842` (*yours*; checked by the safe methods in every build): The `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must either include only pipeline stages valid for …
+- `VUID-vkCmdWaitEvents2-dstStageMask-03843` (*yours*; checked by the safe methods in every build): The `dstStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of `pDependencyInfos` must only include pipeline stages valid for the …
+- `VUID-vkCmdWaitEvents2-commandBuffer-03846` (*yours*; checked by the safe methods in every build): `commandBuffer`&#8217;s current device mask must include exactly one physical device
 - `VUID-vkCmdWaitEvents2-synchronization2-03836` (*checked*): The `synchronization2` feature must be enabled
+- `VUID-vkCmdWaitEvents2-pEvents-03837` (*checked*): Members of `pEvents` must not have been signaled by vkCmdSetEvent
+- `VUID-vkCmdWaitEvents2-pEvents-03838` (*checked*): For any element i of `pEvents`, if that event is signaled by vkCmdSetEvent2, that command&#8217;s `dependencyInfo` parameter must be exactly equal to the ith element of `pDependencyInfos`
+- `VUID-vkCmdWaitEvents2-pEvents-03839` (*checked*): For any element i of `pEvents`, if that event is signaled by vkSetEvent, barriers in the ith element of `pDependencyInfos` must include only host operations in their first synchronization scope
+- `VUID-vkCmdWaitEvents2-pEvents-03840` (*checked*): For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` include only host operations, the ith element of `pEvents` must be signaled before vkCmdWaitEvents2 is executed
+- `VUID-vkCmdWaitEvents2-pEvents-03841` (*checked*): For any element i of `pEvents`, if barriers in the ith element of `pDependencyInfos` do not include host operations, the ith element of `pEvents` must be signaled by a corresponding vkCmdSetEvent2 …
+- `VUID-vkCmdWaitEvents2-dependencyFlags-03844` (*checked*): If `vkCmdWaitEvents2` is being called inside a render pass instance, the `srcStageMask` member of any element of the `pMemoryBarriers`, `pBufferMemoryBarriers`, or `pImageMemoryBarriers` members of …
 - `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter` (*checked*): `pDependencyInfos` must be a valid pointer to an array of `eventCount` valid VkDependencyInfo structures
 - `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, decode, or encode operations
 - `VUID-vkCmdWaitEvents2-eventCount-arraylength` (*checked*): `eventCount` must be greater than `0`
@@ -1561,7 +1544,7 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
 - `VUID-vkCmdWaitEvents2-commandBuffer-recording` (*by the types*): `commandBuffer` must be in the recording state*/
     #[doc(alias = "vkCmdWaitEvents2")]
     #[inline]
-    pub unsafe fn wait_events2<'a, 'h>(
+    pub fn wait_events2<'a, 'h>(
         &mut self,
         events: impl crate::Handles<'h, Event>,
         dependency_infos: &[DependencyInfo<'a>],
@@ -1584,6 +1567,7 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
             let r = self.validate_wait_events2(events, dependency_infos);
             r?;
         }
+        crate::special::sync::wait_events2_signals(self, events, dependency_infos)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.wait_events2_unchecked(events_given, dependency_infos) }
@@ -1592,7 +1576,7 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VUID-vkCmdWaitEvents2-commonparent`, `VUID-vkCmdWaitEvents2-commandBuffer-cmdpool`, `VUID-vkCmdWaitEvents2-eventCount-arraylength`, `VUID-vkCmdWaitEvents2-synchronization2-03836`, `VUID-vkCmdWaitEvents2-pEvents-03837`, `VUID-vkCmdWaitEvents2-pEvents-03838`, `VUID-vkCmdWaitEvents2-pEvents-03839`, `VUID-vkCmdWaitEvents2-pEvents-03840`, `VUID-vkCmdWaitEvents2-pEvents-03841`, `VUID-vkCmdWaitEvents2-srcStageMask-03842`, `VUID-vkCmdWaitEvents2-dstStageMask-03843`, `VUID-vkCmdWaitEvents2-dependencyFlags-03844`, `VUID-vkCmdWaitEvents2-commandBuffer-03846`, `VUID-vkCmdWaitEvents2-pDependencyInfos-parameter`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn wait_events2_unchecked<'a, 'h>(
         &mut self,
@@ -1711,20 +1695,10 @@ The caller upholds the rules that [`Self::write_timestamp2`] checks at run time:
 impl<'c, S: OutsideRenderPass> Recorder<'c, S> {
     /**`vkCmdResetEvent2`
 
-# Safety
-
-The caller upholds these 3 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdResetEvent2-event-03831`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
-- `VUID-vkCmdResetEvent2-event-03832`: There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
-- `VUID-vkCmdResetEvent2-commandBuffer-03833`: `commandBuffer`&#8217;s current device mask must include exactly one physical device
-
 # Valid usage
 
 The rules of `vkCmdResetEvent2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdResetEvent2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdResetEvent2-event-03831` (*yours*; explicit rule): There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
-- `VUID-vkCmdResetEvent2-event-03832` (*yours*; explicit rule): There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent2-stageMask-03931` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_CONDITIONAL_RENDERING_BIT_EXT`
 - `VUID-vkCmdResetEvent2-stageMask-03932` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
 - `VUID-vkCmdResetEvent2-stageMask-03933` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT`
@@ -1735,11 +1709,13 @@ The rules of `vkCmdResetEvent2` that apply to this crate's API ([reference page]
 - `VUID-vkCmdResetEvent2-stageMask-07317` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-vkCmdResetEvent2-stageMask-04957` (*yours*; explicit rule): If the `subpassShading` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_SUBPASS_SHADING_BIT_HUAWEI`
 - `VUID-vkCmdResetEvent2-stageMask-04995` (*yours*; explicit rule): If the `invocationMask` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_INVOCATION_MASK_BIT_HUAWEI`
-- `VUID-vkCmdResetEvent2-commandBuffer-03833` (*yours*; explicit rule): `commandBuffer`&#8217;s current device mask must include exactly one physical device
+- `VUID-vkCmdResetEvent2-commandBuffer-03833` (*yours*; checked by the safe methods in every build): `commandBuffer`&#8217;s current device mask must include exactly one physical device
 - `VUID-vkCmdResetEvent2-stageMask-03929` (*checked*): If the `geometryShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT`
 - `VUID-vkCmdResetEvent2-stageMask-03930` (*checked*): If the `tessellationShader` feature is not enabled, `stageMask` must not contain `VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT` or `VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT`
 - `VUID-vkCmdResetEvent2-synchronization2-03829` (*checked*): The `synchronization2` feature must be enabled
 - `VUID-vkCmdResetEvent2-stageMask-03830` (*checked*): `stageMask` must not include `VK_PIPELINE_STAGE_2_HOST_BIT`
+- `VUID-vkCmdResetEvent2-event-03831` (*checked*): There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents that includes `event` in its `pEvents` parameter
+- `VUID-vkCmdResetEvent2-event-03832` (*checked*): There must be an execution dependency between `vkCmdResetEvent2` and the execution of any vkCmdWaitEvents2 that includes `event` in its `pEvents` parameter
 - `VUID-vkCmdResetEvent2-stageMask-parameter` (*checked*): `stageMask` must be a valid combination of VkPipelineStageFlagBits2 values
 - `VUID-vkCmdResetEvent2-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics, compute, decode, or encode operations
 - `VUID-vkCmdResetEvent2-commonparent` (*checked*): Both of `commandBuffer`, and `event` must have been created, allocated, or retrieved from the same VkDevice
@@ -1749,17 +1725,16 @@ The rules of `vkCmdResetEvent2` that apply to this crate's API ([reference page]
 - `VUID-vkCmdResetEvent2-renderpass` (*by the types*): This command must only be called outside of a render pass instance*/
     #[doc(alias = "vkCmdResetEvent2")]
     #[inline]
-    pub unsafe fn reset_event2(
+    pub fn reset_event2(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
-    ) {
+    ) -> Result<()> {
         {
             let r = self.validate_reset_event2(event, stage_mask);
-            if !self.accept(r) {
-                return;
-            }
+            r?;
         }
+        crate::special::sync::reset_event2_checks(self, event, stage_mask)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.reset_event2_unchecked(event, stage_mask) }
@@ -1768,19 +1743,22 @@ The rules of `vkCmdResetEvent2` that apply to this crate's API ([reference page]
 
 # Safety
 
-The caller upholds the rules that [`Self::reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::reset_event2`] checks at run time: `VUID-vkCmdResetEvent2-commonparent`, `VUID-vkCmdResetEvent2-stageMask-parameter`, `VUID-vkCmdResetEvent2-commandBuffer-cmdpool`, `VUID-vkCmdResetEvent2-stageMask-03929`, `VUID-vkCmdResetEvent2-stageMask-03930`, `VUID-vkCmdResetEvent2-synchronization2-03829`, `VUID-vkCmdResetEvent2-stageMask-03830`, `VUID-vkCmdResetEvent2-event-03831`, `VUID-vkCmdResetEvent2-event-03832`, `VUID-vkCmdResetEvent2-commandBuffer-03833`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn reset_event2_unchecked(
         &mut self,
         event: &Event,
         stage_mask: vk::PipelineStageFlags2,
-    ) {
+    ) -> Result<()> {
         let fp = self.device().fns().fp_v1_3().cmd_reset_event2;
-        // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
-        unsafe { fp(self.raw(), event.raw(), stage_mask) };
-        crate::special::sync::event_recorded(self, event);
-        self.state_changed();
-        self.retain_with(event.address(), || event.retained());
+        {
+            // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
+            unsafe { fp(self.raw(), event.raw(), stage_mask) };
+            crate::special::sync::reset_event2_done(self, event, stage_mask);
+            self.state_changed();
+            self.retain_with(event.address(), || event.retained());
+        }
+        Ok(())
     }
     /**`vkCmdSetEvent2`
 
@@ -1838,7 +1816,7 @@ The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID
                     dependency_info as *const DependencyInfo<'a> as *const _,
                 )
             };
-            crate::special::sync::event_recorded(self, event);
+            crate::special::sync::set_event2_done(self, event, dependency_info);
             self.state_changed();
             self.retain_with(event.address(), || event.retained());
             let kept: Vec<tuff_runtime::Retained> = {

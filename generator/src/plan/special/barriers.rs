@@ -33,8 +33,13 @@ pub(super) const ROWS: &[Special] = &[
             ],
         ),
         after: call(
-            "special::image_layouts::cmd_pipeline_barrier_done",
-            &["self", "image_memory_barriers"],
+            "special::barriers::pipeline_barrier_done",
+            &[
+                "self",
+                "src_stage_mask",
+                "dst_stage_mask",
+                "image_memory_barriers",
+            ],
         ),
         settles: &[
             (
@@ -236,8 +241,8 @@ const PIPELINE_BARRIER2: Special = Special {
         &["self", "dependency_info"],
     ),
     after: call(
-        "special::image_layouts::dependency_done",
-        &["self", "core::slice::from_ref(dependency_info)"],
+        "special::barriers::pipeline_barrier2_done",
+        &["self", "dependency_info"],
     ),
     settles: &[
         (

@@ -18,6 +18,15 @@ const HOST_RESET_SAME: &str = "checked by the safe methods in every build, by th
 const UNPROVEN_ONE_DEVICE: &str = "checked by the safe methods in every build (the command buffer's current device mask, which the recorder follows from its begin and every vkCmdSetDeviceMask), but no test breaks it: lavapipe's devices have one physical device";
 const DEVICE_ONLY: &str =
     "checks the event was not created device-only, which the device records at its creation";
+const WAIT_SIGNALS: &str = "checks each event's state as the wait will see it: the recording follows what its own sets and resets leave (the stage mask of vkCmdSetEvent, the dependency info of vkCmdSetEvent2, unsignaled), and each submission checks the waits on events the command buffer did not set or reset against what the submissions before it and the host's vkSetEvent and vkResetEvent left, in submission order, under the device's submission gate; an event the host set while a submission that sets or resets it may still run is refused as not known";
+const WAIT_HOST_BEFORE: &str = "checks, as for the other rules of the events' states, that an event whose wait holds only host operations is set by the host before the submission (a set after it, before the wait executes, is refused: tuff cannot see when the wait executes; the 1.3.239 layer does not check it: the error alone proves it)";
+const WAIT_SCOPES: &str = "checks the wait's stages and each barrier's access types as a pipeline barrier's (the specification's table of the stages each access type is supported by)";
+const WAIT_HOST_IN_PASS: &str =
+    "checks the source stages against the render pass instance the recorder is inside";
+const WAIT_FAMILIES: &str =
+    "checks each buffer and image barrier names one queue family on both sides";
+const RESET_RACE: &str = "checks that a pipeline barrier recorded between a wait on the event and the reset orders the reset's stages after the wait's (its srcStageMask holds the wait's dstStageMask, or all commands, and its dstStageMask the reset's stage), and, for a reset no barrier from all commands precedes in its command buffer, at each submission, under the device's submission gate, that no wait on the event in an earlier command buffer of the submission or a submission that may still be executing comes before it (the 1.3.239 layer's synchronization validation reports it as SYNC-vkCmdResetEvent-missingbarrier-wait)";
+const WAIT_SIGNALS_ALONE: &str = "checks each event's state as for the wait's other rules of its events' signals (the 1.3.239 layer does not check it: the error alone proves it)";
 const EXPORTABLE: &str = "checks each handle type is exportable and the set compatible, as the physical device's external properties report (the 1.3.239 layer does not check it: proven by the error alone)";
 
 /// The rows of this concern.
@@ -75,6 +84,8 @@ pub(super) const ROWS: &[Special] = &[
             "special::sync::host_event",
             &["self", "event", "\"VUID-vkSetEvent-event-03941\""],
         ),
+        hold: call("special::sync::set_event_hold", &["self"]),
+        after: call("special::sync::host_event_set", &["self", "event"]),
         settles: &[("VUID-vkSetEvent-event-03941", How::Dynamic(DEVICE_ONLY))],
         ..NONE
     },
@@ -85,6 +96,7 @@ pub(super) const ROWS: &[Special] = &[
             &["self", "event", "\"VUID-vkResetEvent-event-03823\""],
         ),
         hold: call("special::sync::reset_event_hold", &["self", "event"]),
+        after: call("special::sync::host_event_reset", &["self", "event"]),
         settles: &[
             ("VUID-vkResetEvent-event-03823", How::Dynamic(DEVICE_ONLY)),
             ("VUID-vkResetEvent-event-03821", How::Dynamic(HOST_RESET_PENDING)),
@@ -114,24 +126,70 @@ pub(super) const ROWS: &[Special] = &[
         command: "vkCmdWaitEvents",
         check: call(
             "special::sync::wait_events_checks",
-            &["self", "buffer_memory_barriers", "image_memory_barriers"],
+            &[
+                "self",
+                "src_stage_mask",
+                "dst_stage_mask",
+                "memory_barriers",
+                "buffer_memory_barriers",
+                "image_memory_barriers",
+            ],
+        ),
+        check_last: call(
+            "special::sync::wait_events_signals",
+            &["self", "events", "src_stage_mask"],
         ),
         after: call(
             "special::sync::wait_events_done",
-            &["self", "events", "image_memory_barriers"],
+            &["self", "events", "src_stage_mask", "dst_stage_mask", "image_memory_barriers"],
         ),
+        settles: &[
+            ("VUID-vkCmdWaitEvents-srcStageMask-01158", How::Dynamic(WAIT_SIGNALS)),
+            ("VUID-vkCmdWaitEvents-pEvents-03847", How::Dynamic(WAIT_SIGNALS_ALONE)),
+            ("VUID-vkCmdWaitEvents-srcAccessMask-02815", How::Dynamic(WAIT_SCOPES)),
+            ("VUID-vkCmdWaitEvents-dstAccessMask-02816", How::Dynamic(WAIT_SCOPES)),
+            ("VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02817", How::Dynamic(WAIT_SCOPES)),
+            ("VUID-vkCmdWaitEvents-pBufferMemoryBarriers-02818", How::Dynamic(WAIT_SCOPES)),
+            ("VUID-vkCmdWaitEvents-pImageMemoryBarriers-02819", How::Dynamic(WAIT_SCOPES)),
+            ("VUID-vkCmdWaitEvents-pImageMemoryBarriers-02820", How::Dynamic(WAIT_SCOPES)),
+            ("VUID-vkCmdWaitEvents-srcStageMask-06459", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdWaitEvents-dstStageMask-06460", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdWaitEvents-srcStageMask-07308", How::Dynamic(WAIT_HOST_IN_PASS)),
+            ("VUID-vkCmdWaitEvents-srcQueueFamilyIndex-02803", How::Dynamic(WAIT_FAMILIES)),
+            ("VUID-vkCmdWaitEvents-srcStageMask-03937", How::Dynamic(EVENT_STAGES)),
+            ("VUID-vkCmdWaitEvents-dstStageMask-03937", How::Dynamic(EVENT_STAGES)),
+            ("VUID-vkCmdWaitEvents-commandBuffer-01167", How::User(UNPROVEN_ONE_DEVICE)),
+        ],
         ..NONE
     },
     Special {
         command: "vkCmdWaitEvents2",
-        check: call("special::sync::wait_events2_checks", &["self", "dependency_infos"]),
+        check: call(
+            "special::sync::wait_events2_checks",
+            &["self", "dependency_infos"],
+        ),
+        check_last: call(
+            "special::sync::wait_events2_signals",
+            &["self", "events", "dependency_infos"],
+        ),
         after: call("special::sync::wait_events2_done", &["self", "events", "dependency_infos"]),
+        settles: &[
+            ("VUID-vkCmdWaitEvents2-pEvents-03837", How::Dynamic(WAIT_SIGNALS)),
+            ("VUID-vkCmdWaitEvents2-pEvents-03838", How::Dynamic(WAIT_SIGNALS_ALONE)),
+            ("VUID-vkCmdWaitEvents2-pEvents-03839", How::Dynamic(WAIT_SIGNALS)),
+            ("VUID-vkCmdWaitEvents2-pEvents-03840", How::Dynamic(WAIT_HOST_BEFORE)),
+            ("VUID-vkCmdWaitEvents2-pEvents-03841", How::Dynamic(WAIT_SIGNALS_ALONE)),
+            ("VUID-vkCmdWaitEvents2-srcStageMask-03842", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdWaitEvents2-dstStageMask-03843", How::User(UNPROVEN_FAMILY)),
+            ("VUID-vkCmdWaitEvents2-dependencyFlags-03844", How::Dynamic(WAIT_HOST_IN_PASS)),
+            ("VUID-vkCmdWaitEvents2-commandBuffer-03846", How::User(UNPROVEN_ONE_DEVICE)),
+        ],
         ..NONE
     },
     Special {
         command: "vkCmdSetEvent",
         check_last: call("special::sync::set_event_checks", &["self", "stage_mask"]),
-        after: call("special::sync::event_recorded", &["self", "event"]),
+        after: call("special::sync::set_event_done", &["self", "event", "stage_mask"]),
         settles: &[
             ("VUID-vkCmdSetEvent-stageMask-06457", How::User(UNPROVEN_FAMILY)),
             ("VUID-vkCmdSetEvent-stageMask-03937", How::Dynamic(EVENT_STAGES)),
@@ -141,9 +199,11 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdResetEvent",
-        check_last: call("special::sync::reset_event_checks", &["self", "stage_mask"]),
-        after: call("special::sync::event_recorded", &["self", "event"]),
+        check_last: call("special::sync::reset_event_checks", &["self", "event", "stage_mask"]),
+        after: call("special::sync::reset_event_done", &["self", "event", "stage_mask"]),
         settles: &[
+            ("VUID-vkCmdResetEvent-event-03834", How::Dynamic(RESET_RACE)),
+            ("VUID-vkCmdResetEvent-event-03835", How::Dynamic(RESET_RACE)),
             ("VUID-vkCmdResetEvent-stageMask-06458", How::User(UNPROVEN_FAMILY)),
             ("VUID-vkCmdResetEvent-stageMask-03937", How::Dynamic(EVENT_STAGES)),
             ("VUID-vkCmdResetEvent-commandBuffer-01157", How::User(UNPROVEN_ONE_DEVICE)),
@@ -165,7 +225,7 @@ pub(super) const ROWS: &[Special] = &[
     Special {
         command: "vkCmdSetEvent2",
         check: call("special::sync::set_event2_checks", &["self", "dependency_info"]),
-        after: call("special::sync::event_recorded", &["self", "event"]),
+        after: call("special::sync::set_event2_done", &["self", "event", "dependency_info"]),
         settles: &[
             ("VUID-vkCmdSetEvent2-dependencyFlags-03825", How::Dynamic(SET_EVENT2_FLAGS)),
             ("VUID-vkCmdSetEvent2-srcStageMask-03827", How::User(UNPROVEN_FAMILY)),
@@ -176,7 +236,13 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCmdResetEvent2",
-        after: call("special::sync::event_recorded", &["self", "event"]),
+        check_last: call("special::sync::reset_event2_checks", &["self", "event", "stage_mask"]),
+        after: call("special::sync::reset_event2_done", &["self", "event", "stage_mask"]),
+        settles: &[
+            ("VUID-vkCmdResetEvent2-event-03831", How::Dynamic(RESET_RACE)),
+            ("VUID-vkCmdResetEvent2-event-03832", How::Dynamic(RESET_RACE)),
+            ("VUID-vkCmdResetEvent2-commandBuffer-03833", How::User(UNPROVEN_ONE_DEVICE)),
+        ],
         ..NONE
     },
     Special {
