@@ -888,7 +888,7 @@ fn barriers_inside_render_pass_instances_are_checked() {
     to_attachment
         .record(&mut rec, false)
         .expect("to COLOR_ATTACHMENT_OPTIMAL");
-    let mut rec = unsafe { rec.begin_rendering(&info) };
+    let mut rec = rec.begin_rendering(&info);
     for (version, rule) in [(Version::One, rule), (Version::Two, rule2)] {
         assert_eq!(
             vuid(b.record_as(&mut rec, false, (version, &handles))),

@@ -489,7 +489,7 @@ fn dynamic_rendering_draws_check_their_pipeline_formats() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = unsafe { rec.begin_rendering(rendering) };
+                let mut rec = rec.begin_rendering(rendering);
                 rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
                     .expect("bind");
                 let viewport = vk::Viewport {
@@ -990,7 +990,7 @@ fn multiview_draws_stay_under_the_instance_limit() {
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
                 .expect("begin");
-            let mut rec = unsafe { rec.begin_rendering(&rendering) };
+            let mut rec = rec.begin_rendering(&rendering);
             rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &pipeline)
                 .expect("bind");
             rec.bind_index_buffer(&index, 0, vk::IndexType::UINT32)
@@ -1336,7 +1336,7 @@ fn draws_do_not_write_read_only_depth_or_stencil() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = unsafe { rec.begin_rendering(&rendering) };
+                let mut rec = rec.begin_rendering(&rendering);
                 rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, pipeline)
                     .expect("bind");
                 rec.set_viewport(0, &[viewport]).expect("viewport");
@@ -1411,7 +1411,7 @@ fn draws_rasterize_their_attachments_samples() {
                 let rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
-                let mut rec = unsafe { rec.begin_rendering(&rendering) };
+                let mut rec = rec.begin_rendering(&rendering);
                 rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &four)
                     .expect("bind");
                 rec.set_viewport(0, &[viewport]).expect("viewport");

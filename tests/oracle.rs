@@ -3120,7 +3120,7 @@ fn rendering(s: &Setup, edit: &dyn Fn(&mut vk::RenderingInfo<'_>)) -> Outcome {
     let rec = cb
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    let rec = unsafe { rec.begin_rendering(&info) };
+    let rec = rec.begin_rendering(&info);
     let safe = rec.end_rendering().end();
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let rec = cb

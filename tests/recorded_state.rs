@@ -980,8 +980,7 @@ fn rendered<'c>(
         .render_area(AREA)
         .layer_count(1)
         .color_attachments(&color);
-    // SAFETY: the view is the target's, in the layout the rendering names.
-    let mut rec = unsafe { rec.begin_rendering(&rendering) };
+    let mut rec = rec.begin_rendering(&rendering);
     rec.begin_query(pool, 0, vk::QueryControlFlags::empty())
         .expect("begin query");
     rec

@@ -137,8 +137,7 @@ fn render_pass_instances_are_not_suspended() {
         let rec = cb
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin");
-        // SAFETY: the begin is refused, and the recorder records nothing after it.
-        let rec = unsafe { rec.begin_rendering(&info) };
+        let rec = rec.begin_rendering(&info);
         let rec = rec.end_rendering();
         match rec.end() {
             Err(tuff::Error::Misuse(_)) => {}

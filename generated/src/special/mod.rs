@@ -39,6 +39,7 @@ pub(crate) mod pipeline_stages;
 pub(crate) mod query;
 pub(crate) mod queue;
 pub(crate) mod render_pass;
+pub(crate) mod rendering;
 pub(crate) mod resolves;
 pub(crate) mod sampler;
 pub(crate) mod shader;

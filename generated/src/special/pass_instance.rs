@@ -3,10 +3,9 @@
 
 use super::refuse;
 use crate::recorder::{Recorder, Scope};
-use crate::structs::{RenderPassBeginInfo, *};
-use crate::{Error, Result};
+use crate::structs::RenderPassBeginInfo;
+use crate::Result;
 use ash::vk;
-use tuff_runtime::Vrc;
 
 /// The recorder enters subpass 0 of the render pass it begins.
 pub(crate) fn render_pass_begun<S: Scope>(
@@ -57,94 +56,12 @@ pub(crate) fn render_pass_begun<S: Scope>(
     });
 }
 
-/// Refuses a render pass instance that suspends or resumes: which commands run
-/// between a suspended instance and the one that resumes it, across command buffers
-/// and batches, is not followed, so a submission could not check its rules.
-pub(crate) fn begin_rendering_checks<S: Scope>(
-    _recorder: &Recorder<'_, S>,
-    rendering_info: &RenderingInfo<'_>,
-) -> Result<()> {
-    let flags = vk::RenderingFlags::SUSPENDING | vk::RenderingFlags::RESUMING;
-    if rendering_info.flags.intersects(flags) {
-        return Err(Error::Misuse(
-            "the safe begin_rendering does not suspend or resume render pass instances (their submission rules are not followed); use begin_rendering_unchecked, and keep VUID-VkSubmitInfo-pCommandBuffers-06014 to 06016 and 06193",
-        ));
-    }
-    Ok(())
-}
-
-/// The recorder enters dynamic rendering (one subpass, the info's view mask).
-pub(crate) fn rendering_begun<S: Scope>(
-    recorder: &mut Recorder<'_, S>,
-    rendering_info: &RenderingInfo<'_>,
-) {
-    let raw = rendering_info.as_raw();
-    // SAFETY: the safe setters stored the color attachments with their count and the
-    // depth and stencil ones as references that outlive the info.
-    let (color, depth, stencil) = unsafe {
-        (
-            crate::state::raw_slice(raw.p_color_attachments, raw.color_attachment_count),
-            raw.p_depth_attachment.as_ref(),
-            raw.p_stencil_attachment.as_ref(),
-        )
-    };
-    let no_attachments = color
-        .iter()
-        .chain(depth)
-        .chain(stencil)
-        .all(|a| a.image_view == vk::ImageView::null());
-    let live = recorder.device().live();
-    let format = |a: Option<&vk::RenderingAttachmentInfo<'_>>| {
-        a.and_then(|a| live.view(a.image_view))
-            .map_or(vk::Format::UNDEFINED, |v| v.format)
-    };
-    let rendering = crate::state::RenderingFormats {
-        view_mask: raw.view_mask,
-        colors: color.iter().map(|a| format(Some(a))).collect(),
-        depth: format(depth),
-        stencil: format(stencil),
-    };
-    let layout = |a: Option<&vk::RenderingAttachmentInfo<'_>>| {
-        a.filter(|a| a.image_view != vk::ImageView::null())
-            .map(|a| a.image_layout)
-    };
-    // The sample count of the first attachment with a view (they must agree).
-    let samples = color
-        .iter()
-        .chain(depth)
-        .chain(stencil)
-        .filter_map(|a| live.view(a.image_view))
-        .find_map(|v| live.image(v.image))
-        .map(|i| i.samples);
-    let images = color
-        .iter()
-        .chain(depth)
-        .chain(stencil)
-        .flat_map(|a| [a.image_view, a.resolve_image_view])
-        .filter_map(|v| live.view(v))
-        .map(|v| v.image)
-        .collect();
-    recorder.instance = Some(crate::recorder::PassInstance {
-        view_mask: raw.view_mask,
-        no_attachments,
-        dynamic: true,
-        rendering_images: Some(images),
-        rendering: Some(Vrc::new(rendering)),
-        rendering_layouts: Some((layout(depth), layout(stencil))),
-        rendering_samples: samples,
-        area: Some((raw.render_area, raw.layer_count)),
-        // SAFETY: the chain of a safe struct, and the type its sType names.
-        device_mask: unsafe { group_device_mask(raw.p_next) },
-        ..Default::default()
-    });
-}
-
 /// The device mask of a `VkDeviceGroupRenderPassBeginInfo` in a begin info's chain.
 ///
 /// # Safety
 ///
 /// `p_next` is a valid chain whose nodes are the types their `sType`s name.
-unsafe fn group_device_mask(p_next: *const std::ffi::c_void) -> Option<u32> {
+pub(super) unsafe fn group_device_mask(p_next: *const std::ffi::c_void) -> Option<u32> {
     // SAFETY: as the caller promises.
     let group: Option<&vk::DeviceGroupRenderPassBeginInfo<'_>> = unsafe {
         super::chained(

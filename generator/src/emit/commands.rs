@@ -1090,10 +1090,17 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // A transition's special check joins its other checks' result, which the
         // recorder keeps.
         let moves = plan.transition.is_some();
-        let last_code = last.map(|c| {
-            let c = special_call(&c, &ret_expr);
-            quote!(#c?;)
-        });
+        // A transition's last check joins its other checks' result too (the recorder
+        // keeps it); any other command returns its error.
+        let last_call = last.map(|c| special_call(&c, &ret_expr));
+        let last_code = match (&last_call, moves) {
+            (Some(c), false) => Some(quote!(#c?;)),
+            _ => None,
+        };
+        let last_join = match (&last_call, moves) {
+            (Some(c), true) => quote!(.and_then(|()| #c)),
+            _ => quote!(),
+        };
         let hold_code = special.and_then(|s| s.hold).map(|c| {
             let c = special_call(&c, &ret_expr);
             quote!(let _held = #c?;)
@@ -1208,11 +1215,11 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         let always_code = quote!(#(#same_len)* #always_code);
         let run = if moves && always.is_some() {
             quote! {
-                let r = always.and_then(|()| #rest_call);
+                let r = always.and_then(|()| #rest_call) #last_join;
             }
         } else {
             quote! {
-                let r = #rest_call;
+                let r = #rest_call #last_join;
             }
         };
         let (ret_checked, guard, call) = match (&transition, is_cmd) {

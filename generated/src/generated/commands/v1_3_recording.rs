@@ -5,68 +5,12 @@ use super::*;
 impl<'c> Recorder<'c, Outside> {
     /**`vkCmdBeginRendering`
 
-# Safety
-
-The caller upholds these 51 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkCmdBeginRendering-commandBuffer-06068`: If `commandBuffer` is a secondary command buffer, `pRenderingInfo->flags` must not include `VK_RENDERING_CONTENTS_SECONDARY_COMMAND_BUFFERS_BIT`
-- `VUID-VkRenderingAttachmentInfo-imageView-06129`: If `imageView` is not VK_NULL_HANDLE and has a non-integer color format, `resolveMode` must be `VK_RESOLVE_MODE_NONE` or `VK_RESOLVE_MODE_AVERAGE_BIT`
-- `VUID-VkRenderingAttachmentInfo-imageView-06130`: If `imageView` is not VK_NULL_HANDLE and has an integer color format, `resolveMode` must be `VK_RESOLVE_MODE_NONE` or `VK_RESOLVE_MODE_SAMPLE_ZERO_BIT`
-- `VUID-VkRenderingAttachmentInfo-imageView-06864`: If `imageView` is not VK_NULL_HANDLE, `resolveImageView` is not VK_NULL_HANDLE, and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageView` must have a sample count of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkRenderingAttachmentInfo-imageView-06865`: If `imageView` is not VK_NULL_HANDLE, `resolveImageView` is not VK_NULL_HANDLE, and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `imageView` and `resolveImageView` must have the same VkFormat
-- `VUID-VkRenderingAttachmentInfo-imageView-06135`: If `imageView` is not VK_NULL_HANDLE, `imageLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, or `VK_IMAGE_LAYOUT_PREINITIALIZED`
-- `VUID-VkRenderingAttachmentInfo-imageView-06136`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_UNDEFINED`, `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL`, `VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL`, or `VK_IMAGE_LAYOUT_PREINITIALIZED`
-- `VUID-VkRenderingAttachmentInfo-imageView-06132`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `imageView` must not have a sample count of `VK_SAMPLE_COUNT_1_BIT`
-- `VUID-VkRenderingAttachmentInfo-imageView-06860`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageView` must not be VK_NULL_HANDLE
-- `VUID-VkRenderingAttachmentInfo-imageView-06137`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingAttachmentInfo-imageView-06142`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL_KHR`
-- `VUID-VkRenderingAttachmentInfo-imageView-06145`: If `imageView` is not VK_NULL_HANDLE, `imageLayout` must not be `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR`
-- `VUID-VkRenderingAttachmentInfo-imageView-06146`: If `imageView` is not VK_NULL_HANDLE and `resolveMode` is not `VK_RESOLVE_MODE_NONE`, `resolveImageLayout` must not be `VK_IMAGE_LAYOUT_PRESENT_SRC_KHR`
-- `VUID-VkRenderingInfo-multisampledRenderToSingleSampled-06857`: If none of the VK_AMD_mixed_attachment_samples extension, the VK_NV_framebuffer_mixed_samples extension, or the `multisampledRenderToSingleSampled` feature are enabled, `imageView` members of `pDepthAttachment`, `pStencilAttachment`, and elements of `pColorAttachments` that are not VK_NULL_HANDLE must have been created with the same `sampleCount`
-- `VUID-VkRenderingInfo-colorAttachmentCount-06087`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, that `imageView` must have been created with `VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT`
-- `VUID-VkRenderingInfo-pDepthAttachment-06547`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->imageView` must have been created with a format that includes a depth aspect
-- `VUID-VkRenderingInfo-pDepthAttachment-06088`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->imageView` must have been created with `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkRenderingInfo-pStencilAttachment-06548`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->imageView` must have been created with a format that includes a stencil aspect
-- `VUID-VkRenderingInfo-pStencilAttachment-06089`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->imageView` must have been created with a stencil usage including `VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkRenderingInfo-colorAttachmentCount-06090`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, the `layout` member of that element of `pColorAttachments` must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-colorAttachmentCount-06091`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, if the `resolveMode` member of that element of `pColorAttachments` is not `VK_RESOLVE_MODE_NONE`, its `resolveImageLayout` member must not be `VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-pDepthAttachment-06092`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->layout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
-- `VUID-VkRenderingInfo-pDepthAttachment-06093`: If `pDepthAttachment` is not `NULL`, `pDepthAttachment->imageView` is not VK_NULL_HANDLE, and `pDepthAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pDepthAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
-- `VUID-VkRenderingInfo-pStencilAttachment-06094`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->layout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
-- `VUID-VkRenderingInfo-pStencilAttachment-06095`: If `pStencilAttachment` is not `NULL`, `pStencilAttachment->imageView` is not VK_NULL_HANDLE, and `pStencilAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pStencilAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL`
-- `VUID-VkRenderingInfo-pDepthAttachment-06102`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->resolveMode` must be one of the bits set in VkPhysicalDeviceDepthStencilResolveProperties::`supportedDepthResolveModes`
-- `VUID-VkRenderingInfo-pStencilAttachment-06103`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->resolveMode` must be one of the bits set in VkPhysicalDeviceDepthStencilResolveProperties::`supportedStencilResolveModes`
-- `VUID-VkRenderingInfo-pDepthAttachment-06104`: If `pDepthAttachment` or `pStencilAttachment` are both not `NULL`, `pDepthAttachment->imageView` and `pStencilAttachment->imageView` are both not VK_NULL_HANDLE, and VkPhysicalDeviceDepthStencilResolveProperties::`independentResolveNone` is `VK_FALSE`, the `resolveMode` of both structures must be the same value
-- `VUID-VkRenderingInfo-pDepthAttachment-06105`: If `pDepthAttachment` or `pStencilAttachment` are both not `NULL`, `pDepthAttachment->imageView` and `pStencilAttachment->imageView` are both not VK_NULL_HANDLE, VkPhysicalDeviceDepthStencilResolveProperties::`independentResolve` is `VK_FALSE`, and the `resolveMode` of neither structure is `VK_RESOLVE_MODE_NONE`, the `resolveMode` of both structures must be the same value
-- `VUID-VkRenderingInfo-colorAttachmentCount-06106`: `colorAttachmentCount` must be less than or equal to VkPhysicalDeviceLimits::`maxColorAttachments`
-- `VUID-VkRenderingInfo-pNext-06077`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.x` must be greater than or equal to 0
-- `VUID-VkRenderingInfo-pNext-06078`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.offset.y` must be greater than or equal to 0
-- `VUID-VkRenderingInfo-pNext-07815`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.extent.width` + `renderArea.offset.x` must be less than or equal to `maxFramebufferWidth`
-- `VUID-VkRenderingInfo-pNext-07816`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, `renderArea.extent.width` + `renderArea.offset.y` must be less than or equal to `maxFramebufferHeight`
-- `VUID-VkRenderingInfo-pNext-06079`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, the width of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to `renderArea.offset.x` + `renderArea.extent.width`
-- `VUID-VkRenderingInfo-pNext-06080`: If the `pNext` chain does not contain VkDeviceGroupRenderPassBeginInfo or its `deviceRenderAreaCount` member is equal to 0, the height of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to `renderArea.offset.y` + `renderArea.extent.height`
-- `VUID-VkRenderingInfo-pNext-06083`: If the `pNext` chain contains VkDeviceGroupRenderPassBeginInfo, the width of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to the sum of the `offset.x` and `extent.width` members of each element of `pDeviceRenderAreas`
-- `VUID-VkRenderingInfo-pNext-06084`: If the `pNext` chain contains VkDeviceGroupRenderPassBeginInfo, the height of the `imageView` member of any element of `pColorAttachments`, `pDepthAttachment`, or `pStencilAttachment` that is not VK_NULL_HANDLE must be greater than or equal to the sum of the `offset.y` and `extent.height` members of each element of `pDeviceRenderAreas`
-- `VUID-VkRenderingInfo-pDepthAttachment-06085`: If neither `pDepthAttachment` or `pStencilAttachment` are `NULL` and the `imageView` member of either structure is not VK_NULL_HANDLE, the `imageView` member of each structure must be the same
-- `VUID-VkRenderingInfo-pDepthAttachment-06086`: If neither `pDepthAttachment` or `pStencilAttachment` are `NULL`, and the `resolveMode` member of each is not `VK_RESOLVE_MODE_NONE`, the `resolveImageView` member of each structure must be the same
-- `VUID-VkRenderingInfo-colorAttachmentCount-06096`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, the `layout` member of that element of `pColorAttachments` must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-colorAttachmentCount-06097`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, if the `resolveMode` member of that element of `pColorAttachments` is not `VK_RESOLVE_MODE_NONE`, its `resolveImageLayout` member must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-pDepthAttachment-06098`: If `pDepthAttachment` is not `NULL`, `pDepthAttachment->imageView` is not VK_NULL_HANDLE, and `pDepthAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pDepthAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL`
-- `VUID-VkRenderingInfo-pStencilAttachment-06099`: If `pStencilAttachment` is not `NULL`, `pStencilAttachment->imageView` is not VK_NULL_HANDLE, and `pStencilAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pStencilAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-colorAttachmentCount-06100`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, the `layout` member of that element of `pColorAttachments` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-colorAttachmentCount-06101`: If `colorAttachmentCount` is not `0` and the `imageView` member of an element of `pColorAttachments` is not VK_NULL_HANDLE, if the `resolveMode` member of that element of `pColorAttachments` is not `VK_RESOLVE_MODE_NONE`, its `resolveImageLayout` member must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL`, `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`, `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL`, or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-pDepthAttachment-07732`: If `pDepthAttachment` is not `NULL` and `pDepthAttachment->imageView` is not VK_NULL_HANDLE, `pDepthAttachment->layout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-pDepthAttachment-07733`: If `pDepthAttachment` is not `NULL`, `pDepthAttachment->imageView` is not VK_NULL_HANDLE, and `pDepthAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pDepthAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-pStencilAttachment-07734`: If `pStencilAttachment` is not `NULL` and `pStencilAttachment->imageView` is not VK_NULL_HANDLE, `pStencilAttachment->layout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-pStencilAttachment-07735`: If `pStencilAttachment` is not `NULL`, `pStencilAttachment->imageView` is not VK_NULL_HANDLE, and `pStencilAttachment->resolveMode` is not `VK_RESOLVE_MODE_NONE`, `pStencilAttachment->resolveImageLayout` must not be `VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL` or `VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL`
-- `VUID-VkRenderingInfo-viewMask-06128`: The index of the most significant bit in `viewMask` must be less than `maxMultiviewViewCount`
-
 # Valid usage
 
 The rules of `vkCmdBeginRendering` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdBeginRendering.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkCmdBeginRendering-commandBuffer-06068` (*yours*; explicit rule): If `commandBuffer` is a secondary command buffer, `pRenderingInfo->flags` must not include `VK_RENDERING_CONTENTS_SECONDARY_COMMAND_BUFFERS_BIT`
 - `VUID-vkCmdBeginRendering-dynamicRendering-06446` (*checked*): The `dynamicRendering` feature must be enabled
+- `VUID-vkCmdBeginRendering-commandBuffer-06068` (*checked*): If `commandBuffer` is a secondary command buffer, `pRenderingInfo->flags` must not include `VK_RENDERING_CONTENTS_SECONDARY_COMMAND_BUFFERS_BIT`
 - `VUID-vkCmdBeginRendering-commandBuffer-cmdpool` (*checked*): The `VkCommandPool` that `commandBuffer` was allocated from must support graphics operations
 - `VUID-vkCmdBeginRendering-commandBuffer-parameter` (*by the types*): `commandBuffer` must be a valid VkCommandBuffer handle
 - `VUID-vkCmdBeginRendering-pRenderingInfo-parameter` (*by the types*): `pRenderingInfo` must be a valid pointer to a valid VkRenderingInfo structure
@@ -75,18 +19,23 @@ The rules of `vkCmdBeginRendering` that apply to this crate's API ([reference pa
 - `VUID-vkCmdBeginRendering-videocoding` (*by the types*): This command must only be called outside of a video coding scope*/
     #[doc(alias = "vkCmdBeginRendering")]
     #[inline]
-    pub unsafe fn begin_rendering<'a>(
+    pub fn begin_rendering<'a>(
         mut self,
         rendering_info: &RenderingInfo<'a>,
     ) -> Recorder<'c, InRendering> {
         let always: Result<()> = self
             .validate_origins_begin_rendering(rendering_info)
-            .and_then(|()| crate::special::pass_instance::begin_rendering_checks(
+            .and_then(|()| crate::special::rendering::begin_rendering_checks(
                 &self,
                 rendering_info,
             ));
         {
-            let r = always.and_then(|()| self.validate_begin_rendering(rendering_info));
+            let r = always
+                .and_then(|()| self.validate_begin_rendering(rendering_info))
+                .and_then(|()| crate::special::rendering::rendering_attachment_checks(
+                    &self,
+                    rendering_info,
+                ));
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -101,7 +50,7 @@ The rules of `vkCmdBeginRendering` that apply to this crate's API ([reference pa
 
 # Safety
 
-The caller upholds the rules that [`Self::begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, `VUID-vkCmdBeginRendering-dynamicRendering-06446`, `VUID-VkSubmitInfo-pCommandBuffers-06193`, `VUID-VkSubmitInfo-pCommandBuffers-06014`, `VUID-VkSubmitInfo-pCommandBuffers-06015`, `VUID-VkSubmitInfo-pCommandBuffers-06016`, `VUID-VkSubmitInfo2KHR-commandBuffer-06192`, `VUID-VkSubmitInfo2KHR-commandBuffer-06010`, `VUID-VkSubmitInfo2KHR-commandBuffer-06011`, `VUID-VkSubmitInfo2KHR-commandBuffer-06012`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::begin_rendering`] checks at run time: `VUID-vkCmdBeginRendering-commandBuffer-cmdpool`, `VUID-vkCmdBeginRendering-dynamicRendering-06446`, `VUID-vkCmdBeginRendering-commandBuffer-06068`, `VUID-VkRenderingAttachmentInfo-imageView-06129`, `VUID-VkRenderingAttachmentInfo-imageView-06130`, `VUID-VkRenderingAttachmentInfo-imageView-06864`, `VUID-VkRenderingAttachmentInfo-imageView-06865`, `VUID-VkRenderingAttachmentInfo-imageView-06135`, `VUID-VkRenderingAttachmentInfo-imageView-06136`, `VUID-VkRenderingAttachmentInfo-imageView-06132`, `VUID-VkRenderingAttachmentInfo-imageView-06860`, `VUID-VkRenderingAttachmentInfo-imageView-06137`, `VUID-VkRenderingAttachmentInfo-imageView-06142`, `VUID-VkRenderingAttachmentInfo-imageView-06145`, `VUID-VkRenderingAttachmentInfo-imageView-06146`, `VUID-VkRenderingInfo-multisampledRenderToSingleSampled-06857`, `VUID-VkRenderingInfo-colorAttachmentCount-06087`, `VUID-VkRenderingInfo-pDepthAttachment-06547`, `VUID-VkRenderingInfo-pDepthAttachment-06088`, `VUID-VkRenderingInfo-pStencilAttachment-06548`, `VUID-VkRenderingInfo-pStencilAttachment-06089`, `VUID-VkRenderingInfo-colorAttachmentCount-06090`, `VUID-VkRenderingInfo-colorAttachmentCount-06091`, `VUID-VkRenderingInfo-pDepthAttachment-06092`, `VUID-VkRenderingInfo-pDepthAttachment-06093`, `VUID-VkRenderingInfo-pStencilAttachment-06094`, `VUID-VkRenderingInfo-pStencilAttachment-06095`, `VUID-VkRenderingInfo-pDepthAttachment-06102`, `VUID-VkRenderingInfo-pStencilAttachment-06103`, `VUID-VkRenderingInfo-pDepthAttachment-06104`, `VUID-VkRenderingInfo-pDepthAttachment-06105`, `VUID-VkRenderingInfo-colorAttachmentCount-06106`, `VUID-VkRenderingInfo-pNext-06077`, `VUID-VkRenderingInfo-pNext-06078`, `VUID-VkRenderingInfo-pNext-07815`, `VUID-VkRenderingInfo-pNext-07816`, `VUID-VkRenderingInfo-pNext-06079`, `VUID-VkRenderingInfo-pNext-06080`, `VUID-VkRenderingInfo-pNext-06083`, `VUID-VkRenderingInfo-pNext-06084`, `VUID-VkRenderingInfo-pDepthAttachment-06085`, `VUID-VkRenderingInfo-pDepthAttachment-06086`, `VUID-VkRenderingInfo-colorAttachmentCount-06096`, `VUID-VkRenderingInfo-colorAttachmentCount-06097`, `VUID-VkRenderingInfo-pDepthAttachment-06098`, `VUID-VkRenderingInfo-pStencilAttachment-06099`, `VUID-VkRenderingInfo-colorAttachmentCount-06100`, `VUID-VkRenderingInfo-colorAttachmentCount-06101`, `VUID-VkRenderingInfo-pDepthAttachment-07732`, `VUID-VkRenderingInfo-pDepthAttachment-07733`, `VUID-VkRenderingInfo-pStencilAttachment-07734`, `VUID-VkRenderingInfo-pStencilAttachment-07735`, `VUID-VkRenderingInfo-viewMask-06128`, `VUID-VkSubmitInfo-pCommandBuffers-06193`, `VUID-VkSubmitInfo-pCommandBuffers-06014`, `VUID-VkSubmitInfo-pCommandBuffers-06015`, `VUID-VkSubmitInfo-pCommandBuffers-06016`, `VUID-VkSubmitInfo2KHR-commandBuffer-06192`, `VUID-VkSubmitInfo2KHR-commandBuffer-06010`, `VUID-VkSubmitInfo2KHR-commandBuffer-06011`, `VUID-VkSubmitInfo2KHR-commandBuffer-06012`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn begin_rendering_unchecked<'a>(
         mut self,
@@ -112,7 +61,7 @@ The caller upholds the rules that [`Self::begin_rendering`] checks at run time: 
         unsafe {
             fp(self.raw(), rendering_info as *const RenderingInfo<'a> as *const _)
         };
-        crate::special::pass_instance::rendering_begun(&mut self, rendering_info);
+        crate::special::rendering::rendering_begun(&mut self, rendering_info);
         let kept: Vec<tuff_runtime::Retained> = {
             let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(rendering_info) {

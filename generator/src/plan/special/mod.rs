@@ -33,6 +33,7 @@ mod pipeline_layout;
 mod query;
 mod queue;
 mod render_pass;
+mod rendering;
 mod resolves;
 mod sampler;
 mod shader;
@@ -307,6 +308,7 @@ pub const TABLES: &[(&str, &[Special])] = &[
     ("query", query::ROWS),
     ("queue", queue::ROWS),
     ("render_pass", render_pass::ROWS),
+    ("rendering", rendering::ROWS),
     ("resolves", resolves::ROWS),
     ("sampler", sampler::ROWS),
     ("shader", shader::ROWS),

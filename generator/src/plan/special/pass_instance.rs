@@ -24,7 +24,6 @@ const PASS_FAMILY: &str = "checked by the safe methods in every build (each depe
 const SUBPASSES: &str = "checks the subpass against the render pass's subpass count, which the device records at its creation and the recorder follows (a refused end first records the remaining subpasses, so the driver sees a valid end of an unsubmittable buffer)";
 const IN_RENDER_PASS: &str = "the method exists only on a recorder inside a render pass begun with `begin_render_pass` (its state type), not dynamic rendering nor a continuing secondary";
 const IN_RENDERING: &str = "the method exists only on a recorder inside dynamic rendering it began itself (its state type)";
-const NO_SUSPENSION: &str = "checked by the safe methods in every build: the safe `begin_rendering` refuses the SUSPENDING and RESUMING flags (tuff does not follow suspended render pass instances across commands and command buffers yet), so no recording made through the safe methods holds a suspended or resumed instance";
 
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
@@ -107,22 +106,6 @@ pub(super) const ROWS: &[Special] = &[
             ("VUID-vkCmdBeginRenderPass2-initialLayout-03094", How::User(PASS_BEGIN_UNPROVEN)),
             ("VUID-vkCmdBeginRenderPass2-initialLayout-03096", How::User(PASS_BEGIN_UNPROVEN)),
             ("VUID-vkCmdBeginRenderPass2-initialLayout-02844", How::User(PASS_BEGIN_UNPROVEN)),("VUID-vkCmdBeginRenderPass2-initialLayout-03100", How::Dynamic(LAYOUT_PASS))],
-        ..NONE
-    },
-    Special {
-        command: "vkCmdBeginRendering",
-        check: call("special::pass_instance::begin_rendering_checks", &["&self", "rendering_info"]),
-        after: call("special::pass_instance::rendering_begun", &["&mut self", "rendering_info"]),
-        settles: &[
-            ("VUID-VkSubmitInfo-pCommandBuffers-06193", How::User(NO_SUSPENSION)),
-            ("VUID-VkSubmitInfo-pCommandBuffers-06014", How::User(NO_SUSPENSION)),
-            ("VUID-VkSubmitInfo-pCommandBuffers-06015", How::User(NO_SUSPENSION)),
-            ("VUID-VkSubmitInfo-pCommandBuffers-06016", How::User(NO_SUSPENSION)),
-            ("VUID-VkSubmitInfo2KHR-commandBuffer-06192", How::User(NO_SUSPENSION)),
-            ("VUID-VkSubmitInfo2KHR-commandBuffer-06010", How::User(NO_SUSPENSION)),
-            ("VUID-VkSubmitInfo2KHR-commandBuffer-06011", How::User(NO_SUSPENSION)),
-            ("VUID-VkSubmitInfo2KHR-commandBuffer-06012", How::User(NO_SUSPENSION)),
-        ],
         ..NONE
     },
     Special {
