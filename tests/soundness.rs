@@ -3844,7 +3844,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
         assert_eq!(vuid(d.bind_image_memory(&i, &memory, offset)), one);
         let two = format!("VUID-VkBindImageMemoryInfo-{rule2}");
         let infos = [tuff::BindImageMemoryInfo::new(&i, &memory).memory_offset(offset)];
-        assert_eq!(vuid(unsafe { d.bind_image_memory2(&infos) }), two);
+        assert_eq!(vuid(d.bind_image_memory2(&infos)), two);
         assert_silent(&s.messages);
         // SAFETY: as for the buffer.
         layer_names(&s, &one, || {
@@ -3878,7 +3878,7 @@ fn memory_a_resource_does_not_fit_in_is_refused_and_the_layer_agrees() {
     );
     let infos_i = [tuff::BindImageMemoryInfo::new(&i, &again_i)];
     assert_eq!(
-        vuid(unsafe { d.bind_image_memory2(&infos_i) }),
+        vuid(d.bind_image_memory2(&infos_i)),
         "VUID-VkBindImageMemoryInfo-image-07460"
     );
     assert_silent(&s.messages);

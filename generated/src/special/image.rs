@@ -60,6 +60,7 @@ pub(crate) fn image_created(
             families: family_bits(create_info.sharing_mode, create_info.as_raw()),
             bound: false,
             external: external_handle_types(next),
+            for_swapchain: names_swapchain(next),
         },
         views,
     );
@@ -67,6 +68,15 @@ pub(crate) fn image_created(
         device.live().image_preinitialized(image.raw());
     }
     image
+}
+
+/// Whether an image create info's chain names a swapchain whose memory the image
+/// binds (a `VkImageSwapchainCreateInfoKHR` with a swapchain).
+fn names_swapchain(next: *const core::ffi::c_void) -> bool {
+    // SAFETY: the `pNext` of a safe struct, and the type the sType names.
+    let chained: Option<&vk::ImageSwapchainCreateInfoKHR<'_>> =
+        unsafe { chained(next, vk::StructureType::IMAGE_SWAPCHAIN_CREATE_INFO_KHR) };
+    chained.is_some_and(|c| c.swapchain != vk::SwapchainKHR::null())
 }
 
 /// The queue families of a concurrent resource as bits (see `ImageRecord::families`).
@@ -688,6 +698,7 @@ fn swapchain_image_rules(device: &Device, info: &vk::ImageCreateInfo<'_>) -> Res
         families: family_bits(info.sharing_mode, info),
         bound: implied.bound,
         external: implied.external,
+        for_swapchain: implied.for_swapchain,
     };
     let matches = made.flags == implied.flags
         && made.image_type == implied.image_type

@@ -573,9 +573,80 @@ pub(crate) fn bind_image_memory_checks(
     )
 }
 
-/// As [`bind_image_memory_checks`], for each info that binds a whole image; an info
-/// that binds one plane (a chained `VkBindImagePlaneMemoryInfo`) is checked only
-/// for the image being disjoint, and its plane's requirements stay the caller's.
+const KIND_IMAGE2: KindRules = KindRules {
+    requires_dedicated: "VUID-VkBindImageMemoryInfo-image-01445",
+    dedicated: "VUID-VkBindImageMemoryInfo-memory-01509",
+    protected: "VUID-VkBindImageMemoryInfo-None-01901",
+    unprotected: "VUID-VkBindImageMemoryInfo-None-01902",
+    export: "VUID-VkBindImageMemoryInfo-memory-02728",
+    device_address: None,
+};
+
+/// Refuses an image's device group binding whose counts or device indices do not
+/// fit the device, and split instance bind regions, which tuff does not follow
+/// (after the rules that need no record of instances).
+fn check_image_device_group(
+    device: &Device,
+    group: &vk::BindImageMemoryDeviceGroupInfo<'_>,
+    record: Option<&crate::state::ImageRecord>,
+    at: usize,
+) -> Result<()> {
+    let count = device.live().physical_count();
+    let (indices, regions) = (
+        group.device_index_count,
+        group.split_instance_bind_region_count,
+    );
+    if indices != 0 && regions != 0 {
+        refuse(
+            "VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01633",
+            format!("pBindInfos[{at}] gives both device indices ({indices}) and split instance bind regions ({regions})"),
+        )?;
+    }
+    if indices != 0 && indices != count {
+        refuse(
+            "VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01634",
+            format!("pBindInfos[{at}] gives {indices} device indices, and the device has {count} physical devices"),
+        )?;
+    }
+    // SAFETY: the safe setter stored the indices with their count.
+    let list = unsafe { crate::state::raw_slice(group.p_device_indices, indices) };
+    if let Some(bad) = list.iter().find(|d| **d >= count) {
+        refuse(
+            "VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-01635",
+            format!("pBindInfos[{at}] names device index {bad}, and the device has {count} physical devices"),
+        )?;
+    }
+    if regions != 0 && u64::from(regions) != u64::from(count) * u64::from(count) {
+        refuse(
+            "VUID-VkBindImageMemoryDeviceGroupInfo-splitInstanceBindRegionCount-01636",
+            format!("pBindInfos[{at}] gives {regions} split instance bind regions, and the device has {count} physical devices (their square is the count)"),
+        )?;
+    }
+    let split = vk::ImageCreateFlags::SPLIT_INSTANCE_BIND_REGIONS;
+    if regions != 0 && record.is_some_and(|r| !r.flags.contains(split)) {
+        refuse(
+            "VUID-VkBindImageMemoryInfo-pNext-01627",
+            format!("pBindInfos[{at}] gives split instance bind regions for an image created without VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT"),
+        )?;
+    }
+    if regions != 0 {
+        return Err(Error::Misuse(
+            "the safe bind_image_memory2 does not bind split instance bind regions (tuff does not follow the memory instances of a device group); use bind_image_memory2_unchecked",
+        ));
+    }
+    if count > 1 && indices != 0 {
+        refuse(
+            "VUID-VkBindImageMemoryInfo-pNext-01626",
+            format!("pBindInfos[{at}] names memory instances of a device group, which tuff does not follow; bind_image_memory2_unchecked takes them on the caller's word"),
+        )?;
+    }
+    Ok(())
+}
+
+/// As [`bind_image_memory_checks`], for each info: its chained device group info,
+/// an image named twice, and an image whose memory is a swapchain's. A plane of a
+/// disjoint image is refused: the device records one binding per image, which the
+/// overlap checks of copies, blits and attachments read.
 pub(crate) fn bind_image_memory2_checks(
     device: &Device,
     bind_infos: &[BindImageMemoryInfo<'_>],
@@ -583,21 +654,69 @@ pub(crate) fn bind_image_memory2_checks(
     for (i, info) in bind_infos.iter().enumerate() {
         let record = device.live().image(info.image);
         // SAFETY: the safe struct chains only structs pushed through `push_next`,
-        // each a valid Vulkan struct that starts with sType and pNext.
-        let plane = unsafe { chains(info.p_next, vk::StructureType::BIND_IMAGE_PLANE_MEMORY_INFO) };
-        if plane {
-            if record.is_some_and(|r| !r.flags.contains(vk::ImageCreateFlags::DISJOINT)) {
-                refuse(
-                    "VUID-VkBindImageMemoryInfo-pNext-01618",
-                    format!("pBindInfos[{i}] binds a plane of an image created without VK_IMAGE_CREATE_DISJOINT_BIT"),
-                )?;
-            }
-            continue;
+        // each a valid Vulkan struct of the type its sType names.
+        let (plane, swapchain, group) = unsafe {
+            (
+                chains(info.p_next, vk::StructureType::BIND_IMAGE_PLANE_MEMORY_INFO),
+                chains(
+                    info.p_next,
+                    vk::StructureType::BIND_IMAGE_MEMORY_SWAPCHAIN_INFO_KHR,
+                ),
+                chained::<vk::BindImageMemoryDeviceGroupInfo<'_>>(
+                    info.p_next,
+                    vk::StructureType::BIND_IMAGE_MEMORY_DEVICE_GROUP_INFO,
+                ),
+            )
+        };
+        if swapchain {
+            refuse(
+                "VUID-VkBindImageMemoryInfo-pNext-01631",
+                format!("pBindInfos[{i}] chains a VkBindImageMemorySwapchainInfoKHR, so its memory must be VK_NULL_HANDLE, and the safe info always names memory"),
+            )?;
+        }
+        if record.as_ref().is_some_and(|r| r.for_swapchain) {
+            refuse(
+                "VUID-VkBindImageMemoryInfo-image-01630",
+                format!("pBindInfos[{i}]'s image was created with a VkImageSwapchainCreateInfoKHR, so it is bound to its swapchain's memory through a chained VkBindImageMemorySwapchainInfoKHR, which the safe info cannot give (its memory must be VK_NULL_HANDLE); use bind_image_memory2_unchecked"),
+            )?;
+        }
+        if let Some(group) = group {
+            check_image_device_group(device, group, record.as_ref(), i)?;
+        }
+        let disjoint = record
+            .as_ref()
+            .is_some_and(|r| r.flags.contains(vk::ImageCreateFlags::DISJOINT));
+        if plane && !disjoint && record.is_some() {
+            refuse(
+                "VUID-VkBindImageMemoryInfo-pNext-01618",
+                format!("pBindInfos[{i}] binds a plane of an image created without VK_IMAGE_CREATE_DISJOINT_BIT"),
+            )?;
+        }
+        if disjoint {
+            return Err(Error::Misuse(
+                "the safe bind_image_memory2 does not bind the planes of a disjoint image (the device records one binding per image, which the overlap checks read); use bind_image_memory2_unchecked",
+            ));
         }
         if bind_infos[..i].iter().any(|b| b.image == info.image) {
             refuse(
-                BIND_IMAGE2.bound,
+                "VUID-vkBindImageMemory2-pBindInfos-04006",
                 format!("pBindInfos[{i}] binds an image an earlier info binds"),
+            )?;
+        }
+        if let Some(r) = record.as_ref() {
+            let object = Bound {
+                ty: vk::ObjectType::IMAGE,
+                raw: info.image.as_raw(),
+                protected: r.flags.contains(vk::ImageCreateFlags::PROTECTED),
+                external: r.external,
+                device_address: false,
+            };
+            check_memory_kind(
+                device,
+                &KIND_IMAGE2,
+                &object,
+                info.memory,
+                info.memory_offset,
             )?;
         }
         let reqs = image_requirements(device, info.image);

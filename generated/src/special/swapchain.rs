@@ -354,6 +354,7 @@ pub(crate) fn swapchain_created(
             ),
             bound: true,
             external: vk::ExternalMemoryHandleTypeFlags::empty(),
+            for_swapchain: true,
         },
         // SAFETY: the chain of a safe struct, and the type its sType names.
         unsafe {

@@ -37,6 +37,9 @@ pub(crate) struct ImageRecord {
     pub bound: bool,
     /// `VkExternalMemoryImageCreateInfo::handleTypes`.
     pub external: vk::ExternalMemoryHandleTypeFlags,
+    /// Made with a chained `VkImageSwapchainCreateInfoKHR` naming a swapchain (or a
+    /// swapchain's own image): its memory is the swapchain's.
+    pub for_swapchain: bool,
 }
 
 impl Live {

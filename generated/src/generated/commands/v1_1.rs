@@ -51,53 +51,18 @@ The caller upholds the rules that [`Self::bind_buffer_memory2`] checks at run ti
     }
     /**`vkBindImageMemory2`
 
-# Safety
-
-The caller upholds these 30 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-vkBindImageMemory2-pBindInfos-02858`: If any VkBindImageMemoryInfo::`image` was created with `VK_IMAGE_CREATE_DISJOINT_BIT` then all planes of VkBindImageMemoryInfo::`image` must be bound individually in separate `pBindInfos`
-- `VUID-vkBindImageMemory2-pBindInfos-04006`: `pBindInfos` must not refer to the same image subresource more than once
-- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01633`: At least one of `deviceIndexCount` and `splitInstanceBindRegionCount` must be zero
-- `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01634`: `deviceIndexCount` must either be zero or equal to the number of physical devices in the logical device
-- `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-01635`: All elements of `pDeviceIndices` must be valid device indices
-- `VUID-VkBindImageMemoryDeviceGroupInfo-splitInstanceBindRegionCount-01636`: `splitInstanceBindRegionCount` must either be zero or equal to the number of physical devices in the logical device squared
-- `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-01637`: Elements of `pSplitInstanceBindRegions` that correspond to the same instance of an image must not overlap
-- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01638`: The `offset.x` member of any element of `pSplitInstanceBindRegions` must be a multiple of the sparse image block width (`VkSparseImageFormatProperties::imageGranularity.width`) of all non-metadata aspects of the image
-- `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01639`: The `offset.y` member of any element of `pSplitInstanceBindRegions` must be a multiple of the sparse image block height (`VkSparseImageFormatProperties::imageGranularity.height`) of all non-metadata aspects of the image
-- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01640`: The `extent.width` member of any element of `pSplitInstanceBindRegions` must either be a multiple of the sparse image block width of all non-metadata aspects of the image, or else `extent.width` + `offset.x` must equal the width of the image subresource
-- `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01641`: The `extent.height` member of any element of `pSplitInstanceBindRegions` must either be a multiple of the sparse image block height of all non-metadata aspects of the image, or else `extent.height` + `offset.y` must equal the height of the image subresource
-- `VUID-VkBindImageMemoryInfo-image-01445`: If `image` requires a dedicated allocation (as reported by vkGetImageMemoryRequirements2 in VkMemoryDedicatedRequirements::`requiresDedicatedAllocation` for `image`), `memory` must have been created with VkMemoryDedicatedAllocateInfo::`image` equal to `image`
-- `VUID-VkBindImageMemoryInfo-memory-01509`: If the `VkMemoryAllocateInfo` provided when `memory` was allocated included a VkMemoryDedicatedAllocateInfo structure in its `pNext` chain, and VkMemoryDedicatedAllocateInfo::`image` was not VK_NULL_HANDLE, then `image` must equal VkMemoryDedicatedAllocateInfo::`image` and `memoryOffset` must be zero
-- `VUID-VkBindImageMemoryInfo-None-01901`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit set, the image must be bound to a memory object allocated with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-VkBindImageMemoryInfo-None-01902`: If image was created with the `VK_IMAGE_CREATE_PROTECTED_BIT` bit not set, the image must not be bound to a memory object created with a memory type that reports `VK_MEMORY_PROPERTY_PROTECTED_BIT`
-- `VUID-VkBindImageMemoryInfo-memory-02728`: If the value of VkExportMemoryAllocateInfo::`handleTypes` used to allocate `memory` is not `0`, it must include at least one of the handles set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
-- `VUID-VkBindImageMemoryInfo-memory-02729`: If `memory` was created by a memory import operation, the external handle type of the imported memory must also have been set in VkExternalMemoryImageCreateInfo::`handleTypes` when `image` was created
-- `VUID-VkBindImageMemoryInfo-image-07736`: If `image` was created with the `VK_IMAGE_CREATE_DISJOINT_BIT` bit set, then the `pNext` chain must include a VkBindImagePlaneMemoryInfo structure
-- `VUID-VkBindImageMemoryInfo-pNext-01619`: If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, `memory` must have been allocated using one of the memory types allowed in the `memoryTypeBits` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements2 with `image` and where VkBindImagePlaneMemoryInfo::`planeAspect` corresponds to the VkImagePlaneMemoryRequirementsInfo::`planeAspect` in the VkImageMemoryRequirementsInfo2 structure&#8217;s `pNext` chain
-- `VUID-VkBindImageMemoryInfo-pNext-01620`: If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, `memoryOffset` must be an integer multiple of the `alignment` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements2 with `image` and where VkBindImagePlaneMemoryInfo::`planeAspect` corresponds to the VkImagePlaneMemoryRequirementsInfo::`planeAspect` in the VkImageMemoryRequirementsInfo2 structure&#8217;s `pNext` chain
-- `VUID-VkBindImageMemoryInfo-pNext-01621`: If the `pNext` chain includes a VkBindImagePlaneMemoryInfo structure, the difference of the size of `memory` and `memoryOffset` must be greater than or equal to the `size` member of the VkMemoryRequirements structure returned from a call to vkGetImageMemoryRequirements2 with the same `image` and where VkBindImagePlaneMemoryInfo::`planeAspect` corresponds to the VkImagePlaneMemoryRequirementsInfo::`planeAspect` in the VkImageMemoryRequirementsInfo2 structure&#8217;s `pNext` chain
-- `VUID-VkBindImageMemoryInfo-pNext-01626`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, all instances of `memory` specified by VkBindImageMemoryDeviceGroupInfo::`pDeviceIndices` must have been allocated
-- `VUID-VkBindImageMemoryInfo-pNext-01627`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, and VkBindImageMemoryDeviceGroupInfo::`splitInstanceBindRegionCount` is not zero, then `image` must have been created with the `VK_IMAGE_CREATE_SPLIT_INSTANCE_BIND_REGIONS_BIT` bit set
-- `VUID-VkBindImageMemoryInfo-pNext-01628`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, all elements of VkBindImageMemoryDeviceGroupInfo::`pSplitInstanceBindRegions` must be valid rectangles contained within the dimensions of `image`
-- `VUID-VkBindImageMemoryInfo-pNext-01629`: If the `pNext` chain includes a VkBindImageMemoryDeviceGroupInfo structure, the union of the areas of all elements of VkBindImageMemoryDeviceGroupInfo::`pSplitInstanceBindRegions` that correspond to the same instance of `image` must cover the entire image
-- `VUID-VkBindImageMemoryInfo-image-01630`: If `image` was created with a valid swapchain handle in VkImageSwapchainCreateInfoKHR::`swapchain`, then the `pNext` chain must include a VkBindImageMemorySwapchainInfoKHR structure containing the same swapchain handle
-- `VUID-VkBindImageMemoryInfo-pNext-01631`: If the `pNext` chain includes a VkBindImageMemorySwapchainInfoKHR structure, `memory` must be VK_NULL_HANDLE
-- `VUID-VkBindImageMemoryInfo-pNext-01632`: If the `pNext` chain does not include a VkBindImageMemorySwapchainInfoKHR structure, `memory` must be a valid VkDeviceMemory handle
-- `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644`: `imageIndex` must be less than the number of images in `swapchain`
-- `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02283`: If the image&#8217;s `tiling` is `VK_IMAGE_TILING_LINEAR` or `VK_IMAGE_TILING_OPTIMAL`, then `planeAspect` must be a single valid format plane for the image (that is, for a two-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT` or `VK_IMAGE_ASPECT_PLANE_1_BIT`, and for a three-plane image `planeAspect` must be `VK_IMAGE_ASPECT_PLANE_0_BIT`, `VK_IMAGE_ASPECT_PLANE_1_BIT` or `VK_IMAGE_ASPECT_PLANE_2_BIT`)
-
 # Valid usage
 
 The rules of `vkBindImageMemory2` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkBindImageMemory2.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-vkBindImageMemory2-pBindInfos-02858` (*yours*; explicit rule): If any VkBindImageMemoryInfo::`image` was created with `VK_IMAGE_CREATE_DISJOINT_BIT` then all planes of VkBindImageMemoryInfo::`image` must be bound individually in separate `pBindInfos`
-- `VUID-vkBindImageMemory2-pBindInfos-04006` (*yours*; explicit rule): `pBindInfos` must not refer to the same image subresource more than once
+- `VUID-vkBindImageMemory2-pBindInfos-02858` (*yours*; checked by the safe methods in every build): If any VkBindImageMemoryInfo::`image` was created with `VK_IMAGE_CREATE_DISJOINT_BIT` then all planes of VkBindImageMemoryInfo::`image` must be bound individually in separate `pBindInfos`
+- `VUID-vkBindImageMemory2-pBindInfos-04006` (*checked*): `pBindInfos` must not refer to the same image subresource more than once
 - `VUID-vkBindImageMemory2-bindInfoCount-arraylength` (*checked*): `bindInfoCount` must be greater than `0`
 - `VUID-vkBindImageMemory2-device-parameter` (*by the types*): `device` must be a valid VkDevice handle
 - `VUID-vkBindImageMemory2-pBindInfos-parameter` (*by the types*): `pBindInfos` must be a valid pointer to an array of `bindInfoCount` valid VkBindImageMemoryInfo structures*/
     #[doc(alias = "vkBindImageMemory2")]
     #[inline]
-    pub unsafe fn bind_image_memory2<'a>(
+    pub fn bind_image_memory2<'a>(
         &self,
         bind_infos: &[BindImageMemoryInfo<'a>],
     ) -> Result<()> {
@@ -115,7 +80,7 @@ The rules of `vkBindImageMemory2` that apply to this crate's API ([reference pag
 
 # Safety
 
-The caller upholds the rules that [`Self::bind_image_memory2`] checks at run time: `VUID-vkBindImageMemory2-bindInfoCount-arraylength`, `VUID-VkBindImageMemoryInfo-image-07460`, `VUID-VkBindImageMemoryInfo-image-01045`, `VUID-VkBindImageMemoryInfo-memoryOffset-01046`, `VUID-VkBindImageMemoryInfo-pNext-01615`, `VUID-VkBindImageMemoryInfo-pNext-01616`, `VUID-VkBindImageMemoryInfo-pNext-01617`, `VUID-VkBindImageMemoryInfo-pNext-01618`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::bind_image_memory2`] checks at run time: `VUID-vkBindImageMemory2-bindInfoCount-arraylength`, `VUID-VkBindImageMemoryInfo-image-07460`, `VUID-VkBindImageMemoryInfo-image-01045`, `VUID-VkBindImageMemoryInfo-memoryOffset-01046`, `VUID-VkBindImageMemoryInfo-pNext-01615`, `VUID-VkBindImageMemoryInfo-pNext-01616`, `VUID-VkBindImageMemoryInfo-pNext-01617`, `VUID-VkBindImageMemoryInfo-pNext-01618`, `VUID-vkBindImageMemory2-pBindInfos-04006`, `VUID-VkBindImageMemoryInfo-image-01445`, `VUID-VkBindImageMemoryInfo-memory-01509`, `VUID-VkBindImageMemoryInfo-None-01901`, `VUID-VkBindImageMemoryInfo-None-01902`, `VUID-VkBindImageMemoryInfo-memory-02728`, `VUID-VkBindImageMemoryInfo-memory-02729`, `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01633`, `VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01634`, `VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-01635`, `VUID-VkBindImageMemoryDeviceGroupInfo-splitInstanceBindRegionCount-01636`, `VUID-VkBindImageMemoryInfo-pNext-01627`, `VUID-VkBindImageMemoryInfo-pNext-01626`, `VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-01637`, `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01638`, `VUID-VkBindImageMemoryDeviceGroupInfo-offset-01639`, `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01640`, `VUID-VkBindImageMemoryDeviceGroupInfo-extent-01641`, `VUID-VkBindImageMemoryInfo-pNext-01628`, `VUID-VkBindImageMemoryInfo-pNext-01629`, `VUID-vkBindImageMemory2-pBindInfos-02858`, `VUID-VkBindImageMemoryInfo-image-07736`, `VUID-VkBindImageMemoryInfo-pNext-01619`, `VUID-VkBindImageMemoryInfo-pNext-01620`, `VUID-VkBindImageMemoryInfo-pNext-01621`, `VUID-VkBindImagePlaneMemoryInfo-planeAspect-02283`, `VUID-VkBindImageMemoryInfo-image-01630`, `VUID-VkBindImageMemoryInfo-pNext-01631`, `VUID-VkBindImageMemoryInfo-pNext-01632`, `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644`, `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn bind_image_memory2_unchecked<'a>(
         &self,

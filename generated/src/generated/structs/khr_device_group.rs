@@ -81,8 +81,8 @@ impl<'a> AcquireNextImageInfoKHR<'a> {
 
 The rules of `VkBindImageMemorySwapchainInfoKHR` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkBindImageMemorySwapchainInfoKHR.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644` (*yours*; explicit rule): `imageIndex` must be less than the number of images in `swapchain`
-- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756` (*yours*; explicit rule): If the `swapchain` has been created with `VK_SWAPCHAIN_CREATE_DEFERRED_MEMORY_ALLOCATION_BIT_EXT`, `imageIndex` must be one that has previously been returned by vkAcquireNextImageKHR …
+- `VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644` (*yours*; checked by the safe methods in every build): `imageIndex` must be less than the number of images in `swapchain`
+- `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756` (*yours*; checked by the safe methods in every build): If the `swapchain` has been created with `VK_SWAPCHAIN_CREATE_DEFERRED_MEMORY_ALLOCATION_BIT_EXT`, `imageIndex` must be one that has previously been returned by vkAcquireNextImageKHR …
 - `VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-parameter` (*checked*): `swapchain` must be a valid VkSwapchainKHR handle
 - `VUID-VkBindImageMemorySwapchainInfoKHR-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_BIND_IMAGE_MEMORY_SWAPCHAIN_INFO_KHR`*/
 #[cfg(feature = "khr_swapchain")]

@@ -25,6 +25,14 @@ const EXPORT: &str = "checks the exported handle types against the external memo
 const MEMORY_TYPES: &str = "checks the memory type index and the size against the physical device's memory types and heaps, a protected type against protectedMemory, and the chained allocation flags and capture address against the device's bufferDeviceAddress features";
 const BIND_BOUND: &str = "refuses an object the device recorded as bound (and one an earlier info of the same call binds)";
 const BIND_MEMORY: &str = "checks the memory's recorded size and type against the object's memory requirements, read from the driver at the bind";
+const BIND_TWICE: &str = "refuses an image an earlier info of the same call binds";
+const IMAGE_GROUP: &str = "checks a chained VkBindImageMemoryDeviceGroupInfo's device indices and split instance bind region count against the device's physical-device count, recorded at its creation, and split regions against the image's create flags";
+const IMAGE_GROUP_ALONE: &str = "checks each device index of a chained VkBindImageMemoryDeviceGroupInfo against the device's physical-device count, recorded at its creation (the 1.3.239 layer does not check it: the error alone proves it)";
+const IMAGE_GROUP_SPLIT: &str = "checks a chained VkBindImageMemoryDeviceGroupInfo's counts against each other and the device's physical-device count (the 1.3.239 layer names VUID-VkBindImageMemoryInfo-pNext-01627 first, which every split region on lavapipe breaks as well, its images being made without split instance bind regions: the error alone proves it)";
+const UNPROVEN_IMAGE_INSTANCES: &str = "checked by the safe methods in every build (a chained device group info with device indices is refused on a device of more than one physical device, whose memory instances tuff does not follow), but no test breaks it: lavapipe's devices have one physical device";
+const SPLIT_REFUSED: &str = "checked by the safe methods in every build: the safe `bind_image_memory2` refuses split instance bind regions (`Error::Misuse`: tuff does not follow the memory instances of a device group), so no bind made through it names one";
+const DISJOINT_REFUSED: &str = "checked by the safe methods in every build: the safe `bind_image_memory2` refuses the planes of a disjoint image (`Error::Misuse`: the device records one binding per image, which the overlap checks of copies, blits and attachments read), so no bind made through it binds a plane";
+const UNPROVEN_SWAPCHAIN_BIND: &str = "checked by the safe methods in every build (a chained VkBindImageMemorySwapchainInfoKHR is refused, as its memory must be VK_NULL_HANDLE and the safe info always names memory, and so is an image created with a VkImageSwapchainCreateInfoKHR, recorded at its creation), but no test breaks it yet: it needs a swapchain";
 const WHOLE: &str = "`DeviceMemory::map` maps the whole memory: offset 0, size VK_WHOLE_SIZE";
 
 const PEER_INDICES: &str = "checks the heap index against the physical device's memory heaps, and both device indices against the physical devices the device was created with (recorded at its creation), which must differ (the 1.3.239 layer does not check them: the error alone proves them)";
@@ -345,6 +353,130 @@ pub(super) const ROWS: &[Special] = &[
             (
                 "VUID-VkBindImageMemoryInfo-pNext-01618",
                 How::User(UNPROVEN),
+            ),
+            (
+                "VUID-vkBindImageMemory2-pBindInfos-04006",
+                How::Dynamic(BIND_TWICE),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-image-01445",
+                How::User(UNPROVEN_DEDICATED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-memory-01509",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-None-01901",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-None-01902",
+                How::User(UNPROVEN_PROTECTED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-memory-02728",
+                How::Dynamic(MEMORY_KIND),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-memory-02729",
+                How::Static(NO_IMPORT),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01633",
+                How::Dynamic(IMAGE_GROUP_SPLIT),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-deviceIndexCount-01634",
+                How::Dynamic(IMAGE_GROUP),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-pDeviceIndices-01635",
+                How::Dynamic(IMAGE_GROUP_ALONE),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-splitInstanceBindRegionCount-01636",
+                How::Dynamic(IMAGE_GROUP_SPLIT),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01627",
+                How::Dynamic(IMAGE_GROUP),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01626",
+                How::User(UNPROVEN_IMAGE_INSTANCES),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-pSplitInstanceBindRegions-01637",
+                How::User(SPLIT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-offset-01638",
+                How::User(SPLIT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-offset-01639",
+                How::User(SPLIT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-extent-01640",
+                How::User(SPLIT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryDeviceGroupInfo-extent-01641",
+                How::User(SPLIT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01628",
+                How::User(SPLIT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01629",
+                How::User(SPLIT_REFUSED),
+            ),
+            (
+                "VUID-vkBindImageMemory2-pBindInfos-02858",
+                How::User(DISJOINT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-image-07736",
+                How::User(DISJOINT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01619",
+                How::User(DISJOINT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01620",
+                How::User(DISJOINT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01621",
+                How::User(DISJOINT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImagePlaneMemoryInfo-planeAspect-02283",
+                How::User(DISJOINT_REFUSED),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-image-01630",
+                How::User(UNPROVEN_SWAPCHAIN_BIND),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01631",
+                How::User(UNPROVEN_SWAPCHAIN_BIND),
+            ),
+            (
+                "VUID-VkBindImageMemoryInfo-pNext-01632",
+                How::Static("the safe info's memory is a `DeviceMemory`, never VK_NULL_HANDLE"),
+            ),
+            (
+                "VUID-VkBindImageMemorySwapchainInfoKHR-imageIndex-01644",
+                How::User(UNPROVEN_SWAPCHAIN_BIND),
+            ),
+            (
+                "VUID-VkBindImageMemorySwapchainInfoKHR-swapchain-07756",
+                How::User(UNPROVEN_SWAPCHAIN_BIND),
             ),
         ],
         ..NONE
