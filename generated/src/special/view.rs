@@ -560,6 +560,151 @@ fn view_format_checks(
 /// The device remembers a sampler Y'CbCr conversion's format, which views that use
 /// it must have, and its chroma filter, which samplers that use it check their
 /// filters against.
+/// Refuses a Y'CbCr conversion its format cannot make: a format not `UNORM`, chroma
+/// sample locations, reconstruction and a chroma filter its potential format
+/// features (both tilings', from the physical device) lack, a swizzle a subsampled
+/// format does not allow, or components of the model and range the format has not.
+pub(crate) fn sampler_ycbcr_conversion_checks(
+    device: &Device,
+    create_info: &SamplerYcbcrConversionCreateInfo<'_>,
+) -> Result<()> {
+    type F = vk::FormatFeatureFlags;
+    type C = vk::ComponentSwizzle;
+    let info = create_info.as_raw();
+    let format = info.format;
+    // An external format's conversion (its format is UNDEFINED) has rules of its own.
+    if format == vk::Format::UNDEFINED {
+        return Ok(());
+    }
+    if !crate::formats::unorm(format) {
+        refuse(
+            "VUID-VkSamplerYcbcrConversionCreateInfo-format-04060",
+            format!("format {format:?} is not a UNORM format"),
+        )?;
+    }
+    let physical = device.parent();
+    // SAFETY: a live physical device of its instance.
+    let props = unsafe {
+        physical
+            .parent()
+            .fns()
+            .get_physical_device_format_properties(physical.raw(), format)
+    };
+    let features = props.linear_tiling_features | props.optimal_tiling_features;
+    let (midpoint, cosited) = (
+        features.contains(F::MIDPOINT_CHROMA_SAMPLES),
+        features.contains(F::COSITED_CHROMA_SAMPLES),
+    );
+    if !midpoint && !cosited {
+        refuse(
+            "VUID-VkSamplerYcbcrConversionCreateInfo-format-01650",
+            format!("format {format:?} supports neither midpoint nor cosited chroma samples ({features:?})"),
+        )?;
+    }
+    let offsets = [info.x_chroma_offset, info.y_chroma_offset];
+    if !cosited && offsets.contains(&vk::ChromaLocation::COSITED_EVEN) {
+        refuse(
+            "VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01651",
+            format!("a chroma offset is COSITED_EVEN, and format {format:?} does not support cosited chroma samples"),
+        )?;
+    }
+    if !midpoint && offsets.contains(&vk::ChromaLocation::MIDPOINT) {
+        refuse(
+            "VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01652",
+            format!("a chroma offset is MIDPOINT, and format {format:?} does not support midpoint chroma samples"),
+        )?;
+    }
+    let c = info.components;
+    let identity = |s: C, own: C| s == C::IDENTITY || s == own;
+    if matches!(crate::formats::chroma(format), Some(420 | 422)) {
+        let rules: [(bool, &str, &str); 4] = [
+            (
+                identity(c.g, C::G),
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02581",
+                "components.g must be the identity swizzle",
+            ),
+            (
+                identity(c.a, C::A) || c.a == C::ONE || c.a == C::ZERO,
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02582",
+                "components.a must be the identity swizzle, ONE or ZERO",
+            ),
+            (
+                identity(c.r, C::R) || c.r == C::B,
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02583",
+                "components.r must be the identity swizzle or B",
+            ),
+            (
+                identity(c.b, C::B) || c.b == C::R,
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02584",
+                "components.b must be the identity swizzle or R",
+            ),
+        ];
+        for (holds, vuid, what) in rules {
+            if !holds {
+                refuse(vuid, format!("format {format:?} is subsampled, so {what}"))?;
+            }
+        }
+        if (identity(c.r, C::R) || identity(c.b, C::B))
+            && !(identity(c.r, C::R) && identity(c.b, C::B))
+        {
+            refuse(
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02585",
+                format!("format {format:?} is subsampled, so components.r and components.b are both the identity swizzle or neither"),
+            )?;
+        }
+    }
+    // The component each of R, G and B reads after the swizzle: its index in
+    // R, G, B, A, or None for ZERO and ONE.
+    let source = |s: C, own: usize| match s {
+        C::IDENTITY => Some(own),
+        C::R => Some(0),
+        C::G => Some(1),
+        C::B => Some(2),
+        C::A => Some(3),
+        _ => None,
+    };
+    let bits = crate::formats::rgba_bits(format).unwrap_or([0; 4]);
+    let read = [(c.r, 0, "r"), (c.g, 1, "g"), (c.b, 2, "b")];
+    if info.ycbcr_model != vk::SamplerYcbcrModelConversion::RGB_IDENTITY {
+        for (s, own, name) in read {
+            if source(s, own).is_none_or(|i| bits[i] == 0) {
+                refuse(
+                    "VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-01655",
+                    format!("components.{name} ({s:?}) reads no component of format {format:?}, and the model converts from Y'CbCr"),
+                )?;
+            }
+        }
+    }
+    if info.ycbcr_range == vk::SamplerYcbcrRange::ITU_NARROW {
+        for (s, own, name) in read {
+            if let Some(i) = source(s, own).filter(|i| bits[*i] < 8) {
+                refuse(
+                    "VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-02748",
+                    format!("components.{name} reads a component of {} bits, and the narrow range needs 8 or more", bits[i]),
+                )?;
+            }
+        }
+    }
+    if info.force_explicit_reconstruction == vk::TRUE
+        && !features
+            .contains(F::SAMPLED_IMAGE_YCBCR_CONVERSION_CHROMA_RECONSTRUCTION_EXPLICIT_FORCEABLE)
+    {
+        refuse(
+            "VUID-VkSamplerYcbcrConversionCreateInfo-forceExplicitReconstruction-01656",
+            format!("forceExplicitReconstruction is set, and format {format:?} does not support forcing explicit reconstruction"),
+        )?;
+    }
+    if info.chroma_filter == vk::Filter::LINEAR
+        && !features.contains(F::SAMPLED_IMAGE_YCBCR_CONVERSION_LINEAR_FILTER)
+    {
+        refuse(
+            "VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657",
+            format!("chromaFilter is LINEAR, and format {format:?} does not support a linear chroma filter"),
+        )?;
+    }
+    Ok(())
+}
+
 pub(crate) fn conversion_created(
     device: &Device,
     conversion: SamplerYcbcrConversion,

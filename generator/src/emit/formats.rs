@@ -166,6 +166,29 @@ pub(super) fn emit(model: &Model) -> TokenStream {
             .then(|| u32::try_from(f.components.len()).ok())
             .flatten()
     });
+    // Whether every component of a color format is UNORM (1).
+    let unorm_arms = value_arms(model, |f| {
+        (f.color() && !f.numeric.is_empty() && f.numeric.iter().all(|n| n == "UNORM")).then_some(1)
+    });
+    // A color format's R, G, B and A bit widths, a byte each (0: absent).
+    let bits_arms = value_arms(model, |f| {
+        if !f.color() {
+            return None;
+        }
+        let mut packed = 0u32;
+        for (c, b) in f.components.iter().zip(&f.bits) {
+            let b: u32 = b.parse().ok()?;
+            let shift = match c.as_str() {
+                "R" => 0,
+                "G" => 8,
+                "B" => 16,
+                "A" => 24,
+                _ => return None,
+            };
+            packed |= b.min(255) << shift;
+        }
+        Some(packed)
+    });
     let number = |name: &str| {
         model
             .enum_numbers
@@ -265,6 +288,26 @@ pub(super) fn emit(model: &Model) -> TokenStream {
                 #(#component_arms)*
                 _ => return None,
             })
+        }
+
+        /// Whether every component of a color format is `UNORM`.
+        pub(crate) fn unorm(format: vk::Format) -> bool {
+            let unorm: u32 = match format.as_raw() {
+                #(#unorm_arms)*
+                _ => 0,
+            };
+            unorm == 1
+        }
+
+        /// The bit widths of a color format's R, G, B and A components, 0 where it
+        /// has none; `None` for a depth/stencil or compressed format, or one the
+        /// registry does not describe.
+        pub(crate) fn rgba_bits(format: vk::Format) -> Option<[u32; 4]> {
+            let packed: u32 = match format.as_raw() {
+                #(#bits_arms)*
+                _ => return None,
+            };
+            Some([packed & 0xff, (packed >> 8) & 0xff, (packed >> 16) & 0xff, packed >> 24])
         }
 
         /// For a format that needs a sampler Y'CbCr conversion, its chroma

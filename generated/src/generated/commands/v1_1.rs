@@ -180,24 +180,6 @@ The caller upholds the rules that [`Self::create_descriptor_update_template`] ch
     }
     /**`vkCreateSamplerYcbcrConversion`
 
-# Safety
-
-The caller upholds these 13 rules that no check of this method enforces (its command's and those of the structs it takes):
-
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-04060`: `format` must represent unsigned normalized values (i.e. the format must be a `UNORM` format)
-- `VUID-VkSamplerYcbcrConversionCreateInfo-format-01650`: The potential format features of the sampler {YCbCr} conversion must support `VK_FORMAT_FEATURE_MIDPOINT_CHROMA_SAMPLES_BIT` or `VK_FORMAT_FEATURE_COSITED_CHROMA_SAMPLES_BIT`
-- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01651`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_COSITED_CHROMA_SAMPLES_BIT`, `xChromaOffset` and `yChromaOffset` must not be `VK_CHROMA_LOCATION_COSITED_EVEN` if the corresponding components are downsampled
-- `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01652`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_MIDPOINT_CHROMA_SAMPLES_BIT`, `xChromaOffset` and `yChromaOffset` must not be `VK_CHROMA_LOCATION_MIDPOINT` if the corresponding components are downsampled
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02581`: If the format has a `_422` or `_420` suffix, then `components.g` must be the identity swizzle
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02582`: If the format has a `_422` or `_420` suffix, then `components.a` must be the identity swizzle, `VK_COMPONENT_SWIZZLE_ONE`, or `VK_COMPONENT_SWIZZLE_ZERO`
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02583`: If the format has a `_422` or `_420` suffix, then `components.r` must be the identity swizzle or `VK_COMPONENT_SWIZZLE_B`
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02584`: If the format has a `_422` or `_420` suffix, then `components.b` must be the identity swizzle or `VK_COMPONENT_SWIZZLE_R`
-- `VUID-VkSamplerYcbcrConversionCreateInfo-components-02585`: If the format has a `_422` or `_420` suffix, and if either `components.r` or `components.b` is the identity swizzle, both values must be the identity swizzle
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-01655`: If `ycbcrModel` is not `VK_SAMPLER_YCBCR_MODEL_CONVERSION_RGB_IDENTITY`, then `components.r`, `components.g`, and `components.b` must correspond to components of the `format`; that is, `components.r`, `components.g`, and `components.b` must not be `VK_COMPONENT_SWIZZLE_ZERO` or `VK_COMPONENT_SWIZZLE_ONE`, and must not correspond to a component containing zero or one as a consequence of conversion to RGBA
-- `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-02748`: If `ycbcrRange` is `VK_SAMPLER_YCBCR_RANGE_ITU_NARROW` then the R, G and B components obtained by applying the `component` swizzle to `format` must each have a bit-depth greater than or equal to 8
-- `VUID-VkSamplerYcbcrConversionCreateInfo-forceExplicitReconstruction-01656`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_CHROMA_RECONSTRUCTION_EXPLICIT_FORCEABLE_BIT` `forceExplicitReconstruction` must be `VK_FALSE`
-- `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657`: If the potential format features of the sampler {YCbCr} conversion do not support `VK_FORMAT_FEATURE_SAMPLED_IMAGE_YCBCR_CONVERSION_LINEAR_FILTER_BIT`, `chromaFilter` must not be `VK_FILTER_LINEAR`
-
 # Valid usage
 
 The rules of `vkCreateSamplerYcbcrConversion` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCreateSamplerYcbcrConversion.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -209,7 +191,7 @@ The rules of `vkCreateSamplerYcbcrConversion` that apply to this crate's API ([r
 - `VUID-vkCreateSamplerYcbcrConversion-pYcbcrConversion-parameter` (*by the types*): `pYcbcrConversion` must be a valid pointer to a VkSamplerYcbcrConversion handle*/
     #[doc(alias = "vkCreateSamplerYcbcrConversion")]
     #[inline]
-    pub unsafe fn create_sampler_ycbcr_conversion<'a>(
+    pub fn create_sampler_ycbcr_conversion<'a>(
         &self,
         create_info: &SamplerYcbcrConversionCreateInfo<'a>,
     ) -> Result<SamplerYcbcrConversion> {
@@ -217,6 +199,7 @@ The rules of `vkCreateSamplerYcbcrConversion` that apply to this crate's API ([r
             let r = self.validate_create_sampler_ycbcr_conversion(create_info);
             r?;
         }
+        crate::special::view::sampler_ycbcr_conversion_checks(self, create_info)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.create_sampler_ycbcr_conversion_unchecked(create_info) }
@@ -225,7 +208,7 @@ The rules of `vkCreateSamplerYcbcrConversion` that apply to this crate's API ([r
 
 # Safety
 
-The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] checks at run time: `VUID-vkCreateSamplerYcbcrConversion-None-01648`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
+The caller upholds the rules that [`Self::create_sampler_ycbcr_conversion`] checks at run time: `VUID-vkCreateSamplerYcbcrConversion-None-01648`, `VUID-VkSamplerYcbcrConversionCreateInfo-format-04060`, `VUID-VkSamplerYcbcrConversionCreateInfo-format-01650`, `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01651`, `VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01652`, `VUID-VkSamplerYcbcrConversionCreateInfo-components-02581`, `VUID-VkSamplerYcbcrConversionCreateInfo-components-02582`, `VUID-VkSamplerYcbcrConversionCreateInfo-components-02583`, `VUID-VkSamplerYcbcrConversionCreateInfo-components-02584`, `VUID-VkSamplerYcbcrConversionCreateInfo-components-02585`, `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-01655`, `VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-02748`, `VUID-VkSamplerYcbcrConversionCreateInfo-forceExplicitReconstruction-01656`, `VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657`, and those of the structs it takes. So does every rule the `# Safety` section of the checked method lists.*/
     #[inline]
     pub unsafe fn create_sampler_ycbcr_conversion_unchecked<'a>(
         &self,

@@ -5,6 +5,8 @@
 
 use super::{call, How, Special, NONE};
 
+const UNPROVEN_CONVERSION: &str = "checked by the safe methods in every build (the format's components and numeric format, from the registry's formats, and its potential format features, read from the physical device), but no test breaks it: lavapipe 22.3 has no samplerYcbcrConversion feature, so no conversion can be made";
+
 const UNPROVEN_VIEW_PLANES: &str = "checked by the safe methods in every build (against the image's format, its planes and chroma from vk.xml's <formats>, and a chained conversion's recorded format), but no test breaks it: lavapipe 22.3 supports no multi-planar or Y'CbCr format";
 const UNPROVEN_SPARSE_VIEW: &str = "checked by the safe methods in every build (the image's recorded flags), but no test breaks it: lavapipe 22.3 has no sparseBinding";
 const UNPROVEN_CUBE_ARRAY: &str = "checked by the safe methods in every build (the layers left from the base layer), but no test breaks it: the tests' device does not enable imageCubeArray, so a cube array view is refused for the feature first";
@@ -234,6 +236,64 @@ pub(super) const ROWS: &[Special] = &[
     },
     Special {
         command: "vkCreateSamplerYcbcrConversion",
+        check_last: call(
+            "special::view::sampler_ycbcr_conversion_checks",
+            &["self", "create_info"],
+        ),
+        settles: &[
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-format-04060",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-format-01650",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01651",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-xChromaOffset-01652",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02581",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02582",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02583",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02584",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-components-02585",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrModel-01655",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-ycbcrRange-02748",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-forceExplicitReconstruction-01656",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+            (
+                "VUID-VkSamplerYcbcrConversionCreateInfo-chromaFilter-01657",
+                How::User(UNPROVEN_CONVERSION),
+            ),
+        ],
         created: call(
             "special::view::conversion_created",
             &["self", "created", "create_info"],
