@@ -431,14 +431,6 @@ fn depth_and_stencil_slots_keep_their_rules() {
         ),
     ];
     let ds4 = [attachment(&t.color4.view, L::COLOR_ATTACHMENT_OPTIMAL)];
-    for (rule, a) in &depth_cases {
-        let colors = if a.resolve_mode != M::NONE {
-            &ds4
-        } else {
-            &one
-        };
-        check(&s, rule, layer(rule), &info(colors, Some(a), None));
-    }
     let stencil_cases: Vec<(&str, tuff::RenderingAttachmentInfo<'_>)> = vec![
         (
             "VUID-VkRenderingInfo-pStencilAttachment-06089",
@@ -487,13 +479,22 @@ fn depth_and_stencil_slots_keep_their_rules() {
             ),
         ),
     ];
-    for (rule, a) in &stencil_cases {
-        let colors = if a.resolve_mode != M::NONE {
-            &ds4
-        } else {
-            &one
-        };
-        check(&s, rule, layer(rule), &info(colors, None, Some(a)));
+    // Each case in its slot; a resolving one beside a four-sample color attachment.
+    let slots = [(true, &depth_cases), (false, &stencil_cases)];
+    for (depth, cases) in slots {
+        for (rule, a) in cases.iter() {
+            let colors = if a.resolve_mode != M::NONE {
+                &ds4
+            } else {
+                &one
+            };
+            let (d, st) = if depth {
+                (Some(a), None)
+            } else {
+                (None, Some(a))
+            };
+            check(&s, rule, layer(rule), &info(colors, d, st));
+        }
     }
     // A stencil resolve mode the device does not support (lavapipe resolves stencil
     // by sample zero, minimum or maximum, not by average).

@@ -140,21 +140,7 @@ impl Barriers {
 
     /// The second version's barriers of a dependency info.
     pub(crate) fn of2(dependency_info: &DependencyInfo<'_>) -> Self {
-        let raw = dependency_info.as_raw();
-        // SAFETY: the safe struct stores each array with its length.
-        let (memory, buffers, images) = unsafe {
-            (
-                crate::state::raw_slice(raw.p_memory_barriers, raw.memory_barrier_count),
-                crate::state::raw_slice(
-                    raw.p_buffer_memory_barriers,
-                    raw.buffer_memory_barrier_count,
-                ),
-                crate::state::raw_slice(
-                    raw.p_image_memory_barriers,
-                    raw.image_memory_barrier_count,
-                ),
-            )
-        };
+        let (memory, buffers, images) = arrays(dependency_info.as_raw());
         let scopes = |src_stage, src_access, dst_stage, dst_access| Scopes {
             src_stage,
             dst_stage,
@@ -933,10 +919,17 @@ pub(crate) fn pipeline_barrier_done<S: Scope>(
     super::image_layouts::cmd_pipeline_barrier_done(recorder, image_memory_barriers);
 }
 
-/// The stage masks of each barrier of a dependency info (source, destination).
-pub(crate) fn stage_pairs(info: &vk::DependencyInfo<'_>) -> Vec<(S2, S2)> {
-    // SAFETY: a safe struct's arrays, each stored with its length.
-    let (memory, buffers, images) = unsafe {
+/// The memory, buffer and image barriers of a safe struct's dependency info.
+pub(crate) fn arrays<'i>(
+    info: &'i vk::DependencyInfo<'i>,
+) -> (
+    &'i [vk::MemoryBarrier2<'i>],
+    &'i [vk::BufferMemoryBarrier2<'i>],
+    &'i [vk::ImageMemoryBarrier2<'i>],
+) {
+    // SAFETY: the safe struct's setters store each array with its length, borrowed
+    // for as long as the info.
+    unsafe {
         (
             crate::state::raw_slice(info.p_memory_barriers, info.memory_barrier_count),
             crate::state::raw_slice(
@@ -948,7 +941,12 @@ pub(crate) fn stage_pairs(info: &vk::DependencyInfo<'_>) -> Vec<(S2, S2)> {
                 info.image_memory_barrier_count,
             ),
         )
-    };
+    }
+}
+
+/// The stage masks of each barrier of a dependency info (source, destination).
+pub(crate) fn stage_pairs(info: &vk::DependencyInfo<'_>) -> Vec<(S2, S2)> {
+    let (memory, buffers, images) = arrays(info);
     memory
         .iter()
         .map(|b| (b.src_stage_mask, b.dst_stage_mask))

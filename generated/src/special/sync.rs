@@ -349,10 +349,7 @@ pub(crate) fn reset_event_done<S: Scope>(
     event: &Event,
     stage_mask: vk::PipelineStageFlags,
 ) {
-    event_recorded(recorder, event);
-    recorder
-        .event_states
-        .reset(event.raw().as_raw(), every_stage1(stage_mask), false);
+    event_reset(recorder, event, every_stage1(stage_mask), false);
 }
 
 /// After `vkCmdResetEvent2`: the event is unsignaled.
@@ -361,30 +358,27 @@ pub(crate) fn reset_event2_done<S: Scope>(
     event: &Event,
     stage_mask: vk::PipelineStageFlags2,
 ) {
+    event_reset(recorder, event, every_stage(stage_mask), true);
+}
+
+/// A reset of either version at `stages` (every stage spelled out).
+fn event_reset<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    event: &Event,
+    stages: vk::PipelineStageFlags2,
+    v2: bool,
+) {
     event_recorded(recorder, event);
     recorder
         .event_states
-        .reset(event.raw().as_raw(), every_stage(stage_mask), true);
+        .reset(event.raw().as_raw(), stages, v2);
 }
 
 /// A dependency info as `vkCmdWaitEvents2` compares it with the one `vkCmdSetEvent2`
 /// gave (they must be exactly equal): each member of it and of its barriers, a
 /// chained struct by its address.
 fn digest(info: &vk::DependencyInfo<'_>) -> Arc<[u64]> {
-    // SAFETY: a safe struct's arrays, each stored with its length.
-    let (memory, buffers, images) = unsafe {
-        (
-            crate::state::raw_slice(info.p_memory_barriers, info.memory_barrier_count),
-            crate::state::raw_slice(
-                info.p_buffer_memory_barriers,
-                info.buffer_memory_barrier_count,
-            ),
-            crate::state::raw_slice(
-                info.p_image_memory_barriers,
-                info.image_memory_barrier_count,
-            ),
-        )
-    };
+    let (memory, buffers, images) = super::barriers::arrays(info);
     let mut d = vec![
         u64::from(info.dependency_flags.as_raw()),
         info.p_next as usize as u64,
