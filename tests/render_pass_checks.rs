@@ -224,7 +224,7 @@ fn create2(s: &Setup, spec: &Spec) -> (tuff::Result<()>, Vec<String>) {
         .subpasses(&subpasses)
         .dependencies(&dependencies)
         .correlated_view_masks(&spec.correlation_masks);
-    let safe = unsafe { s.device.create_render_pass2(&info) }.map(drop);
+    let safe = s.device.create_render_pass2(&info).map(drop);
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_render_pass2_unchecked(&info) };
     });
@@ -961,6 +961,607 @@ fn each_broken_description_rule_is_refused_and_the_layer_agrees() {
     }
     println!(
         "render pass descriptions: the layer named {by_layer}, the error alone proves {} ({})",
+        alone.len(),
+        alone.join(", ")
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// What the second version's create info can say beyond the first's.
+#[derive(Default)]
+struct Extra2 {
+    /// A chained `VkAttachmentDescriptionStencilLayout` per attachment index.
+    stencil_layouts: Vec<(usize, vk::ImageLayout, vk::ImageLayout)>,
+    /// A chained `VkAttachmentReferenceStencilLayout` on the depth/stencil reference.
+    depth_stencil_layout: Option<vk::ImageLayout>,
+    /// A chained `VkSubpassDescriptionDepthStencilResolve`: attachment, modes.
+    resolve: Option<(u32, vk::ResolveModeFlags, vk::ResolveModeFlags)>,
+    /// The input references' aspect masks, where not their formats'.
+    input_aspects: Option<vk::ImageAspectFlags>,
+}
+
+/// Builds `d` (and `x`) through `vkCreateRenderPass2`: view masks on the subpasses,
+/// view offsets on the dependencies, correlation masks on the create info.
+fn create_described2(
+    s: &Setup,
+    d: &Described,
+    x: &Extra2,
+    unchecked: bool,
+) -> (tuff::Result<()>, Vec<String>) {
+    let mut stencil_layouts: Vec<tuff::AttachmentDescriptionStencilLayout<'_>> = x
+        .stencil_layouts
+        .iter()
+        .map(|&(_, initial, last)| {
+            tuff::AttachmentDescriptionStencilLayout::new()
+                .stencil_initial_layout(initial)
+                .stencil_final_layout(last)
+        })
+        .collect();
+    let mut chained = stencil_layouts.iter_mut();
+    let attachments: Vec<_> = d
+        .attachments
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            let mut a2 = tuff::AttachmentDescription2::new()
+                .flags(a.flags)
+                .format(a.format)
+                .samples(a.samples)
+                .load_op(a.load_op)
+                .store_op(a.store_op)
+                .stencil_load_op(a.stencil_load_op)
+                .stencil_store_op(a.stencil_store_op)
+                .initial_layout(a.initial_layout)
+                .final_layout(a.final_layout);
+            if x.stencil_layouts.iter().any(|l| l.0 == i) {
+                a2 = a2.push_next(chained.next().expect("one per listed attachment"));
+            }
+            a2
+        })
+        .collect();
+    let aspect_of = |a: u32| {
+        let format = d.attachments.get(a as usize).map(|a| a.format);
+        match format {
+            Some(vk::Format::D32_SFLOAT_S8_UINT) => vk::ImageAspectFlags::DEPTH,
+            _ => vk::ImageAspectFlags::COLOR,
+        }
+    };
+    let inputs: Vec<_> = d
+        .inputs
+        .iter()
+        .map(|r| {
+            tuff::AttachmentReference2::new()
+                .attachment(r.attachment)
+                .layout(r.layout)
+                .aspect_mask(x.input_aspects.unwrap_or(aspect_of(r.attachment)))
+        })
+        .collect();
+    let colors: Vec<_> = d
+        .colors
+        .iter()
+        .map(|r| {
+            tuff::AttachmentReference2::new()
+                .attachment(r.attachment)
+                .layout(r.layout)
+        })
+        .collect();
+    let mut depth_stencil = tuff::AttachmentReferenceStencilLayout::new()
+        .stencil_layout(x.depth_stencil_layout.unwrap_or(GENERAL));
+    let depth = d.depth.map(|r| {
+        let r2 = tuff::AttachmentReference2::new()
+            .attachment(r.attachment)
+            .layout(r.layout);
+        match x.depth_stencil_layout {
+            Some(_) => r2.push_next(&mut depth_stencil),
+            None => r2,
+        }
+    });
+    let resolve_reference = x.resolve.map(|(a, _, _)| {
+        tuff::AttachmentReference2::new()
+            .attachment(a)
+            .layout(GENERAL)
+    });
+    let mut resolves: Vec<_> = (0..d.subpasses)
+        .map(|_| {
+            let (_, depth_mode, stencil_mode) = x.resolve.unwrap_or_default();
+            tuff::SubpassDescriptionDepthStencilResolve::new()
+                .depth_resolve_mode(depth_mode)
+                .stencil_resolve_mode(stencil_mode)
+                .depth_stencil_resolve_attachment(resolve_reference.as_ref())
+        })
+        .collect();
+    let mut resolves = resolves.iter_mut();
+    let subpasses: Vec<_> = (0..d.subpasses)
+        .map(|i| {
+            let subpass = tuff::SubpassDescription2::new()
+                .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+                .view_mask(d.view_masks.get(i).copied().unwrap_or(0))
+                .input_attachments(&inputs)
+                .color_attachments(&colors)
+                .depth_stencil_attachment(depth.as_ref());
+            let resolve = resolves.next().expect("one per subpass");
+            match x.resolve {
+                Some(_) => subpass.push_next(resolve),
+                None => subpass,
+            }
+        })
+        .collect();
+    let dependencies: Vec<_> = d
+        .dependencies
+        .iter()
+        .enumerate()
+        .map(|(i, dep)| {
+            tuff::SubpassDependency2::new()
+                .src_subpass(dep.src_subpass)
+                .dst_subpass(dep.dst_subpass)
+                .src_stage_mask(dep.src_stage_mask)
+                .dst_stage_mask(dep.dst_stage_mask)
+                .src_access_mask(dep.src_access_mask)
+                .dst_access_mask(dep.dst_access_mask)
+                .dependency_flags(dep.dependency_flags)
+                .view_offset(d.view_offsets.get(i).copied().unwrap_or(0))
+        })
+        .collect();
+    let info = tuff::RenderPassCreateInfo2::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses)
+        .dependencies(&dependencies)
+        .correlated_view_masks(&d.correlations);
+    let safe = s.device.create_render_pass2(&info).map(drop);
+    if !unchecked {
+        return (safe, Vec::new());
+    }
+    let layer = under_layer(s, || {
+        let _ = unsafe { s.device.create_render_pass2_unchecked(&info) };
+    });
+    (safe, layer)
+}
+
+/// Cases the 1.3.239 layer lets through and lavapipe crashes on: only the safe
+/// method builds them (its error alone proves the rule).
+const CRASH_UNCHECKED: &[&str] =
+    &["VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177"];
+
+/// The first version's description cases that the second states under its own
+/// VUID, with that VUID (the others have no second-version twin: a multiview info,
+/// an input-attachment-aspect info, a view offset's VIEW_LOCAL rule).
+const SECOND_VUIDS: &[(&str, &str)] = &[
+    (
+        "VUID-VkAttachmentDescription-format-06698",
+        "VUID-VkAttachmentDescription2-format-06698",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-06242",
+        "VUID-VkAttachmentDescription2-format-06249",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-06243",
+        "VUID-VkAttachmentDescription2-format-06250",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-06906",
+        "VUID-VkAttachmentDescription2-format-06906",
+    ),
+    (
+        "VUID-VkAttachmentDescription-format-06907",
+        "VUID-VkAttachmentDescription2-format-06907",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pAttachments-00836",
+        "VUID-VkRenderPassCreateInfo2-pAttachments-02522",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pAttachments-02511",
+        "VUID-VkRenderPassCreateInfo2-pAttachments-02523",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pAttachments-01566",
+        "VUID-VkRenderPassCreateInfo2-pAttachments-02522",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pAttachments-01567",
+        "VUID-VkRenderPassCreateInfo2-pAttachments-02523",
+    ),
+    (
+        "VUID-VkSubpassDescription-loadOp-00846",
+        "VUID-VkSubpassDescription2-loadOp-03064",
+    ),
+    (
+        "VUID-VkSubpassDescription-attachment-06915",
+        "VUID-VkSubpassDescription2-attachment-06915",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pDependencies-00837",
+        "VUID-VkRenderPassCreateInfo2-pDependencies-03054",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pDependencies-00838",
+        "VUID-VkRenderPassCreateInfo2-pDependencies-03055",
+    ),
+    (
+        "VUID-VkSubpassDependency-srcSubpass-00864",
+        "VUID-VkSubpassDependency2-srcSubpass-03084",
+    ),
+    (
+        "VUID-VkSubpassDependency-srcSubpass-00865",
+        "VUID-VkSubpassDependency2-srcSubpass-03085",
+    ),
+    (
+        "VUID-VkSubpassDependency-srcSubpass-06809",
+        "VUID-VkSubpassDependency2-srcSubpass-06810",
+    ),
+    (
+        "VUID-VkSubpassDependency-srcSubpass-02243",
+        "VUID-VkSubpassDependency2-srcSubpass-02245",
+    ),
+    (
+        "VUID-VkSubpassDependency-srcAccessMask-00868",
+        "VUID-VkSubpassDependency2-srcAccessMask-03088",
+    ),
+    (
+        "VUID-VkSubpassDependency-dstAccessMask-00869",
+        "VUID-VkSubpassDependency2-dstAccessMask-03089",
+    ),
+    (
+        "VUID-VkSubpassDependency-srcSubpass-00872",
+        "VUID-VkRenderPassCreateInfo2-pDependencies-03060",
+    ),
+    (
+        "VUID-VkRenderPassCreateInfo-pNext-01930",
+        "VUID-VkSubpassDependency2-viewOffset-02530",
+    ),
+    (
+        "VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841",
+        "VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056",
+    ),
+    (
+        "VUID-VkSubpassDependency-srcStageMask-03937",
+        "VUID-VkSubpassDependency2-srcStageMask-03937",
+    ),
+    (
+        "VUID-VkSubpassDependency-dstStageMask-03937",
+        "VUID-VkSubpassDependency2-dstStageMask-03937",
+    ),
+];
+
+type Described2 = (&'static str, fn(&mut Described, &mut Extra2));
+
+/// A four-sample depth/stencil attachment (index 2), the subpass's depth/stencil
+/// attachment, resolved into attachment `into`.
+fn resolving(
+    d: &mut Described,
+    x: &mut Extra2,
+    into: u32,
+    modes: (vk::ResolveModeFlags, vk::ResolveModeFlags),
+) {
+    d.attachments.push(vk::AttachmentDescription {
+        samples: FOUR,
+        ..d.attachments[1]
+    });
+    d.colors.clear();
+    d.depth = Some(vk::AttachmentReference {
+        attachment: 2,
+        layout: DEPTH,
+    });
+    x.resolve = Some((into, modes.0, modes.1));
+}
+
+fn attachment_of(
+    d: &Described,
+    format: vk::Format,
+    samples: vk::SampleCountFlags,
+) -> vk::AttachmentDescription {
+    vk::AttachmentDescription {
+        format,
+        samples,
+        ..d.attachments[1]
+    }
+}
+
+/// The second version's own cases: stencil layouts, input aspects, indices, and
+/// depth/stencil resolves.
+const DESCRIBED_SECOND: &[Described2] = &[
+    ("VUID-VkAttachmentDescription2-pNext-06704", |d, _| {
+        d.attachments[1].stencil_load_op = vk::AttachmentLoadOp::LOAD;
+    }),
+    ("VUID-VkAttachmentDescription2-pNext-06705", |d, x| {
+        d.attachments[1].stencil_load_op = vk::AttachmentLoadOp::LOAD;
+        d.attachments[1].initial_layout = GENERAL;
+        x.stencil_layouts = vec![(1, vk::ImageLayout::UNDEFINED, GENERAL)];
+    }),
+    ("VUID-VkAttachmentDescription2-format-06247", |d, _| {
+        let mut s8 = attachment_of(d, vk::Format::S8_UINT, ONE);
+        s8.initial_layout = vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL;
+        d.attachments.push(s8);
+    }),
+    ("VUID-VkAttachmentDescription2-format-06248", |d, _| {
+        let mut s8 = attachment_of(d, vk::Format::S8_UINT, ONE);
+        s8.final_layout = vk::ImageLayout::DEPTH_READ_ONLY_OPTIMAL;
+        d.attachments.push(s8);
+    }),
+    ("VUID-VkRenderPassCreateInfo2-attachment-06244", |d, _| {
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 1,
+            layout: vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL,
+        });
+    }),
+    ("VUID-VkRenderPassCreateInfo2-attachment-06245", |d, _| {
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 1,
+            layout: vk::ImageLayout::STENCIL_ATTACHMENT_OPTIMAL,
+        });
+    }),
+    ("VUID-VkRenderPassCreateInfo2-attachment-06246", |d, _| {
+        d.attachments
+            .push(attachment_of(d, vk::Format::S8_UINT, ONE));
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 2,
+            layout: vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL,
+        });
+    }),
+    ("VUID-VkSubpassDescription2-attachment-06251", |d, x| {
+        d.attachments
+            .push(attachment_of(d, vk::Format::S8_UINT, ONE));
+        d.depth = Some(vk::AttachmentReference {
+            attachment: 2,
+            layout: vk::ImageLayout::STENCIL_ATTACHMENT_OPTIMAL,
+        });
+        x.depth_stencil_layout = Some(vk::ImageLayout::STENCIL_ATTACHMENT_OPTIMAL);
+    }),
+    ("VUID-VkRenderPassCreateInfo2-srcSubpass-02526", |d, _| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            3,
+            vk::SUBPASS_EXTERNAL,
+            (color, color),
+            Default::default(),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkRenderPassCreateInfo2-dstSubpass-02527", |d, _| {
+        let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        d.dependencies = vec![between(
+            vk::SUBPASS_EXTERNAL,
+            3,
+            (color, color),
+            Default::default(),
+            vk::DependencyFlags::empty(),
+        )];
+    }),
+    ("VUID-VkRenderPassCreateInfo2-pSubpasses-06473", |d, x| {
+        resolving(
+            d,
+            x,
+            9,
+            (
+                vk::ResolveModeFlags::SAMPLE_ZERO,
+                vk::ResolveModeFlags::NONE,
+            ),
+        );
+    }),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                1,
+                (
+                    vk::ResolveModeFlags::SAMPLE_ZERO,
+                    vk::ResolveModeFlags::NONE,
+                ),
+            );
+            d.depth = None;
+            d.colors = vec![vk::AttachmentReference {
+                attachment: 0,
+                layout: COLOR,
+            }];
+            d.attachments[0].samples = FOUR;
+        },
+    ),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                2,
+                (
+                    vk::ResolveModeFlags::SAMPLE_ZERO,
+                    vk::ResolveModeFlags::NONE,
+                ),
+            );
+            d.attachments[2].samples = ONE;
+            d.depth = Some(vk::AttachmentReference {
+                attachment: 1,
+                layout: DEPTH,
+            });
+        },
+    ),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                2,
+                (
+                    vk::ResolveModeFlags::SAMPLE_ZERO,
+                    vk::ResolveModeFlags::NONE,
+                ),
+            )
+        },
+    ),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-02651",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                0,
+                (
+                    vk::ResolveModeFlags::SAMPLE_ZERO,
+                    vk::ResolveModeFlags::NONE,
+                ),
+            )
+        },
+    ),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03181",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                3,
+                (
+                    vk::ResolveModeFlags::SAMPLE_ZERO,
+                    vk::ResolveModeFlags::NONE,
+                ),
+            );
+            d.attachments
+                .push(attachment_of(d, vk::Format::D16_UNORM, ONE));
+        },
+    ),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03182",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                1,
+                (
+                    vk::ResolveModeFlags::SAMPLE_ZERO,
+                    vk::ResolveModeFlags::NONE,
+                ),
+            );
+            d.attachments[2].format = vk::Format::D32_SFLOAT;
+        },
+    ),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03178",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                1,
+                (vk::ResolveModeFlags::NONE, vk::ResolveModeFlags::NONE),
+            )
+        },
+    ),
+    ("VUID-VkSubpassDescription2-attachment-02799", |d, x| {
+        d.attachments.push(d.attachments[0]);
+        d.inputs = vec![vk::AttachmentReference {
+            attachment: 2,
+            layout: GENERAL,
+        }];
+        x.input_aspects = Some(vk::ImageAspectFlags::from_raw(0x1000));
+    }),
+    (
+        "VUID-VkSubpassDescriptionDepthStencilResolve-stencilResolveMode-03184",
+        |d, x| {
+            resolving(
+                d,
+                x,
+                1,
+                (vk::ResolveModeFlags::NONE, vk::ResolveModeFlags::AVERAGE),
+            )
+        },
+    ),
+];
+
+/// The second version's description cases: each first-version case under its
+/// twin's VUID, and the second version's own, refused with the rule's VUID while
+/// the layer names it or nothing; a depth/stencil resolve that keeps the rules
+/// goes through.
+#[test]
+fn each_broken_second_version_description_rule_is_refused_and_the_layer_agrees() {
+    let _serial = vulkan::serial();
+    let mut failures = Vec::new();
+    let (mut by_layer, mut alone) = (0, Vec::new());
+    let full = tuff_setup::setup_full_features(true);
+    let bare = tuff_setup::setup_bare(true);
+    let mut cases: Vec<(&Setup, &str, Described, Extra2)> = Vec::new();
+    for (setup, list) in [(&full, DESCRIBED), (&bare, DESCRIBED_BARE)] {
+        for (vuid, _, change) in list {
+            let Some((_, second)) = SECOND_VUIDS.iter().find(|(one, _)| one == vuid) else {
+                continue;
+            };
+            let mut d = Described::default();
+            change(&mut d);
+            cases.push((setup, second, d, Extra2::default()));
+        }
+    }
+    for (vuid, change) in DESCRIBED_SECOND {
+        let (mut d, mut x) = (Described::default(), Extra2::default());
+        change(&mut d, &mut x);
+        cases.push((&full, vuid, d, x));
+    }
+    for setup in [&full, &bare] {
+        let (safe, layer) =
+            create_described2(setup, &Described::default(), &Extra2::default(), true);
+        assert!(
+            safe.is_ok() && layer.is_empty(),
+            "the valid render pass: {safe:?} {layer:?}"
+        );
+    }
+    let (mut d, mut x) = (Described::default(), Extra2::default());
+    resolving(
+        &mut d,
+        &mut x,
+        1,
+        (
+            vk::ResolveModeFlags::SAMPLE_ZERO,
+            vk::ResolveModeFlags::SAMPLE_ZERO,
+        ),
+    );
+    let (safe, layer) = create_described2(&full, &d, &x, true);
+    assert!(
+        safe.is_ok() && layer.is_empty(),
+        "a depth/stencil resolve: {safe:?} {layer:?}"
+    );
+    // The mesh and task stages of a device without VK_EXT_mesh_shader: its
+    // parameter rule refuses them before the rules that name their features.
+    let mesh = Described {
+        dependencies: vec![between(
+            vk::SUBPASS_EXTERNAL,
+            0,
+            (
+                vk::PipelineStageFlags::MESH_SHADER_EXT,
+                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+            ),
+            Default::default(),
+            vk::DependencyFlags::empty(),
+        )],
+        ..Described::default()
+    };
+    let (safe, _) = create_described2(&full, &mesh, &Extra2::default(), false);
+    assert_eq!(
+        tuff_setup::vuid(safe),
+        "VUID-VkSubpassDependency2-srcStageMask-parameter"
+    );
+    for (setup, vuid, d, x) in &cases {
+        let (safe, layer) = create_described2(setup, d, x, !CRASH_UNCHECKED.contains(vuid));
+        match &safe {
+            Err(tuff::Error::Validation { vuid: got, .. }) if got == vuid => {}
+            other => {
+                failures.push(format!("{vuid}: the safe method returned {other:?}"));
+                continue;
+            }
+        }
+        let names = |m: &String| m.contains(&format!("[ {vuid} ]"));
+        if layer.is_empty() {
+            alone.push(*vuid);
+        } else if layer.iter().any(names) {
+            by_layer += 1;
+        } else {
+            failures.push(format!(
+                "{vuid}: the layer said something else:\n  {}",
+                layer.join("\n  ")
+            ));
+        }
+    }
+    println!(
+        "second-version descriptions: the layer named {by_layer}, the error alone proves {} ({})",
         alone.len(),
         alone.join(", ")
     );

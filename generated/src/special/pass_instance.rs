@@ -682,6 +682,50 @@ fn check_aliasing(
                     format!("attachments {i} and {j} share memory, one is written, and not both have MAY_ALIAS"),
                 )?;
             }
+            if shared {
+                check_aliased_subpasses(pass, (*i as u32, *ra), (*j as u32, *rb), vuid)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Two attachments that share memory, `a` and `b` with their roles: every two
+/// subpasses that use them, one writing, are ordered by a chain of dependencies
+/// (`VUID-VkRenderPassCreateInfo2-None-03049`; the first version's render pass
+/// states the same in prose, and its begin's aliasing rule names it).
+fn check_aliased_subpasses(
+    pass: &crate::state::RenderPassRecord,
+    a: (u32, u8),
+    b: (u32, u8),
+    vuid: &'static str,
+) -> Result<()> {
+    use crate::state::{USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_RESOLVE};
+    let written = USED_COLOR | USED_RESOLVE | USED_DEPTH | USED_DEPTH_RESOLVE;
+    let users = |x: u32| -> Vec<u32> {
+        pass.used
+            .iter()
+            .enumerate()
+            .filter(|(_, u)| u.contains(&x))
+            .map(|(s, _)| s as u32)
+            .collect()
+    };
+    if (a.1 | b.1) & written == 0 {
+        return Ok(());
+    }
+    for s1 in users(a.0) {
+        for s2 in users(b.0) {
+            if s1 != s2 && !pass.depends(s1.min(s2), s1.max(s2)) {
+                let rule = if pass.second {
+                    "VUID-VkRenderPassCreateInfo2-None-03049"
+                } else {
+                    vuid
+                };
+                refuse(
+                    rule,
+                    format!("attachments {} and {} share memory, one is written, and subpasses {s1} and {s2}, which use them, have no dependency between them", a.0, b.0),
+                )?;
+            }
         }
     }
     Ok(())

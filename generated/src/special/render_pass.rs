@@ -175,6 +175,8 @@ struct Subpass {
     /// The attachment a chained `VkSubpassDescriptionDepthStencilResolve` resolves
     /// depth/stencil into.
     depth_resolve: Option<u32>,
+    /// That struct's depth and stencil resolve modes.
+    depth_resolve_modes: (vk::ResolveModeFlags, vk::ResolveModeFlags),
 }
 
 impl Subpass {
@@ -193,15 +195,18 @@ impl Subpass {
 }
 
 /// A render pass, as either create info gives it.
-struct Pass {
+pub(super) struct Pass {
     /// Each attachment's format and sample count.
     attachments: Vec<(vk::Format, vk::SampleCountFlags)>,
     /// The rest of each attachment's description.
     described: Vec<Described>,
     subpasses: Vec<Subpass>,
-    dependencies: Vec<Dependency>,
+    pub(super) dependencies: Vec<Dependency>,
+    /// The correlated view masks (`VkRenderPassCreateInfo2`'s, or a chained
+    /// `VkRenderPassMultiviewCreateInfo`'s).
+    pub(super) correlations: Vec<u32>,
     /// Read from `vkCreateRenderPass2`: the VUIDs of its rules are the second ones.
-    second: bool,
+    pub(super) second: bool,
 }
 
 /// What a render pass's record keeps of an attachment description beyond its format
@@ -252,15 +257,19 @@ impl Described {
 
 /// A subpass dependency: its source and destination subpasses, stages and access
 /// types.
-struct Dependency {
-    subpasses: (u32, u32),
-    stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
-    access: (vk::AccessFlags, vk::AccessFlags),
+pub(super) struct Dependency {
+    pub(super) subpasses: (u32, u32),
+    pub(super) stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
+    pub(super) access: (vk::AccessFlags, vk::AccessFlags),
+    pub(super) flags: vk::DependencyFlags,
+    /// Its view offset (`VkSubpassDependency2::viewOffset`, or a chained
+    /// `VkRenderPassMultiviewCreateInfo`'s), if one is given.
+    pub(super) view_offset: Option<i32>,
 }
 
 /// A rule's VUIDs through `vkCreateRenderPass` and `vkCreateRenderPass2` (empty where
 /// one of them has no such rule).
-type Rule = (&'static str, &'static str);
+pub(super) type Rule = (&'static str, &'static str);
 
 const PRESERVE_UNUSED: Rule = (
     "VUID-VkSubpassDescription-attachment-00853",
@@ -360,6 +369,7 @@ macro_rules! subpasses {
                     .to_vec(),
                     view_mask: 0,
                     depth_resolve: None,
+                    depth_resolve_modes: Default::default(),
                 }
             })
             .collect::<Vec<_>>()
@@ -419,12 +429,21 @@ impl Pass {
             for (s, mask) in subpasses.iter_mut().zip(masks) {
                 s.view_mask = *mask;
             }
+            let offsets = multiview.map_or(&[][..], |m| {
+                crate::state::raw_slice(m.p_view_offsets, m.dependency_count)
+            });
+            let correlations = multiview.map_or(&[][..], |m| {
+                crate::state::raw_slice(m.p_correlation_masks, m.correlation_mask_count)
+            });
             let dependencies = crate::state::raw_slice(raw.p_dependencies, raw.dependency_count)
                 .iter()
-                .map(|d| Dependency {
+                .enumerate()
+                .map(|(i, d)| Dependency {
                     subpasses: (d.src_subpass, d.dst_subpass),
                     stages: (d.src_stage_mask, d.dst_stage_mask),
                     access: (d.src_access_mask, d.dst_access_mask),
+                    flags: d.dependency_flags,
+                    view_offset: offsets.get(i).copied(),
                 })
                 .collect();
             Pass {
@@ -432,6 +451,7 @@ impl Pass {
                 described,
                 subpasses,
                 dependencies,
+                correlations: correlations.to_vec(),
                 second: false,
             }
         }
@@ -479,6 +499,9 @@ impl Pass {
                 s.depth_resolve = resolve
                     .and_then(|r| r.p_depth_stencil_resolve_attachment.as_ref())
                     .map(|a| a.attachment);
+                s.depth_resolve_modes = resolve.map_or(Default::default(), |r| {
+                    (r.depth_resolve_mode, r.stencil_resolve_mode)
+                });
             }
             // A chained VkMemoryBarrier2's stages and access types replace the
             // dependency's, their first 32 bits read.
@@ -502,6 +525,8 @@ impl Pass {
                                 vk::AccessFlags::from_raw(low(b.dst_access_mask.as_raw())),
                             )
                         }),
+                        flags: d.dependency_flags,
+                        view_offset: Some(d.view_offset),
                     }
                 })
                 .collect();
@@ -510,9 +535,19 @@ impl Pass {
                 described,
                 subpasses,
                 dependencies,
+                correlations: crate::state::raw_slice(
+                    raw.p_correlated_view_masks,
+                    raw.correlated_view_mask_count,
+                )
+                .to_vec(),
                 second: true,
             }
         }
+    }
+
+    /// Each subpass's view mask (0 without multiview).
+    pub(super) fn view_masks(&self) -> Vec<u32> {
+        self.subpasses.iter().map(|s| s.view_mask).collect()
     }
 
     /// The device's record of the render pass.
@@ -566,6 +601,13 @@ impl Pass {
                 stencil_taken: self.stencil_taken(),
                 may_alias: self.described.iter().map(|d| d.may_alias).collect(),
                 dependency_stages,
+                dependencies: self
+                    .dependencies
+                    .iter()
+                    .map(|d| d.subpasses)
+                    .filter(|(a, b)| *a != vk::SUBPASS_EXTERNAL && *b != vk::SUBPASS_EXTERNAL)
+                    .collect(),
+                second: self.second,
             },
         );
         render_pass
@@ -744,7 +786,8 @@ impl Pass {
             .collect()
     }
 
-    fn vuid(&self, rule: Rule) -> &'static str {
+    /// The rule's VUID for the version the pass was read from.
+    pub(super) fn vuid(&self, rule: Rule) -> &'static str {
         if self.second {
             rule.1
         } else {
@@ -768,6 +811,47 @@ impl Pass {
                         "pSubpasses[{i}] names attachment {a}, but the render pass has {count}"
                     ),
                 )?;
+            }
+            if let Some(a) = s
+                .depth_resolve
+                .filter(|&a| a != vk::ATTACHMENT_UNUSED && a >= count)
+            {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo2-pSubpasses-06473",
+                    format!("pSubpasses[{i}] resolves depth/stencil into attachment {a}, but the render pass has {count}"),
+                )?;
+            }
+        }
+        // Every aspect bit the registry names (COLOR to MEMORY_PLANE_3), before the
+        // aspects are read against the formats.
+        let known = vk::ImageAspectFlags::from_raw(0x7ff);
+        for (i, s) in self.subpasses.iter().enumerate() {
+            for (k, r) in s.inputs.iter().enumerate() {
+                if r.used() && !known.contains(r.aspect_mask) {
+                    refuse("VUID-VkSubpassDescription2-attachment-02799", format!("pSubpasses[{i}].pInputAttachments[{k}].aspectMask ({:?}) is no combination of aspects", r.aspect_mask))?;
+                }
+            }
+        }
+        let subpasses = self.subpasses.len() as u32;
+        for (i, d) in self.dependencies.iter().enumerate() {
+            for (vuid, at, what) in [
+                (
+                    "VUID-VkRenderPassCreateInfo2-srcSubpass-02526",
+                    d.subpasses.0,
+                    "srcSubpass",
+                ),
+                (
+                    "VUID-VkRenderPassCreateInfo2-dstSubpass-02527",
+                    d.subpasses.1,
+                    "dstSubpass",
+                ),
+            ] {
+                if at != vk::SUBPASS_EXTERNAL && at >= subpasses {
+                    refuse(
+                        vuid,
+                        format!("pDependencies[{i}].{what} ({at}) must be less than subpassCount ({subpasses})"),
+                    )?;
+                }
             }
         }
         Ok(())
@@ -1066,7 +1150,10 @@ pub(crate) fn render_pass2_reference_checks(
     device: &Device,
     create_info: &RenderPassCreateInfo2<'_>,
 ) -> Result<()> {
-    Pass::of2(create_info).check_references(device)?;
+    let pass = Pass::of2(create_info);
+    pass.check_references(device)?;
+    pass.check_descriptions(device)?;
+    subpass_dependency_checks(device, &pass)?;
     let raw = create_info.as_raw();
     // SAFETY: the safe setters store each array with its count.
     let (subpasses, dependencies) = unsafe {
@@ -1101,174 +1188,342 @@ pub(super) fn clear_count(
         .unwrap_or(0)
 }
 
-/// A depth/stencil format's layouts that name one aspect only, refused for a format
-/// with both (`VkAttachmentDescription-format-06242`, `06243`, `06906`, `06907`).
-const ONE_ASPECT_LAYOUTS: [(vk::ImageLayout, bool); 4] = [
-    (vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL, true),
-    (vk::ImageLayout::DEPTH_READ_ONLY_OPTIMAL, true),
-    (vk::ImageLayout::STENCIL_ATTACHMENT_OPTIMAL, false),
-    (vk::ImageLayout::STENCIL_READ_ONLY_OPTIMAL, false),
-];
-
 /// The checks of `vkCreateRenderPass` that read its create info alone, with the
-/// device's features and limits: attachment formats and layouts, the layout of
-/// each attachment's first use against its load operations, dependencies against
-/// the stages a graphics pipeline has and the accesses each stage supports, and a
-/// chained multiview or input-attachment-aspect struct.
+/// device's features and limits: the descriptions and dependencies read into one
+/// [`Pass`], then a chained input-attachment-aspect struct.
 fn render_pass_description_checks(
     device: &Device,
     create_info: &RenderPassCreateInfo<'_>,
 ) -> Result<()> {
+    let pass = Pass::of(create_info);
+    pass.check_descriptions(device)?;
+    subpass_dependency_checks(device, &pass)?;
     let raw = create_info.as_raw();
     // SAFETY: the safe setters store each array with its count.
-    let (attachments, subpasses, dependencies) = unsafe {
+    let (attachments, subpasses) = unsafe {
         (
             crate::state::raw_slice(raw.p_attachments, raw.attachment_count),
             crate::state::raw_slice(raw.p_subpasses, raw.subpass_count),
-            crate::state::raw_slice(raw.p_dependencies, raw.dependency_count),
         )
     };
-    for (i, a) in attachments.iter().enumerate() {
-        if a.format == vk::Format::UNDEFINED {
-            refuse(
-                "VUID-VkAttachmentDescription-format-06698",
-                format!("pAttachments[{i}].format is VK_FORMAT_UNDEFINED"),
-            )?;
-        }
-        let both = crate::formats::aspects(a.format).is_some_and(|x| {
-            x.contains(vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL)
-        });
-        if !both {
-            continue;
-        }
-        for (layout, depth) in ONE_ASPECT_LAYOUTS {
-            let (initial, last) = if depth {
-                (
-                    "VUID-VkAttachmentDescription-format-06242",
-                    "VUID-VkAttachmentDescription-format-06243",
-                )
-            } else {
-                (
-                    "VUID-VkAttachmentDescription-format-06906",
-                    "VUID-VkAttachmentDescription-format-06907",
-                )
-            };
-            if a.initial_layout == layout {
-                refuse(initial, format!("pAttachments[{i}] ({:?}, with depth and stencil) starts in {layout:?}, which names one aspect", a.format))?;
-            }
-            if a.final_layout == layout {
-                refuse(last, format!("pAttachments[{i}] ({:?}, with depth and stencil) ends in {layout:?}, which names one aspect", a.format))?;
-            }
-        }
+    input_aspect_checks(raw, attachments, subpasses)
+}
+
+const FORMAT_UNDEFINED: Rule = (
+    "VUID-VkAttachmentDescription-format-06698",
+    "VUID-VkAttachmentDescription2-format-06698",
+);
+const INITIAL_STENCIL_LAYOUT: Rule = (
+    "VUID-VkAttachmentDescription-format-06906",
+    "VUID-VkAttachmentDescription2-format-06906",
+);
+const FINAL_STENCIL_LAYOUT: Rule = (
+    "VUID-VkAttachmentDescription-format-06907",
+    "VUID-VkAttachmentDescription2-format-06907",
+);
+/// The second version allows these with a chained stencil layout struct.
+const INITIAL_DEPTH_LAYOUT: Rule = (
+    "VUID-VkAttachmentDescription-format-06242",
+    "VUID-VkAttachmentDescription2-format-06249",
+);
+const FINAL_DEPTH_LAYOUT: Rule = (
+    "VUID-VkAttachmentDescription-format-06243",
+    "VUID-VkAttachmentDescription2-format-06250",
+);
+const DEPTH_REFERENCE_LAYOUT: Rule = (
+    "VUID-VkSubpassDescription-attachment-06915",
+    "VUID-VkSubpassDescription2-attachment-06915",
+);
+const CLEARED_READ: Rule = (
+    "VUID-VkRenderPassCreateInfo-pAttachments-00836",
+    "VUID-VkRenderPassCreateInfo2-pAttachments-02522",
+);
+const STENCIL_CLEARED_READ: Rule = (
+    "VUID-VkRenderPassCreateInfo-pAttachments-02511",
+    "VUID-VkRenderPassCreateInfo2-pAttachments-02523",
+);
+/// The second version states these in its two rules above.
+const CLEARED_DEPTH_READ: Rule = (
+    "VUID-VkRenderPassCreateInfo-pAttachments-01566",
+    "VUID-VkRenderPassCreateInfo2-pAttachments-02522",
+);
+const STENCIL_CLEARED_STENCIL_READ: Rule = (
+    "VUID-VkRenderPassCreateInfo-pAttachments-01567",
+    "VUID-VkRenderPassCreateInfo2-pAttachments-02523",
+);
+const INPUT_FIRST_CLEARED: Rule = (
+    "VUID-VkSubpassDescription-loadOp-00846",
+    "VUID-VkSubpassDescription2-loadOp-03064",
+);
+
+/// The depth component of a depth format: its bits and whether it is a float.
+fn depth_kind(format: vk::Format) -> Option<(u32, bool)> {
+    type F = vk::Format;
+    match format {
+        F::D16_UNORM | F::D16_UNORM_S8_UINT => Some((16, false)),
+        F::X8_D24_UNORM_PACK32 | F::D24_UNORM_S8_UINT => Some((24, false)),
+        F::D32_SFLOAT | F::D32_SFLOAT_S8_UINT => Some((32, true)),
+        _ => None,
     }
-    // Each subpass's references, as (attachment, layout, is an input attachment).
-    let uses: Vec<Vec<(u32, vk::ImageLayout, bool)>> = subpasses
-        .iter()
-        .map(|s| {
-            let mut refs = Vec::new();
-            // SAFETY: the safe setters store each array with its count (the resolve
-            // array with the color count).
-            unsafe {
-                for r in crate::state::raw_slice(s.p_input_attachments, s.input_attachment_count) {
-                    refs.push((r.attachment, r.layout, true));
-                }
-                for r in crate::state::raw_slice(s.p_color_attachments, s.color_attachment_count) {
-                    refs.push((r.attachment, r.layout, false));
-                }
-                if !s.p_resolve_attachments.is_null() {
-                    for r in
-                        crate::state::raw_slice(s.p_resolve_attachments, s.color_attachment_count)
-                    {
-                        refs.push((r.attachment, r.layout, false));
+}
+
+impl Pass {
+    /// Every rule of the attachment descriptions and the layouts the subpasses
+    /// reference them in, of either version (the indices are in range: checked
+    /// first), and the second version's stencil layouts and depth/stencil resolves.
+    fn check_descriptions(&self, device: &Device) -> Result<()> {
+        type L = vk::ImageLayout;
+        let depth_only = [L::DEPTH_ATTACHMENT_OPTIMAL, L::DEPTH_READ_ONLY_OPTIMAL];
+        let stencil_only = [L::STENCIL_ATTACHMENT_OPTIMAL, L::STENCIL_READ_ONLY_OPTIMAL];
+        let aspects = |f: vk::Format| crate::formats::aspects(f).unwrap_or_default();
+        let (depth, stencil) = (vk::ImageAspectFlags::DEPTH, vk::ImageAspectFlags::STENCIL);
+        for (i, ((format, _), d)) in self.attachments.iter().zip(&self.described).enumerate() {
+            let at = format!("pAttachments[{i}]");
+            if *format == vk::Format::UNDEFINED {
+                refuse(
+                    self.vuid(FORMAT_UNDEFINED),
+                    format!("{at}.format is VK_FORMAT_UNDEFINED"),
+                )?;
+            }
+            let has = aspects(*format);
+            let (initial, last) = (d.layouts.initial, d.layouts.last);
+            if has.contains(depth | stencil) {
+                for (layouts, allowed, rules) in [
+                    (
+                        &stencil_only,
+                        false,
+                        (INITIAL_STENCIL_LAYOUT, FINAL_STENCIL_LAYOUT),
+                    ),
+                    // The second version takes them with the stencil aspect's own.
+                    (
+                        &depth_only,
+                        self.second && d.stencil_chained,
+                        (INITIAL_DEPTH_LAYOUT, FINAL_DEPTH_LAYOUT),
+                    ),
+                ] {
+                    if allowed {
+                        continue;
+                    }
+                    if layouts.contains(&initial) {
+                        refuse(self.vuid(rules.0), format!("{at} ({format:?}, with depth and stencil) starts in {initial:?}, which names one aspect"))?;
+                    }
+                    if layouts.contains(&last) {
+                        refuse(self.vuid(rules.1), format!("{at} ({format:?}, with depth and stencil) ends in {last:?}, which names one aspect"))?;
                     }
                 }
-                if let Some(d) = s.p_depth_stencil_attachment.as_ref() {
-                    refs.push((d.attachment, d.layout, false));
+            }
+            if !self.second {
+                continue;
+            }
+            if has.contains(stencil) && d.load.1 == vk::AttachmentLoadOp::LOAD {
+                if !d.stencil_chained && initial == L::UNDEFINED {
+                    refuse(
+                        "VUID-VkAttachmentDescription2-pNext-06704",
+                        format!(
+                            "{at} loads its stencil, so its initialLayout must not be UNDEFINED"
+                        ),
+                    )?;
+                }
+                if d.stencil_chained && d.layouts.stencil_initial == L::UNDEFINED {
+                    refuse("VUID-VkAttachmentDescription2-pNext-06705", format!("{at} loads its stencil, so its stencilInitialLayout must not be UNDEFINED"))?;
                 }
             }
-            refs.retain(|r| r.0 != vk::ATTACHMENT_UNUSED);
-            refs
-        })
-        .collect();
-    for (i, s) in subpasses.iter().enumerate() {
-        // SAFETY: as above.
-        if let Some(d) = unsafe { s.p_depth_stencil_attachment.as_ref() } {
-            if d.attachment != vk::ATTACHMENT_UNUSED
-                && matches!(
-                    d.layout,
-                    vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL
-                        | vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL
-                )
-            {
+            if has == stencil && !d.stencil_chained {
+                if depth_only.contains(&initial) {
+                    refuse(
+                        "VUID-VkAttachmentDescription2-format-06247",
+                        format!(
+                            "{at} ({format:?}) has only a stencil aspect and starts in {initial:?}"
+                        ),
+                    )?;
+                }
+                if depth_only.contains(&last) {
+                    refuse(
+                        "VUID-VkAttachmentDescription2-format-06248",
+                        format!("{at} ({format:?}) has only a stencil aspect and ends in {last:?}"),
+                    )?;
+                }
+            }
+        }
+        for (i, s) in self.subpasses.iter().enumerate() {
+            let Some(d) = s.depth.filter(|d| d.used()) else {
+                continue;
+            };
+            let at = format!("pSubpasses[{i}].pDepthStencilAttachment");
+            if matches!(
+                d.layout,
+                L::COLOR_ATTACHMENT_OPTIMAL | L::SHADER_READ_ONLY_OPTIMAL
+            ) {
                 refuse(
-                    "VUID-VkSubpassDescription-attachment-06915",
+                    self.vuid(DEPTH_REFERENCE_LAYOUT),
+                    format!("{at} is in {:?}", d.layout),
+                )?;
+            }
+            if !self.second {
+                continue;
+            }
+            let has = aspects(self.attachments[d.attachment as usize].0);
+            if depth_only.contains(&d.layout) && !d.stencil_chained && has.contains(depth | stencil)
+            {
+                refuse("VUID-VkRenderPassCreateInfo2-attachment-06244", format!("{at} is in {:?}, names attachment {} of depth and stencil, and chains no stencil layout", d.layout, d.attachment))?;
+            }
+            if stencil_only.contains(&d.layout) && has != stencil {
+                refuse("VUID-VkRenderPassCreateInfo2-attachment-06245", format!("{at} is in {:?}, and attachment {}'s format has other aspects than stencil", d.layout, d.attachment))?;
+            }
+            if depth_only.contains(&d.layout) && has == stencil {
+                refuse(
+                    "VUID-VkRenderPassCreateInfo2-attachment-06246",
                     format!(
-                        "pSubpasses[{i}]'s depth/stencil attachment is in {:?}",
-                        d.layout
+                        "{at} is in {:?}, and attachment {} has only a stencil aspect",
+                        d.layout, d.attachment
                     ),
                 )?;
             }
+            if d.stencil_chained && stencil_only.contains(&d.layout) {
+                refuse(
+                    "VUID-VkSubpassDescription2-attachment-06251",
+                    format!("{at} chains a stencil layout and is in {:?}", d.layout),
+                )?;
+            }
         }
+        self.check_first_uses()?;
+        if self.second {
+            self.check_depth_resolves(device)?;
+        }
+        Ok(())
     }
-    for (n, a) in attachments.iter().enumerate() {
-        let n = n as u32;
-        let Some((i, first)) = uses
-            .iter()
-            .enumerate()
-            .find(|(_, refs)| refs.iter().any(|r| r.0 == n))
-        else {
-            continue;
-        };
-        let refs: Vec<_> = first.iter().filter(|r| r.0 == n).collect();
+
+    /// The layout of each attachment's first use (the first subpass that
+    /// references it) against its load operations.
+    fn check_first_uses(&self) -> Result<()> {
+        type L = vk::ImageLayout;
         let clear = vk::AttachmentLoadOp::CLEAR;
-        for r in &refs {
-            let read_only = matches!(
-                r.1,
-                vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL
-                    | vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL
+        for (n, d) in self.described.iter().enumerate() {
+            let n = n as u32;
+            let first = self.subpasses.iter().enumerate().find_map(|(i, s)| {
+                let refs: Vec<(&Ref, bool)> = s
+                    .inputs
+                    .iter()
+                    .map(|r| (r, true))
+                    .chain(s.colors.iter().map(|r| (r, false)))
+                    .chain(s.resolves.iter().flatten().map(|r| (r, false)))
+                    .chain(s.depth.iter().map(|r| (r, false)))
+                    .filter(|(r, _)| r.attachment == n)
+                    .collect();
+                (!refs.is_empty()).then_some((i, refs))
+            });
+            let Some((i, refs)) = first else {
+                continue;
+            };
+            for (r, _) in &refs {
+                let read_only = matches!(
+                    r.layout,
+                    L::SHADER_READ_ONLY_OPTIMAL | L::DEPTH_STENCIL_READ_ONLY_OPTIMAL
+                );
+                if d.load.0 == clear && read_only {
+                    refuse(self.vuid(CLEARED_READ), format!("pAttachments[{n}] is cleared, but its first use (subpass {i}) is in {:?}", r.layout))?;
+                }
+                if d.load.1 == clear && read_only {
+                    refuse(self.vuid(STENCIL_CLEARED_READ), format!("pAttachments[{n}]'s stencil is cleared, but its first use (subpass {i}) is in {:?}", r.layout))?;
+                }
+                if d.load.0 == clear && r.layout == L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL {
+                    refuse(self.vuid(CLEARED_DEPTH_READ), format!("pAttachments[{n}] is cleared, but its first use (subpass {i}) reads its depth only"))?;
+                }
+                if d.load.1 == clear && r.layout == L::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL {
+                    refuse(self.vuid(STENCIL_CLEARED_STENCIL_READ), format!("pAttachments[{n}]'s stencil is cleared, but its first use (subpass {i}) reads its stencil only"))?;
+                }
+            }
+            if refs.iter().all(|(_, input)| *input) && d.load.0 == clear {
+                refuse(self.vuid(INPUT_FIRST_CLEARED), format!("pAttachments[{n}] is first used as an input attachment only (subpass {i}), so it must not be cleared"))?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The second version's depth/stencil resolves: a multisampled depth/stencil
+    /// attachment into a single-sampled one of a matching format, by modes the
+    /// device supports.
+    fn check_depth_resolves(&self, device: &Device) -> Result<()> {
+        let none = vk::ResolveModeFlags::NONE;
+        let mut props = vk::PhysicalDeviceDepthStencilResolveProperties::default();
+        let known = crate::special::ask_properties2(device, &mut props);
+        for (i, s) in self.subpasses.iter().enumerate() {
+            let Some(r) = s.depth_resolve.filter(|a| *a != vk::ATTACHMENT_UNUSED) else {
+                continue;
+            };
+            let at = format!("pSubpasses[{i}]'s VkSubpassDescriptionDepthStencilResolve");
+            let Some(d) = s.depth.filter(|d| d.used()) else {
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177", format!("{at} resolves into attachment {r}, and the subpass has no depth/stencil attachment"))?;
+                continue;
+            };
+            let (ds_format, ds_samples) = self.attachments[d.attachment as usize];
+            let (format, samples) = self.attachments[r as usize];
+            if ds_samples == vk::SampleCountFlags::TYPE_1 {
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179", format!("{at} resolves attachment {}, which has one sample", d.attachment))?;
+            }
+            if samples != vk::SampleCountFlags::TYPE_1 {
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180", format!("{at} resolves into attachment {r}, of {samples:?} samples"))?;
+            }
+            let features = device
+                .parent()
+                .get_format_properties(format)
+                .map(|p| p.linear_tiling_features | p.optimal_tiling_features)
+                .unwrap_or_default();
+            if !features.contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT) {
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-02651", format!("{at} resolves into attachment {r}, whose format {format:?} cannot be a depth/stencil attachment"))?;
+            }
+            let has = crate::formats::aspects(format).unwrap_or_default();
+            let ds_has = crate::formats::aspects(ds_format).unwrap_or_default();
+            let (has_depth, has_stencil) = (
+                has.contains(vk::ImageAspectFlags::DEPTH),
+                has.contains(vk::ImageAspectFlags::STENCIL),
             );
-            if a.load_op == clear && read_only {
+            if has_depth && depth_kind(format) != depth_kind(ds_format) {
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03181", format!("{at} resolves {ds_format:?} into {format:?}, whose depth components differ"))?;
+            }
+            // Every stencil component is 8 bits of UINT.
+            if has_stencil && !ds_has.contains(vk::ImageAspectFlags::STENCIL) {
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03182", format!("{at} resolves {ds_format:?}, which has no stencil, into {format:?}"))?;
+            }
+            let (depth_mode, stencil_mode) = s.depth_resolve_modes;
+            if depth_mode == none && stencil_mode == none {
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03178", format!("{at} resolves into attachment {r} by no mode"))?;
+            }
+            if !known {
+                continue;
+            }
+            if has_depth
+                && depth_mode != none
+                && !props.supported_depth_resolve_modes.contains(depth_mode)
+            {
                 refuse(
-                    "VUID-VkRenderPassCreateInfo-pAttachments-00836",
+                    "VUID-VkSubpassDescriptionDepthStencilResolve-depthResolveMode-03183",
                     format!(
-                        "pAttachments[{n}] is cleared, but its first use (subpass {i}) is in {:?}",
-                        r.1
+                        "{at}'s depthResolveMode {depth_mode:?} is not among the device's ({:?})",
+                        props.supported_depth_resolve_modes
                     ),
                 )?;
             }
-            if a.stencil_load_op == clear && read_only {
-                refuse(
-                    "VUID-VkRenderPassCreateInfo-pAttachments-02511",
-                    format!("pAttachments[{n}]'s stencil is cleared, but its first use (subpass {i}) is in {:?}", r.1),
-                )?;
-            }
-            if a.load_op == clear
-                && r.1 == vk::ImageLayout::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL
+            if has_stencil
+                && stencil_mode != none
+                && !props.supported_stencil_resolve_modes.contains(stencil_mode)
             {
-                refuse(
-                    "VUID-VkRenderPassCreateInfo-pAttachments-01566",
-                    format!("pAttachments[{n}] is cleared, but its first use (subpass {i}) reads its depth only"),
-                )?;
+                refuse("VUID-VkSubpassDescriptionDepthStencilResolve-stencilResolveMode-03184", format!("{at}'s stencilResolveMode {stencil_mode:?} is not among the device's ({:?})", props.supported_stencil_resolve_modes))?;
             }
-            if a.stencil_load_op == clear
-                && r.1 == vk::ImageLayout::DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL
+            if has_depth
+                && has_stencil
+                && props.independent_resolve == vk::FALSE
+                && depth_mode != stencil_mode
             {
-                refuse(
-                    "VUID-VkRenderPassCreateInfo-pAttachments-01567",
-                    format!("pAttachments[{n}]'s stencil is cleared, but its first use (subpass {i}) reads its stencil only"),
-                )?;
+                if props.independent_resolve_none == vk::FALSE {
+                    refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03185", format!("{at}'s modes differ ({depth_mode:?}, {stencil_mode:?}), and the device resolves both aspects by one"))?;
+                } else if depth_mode != none && stencil_mode != none {
+                    refuse("VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03186", format!("{at}'s modes differ ({depth_mode:?}, {stencil_mode:?}), and the device resolves both aspects by one or one of them not at all"))?;
+                }
             }
         }
-        let only_input = refs.iter().all(|r| r.2);
-        if only_input && a.load_op == clear {
-            refuse(
-                "VUID-VkSubpassDescription-loadOp-00846",
-                format!("pAttachments[{n}] is first used as an input attachment only (subpass {i}), so it must not be cleared"),
-            )?;
-        }
+        Ok(())
     }
-    subpass_dependency_checks(device, raw, dependencies)?;
-    input_aspect_checks(raw, attachments, subpasses)
 }
 
 /// A chained `VkRenderPassInputAttachmentAspectCreateInfo` names only aspects the

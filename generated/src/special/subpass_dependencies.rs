@@ -1,140 +1,123 @@
 //! The checks of render pass creation over its subpass dependencies: stages,
 //! accesses, self-dependencies and view offsets.
 
-use super::render_pass::multiview_view_count;
-use super::{chained, refuse};
+use super::refuse;
+use super::render_pass::{multiview_view_count, Pass, Rule};
 use crate::handles::*;
 use crate::Result;
 use ash::vk;
 
-/// The dependencies of `vkCreateRenderPass`, and a chained
-/// `VkRenderPassMultiviewCreateInfo`'s masks and offsets.
-pub(super) fn subpass_dependency_checks(
-    device: &Device,
-    raw: &vk::RenderPassCreateInfo<'_>,
-    dependencies: &[vk::SubpassDependency],
-) -> Result<()> {
+/// The dependencies of either render pass creation, and its view masks, offsets
+/// and correlation masks, each rule under the version's VUID.
+pub(super) fn subpass_dependency_checks(device: &Device, pass: &Pass) -> Result<()> {
     let external = vk::SUBPASS_EXTERNAL;
     let sync2 = device.live().with_features(|f| f.v13.synchronization2) != vk::FALSE;
-    // SAFETY: `raw` is a safe struct's.
-    let multiview: Option<&vk::RenderPassMultiviewCreateInfo<'_>> = unsafe {
-        chained(
-            raw.p_next,
-            vk::StructureType::RENDER_PASS_MULTIVIEW_CREATE_INFO,
-        )
-    };
-    // SAFETY: the safe setters store each array with its count.
-    let (masks, offsets, correlations) =
-        multiview.map_or((&[][..], &[][..], &[][..]), |m| unsafe {
-            (
-                crate::state::raw_slice(m.p_view_masks, m.subpass_count),
-                crate::state::raw_slice(m.p_view_offsets, m.dependency_count),
-                crate::state::raw_slice(m.p_correlation_masks, m.correlation_mask_count),
-            )
-        });
+    let masks = pass.view_masks();
     let graphics = super::stages::GRAPHICS
         | vk::PipelineStageFlags::ALL_GRAPHICS
         | vk::PipelineStageFlags::ALL_COMMANDS;
     let fb = super::stages::FRAMEBUFFER_SPACE;
-    for (i, d) in dependencies.iter().enumerate() {
+    for (i, d) in pass.dependencies.iter().enumerate() {
         let at = format!("pDependencies[{i}]");
-        if d.src_subpass == external && d.dst_subpass == external {
+        let (src_subpass, dst_subpass) = d.subpasses;
+        let (src_stage, dst_stage) = d.stages;
+        let (src_access, dst_access) = d.access;
+        if src_subpass == external && dst_subpass == external {
             refuse(
-                "VUID-VkSubpassDependency-srcSubpass-00865",
+                pass.vuid(BOTH_EXTERNAL),
                 format!("{at} has VK_SUBPASS_EXTERNAL at both ends"),
             )?;
         }
-        if d.src_subpass != external && d.dst_subpass != external && d.src_subpass > d.dst_subpass {
+        if src_subpass != external && dst_subpass != external && src_subpass > dst_subpass {
             refuse(
-                "VUID-VkSubpassDependency-srcSubpass-00864",
+                pass.vuid(ORDER),
                 format!(
-                    "{at}'s srcSubpass ({}) is after its dstSubpass ({})",
-                    d.src_subpass, d.dst_subpass
+                    "{at}'s srcSubpass ({src_subpass}) is after its dstSubpass ({dst_subpass})"
                 ),
             )?;
         }
-        if !sync2 && d.src_stage_mask.is_empty() {
+        if !sync2 && src_stage.is_empty() {
             refuse(
-                "VUID-VkSubpassDependency-srcStageMask-03937",
+                pass.vuid(SRC_ZERO),
                 format!("{at}'s srcStageMask is 0, and synchronization2 is not enabled"),
             )?;
         }
-        if !sync2 && d.dst_stage_mask.is_empty() {
+        if !sync2 && dst_stage.is_empty() {
             refuse(
-                "VUID-VkSubpassDependency-dstStageMask-03937",
+                pass.vuid(DST_ZERO),
                 format!("{at}'s dstStageMask is 0, and synchronization2 is not enabled"),
             )?;
         }
-        if d.src_subpass != external && !graphics.contains(d.src_stage_mask) {
+        if src_subpass != external && !graphics.contains(src_stage) {
             refuse(
-                "VUID-VkRenderPassCreateInfo-pDependencies-00837",
+                pass.vuid(SRC_GRAPHICS),
                 format!(
-                    "{at}'s srcStageMask ({:?}) names a stage a graphics pipeline has not",
-                    d.src_stage_mask
+                    "{at}'s srcStageMask ({src_stage:?}) names a stage a graphics pipeline has not"
                 ),
             )?;
         }
-        if d.dst_subpass != external && !graphics.contains(d.dst_stage_mask) {
+        if dst_subpass != external && !graphics.contains(dst_stage) {
             refuse(
-                "VUID-VkRenderPassCreateInfo-pDependencies-00838",
+                pass.vuid(DST_GRAPHICS),
                 format!(
-                    "{at}'s dstStageMask ({:?}) names a stage a graphics pipeline has not",
-                    d.dst_stage_mask
+                    "{at}'s dstStageMask ({dst_stage:?}) names a stage a graphics pipeline has not"
                 ),
             )?;
         }
-        if let Some(a) = super::stages::unsupported_access(d.src_access_mask, d.src_stage_mask) {
+        if let Some(a) = super::stages::unsupported_access(src_access, src_stage) {
             refuse(
-                "VUID-VkSubpassDependency-srcAccessMask-00868",
-                format!("{at}'s srcAccessMask has {a:?}, which no stage of its srcStageMask ({:?}) supports", d.src_stage_mask),
+                pass.vuid(SRC_ACCESS),
+                format!("{at}'s srcAccessMask has {a:?}, which no stage of its srcStageMask ({src_stage:?}) supports"),
             )?;
         }
-        if let Some(a) = super::stages::unsupported_access(d.dst_access_mask, d.dst_stage_mask) {
+        if let Some(a) = super::stages::unsupported_access(dst_access, dst_stage) {
             refuse(
-                "VUID-VkSubpassDependency-dstAccessMask-00869",
-                format!("{at}'s dstAccessMask has {a:?}, which no stage of its dstStageMask ({:?}) supports", d.dst_stage_mask),
+                pass.vuid(DST_ACCESS),
+                format!("{at}'s dstAccessMask has {a:?}, which no stage of its dstStageMask ({dst_stage:?}) supports"),
             )?;
         }
-        if d.src_subpass == d.dst_subpass && d.src_subpass != external {
+        if src_subpass == dst_subpass && src_subpass != external {
             let (src, dst) = (
-                super::stages::expand(d.src_stage_mask),
-                super::stages::expand(d.dst_stage_mask),
+                super::stages::expand(src_stage),
+                super::stages::expand(dst_stage),
             );
             let logical =
                 vk::PipelineStageFlags::TOP_OF_PIPE | vk::PipelineStageFlags::BOTTOM_OF_PIPE;
             if src.intersects(fb) && !fb.contains(dst & !logical) {
                 refuse(
-                    "VUID-VkSubpassDependency-srcSubpass-06809",
-                    format!("{at} is a self-dependency whose srcStageMask has a framebuffer-space stage, but its dstStageMask ({:?}) has others", d.dst_stage_mask),
+                    pass.vuid(SELF_FRAMEBUFFER),
+                    format!("{at} is a self-dependency whose srcStageMask has a framebuffer-space stage, but its dstStageMask ({dst_stage:?}) has others"),
                 )?;
             }
             if src.intersects(fb)
                 && dst.intersects(fb)
-                && !d.dependency_flags.contains(vk::DependencyFlags::BY_REGION)
+                && !d.flags.contains(vk::DependencyFlags::BY_REGION)
             {
                 refuse(
-                    "VUID-VkSubpassDependency-srcSubpass-02243",
+                    pass.vuid(SELF_BY_REGION),
                     format!("{at} is a self-dependency between framebuffer-space stages without VK_DEPENDENCY_BY_REGION_BIT"),
                 )?;
             }
             let views = masks
-                .get(d.src_subpass as usize)
+                .get(src_subpass as usize)
                 .map_or(0, |m| m.count_ones());
-            if views > 1 && !d.dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
+            if views > 1 && !d.flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
                 refuse(
-                    "VUID-VkSubpassDependency-srcSubpass-00872",
+                    pass.vuid(SELF_VIEW_LOCAL),
                     format!("{at} is a self-dependency of a subpass of {views} views without VK_DEPENDENCY_VIEW_LOCAL_BIT"),
                 )?;
             }
         }
-        if let Some(&offset) = offsets.get(i) {
-            if offset != 0 && d.src_subpass == d.dst_subpass {
+        if let Some(offset) = d.view_offset.filter(|o| *o != 0) {
+            if src_subpass == dst_subpass {
                 refuse(
-                    "VUID-VkRenderPassCreateInfo-pNext-01930",
+                    pass.vuid(OFFSET_SELF),
                     format!("{at} has view offset {offset} but the same subpass at both ends"),
                 )?;
             }
-            if offset != 0 && !d.dependency_flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
+            // The second version's rule for this is its struct's own (checked by
+            // the emitted checks).
+            if !pass.second && !d.flags.contains(vk::DependencyFlags::VIEW_LOCAL) {
                 refuse(
                     "VUID-VkRenderPassCreateInfo-pNext-02512",
                     format!("{at} has view offset {offset} but is not view-local"),
@@ -142,39 +125,95 @@ pub(super) fn subpass_dependency_checks(
             }
         }
     }
-    let multiview_on = device.live().with_features(|f| f.v11.multiview) != vk::FALSE;
-    let max = if masks.iter().any(|m| *m != 0) {
-        multiview_view_count(device)
-    } else {
-        None
-    };
-    for (i, m) in masks.iter().enumerate() {
-        if *m != 0 && !multiview_on {
-            refuse(
-                "VUID-VkRenderPassMultiviewCreateInfo-multiview-06555",
-                format!("pViewMasks[{i}] is {m:#x}, but the multiview feature is not enabled"),
-            )?;
-        }
-        let highest = 32 - m.leading_zeros();
-        if let Some(max) = max.filter(|max| *m != 0 && highest > *max) {
-            refuse(
-                "VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697",
-                format!(
-                    "pViewMasks[{i}] ({m:#x}) names view {}, past maxMultiviewViewCount ({max})",
-                    highest - 1
-                ),
-            )?;
+    // The second version's view masks are checked with its subpasses' references.
+    if !pass.second {
+        let multiview_on = device.live().with_features(|f| f.v11.multiview) != vk::FALSE;
+        let max = if masks.iter().any(|m| *m != 0) {
+            multiview_view_count(device)
+        } else {
+            None
+        };
+        for (i, m) in masks.iter().enumerate() {
+            if *m != 0 && !multiview_on {
+                refuse(
+                    "VUID-VkRenderPassMultiviewCreateInfo-multiview-06555",
+                    format!("pViewMasks[{i}] is {m:#x}, but the multiview feature is not enabled"),
+                )?;
+            }
+            let highest = 32 - m.leading_zeros();
+            if let Some(max) = max.filter(|max| *m != 0 && highest > *max) {
+                refuse(
+                    "VUID-VkRenderPassMultiviewCreateInfo-pViewMasks-06697",
+                    format!(
+                        "pViewMasks[{i}] ({m:#x}) names view {}, past maxMultiviewViewCount ({max})",
+                        highest - 1
+                    ),
+                )?;
+            }
         }
     }
     let mut seen = 0u32;
-    for (i, c) in correlations.iter().enumerate() {
+    for (i, c) in pass.correlations.iter().enumerate() {
         if seen & c != 0 {
             refuse(
-                "VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841",
-                format!("pCorrelationMasks[{i}] ({c:#x}) shares a view with an earlier mask"),
+                pass.vuid(CORRELATION),
+                format!("the correlation mask {i} ({c:#x}) shares a view with an earlier mask"),
             )?;
         }
         seen |= c;
     }
     Ok(())
 }
+
+const BOTH_EXTERNAL: Rule = (
+    "VUID-VkSubpassDependency-srcSubpass-00865",
+    "VUID-VkSubpassDependency2-srcSubpass-03085",
+);
+const ORDER: Rule = (
+    "VUID-VkSubpassDependency-srcSubpass-00864",
+    "VUID-VkSubpassDependency2-srcSubpass-03084",
+);
+const SRC_ZERO: Rule = (
+    "VUID-VkSubpassDependency-srcStageMask-03937",
+    "VUID-VkSubpassDependency2-srcStageMask-03937",
+);
+const DST_ZERO: Rule = (
+    "VUID-VkSubpassDependency-dstStageMask-03937",
+    "VUID-VkSubpassDependency2-dstStageMask-03937",
+);
+const SRC_GRAPHICS: Rule = (
+    "VUID-VkRenderPassCreateInfo-pDependencies-00837",
+    "VUID-VkRenderPassCreateInfo2-pDependencies-03054",
+);
+const DST_GRAPHICS: Rule = (
+    "VUID-VkRenderPassCreateInfo-pDependencies-00838",
+    "VUID-VkRenderPassCreateInfo2-pDependencies-03055",
+);
+const SRC_ACCESS: Rule = (
+    "VUID-VkSubpassDependency-srcAccessMask-00868",
+    "VUID-VkSubpassDependency2-srcAccessMask-03088",
+);
+const DST_ACCESS: Rule = (
+    "VUID-VkSubpassDependency-dstAccessMask-00869",
+    "VUID-VkSubpassDependency2-dstAccessMask-03089",
+);
+const SELF_FRAMEBUFFER: Rule = (
+    "VUID-VkSubpassDependency-srcSubpass-06809",
+    "VUID-VkSubpassDependency2-srcSubpass-06810",
+);
+const SELF_BY_REGION: Rule = (
+    "VUID-VkSubpassDependency-srcSubpass-02243",
+    "VUID-VkSubpassDependency2-srcSubpass-02245",
+);
+const SELF_VIEW_LOCAL: Rule = (
+    "VUID-VkSubpassDependency-srcSubpass-00872",
+    "VUID-VkRenderPassCreateInfo2-pDependencies-03060",
+);
+const OFFSET_SELF: Rule = (
+    "VUID-VkRenderPassCreateInfo-pNext-01930",
+    "VUID-VkSubpassDependency2-viewOffset-02530",
+);
+const CORRELATION: Rule = (
+    "VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841",
+    "VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056",
+);

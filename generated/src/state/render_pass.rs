@@ -51,6 +51,30 @@ pub(crate) struct RenderPassRecord {
     /// The union of the source and of the destination stage masks of its
     /// dependencies.
     pub dependency_stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
+    /// Its dependencies between two of its subpasses (source, destination).
+    pub dependencies: Vec<(u32, u32)>,
+    /// Made by `vkCreateRenderPass2`.
+    pub second: bool,
+}
+
+impl RenderPassRecord {
+    /// Whether a chain of dependencies leads from subpass `from` to subpass `to`.
+    pub(crate) fn depends(&self, from: u32, to: u32) -> bool {
+        let mut reached = vec![from];
+        let mut next = 0;
+        while let Some(&s) = reached.get(next) {
+            next += 1;
+            if s == to {
+                return true;
+            }
+            for &(a, b) in &self.dependencies {
+                if a == s && !reached.contains(&b) {
+                    reached.push(b);
+                }
+            }
+        }
+        false
+    }
 }
 
 impl RenderPassRecord {

@@ -15,6 +15,16 @@ const MULTIVIEW_MASKS: &str = "checks a chained VkRenderPassMultiviewCreateInfo'
 const SUBPASS_REFERENCES: &str = "checks what each subpass references against the render pass's attachments (formats, their format features as the physical device reports them, sample counts, layouts) and its view masks against each other and maxMultiviewViewCount (the 1.3.239 layer does not check that an attachment keeps one layout within a subpass: that rule is proven by the error alone)";
 const UNPROVEN_RESOLVE_FEATURES: &str = "checked by the safe methods in every build, but no test breaks it: a resolve attachment has its color attachment's format, whose features a color attachment needs as well, so a format without them is refused for the color attachment first";
 
+const DESCRIPTIONS2: &str = "checks each attachment's format and layouts, with the stencil layouts its chained VkAttachmentDescriptionStencilLayout gives, and each depth/stencil and input reference's layouts and aspects against the attachments' formats (the descriptions of either version read into one Pass, each rule written once)";
+const DESCRIPTIONS2_ALONE: &str = "checks the depth/stencil reference's layout against the attachment's format and the stencil layout it chains (the 1.3.239 layer does not check it: the error alone proves it)";
+const DEPTH_RESOLVE_ALONE: &str = "checks that a subpass resolving depth/stencil has a depth/stencil attachment (the 1.3.239 layer does not check it, and lavapipe crashes on such a render pass: the error alone proves it)";
+const RENDER_PASS2_INDICES: &str = "checks each dependency's subpasses against the subpass count and a depth/stencil resolve attachment against the attachment count, before the checks that read them";
+const DEPTH_RESOLVE: &str = "checks each subpass's chained VkSubpassDescriptionDepthStencilResolve against its depth/stencil attachment (sample counts, formats' depth and stencil components, the resolve format's depth/stencil attachment feature) and its modes against the device's VkPhysicalDeviceDepthStencilResolveProperties";
+const UNPROVEN_RESOLVE_MODES: &str = "checked by the safe methods in every build (against VkPhysicalDeviceDepthStencilResolveProperties), but no test breaks it: lavapipe resolves depth by every mode, and depth and stencil independently";
+const UNPROVEN_ALIASING: &str = "checked by the safe methods in every build where memory is known, at the render pass instance's begin: attachments whose views share memory, one written, are refused unless both have MAY_ALIAS, and then unless a chain of the render pass's dependencies orders every two subpasses that use them (the begin's aliasing check, VUID-vkCmdBeginRenderPass2-framebuffer-02533), but no test breaks it yet";
+
+const MESH_STAGES: &str = "checked by the safe methods in every build: the mesh and task shader stages are VK_EXT_mesh_shader's, whose bits the emitted parameter check refuses on a device that does not enable it, and the safe create_device does not (the extension brings rules no check enforces), so no safe dependency names them";
+
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
     Special {
@@ -115,6 +125,210 @@ pub(super) const ROWS: &[Special] = &[
             (
                 "VUID-VkRenderPassCreateInfo2-viewMask-03059",
                 How::Dynamic(SUBPASS_REFERENCES),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-format-06698",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-format-06906",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-format-06907",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-pNext-06704",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-pNext-06705",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-format-06249",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-format-06250",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-format-06247",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkAttachmentDescription2-format-06248",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-attachment-06244",
+                How::Dynamic(DESCRIPTIONS2_ALONE),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-attachment-06245",
+                How::Dynamic(DESCRIPTIONS2_ALONE),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-attachment-06246",
+                How::Dynamic(DESCRIPTIONS2_ALONE),
+            ),
+            (
+                "VUID-VkSubpassDescription2-attachment-06915",
+                How::Dynamic(DESCRIPTIONS2_ALONE),
+            ),
+            (
+                "VUID-VkSubpassDescription2-attachment-06251",
+                How::Dynamic(DESCRIPTIONS2_ALONE),
+            ),
+            (
+                "VUID-VkSubpassDescription2-attachment-02799",
+                How::Dynamic(DESCRIPTIONS2),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-pAttachments-02522",
+                How::Dynamic(FIRST_USE),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-pAttachments-02523",
+                How::Dynamic(FIRST_USE),
+            ),
+            (
+                "VUID-VkSubpassDescription2-loadOp-03064",
+                How::Dynamic(FIRST_USE),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-pDependencies-03054",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-pDependencies-03055",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcSubpass-03084",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcSubpass-03085",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcSubpass-06810",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcAccessMask-03088",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstAccessMask-03089",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcSubpass-02245",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-viewOffset-02530",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-03937",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-03937",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-pDependencies-03060",
+                How::Dynamic(DEPENDENCIES),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056",
+                How::Dynamic(MULTIVIEW_MASKS),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-srcSubpass-02526",
+                How::Dynamic(RENDER_PASS2_INDICES),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-dstSubpass-02527",
+                How::Dynamic(RENDER_PASS2_INDICES),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-pSubpasses-06473",
+                How::Dynamic(RENDER_PASS2_INDICES),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177",
+                How::Dynamic(DEPTH_RESOLVE_ALONE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179",
+                How::Dynamic(DEPTH_RESOLVE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180",
+                How::Dynamic(DEPTH_RESOLVE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-02651",
+                How::Dynamic(DEPTH_RESOLVE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03181",
+                How::Dynamic(DEPTH_RESOLVE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03182",
+                How::Dynamic(DEPTH_RESOLVE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03178",
+                How::Dynamic(DEPTH_RESOLVE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-stencilResolveMode-03184",
+                How::Dynamic(DEPTH_RESOLVE),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-depthResolveMode-03183",
+                How::User(UNPROVEN_RESOLVE_MODES),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03185",
+                How::User(UNPROVEN_RESOLVE_MODES),
+            ),
+            (
+                "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03186",
+                How::User(UNPROVEN_RESOLVE_MODES),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-None-03049",
+                How::User(UNPROVEN_ALIASING),
+            ),
+            (
+                "VUID-VkRenderPassCreateInfo2-attachment-03050",
+                How::User(UNPROVEN_ALIASING),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-04095",
+                How::User(MESH_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-04096",
+                How::User(MESH_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-04095",
+                How::User(MESH_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-04096",
+                How::User(MESH_STAGES),
             ),
         ],
         ..NONE
