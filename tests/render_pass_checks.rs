@@ -1246,6 +1246,19 @@ fn resolving(
     x.resolve = Some((into, modes.0, modes.1));
 }
 
+/// [`resolving`] the depth aspect by sample zero, the stencil not at all.
+fn depth_resolving(d: &mut Described, x: &mut Extra2, into: u32) {
+    resolving(
+        d,
+        x,
+        into,
+        (
+            vk::ResolveModeFlags::SAMPLE_ZERO,
+            vk::ResolveModeFlags::NONE,
+        ),
+    );
+}
+
 fn attachment_of(
     d: &Described,
     format: vk::Format,
@@ -1329,28 +1342,12 @@ const DESCRIBED_SECOND: &[Described2] = &[
         )];
     }),
     ("VUID-VkRenderPassCreateInfo2-pSubpasses-06473", |d, x| {
-        resolving(
-            d,
-            x,
-            9,
-            (
-                vk::ResolveModeFlags::SAMPLE_ZERO,
-                vk::ResolveModeFlags::NONE,
-            ),
-        );
+        depth_resolving(d, x, 9);
     }),
     (
         "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03177",
         |d, x| {
-            resolving(
-                d,
-                x,
-                1,
-                (
-                    vk::ResolveModeFlags::SAMPLE_ZERO,
-                    vk::ResolveModeFlags::NONE,
-                ),
-            );
+            depth_resolving(d, x, 1);
             d.depth = None;
             d.colors = vec![vk::AttachmentReference {
                 attachment: 0,
@@ -1362,15 +1359,7 @@ const DESCRIBED_SECOND: &[Described2] = &[
     (
         "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03179",
         |d, x| {
-            resolving(
-                d,
-                x,
-                2,
-                (
-                    vk::ResolveModeFlags::SAMPLE_ZERO,
-                    vk::ResolveModeFlags::NONE,
-                ),
-            );
+            depth_resolving(d, x, 2);
             d.attachments[2].samples = ONE;
             d.depth = Some(vk::AttachmentReference {
                 attachment: 1,
@@ -1380,44 +1369,16 @@ const DESCRIBED_SECOND: &[Described2] = &[
     ),
     (
         "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03180",
-        |d, x| {
-            resolving(
-                d,
-                x,
-                2,
-                (
-                    vk::ResolveModeFlags::SAMPLE_ZERO,
-                    vk::ResolveModeFlags::NONE,
-                ),
-            )
-        },
+        |d, x| depth_resolving(d, x, 2),
     ),
     (
         "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-02651",
-        |d, x| {
-            resolving(
-                d,
-                x,
-                0,
-                (
-                    vk::ResolveModeFlags::SAMPLE_ZERO,
-                    vk::ResolveModeFlags::NONE,
-                ),
-            )
-        },
+        |d, x| depth_resolving(d, x, 0),
     ),
     (
         "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03181",
         |d, x| {
-            resolving(
-                d,
-                x,
-                3,
-                (
-                    vk::ResolveModeFlags::SAMPLE_ZERO,
-                    vk::ResolveModeFlags::NONE,
-                ),
-            );
+            depth_resolving(d, x, 3);
             d.attachments
                 .push(attachment_of(d, vk::Format::D16_UNORM, ONE));
         },
@@ -1425,15 +1386,7 @@ const DESCRIBED_SECOND: &[Described2] = &[
     (
         "VUID-VkSubpassDescriptionDepthStencilResolve-pDepthStencilResolveAttachment-03182",
         |d, x| {
-            resolving(
-                d,
-                x,
-                1,
-                (
-                    vk::ResolveModeFlags::SAMPLE_ZERO,
-                    vk::ResolveModeFlags::NONE,
-                ),
-            );
+            depth_resolving(d, x, 1);
             d.attachments[2].format = vk::Format::D32_SFLOAT;
         },
     ),

@@ -31,6 +31,7 @@ pub(crate) mod image;
 pub(crate) mod image_copies;
 pub(crate) mod image_layouts;
 pub(crate) mod memory;
+pub(crate) mod pass_descriptions;
 pub(crate) mod pass_instance;
 pub(crate) mod pipeline;
 pub(crate) mod pipeline_fixed;
