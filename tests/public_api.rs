@@ -277,8 +277,9 @@ fn every_method_and_struct_the_examples_use_shows_an_example() {
 }
 
 /// Each rule in an item's docs carries its VUID, its text and a mark that agrees with
-/// the coverage report (`validation.json`): *yours* for a rule left to the caller,
-/// *checked* for a dynamic check, *by the types* for a static one.
+/// the coverage report (`validation.json`): *yours* for a rule left to the caller (or
+/// settled only by the safe forms of the indirect commands), *checked* for a dynamic
+/// check, *by the types* for a static one.
 #[test]
 fn the_docs_mark_each_rule_as_the_report_settles_it() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
@@ -286,11 +287,22 @@ fn the_docs_mark_each_rule_as_the_report_settles_it() {
         &std::fs::read_to_string(root.join("generated/validation.json")).unwrap(),
     )
     .unwrap();
+    // A rule settled by the indirect commands' safe forms alone is the caller's in
+    // the docs of the generated methods, which take any buffer.
+    let form = "by the safe forms over an `IndirectBuffer` only: ";
     let status: std::collections::BTreeMap<&str, &str> = report["rules"]
         .as_array()
         .unwrap()
         .iter()
-        .map(|r| (r["vuid"].as_str().unwrap(), r["status"].as_str().unwrap()))
+        .map(|r| {
+            let by_form = r["mechanism"].as_str().is_some_and(|m| m.starts_with(form));
+            let status = if by_form {
+                "user"
+            } else {
+                r["status"].as_str().unwrap()
+            };
+            (r["vuid"].as_str().unwrap(), status)
+        })
         .collect();
     let mut seen = 0;
     for file in sources(&root.join("generated/src/generated")) {

@@ -215,6 +215,7 @@ pub use ash::vk;
 pub use diagnostics::debug_log::MessageLog;
 pub use handles::*;
 pub use memory::allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllocator};
+pub use memory::indirect::{IndirectArguments, IndirectBuffer};
 pub use memory::mapping::MappedMemory;
 pub use recorder::{
     InRenderPass, InRendering, InVideoCoding, Inside, Outside, OutsideRenderPass, Recorder, Scope,

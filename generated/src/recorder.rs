@@ -617,6 +617,9 @@ impl CommandBuffer {
         if r != vk::Result::SUCCESS {
             return Err(Error::Vk(r));
         }
+        // The earlier recording can no longer run (it is not pending, checked above):
+        // what it kept alive goes now, not when this one ends.
+        self.keep_alive(Vec::new());
         self.uses().began(info.flags);
         self.uses().set_recorder(true);
         let pool = self.device().live().pool_family(self.parent().raw());

@@ -32,5 +32,20 @@ macro_rules! as_safe_as {
     (upload_image, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
         $(#[$m])* $v fn $($rest)*
     };
+    (draw_indirect_from, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (draw_indexed_indirect_from, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (draw_indirect_count_from, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (draw_indexed_indirect_count_from, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
+    (dispatch_indirect_from, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+        $(#[$m])* $v fn $($rest)*
+    };
 }
 pub(crate) use as_safe_as;

@@ -2,4 +2,5 @@
 //! mapped memory.
 
 pub(crate) mod allocation;
+pub(crate) mod indirect;
 pub(crate) mod mapping;

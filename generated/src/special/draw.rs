@@ -75,6 +75,16 @@ pub(crate) fn draw_checks<S: Scope>(
         stride_checks(recorder)?;
         draw_state_checks(recorder, rules)
     })?;
+    vertices_checks(recorder, vertices)
+}
+
+/// The vertices and instances of one draw (a direct draw's parameters, or the
+/// arguments of an indirect one the host wrote): its last instance index in a
+/// multiview instance, and its vertex fetches inside the bound vertex buffers.
+pub(crate) fn vertices_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    vertices: Vertices,
+) -> Result<()> {
     let Some((first_vertex, vertex_count, first_instance, instance_count, vuid, multiview)) =
         vertices
     else {
@@ -1036,8 +1046,23 @@ pub(crate) fn indexed_draw_checks<S: Scope>(
     draw: &DrawRules,
 ) -> Result<()> {
     draw_checks(recorder, pipeline_vuid, sets_vuid, vertex_vuid, None, draw)?;
-    let Some((size, offset, ty)) = recorder.bound[0].index else {
+    if recorder.bound[0].index.is_none() {
         return refuse(bound_vuid, "no index buffer is bound");
+    }
+    indexed_range_checks(recorder, range)
+}
+
+/// The indices, vertices and instances of one indexed draw (a direct draw's
+/// parameters, or the arguments of an indirect one the host wrote): the indices it
+/// reads inside the bound index buffer, its last instance index in a multiview
+/// instance, and the vertices its indices can name inside the bound vertex buffers.
+/// Nothing without an index buffer bound, which the command's own check refuses.
+pub(crate) fn indexed_range_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    range: Option<IndexedRange>,
+) -> Result<()> {
+    let Some((size, offset, ty)) = recorder.bound[0].index else {
+        return Ok(());
     };
     let Some((count, first, first_instance, instance_count, vertex_offset, vuid, multiview, fetch)) =
         range
@@ -1057,6 +1082,10 @@ pub(crate) fn indexed_draw_checks<S: Scope>(
             vuid,
             format!("the draw reads indices up to byte {end} of an index buffer of {size} bytes (firstIndex = {first}, indexCount = {count}, offset = {offset})"),
         )?;
+    }
+    // A draw of no index or no instance fetches no vertex.
+    if count == 0 || instance_count == 0 {
+        return Ok(());
     }
     indexed_fetch_checks(
         recorder,

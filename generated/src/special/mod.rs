@@ -30,6 +30,7 @@ pub(crate) mod framebuffer;
 pub(crate) mod image;
 pub(crate) mod image_copies;
 pub(crate) mod image_layouts;
+pub(crate) mod indirect;
 pub(crate) mod memory;
 pub(crate) mod pass_descriptions;
 pub(crate) mod pass_instance;

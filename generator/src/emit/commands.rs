@@ -1368,6 +1368,12 @@ fn owned_rules_doc(command: &str, owned: &[crate::plan::safety::Owned], heading:
         s.push_str(&format!(
             "The `{read}` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. "
         ));
+        if let Some(form) = crate::plan::special::indirect::form(command) {
+            s.push_str(&format!(
+                "Its safe form, [`Self::{}`], reads them from an [`IndirectBuffer`](crate::IndirectBuffer) that only the host writes, and checks them. ",
+                form.method
+            ));
+        }
     }
     s.push_str(&format!(
         "The caller upholds {} that no check of this method enforces (its command's and those of the structs it takes):\n",

@@ -46,25 +46,42 @@ pub const HELPER_COMMANDS: &[(&str, &[&str], &[&str])] = &[
     ),
 ];
 
+/// One arm of the macro: the helper named `name`, safe or `unsafe`.
+fn arm(name: &str, safe: bool) -> TokenStream {
+    let ident = format_ident!("{name}");
+    let qualifier = if safe { quote!() } else { quote!(unsafe) };
+    quote! {
+        (#ident, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
+            $(#[$m])* $v #qualifier fn $($rest)*
+        };
+    }
+}
+
 /// The macro, with one arm per helper: safe where the plan made every command's
 /// method safe but for the rules the helper upholds (or did not emit it), `unsafe`
 /// otherwise.
 pub fn emit(plans: &Plans) -> TokenStream {
     let arms = HELPER_COMMANDS.iter().map(|(name, commands, upheld)| {
-        let ident = format_ident!("{name}");
         let safe = commands.iter().all(|command| {
             plans
                 .safety
                 .get(*command)
                 .is_none_or(|s| !s.raw && s.owned.iter().all(|o| upheld.contains(&o.vuid.as_str())))
         });
-        let qualifier = if safe { quote!() } else { quote!(unsafe) };
-        quote! {
-            (#ident, $(#[$m:meta])* $v:vis fn $($rest:tt)*) => {
-                $(#[$m])* $v #qualifier fn $($rest)*
-            };
-        }
+        arm(name, safe)
     });
+    // The safe forms of the indirect commands: safe where their command's method
+    // leaves its caller only rules the form settles (`plan/special/indirect.rs`).
+    let forms = crate::plan::special::indirect::FORMS.iter().map(|form| {
+        let safe = plans.safety.get(form.command).is_none_or(|s| {
+            !s.raw
+                && s.owned
+                    .iter()
+                    .all(|o| form.settles.iter().any(|(v, _)| *v == o.vuid))
+        });
+        arm(form.method, safe)
+    });
+    let arms = arms.chain(forms);
     quote! {
         //! Which hand-written helpers are `unsafe`: exactly those whose generated
         //! method is (see `generator/src/emit/helpers.rs`).

@@ -53,18 +53,24 @@ pub(crate) fn doc_rules(plans: &Plans, item: &str) -> String {
          program that compiles breaks it); how each is settled is in the crate's \
          `validation.json`:\n"
     );
-    let rank = |r: &Settlement| match r {
+    let by_form = |v: &str| crate::plan::special::indirect::settled(v).is_some();
+    let rank = |(v, r): &(String, Settlement)| match r {
+        _ if by_form(v) => 0,
         Settlement::User(_) => 0,
         Settlement::Dynamic(_) => 1,
         Settlement::Static(_) => 2,
     };
     let mut ordered: Vec<_> = rules.iter().collect();
-    ordered.sort_by_key(|(_, r)| rank(r));
+    ordered.sort_by_key(|e| rank(e));
     for (vuid, settlement) in ordered {
         // A rule left to the caller says why in a few words: the reason up to its
         // first explanation ("explicit rule", "checked by the safe methods in every
         // build" where no test breaks it yet).
         let mark = match settlement {
+            // Settled by a safe form only: the generated method leaves it to its caller.
+            _ if by_form(vuid) => {
+                "*yours*; checked by the safe forms over an `IndirectBuffer`".to_owned()
+            }
             Settlement::User(why) => {
                 let short = why
                     .split([':', '(', ';'])

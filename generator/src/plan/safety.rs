@@ -126,6 +126,14 @@ pub fn enforced(s: &Settlement) -> bool {
     }
 }
 
+/// Whether a generated method enforces a rule: settled, but not by the safe form of
+/// an indirect command alone (`special::indirect`), whose checks read arguments the
+/// generated method, taking any buffer, cannot see.
+fn enforced_by_method(settlement: &BTreeMap<&str, &Settlement>, vuid: &str) -> bool {
+    settlement.get(vuid).is_some_and(|s| enforced(s))
+        && super::special::indirect::settled(vuid).is_none()
+}
+
 /// Which emitted extensions the safe `create_instance` and `create_device` let a
 /// program enable. Enabling an extension makes its rules reachable, on its own
 /// methods and on every other method whose structs or values it extends (a core
@@ -340,9 +348,7 @@ pub fn enabling(cx: &Context, rows: &[MethodRow], records: &[Record]) -> Enablin
                 .flat_map(|i| by_item.get(i.as_str()).into_iter().flatten())
                 .copied()
                 .filter(|rule| {
-                    !settlement
-                        .get(rule.vuid.as_str())
-                        .is_some_and(|s| enforced(s))
+                    !enforced_by_method(&settlement, &rule.vuid)
                         && unclassed(rule)
                         && reachable(cx, rule, &out.allowed)
                 })
@@ -403,10 +409,7 @@ pub fn decide(
                 .iter()
                 .flat_map(|i| by_item.get(i.as_str()).into_iter().flatten())
             {
-                if settlement
-                    .get(rule.vuid.as_str())
-                    .is_some_and(|s| enforced(s))
-                {
+                if enforced_by_method(&settlement, &rule.vuid) {
                     continue;
                 }
                 // A rule only an extension the safe constructors refuse can reach is

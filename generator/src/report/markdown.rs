@@ -418,6 +418,15 @@ fn core_unsafe_section(s: &mut String, r: &Report) {
                  synchronized object the wrappers cannot lock, which its caller vouches for"
             );
         }
+        if let Some((form, settled)) = m.form {
+            let _ = writeln!(
+                s,
+                "  - its safe form, `Recorder::{form}`, reads the arguments from an \
+                 `IndirectBuffer` that only the host writes, and settles {settled} of these \
+                 {} rules",
+                m.owned
+            );
+        }
         for o in &m.owned_rules {
             let _ = writeln!(s, "  - `{}`: {}", o.vuid, o.text);
         }

@@ -135,6 +135,9 @@ pub struct MethodTally {
     pub raw: bool,
     /// The version or extension the command belongs to (`VK_VERSION_1_0`).
     pub home: String,
+    /// The safe form of an indirect command, and the rules it settles of those the
+    /// method leaves its caller (`plan/special/indirect.rs`).
+    pub form: Option<(&'static str, usize)>,
 }
 
 /// One reviewed class of rules a safe method may leave unchecked.
@@ -213,9 +216,16 @@ impl Report<'_> {
                     counts,
                     safe: method_safety.is_none_or(|m| m.safe()),
                     owned: owned_rules.len(),
-                    owned_rules,
                     raw: method_safety.is_some_and(|m| m.raw),
                     home: home(&row.command),
+                    form: crate::plan::special::indirect::form(&row.command).map(|f| {
+                        let settled = owned_rules
+                            .iter()
+                            .filter(|o| f.settles.iter().any(|(v, _)| *v == o.vuid))
+                            .count();
+                        (f.method, settled)
+                    }),
+                    owned_rules,
                 }
             })
             .collect();

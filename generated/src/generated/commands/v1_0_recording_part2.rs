@@ -1345,7 +1345,7 @@ The caller upholds the rules that [`Self::dispatch`] checks at run time: `VUID-v
 
 # Safety
 
-The `VkDispatchIndirectCommand` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
+The `VkDispatchIndirectCommand` arguments it reads from the buffer live in GPU memory, which tuff cannot read when the command is recorded: their rules are the caller's. Its safe form, [`Self::dispatch_indirect_from`], reads them from an [`IndirectBuffer`](crate::IndirectBuffer) that only the host writes, and checks them. The caller upholds these 4 rules that no check of this method enforces (its command's and those of the structs it takes):
 
 - `VUID-vkCmdDispatchIndirect-offset-00407`: The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
 - `VUID-VkDispatchIndirectCommand-x-00417`: `x` must be less than or equal to `VkPhysicalDeviceLimits::maxComputeWorkGroupCount`\[0\]
@@ -1364,7 +1364,7 @@ The rules of `vkCmdDispatchIndirect` that apply to this crate's API ([reference 
 - `VUID-vkCmdDispatchIndirect-None-04115` (*yours*; checked by the safe methods in every build): If a VkImageView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the image …
 - `VUID-vkCmdDispatchIndirect-OpImageWrite-04469` (*yours*; checked by the safe methods in every build): If a VkBufferView is accessed using `OpImageWrite` as a result of this command, then the `Type` of the `Texel` operand of that instruction must have at least as many components as the buffer …
 - `VUID-vkCmdDispatchIndirect-None-07288` (*yours*; explicit rule): Any shader invocation executed by this command must terminate
-- `VUID-vkCmdDispatchIndirect-offset-00407` (*yours*; explicit rule): The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
+- `VUID-vkCmdDispatchIndirect-offset-00407` (*yours*; checked by the safe forms over an `IndirectBuffer`): The sum of `offset` and the size of `VkDispatchIndirectCommand` must be less than or equal to the size of `buffer`
 - `VUID-vkCmdDispatchIndirect-aspectMask-06478` (*yours*; explicit rule): If a VkImageView is sampled with depth comparison, the image view must have been created with an `aspectMask` that contains `VK_IMAGE_ASPECT_DEPTH_BIT`
 - `VUID-vkCmdDispatchIndirect-None-06479` (*yours*; checked by the safe methods in every build): If a VkImageView is sampled with depth comparison, the image view&#8217;s format features must contain `VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_DEPTH_COMPARISON_BIT`
 - `VUID-vkCmdDispatchIndirect-OpTypeImage-07027` (*yours*; checked by the safe methods in every build): For any VkImageView being written as a storage image where the image format field of the `OpTypeImage` is `Unknown`, the view&#8217;s format features must contain …

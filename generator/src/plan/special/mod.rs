@@ -26,6 +26,7 @@ mod draw_state;
 mod framebuffer;
 mod image;
 mod image_copies;
+pub mod indirect;
 mod memory;
 mod pass_instance;
 mod pipeline;
@@ -166,9 +167,9 @@ const fn unsafe_call(
 
 /// The structs a command reads from a buffer when it executes (its indirect
 /// arguments, which live in GPU memory): no parameter names them, but their rules
-/// apply to every call, so a method is safe only when they are settled too. Until
-/// tuff checks the arguments it cannot see (issue "safe core", point 2), they keep
-/// these methods `unsafe`, whatever their own rules.
+/// apply to every call, so a method is safe only when they are settled too. The
+/// generated methods, which take any buffer, cannot see them and stay `unsafe`; the
+/// core ones have safe forms over host-written arguments ([`indirect::FORMS`]).
 pub const INDIRECT: &[(&str, &str)] = &[
     ("vkCmdDispatchIndirect", "VkDispatchIndirectCommand"),
     ("vkCmdDrawIndirect", "VkDrawIndirectCommand"),
@@ -334,6 +335,7 @@ pub fn settled(vuid: &str) -> Option<How> {
         .flat_map(|s| s.settles)
         .find(|(v, _)| *v == vuid)
         .map(|(_, how)| *how)
+        .or_else(|| indirect::settled(vuid))
 }
 
 #[cfg(test)]
@@ -356,12 +358,13 @@ mod tests {
     fn every_settled_rule_is_one_the_pinned_registry_has() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../validusage.json");
         let rules = std::fs::read_to_string(path).expect("the pinned validusage.json");
-        for s in specials() {
-            for (v, _) in s.settles {
+        let rows = specials().map(|s| (s.command, s.settles));
+        let forms = indirect::FORMS.iter().map(|f| (f.command, f.settles));
+        for (command, settles) in rows.chain(forms) {
+            for (v, _) in settles {
                 assert!(
                     rules.contains(&format!("\"{v}\"")),
-                    "{}: {v} is no rule of the pinned registry",
-                    s.command
+                    "{command}: {v} is no rule of the pinned registry"
                 );
             }
         }
