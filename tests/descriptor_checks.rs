@@ -1627,8 +1627,7 @@ fn secondaries_leave_nothing_bound() {
         &[],
     )
     .expect("set");
-    // SAFETY: the secondary records nothing; the dispatch is refused.
-    unsafe { rec.execute_commands(&secondary) }.expect("execute");
+    rec.execute_commands(&secondary).expect("execute");
     assert_eq!(vuid(rec.dispatch(1, 1, 1)), "VUID-vkCmdDispatch-None-02700");
     drop(rec);
     assert_silent(&s.messages);

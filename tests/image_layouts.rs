@@ -632,11 +632,11 @@ fn a_secondary_is_checked_against_the_layouts_its_primary_leaves() {
         .expect("begin");
     transition(&mut rec, &a, COLOR, UNDEFINED, GENERAL).expect("to GENERAL");
     assert_eq!(
-        vuid(unsafe { rec.execute_commands(&secondary) }),
+        vuid(rec.execute_commands(&secondary)),
         "VUID-vkCmdClearColorImage-imageLayout-00004"
     );
     transition(&mut rec, &a, COLOR, GENERAL, DST).expect("to DST");
-    unsafe { rec.execute_commands(&secondary) }.expect("execute");
+    rec.execute_commands(&secondary).expect("execute");
     // The secondary leaves the image in TRANSFER_DST_OPTIMAL, as the primary knows.
     transition(&mut rec, &a, COLOR, DST, SRC).expect("to SRC");
     rec.end().expect("end");

@@ -277,14 +277,12 @@ fn a_secondary_is_checked_against_the_queries_its_primary_leaves() {
     rec.reset_query_pool(&pool, 0, 1).expect("reset");
     rec.write_timestamp(BOTTOM, &pool, 0).expect("timestamp");
     assert_eq!(
-        // SAFETY: execute_commands's other rules hold: a secondary recorded outside a
-        // render pass, executed outside one.
-        vuid(unsafe { rec.execute_commands(&secondary) }),
+        vuid(rec.execute_commands(&secondary)),
         "VUID-vkCmdWriteTimestamp-None-00830"
     );
     rec.reset_query_pool(&pool, 0, 1).expect("reset");
-    // SAFETY: as above.
-    unsafe { rec.execute_commands(&secondary) }.expect("execute after the reset");
+    rec.execute_commands(&secondary)
+        .expect("execute after the reset");
     rec.end().expect("end");
     submit(&s, &[&primary]).expect("submit");
     // The primary leaves the query used, as the secondary left it.
@@ -292,8 +290,7 @@ fn a_secondary_is_checked_against_the_queries_its_primary_leaves() {
     let mut rec = again
         .begin(&tuff::CommandBufferBeginInfo::new())
         .expect("begin");
-    // SAFETY: as above.
-    unsafe { rec.execute_commands(&secondary) }.expect("execute");
+    rec.execute_commands(&secondary).expect("execute");
     rec.end().expect("end");
     assert_eq!(
         vuid(submit(&s, &[&again])),

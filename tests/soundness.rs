@@ -522,7 +522,7 @@ fn a_secondary_executed_by_a_pending_primary_cannot_be_rerecorded() {
         &[],
     )
     .expect("recorded");
-    unsafe { rec.execute_commands(&secondary) }.expect("execute");
+    rec.execute_commands(&secondary).expect("execute");
     rec.end().expect("end primary");
     submit(&s, &[&primary], &done).expect("submit");
 
@@ -791,7 +791,7 @@ fn recorder_states_follow_the_begin_info() {
         })
         .clear_values(&clear);
     let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::SECONDARY_COMMAND_BUFFERS);
-    unsafe { rec.execute_commands(&secondary) }.expect("execute");
+    rec.execute_commands(&secondary).expect("execute");
     rec.end_render_pass().end().expect("end primary");
     let done = fence(&s);
     submit(&s, &[&primary], &done).expect("submit");
@@ -1407,7 +1407,7 @@ fn record_execute(
     let mut rec = primary
         .begin(&tuff::CommandBufferBeginInfo::new().flags(flags))
         .expect("begin primary");
-    unsafe { rec.execute_commands(secondary) }.expect("execute");
+    rec.execute_commands(secondary).expect("execute");
     rec.end().expect("end primary");
 }
 
@@ -1464,7 +1464,7 @@ fn every_submission_command_refuses_every_wrong_command_buffer_state() {
             .begin(&tuff::CommandBufferBeginInfo::new())
             .expect("begin third");
         assert_eq!(
-            vuid(unsafe { rec.execute_commands(&secondary) }),
+            vuid(rec.execute_commands(&secondary)),
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091"
         );
         rec.end().expect("end third");

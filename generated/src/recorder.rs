@@ -321,6 +321,13 @@ pub(crate) struct PassInstance {
     /// recording began the instance with one (otherwise the command buffer's initial
     /// device mask is the instance's).
     pub device_mask: Option<u32>,
+    /// How the current subpass's commands are given (a render pass begun in this
+    /// recording): inline, or by executing secondaries.
+    pub contents: vk::SubpassContents,
+    /// The framebuffer of a render pass begun in this recording.
+    pub framebuffer: vk::Framebuffer,
+    /// The flags of dynamic rendering begun in this recording.
+    pub rendering_flags: vk::RenderingFlags,
 }
 
 impl PassInstance {
@@ -364,6 +371,8 @@ pub(crate) struct ActiveQuery {
     pub ty: vk::QueryType,
     /// The subpass it was begun in, or `None` outside a render pass instance.
     pub subpass: Option<u32>,
+    /// The control flags it was begun with.
+    pub flags: vk::QueryControlFlags,
 }
 
 /// A command buffer in the recording state `S`.
@@ -409,6 +418,12 @@ pub struct Recorder<'c, S: Scope> {
     pub(crate) instance: Option<PassInstance>,
     /// The queries begun and not yet ended.
     pub(crate) queries: Vec<ActiveQuery>,
+    /// The types of the queries the recording begins (a primary executing it as a
+    /// secondary must have none of them active).
+    pub(crate) query_types: Vec<vk::QueryType>,
+    /// Whether the recording begins dynamic rendering that suspends or resumes
+    /// (only through `begin_rendering_unchecked`).
+    pub(crate) suspends: bool,
     /// The image layouts the recording needs at its start and leaves so far.
     pub(crate) layouts: crate::state::layouts::Recording,
     /// The queries the recording needs reset at its start and leaves so far.
@@ -463,6 +478,56 @@ impl<S: Scope> core::fmt::Debug for Recorder<'_, S> {
             .field("state", &state.rsplit("::").next().unwrap_or(state))
             .field("poisoned", &self.poisoned.is_some())
             .finish_non_exhaustive()
+    }
+}
+
+/// What a secondary is begun for: `info`'s flags and inheritance info, with the
+/// record of the render pass it names and a chained
+/// `VkCommandBufferInheritanceRenderingInfo`.
+fn inheritance(device: &Device, info: &CommandBufferBeginInfo<'_>) -> crate::state::Inheritance {
+    // SAFETY: the safe setter stores a reference that outlives `info`.
+    let Some(i) = (unsafe { info.p_inheritance_info.as_ref() }) else {
+        return crate::state::Inheritance {
+            flags: info.flags,
+            ..Default::default()
+        };
+    };
+    // SAFETY: the safe inheritance info only chains structs pushed through
+    // `push_next`; the node's sType names the struct, and its safe setter stores the
+    // formats with their count.
+    let rendering = unsafe { crate::support::chain_nodes(i.p_next) }
+        .find(|n| n.s_type == vk::StructureType::COMMAND_BUFFER_INHERITANCE_RENDERING_INFO)
+        .map(|n| unsafe {
+            &*(n as *const vk::BaseInStructure<'_>)
+                .cast::<vk::CommandBufferInheritanceRenderingInfo<'_>>()
+        })
+        .map(|r| {
+            // SAFETY: as above.
+            let formats = unsafe {
+                crate::state::RenderingFormats::from_raw(
+                    r.view_mask,
+                    r.p_color_attachment_formats,
+                    r.color_attachment_count,
+                    r.depth_attachment_format,
+                    r.stencil_attachment_format,
+                )
+            };
+            crate::state::InheritedRendering {
+                flags: r.flags,
+                formats: Vrc::new(formats),
+                samples: r.rasterization_samples,
+            }
+        });
+    crate::state::Inheritance {
+        flags: info.flags,
+        render_pass: i.render_pass,
+        record: device.live().render_pass(i.render_pass),
+        subpass: i.subpass,
+        framebuffer: i.framebuffer,
+        occlusion_query_enable: i.occlusion_query_enable == vk::TRUE,
+        query_flags: i.query_flags,
+        pipeline_statistics: i.pipeline_statistics,
+        rendering,
     }
 }
 
@@ -533,49 +598,25 @@ impl CommandBuffer {
             }
         }
         let mut rec = self.begin_in(info)?;
-        let record = inheritance.and_then(|i| rec.device().live().render_pass(i.render_pass));
-        let inherited = inheritance
-            .filter(|i| i.render_pass == vk::RenderPass::null())
-            .and_then(|i| {
-                // SAFETY: as above; the node's sType names the struct, and its safe
-                // setter stores the formats with their count.
-                unsafe { crate::support::chain_nodes(i.p_next) }
-                    .find(|n| {
-                        n.s_type == vk::StructureType::COMMAND_BUFFER_INHERITANCE_RENDERING_INFO
-                    })
-                    .map(|n| unsafe {
-                        &*(n as *const vk::BaseInStructure<'_>)
-                            .cast::<vk::CommandBufferInheritanceRenderingInfo<'_>>()
-                    })
-            });
-        let rendering_samples = inherited
-            .map(|r| r.rasterization_samples)
-            .filter(|s| !s.is_empty());
-        let subpass = inheritance.map_or(0, |i| i.subpass);
-        let view_mask = match (&record, inherited) {
+        // The inheritance `begin_in` read into the command buffer's record.
+        let inherited = rec.cb.uses().inheritance().unwrap_or_default();
+        let rendering = inherited
+            .rendering
+            .as_ref()
+            .filter(|_| inherited.render_pass == vk::RenderPass::null());
+        let subpass = inherited.subpass;
+        let view_mask = match (&inherited.record, rendering) {
             (Some(r), _) => r.view_masks.get(subpass as usize).copied().unwrap_or(0),
-            (None, Some(i)) => i.view_mask,
+            (None, Some(r)) => r.formats.view_mask,
             (None, None) => 0,
         };
-        let rendering = inherited.map(|r| {
-            // SAFETY: as above.
-            Vrc::new(unsafe {
-                crate::state::RenderingFormats::from_raw(
-                    r.view_mask,
-                    r.p_color_attachment_formats,
-                    r.color_attachment_count,
-                    r.depth_attachment_format,
-                    r.stencil_attachment_format,
-                )
-            })
-        });
         rec.instance = Some(PassInstance {
             subpass,
             view_mask,
-            dynamic: inheritance.is_some_and(|i| i.render_pass == vk::RenderPass::null()),
-            record,
-            rendering,
-            rendering_samples,
+            dynamic: inherited.render_pass == vk::RenderPass::null(),
+            record: inherited.record.clone(),
+            rendering: rendering.map(|r| r.formats.clone()),
+            rendering_samples: rendering.map(|r| r.samples).filter(|s| !s.is_empty()),
             ..PassInstance::default()
         });
         Ok(rec.into_state())
@@ -621,6 +662,16 @@ impl CommandBuffer {
         // what it kept alive goes now, not when this one ends.
         self.keep_alive(Vec::new());
         self.uses().began(info.flags);
+        let inheritance = (self.level() == vk::CommandBufferLevel::SECONDARY)
+            .then(|| Vrc::new(inheritance(self.device(), info)));
+        self.uses().set_inheritance(inheritance);
+        // The render pass and framebuffer a secondary's inheritance names live as
+        // long as the recording, which refers to them.
+        let mut reached = crate::validation::Reached::keeping(self.device().live());
+        // SAFETY: a safe struct, whose setters store every pointer with its length
+        // and borrow what it points to.
+        unsafe { crate::reach::command_buffer_begin_info(info.as_raw(), &mut reached) };
+        let kept = reached.kept;
         self.uses().set_recorder(true);
         let pool = self.device().live().pool_family(self.parent().raw());
         self.uses().set_pool(pool.map(|p| (p.index, p.protected)));
@@ -643,7 +694,7 @@ impl CommandBuffer {
             alive: Alive(self.uses().clone()),
             pool_sync,
             cb: self,
-            kept: Vec::new(),
+            kept,
             last: 0,
             layout: None,
             last_push: None,
@@ -653,6 +704,8 @@ impl CommandBuffer {
             skipped_begin: false,
             instance: None,
             queries: Vec::new(),
+            query_types: Vec::new(),
+            suspends: false,
             layouts: Default::default(),
             query_states: Default::default(),
             event_states: Default::default(),
@@ -816,6 +869,8 @@ impl<'c, S: Scope> Recorder<'c, S> {
             skipped_begin: self.skipped_begin,
             instance: self.instance,
             queries: self.queries,
+            query_types: self.query_types,
+            suspends: self.suspends,
             layouts: self.layouts,
             query_states: self.query_states,
             event_states: self.event_states,
@@ -856,6 +911,9 @@ impl<'c, S: Scope> Recorder<'c, S> {
         self.cb.uses().set_layouts(self.layouts);
         self.cb.uses().set_queries(self.query_states);
         self.cb.uses().set_event_states(self.event_states);
+        self.cb
+            .uses()
+            .set_query_types(self.query_types, self.suspends);
         self.cb.uses().set_sets(self.sets);
         self.cb.uses().set_events(self.events);
         Ok(())

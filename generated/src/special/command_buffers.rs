@@ -1,55 +1,13 @@
-//! Command pools and command buffers: their creation, allocation, resets, and the
-//! execution of secondaries from a primary.
+//! Command pools and command buffers: their creation, allocation and resets (the
+//! execution of secondaries from a primary is `secondaries.rs`).
 
-use super::image_layouts::execute_layout_checks;
 use super::refuse;
 use crate::handles::*;
-use crate::recorder::{Recorder, Scope};
 use crate::state::PoolFamily;
 use crate::structs::*;
 use crate::submission::{self};
-use crate::{Error, Handle, Result};
+use crate::{Handle, Result};
 use ash::vk;
-
-/// Refuses a pending secondary that may not run twice at once, and secondaries
-/// that need layouts, query or event states other than those the recording leaves.
-pub(crate) fn cmd_execute_commands_checks<S: Scope>(
-    recorder: &Recorder<'_, S>,
-    command_buffers: &[&CommandBuffer],
-) -> Result<()> {
-    for h in command_buffers {
-        if h.uses().is_pending_exclusive(recorder.device()) {
-            return Err(Error::Validation {
-                vuid: "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
-                message: "a secondary command buffer without SIMULTANEOUS_USE is pending: a submission that uses it may still be executing".into(),
-            });
-        }
-    }
-    execute_layout_checks(recorder, command_buffers)?;
-    super::query::execute_queries_checks(recorder, command_buffers)?;
-    super::sync::execute_events_checks(recorder, command_buffers)
-}
-
-/// The recording executes the secondaries: the layouts and query states they
-/// leave are the primary's.
-pub(crate) fn cmd_execute_commands_done<S: Scope>(
-    recorder: &mut Recorder<'_, S>,
-    command_buffers: &[&CommandBuffer],
-) {
-    super::image_layouts::execute_layouts_done(recorder, command_buffers);
-    super::query::execute_queries_done(recorder, command_buffers);
-    super::sync::execute_events_done(recorder, command_buffers);
-}
-
-/// A primary is pending while it may run; so are the secondaries it executes.
-pub(crate) fn cmd_execute_commands_before<S: Scope>(
-    recorder: &Recorder<'_, S>,
-    command_buffers: &[&CommandBuffer],
-) {
-    for h in command_buffers {
-        recorder.command_buffer().uses().executes(h.uses());
-    }
-}
 
 /// Refuses a buffer that may still be executing, or whose pool does not reset buffers.
 pub(crate) fn reset_command_buffer_checks(command_buffer: &CommandBuffer) -> Result<()> {

@@ -44,6 +44,7 @@ pub(crate) mod render_pass;
 pub(crate) mod rendering;
 pub(crate) mod resolves;
 pub(crate) mod sampler;
+pub(crate) mod secondaries;
 pub(crate) mod shader;
 pub(crate) mod stages;
 pub(crate) mod subpass_dependencies;

@@ -11,6 +11,7 @@ use ash::vk;
 pub(crate) fn render_pass_begun<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
+    contents: vk::SubpassContents,
     layout_vuid: &'static str,
 ) {
     super::image_layouts::render_pass_layouts(recorder, render_pass_begin, layout_vuid);
@@ -53,6 +54,9 @@ pub(crate) fn render_pass_begun<S: Scope>(
         rendering_layouts: None,
         rendering_samples: None,
         rendering_images: None,
+        contents,
+        framebuffer: begin.framebuffer,
+        rendering_flags: vk::RenderingFlags::empty(),
     });
 }
 
@@ -90,8 +94,11 @@ pub(crate) fn next_subpass_checks<S: Scope>(
     }
 }
 
-/// The recorder moves to the next subpass.
-pub(crate) fn next_subpass_done<S: Scope>(recorder: &mut Recorder<'_, S>) {
+/// The recorder moves to the next subpass, whose commands `contents` gives.
+pub(crate) fn next_subpass_done<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    contents: vk::SubpassContents,
+) {
     let Some(i) = recorder.instance.take() else {
         return;
     };
@@ -109,6 +116,7 @@ pub(crate) fn next_subpass_done<S: Scope>(recorder: &mut Recorder<'_, S>) {
         view_mask,
         no_attachments,
         samples: None,
+        contents,
         ..i
     });
 }

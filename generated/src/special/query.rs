@@ -266,6 +266,7 @@ pub(crate) fn begin_query_done<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     query_pool: &QueryPool,
     query: u32,
+    flags: vk::QueryControlFlags,
 ) {
     let ty = recorder
         .device()
@@ -287,7 +288,11 @@ pub(crate) fn begin_query_done<S: Scope>(
         query,
         ty,
         subpass,
+        flags,
     });
+    if !recorder.query_types.contains(&ty) {
+        recorder.query_types.push(ty);
+    }
 }
 
 /// A query ends where it was begun: active in this recording, in the same subpass,

@@ -586,6 +586,12 @@ pub(crate) fn rendering_begun<S: Scope>(
     rendering_info: &RenderingInfo<'_>,
 ) {
     let raw = rendering_info.as_raw();
+    if raw
+        .flags
+        .intersects(vk::RenderingFlags::SUSPENDING | vk::RenderingFlags::RESUMING)
+    {
+        recorder.suspends = true;
+    }
     // SAFETY: the safe setters stored the color attachments with their count and the
     // depth and stencil ones as references that outlive the info.
     let (color, depth, stencil) = unsafe {
@@ -642,6 +648,7 @@ pub(crate) fn rendering_begun<S: Scope>(
         area: Some((raw.render_area, raw.layer_count)),
         // SAFETY: the chain of a safe struct, and the type its sType names.
         device_mask: unsafe { super::pass_instance::group_device_mask(raw.p_next) },
+        rendering_flags: raw.flags,
         ..Default::default()
     });
 }

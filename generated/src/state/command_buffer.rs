@@ -63,6 +63,49 @@ struct UsesState {
     queries: Option<Vrc<crate::state::queries::Recording>>,
     /// What the last recording does to events, if it names any.
     event_states: Option<Vrc<crate::state::events::Recording>>,
+    /// What a secondary's current or last recording was begun for.
+    inheritance: Option<Vrc<Inheritance>>,
+    /// The query types the last recording begins.
+    query_types: Vec<vk::QueryType>,
+    /// Whether the last recording suspends or resumes a render pass instance.
+    suspends: bool,
+}
+
+/// What a secondary was recorded for: its begin info's flags and inheritance info,
+/// read when it was begun. A primary that executes it checks these against its own
+/// state (`special/secondaries.rs`).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Inheritance {
+    /// `VkCommandBufferBeginInfo::flags`.
+    pub flags: vk::CommandBufferUsageFlags,
+    /// The render pass it continues (null for none, or dynamic rendering).
+    pub render_pass: vk::RenderPass,
+    /// That render pass's record, where the wrappers made it.
+    pub record: Option<Vrc<crate::state::RenderPassRecord>>,
+    /// The subpass it continues.
+    pub subpass: u32,
+    /// The framebuffer it names (null for none).
+    pub framebuffer: vk::Framebuffer,
+    /// Whether it may execute while an occlusion query is active, and with which
+    /// control flags.
+    pub occlusion_query_enable: bool,
+    pub query_flags: vk::QueryControlFlags,
+    /// The pipeline statistics it may execute while a query counts.
+    pub pipeline_statistics: vk::QueryPipelineStatisticFlags,
+    /// A chained `VkCommandBufferInheritanceRenderingInfo`.
+    pub rendering: Option<InheritedRendering>,
+}
+
+/// The dynamic rendering a secondary continues, as its chained
+/// `VkCommandBufferInheritanceRenderingInfo` gives it.
+#[derive(Clone, Debug)]
+pub(crate) struct InheritedRendering {
+    /// Its flags.
+    pub flags: vk::RenderingFlags,
+    /// Its view mask and attachment formats.
+    pub formats: Vrc<crate::state::RenderingFormats>,
+    /// Its rasterization samples (empty where it gives none).
+    pub samples: vk::SampleCountFlags,
 }
 
 /// Where a command buffer stands, as the submission checks read it.
@@ -156,6 +199,9 @@ impl Uses {
             state.event_states = None;
             state.sets.clear();
             state.events.clear();
+            state.inheritance = None;
+            state.query_types.clear();
+            state.suspends = false;
             core::mem::take(&mut state.secondaries)
         };
         drop(old);
@@ -186,6 +232,44 @@ impl Uses {
             core::mem::take(&mut state.secondaries)
         };
         drop(old);
+    }
+
+    /// What the recording just begun continues or inherits (a secondary's), or
+    /// nothing (a primary's).
+    pub(crate) fn set_inheritance(&self, inheritance: Option<Vrc<Inheritance>>) {
+        self.state.lock().inheritance = inheritance;
+    }
+
+    /// What the secondary's last recording was begun for.
+    pub(crate) fn inheritance(&self) -> Option<Vrc<Inheritance>> {
+        self.state.lock().inheritance.clone()
+    }
+
+    /// The query types the recording that just ended begins, and whether it
+    /// suspends or resumes a render pass instance.
+    pub(crate) fn set_query_types(&self, types: Vec<vk::QueryType>, suspends: bool) {
+        let mut state = self.state.lock();
+        state.query_types = types;
+        state.suspends = suspends;
+    }
+
+    /// Whether the last recording suspends or resumes a render pass instance.
+    pub(crate) fn suspends(&self) -> bool {
+        self.state.lock().suspends
+    }
+
+    /// The query types the last recording begins.
+    pub(crate) fn query_types(&self) -> Vec<vk::QueryType> {
+        self.state.lock().query_types.clone()
+    }
+
+    /// Whether the current recording already executes `secondary`.
+    pub(crate) fn executes_already(&self, secondary: &Vrc<Uses>) -> bool {
+        self.state
+            .lock()
+            .secondaries
+            .iter()
+            .any(|(s, _, _)| Vrc::ptr_eq(s, secondary))
     }
 
     /// Recording ended; the buffer is executable unless a check failed while it was

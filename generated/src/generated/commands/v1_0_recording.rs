@@ -81,7 +81,7 @@ The caller upholds the rules that [`Self::begin_query`] checks at run time: `VUI
         {
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), query_pool.raw(), query, flags) };
-            crate::special::query::begin_query_done(self, query_pool, query);
+            crate::special::query::begin_query_done(self, query_pool, query, flags);
             self.state_changed();
             self.retain_with(query_pool.address(), || query_pool.retained());
         }

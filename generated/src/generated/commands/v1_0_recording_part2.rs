@@ -97,6 +97,7 @@ The caller upholds the rules that [`Self::begin_render_pass`] checks at run time
         crate::special::pass_instance::render_pass_begun(
             &mut self,
             render_pass_begin,
+            contents,
             "VUID-vkCmdBeginRenderPass-initialLayout-00900",
         );
         let kept: Vec<tuff_runtime::Retained> = {

@@ -104,7 +104,7 @@ The caller upholds the rules that [`Self::next_subpass`] checks at run time: `VU
         let fp = self.device().fns().fp_v1_0().cmd_next_subpass;
         // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
         unsafe { fp(self.raw(), contents) };
-        crate::special::pass_instance::next_subpass_done(self);
+        crate::special::pass_instance::next_subpass_done(self, contents);
         self.state_changed();
     }
 }

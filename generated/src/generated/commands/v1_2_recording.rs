@@ -89,6 +89,7 @@ The caller upholds the rules that [`Self::begin_render_pass2`] checks at run tim
         crate::special::pass_instance::render_pass_begun(
             &mut self,
             render_pass_begin,
+            subpass_begin_info.contents,
             "VUID-vkCmdBeginRenderPass2-initialLayout-03100",
         );
         let kept: Vec<tuff_runtime::Retained> = {
@@ -1038,7 +1039,10 @@ The caller upholds the rules that [`Self::next_subpass2`] checks at run time: `V
                 subpass_end_info as *const SubpassEndInfo<'a> as *const _,
             )
         };
-        crate::special::pass_instance::next_subpass_done(self);
+        crate::special::pass_instance::next_subpass_done(
+            self,
+            subpass_begin_info.contents,
+        );
         self.state_changed();
     }
 }

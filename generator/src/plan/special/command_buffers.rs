@@ -1,8 +1,8 @@
 //! The special-case rows of one concern; their functions are the `tuff` crate's
 //! `special/command_buffers.rs`, and a row here calls no other (but the image-layout tracker).
 //!
-//! Command pools and command buffers: their creation, allocation, resets, and the
-//! execution of secondaries from a primary.
+//! Command pools and command buffers: their creation, allocation and resets (the
+//! execution of secondaries is `secondaries.rs`).
 
 use super::{call, How, Special, ACTIVE_QUERIES, NONE};
 
@@ -16,17 +16,6 @@ const POOL_PROTECTED: &str =
 
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
-    Special {
-        command: "vkCmdExecuteCommands",
-        check: call("special::command_buffers::cmd_execute_commands_checks", &["self", "command_buffers"]),
-        before: call("special::command_buffers::cmd_execute_commands_before", &["self", "command_buffers"]),
-        after: call("special::command_buffers::cmd_execute_commands_done", &["self", "command_buffers"]),
-        settles: &[(
-            "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
-            How::Dynamic("refuses a secondary without SIMULTANEOUS_USE that a submission may still be executing"),
-        )],
-        ..NONE
-    },
     Special {
         command: "vkResetCommandBuffer",
         check: call("special::command_buffers::reset_command_buffer_checks", &["self"]),

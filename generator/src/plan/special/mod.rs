@@ -37,6 +37,7 @@ mod render_pass;
 mod rendering;
 mod resolves;
 mod sampler;
+mod secondaries;
 mod shader;
 mod surface;
 mod swapchain;
@@ -312,6 +313,7 @@ pub const TABLES: &[(&str, &[Special])] = &[
     ("rendering", rendering::ROWS),
     ("resolves", resolves::ROWS),
     ("sampler", sampler::ROWS),
+    ("secondaries", secondaries::ROWS),
     ("shader", shader::ROWS),
     ("surface", surface::ROWS),
     ("swapchain", swapchain::ROWS),

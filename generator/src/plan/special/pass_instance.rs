@@ -35,7 +35,7 @@ pub(super) const ROWS: &[Special] = &[
         ),
         after: call(
             "special::pass_instance::render_pass_begun",
-            &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
+            &["&mut self", "render_pass_begin", "contents", "\"VUID-vkCmdBeginRenderPass-initialLayout-00900\""],
         ),
         settles: &[
             ("VUID-VkRenderPassBeginInfo-framebuffer-03207", How::Dynamic(PASS_VIEWS)),
@@ -89,7 +89,7 @@ pub(super) const ROWS: &[Special] = &[
         ),
         after: call(
             "special::pass_instance::render_pass_begun",
-            &["&mut self", "render_pass_begin", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
+            &["&mut self", "render_pass_begin", "subpass_begin_info.contents", "\"VUID-vkCmdBeginRenderPass2-initialLayout-03100\""],
         ),
         settles: &[
             (
@@ -134,7 +134,7 @@ pub(super) const ROWS: &[Special] = &[
             "special::pass_instance::next_subpass_checks",
             &["self", "\"VUID-vkCmdNextSubpass-None-00909\""],
         ),
-        after: call("special::pass_instance::next_subpass_done", &["self"]),
+        after: call("special::pass_instance::next_subpass_done", &["self", "contents"]),
         settles: &[("VUID-vkCmdNextSubpass-None-00909", How::Dynamic(SUBPASSES))],
         ..NONE
     },
@@ -144,7 +144,7 @@ pub(super) const ROWS: &[Special] = &[
             "special::pass_instance::next_subpass_checks",
             &["self", "\"VUID-vkCmdNextSubpass2-None-03102\""],
         ),
-        after: call("special::pass_instance::next_subpass_done", &["self"]),
+        after: call("special::pass_instance::next_subpass_done", &["self", "subpass_begin_info.contents"]),
         settles: &[("VUID-vkCmdNextSubpass2-None-03102", How::Dynamic(SUBPASSES))],
         ..NONE
     },

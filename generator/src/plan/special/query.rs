@@ -53,7 +53,7 @@ pub(super) const ROWS: &[Special] = &[
         ),
         after: call(
             "special::query::begin_query_done",
-            &["self", "query_pool", "query"],
+            &["self", "query_pool", "query", "flags"],
         ),
         settles: &[
             (
