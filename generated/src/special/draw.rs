@@ -660,11 +660,20 @@ pub(crate) fn descriptor_layouts_used<S: Scope>(
     }
     let lists: SmallVec<[crate::state::SetImages; 4]> =
         bound.images.iter().take(n).flatten().cloned().collect();
+    // An input attachment of the render pass instance is in the layout its subpass
+    // gives it, which the draw's checks compared (not one the recording leaves).
+    let in_pass = recorder.instance.as_ref().is_some_and(|i| !i.dynamic);
+    let attachments = if in_pass {
+        recorder.pass_images.clone()
+    } else {
+        Vec::new()
+    };
     let (live, layouts) = recorder.layouts_mut();
     let images = lists
         .iter()
         .flat_map(|l| l.iter().map(|(_, d)| d))
-        .filter(|d| d.kind == crate::state::SlotKind::Image);
+        .filter(|d| d.kind == crate::state::SlotKind::Image)
+        .filter(|d| !(d.input && attachments.contains(&d.image)));
     for d in images {
         layouts.require(live, d.image, d.sel, d.layout, DESCRIPTOR_LAYOUT);
     }

@@ -233,16 +233,43 @@ pub(super) fn descriptor_layout_checks<S: Scope>(
             );
         }
         if in_pass && recorder.pass_images.contains(&d.image) {
-            return refuse(
-                DESCRIPTOR_LAYOUT,
-                format!("an image descriptor names image 0x{:x}, an attachment of the render pass instance, whose layout in each subpass is not followed", d.image.as_raw()),
-            );
+            // An input attachment of the current subpass is in the layout its
+            // reference gives it there.
+            let given = d.input.then(|| input_layout(recorder, d.image)).flatten();
+            match given {
+                Some(layout) if layout == d.layout => continue,
+                Some(layout) => {
+                    return refuse(
+                        DESCRIPTOR_LAYOUT,
+                        format!("an input attachment descriptor names image 0x{:x} in {:?}, and the current subpass reads the attachment in {layout:?}", d.image.as_raw(), d.layout),
+                    )
+                }
+                None => {
+                    return refuse(
+                        DESCRIPTOR_LAYOUT,
+                        format!("an image descriptor names image 0x{:x}, an attachment of the render pass instance that the current subpass does not read as an input attachment, whose layout there is not followed", d.image.as_raw()),
+                    )
+                }
+            }
         }
         recorder
             .layouts
             .check(d.image, d.sel, d.layout, DESCRIPTOR_LAYOUT)?;
     }
     Ok(())
+}
+
+/// The layout the current subpass gives the input attachment whose image is
+/// `image`, if it reads one.
+fn input_layout<S: Scope>(recorder: &Recorder<'_, S>, image: vk::Image) -> Option<vk::ImageLayout> {
+    let instance = recorder.instance.as_ref()?;
+    let record = instance.record.as_ref()?;
+    record
+        .input_layouts
+        .get(instance.subpass as usize)?
+        .iter()
+        .find(|(a, _)| recorder.pass_images.get(*a as usize) == Some(&image))
+        .map(|(_, layout)| *layout)
 }
 
 /// Refuses a draw or dispatch whose sets hold, at a binding a resource variable of

@@ -177,6 +177,9 @@ pub(super) struct Subpass {
     pub(super) depth_resolve: Option<u32>,
     /// That struct's depth and stencil resolve modes.
     pub(super) depth_resolve_modes: (vk::ResolveModeFlags, vk::ResolveModeFlags),
+    /// Its flags and pipeline bind point.
+    pub(super) flags: vk::SubpassDescriptionFlags,
+    pub(super) bind_point: vk::PipelineBindPoint,
 }
 
 impl Subpass {
@@ -207,6 +210,8 @@ pub(super) struct Pass {
     pub(super) correlations: Vec<u32>,
     /// Read from `vkCreateRenderPass2`: the VUIDs of its rules are the second ones.
     pub(super) second: bool,
+    /// Its create flags.
+    pub(super) flags: vk::RenderPassCreateFlags,
 }
 
 /// What a render pass's record keeps of an attachment description beyond its format
@@ -370,6 +375,8 @@ macro_rules! subpasses {
                     view_mask: 0,
                     depth_resolve: None,
                     depth_resolve_modes: Default::default(),
+                    flags: s.flags,
+                    bind_point: s.pipeline_bind_point,
                 }
             })
             .collect::<Vec<_>>()
@@ -453,6 +460,7 @@ impl Pass {
                 dependencies,
                 correlations: correlations.to_vec(),
                 second: false,
+                flags: raw.flags,
             }
         }
     }
@@ -541,6 +549,7 @@ impl Pass {
                 )
                 .to_vec(),
                 second: true,
+                flags: raw.flags,
             }
         }
     }
@@ -596,6 +605,11 @@ impl Pass {
                 layouts,
                 used: self.used(),
                 inputs: self.inputs(),
+                input_layouts: self
+                    .subpasses
+                    .iter()
+                    .map(|s| s.inputs.iter().map(|r| (r.attachment, r.layout)).collect())
+                    .collect(),
                 self_dependencies,
                 clear_count,
                 stencil_taken: self.stencil_taken(),
@@ -608,9 +622,83 @@ impl Pass {
                     .filter(|(a, b)| *a != vk::SUBPASS_EXTERNAL && *b != vk::SUBPASS_EXTERNAL)
                     .collect(),
                 second: self.second,
+                compatibility: self.compatibility(),
             },
         );
         render_pass
+    }
+
+    /// What the render pass compatibility of the specification compares: every
+    /// attachment reference by its attachment's format and sample count (unused past
+    /// the end of the shorter array), and everything else as it is but the
+    /// attachments' layouts and load and store operations and the references'
+    /// layouts; a render pass of one subpass leaves its resolve references and
+    /// depth/stencil resolve modes out.
+    fn compatibility(&self) -> crate::state::Compatibility {
+        let single = self.subpasses.len() == 1;
+        let of = |r: &Ref| {
+            self.attachments
+                .get(r.attachment as usize)
+                .filter(|_| r.used())
+                .copied()
+        };
+        let list = |refs: &[Ref]| {
+            let mut out: Vec<_> = refs.iter().map(of).collect();
+            while out.last().is_some_and(Option::is_none) {
+                out.pop();
+            }
+            out
+        };
+        let subpasses = self
+            .subpasses
+            .iter()
+            .map(|s| crate::state::SubpassShape {
+                flags: s.flags,
+                bind_point: s.bind_point,
+                inputs: list(&s.inputs),
+                input_aspects: s.inputs.iter().map(|r| r.aspect_mask).collect(),
+                colors: list(&s.colors),
+                resolves: if single {
+                    Vec::new()
+                } else {
+                    s.resolves.as_deref().map(list).unwrap_or_default()
+                },
+                depth: s.depth.as_ref().and_then(of),
+                depth_resolve: if single {
+                    None
+                } else {
+                    s.depth_resolve
+                        .and_then(|a| self.attachments.get(a as usize).copied())
+                        .map(|a| (a, s.depth_resolve_modes))
+                },
+                preserve: s.preserve.clone(),
+                view_mask: s.view_mask,
+            })
+            .collect();
+        crate::state::Compatibility {
+            flags: self.flags,
+            attachments: self
+                .attachments
+                .iter()
+                .zip(&self.described)
+                .map(|(a, d)| (a.0, a.1, d.may_alias))
+                .collect(),
+            subpasses,
+            dependencies: self
+                .dependencies
+                .iter()
+                .map(|d| {
+                    (
+                        d.subpasses,
+                        d.stages,
+                        d.access,
+                        d.flags,
+                        d.view_offset.unwrap_or(0),
+                    )
+                })
+                .collect(),
+            correlations: self.correlations.clone(),
+        }
     }
 
     /// Every layout each attachment takes: its initial and final layouts (and its

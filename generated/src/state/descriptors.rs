@@ -76,6 +76,8 @@ pub(crate) struct ImageDescriptor {
     pub view_type: vk::ImageViewType,
     /// The view's format (an image or texel buffer view's; `UNDEFINED` otherwise).
     pub format: vk::Format,
+    /// Whether the slot is an input attachment's.
+    pub input: bool,
 }
 
 /// What a descriptor slot holds, in [`ImageDescriptor::kind`].
@@ -283,6 +285,7 @@ impl Live {
             layout: vk::ImageLayout::UNDEFINED,
             view_type: vk::ImageViewType::default(),
             format: vk::Format::UNDEFINED,
+            input: false,
         };
         match ty {
             T::SAMPLER => {
@@ -316,6 +319,7 @@ impl Live {
                 if ty == T::COMBINED_IMAGE_SAMPLER {
                     d.sampler = self.sampler_bits(info.sampler).unwrap_or(0);
                 }
+                d.input = ty == T::INPUT_ATTACHMENT;
                 Some(d)
             }
             _ => None,
@@ -352,6 +356,7 @@ impl Live {
             layout: info.image_layout,
             view_type: view.view_type,
             format: view.format,
+            input: false,
         })
     }
 

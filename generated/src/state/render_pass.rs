@@ -36,6 +36,9 @@ pub(crate) struct RenderPassRecord {
     /// (`VK_ATTACHMENT_UNUSED` for an unused one), and the aspects the fragment
     /// shader may read through it (empty: every aspect of its format).
     pub inputs: Vec<Vec<(u32, vk::ImageAspectFlags)>>,
+    /// Each subpass's input attachment references: the attachment each names and
+    /// the layout the subpass gives it.
+    pub input_layouts: Vec<Vec<(u32, vk::ImageLayout)>>,
     /// Its dependencies from a subpass to itself.
     pub self_dependencies: Vec<SelfDependency>,
     /// One more than the largest attachment index that a render pass instance
@@ -55,6 +58,58 @@ pub(crate) struct RenderPassRecord {
     pub dependencies: Vec<(u32, u32)>,
     /// Made by `vkCreateRenderPass2`.
     pub second: bool,
+    /// What render pass compatibility compares.
+    pub compatibility: Compatibility,
+}
+
+/// What the specification's render pass compatibility compares of a render pass
+/// (Render Pass Compatibility): attachment references by their attachments' format
+/// and sample count, everything else as it is, but the attachments' layouts and
+/// load and store operations and the references' layouts.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Compatibility {
+    /// Its create flags.
+    pub flags: vk::RenderPassCreateFlags,
+    /// Each attachment's format, sample count and `MAY_ALIAS`.
+    pub attachments: Vec<(vk::Format, vk::SampleCountFlags, bool)>,
+    /// Each subpass.
+    pub subpasses: Vec<SubpassShape>,
+    /// Each dependency: its subpasses, stage and access masks, flags and view offset.
+    #[allow(clippy::type_complexity)]
+    pub dependencies: Vec<(
+        (u32, u32),
+        (vk::PipelineStageFlags, vk::PipelineStageFlags),
+        (vk::AccessFlags, vk::AccessFlags),
+        vk::DependencyFlags,
+        i32,
+    )>,
+    /// Its correlated view masks.
+    pub correlations: Vec<u32>,
+}
+
+/// A subpass as render pass compatibility compares it: each reference by its
+/// attachment's format and sample count (`None`: unused; none past the last used
+/// one), the rest as it is.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct SubpassShape {
+    pub flags: vk::SubpassDescriptionFlags,
+    pub bind_point: vk::PipelineBindPoint,
+    pub inputs: Vec<Option<(vk::Format, vk::SampleCountFlags)>>,
+    /// The aspects each input attachment reference lets the shader read.
+    pub input_aspects: Vec<vk::ImageAspectFlags>,
+    pub colors: Vec<Option<(vk::Format, vk::SampleCountFlags)>>,
+    /// Empty in a render pass of one subpass, which compatibility leaves them out of.
+    pub resolves: Vec<Option<(vk::Format, vk::SampleCountFlags)>>,
+    pub depth: Option<(vk::Format, vk::SampleCountFlags)>,
+    /// The depth/stencil resolve attachment and modes (`None` in a render pass of
+    /// one subpass).
+    #[allow(clippy::type_complexity)]
+    pub depth_resolve: Option<(
+        (vk::Format, vk::SampleCountFlags),
+        (vk::ResolveModeFlags, vk::ResolveModeFlags),
+    )>,
+    pub preserve: Vec<u32>,
+    pub view_mask: u32,
 }
 
 impl RenderPassRecord {
@@ -78,20 +133,10 @@ impl RenderPassRecord {
 }
 
 impl RenderPassRecord {
-    /// Whether two render passes are compatible: their attachments agree in format
-    /// and sample count, and their subpasses in the attachments they use, their
-    /// formats and view masks.
+    /// Whether two render passes are compatible, as the specification defines it
+    /// ([`Compatibility`]).
     pub(crate) fn compatible(&self, other: &RenderPassRecord) -> bool {
-        self.attachments.len() == other.attachments.len()
-            && self
-                .attachments
-                .iter()
-                .zip(&other.attachments)
-                .all(|(a, b)| a.0 == b.0 && a.1 == b.1)
-            && self.view_masks == other.view_masks
-            && self.color_formats == other.color_formats
-            && self.depth_formats == other.depth_formats
-            && self.used == other.used
+        self.compatibility == other.compatibility
     }
 }
 

@@ -1,0 +1,331 @@
+//! Render passes of two subpasses, the second reading the first's color through an
+//! input attachment: the correct program records, runs and leaves the layer
+//! (synchronization validation included) silent, and a descriptor that states
+//! another layout than the subpass gives the attachment is refused
+//! (`VUID-VkDescriptorImageInfo-imageLayout-00344`).
+//!
+//! SAFETY of the `unsafe` blocks: `draw_unchecked` breaks, on purpose, only the rule
+//! each case names, which the layer skips (the command buffer is never submitted);
+//! the shaders are the repository's (the shader promise, see `tuff_setup::shader`).
+
+#[path = "common/pipelines.rs"]
+mod pipelines;
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::vk;
+use tuff_setup::{breaks, setup, Layer, Setup};
+use vulkan::assert_silent;
+
+const SIZE: u32 = 8;
+const RGBA: vk::Format = vk::Format::R8G8B8A8_UNORM;
+const READ: vk::ImageLayout = vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL;
+
+/// An RGBA8 image of `usage` (and color attachment) with its memory and view.
+fn image(
+    s: &Setup,
+    usage: vk::ImageUsageFlags,
+) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
+    let d = &s.device;
+    let image = d
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(RGBA)
+                .extent(vk::Extent3D {
+                    width: SIZE,
+                    height: SIZE,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
+        )
+        .expect("image");
+    let memory = s.bind_image(&image);
+    let view = d
+        .create_image_view(
+            &tuff::ImageViewCreateInfo::new(&image)
+                .view_type(vk::ImageViewType::TYPE_2D)
+                .format(RGBA)
+                .subresource_range(vk::ImageSubresourceRange {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    base_mip_level: 0,
+                    level_count: 1,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                }),
+        )
+        .expect("view");
+    (image, memory, view)
+}
+
+/// The two-subpass scene: attachment 0 written in subpass 0 and read as an input
+/// attachment in subpass 1, which writes attachment 1; a pipeline per subpass, and
+/// a set holding attachment 0's view for the second.
+struct Scene {
+    _images: [(tuff::Image, tuff::DeviceMemory, tuff::ImageView); 2],
+    pass: tuff::RenderPass,
+    framebuffer: tuff::Framebuffer,
+    p: pipelines::Pipelines,
+    first: tuff::Pipeline,
+    _module: tuff::ShaderModule,
+    _set_layout: tuff::DescriptorSetLayout,
+    layout: tuff::PipelineLayout,
+    second: tuff::Pipeline,
+    _pool: tuff::DescriptorPool,
+    set: tuff::DescriptorSet,
+}
+
+impl Scene {
+    fn new(s: &Setup) -> Scene {
+        let d = &s.device;
+        let gbuffer = image(s, vk::ImageUsageFlags::INPUT_ATTACHMENT);
+        let output = image(s, vk::ImageUsageFlags::empty());
+        let attachment = vk::AttachmentDescription {
+            format: RGBA,
+            samples: vk::SampleCountFlags::TYPE_1,
+            load_op: vk::AttachmentLoadOp::CLEAR,
+            store_op: vk::AttachmentStoreOp::STORE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: vk::ImageLayout::UNDEFINED,
+            final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+            ..Default::default()
+        };
+        let attachments = [attachment, attachment];
+        let color = vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL;
+        let written = [vk::AttachmentReference {
+            attachment: 0,
+            layout: color,
+        }];
+        let read = [vk::AttachmentReference {
+            attachment: 0,
+            layout: READ,
+        }];
+        let out = [vk::AttachmentReference {
+            attachment: 1,
+            layout: color,
+        }];
+        let subpasses = [
+            tuff::SubpassDescription::new()
+                .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+                .color_attachments(&written),
+            tuff::SubpassDescription::new()
+                .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+                .input_attachments(&read)
+                .color_attachments(&out),
+        ];
+        let dependencies = [vk::SubpassDependency {
+            src_subpass: 0,
+            dst_subpass: 1,
+            src_stage_mask: vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
+            dst_stage_mask: vk::PipelineStageFlags::FRAGMENT_SHADER,
+            src_access_mask: vk::AccessFlags::COLOR_ATTACHMENT_WRITE,
+            dst_access_mask: vk::AccessFlags::INPUT_ATTACHMENT_READ,
+            dependency_flags: vk::DependencyFlags::BY_REGION,
+        }];
+        let pass = d
+            .create_render_pass(
+                &tuff::RenderPassCreateInfo::new()
+                    .attachments(&attachments)
+                    .subpasses(&subpasses)
+                    .dependencies(&dependencies),
+            )
+            .expect("render pass");
+        let views = tuff::HandleSlice::new(&[&gbuffer.2, &output.2]);
+        let framebuffer = d
+            .create_framebuffer(
+                &tuff::FramebufferCreateInfo::new(&pass)
+                    .attachments(&views)
+                    .width(SIZE)
+                    .height(SIZE)
+                    .layers(1),
+            )
+            .expect("framebuffer");
+        let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+        let p = pipelines::pipelines(s, &target);
+        let stages = pipelines::test_stages(&p.vert, &p.frag);
+        let first = pipelines::with_graphics_info(&stages, &p.graphics_layout, &pass, |info| {
+            d.create_graphics_pipeline(None, &info)
+        })
+        .expect("subpass 0 pipeline");
+        let module = tuff_setup::shader(s, include_bytes!("../shaders/spv/input_depth.frag.spv"));
+        let bindings = [tuff::DescriptorSetLayoutBinding::new()
+            .binding(0)
+            .descriptor_type(vk::DescriptorType::INPUT_ATTACHMENT)
+            .descriptor_count(1)
+            .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+        let set_layout = d
+            .create_descriptor_set_layout(
+                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+            )
+            .expect("set layout");
+        let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+        let layout = d
+            .create_pipeline_layout(
+                &tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts),
+            )
+            .expect("pipeline layout");
+        let stages = pipelines::test_stages(&p.vert, &module);
+        let second = pipelines::with_graphics_info(&stages, &layout, &pass, |info| {
+            d.create_graphics_pipeline(None, &info.subpass(1))
+        })
+        .expect("subpass 1 pipeline");
+        let sizes = [vk::DescriptorPoolSize {
+            ty: vk::DescriptorType::INPUT_ATTACHMENT,
+            descriptor_count: 1,
+        }];
+        let pool = d
+            .create_descriptor_pool(
+                &tuff::DescriptorPoolCreateInfo::new()
+                    .max_sets(1)
+                    .pool_sizes(&sizes),
+            )
+            .expect("pool");
+        let set = d
+            .allocate_descriptor_sets(
+                &pool,
+                &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
+            )
+            .expect("set")
+            .pop()
+            .expect("one set");
+        Scene {
+            _images: [gbuffer, output],
+            pass,
+            framebuffer,
+            p,
+            first,
+            _module: module,
+            _set_layout: set_layout,
+            layout,
+            second,
+            _pool: pool,
+            set,
+        }
+    }
+
+    /// Writes the set's input attachment: `view` in `layout`.
+    fn write(&self, s: &Setup, view: &tuff::ImageView, layout: vk::ImageLayout) {
+        let images = [tuff::DescriptorImageInfo::new()
+            .image_view(Some(view))
+            .image_layout(layout)];
+        s.device
+            .update_descriptor_sets(
+                &[tuff::WriteDescriptorSet::new(&self.set)
+                    .dst_binding(0)
+                    .descriptor_type(vk::DescriptorType::INPUT_ATTACHMENT)
+                    .image_info(&images)],
+                &[],
+            )
+            .expect("the input attachment");
+    }
+
+    /// Records both subpasses into `cb`, the second's draw through the safe method
+    /// or `draw_unchecked`, and returns that draw's result with the recorder.
+    fn record<'c>(
+        &self,
+        cb: &'c mut tuff::CommandBuffer,
+        unchecked: bool,
+    ) -> (tuff::Recorder<'c, tuff::InRenderPass>, tuff::Result<()>) {
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: SIZE,
+                height: SIZE,
+            },
+        };
+        let clear = [vk::ClearValue::default(); 2];
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let mut rec = rec.begin_render_pass(
+            &tuff::RenderPassBeginInfo::new(&self.pass, &self.framebuffer)
+                .render_area(area)
+                .clear_values(&clear),
+            vk::SubpassContents::INLINE,
+        );
+        let viewport = vk::Viewport {
+            width: SIZE as f32,
+            height: SIZE as f32,
+            max_depth: 1.0,
+            ..Default::default()
+        };
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.first)
+            .expect("bind");
+        rec.set_viewport(0, &[viewport]).expect("viewport");
+        rec.set_scissor(0, &[area]).expect("scissor");
+        pipelines::push_color(&mut rec, &self.p);
+        rec.draw(3, 1, 0, 0).expect("subpass 0's draw");
+        rec.next_subpass(vk::SubpassContents::INLINE);
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.second)
+            .expect("bind");
+        rec.bind_descriptor_sets(
+            vk::PipelineBindPoint::GRAPHICS,
+            &self.layout,
+            0,
+            &self.set,
+            &[],
+        )
+        .expect("the input attachment's set");
+        let r = if unchecked {
+            unsafe { rec.draw_unchecked(3, 1, 0, 0) }
+        } else {
+            rec.draw(3, 1, 0, 0)
+        };
+        (rec, r)
+    }
+}
+
+/// A draw in subpass 1 reads subpass 0's color through an input attachment in the
+/// layout subpass 1 gives it: recorded, submitted and run, the layer silent.
+#[test]
+fn a_second_subpass_reads_the_first_through_an_input_attachment() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let scene = Scene::new(&s);
+    scene.write(&s, &scene._images[0].2, READ);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let (rec, r) = scene.record(&mut cb, false);
+    r.expect("the input attachment in the subpass's layout");
+    rec.end_render_pass().end().expect("end");
+    let fence = s
+        .device
+        .create_fence(&tuff::FenceCreateInfo::new())
+        .expect("fence");
+    let cbs = tuff::HandleSlice::new(&[&cb]);
+    s.queue
+        .submit(
+            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
+            Some(&fence),
+        )
+        .expect("submit");
+    let waited = s
+        .device
+        .wait_for_fences(&fence, true, u64::MAX)
+        .expect("wait");
+    assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+    assert_silent(&s.messages);
+}
+
+/// The input attachment's descriptor in another layout than the subpass's is
+/// refused; the layer agrees.
+#[test]
+fn an_input_attachment_descriptor_states_the_subpass_layout() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let scene = Scene::new(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    scene.write(&s, &scene._images[0].2, vk::ImageLayout::GENERAL);
+    breaks(
+        &s,
+        "VUID-VkDescriptorImageInfo-imageLayout-00344",
+        Layer::Names,
+        |unchecked| scene.record(&mut cb, unchecked).1,
+    );
+    assert_silent(&s.messages);
+}
