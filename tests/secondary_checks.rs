@@ -17,7 +17,7 @@ mod tuff_setup;
 #[path = "common/vulkan.rs"]
 mod vulkan;
 
-use tuff::vk;
+use tuff::{vk, Handle as _};
 use tuff_setup::{breaks, setup, ColorTarget, Layer, Setup};
 use vulkan::assert_silent;
 
@@ -766,5 +766,145 @@ fn a_pending_primary_keeps_its_secondaries() {
     );
     drop((secondary, spool));
     pending.release();
+    assert_silent(&s.messages);
+}
+
+/// Begins `cb`, a secondary, with `inheritance` (continuing a render pass instance
+/// where `flags` says so): through the safe method, or through ash's raw
+/// `vkBeginCommandBuffer` (the layer told to skip a call it reports).
+fn begin_with(
+    s: &Setup,
+    cb: &mut tuff::CommandBuffer,
+    flags: Usage,
+    inheritance: &tuff::CommandBufferInheritanceInfo<'_>,
+    unchecked: bool,
+) -> tuff::Result<()> {
+    let info = tuff::CommandBufferBeginInfo::new()
+        .flags(flags)
+        .inheritance_info(Some(inheritance));
+    if unchecked {
+        // SAFETY: the command buffer is not recording nor pending, and the info is a
+        // safe struct's; the layer skips the call it reports, so the driver never
+        // sees the rule broken.
+        unsafe { s.device.fns().begin_command_buffer(cb.raw(), info.as_raw()) }
+            .map_err(tuff::Error::Vk)
+    } else if flags.contains(CONTINUE) {
+        cb.begin_continuing(&info).map(drop)
+    } else {
+        cb.begin(&info).map(drop)
+    }
+}
+
+/// What a secondary's inheritance info says is checked when it is begun: the
+/// queries it runs under against the device's features (02788, 00058), and the
+/// dynamic rendering it continues: its formats' aspects and features (06540, 06541,
+/// 06006), that depth and stencil agree (06200), and its view mask (06009).
+#[test]
+fn inheritance_infos_are_checked_when_begun() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let (_pool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
+    let none = Usage::empty();
+    let precise =
+        tuff::CommandBufferInheritanceInfo::new().query_flags(vk::QueryControlFlags::PRECISE);
+    breaks(
+        &s,
+        "VUID-VkCommandBufferInheritanceInfo-queryFlags-02788",
+        Layer::Names,
+        |unchecked| begin_with(&s, &mut secondary, none, &precise, unchecked),
+    );
+    let counting = tuff::CommandBufferInheritanceInfo::new()
+        .pipeline_statistics(vk::QueryPipelineStatisticFlags::CLIPPING_INVOCATIONS);
+    breaks(
+        &s,
+        "VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-00058",
+        Layer::Names,
+        |unchecked| begin_with(&s, &mut secondary, none, &counting, unchecked),
+    );
+    let rgba = [vk::Format::R8G8B8A8_UNORM];
+    let undefined = vk::Format::UNDEFINED;
+    // (rule, colors, depth, stencil, samples, view mask)
+    type Case<'a> = (
+        &'a str,
+        &'a [vk::Format],
+        vk::Format,
+        vk::Format,
+        vk::SampleCountFlags,
+        u32,
+    );
+    let one = vk::SampleCountFlags::TYPE_1;
+    let cases: [Case<'_>; 4] = [
+        (
+            "VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06540",
+            &[],
+            vk::Format::R8G8B8A8_UNORM,
+            undefined,
+            one,
+            0,
+        ),
+        (
+            "VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06541",
+            &[],
+            undefined,
+            vk::Format::D32_SFLOAT,
+            one,
+            0,
+        ),
+        (
+            "VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06200",
+            &[],
+            vk::Format::D32_SFLOAT_S8_UINT,
+            vk::Format::S8_UINT,
+            one,
+            0,
+        ),
+        (
+            "VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-06006",
+            &[vk::Format::BC1_RGB_UNORM_BLOCK],
+            undefined,
+            undefined,
+            one,
+            0,
+        ),
+    ];
+    for (rule, colors, depth, stencil, samples, view_mask) in cases {
+        breaks(&s, rule, Layer::Names, |unchecked| {
+            let mut rendering = tuff::CommandBufferInheritanceRenderingInfo::new()
+                .view_mask(view_mask)
+                .color_attachment_formats(colors)
+                .depth_attachment_format(depth)
+                .stencil_attachment_format(stencil)
+                .rasterization_samples(samples);
+            let inheritance = tuff::CommandBufferInheritanceInfo::new().push_next(&mut rendering);
+            begin_with(&s, &mut secondary, CONTINUE, &inheritance, unchecked)
+        });
+    }
+    // What the device allows begins.
+    let mut rendering = tuff::CommandBufferInheritanceRenderingInfo::new()
+        .color_attachment_formats(&rgba)
+        .depth_attachment_format(vk::Format::D32_SFLOAT_S8_UINT)
+        .stencil_attachment_format(vk::Format::D32_SFLOAT_S8_UINT)
+        .rasterization_samples(one);
+    let inheritance = tuff::CommandBufferInheritanceInfo::new().push_next(&mut rendering);
+    begin_with(&s, &mut secondary, CONTINUE, &inheritance, false).expect("a valid inheritance");
+    assert_silent(&s.messages);
+    drop((secondary, _pool));
+
+    // A view past maxMultiviewViewCount, on a device with multiview.
+    let s = tuff_setup::setup_full_features(true);
+    let (_pool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
+    breaks(
+        &s,
+        "VUID-VkCommandBufferInheritanceRenderingInfo-viewMask-06009",
+        Layer::Names,
+        |unchecked| {
+            let mut rendering = tuff::CommandBufferInheritanceRenderingInfo::new()
+                .view_mask(1 << 31)
+                .color_attachment_formats(&rgba)
+                .rasterization_samples(one);
+            let inheritance = tuff::CommandBufferInheritanceInfo::new().push_next(&mut rendering);
+            begin_with(&s, &mut secondary, CONTINUE, &inheritance, unchecked)
+        },
+    );
     assert_silent(&s.messages);
 }

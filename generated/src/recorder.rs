@@ -7,7 +7,6 @@
 use crate::handles::{CommandBuffer, Device};
 use crate::state::Uses;
 use crate::state::{dynamic_bit, DepthStencil};
-use crate::structs::CommandBufferBeginInfo;
 use crate::{Error, Handle, Result};
 use ash::vk;
 use core::marker::PhantomData;
@@ -481,219 +480,23 @@ impl<S: Scope> core::fmt::Debug for Recorder<'_, S> {
     }
 }
 
-/// What a secondary is begun for: `info`'s flags and inheritance info, with the
-/// record of the render pass it names and a chained
-/// `VkCommandBufferInheritanceRenderingInfo`.
-fn inheritance(device: &Device, info: &CommandBufferBeginInfo<'_>) -> crate::state::Inheritance {
-    // SAFETY: the safe setter stores a reference that outlives `info`.
-    let Some(i) = (unsafe { info.p_inheritance_info.as_ref() }) else {
-        return crate::state::Inheritance {
-            flags: info.flags,
-            ..Default::default()
-        };
-    };
-    // SAFETY: the safe inheritance info only chains structs pushed through
-    // `push_next`; the node's sType names the struct, and its safe setter stores the
-    // formats with their count.
-    let rendering = unsafe { crate::support::chain_nodes(i.p_next) }
-        .find(|n| n.s_type == vk::StructureType::COMMAND_BUFFER_INHERITANCE_RENDERING_INFO)
-        .map(|n| unsafe {
-            &*(n as *const vk::BaseInStructure<'_>)
-                .cast::<vk::CommandBufferInheritanceRenderingInfo<'_>>()
-        })
-        .map(|r| {
-            // SAFETY: as above.
-            let formats = unsafe {
-                crate::state::RenderingFormats::from_raw(
-                    r.view_mask,
-                    r.p_color_attachment_formats,
-                    r.color_attachment_count,
-                    r.depth_attachment_format,
-                    r.stencil_attachment_format,
-                )
-            };
-            crate::state::InheritedRendering {
-                flags: r.flags,
-                formats: Vrc::new(formats),
-                samples: r.rasterization_samples,
-            }
-        });
-    crate::state::Inheritance {
-        flags: info.flags,
-        render_pass: i.render_pass,
-        record: device.live().render_pass(i.render_pass),
-        subpass: i.subpass,
-        framebuffer: i.framebuffer,
-        occlusion_query_enable: i.occlusion_query_enable == vk::TRUE,
-        query_flags: i.query_flags,
-        pipeline_statistics: i.pipeline_statistics,
-        rendering,
-    }
-}
-
-impl CommandBuffer {
-    /// `vkBeginCommandBuffer`: starts recording, outside any render pass instance.
-    /// Recording again drops what the previous recording kept alive, so a buffer
-    /// that a submission may still be executing is refused
-    /// (`VUID-vkBeginCommandBuffer-commandBuffer-00049`): wait for the submission's
-    /// fence first. Recording a buffer again needs a pool created with
-    /// `RESET_COMMAND_BUFFER` (`-00050`). A buffer whose recorder was dropped
-    /// without `end` is reset first.
-    ///
-    /// # Errors
-    ///
-    /// Besides those rules: a secondary buffer needs inheritance info (`-00051`), and
-    /// a secondary that continues a render pass instance
-    /// (`RENDER_PASS_CONTINUE`) is begun with [`Self::begin_continuing`], whose
-    /// recorder is inside that instance.
-    pub fn begin(&mut self, info: &CommandBufferBeginInfo<'_>) -> Result<Recorder<'_, Outside>> {
-        if self.level() == vk::CommandBufferLevel::SECONDARY
-            && info
-                .flags
-                .contains(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
-        {
-            return Err(Error::Misuse(
-                "a secondary command buffer begun with RENDER_PASS_CONTINUE records inside a render pass instance: use `begin_continuing`",
-            ));
-        }
-        self.begin_in(info)
-    }
-
-    /// `vkBeginCommandBuffer` of a secondary command buffer that continues a render
-    /// pass instance (`flags` holds `RENDER_PASS_CONTINUE`): its recorder records
-    /// the commands of a render pass instance, and the primary that executes it
-    /// must be inside a compatible one.
-    ///
-    /// # Errors
-    ///
-    /// The rules of [`Self::begin`]; a primary buffer, or `flags` without
-    /// `RENDER_PASS_CONTINUE`, is refused; so is inheritance info with neither a
-    /// render pass nor a `CommandBufferInheritanceRenderingInfo`
-    /// (`VUID-VkCommandBufferBeginInfo-flags-06002`).
-    pub fn begin_continuing(
-        &mut self,
-        info: &CommandBufferBeginInfo<'_>,
-    ) -> Result<Recorder<'_, Continuing>> {
-        if self.level() != vk::CommandBufferLevel::SECONDARY
-            || !info
-                .flags
-                .contains(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
-        {
-            return Err(Error::Misuse(
-                "`begin_continuing` begins a secondary command buffer with RENDER_PASS_CONTINUE in its flags",
-            ));
-        }
-        // SAFETY: the safe setter stores a reference that outlives `info`.
-        let inheritance = unsafe { info.p_inheritance_info.as_ref() };
-        if let Some(inheritance) = inheritance {
-            // SAFETY: the safe inheritance info only chains structs pushed through
-            // `push_next`.
-            let rendering = unsafe { crate::support::chain_nodes(inheritance.p_next) }
-                .any(|n| n.s_type == vk::StructureType::COMMAND_BUFFER_INHERITANCE_RENDERING_INFO);
-            if inheritance.render_pass == vk::RenderPass::null() && !rendering {
-                return Err(Error::Validation {
-                    vuid: "VUID-VkCommandBufferBeginInfo-flags-06002",
-                    message: "the inheritance info names no render pass and chains no CommandBufferInheritanceRenderingInfo".into(),
-                });
-            }
-        }
-        let mut rec = self.begin_in(info)?;
-        // The inheritance `begin_in` read into the command buffer's record.
-        let inherited = rec.cb.uses().inheritance().unwrap_or_default();
-        let rendering = inherited
-            .rendering
-            .as_ref()
-            .filter(|_| inherited.render_pass == vk::RenderPass::null());
-        let subpass = inherited.subpass;
-        let view_mask = match (&inherited.record, rendering) {
-            (Some(r), _) => r.view_masks.get(subpass as usize).copied().unwrap_or(0),
-            (None, Some(r)) => r.formats.view_mask,
-            (None, None) => 0,
-        };
-        rec.instance = Some(PassInstance {
-            subpass,
-            view_mask,
-            dynamic: inherited.render_pass == vk::RenderPass::null(),
-            record: inherited.record.clone(),
-            rendering: rendering.map(|r| r.formats.clone()),
-            rendering_samples: rendering.map(|r| r.samples).filter(|s| !s.is_empty()),
-            ..PassInstance::default()
-        });
-        Ok(rec.into_state())
-    }
-
-    fn begin_in(&mut self, info: &CommandBufferBeginInfo<'_>) -> Result<Recorder<'_, Outside>> {
-        if self.level() == vk::CommandBufferLevel::SECONDARY && info.p_inheritance_info.is_null() {
-            return Err(Error::Validation {
-                vuid: "VUID-vkBeginCommandBuffer-commandBuffer-00051",
-                message: "a secondary command buffer is begun without inheritance info".into(),
-            });
-        }
-        let pool_sync = self.parent().host_sync().lock();
-        let still_recording = self
-            .uses()
-            .check_begin(self.device(), self.parent().resets_buffers())?;
-        crate::checks::check_command_buffer_begin_info(info, &self.device().scope())?;
-        if still_recording {
-            // SAFETY: the buffer is not pending (checked above) and its pool resets
-            // buffers (a recorded buffer of another pool was refused above), so it
-            // may be reset (VUID-vkResetCommandBuffer-commandBuffer-00045, -00046).
-            let r = unsafe {
-                (self.device().fns().fp_v1_0().reset_command_buffer)(
-                    self.raw(),
-                    vk::CommandBufferResetFlags::empty(),
-                )
-            };
-            if r != vk::Result::SUCCESS {
-                return Err(Error::Vk(r));
-            }
-            self.uses().reset();
-        }
-        // SAFETY: the command buffer is borrowed mutably, so no other recording or
-        // submission of it is under way on the host; it is neither recording nor
-        // pending (checked above); `info` is a valid struct.
-        let r = unsafe {
-            (self.device().fns().fp_v1_0().begin_command_buffer)(self.raw(), info.as_raw())
-        };
-        if r != vk::Result::SUCCESS {
-            return Err(Error::Vk(r));
-        }
-        // The earlier recording can no longer run (it is not pending, checked above):
-        // what it kept alive goes now, not when this one ends.
-        self.keep_alive(Vec::new());
-        self.uses().began(info.flags);
-        let inheritance = (self.level() == vk::CommandBufferLevel::SECONDARY)
-            .then(|| Vrc::new(inheritance(self.device(), info)));
-        self.uses().set_inheritance(inheritance);
-        // The render pass and framebuffer a secondary's inheritance names live as
-        // long as the recording, which refers to them.
-        let mut reached = crate::validation::Reached::keeping(self.device().live());
-        // SAFETY: a safe struct, whose setters store every pointer with its length
-        // and borrow what it points to.
-        unsafe { crate::reach::command_buffer_begin_info(info.as_raw(), &mut reached) };
-        let kept = reached.kept;
-        self.uses().set_recorder(true);
-        let pool = self.device().live().pool_family(self.parent().raw());
-        self.uses().set_pool(pool.map(|p| (p.index, p.protected)));
-        let queue_flags = self.parent().queue_flags();
-        // SAFETY: the safe info only chains structs pushed through `push_next`.
-        let group = unsafe { crate::support::chain_nodes(info.p_next) }
-            .find(|n| n.s_type == vk::StructureType::DEVICE_GROUP_COMMAND_BUFFER_BEGIN_INFO)
-            .map(|n| {
-                // SAFETY: the node's sType names this struct.
-                unsafe {
-                    (*(n as *const vk::BaseInStructure<'_>)
-                        .cast::<vk::DeviceGroupCommandBufferBeginInfo<'_>>())
-                    .device_mask
-                }
-            });
-        let all = ((1u64 << self.device().live().physical_count().min(32)) - 1) as u32;
-        Ok(Recorder {
-            device: self.device().clone(),
-            raw: self.raw(),
-            alive: Alive(self.uses().clone()),
+impl<'c> Recorder<'c, Outside> {
+    /// The recorder of `cb`, whose recording `vkBeginCommandBuffer` just began
+    /// (`special/command_buffers.rs`): holding its pool's lock, keeping `kept`, with
+    /// `device_mask` as its initial device mask.
+    pub(crate) fn began(
+        cb: &'c mut CommandBuffer,
+        pool_sync: tuff_runtime::HostSyncGuard,
+        kept: Vec<Retained>,
+        device_mask: u32,
+    ) -> Self {
+        let queue_flags = cb.parent().queue_flags();
+        Recorder {
+            device: cb.device().clone(),
+            raw: cb.raw(),
+            alive: Alive(cb.uses().clone()),
             pool_sync,
-            cb: self,
+            cb,
             kept,
             last: 0,
             layout: None,
@@ -718,16 +521,10 @@ impl CommandBuffer {
             counts: (None, None),
             depth_stencil: DepthStencil::default(),
             verified: 0,
-            device_mask: group.unwrap_or(all),
-            current_device_mask: group.unwrap_or(all),
+            device_mask,
+            current_device_mask: device_mask,
             _state: PhantomData,
-        })
-    }
-
-    /// The device the command buffer's pool belongs to.
-    #[inline]
-    pub fn device(&self) -> &Device {
-        self.parent().parent()
+        }
     }
 }
 

@@ -70,6 +70,27 @@ pub(super) fn subpass_targets(
     })
 }
 
+/// The rules of a pipeline's `VkPipelineRenderingCreateInfo` formats and view mask.
+const PIPELINE_FORMATS: super::rendering::FormatRules = super::rendering::FormatRules {
+    multiview: "VUID-VkGraphicsPipelineCreateInfo-multiview-06577",
+    view_count: "VUID-VkGraphicsPipelineCreateInfo-renderPass-06578",
+    values: [
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06580",
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06583",
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06584",
+    ],
+    color_feature: "VUID-VkGraphicsPipelineCreateInfo-renderPass-06581",
+    depth: [
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06587",
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06585",
+    ],
+    stencil: [
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06588",
+        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06586",
+    ],
+    same: "VUID-VkGraphicsPipelineCreateInfo-renderPass-06589",
+};
+
 /// The targets of dynamic rendering, from a chained `VkPipelineRenderingCreateInfo`
 /// (none without one), and its rules.
 pub(super) fn rendering_targets(
@@ -77,9 +98,7 @@ pub(super) fn rendering_targets(
     raw: &vk::GraphicsPipelineCreateInfo<'_>,
     at: &str,
 ) -> Result<Targets> {
-    let (dynamic_rendering, multiview) = device
-        .live()
-        .with_features(|f| (f.v13.dynamic_rendering, f.v11.multiview));
+    let dynamic_rendering = device.live().with_features(|f| f.v13.dynamic_rendering);
     if dynamic_rendering == vk::FALSE {
         refuse(
             "VUID-VkGraphicsPipelineCreateInfo-dynamicRendering-06576",
@@ -100,94 +119,24 @@ pub(super) fn rendering_targets(
             view_mask: 0,
         });
     };
-    if r.view_mask != 0 && multiview == vk::FALSE {
-        refuse(
-            "VUID-VkGraphicsPipelineCreateInfo-multiview-06577",
-            format!("{at}'s VkPipelineRenderingCreateInfo::viewMask is {:#x}, but the device was created without multiview", r.view_mask),
-        )?;
-    }
-    let highest = 32 - r.view_mask.leading_zeros();
-    if let Some(max) = super::render_pass::multiview_view_count(device) {
-        if highest > max {
-            refuse(
-                "VUID-VkGraphicsPipelineCreateInfo-renderPass-06578",
-                format!("{at}'s VkPipelineRenderingCreateInfo::viewMask ({:#x}) names view {}, past maxMultiviewViewCount ({max})", r.view_mask, highest - 1),
-            )?;
-        }
-    }
     // SAFETY: the safe setter stores the formats with their count.
-    let colors =
-        unsafe { crate::state::raw_slice(r.p_color_attachment_formats, r.color_attachment_count) };
-    let (depth, stencil) = (r.depth_attachment_format, r.stencil_attachment_format);
-    // Values of the API first: the format queries below hand them to the driver.
-    let scope = device.scope();
-    for &f in colors {
-        crate::checks::enum_format(
-            f,
-            &scope,
-            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06580",
-        )?;
-    }
-    crate::checks::enum_format(
-        depth,
-        &scope,
-        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06583",
+    let formats = unsafe {
+        crate::state::RenderingFormats::from_raw(
+            r.view_mask,
+            r.p_color_attachment_formats,
+            r.color_attachment_count,
+            r.depth_attachment_format,
+            r.stencil_attachment_format,
+        )
+    };
+    super::rendering::formats_checks(
+        device,
+        &formats,
+        &PIPELINE_FORMATS,
+        &format!("{at}'s VkPipelineRenderingCreateInfo"),
     )?;
-    crate::checks::enum_format(
-        stencil,
-        &scope,
-        "VUID-VkGraphicsPipelineCreateInfo-renderPass-06584",
-    )?;
+    let (colors, depth, stencil) = (&formats.colors, formats.depth, formats.stencil);
     let defined = |f: vk::Format| f != vk::Format::UNDEFINED;
-    for (k, &f) in colors.iter().enumerate().filter(|(_, f)| defined(**f)) {
-        if !features(device, f)?.contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT) {
-            refuse(
-                "VUID-VkGraphicsPipelineCreateInfo-renderPass-06581",
-                format!(
-                    "{at}'s pColorAttachmentFormats[{k}] ({f:?}) has no color attachment feature"
-                ),
-            )?;
-        }
-    }
-    let aspects = |f| crate::formats::aspects(f).unwrap_or_default();
-    for (format, what, feature_vuid, aspect, aspect_vuid) in [
-        (
-            depth,
-            "depthAttachmentFormat",
-            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06585",
-            vk::ImageAspectFlags::DEPTH,
-            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06587",
-        ),
-        (
-            stencil,
-            "stencilAttachmentFormat",
-            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06586",
-            vk::ImageAspectFlags::STENCIL,
-            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06588",
-        ),
-    ] {
-        if !defined(format) {
-            continue;
-        }
-        if !aspects(format).contains(aspect) {
-            refuse(
-                aspect_vuid,
-                format!("{at}'s {what} ({format:?}) has no {aspect:?} aspect"),
-            )?;
-        }
-        if !features(device, format)?.contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT) {
-            refuse(
-                feature_vuid,
-                format!("{at}'s {what} ({format:?}) has no depth/stencil attachment feature"),
-            )?;
-        }
-    }
-    if defined(depth) && defined(stencil) && depth != stencil {
-        refuse(
-            "VUID-VkGraphicsPipelineCreateInfo-renderPass-06589",
-            format!("{at}'s depthAttachmentFormat ({depth:?}) and stencilAttachmentFormat ({stencil:?}) differ"),
-        )?;
-    }
     Ok(Targets {
         colors: colors.to_vec(),
         depth: [depth, stencil].into_iter().find(|f| defined(*f)),

@@ -4,6 +4,7 @@
 //! recorder enters.
 
 use super::refuse;
+use crate::handles::Device;
 use crate::recorder::{Recorder, Scope};
 use crate::state::{ImageRecord, ViewRecord};
 use crate::structs::*;
@@ -651,4 +652,117 @@ pub(crate) fn rendering_begun<S: Scope>(
         rendering_flags: raw.flags,
         ..Default::default()
     });
+}
+
+/// The rules of a set of dynamic rendering attachment formats and view mask (a
+/// pipeline's `VkPipelineRenderingCreateInfo`, a secondary's
+/// `VkCommandBufferInheritanceRenderingInfo`), by what each checks (`""`: the
+/// struct has no such rule, or its implicit checks settle it).
+pub(crate) struct FormatRules {
+    /// A view mask without the multiview feature.
+    pub multiview: &'static str,
+    /// A view past `maxMultiviewViewCount`.
+    pub view_count: &'static str,
+    /// A color, depth or stencil format that is no value of the API (`""` where the
+    /// struct's implicit checks refuse it before).
+    pub values: [&'static str; 3],
+    /// A color format without the color attachment feature.
+    pub color_feature: &'static str,
+    /// A depth (stencil) format without a depth (stencil) aspect, and without the
+    /// depth/stencil attachment feature.
+    pub depth: [&'static str; 2],
+    pub stencil: [&'static str; 2],
+    /// Depth and stencil formats that are both given and differ.
+    pub same: &'static str,
+}
+
+/// Refuses formats and a view mask of dynamic rendering that break `rules`
+/// (`at` says whose they are).
+pub(crate) fn formats_checks(
+    device: &Device,
+    formats: &crate::state::RenderingFormats,
+    rules: &FormatRules,
+    at: &str,
+) -> Result<()> {
+    let multiview = device.live().with_features(|f| f.v11.multiview);
+    let view_mask = formats.view_mask;
+    if view_mask != 0 && multiview == vk::FALSE && !rules.multiview.is_empty() {
+        refuse(
+            rules.multiview,
+            format!(
+                "{at}'s viewMask is {view_mask:#x}, but the device was created without multiview"
+            ),
+        )?;
+    }
+    let highest = 32 - view_mask.leading_zeros();
+    if let Some(max) = super::render_pass::multiview_view_count(device) {
+        if highest > max {
+            refuse(
+                rules.view_count,
+                format!("{at}'s viewMask ({view_mask:#x}) names view {}, past maxMultiviewViewCount ({max})", highest - 1),
+            )?;
+        }
+    }
+    let (depth, stencil) = (formats.depth, formats.stencil);
+    // Values of the API first: the format queries below hand them to the driver.
+    let scope = device.scope();
+    let given = formats.colors.iter().map(|f| (*f, rules.values[0]));
+    for (f, vuid) in given.chain([(depth, rules.values[1]), (stencil, rules.values[2])]) {
+        if !vuid.is_empty() {
+            crate::checks::enum_format(f, &scope, vuid)?;
+        }
+    }
+    let defined = |f: vk::Format| f != vk::Format::UNDEFINED;
+    for (k, &f) in formats
+        .colors
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| defined(**f))
+    {
+        if !super::pipeline_fixed::features(device, f)?
+            .contains(vk::FormatFeatureFlags::COLOR_ATTACHMENT)
+        {
+            refuse(
+                rules.color_feature,
+                format!(
+                    "{at}'s color attachment format {k} ({f:?}) has no color attachment feature"
+                ),
+            )?;
+        }
+    }
+    let aspects = |f| crate::formats::aspects(f).unwrap_or_default();
+    for (format, what, [aspect_vuid, feature_vuid], aspect) in [
+        (depth, "depth", rules.depth, vk::ImageAspectFlags::DEPTH),
+        (
+            stencil,
+            "stencil",
+            rules.stencil,
+            vk::ImageAspectFlags::STENCIL,
+        ),
+    ] {
+        if !defined(format) {
+            continue;
+        }
+        if !aspects(format).contains(aspect) {
+            refuse(
+                aspect_vuid,
+                format!("{at}'s {what} attachment format ({format:?}) has no {aspect:?} aspect"),
+            )?;
+        }
+        if !super::pipeline_fixed::features(device, format)?
+            .contains(vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT)
+        {
+            refuse(
+                feature_vuid,
+                format!("{at}'s {what} attachment format ({format:?}) has no depth/stencil attachment feature"),
+            )?;
+        }
+    }
+    if defined(depth) && defined(stencil) && depth != stencil {
+        refuse(
+            rules.same,
+            format!("{at}'s depth attachment format ({depth:?}) and stencil attachment format ({stencil:?}) differ"),
+        )?;
+    }
+    Ok(())
 }

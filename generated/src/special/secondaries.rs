@@ -378,3 +378,72 @@ pub(crate) fn cmd_execute_commands_before<S: Scope>(
         recorder.command_buffer().uses().executes(h.uses());
     }
 }
+
+/// The rules of a secondary's `VkCommandBufferInheritanceRenderingInfo` formats and
+/// view mask (its formats' values are its implicit checks').
+const INHERITED_FORMATS: super::rendering::FormatRules = super::rendering::FormatRules {
+    multiview: "VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008",
+    view_count: "VUID-VkCommandBufferInheritanceRenderingInfo-viewMask-06009",
+    values: ["", "", ""],
+    color_feature: "VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-06006",
+    depth: [
+        "VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06540",
+        "VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06007",
+    ],
+    stencil: [
+        "VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06541",
+        "VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06199",
+    ],
+    same: "VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06200",
+};
+
+/// The query control and pipeline statistics flags of core Vulkan.
+const CONTROL_BITS: vk::QueryControlFlags = vk::QueryControlFlags::PRECISE;
+const STATISTICS_BITS: u32 = 0x7ff;
+
+/// What a secondary is begun for, before it is: the queries its inheritance info
+/// lets it run under against the inheritedQueries and pipelineStatisticsQuery
+/// features (00057, 02788, 00058, 02789), and the formats and view mask of the
+/// dynamic rendering a chained `VkCommandBufferInheritanceRenderingInfo` describes
+/// ([`INHERITED_FORMATS`]; its rasterization samples are one sample count by its
+/// implicit checks).
+pub(crate) fn inheritance_checks(device: &crate::Device, inherited: &Inheritance) -> Result<()> {
+    let (queries, statistics) = device
+        .live()
+        .with_features(|f| (f.v10.inherited_queries, f.v10.pipeline_statistics_query));
+    let flags = inherited.query_flags;
+    if queries == vk::FALSE && !flags.is_empty() {
+        refuse(
+            "VUID-VkCommandBufferInheritanceInfo-queryFlags-02788",
+            format!("queryFlags is {flags:?}, and the device did not enable inheritedQueries"),
+        )?;
+    }
+    if !(flags & !CONTROL_BITS).is_empty() {
+        refuse(
+            "VUID-VkCommandBufferInheritanceInfo-queryFlags-00057",
+            format!("queryFlags ({flags:?}) holds bits that are no VkQueryControlFlagBits"),
+        )?;
+    }
+    let counted = inherited.pipeline_statistics;
+    if statistics == vk::FALSE && !counted.is_empty() {
+        refuse(
+            "VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-00058",
+            format!("pipelineStatistics is {counted:?}, and the device did not enable pipelineStatisticsQuery"),
+        )?;
+    }
+    if counted.as_raw() & !STATISTICS_BITS != 0 {
+        refuse(
+            "VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-02789",
+            format!("pipelineStatistics ({counted:?}) holds bits that are no VkQueryPipelineStatisticFlagBits of core Vulkan"),
+        )?;
+    }
+    let Some(rendering) = &inherited.rendering else {
+        return Ok(());
+    };
+    super::rendering::formats_checks(
+        device,
+        &rendering.formats,
+        &INHERITED_FORMATS,
+        "the VkCommandBufferInheritanceRenderingInfo",
+    )
+}

@@ -601,11 +601,11 @@ impl<'a> CommandBufferBeginInfo<'a> {
 
 The rules of `VkCommandBufferInheritanceInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCommandBufferInheritanceInfo-queryFlags-00057` (*yours*; explicit rule): If the `inheritedQueries` feature is enabled, `queryFlags` must be a valid combination of VkQueryControlFlagBits values
-- `VUID-VkCommandBufferInheritanceInfo-queryFlags-02788` (*yours*; explicit rule): If the `inheritedQueries` feature is not enabled, `queryFlags` must be `0`
-- `VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-02789` (*yours*; explicit rule): If the `pipelineStatisticsQuery` feature is enabled, `pipelineStatistics` must be a valid combination of VkQueryPipelineStatisticFlagBits values
-- `VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-00058` (*yours*; explicit rule): If the `pipelineStatisticsQuery` feature is not enabled, `pipelineStatistics` must be `0`
+- `VUID-VkCommandBufferInheritanceInfo-queryFlags-00057` (*yours*; checked by the safe methods in every build): If the `inheritedQueries` feature is enabled, `queryFlags` must be a valid combination of VkQueryControlFlagBits values
+- `VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-02789` (*yours*; checked by the safe methods in every build): If the `pipelineStatisticsQuery` feature is enabled, `pipelineStatistics` must be a valid combination of VkQueryPipelineStatisticFlagBits values
 - `VUID-VkCommandBufferInheritanceInfo-occlusionQueryEnable-00056` (*checked*): If the `inheritedQueries` feature is not enabled, `occlusionQueryEnable` must be `VK_FALSE`
+- `VUID-VkCommandBufferInheritanceInfo-queryFlags-02788` (*checked*): If the `inheritedQueries` feature is not enabled, `queryFlags` must be `0`
+- `VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-00058` (*checked*): If the `pipelineStatisticsQuery` feature is not enabled, `pipelineStatistics` must be `0`
 - `VUID-VkCommandBufferInheritanceInfo-sType-unique` (*checked*): The `sType` value of each struct in the `pNext` chain must be unique
 - `VUID-VkCommandBufferInheritanceInfo-commonparent` (*checked*): Both of `framebuffer`, and `renderPass` that are valid handles of non-ignored parameters must have been created, allocated, or retrieved from the same VkDevice
 - `VUID-VkCommandBufferInheritanceInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_INFO`

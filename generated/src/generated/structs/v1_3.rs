@@ -436,22 +436,22 @@ impl<'a> BufferMemoryBarrier2<'a> {
 
 The rules of `VkCommandBufferInheritanceRenderingInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferInheritanceRenderingInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
 
-- `VUID-VkCommandBufferInheritanceRenderingInfo-colorAttachmentCount-06004` (*yours*; explicit rule): If `colorAttachmentCount` is not `0`, `rasterizationSamples` must be a valid VkSampleCountFlagBits value
-- `VUID-VkCommandBufferInheritanceRenderingInfo-variableMultisampleRate-06005` (*yours*; explicit rule): If the `variableMultisampleRate` feature is not enabled, `rasterizationSamples` must be a valid VkSampleCountFlagBits value
-- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06540` (*yours*; explicit rule): If `depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format that includes a depth aspect
-- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06007` (*yours*; explicit rule): If `depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06541` (*yours*; explicit rule): If `stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format that includes a stencil aspect
-- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06199` (*yours*; explicit rule): If `stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
-- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06200` (*yours*; explicit rule): If `depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED` and `stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, `depthAttachmentFormat` must equal `stencilAttachmentFormat`
-- `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-06006` (*yours*; explicit rule): If any element of `pColorAttachmentFormats` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06007` (*yours*; checked by the safe methods in every build): If `depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
+- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06199` (*yours*; checked by the safe methods in every build): If `stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT`
 - `VUID-VkCommandBufferInheritanceRenderingInfoKHR-pColorAttachmentFormats-06492` (*yours*; explicit rule): If any element of `pColorAttachmentFormats` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`, or …
-- `VUID-VkCommandBufferInheritanceRenderingInfo-viewMask-06009` (*yours*; explicit rule): The index of the most significant bit in `viewMask` must be less than `maxMultiviewViewCount`
+- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06540` (*checked*): If `depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format that includes a depth aspect
+- `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06541` (*checked*): If `stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, it must be a format that includes a stencil aspect
+- `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06200` (*checked*): If `depthAttachmentFormat` is not `VK_FORMAT_UNDEFINED` and `stencilAttachmentFormat` is not `VK_FORMAT_UNDEFINED`, `depthAttachmentFormat` must equal `stencilAttachmentFormat`
 - `VUID-VkCommandBufferInheritanceRenderingInfo-multiview-06008` (*checked*): If the `multiview` feature is not enabled, `viewMask` must be `0`
 - `VUID-VkCommandBufferInheritanceRenderingInfo-flags-parameter` (*checked*): `flags` must be a valid combination of VkRenderingFlagBits values
 - `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-parameter` (*checked*): If `colorAttachmentCount` is not `0`, `pColorAttachmentFormats` must be a valid pointer to an array of `colorAttachmentCount` valid VkFormat values
 - `VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-parameter` (*checked*): `depthAttachmentFormat` must be a valid VkFormat value
 - `VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-parameter` (*checked*): `stencilAttachmentFormat` must be a valid VkFormat value
 - `VUID-VkCommandBufferInheritanceRenderingInfo-rasterizationSamples-parameter` (*checked*): If `rasterizationSamples` is not `0`, `rasterizationSamples` must be a valid VkSampleCountFlagBits value
+- `VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-06006` (*checked*): If any element of `pColorAttachmentFormats` is not `VK_FORMAT_UNDEFINED`, it must be a format with potential format features that include `VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT`
+- `VUID-VkCommandBufferInheritanceRenderingInfo-viewMask-06009` (*checked*): The index of the most significant bit in `viewMask` must be less than `maxMultiviewViewCount`
+- `VUID-VkCommandBufferInheritanceRenderingInfo-colorAttachmentCount-06004` (*by the types*): If `colorAttachmentCount` is not `0`, `rasterizationSamples` must be a valid VkSampleCountFlagBits value
+- `VUID-VkCommandBufferInheritanceRenderingInfo-variableMultisampleRate-06005` (*by the types*): If the `variableMultisampleRate` feature is not enabled, `rasterizationSamples` must be a valid VkSampleCountFlagBits value
 - `VUID-VkCommandBufferInheritanceRenderingInfo-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_RENDERING_INFO`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]

@@ -14,6 +14,13 @@ const OUTSIDE: &str = "`Recorder::end` exists only on a recorder outside a rende
 const POOL_PROTECTED: &str =
     "checks the protectedMemory feature the device recorded at its creation";
 
+const INHERITED_QUERIES: &str = "`CommandBuffer::begin` checks a secondary's inheritance info against the inheritedQueries and pipelineStatisticsQuery features the device recorded at its creation (`special::secondaries::inheritance_checks`)";
+const UNPROVEN_INHERITED_QUERIES: &str = "checked by the safe methods in every build (`CommandBuffer::begin`: the query control bits Vulkan defines), but no test breaks it: lavapipe has no inheritedQueries, whose absence makes any flag a breach of 02788 instead";
+const UNPROVEN_STATISTICS_BITS: &str = "checked by the safe methods in every build (`CommandBuffer::begin`: the pipeline statistics bits of core Vulkan), but no test breaks it yet";
+const ONE_SAMPLE_COUNT: &str = "the implicit check of rasterizationSamples (its -parameter rule, which the error names) refuses every value that is not one VkSampleCountFlagBits value, before `CommandBuffer::begin` records anything";
+const INHERITED_FORMATS: &str = "`CommandBuffer::begin` checks a chained VkCommandBufferInheritanceRenderingInfo's formats (their aspects from vk.xml's formats, their features queried from the physical device) and view mask (against maxMultiviewViewCount), by the rules a pipeline's VkPipelineRenderingCreateInfo shares (`special::rendering::formats_checks`)";
+const UNPROVEN_DEPTH_FEATURE: &str = "checked by the safe methods in every build (`CommandBuffer::begin`: the format's features, queried from the physical device), but no test breaks it: lavapipe supports every depth and stencil format as a depth/stencil attachment";
+
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
     Special {
@@ -83,6 +90,19 @@ pub(super) const ROWS: &[Special] = &[
                 "VUID-vkBeginCommandBuffer-commandBuffer-00050",
                 How::Dynamic("`CommandBuffer::begin` refuses a buffer begun before when its pool was created without RESET_COMMAND_BUFFER"),
             ),
+            ("VUID-VkCommandBufferInheritanceInfo-queryFlags-02788", How::Dynamic(INHERITED_QUERIES)),
+            ("VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-00058", How::Dynamic(INHERITED_QUERIES)),
+            ("VUID-VkCommandBufferInheritanceInfo-queryFlags-00057", How::User(UNPROVEN_INHERITED_QUERIES)),
+            ("VUID-VkCommandBufferInheritanceInfo-pipelineStatistics-02789", How::User(UNPROVEN_STATISTICS_BITS)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-colorAttachmentCount-06004", How::Static(ONE_SAMPLE_COUNT)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-variableMultisampleRate-06005", How::Static(ONE_SAMPLE_COUNT)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06540", How::Dynamic(INHERITED_FORMATS)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06541", How::Dynamic(INHERITED_FORMATS)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06200", How::Dynamic(INHERITED_FORMATS)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-pColorAttachmentFormats-06006", How::Dynamic(INHERITED_FORMATS)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-viewMask-06009", How::Dynamic(INHERITED_FORMATS)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-depthAttachmentFormat-06007", How::User(UNPROVEN_DEPTH_FEATURE)),
+            ("VUID-VkCommandBufferInheritanceRenderingInfo-stencilAttachmentFormat-06199", How::User(UNPROVEN_DEPTH_FEATURE)),
         ],
         ..NONE
     },
