@@ -21,4 +21,6 @@ fn misuse_does_not_compile() {
     // crate's: Rc, so a handle cannot cross threads. With `multi_thread` wrappers
     // can, which the threaded tests of `soundness.rs` do.
     t.compile_fail("compile_fail/handle_across_threads.rs");
+    // A recorder stays on the thread that began it, in either mode (`threads.rs`).
+    t.compile_fail("compile_fail/recorder_across_threads.rs");
 }

@@ -145,6 +145,29 @@
 //! }
 //! ```
 //!
+//! # Threads
+//!
+//! With the `multi_thread` feature every wrapper is `Send` and `Sync` (shared through
+//! `Arc`, its externally synchronized state behind real locks); without it they share
+//! through `Rc`, and moving one to another thread fails to compile ("`Rc<..Inner>`
+//! cannot be sent between threads safely": turn the feature on). A [`Recorder`] is
+//! never `Send`: it holds its command pool's lock from `begin` to `end`, taken by the
+//! thread that began it. Workers that record at once each use their own pool and
+//! command buffers, and one primary executes their secondaries:
+//!
+//! ```ignore
+//! std::thread::scope(|s| {
+//!     for (pool, secondary) in &mut workers {
+//!         s.spawn(move || {
+//!             let mut rec = secondary.begin_continuing(&info)?; // RENDER_PASS_CONTINUE
+//!             // ... the worker's draws ...
+//!             rec.end()
+//!         });
+//!     }
+//! });
+//! rec.execute_commands(&tuff::HandleSlice::new(&secondaries))?;
+//! ```
+//!
 //! # The generated and hand-written parts
 //!
 //! `src/generated/` is written by the generator; so are `Cargo.toml`,

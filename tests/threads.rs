@@ -1,0 +1,122 @@
+//! Recording on threads. Without the `multi_thread` feature the wrappers share their
+//! state through `Rc` and no wrapper crosses a thread (`compile_fail/
+//! handle_across_threads.rs`); with it, every wrapper is `Send` and `Sync`, and a
+//! recorder stays on the thread that began it (it holds its pool's lock, which that
+//! thread took: `compile_fail/recorder_across_threads.rs`). This file runs in the
+//! test command's `multi_thread` pass: workers record secondaries from their own
+//! pools at once, one primary executes them, and the frame runs with the layer (and
+//! its synchronization validation) silent.
+
+#[cfg(feature = "multi_thread")]
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[cfg(feature = "multi_thread")]
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+#[cfg(feature = "multi_thread")]
+mod threaded {
+    use super::{tuff_setup, vulkan};
+    use tuff::vk;
+
+    fn send_sync<T: Send + Sync>() {}
+
+    /// What a worker needs crosses threads: the device and queue, pools and their
+    /// buffers, resources and what retains them, the frame ring and the message log.
+    #[test]
+    fn wrappers_are_send_and_sync_with_multi_thread() {
+        send_sync::<tuff::Instance>();
+        send_sync::<tuff::Device>();
+        send_sync::<tuff::Queue>();
+        send_sync::<tuff::CommandPool>();
+        send_sync::<tuff::CommandBuffer>();
+        send_sync::<tuff::Buffer>();
+        send_sync::<tuff::Image>();
+        send_sync::<tuff::Pipeline>();
+        send_sync::<tuff::DescriptorSet>();
+        send_sync::<tuff::RenderPass>();
+        send_sync::<tuff::Framebuffer>();
+        send_sync::<tuff::Bound<tuff::Buffer>>();
+        send_sync::<tuff::IndirectBuffer<vk::DrawIndirectCommand>>();
+        send_sync::<tuff::MessageLog>();
+    }
+
+    /// Four workers, each with its own pool, record a secondary that continues the
+    /// primary's render pass instance, all at once; the primary executes the four,
+    /// and the frame runs twice (the second after recording every buffer again).
+    #[test]
+    fn workers_record_secondaries_a_primary_executes() {
+        let _serial = vulkan::serial();
+        let s = tuff_setup::setup(true);
+        let target = s.color_target(8, vk::ImageUsageFlags::empty());
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 8,
+                height: 8,
+            },
+        };
+        let mut workers: Vec<(tuff::CommandPool, tuff::CommandBuffer)> = (0..4)
+            .map(|_| s.command_buffer(vk::CommandBufferLevel::SECONDARY))
+            .collect();
+        let (_pool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        for _frame in 0..2 {
+            std::thread::scope(|scope| {
+                for (_, secondary) in workers.iter_mut() {
+                    let target = &target;
+                    scope.spawn(move || {
+                        let inheritance = tuff::CommandBufferInheritanceInfo::new()
+                            .render_pass(Some(&target.render_pass))
+                            .framebuffer(Some(&target.framebuffer));
+                        let info = tuff::CommandBufferBeginInfo::new()
+                            .flags(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
+                            .inheritance_info(Some(&inheritance));
+                        let mut rec = secondary.begin_continuing(&info).expect("begin");
+                        rec.set_viewport(
+                            0,
+                            &[vk::Viewport {
+                                width: 8.0,
+                                height: 8.0,
+                                max_depth: 1.0,
+                                ..Default::default()
+                            }],
+                        )
+                        .expect("viewport");
+                        rec.end().expect("end");
+                    });
+                }
+            });
+            let clear = [vk::ClearValue::default()];
+            let rec = primary
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let mut rec = rec.begin_render_pass(
+                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                    .render_area(area)
+                    .clear_values(&clear),
+                vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
+            );
+            let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().map(|(_, cb)| cb).collect();
+            rec.execute_commands(&tuff::HandleSlice::new(&secondaries))
+                .expect("the workers' secondaries");
+            rec.end_render_pass().end().expect("end");
+            let fence = s
+                .device
+                .create_fence(&tuff::FenceCreateInfo::new())
+                .expect("fence");
+            let cbs = tuff::HandleSlice::new(&[&primary]);
+            s.queue
+                .submit(
+                    &[tuff::SubmitInfo::new().command_buffers(&cbs)],
+                    Some(&fence),
+                )
+                .expect("submit");
+            let waited = s
+                .device
+                .wait_for_fences(&fence, true, u64::MAX)
+                .expect("wait");
+            assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+        }
+        vulkan::assert_silent(&s.messages);
+    }
+}
