@@ -119,4 +119,61 @@ mod threaded {
         }
         vulkan::assert_silent(&s.messages);
     }
+
+    /// The frame ring with worker secondaries: two frames in flight, four workers
+    /// each recording their frame's secondary on a thread of their own, the
+    /// primary executing them; six frames, the layer silent.
+    #[test]
+    fn frames_in_flight_hand_each_worker_its_secondary() {
+        let _serial = vulkan::serial();
+        let s = tuff_setup::setup(true);
+        let target = s.color_target(8, vk::ImageUsageFlags::empty());
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 8,
+                height: 8,
+            },
+        };
+        let mut frames = s
+            .device
+            .frames_in_flight_with_workers(s.family, 2, 4)
+            .expect("frames");
+        for _ in 0..6 {
+            let mut frame = frames.next_frame().expect("frame");
+            std::thread::scope(|scope| {
+                for secondary in frame.workers() {
+                    let target = &target;
+                    scope.spawn(move || {
+                        let inheritance = tuff::CommandBufferInheritanceInfo::new()
+                            .render_pass(Some(&target.render_pass))
+                            .framebuffer(Some(&target.framebuffer));
+                        let info = tuff::CommandBufferBeginInfo::new()
+                            .flags(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
+                            .inheritance_info(Some(&inheritance));
+                        let rec = secondary.begin_continuing(&info).expect("begin");
+                        rec.end().expect("end");
+                    });
+                }
+            });
+            let (primary, workers) = frame.parts();
+            let rec = primary
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            let clear = [vk::ClearValue::default()];
+            let mut rec = rec.begin_render_pass(
+                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                    .render_area(area)
+                    .clear_values(&clear),
+                vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
+            );
+            let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().collect();
+            rec.execute_commands(&tuff::HandleSlice::new(&secondaries))
+                .expect("the workers' secondaries");
+            rec.end_render_pass().end().expect("end");
+            frame.submit(&s.queue, &[], &[]).expect("submit");
+        }
+        frames.wait_all().expect("wait");
+        vulkan::assert_silent(&s.messages);
+    }
 }

@@ -42,6 +42,9 @@ pub struct FramesInFlight {
     /// Each frame's command buffer (which keeps the pool) and the fence of its last
     /// submission, created signalled so the first wait returns at once.
     frames: Vec<(CommandBuffer, Fence)>,
+    /// Each frame's worker secondaries, one per worker, each from a pool of its own
+    /// (a pool is used by one thread at a time).
+    workers: Vec<Vec<CommandBuffer>>,
     /// The frame [`FramesInFlight::next_frame`] hands out.
     next: usize,
 }
@@ -99,7 +102,62 @@ impl Device {
                 Ok((cb, fence))
             })
             .collect::<Result<Vec<_>>>()?;
-        Ok(FramesInFlight { frames, next: 0 })
+        Ok(FramesInFlight {
+            workers: frames.iter().map(|_| Vec::new()).collect(),
+            frames,
+            next: 0,
+        })
+    }
+
+    /// [`Device::frames_in_flight`], with `workers` secondary command buffers per
+    /// frame, each from a pool of its own, for worker threads to record at once
+    /// ([`Frame::workers`]); the frame's primary executes them, and its fence tells
+    /// when they may be recorded again. Without the `multi_thread` feature the
+    /// secondaries cannot move to other threads (see the crate docs, "Threads").
+    ///
+    /// ```no_run
+    /// # fn f(device: &tuff::Device, queue: &tuff::Queue) -> tuff::Result<()> {
+    /// let mut frames = device.frames_in_flight_with_workers(0, 2, 4)?;
+    /// let mut frame = frames.next_frame()?;
+    /// for secondary in frame.workers() {
+    ///     // ... on a worker thread: begin_continuing, record, end ...
+    /// #   let _ = secondary;
+    /// }
+    /// let (primary, workers) = frame.parts();
+    /// let mut rec = primary.begin(&tuff::CommandBufferBeginInfo::new())?;
+    /// // ... begin a render pass with SECONDARY_COMMAND_BUFFERS contents ...
+    /// # let _ = (&mut rec, workers);
+    /// # Ok(()) }
+    /// ```
+    pub fn frames_in_flight_with_workers(
+        &self,
+        queue_family_index: u32,
+        count: usize,
+        workers: usize,
+    ) -> Result<FramesInFlight> {
+        let mut frames = self.frames_in_flight(queue_family_index, count)?;
+        for list in &mut frames.workers {
+            for _ in 0..workers {
+                let pool = self.create_command_pool(
+                    &CommandPoolCreateInfo::new()
+                        .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER)
+                        .queue_family_index(queue_family_index),
+                )?;
+                let secondary = self
+                    .allocate_command_buffers(
+                        &pool,
+                        &CommandBufferAllocateInfo::new(&pool)
+                            .level(vk::CommandBufferLevel::SECONDARY)
+                            .command_buffer_count(1),
+                    )?
+                    .pop()
+                    .ok_or(Error::Misuse(
+                        "vkAllocateCommandBuffers returned no command buffer",
+                    ))?;
+                list.push(secondary);
+            }
+        }
+        Ok(frames)
     }
 }
 
@@ -125,6 +183,7 @@ impl FramesInFlight {
         Ok(Frame {
             index,
             commands,
+            workers: &mut self.workers[index],
             fence,
             next: &mut self.next,
             count,
@@ -163,6 +222,7 @@ pub struct Frame<'r> {
     /// uniform buffers, descriptor sets or semaphores.
     pub index: usize,
     commands: &'r mut CommandBuffer,
+    workers: &'r mut [CommandBuffer],
     fence: &'r Fence,
     next: &'r mut usize,
     count: usize,
@@ -191,6 +251,19 @@ impl Frame<'_> {
     /// The frame's command buffer, to record with other begin flags.
     pub fn commands(&mut self) -> &mut CommandBuffer {
         self.commands
+    }
+
+    /// The frame's worker secondaries ([`Device::frames_in_flight_with_workers`];
+    /// none otherwise), free to record: the frame's last submission, which executed
+    /// them, completed.
+    pub fn workers(&mut self) -> &mut [CommandBuffer] {
+        self.workers
+    }
+
+    /// The frame's command buffer and its worker secondaries together, so the
+    /// primary's recording can execute them.
+    pub fn parts(&mut self) -> (&mut CommandBuffer, &mut [CommandBuffer]) {
+        (self.commands, self.workers)
     }
 
     crate::helpers::as_safe_as! { vkQueueSubmit,
