@@ -28,51 +28,6 @@ type D = vk::DynamicState;
 type Inside<'r> = tuff::Recorder<'r, tuff::InRenderPass>;
 const SIZE: u32 = 8;
 
-/// A one-color-attachment render pass of `format`, with `subpasses` subpasses that
-/// each write the attachment, one after the other.
-fn render_pass(s: &Setup, format: vk::Format, subpasses: u32) -> tuff::RenderPass {
-    let attachments = [vk::AttachmentDescription {
-        format,
-        samples: vk::SampleCountFlags::TYPE_1,
-        load_op: vk::AttachmentLoadOp::CLEAR,
-        store_op: vk::AttachmentStoreOp::STORE,
-        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
-        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
-        initial_layout: vk::ImageLayout::UNDEFINED,
-        final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-        ..Default::default()
-    }];
-    let color = [vk::AttachmentReference {
-        attachment: 0,
-        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-    }];
-    let subpass = tuff::SubpassDescription::new()
-        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
-        .color_attachments(&color);
-    let subpass_list = vec![subpass; subpasses as usize];
-    let output = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
-    let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
-    let dependencies: Vec<vk::SubpassDependency> = (1..subpasses)
-        .map(|n| vk::SubpassDependency {
-            src_subpass: n - 1,
-            dst_subpass: n,
-            src_stage_mask: output,
-            dst_stage_mask: output,
-            src_access_mask: write,
-            dst_access_mask: write,
-            dependency_flags: vk::DependencyFlags::BY_REGION,
-        })
-        .collect();
-    s.device
-        .create_render_pass(
-            &tuff::RenderPassCreateInfo::new()
-                .attachments(&attachments)
-                .subpasses(&subpass_list)
-                .dependencies(&dependencies),
-        )
-        .expect("render pass")
-}
-
 /// The test pipeline for subpass `subpass` of `pass`, with `dynamic` states.
 fn pipeline(
     s: &Setup,
@@ -208,7 +163,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
         | vk::BufferUsageFlags::VERTEX_BUFFER;
     let (args, _memory) = pipelines::host_buffer(&s, 256, usage);
     let rgba = vk::Format::R8G8B8A8_UNORM;
-    let two = render_pass(&s, rgba, 2);
+    let two = s.color_pass(rgba, 2);
     let two_framebuffer = s
         .device
         .create_framebuffer(
@@ -219,7 +174,7 @@ fn draws_check_their_pipeline_and_dynamic_state() {
                 .layers(1),
         )
         .expect("framebuffer");
-    let other_format = render_pass(&s, vk::Format::R8_UNORM, 1);
+    let other_format = s.color_pass(vk::Format::R8_UNORM, 1);
     let viewport_scissor = [D::VIEWPORT, D::SCISSOR];
     let plain = pipeline(&s, &p, &target.render_pass, 0, &viewport_scissor);
     let incompatible = pipeline(&s, &p, &other_format, 0, &viewport_scissor);

@@ -93,6 +93,94 @@ fn indexed_words(d: &[vk::DrawIndexedIndirectCommand]) -> Vec<u32> {
         .collect()
 }
 
+/// The four indirect draw forms.
+#[derive(Clone, Copy, Debug)]
+enum Form {
+    Draw,
+    Indexed,
+    Count,
+    IndexedCount,
+}
+
+use Form::{Count, Draw, Indexed, IndexedCount};
+
+/// Draws, indexed draws and a draw count, each as an `IndirectBuffer` and as a
+/// plain buffer of the same words for the `_unchecked` twins.
+struct Args {
+    draws: tuff::IndirectBuffer<vk::DrawIndirectCommand>,
+    raw: (tuff::Buffer, tuff::DeviceMemory),
+    indexed: tuff::IndirectBuffer<vk::DrawIndexedIndirectCommand>,
+    raw_indexed: (tuff::Buffer, tuff::DeviceMemory),
+    count: tuff::IndirectBuffer<u32>,
+    raw_count: (tuff::Buffer, tuff::DeviceMemory),
+}
+
+impl Args {
+    fn new(
+        s: &Setup,
+        draws: &[vk::DrawIndirectCommand],
+        indexed: &[vk::DrawIndexedIndirectCommand],
+        count: u32,
+    ) -> Args {
+        let d = &s.device;
+        let allocator = d.gpu_allocator().expect("allocator");
+        let usage = vk::BufferUsageFlags::INDIRECT_BUFFER;
+        Args {
+            draws: d.create_indirect_buffer(draws, &allocator).expect("draws"),
+            raw: plain(s, &words_of(draws), usage),
+            indexed: d
+                .create_indirect_buffer(indexed, &allocator)
+                .expect("indexed draws"),
+            raw_indexed: plain(s, &indexed_words(indexed), usage),
+            count: d
+                .create_indirect_buffer(&[count], &allocator)
+                .expect("count"),
+            raw_count: plain(s, &[count], usage),
+        }
+    }
+
+    /// Records `form` over the draws `range` (with the count at element
+    /// `count_at`): the safe form, or its `_unchecked` twin over the plain buffers
+    /// at the same offsets.
+    fn record<S: tuff::recorder::Inside>(
+        &self,
+        r: &mut tuff::Recorder<'_, S>,
+        form: Form,
+        range: std::ops::Range<u32>,
+        count_at: u32,
+        unchecked: bool,
+    ) -> tuff::Result<()> {
+        let n = range.end - range.start;
+        let (at, count_offset) = (u64::from(range.start), u64::from(count_at) * 4);
+        let (raw, raw_indexed, raw_count) = (&self.raw.0, &self.raw_indexed.0, &self.raw_count.0);
+        match (form, unchecked) {
+            (Draw, false) => r.draw_indirect_from(&self.draws, range),
+            (Indexed, false) => r.draw_indexed_indirect_from(&self.indexed, range),
+            (Count, false) => r.draw_indirect_count_from(&self.draws, range, &self.count, count_at),
+            (IndexedCount, false) => {
+                r.draw_indexed_indirect_count_from(&self.indexed, range, &self.count, count_at)
+            }
+            (Draw, true) => unsafe { r.draw_indirect_unchecked(raw, at * 16, n, 16) },
+            (Indexed, true) => unsafe {
+                r.draw_indexed_indirect_unchecked(raw_indexed, at * 20, n, 20)
+            },
+            (Count, true) => unsafe {
+                r.draw_indirect_count_unchecked(raw, at * 16, raw_count, count_offset, n, 16)
+            },
+            (IndexedCount, true) => unsafe {
+                r.draw_indexed_indirect_count_unchecked(
+                    raw_indexed,
+                    at * 20,
+                    raw_count,
+                    count_offset,
+                    n,
+                    20,
+                )
+            },
+        }
+    }
+}
+
 /// The test pipelines, a color target of their render pass, and an index buffer of
 /// three `u32` indices.
 struct Scene {
@@ -257,127 +345,54 @@ fn indirect_ranges_stay_inside_the_arguments_written() {
     let allocator = s.device.gpu_allocator().expect("allocator");
     let d = &s.device;
     let usage = vk::BufferUsageFlags::INDIRECT_BUFFER;
-    let one = [draw(3, 0, 0)];
-    let draws = d.create_indirect_buffer(&one, &allocator).expect("draws");
-    let raw = plain(&s, &words_of(&one), usage);
-    let one_indexed = [indexed(3, 0, 0)];
-    let indexed_draws = d
-        .create_indirect_buffer(&one_indexed, &allocator)
-        .expect("indexed");
-    let raw_indexed = plain(&s, &indexed_words(&one_indexed), usage);
-    let count = d
-        .create_indirect_buffer(&[1u32], &allocator)
-        .expect("count");
-    let raw_count = plain(&s, &[1], usage);
+    let args = Args::new(&s, &[draw(3, 0, 0)], &[indexed(3, 0, 0)], 1);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-
-    type Case<'a> = (
-        &'a str,
-        Box<dyn Fn(&mut Pass<'_>, bool) -> tuff::Result<()> + 'a>,
-    );
-    let cases: Vec<Case<'_>> = vec![
-        (
-            "VUID-vkCmdDrawIndirect-drawCount-00487",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indirect_unchecked(&raw.0, 16, 1, 16) }
-                } else {
-                    r.draw_indirect_from(&draws, 1..2)
-                }
-            }),
-        ),
-        (
-            "VUID-vkCmdDrawIndirect-drawCount-00488",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indirect_unchecked(&raw.0, 0, 2, 16) }
-                } else {
-                    r.draw_indirect_from(&draws, 0..2)
-                }
-            }),
-        ),
+    // (rule, form, the draws read, the count's element)
+    let cases = [
+        ("VUID-vkCmdDrawIndirect-drawCount-00487", Draw, 1..2, 0),
+        ("VUID-vkCmdDrawIndirect-drawCount-00488", Draw, 0..2, 0),
         (
             "VUID-vkCmdDrawIndexedIndirect-drawCount-00539",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indexed_indirect_unchecked(&raw_indexed.0, 20, 1, 20) }
-                } else {
-                    r.draw_indexed_indirect_from(&indexed_draws, 1..2)
-                }
-            }),
+            Indexed,
+            1..2,
+            0,
         ),
         (
             "VUID-vkCmdDrawIndexedIndirect-drawCount-00540",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indexed_indirect_unchecked(&raw_indexed.0, 0, 2, 20) }
-                } else {
-                    r.draw_indexed_indirect_from(&indexed_draws, 0..2)
-                }
-            }),
+            Indexed,
+            0..2,
+            0,
         ),
         (
             "VUID-vkCmdDrawIndirectCount-maxDrawCount-03111",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indirect_count_unchecked(&raw.0, 0, &raw_count.0, 0, 2, 16) }
-                } else {
-                    r.draw_indirect_count_from(&draws, 0..2, &count, 0)
-                }
-            }),
+            Count,
+            0..2,
+            0,
         ),
         (
             "VUID-vkCmdDrawIndexedIndirectCount-maxDrawCount-03143",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe {
-                        r.draw_indexed_indirect_count_unchecked(
-                            &raw_indexed.0,
-                            0,
-                            &raw_count.0,
-                            0,
-                            2,
-                            20,
-                        )
-                    }
-                } else {
-                    r.draw_indexed_indirect_count_from(&indexed_draws, 0..2, &count, 0)
-                }
-            }),
+            IndexedCount,
+            0..2,
+            0,
         ),
         (
             "VUID-vkCmdDrawIndirectCount-countBufferOffset-04129",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indirect_count_unchecked(&raw.0, 0, &raw_count.0, 4, 1, 16) }
-                } else {
-                    r.draw_indirect_count_from(&draws, 0..1, &count, 1)
-                }
-            }),
+            Count,
+            0..1,
+            1,
         ),
         (
             "VUID-vkCmdDrawIndexedIndirectCount-countBufferOffset-04129",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe {
-                        r.draw_indexed_indirect_count_unchecked(
-                            &raw_indexed.0,
-                            0,
-                            &raw_count.0,
-                            4,
-                            1,
-                            20,
-                        )
-                    }
-                } else {
-                    r.draw_indexed_indirect_count_from(&indexed_draws, 0..1, &count, 1)
-                }
-            }),
+            IndexedCount,
+            0..1,
+            1,
         ),
     ];
-    for (rule, case) in &cases {
+    for (rule, form, range, count_at) in cases {
         breaks(&s, rule, Layer::Names, |unchecked| {
-            scene.record(&mut cb, None, |rec| case(rec, unchecked))
+            scene.record(&mut cb, None, |rec| {
+                args.record(rec, form, range.clone(), count_at, unchecked)
+            })
         });
     }
     // A dispatch past the one written.
@@ -416,7 +431,7 @@ fn indirect_ranges_stay_inside_the_arguments_written() {
     let reversed = 1..0;
     assert!(matches!(
         scene.record(&mut cb, None, |rec| rec
-            .draw_indirect_from(&draws, reversed)),
+            .draw_indirect_from(&args.draws, reversed)),
         Err(tuff::Error::Misuse(_))
     ));
     assert_silent(&s.messages);
@@ -554,7 +569,6 @@ fn indirect_draws_read_inside_their_bound_buffers() {
     let scene = Scene::new(&s);
     let allocator = s.device.gpu_allocator().expect("allocator");
     let d = &s.device;
-    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER;
     let empty = d
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
         .expect("layout");
@@ -562,142 +576,53 @@ fn indirect_draws_read_inside_their_bound_buffers() {
     let vertex_pipeline = pipelines::vertex_pipeline(&s, &empty, &scene.target.render_pass);
     let (vertices, _memory) = pipelines::host_buffer(&s, 60, vk::BufferUsageFlags::VERTEX_BUFFER);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    let count = d
-        .create_indirect_buffer(&[1u32], &allocator)
-        .expect("count");
-    let raw_count = plain(&s, &[1], usage);
-
-    let inside = [draw(3, 0, 0)];
-    let past = [draw(4, 0, 0)];
-    let fits = d
-        .create_indirect_buffer(&inside, &allocator)
-        .expect("draws");
-    let draws = d.create_indirect_buffer(&past, &allocator).expect("draws");
-    let raw = plain(&s, &words_of(&past), usage);
+    let fits = Args::new(&s, &[draw(3, 0, 0)], &[indexed(3, 0, 0)], 1);
     scene.record(&mut cb, Some(&vertex_pipeline), |r| {
         r.bind_vertex_buffers(0, &vertices, &[0]).expect("vertices");
-        r.draw_indirect_from(&fits, 0..1)
+        fits.record(r, Draw, 0..1, 0, false)
             .expect("a draw inside the buffer");
-        r.draw_indirect_count_from(&fits, 0..1, &count, 0)
+        fits.record(r, Count, 0..1, 0, false)
             .expect("a counted draw inside the buffer");
     });
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndirect-None-02721",
-        Layer::Silent,
-        |unchecked| {
-            scene.record(&mut cb, Some(&vertex_pipeline), |r| {
-                r.bind_vertex_buffers(0, &vertices, &[0]).expect("vertices");
-                if unchecked {
-                    unsafe { r.draw_indirect_unchecked(&raw.0, 0, 1, 16) }
-                } else {
-                    r.draw_indirect_from(&draws, 0..1)
+    // A fourth vertex, and indices 1..4 of a three-index buffer.
+    let past = Args::new(&s, &[draw(4, 0, 0)], &[indexed(3, 1, 0)], 1);
+    // (rule, form, whether the vertex pipeline and buffer are bound)
+    let cases = [
+        ("VUID-vkCmdDrawIndirect-None-02721", Draw, true),
+        ("VUID-vkCmdDrawIndirectCount-None-02721", Count, true),
+        ("VUID-vkCmdDrawIndexedIndirect-None-02721", Indexed, true),
+        (
+            "VUID-vkCmdDrawIndexedIndirectCount-None-02721",
+            IndexedCount,
+            true,
+        ),
+        (
+            "VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825",
+            Indexed,
+            false,
+        ),
+        (
+            "VUID-vkCmdDrawIndexedIndirectCount-robustBufferAccess2-07825",
+            IndexedCount,
+            false,
+        ),
+    ];
+    for (rule, form, fetches) in cases {
+        let args = if fetches && matches!(form, Indexed | IndexedCount) {
+            &fits
+        } else {
+            &past
+        };
+        breaks(&s, rule, Layer::Silent, |unchecked| {
+            let pipeline = fetches.then_some(&vertex_pipeline);
+            scene.record(&mut cb, pipeline, |r| {
+                if fetches {
+                    r.bind_vertex_buffers(0, &vertices, &[0]).expect("vertices");
                 }
+                args.record(r, form, 0..1, 0, unchecked)
             })
-        },
-    );
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndirectCount-None-02721",
-        Layer::Silent,
-        |unchecked| {
-            scene.record(&mut cb, Some(&vertex_pipeline), |r| {
-                r.bind_vertex_buffers(0, &vertices, &[0]).expect("vertices");
-                if unchecked {
-                    unsafe { r.draw_indirect_count_unchecked(&raw.0, 0, &raw_count.0, 0, 1, 16) }
-                } else {
-                    r.draw_indirect_count_from(&draws, 0..1, &count, 0)
-                }
-            })
-        },
-    );
-    let one_indexed = [indexed(3, 0, 0)];
-    let indexed_draws = d
-        .create_indirect_buffer(&one_indexed, &allocator)
-        .expect("indexed");
-    let raw_indexed = plain(&s, &indexed_words(&one_indexed), usage);
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndexedIndirect-None-02721",
-        Layer::Silent,
-        |unchecked| {
-            scene.record(&mut cb, Some(&vertex_pipeline), |r| {
-                r.bind_vertex_buffers(0, &vertices, &[0]).expect("vertices");
-                if unchecked {
-                    unsafe { r.draw_indexed_indirect_unchecked(&raw_indexed.0, 0, 1, 20) }
-                } else {
-                    r.draw_indexed_indirect_from(&indexed_draws, 0..1)
-                }
-            })
-        },
-    );
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndexedIndirectCount-None-02721",
-        Layer::Silent,
-        |unchecked| {
-            scene.record(&mut cb, Some(&vertex_pipeline), |r| {
-                r.bind_vertex_buffers(0, &vertices, &[0]).expect("vertices");
-                if unchecked {
-                    unsafe {
-                        r.draw_indexed_indirect_count_unchecked(
-                            &raw_indexed.0,
-                            0,
-                            &raw_count.0,
-                            0,
-                            1,
-                            20,
-                        )
-                    }
-                } else {
-                    r.draw_indexed_indirect_count_from(&indexed_draws, 0..1, &count, 0)
-                }
-            })
-        },
-    );
-    // Indices 1..4 of a three-index buffer (the test pipeline fetches no vertex).
-    let past_indices = [indexed(3, 1, 0)];
-    let indexed_past = d
-        .create_indirect_buffer(&past_indices, &allocator)
-        .expect("indexed");
-    let raw_past = plain(&s, &indexed_words(&past_indices), usage);
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndexedIndirect-robustBufferAccess2-07825",
-        Layer::Silent,
-        |unchecked| {
-            scene.record(&mut cb, None, |r| {
-                if unchecked {
-                    unsafe { r.draw_indexed_indirect_unchecked(&raw_past.0, 0, 1, 20) }
-                } else {
-                    r.draw_indexed_indirect_from(&indexed_past, 0..1)
-                }
-            })
-        },
-    );
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndexedIndirectCount-robustBufferAccess2-07825",
-        Layer::Silent,
-        |unchecked| {
-            scene.record(&mut cb, None, |r| {
-                if unchecked {
-                    unsafe {
-                        r.draw_indexed_indirect_count_unchecked(
-                            &raw_past.0,
-                            0,
-                            &raw_count.0,
-                            0,
-                            1,
-                            20,
-                        )
-                    }
-                } else {
-                    r.draw_indexed_indirect_count_from(&indexed_past, 0..1, &count, 0)
-                }
-            })
-        },
-    );
+        });
+    }
     // A draw of no instance fetches nothing.
     let none = d
         .create_indirect_buffer(
@@ -723,18 +648,9 @@ fn indirect_counts_name_draws_the_arguments_hold() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let scene = Scene::new(&s);
-    let allocator = s.device.gpu_allocator().expect("allocator");
-    let d = &s.device;
-    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER;
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    let one = [draw(3, 0, 0)];
-    let draws = d.create_indirect_buffer(&one, &allocator).expect("draws");
-    let raw = plain(&s, &words_of(&one), usage);
-    let one_indexed = [indexed(3, 0, 0)];
-    let indexed_draws = d
-        .create_indirect_buffer(&one_indexed, &allocator)
-        .expect("indexed");
-    let raw_indexed = plain(&s, &indexed_words(&one_indexed), usage);
+    // The range reads from element 1 of one: nothing past maxDrawCount 0, but the
+    // count names draws from there.
     for (stored, rules) in [
         (
             1u32,
@@ -751,95 +667,31 @@ fn indirect_counts_name_draws_the_arguments_hold() {
             ],
         ),
     ] {
-        let count = d
-            .create_indirect_buffer(&[stored], &allocator)
-            .expect("count");
-        let raw_count = plain(&s, &[stored], usage);
-        // The range reads from element 1 of one: nothing past maxDrawCount 0, but
-        // the count names draws from there.
-        breaks(&s, rules[0], Layer::Silent, |unchecked| {
-            scene.record(&mut cb, None, |r| {
-                if unchecked {
-                    unsafe { r.draw_indirect_count_unchecked(&raw.0, 16, &raw_count.0, 0, 0, 16) }
-                } else {
-                    r.draw_indirect_count_from(&draws, 1..1, &count, 0)
-                }
-            })
-        });
-        breaks(&s, rules[1], Layer::Silent, |unchecked| {
-            scene.record(&mut cb, None, |r| {
-                if unchecked {
-                    unsafe {
-                        r.draw_indexed_indirect_count_unchecked(
-                            &raw_indexed.0,
-                            20,
-                            &raw_count.0,
-                            0,
-                            0,
-                            20,
-                        )
-                    }
-                } else {
-                    r.draw_indexed_indirect_count_from(&indexed_draws, 1..1, &count, 0)
-                }
-            })
-        });
+        let args = Args::new(&s, &[draw(3, 0, 0)], &[indexed(3, 0, 0)], stored);
+        for (rule, form) in rules.into_iter().zip([Count, IndexedCount]) {
+            breaks(&s, rule, Layer::Silent, |unchecked| {
+                scene.record(&mut cb, None, |r| args.record(r, form, 1..1, 0, unchecked))
+            });
+        }
     }
     assert_silent(&s.messages);
 
     // Without drawIndirectCount.
     let s = tuff_setup::setup_bare(true);
     let scene = Scene::new(&s);
-    let allocator = s.device.gpu_allocator().expect("allocator");
-    let d = &s.device;
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    let draws = d.create_indirect_buffer(&one, &allocator).expect("draws");
-    let raw = plain(&s, &words_of(&one), usage);
-    let indexed_draws = d
-        .create_indirect_buffer(&one_indexed, &allocator)
-        .expect("indexed");
-    let raw_indexed = plain(&s, &indexed_words(&one_indexed), usage);
-    let count = d
-        .create_indirect_buffer(&[1u32], &allocator)
-        .expect("count");
-    let raw_count = plain(&s, &[1], usage);
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndirectCount-None-04445",
-        Layer::Names,
-        |unchecked| {
-            scene.record(&mut cb, None, |r| {
-                if unchecked {
-                    unsafe { r.draw_indirect_count_unchecked(&raw.0, 0, &raw_count.0, 0, 1, 16) }
-                } else {
-                    r.draw_indirect_count_from(&draws, 0..1, &count, 0)
-                }
-            })
-        },
-    );
-    breaks(
-        &s,
-        "VUID-vkCmdDrawIndexedIndirectCount-None-04445",
-        Layer::Names,
-        |unchecked| {
-            scene.record(&mut cb, None, |r| {
-                if unchecked {
-                    unsafe {
-                        r.draw_indexed_indirect_count_unchecked(
-                            &raw_indexed.0,
-                            0,
-                            &raw_count.0,
-                            0,
-                            1,
-                            20,
-                        )
-                    }
-                } else {
-                    r.draw_indexed_indirect_count_from(&indexed_draws, 0..1, &count, 0)
-                }
-            })
-        },
-    );
+    let args = Args::new(&s, &[draw(3, 0, 0)], &[indexed(3, 0, 0)], 1);
+    for (rule, form) in [
+        ("VUID-vkCmdDrawIndirectCount-None-04445", Count),
+        (
+            "VUID-vkCmdDrawIndexedIndirectCount-None-04445",
+            IndexedCount,
+        ),
+    ] {
+        breaks(&s, rule, Layer::Names, |unchecked| {
+            scene.record(&mut cb, None, |r| args.record(r, form, 0..1, 0, unchecked))
+        });
+    }
     assert_silent(&s.messages);
 }
 
@@ -852,9 +704,7 @@ fn multiview_indirect_draws_stay_under_the_instance_limit() {
     let s = tuff_setup::setup_full_features(true);
     let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
     let p = pipelines::pipelines(&s, &target);
-    let allocator = s.device.gpu_allocator().expect("allocator");
     let d = &s.device;
-    let usage = vk::BufferUsageFlags::INDIRECT_BUFFER;
     let (indices, _memory) = plain(&s, &[0, 1, 2], vk::BufferUsageFlags::INDEX_BUFFER);
     let stages = pipelines::test_stages(&p.vert, &p.frag);
     let blend_attachments = [vk::PipelineColorBlendAttachmentState {
@@ -886,75 +736,27 @@ fn multiview_indirect_draws_stay_under_the_instance_limit() {
         .layer_count(1)
         .view_mask(1)
         .color_attachments(&color);
-    let last = [draw(3, 0, u32::MAX)];
-    let draws = d.create_indirect_buffer(&last, &allocator).expect("draws");
-    let raw = plain(&s, &words_of(&last), usage);
-    let last_indexed = [indexed(3, 0, u32::MAX)];
-    let indexed_draws = d
-        .create_indirect_buffer(&last_indexed, &allocator)
-        .expect("indexed");
-    let raw_indexed = plain(&s, &indexed_words(&last_indexed), usage);
-    let count = d
-        .create_indirect_buffer(&[1u32], &allocator)
-        .expect("count");
-    let raw_count = plain(&s, &[1], usage);
+    let args = Args::new(&s, &[draw(3, 0, u32::MAX)], &[indexed(3, 0, u32::MAX)], 1);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    type Case<'a> = (
-        &'a str,
-        Box<dyn Fn(&mut tuff::Recorder<'_, tuff::InRendering>, bool) -> tuff::Result<()> + 'a>,
-    );
-    let cases: Vec<Case<'_>> = vec![
+    let cases = [
         (
             "VUID-vkCmdDrawIndirect-maxMultiviewInstanceIndex-02688",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indirect_unchecked(&raw.0, 0, 1, 16) }
-                } else {
-                    r.draw_indirect_from(&draws, 0..1)
-                }
-            }),
+            Draw,
         ),
         (
             "VUID-vkCmdDrawIndexedIndirect-maxMultiviewInstanceIndex-02688",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indexed_indirect_unchecked(&raw_indexed.0, 0, 1, 20) }
-                } else {
-                    r.draw_indexed_indirect_from(&indexed_draws, 0..1)
-                }
-            }),
+            Indexed,
         ),
         (
             "VUID-vkCmdDrawIndirectCount-maxMultiviewInstanceIndex-02688",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe { r.draw_indirect_count_unchecked(&raw.0, 0, &raw_count.0, 0, 1, 16) }
-                } else {
-                    r.draw_indirect_count_from(&draws, 0..1, &count, 0)
-                }
-            }),
+            Count,
         ),
         (
             "VUID-vkCmdDrawIndexedIndirectCount-maxMultiviewInstanceIndex-02688",
-            Box::new(|r, unchecked| {
-                if unchecked {
-                    unsafe {
-                        r.draw_indexed_indirect_count_unchecked(
-                            &raw_indexed.0,
-                            0,
-                            &raw_count.0,
-                            0,
-                            1,
-                            20,
-                        )
-                    }
-                } else {
-                    r.draw_indexed_indirect_count_from(&indexed_draws, 0..1, &count, 0)
-                }
-            }),
+            IndexedCount,
         ),
     ];
-    for (rule, case) in &cases {
+    for (rule, form) in cases {
         breaks(&s, rule, Layer::Silent, |unchecked| {
             let rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
@@ -966,7 +768,7 @@ fn multiview_indirect_draws_stay_under_the_instance_limit() {
                 .expect("index buffer");
             state(&mut rec);
             pipelines::push_color(&mut rec, &p);
-            case(&mut rec, unchecked)
+            args.record(&mut rec, form, 0..1, 0, unchecked)
         });
     }
     assert_silent(&s.messages);

@@ -35,51 +35,6 @@ fn area() -> vk::Rect2D {
     }
 }
 
-/// A one-color-attachment render pass of `format` with `subpasses` subpasses that
-/// each write the attachment, one after the other.
-fn render_pass(s: &Setup, format: vk::Format, subpasses: u32) -> tuff::RenderPass {
-    let attachments = [vk::AttachmentDescription {
-        format,
-        samples: vk::SampleCountFlags::TYPE_1,
-        load_op: vk::AttachmentLoadOp::CLEAR,
-        store_op: vk::AttachmentStoreOp::STORE,
-        stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
-        stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
-        initial_layout: vk::ImageLayout::UNDEFINED,
-        final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-        ..Default::default()
-    }];
-    let color = [vk::AttachmentReference {
-        attachment: 0,
-        layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-    }];
-    let subpass = tuff::SubpassDescription::new()
-        .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
-        .color_attachments(&color);
-    let list = vec![subpass; subpasses as usize];
-    let output = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
-    let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
-    let dependencies: Vec<vk::SubpassDependency> = (1..subpasses)
-        .map(|n| vk::SubpassDependency {
-            src_subpass: n - 1,
-            dst_subpass: n,
-            src_stage_mask: output,
-            dst_stage_mask: output,
-            src_access_mask: write,
-            dst_access_mask: write,
-            dependency_flags: vk::DependencyFlags::BY_REGION,
-        })
-        .collect();
-    s.device
-        .create_render_pass(
-            &tuff::RenderPassCreateInfo::new()
-                .attachments(&attachments)
-                .subpasses(&list)
-                .dependencies(&dependencies),
-        )
-        .expect("render pass")
-}
-
 fn framebuffer(s: &Setup, pass: &tuff::RenderPass, view: &tuff::ImageView) -> tuff::Framebuffer {
     s.device
         .create_framebuffer(
@@ -266,9 +221,9 @@ fn secondaries_continue_the_render_pass_instance_they_were_recorded_for() {
     let s = setup(true);
     let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
     let other = s.color_target(SIZE, vk::ImageUsageFlags::empty());
-    let two = render_pass(&s, vk::Format::R8G8B8A8_UNORM, 2);
+    let two = s.color_pass(vk::Format::R8G8B8A8_UNORM, 2);
     let two_fb = framebuffer(&s, &two, &target.view);
-    let bgra = render_pass(&s, vk::Format::B8G8R8A8_UNORM, 1);
+    let bgra = s.color_pass(vk::Format::B8G8R8A8_UNORM, 1);
     let other_fb = framebuffer(&s, &target.render_pass, &other.view);
     let (_pool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let (_spool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
@@ -689,7 +644,7 @@ fn secondaries_keep_what_their_inheritance_names() {
     let (_pool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
     let (_spool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
     let before = s.device.live_object_count();
-    let pass = render_pass(&s, vk::Format::R8G8B8A8_UNORM, 1);
+    let pass = s.color_pass(vk::Format::R8G8B8A8_UNORM, 1);
     let fb = framebuffer(&s, &pass, &target.view);
     let inheritance = tuff::CommandBufferInheritanceInfo::new()
         .render_pass(Some(&pass))
@@ -703,7 +658,7 @@ fn secondaries_keep_what_their_inheritance_names() {
     assert_eq!(s.device.live_object_count(), before + 2);
     // Run where the inheritance fits no framebuffer the test still holds: as a
     // secondary that names none, in the target's (compatible) render pass.
-    let nameless = render_pass(&s, vk::Format::R8G8B8A8_UNORM, 1);
+    let nameless = s.color_pass(vk::Format::R8G8B8A8_UNORM, 1);
     let inheritance = tuff::CommandBufferInheritanceInfo::new().render_pass(Some(&nameless));
     let (_npool, mut other) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
     let info = tuff::CommandBufferBeginInfo::new()

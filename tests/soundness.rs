@@ -707,7 +707,7 @@ fn a_descriptor_pool_is_not_reset_while_its_sets_are_alive() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let set = uniform_set(&s);
-    let pipelines::UniformSet { set, pool, layout } = set;
+    let pipelines::OneSet { set, pool, layout } = set;
     assert_eq!(
         vuid(
             s.device

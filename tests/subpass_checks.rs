@@ -73,11 +73,9 @@ struct Scene {
     p: pipelines::Pipelines,
     first: tuff::Pipeline,
     _module: tuff::ShaderModule,
-    _set_layout: tuff::DescriptorSetLayout,
     layout: tuff::PipelineLayout,
     second: tuff::Pipeline,
-    _pool: tuff::DescriptorPool,
-    set: tuff::DescriptorSet,
+    set: pipelines::OneSet,
 }
 
 impl Scene {
@@ -154,17 +152,13 @@ impl Scene {
         })
         .expect("subpass 0 pipeline");
         let module = tuff_setup::shader(s, include_bytes!("../shaders/spv/input_depth.frag.spv"));
-        let bindings = [tuff::DescriptorSetLayoutBinding::new()
-            .binding(0)
-            .descriptor_type(vk::DescriptorType::INPUT_ATTACHMENT)
-            .descriptor_count(1)
-            .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
-        let set_layout = d
-            .create_descriptor_set_layout(
-                &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
-            )
-            .expect("set layout");
-        let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+        let one = pipelines::one_set(
+            s,
+            vk::DescriptorType::INPUT_ATTACHMENT,
+            vk::ShaderStageFlags::FRAGMENT,
+        );
+        let set_layout = &one.layout;
+        let set_layouts = tuff::HandleSlice::new(&[set_layout]);
         let layout = d
             .create_pipeline_layout(
                 &tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts),
@@ -175,25 +169,6 @@ impl Scene {
             d.create_graphics_pipeline(None, &info.subpass(1))
         })
         .expect("subpass 1 pipeline");
-        let sizes = [vk::DescriptorPoolSize {
-            ty: vk::DescriptorType::INPUT_ATTACHMENT,
-            descriptor_count: 1,
-        }];
-        let pool = d
-            .create_descriptor_pool(
-                &tuff::DescriptorPoolCreateInfo::new()
-                    .max_sets(1)
-                    .pool_sizes(&sizes),
-            )
-            .expect("pool");
-        let set = d
-            .allocate_descriptor_sets(
-                &pool,
-                &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
-            )
-            .expect("set")
-            .pop()
-            .expect("one set");
         Scene {
             _images: [gbuffer, output],
             pass,
@@ -201,11 +176,9 @@ impl Scene {
             p,
             first,
             _module: module,
-            _set_layout: set_layout,
             layout,
             second,
-            _pool: pool,
-            set,
+            set: one,
         }
     }
 
@@ -216,7 +189,7 @@ impl Scene {
             .image_layout(layout)];
         s.device
             .update_descriptor_sets(
-                &[tuff::WriteDescriptorSet::new(&self.set)
+                &[tuff::WriteDescriptorSet::new(&self.set.set)
                     .dst_binding(0)
                     .descriptor_type(vk::DescriptorType::INPUT_ATTACHMENT)
                     .image_info(&images)],
@@ -268,7 +241,7 @@ impl Scene {
             vk::PipelineBindPoint::GRAPHICS,
             &self.layout,
             0,
-            &self.set,
+            &self.set.set,
             &[],
         )
         .expect("the input attachment's set");

@@ -455,27 +455,37 @@ impl Pipelines {
     }
 }
 
-/// A descriptor set of one uniform-buffer binding, with its layout and pool.
-pub struct UniformSet {
+/// A descriptor set of one binding, with its layout and pool.
+pub struct OneSet {
     pub set: tuff::DescriptorSet,
     pub pool: tuff::DescriptorPool,
     pub layout: tuff::DescriptorSetLayout,
 }
 
-pub fn uniform_set(s: &Setup) -> UniformSet {
+/// A set of one uniform-buffer binding that the compute stage reads.
+pub fn uniform_set(s: &Setup) -> OneSet {
+    one_set(
+        s,
+        vk::DescriptorType::UNIFORM_BUFFER,
+        vk::ShaderStageFlags::COMPUTE,
+    )
+}
+
+/// A set of one descriptor of type `ty` at binding 0, visible to `stages`.
+pub fn one_set(s: &Setup, ty: vk::DescriptorType, stages: vk::ShaderStageFlags) -> OneSet {
     let d = &s.device;
     let bindings = [tuff::DescriptorSetLayoutBinding::new()
         .binding(0)
-        .descriptor_type(vk::DescriptorType::UNIFORM_BUFFER)
+        .descriptor_type(ty)
         .descriptor_count(1)
-        .stage_flags(vk::ShaderStageFlags::COMPUTE)];
+        .stage_flags(stages)];
     let layout = d
         .create_descriptor_set_layout(
             &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
         )
         .expect("set layout");
     let sizes = [vk::DescriptorPoolSize {
-        ty: vk::DescriptorType::UNIFORM_BUFFER,
+        ty,
         descriptor_count: 1,
     }];
     let pool = d
@@ -493,7 +503,7 @@ pub fn uniform_set(s: &Setup) -> UniformSet {
         .expect("descriptor set")
         .pop()
         .expect("one set");
-    UniformSet { set, pool, layout }
+    OneSet { set, pool, layout }
 }
 
 /// A storage image of 4x4 RGBA8 with storage and transfer-destination usage and

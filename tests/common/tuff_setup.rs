@@ -298,6 +298,51 @@ impl Setup {
 }
 
 impl Setup {
+    /// A one-color-attachment render pass of `format`, with `subpasses` subpasses that
+    /// each write the attachment, one after the other.
+    pub fn color_pass(&self, format: vk::Format, subpasses: u32) -> tuff::RenderPass {
+        let attachments = [vk::AttachmentDescription {
+            format,
+            samples: vk::SampleCountFlags::TYPE_1,
+            load_op: vk::AttachmentLoadOp::CLEAR,
+            store_op: vk::AttachmentStoreOp::STORE,
+            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
+            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
+            initial_layout: vk::ImageLayout::UNDEFINED,
+            final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+            ..Default::default()
+        }];
+        let color = [vk::AttachmentReference {
+            attachment: 0,
+            layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
+        }];
+        let subpass = tuff::SubpassDescription::new()
+            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
+            .color_attachments(&color);
+        let subpass_list = vec![subpass; subpasses as usize];
+        let output = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+        let write = vk::AccessFlags::COLOR_ATTACHMENT_WRITE;
+        let dependencies: Vec<vk::SubpassDependency> = (1..subpasses)
+            .map(|n| vk::SubpassDependency {
+                src_subpass: n - 1,
+                dst_subpass: n,
+                src_stage_mask: output,
+                dst_stage_mask: output,
+                src_access_mask: write,
+                dst_access_mask: write,
+                dependency_flags: vk::DependencyFlags::BY_REGION,
+            })
+            .collect();
+        self.device
+            .create_render_pass(
+                &tuff::RenderPassCreateInfo::new()
+                    .attachments(&attachments)
+                    .subpasses(&subpass_list)
+                    .dependencies(&dependencies),
+            )
+            .expect("render pass")
+    }
+
     /// A command pool on the setup's queue family and one command buffer of `level`
     /// from it.
     pub fn command_buffer(
@@ -391,31 +436,7 @@ impl Setup {
                     }),
             )
             .expect("image view");
-        let attachments = [vk::AttachmentDescription {
-            format: vk::Format::R8G8B8A8_UNORM,
-            samples: vk::SampleCountFlags::TYPE_1,
-            load_op: vk::AttachmentLoadOp::CLEAR,
-            store_op: vk::AttachmentStoreOp::STORE,
-            stencil_load_op: vk::AttachmentLoadOp::DONT_CARE,
-            stencil_store_op: vk::AttachmentStoreOp::DONT_CARE,
-            initial_layout: vk::ImageLayout::UNDEFINED,
-            final_layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-            ..Default::default()
-        }];
-        let color = [vk::AttachmentReference {
-            attachment: 0,
-            layout: vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL,
-        }];
-        let subpasses = [tuff::SubpassDescription::new()
-            .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
-            .color_attachments(&color)];
-        let render_pass = d
-            .create_render_pass(
-                &tuff::RenderPassCreateInfo::new()
-                    .attachments(&attachments)
-                    .subpasses(&subpasses),
-            )
-            .expect("render pass");
+        let render_pass = self.color_pass(vk::Format::R8G8B8A8_UNORM, 1);
         let framebuffer = d
             .create_framebuffer(
                 &tuff::FramebufferCreateInfo::new(&render_pass)
