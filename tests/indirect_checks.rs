@@ -308,18 +308,7 @@ fn indirect_forms_draw_and_dispatch_what_the_host_wrote() {
     rec.dispatch_indirect_from(&dispatches, 0)
         .expect("dispatch");
     rec.end().expect("end");
-    let fence = d
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .submit(
-            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
-            Some(&fence),
-        )
-        .expect("submit");
-    let waited = d.wait_for_fences(&fence, true, u64::MAX).expect("wait");
-    assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+    s.submit_wait(&cb);
     let out = pipelines::access_memory(
         &s,
         &scene.p.output.1,

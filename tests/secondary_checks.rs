@@ -117,26 +117,6 @@ fn execute_outside(
     }
 }
 
-/// Submits `primary` and waits for it.
-fn run(s: &Setup, primary: &tuff::CommandBuffer) {
-    let fence = s
-        .device
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
-    let cbs = tuff::HandleSlice::new(&[primary]);
-    s.queue
-        .submit(
-            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
-            Some(&fence),
-        )
-        .expect("submit");
-    let waited = s
-        .device
-        .wait_for_fences(&fence, true, u64::MAX)
-        .expect("wait");
-    assert_eq!(waited, tuff::SuccessOrTimeout::Success);
-}
-
 /// A secondary is executable, and runs as often as its flags allow: not a primary
 /// (00088), not one whose recording never ended (00089), not twice in one recording
 /// without SIMULTANEOUS_USE (00092, 00093); with it, twice is fine.
@@ -204,7 +184,7 @@ fn secondaries_execute_as_their_lifecycle_allows() {
         .expect("twice with SIMULTANEOUS_USE");
     rec.execute_commands(&secondary).expect("and again");
     rec.end().expect("end");
-    run(&s, &primary);
+    s.submit_wait(&primary);
     assert_silent(&s.messages);
 }
 
@@ -349,7 +329,7 @@ fn secondaries_continue_the_render_pass_instance_they_were_recorded_for() {
     rec.next_subpass(secondaries);
     rec.execute_commands(&secondary).expect("subpass 1");
     rec.end_render_pass().end().expect("end");
-    run(&s, &primary);
+    s.submit_wait(&primary);
     let with_fb = tuff::CommandBufferInheritanceInfo::new()
         .render_pass(Some(&other.render_pass))
         .framebuffer(Some(fb));
@@ -592,7 +572,7 @@ fn secondaries_run_under_active_queries_only_where_queries_are_inherited() {
     rec.execute_commands(&secondary)
         .expect("no query is active");
     rec.end().expect("end");
-    run(&s, &primary);
+    s.submit_wait(&primary);
     assert_silent(&s.messages);
 }
 

@@ -23,46 +23,6 @@ const SIZE: u32 = 8;
 const RGBA: vk::Format = vk::Format::R8G8B8A8_UNORM;
 const READ: vk::ImageLayout = vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL;
 
-/// An RGBA8 image of `usage` (and color attachment) with its memory and view.
-fn image(
-    s: &Setup,
-    usage: vk::ImageUsageFlags,
-) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
-    let d = &s.device;
-    let image = d
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(RGBA)
-                .extent(vk::Extent3D {
-                    width: SIZE,
-                    height: SIZE,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
-        )
-        .expect("image");
-    let memory = s.bind_image(&image);
-    let view = d
-        .create_image_view(
-            &tuff::ImageViewCreateInfo::new(&image)
-                .view_type(vk::ImageViewType::TYPE_2D)
-                .format(RGBA)
-                .subresource_range(vk::ImageSubresourceRange {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    base_mip_level: 0,
-                    level_count: 1,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                }),
-        )
-        .expect("view");
-    (image, memory, view)
-}
-
 /// The two-subpass scene: attachment 0 written in subpass 0 and read as an input
 /// attachment in subpass 1, which writes attachment 1; a pipeline per subpass, and
 /// a set holding attachment 0's view for the second.
@@ -81,8 +41,8 @@ struct Scene {
 impl Scene {
     fn new(s: &Setup) -> Scene {
         let d = &s.device;
-        let gbuffer = image(s, vk::ImageUsageFlags::INPUT_ATTACHMENT);
-        let output = image(s, vk::ImageUsageFlags::empty());
+        let gbuffer = s.color_image(SIZE, vk::ImageUsageFlags::INPUT_ATTACHMENT);
+        let output = s.color_image(SIZE, vk::ImageUsageFlags::empty());
         let attachment = vk::AttachmentDescription {
             format: RGBA,
             samples: vk::SampleCountFlags::TYPE_1,
@@ -266,22 +226,7 @@ fn a_second_subpass_reads_the_first_through_an_input_attachment() {
     let (rec, r) = scene.record(&mut cb, false);
     r.expect("the input attachment in the subpass's layout");
     rec.end_render_pass().end().expect("end");
-    let fence = s
-        .device
-        .create_fence(&tuff::FenceCreateInfo::new())
-        .expect("fence");
-    let cbs = tuff::HandleSlice::new(&[&cb]);
-    s.queue
-        .submit(
-            &[tuff::SubmitInfo::new().command_buffers(&cbs)],
-            Some(&fence),
-        )
-        .expect("submit");
-    let waited = s
-        .device
-        .wait_for_fences(&fence, true, u64::MAX)
-        .expect("wait");
-    assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+    s.submit_wait(&cb);
     assert_silent(&s.messages);
 }
 

@@ -100,22 +100,7 @@ mod threaded {
             rec.execute_commands(&tuff::HandleSlice::new(&secondaries))
                 .expect("the workers' secondaries");
             rec.end_render_pass().end().expect("end");
-            let fence = s
-                .device
-                .create_fence(&tuff::FenceCreateInfo::new())
-                .expect("fence");
-            let cbs = tuff::HandleSlice::new(&[&primary]);
-            s.queue
-                .submit(
-                    &[tuff::SubmitInfo::new().command_buffers(&cbs)],
-                    Some(&fence),
-                )
-                .expect("submit");
-            let waited = s
-                .device
-                .wait_for_fences(&fence, true, u64::MAX)
-                .expect("wait");
-            assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+            s.submit_wait(&primary);
         }
         vulkan::assert_silent(&s.messages);
     }

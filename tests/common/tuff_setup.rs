@@ -402,8 +402,13 @@ impl Setup {
         memory
     }
 
-    /// A color target of `size` x `size` pixels; `usage` is added to COLOR_ATTACHMENT.
-    pub fn color_target(&self, size: u32, usage: vk::ImageUsageFlags) -> ColorTarget {
+    /// A square RGBA8 image of `size` pixels, of `usage` and color attachment usage,
+    /// with its memory and a 2D view of it.
+    pub fn color_image(
+        &self,
+        size: u32,
+        usage: vk::ImageUsageFlags,
+    ) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
         let d = &self.device;
         let image = d
             .create_image(
@@ -436,6 +441,33 @@ impl Setup {
                     }),
             )
             .expect("image view");
+        (image, memory, view)
+    }
+
+    /// Submits `cb` alone and waits for it.
+    pub fn submit_wait(&self, cb: &tuff::CommandBuffer) {
+        let fence = self
+            .device
+            .create_fence(&tuff::FenceCreateInfo::new())
+            .expect("fence");
+        let cbs = tuff::HandleSlice::new(&[cb]);
+        self.queue
+            .submit(
+                &[tuff::SubmitInfo::new().command_buffers(&cbs)],
+                Some(&fence),
+            )
+            .expect("submit");
+        let waited = self
+            .device
+            .wait_for_fences(&fence, true, u64::MAX)
+            .expect("wait");
+        assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+    }
+
+    /// A color target of `size` x `size` pixels; `usage` is added to COLOR_ATTACHMENT.
+    pub fn color_target(&self, size: u32, usage: vk::ImageUsageFlags) -> ColorTarget {
+        let d = &self.device;
+        let (image, memory, view) = self.color_image(size, usage);
         let render_pass = self.color_pass(vk::Format::R8G8B8A8_UNORM, 1);
         let framebuffer = d
             .create_framebuffer(
