@@ -247,3 +247,37 @@ fn an_input_attachment_descriptor_states_the_subpass_layout() {
     );
     assert_silent(&s.messages);
 }
+
+/// `Queue::submit_and_wait_with` hands its closure the recorder itself, so setup work
+/// in one call can render: the two subpasses recorded, submitted and waited for,
+/// the closure's value handed back.
+#[test]
+fn setup_work_in_one_call_can_render() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let scene = Scene::new(&s);
+    scene.write(&s, &scene._images[0].2, READ);
+    let area = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: SIZE,
+            height: SIZE,
+        },
+    };
+    let clear = [vk::ClearValue::default(); 2];
+    let answer = s
+        .queue
+        .submit_and_wait_with(|rec| {
+            let mut rec = rec.begin_render_pass(
+                &tuff::RenderPassBeginInfo::new(&scene.pass, &scene.framebuffer)
+                    .render_area(area)
+                    .clear_values(&clear),
+                vk::SubpassContents::INLINE,
+            );
+            rec.next_subpass(vk::SubpassContents::INLINE);
+            Ok((rec.end_render_pass(), 42))
+        })
+        .expect("a render pass in one call");
+    assert_eq!(answer, 42);
+    assert_silent(&s.messages);
+}

@@ -158,6 +158,39 @@ impl Queue {
             &self,
             record: impl FnOnce(&mut Recorder<'_, Outside>) -> Result<R>,
         ) -> Result<R> {
+            #[allow(unused_unsafe)]
+            // SAFETY: as `submit_and_wait_with`, which is `unsafe` where this is.
+            unsafe {
+                self.submit_and_wait_with(|mut rec| {
+                    let out = record(&mut rec)?;
+                    Ok((rec, out))
+                })
+            }
+        }
+    }
+
+    crate::helpers::as_safe_as! { vkQueueSubmit,
+        /// [`Queue::submit_and_wait`] with a closure that owns the recorder, so that
+        /// it can begin a render pass instance (which moves the recorder into the
+        /// instance's state) and hands it back outside one, with its value.
+        ///
+        /// ```no_run
+        /// # fn f(queue: &tuff::Queue, begin: &tuff::RenderPassBeginInfo<'_>) -> tuff::Result<()> {
+        /// queue.submit_and_wait_with(|rec| {
+        ///     let rec = rec.begin_render_pass(begin, tuff::vk::SubpassContents::INLINE);
+        ///     // ... the instance's commands ...
+        ///     Ok((rec.end_render_pass(), ()))
+        /// })?;
+        /// # Ok(()) }
+        /// ```
+        ///
+        /// # Safety
+        ///
+        /// As [`Queue::submit_and_wait`].
+        pub fn submit_and_wait_with<R>(
+            &self,
+            record: impl for<'r> FnOnce(Recorder<'r, Outside>) -> Result<(Recorder<'r, Outside>, R)>,
+        ) -> Result<R> {
             let device = self.parent();
             let pool = device.create_command_pool(
                 &CommandPoolCreateInfo::new()
@@ -174,11 +207,11 @@ impl Queue {
                 .pop()
                 .ok_or(Error::Misuse("vkAllocateCommandBuffers returned no command buffer"))?;
             let out = {
-                let mut rec = commands.begin(
+                let rec = commands.begin(
                     &CommandBufferBeginInfo::new()
                         .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
                 )?;
-                let out = record(&mut rec)?;
+                let (rec, out) = record(rec)?;
                 rec.end()?;
                 out
             };

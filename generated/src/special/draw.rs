@@ -663,7 +663,8 @@ pub(crate) fn descriptor_layouts_used<S: Scope>(
     // An input attachment of the render pass instance is in the layout its subpass
     // gives it, which the draw's checks compared (not one the recording leaves).
     let in_pass = recorder.instance.as_ref().is_some_and(|i| !i.dynamic);
-    let attachments = if in_pass {
+    let inputs = lists.iter().any(|l| l.iter().any(|(_, d)| d.input));
+    let attachments = if in_pass && inputs {
         recorder.pass_images.clone()
     } else {
         Vec::new()
