@@ -656,7 +656,13 @@ impl Pass {
                 flags: s.flags,
                 bind_point: s.bind_point,
                 inputs: list(&s.inputs),
-                input_aspects: s.inputs.iter().map(|r| r.aspect_mask).collect(),
+                // Of the references compared: none past the last used one.
+                input_aspects: s
+                    .inputs
+                    .iter()
+                    .take(list(&s.inputs).len())
+                    .map(|r| r.aspect_mask)
+                    .collect(),
                 colors: list(&s.colors),
                 resolves: if single {
                     Vec::new()
