@@ -14,6 +14,7 @@ const UNPROVEN_FAMILY: &str = "checked by the safe methods in every build (the q
 const UNPROVEN_PROTECTED: &str = "checked by the safe methods in every build (the protection of the secondary's pool against the primary's, as the pools' creation recorded them, unless the device has protectedNoFault), but no test breaks it: lavapipe has no protectedMemory, so no pool is protected";
 const CONTINUE: &str = "checks the secondary's begin flags, recorded when it was begun, against whether the primary is inside a render pass instance";
 const CONTENTS: &str = "checks the contents the current subpass was begun with (vkCmdBeginRenderPass or vkCmdNextSubpass), which the recorder keeps";
+const CONTENTS_OLD: &str = "the rule 06018 states for vkCmdBeginRenderPass and 06024 for dynamic rendering, whose checks refuse the case (their VUIDs name it)";
 const INHERITED_PASS: &str = "checks the inheritance info the secondary was begun with (recorded then: its render pass's record, subpass and framebuffer) against the render pass instance the recorder is inside";
 const RENDERING: &str = "checks the inheritance info the secondary was begun with (its chained VkCommandBufferInheritanceRenderingInfo, recorded then) against the flags, view mask and attachment formats of the dynamic rendering instance the recorder is inside (UNDEFINED where an attachment has no view)";
 const UNPROVEN_QUERY_TYPE: &str = "checked by the safe methods in every build (the type of each query the recorder has begun and not ended), but no test breaks it yet: the core API begins only occlusion and pipeline statistics queries, and no test begins one of an extension's type";
@@ -53,6 +54,7 @@ pub(super) const ROWS: &[Special] = &[Special {
         ("VUID-vkCmdExecuteCommands-pCommandBuffers-00096", How::Dynamic(CONTINUE)),
         ("VUID-vkCmdExecuteCommands-pCommandBuffers-00100", How::Dynamic(CONTINUE)),
         ("VUID-vkCmdExecuteCommands-contents-06018", How::Dynamic(CONTENTS)),
+        ("VUID-vkCmdExecuteCommands-contents-00095", How::Static(CONTENTS_OLD)),
         ("VUID-vkCmdExecuteCommands-pCommandBuffers-06019", How::Dynamic(INHERITED_PASS)),
         ("VUID-vkCmdExecuteCommands-pBeginInfo-06020", How::Dynamic(INHERITED_PASS)),
         ("VUID-vkCmdExecuteCommands-pCommandBuffers-00099", How::Dynamic(INHERITED_PASS)),
