@@ -135,11 +135,12 @@ pub(super) fn rendering_targets(
         &PIPELINE_FORMATS,
         &format!("{at}'s VkPipelineRenderingCreateInfo"),
     )?;
-    let (colors, depth, stencil) = (&formats.colors, formats.depth, formats.stencil);
     let defined = |f: vk::Format| f != vk::Format::UNDEFINED;
     Ok(Targets {
-        colors: colors.to_vec(),
-        depth: [depth, stencil].into_iter().find(|f| defined(*f)),
+        depth: [formats.depth, formats.stencil]
+            .into_iter()
+            .find(|f| defined(*f)),
+        colors: formats.colors,
         view_mask: r.view_mask,
     })
 }

@@ -26,8 +26,9 @@ pub(crate) fn cmd_execute_commands_checks<S: Scope>(
     let primary = recorder.command_buffer().uses();
     for (i, h) in command_buffers.iter().enumerate() {
         let uses = h.uses();
-        lifecycle_checks(recorder, primary, uses, h.level(), &command_buffers[..i])?;
         let inherited = uses.inheritance().unwrap_or_default();
+        let before = &command_buffers[..i];
+        lifecycle_checks(recorder, primary, uses, &inherited, h.level(), before)?;
         match &recorder.instance {
             None => {
                 if inherited
@@ -63,32 +64,34 @@ fn lifecycle_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     primary: &Vrc<Uses>,
     uses: &Vrc<Uses>,
+    inherited: &Inheritance,
     level: vk::CommandBufferLevel,
     before: &[&CommandBuffer],
 ) -> Result<()> {
     let device = recorder.device();
+    let simultaneous = inherited
+        .flags
+        .contains(vk::CommandBufferUsageFlags::SIMULTANEOUS_USE);
+    // Polled once: a signalled fence retires the submissions it completes.
+    let pending = uses.is_pending(device);
     if level != vk::CommandBufferLevel::SECONDARY {
         refuse(
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00088",
             "a command buffer executed by a primary was allocated as a primary",
         )?;
     }
-    if !uses.is_executable() && !uses.is_pending(device) {
+    if !uses.is_executable() && !pending {
         refuse(
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00089",
             "a secondary is neither executable nor pending: it was never ended, a check refused one of its commands, or it was reset or recorded again",
         )?;
     }
-    if uses.is_pending_exclusive(device) {
+    if !simultaneous && pending {
         refuse(
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00091",
             "a secondary command buffer without SIMULTANEOUS_USE is pending: a submission that uses it may still be executing",
         )?;
     }
-    let simultaneous = uses.inheritance().is_some_and(|i| {
-        i.flags
-            .contains(vk::CommandBufferUsageFlags::SIMULTANEOUS_USE)
-    });
     if !simultaneous && primary.executes_already(uses) {
         refuse(
             "VUID-vkCmdExecuteCommands-pCommandBuffers-00092",

@@ -163,12 +163,6 @@ impl Uses {
         subs.iter().any(|s| !s.poll(device))
     }
 
-    /// Whether the buffer was recorded without SIMULTANEOUS_USE and a submission that
-    /// uses it may still be executing.
-    pub(crate) fn is_pending_exclusive(&self, device: &Device) -> bool {
-        !self.state.lock().simultaneous && self.is_pending(device)
-    }
-
     /// Whether the buffer was begun since allocation (or the last reset), and whether
     /// it is still recording.
     pub(crate) fn lifecycle(&self) -> (bool, bool) {
