@@ -41,6 +41,66 @@ mod threaded {
         send_sync::<tuff::MessageLog>();
     }
 
+    /// Records each of `secondaries` on a thread of its own, all at once: a
+    /// secondary that continues `target`'s render pass instance and sets a viewport.
+    fn record_workers<'a>(
+        target: &tuff_setup::ColorTarget,
+        secondaries: impl Iterator<Item = &'a mut tuff::CommandBuffer>,
+    ) {
+        std::thread::scope(|scope| {
+            for secondary in secondaries {
+                scope.spawn(move || {
+                    let inheritance = tuff::CommandBufferInheritanceInfo::new()
+                        .render_pass(Some(&target.render_pass))
+                        .framebuffer(Some(&target.framebuffer));
+                    let info = tuff::CommandBufferBeginInfo::new()
+                        .flags(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
+                        .inheritance_info(Some(&inheritance));
+                    let mut rec = secondary.begin_continuing(&info).expect("begin");
+                    rec.set_viewport(
+                        0,
+                        &[vk::Viewport {
+                            width: 8.0,
+                            height: 8.0,
+                            max_depth: 1.0,
+                            ..Default::default()
+                        }],
+                    )
+                    .expect("viewport");
+                    rec.end().expect("end");
+                });
+            }
+        });
+    }
+
+    /// Records `primary`: `target`'s render pass instance executing `secondaries`.
+    fn execute_workers(
+        primary: &mut tuff::CommandBuffer,
+        target: &tuff_setup::ColorTarget,
+        secondaries: &[&tuff::CommandBuffer],
+    ) {
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 8,
+                height: 8,
+            },
+        };
+        let clear = [vk::ClearValue::default()];
+        let rec = primary
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let mut rec = rec.begin_render_pass(
+            &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+                .render_area(area)
+                .clear_values(&clear),
+            vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
+        );
+        rec.execute_commands(&tuff::HandleSlice::new(secondaries))
+            .expect("the workers' secondaries");
+        rec.end_render_pass().end().expect("end");
+    }
+
     /// Four workers, each with its own pool, record a secondary that continues the
     /// primary's render pass instance, all at once; the primary executes the four,
     /// and the frame runs twice (the second after recording every buffer again).
@@ -49,57 +109,14 @@ mod threaded {
         let _serial = vulkan::serial();
         let s = tuff_setup::setup(true);
         let target = s.color_target(8, vk::ImageUsageFlags::empty());
-        let area = vk::Rect2D {
-            offset: vk::Offset2D::default(),
-            extent: vk::Extent2D {
-                width: 8,
-                height: 8,
-            },
-        };
         let mut workers: Vec<(tuff::CommandPool, tuff::CommandBuffer)> = (0..4)
             .map(|_| s.command_buffer(vk::CommandBufferLevel::SECONDARY))
             .collect();
         let (_pool, mut primary) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
         for _frame in 0..2 {
-            std::thread::scope(|scope| {
-                for (_, secondary) in workers.iter_mut() {
-                    let target = &target;
-                    scope.spawn(move || {
-                        let inheritance = tuff::CommandBufferInheritanceInfo::new()
-                            .render_pass(Some(&target.render_pass))
-                            .framebuffer(Some(&target.framebuffer));
-                        let info = tuff::CommandBufferBeginInfo::new()
-                            .flags(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
-                            .inheritance_info(Some(&inheritance));
-                        let mut rec = secondary.begin_continuing(&info).expect("begin");
-                        rec.set_viewport(
-                            0,
-                            &[vk::Viewport {
-                                width: 8.0,
-                                height: 8.0,
-                                max_depth: 1.0,
-                                ..Default::default()
-                            }],
-                        )
-                        .expect("viewport");
-                        rec.end().expect("end");
-                    });
-                }
-            });
-            let clear = [vk::ClearValue::default()];
-            let rec = primary
-                .begin(&tuff::CommandBufferBeginInfo::new())
-                .expect("begin");
-            let mut rec = rec.begin_render_pass(
-                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-                    .render_area(area)
-                    .clear_values(&clear),
-                vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
-            );
+            record_workers(&target, workers.iter_mut().map(|(_, cb)| cb));
             let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().map(|(_, cb)| cb).collect();
-            rec.execute_commands(&tuff::HandleSlice::new(&secondaries))
-                .expect("the workers' secondaries");
-            rec.end_render_pass().end().expect("end");
+            execute_workers(&mut primary, &target, &secondaries);
             s.submit_wait(&primary);
         }
         vulkan::assert_silent(&s.messages);
@@ -113,49 +130,16 @@ mod threaded {
         let _serial = vulkan::serial();
         let s = tuff_setup::setup(true);
         let target = s.color_target(8, vk::ImageUsageFlags::empty());
-        let area = vk::Rect2D {
-            offset: vk::Offset2D::default(),
-            extent: vk::Extent2D {
-                width: 8,
-                height: 8,
-            },
-        };
         let mut frames = s
             .device
             .frames_in_flight_with_workers(s.family, 2, 4)
             .expect("frames");
         for _ in 0..6 {
             let mut frame = frames.next_frame().expect("frame");
-            std::thread::scope(|scope| {
-                for secondary in frame.workers() {
-                    let target = &target;
-                    scope.spawn(move || {
-                        let inheritance = tuff::CommandBufferInheritanceInfo::new()
-                            .render_pass(Some(&target.render_pass))
-                            .framebuffer(Some(&target.framebuffer));
-                        let info = tuff::CommandBufferBeginInfo::new()
-                            .flags(vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE)
-                            .inheritance_info(Some(&inheritance));
-                        let rec = secondary.begin_continuing(&info).expect("begin");
-                        rec.end().expect("end");
-                    });
-                }
-            });
+            record_workers(&target, frame.workers().iter_mut());
             let (primary, workers) = frame.parts();
-            let rec = primary
-                .begin(&tuff::CommandBufferBeginInfo::new())
-                .expect("begin");
-            let clear = [vk::ClearValue::default()];
-            let mut rec = rec.begin_render_pass(
-                &tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
-                    .render_area(area)
-                    .clear_values(&clear),
-                vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
-            );
             let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().collect();
-            rec.execute_commands(&tuff::HandleSlice::new(&secondaries))
-                .expect("the workers' secondaries");
-            rec.end_render_pass().end().expect("end");
+            execute_workers(primary, &target, &secondaries);
             frame.submit(&s.queue, &[], &[]).expect("submit");
         }
         frames.wait_all().expect("wait");
