@@ -43,15 +43,7 @@ pub fn run<S: Scene>(
     make: impl Fn(&crate::gpu::Gpu, &tuff::RenderPass) -> Result<S>,
 ) -> Result<()> {
     if common.validate {
-        // Read by the layer when the instance is created; no other thread runs yet.
-        // What the user enabled stays enabled.
-        let sync = "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT";
-        let enables = match std::env::var("VK_LAYER_ENABLES") {
-            Ok(v) if v.split(',').any(|e| e == sync) => v,
-            Ok(v) if !v.is_empty() => format!("{v},{sync}"),
-            _ => sync.to_owned(),
-        };
-        std::env::set_var("VK_LAYER_ENABLES", enables);
+        enable_sync_validation();
     }
     req.window = common.window;
     let frames = common.frames.unwrap_or(1);
@@ -82,17 +74,56 @@ pub fn run<S: Scene>(
             Ok(())
         })
     };
-    let messages = gpu.finish();
-    // Printed even when the run failed: they often say why.
+    conclude(gpu.finish(), outcome)
+}
+
+/// Asks the validation layer, when the instance is made, for synchronization
+/// validation too (`VK_LAYER_ENABLES`), keeping what the user enabled.
+pub fn enable_sync_validation() {
+    // Read by the layer when the instance is created; call before any thread starts.
+    let sync = "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT";
+    let enables = match std::env::var("VK_LAYER_ENABLES") {
+        Ok(v) if v.split(',').any(|e| e == sync) => v,
+        Ok(v) if !v.is_empty() => format!("{v},{sync}"),
+        _ => sync.to_owned(),
+    };
+    std::env::set_var("VK_LAYER_ENABLES", enables);
+}
+
+/// Prints what the validation layer reported (even when the run failed: it often
+/// says why), then returns `outcome`, or fails if the layer reported anything.
+pub fn conclude<T>(messages: Vec<String>, outcome: Result<T>) -> Result<T> {
     for m in &messages {
         eprintln!("{m}");
     }
-    outcome?;
+    let value = outcome?;
     if !messages.is_empty() {
         bail!(
             "the validation layer reported {} message(s) (above)",
             messages.len()
         );
     }
-    Ok(())
+    Ok(value)
+}
+
+/// Options of a headless-only scene (the raw-ash twins, the deferred scene): those
+/// of [`Common`] less the window.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Headless {
+    /// Where the PNG goes; `<scene>.png` in the current folder by default.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 512)]
+    pub width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 512)]
+    pub height: u32,
+    /// Frames to render; the PNG is the last one.
+    #[arg(long, default_value_t = 1)]
+    pub frames: u32,
+    /// Turn on VK_LAYER_KHRONOS_validation with synchronization validation; any
+    /// warning or error it reports fails the run.
+    #[arg(long)]
+    pub validate: bool,
 }

@@ -31,20 +31,13 @@ impl Rendered {
     }
 }
 
-/// Renders `frames` frames (at least one) of the scene `make` builds, at
-/// `width` x `height`, and reads the last one back. Frame `i` shows scene time
-/// `i / 60` s, so the same arguments give the same image.
-pub fn render<S: Scene>(
-    gpu: &Gpu,
-    width: u32,
-    height: u32,
-    frames: u32,
-    make: impl FnOnce(&Gpu, &tuff::RenderPass) -> Result<S>,
-) -> Result<Rendered> {
+/// Fails unless `gpu` can render an image of `extent`: at least 1 pixel and at
+/// most the largest image and framebuffer side.
+pub fn check_extent(gpu: &Gpu, extent: vk::Extent2D) -> Result<()> {
+    let vk::Extent2D { width, height } = extent;
     if width == 0 || height == 0 {
         bail!("cannot render a {width}x{height} image: both sides must be at least 1");
     }
-    let frames = frames.max(1);
     let limits = gpu.physical.get_properties().limits;
     let largest = limits
         .max_image_dimension2_d
@@ -56,7 +49,22 @@ pub fn render<S: Scene>(
             gpu.name
         );
     }
+    Ok(())
+}
+
+/// Renders `frames` frames (at least one) of the scene `make` builds, at
+/// `width` x `height`, and reads the last one back. Frame `i` shows scene time
+/// `i / 60` s, so the same arguments give the same image.
+pub fn render<S: Scene>(
+    gpu: &Gpu,
+    width: u32,
+    height: u32,
+    frames: u32,
+    make: impl FnOnce(&Gpu, &tuff::RenderPass) -> Result<S>,
+) -> Result<Rendered> {
     let extent = vk::Extent2D { width, height };
+    check_extent(gpu, extent)?;
+    let frames = frames.max(1);
     let render_pass = render::render_pass(
         gpu,
         COLOR_FORMAT,

@@ -30,6 +30,7 @@ pub mod teapot;
 mod teapot_data;
 pub mod teapots_ash;
 pub mod window;
+pub mod workers;
 
 /// The committed SPIR-V of a shader in `shaders/src` (compiled by
 /// `scripts/shaders.sh`).

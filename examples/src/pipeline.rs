@@ -21,9 +21,13 @@ pub struct PipelineDesc<'a> {
     pub polygon_mode: vk::PolygonMode,
     /// Reversed-Z depth test and write.
     pub depth: bool,
+    /// The subpass of the render pass it is made for.
+    pub subpass: u32,
+    /// How many color attachments it writes (all of their channels, no blending).
+    pub colors: u32,
 }
 
-/// A graphics pipeline for subpass 0 of `render_pass`, with dynamic viewport and
+/// A graphics pipeline for a subpass of `render_pass`, with dynamic viewport and
 /// scissor (so a resize needs no new pipeline) and no culling (the teapot is not a
 /// closed surface).
 pub fn graphics(
@@ -62,10 +66,13 @@ pub fn graphics(
         .depth_write_enable(true)
         // Reversed Z: nearer is greater.
         .depth_compare_op(vk::CompareOp::GREATER);
-    let blend_attachments = [vk::PipelineColorBlendAttachmentState {
-        color_write_mask: vk::ColorComponentFlags::RGBA,
-        ..Default::default()
-    }];
+    let blend_attachments = vec![
+        vk::PipelineColorBlendAttachmentState {
+            color_write_mask: vk::ColorComponentFlags::RGBA,
+            ..Default::default()
+        };
+        desc.colors as usize
+    ];
     let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
     let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
     let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
@@ -80,7 +87,7 @@ pub fn graphics(
         .dynamic_state(Some(&dynamic))
         .layout(Some(layout))
         .render_pass(Some(render_pass))
-        .subpass(0);
+        .subpass(desc.subpass);
     if desc.patch_control_points > 0 {
         info = info.tessellation_state(Some(&tessellation));
     }

@@ -18,25 +18,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// Options every raw-ash scene takes: those of the tuff scenes, less the window.
-#[derive(clap::Args, Debug, Clone)]
-pub struct Common {
-    /// Where the PNG goes; `<scene>.png` in the current folder by default.
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 512)]
-    pub width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 512)]
-    pub height: u32,
-    /// Frames to render; the PNG is the last one.
-    #[arg(long, default_value_t = 1)]
-    pub frames: u32,
-    /// Turn on VK_LAYER_KHRONOS_validation with synchronization validation; any
-    /// warning or error it reports fails the run.
-    #[arg(long)]
-    pub validate: bool,
-}
+pub use crate::cli::Headless as Common;
 
 /// A scene: pipelines and data made for one render pass, and the draws of a frame.
 pub trait Scene {
@@ -687,10 +669,14 @@ pub struct PipelineDesc<'a> {
     pub polygon_mode: vk::PolygonMode,
     /// Reversed-Z depth test and write.
     pub depth: bool,
+    /// The subpass of the render pass it is made for.
+    pub subpass: u32,
+    /// How many color attachments it writes (all of their channels, no blending).
+    pub colors: u32,
 }
 
 impl Objects {
-    /// A graphics pipeline for subpass 0 of `render_pass`, with dynamic viewport and
+    /// A graphics pipeline for a subpass of `render_pass`, with dynamic viewport and
     /// scissor and no culling (the teapot is not a closed surface).
     pub fn pipeline(
         &mut self,
@@ -730,10 +716,13 @@ impl Objects {
             .depth_write_enable(true)
             // Reversed Z: nearer is greater.
             .depth_compare_op(vk::CompareOp::GREATER);
-        let blend_attachments = [vk::PipelineColorBlendAttachmentState {
-            color_write_mask: vk::ColorComponentFlags::RGBA,
-            ..Default::default()
-        }];
+        let blend_attachments = vec![
+            vk::PipelineColorBlendAttachmentState {
+                color_write_mask: vk::ColorComponentFlags::RGBA,
+                ..Default::default()
+            };
+            desc.colors as usize
+        ];
         let blend =
             vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments);
         let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
@@ -749,7 +738,7 @@ impl Objects {
             .dynamic_state(&dynamic)
             .layout(layout)
             .render_pass(render_pass)
-            .subpass(0);
+            .subpass(desc.subpass);
         if desc.patch_control_points > 0 {
             info = info.tessellation_state(&tessellation);
         }

@@ -96,6 +96,8 @@ impl Bezier {
                         vk::PolygonMode::FILL
                     },
                     depth: true,
+                    subpass: 0,
+                    colors: 1,
                 },
             )?;
             let pool_sizes = [vk::DescriptorPoolSize {

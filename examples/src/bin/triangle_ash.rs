@@ -63,6 +63,8 @@ impl Triangle {
                 patch_control_points: 0,
                 polygon_mode: vk::PolygonMode::FILL,
                 depth: false,
+                subpass: 0,
+                colors: 1,
             },
         )?;
         let vertices = o.buffer_with(device, vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES)?;

@@ -70,6 +70,8 @@ impl Bezier {
                     vk::PolygonMode::FILL
                 },
                 depth: true,
+                subpass: 0,
+                colors: 1,
             },
         )?;
         let pool = d.create_descriptor_pool(

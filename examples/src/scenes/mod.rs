@@ -3,6 +3,8 @@
 
 pub mod bezier;
 pub mod bezier_view;
+pub mod deferred;
+pub mod deferred_data;
 pub mod teapot_grid;
 pub mod teapots;
 pub mod textured_quad;

@@ -82,6 +82,8 @@ impl Teapots {
                 patch_control_points: 0,
                 polygon_mode: vk::PolygonMode::FILL,
                 depth: true,
+                subpass: 0,
+                colors: 1,
             },
         )?;
         let pool = d.create_descriptor_pool(

@@ -110,6 +110,8 @@ impl TexturedQuad {
                 patch_control_points: 0,
                 polygon_mode: vk::PolygonMode::FILL,
                 depth: false,
+                subpass: 0,
+                colors: 1,
             },
         )?;
         Ok(TexturedQuad {

@@ -55,6 +55,8 @@ impl Triangle {
                 patch_control_points: 0,
                 polygon_mode: vk::PolygonMode::FILL,
                 depth: false,
+                subpass: 0,
+                colors: 1,
             },
         )?;
         let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &VERTICES, a)?;

@@ -266,6 +266,16 @@ impl CommandBuffer {
             rendering_samples: rendering.map(|r| r.samples).filter(|s| !s.is_empty()),
             ..PassInstance::default()
         });
+        // A framebuffer named in the inheritance is the one the executing primary's
+        // instance has (00099, checked there), so its images are the attachments the
+        // draws' descriptors must not alias; without one (or with an imageless one)
+        // they stay unknown and such draws are refused.
+        let live = rec.device().live();
+        rec.pass_images = live
+            .framebuffer_views(inherited.framebuffer)
+            .iter()
+            .map(|v| live.view(*v).map_or(vk::Image::null(), |r| r.image))
+            .collect();
         Ok(rec.into_state())
     }
 

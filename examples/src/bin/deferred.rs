@@ -1,0 +1,66 @@
+//! Deferred shading of a grid of objects, recorded by worker threads, into
+//! `deferred.png`: see `scenes::deferred`.
+
+use anyhow::Result;
+use clap::Parser;
+use std::path::PathBuf;
+use tuff::vk;
+use tuff_examples::gpu::Gpu;
+use tuff_examples::scenes::deferred::{self, REQUIREMENTS};
+use tuff_examples::scenes::deferred_data::Layout;
+
+/// Renders a G-buffer and a lighting subpass through tuff, headless, the objects
+/// recorded into secondary command buffers by worker threads.
+#[derive(Parser)]
+struct Args {
+    /// How many objects, 1 to 100,000.
+    #[arg(long, default_value_t = 2000)]
+    count: u32,
+    /// Seeds the objects' meshes, colors, phases and spins, and the lights.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Worker threads recording the objects, 1 to 64 (on threads of their own only
+    /// in a build with the `multi_thread` feature).
+    #[arg(long, default_value_t = 4)]
+    threads: u32,
+    #[command(flatten)]
+    common: tuff_examples::cli::Headless,
+}
+
+fn main() -> std::process::ExitCode {
+    let args = Args::parse();
+    tuff_examples::exit(|| run(&args))
+}
+
+fn run(args: &Args) -> Result<()> {
+    let layout = Layout::grid(args.count, args.seed)?;
+    let c = &args.common;
+    if c.validate {
+        tuff_examples::cli::enable_sync_validation();
+    }
+    let gpu = Gpu::new(REQUIREMENTS, c.validate)?;
+    let extent = vk::Extent2D {
+        width: c.width,
+        height: c.height,
+    };
+    let outcome = deferred::render(&gpu, layout, extent, c.frames, args.threads);
+    let name = gpu.name.clone();
+    let run = tuff_examples::cli::conclude(gpu.finish(), outcome)?;
+    let out = c.out.clone().unwrap_or_else(|| PathBuf::from("deferred.png"));
+    let r = &run.rendered;
+    tuff_examples::image_file::write_png(&out, r.width, r.height, &r.rgba)?;
+    println!(
+        "deferred: wrote {} ({}x{}); {} objects, {} threads{}; {} frames in {:.3} s: {:.1} frames/s, recording {:.1} us/frame on {name}",
+        out.display(),
+        r.width,
+        r.height,
+        args.count,
+        args.threads,
+        if tuff_examples::workers::TUFF_THREADS { "" } else { " (in turn: no multi_thread)" },
+        r.frames,
+        r.elapsed.as_secs_f64(),
+        r.fps(),
+        run.recording.as_secs_f64() * 1e6,
+    );
+    Ok(())
+}
