@@ -38,12 +38,14 @@ RUSTDOCFLAGS="-D warnings" step cargo doc -p tuff --no-deps --features all_exten
 step cargo test --workspace
 # The runtime again with Vrc = Arc and Vutex = a mutex, and the tests whose code takes
 # a different path with it: the threaded soundness cases, workers recording secondaries
-# (threads.rs), the wrappers, submission
+# (threads.rs) and the deferred scene's (examples/tests/deferred.rs), the wrappers, submission
 # (queue locks), mapped memory and the layer's object names. Everything else locks the
 # same Vutex in both modes (a double lock panics in one and deadlocks in the other, so
 # the first pass finds either), and clippy above compiles every test with the feature.
-step cargo test -p tuff-runtime -p tuff-tests --features tuff-runtime/multi_thread,tuff-tests/multi_thread \
-    --lib --test soundness --test wrappers --test submission_checks --test runtime_memory --test oracle --test threads
+step cargo test -p tuff-runtime -p tuff-tests -p tuff-examples \
+    --features tuff-runtime/multi_thread,tuff-tests/multi_thread,tuff-examples/multi_thread \
+    --lib --test soundness --test wrappers --test submission_checks --test runtime_memory --test oracle --test threads \
+    --test deferred
 # The adversarial suite under valgrind's memcheck: no invalid read or write, no use
 # of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 step bash scripts/valgrind.sh

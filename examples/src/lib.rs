@@ -18,6 +18,7 @@
 pub mod accuracy;
 pub mod camera;
 pub mod cli;
+pub mod deferred_ash;
 pub mod gpu;
 pub mod headless;
 pub mod image_file;

@@ -81,6 +81,21 @@ pub fn run<S: Scene>(
     req: Requirements,
     make: impl FnOnce(&ash::Device, &mut Objects, vk::RenderPass) -> Result<S>,
 ) -> Result<()> {
+    run_with(common, req, |vulkan| {
+        let (rgba, elapsed) = render(vulkan, common, make)?;
+        Ok((rgba, elapsed, String::new()))
+    })
+}
+
+/// What [`run`] does around the rendering: opens the device (with the layer and its
+/// synchronization validation when `common` asks), checks the image size, calls
+/// `render` for the last frame's pixels, the time taken and a note for the summary
+/// line, then writes the PNG, prints that line, and fails on any message of the layer.
+pub fn run_with(
+    common: &Common,
+    req: Requirements,
+    render: impl FnOnce(&mut Vulkan) -> Result<(Vec<u8>, Duration, String)>,
+) -> Result<()> {
     if common.width == 0 || common.height == 0 {
         bail!(
             "cannot render a {}x{} image: both sides must be at least 1",
@@ -107,10 +122,10 @@ pub fn run<S: Scene>(
             vulkan.name
         );
     }
-    let rendered = render(&mut vulkan, common, make);
+    let rendered = render(&mut vulkan);
     let name = vulkan.name.clone();
     let messages = vulkan.finish();
-    let (rgba, elapsed) = rendered?;
+    let (rgba, elapsed, note) = rendered?;
     let messages = messages?;
     if !messages.is_empty() {
         for m in &messages {
@@ -128,7 +143,7 @@ pub fn run<S: Scene>(
     crate::image_file::write_png(&out, common.width, common.height, &rgba)?;
     let frames = common.frames.max(1);
     println!(
-        "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
+        "{}: wrote {} ({}x{}){note}; {} frames in {:.3} s: {:.1} frames/s on {}",
         req.scene,
         out.display(),
         common.width,
@@ -414,7 +429,8 @@ fn open_device(
 #[derive(Default)]
 pub struct Objects {
     pub(crate) types: vk::PhysicalDeviceMemoryProperties,
-    pub(crate) render_pass: vk::RenderPass,
+    /// The scene's render pass.
+    pub render_pass: vk::RenderPass,
     /// Descriptor set layouts, which the scenes make themselves.
     pub set_layouts: Vec<vk::DescriptorSetLayout>,
     pipeline_layouts: Vec<vk::PipelineLayout>,
@@ -426,8 +442,11 @@ pub struct Objects {
     images: Vec<vk::Image>,
     memories: Vec<vk::DeviceMemory>,
     views: Vec<vk::ImageView>,
-    pub(crate) framebuffers: Vec<vk::Framebuffer>,
+    /// The scene's framebuffers.
+    pub framebuffers: Vec<vk::Framebuffer>,
     pub(crate) command_pool: vk::CommandPool,
+    /// Command pools of the worker threads' secondaries.
+    pub worker_pools: Vec<vk::CommandPool>,
     pub(crate) fences: Vec<vk::Fence>,
     pub(crate) semaphores: Vec<vk::Semaphore>,
 }
@@ -448,6 +467,9 @@ impl Objects {
                 device.destroy_semaphore(semaphore, None);
             }
             device.destroy_command_pool(self.command_pool, None);
+            for &pool in &self.worker_pools {
+                device.destroy_command_pool(pool, None);
+            }
             for &framebuffer in &self.framebuffers {
                 device.destroy_framebuffer(framebuffer, None);
             }
@@ -567,7 +589,7 @@ impl Objects {
     }
 
     /// A 2D image with memory of its own, and a view of all of it.
-    pub(crate) fn image(
+    pub fn image(
         &mut self,
         device: &ash::Device,
         extent: vk::Extent2D,
@@ -969,7 +991,7 @@ fn render<S: Scene>(
 /// `count` primary command buffers of the objects' pool (made here if there is none
 /// yet, resettable, of the device's queue family), each with a fence created
 /// signalled, kept by the objects.
-pub(crate) fn frame_slots(
+pub fn frame_slots(
     vulkan: &mut Vulkan,
     count: usize,
 ) -> Result<Vec<(vk::CommandBuffer, vk::Fence)>> {
@@ -1085,7 +1107,7 @@ pub(crate) unsafe fn record_frame<S: Scene>(
 /// # Safety
 ///
 /// `cb` is recording, outside a render pass, on `device`; the handles are live.
-pub(crate) unsafe fn record_readback(
+pub unsafe fn record_readback(
     device: &ash::Device,
     cb: vk::CommandBuffer,
     image: vk::Image,

@@ -18,7 +18,10 @@ pub fn on_threads<T: Send, E: Send>(
     job: impl Fn(usize, T) -> Result<(), E> + Sync,
 ) -> Result<(), E> {
     if items.len() <= 1 {
-        return items.into_iter().enumerate().try_for_each(|(i, t)| job(i, t));
+        return items
+            .into_iter()
+            .enumerate()
+            .try_for_each(|(i, t)| job(i, t));
     }
     let job = &job;
     std::thread::scope(|scope| {
@@ -36,7 +39,10 @@ pub fn on_threads<T: Send, E: Send>(
 /// Runs `job(i, item)` for each of `items` in order on the calling thread, and
 /// returns the first error.
 pub fn in_order<T, E>(items: Vec<T>, job: impl Fn(usize, T) -> Result<(), E>) -> Result<(), E> {
-    items.into_iter().enumerate().try_for_each(|(i, t)| job(i, t))
+    items
+        .into_iter()
+        .enumerate()
+        .try_for_each(|(i, t)| job(i, t))
 }
 
 /// How the tuff scene runs its workers: on threads with `multi_thread`.

@@ -46,7 +46,10 @@ fn run(args: &Args) -> Result<()> {
     let outcome = deferred::render(&gpu, layout, extent, c.frames, args.threads);
     let name = gpu.name.clone();
     let run = tuff_examples::cli::conclude(gpu.finish(), outcome)?;
-    let out = c.out.clone().unwrap_or_else(|| PathBuf::from("deferred.png"));
+    let out = c
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("deferred.png"));
     let r = &run.rendered;
     tuff_examples::image_file::write_png(&out, r.width, r.height, &r.rgba)?;
     println!(

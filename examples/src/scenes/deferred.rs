@@ -15,7 +15,7 @@ use crate::headless::{Rendered, COLOR_FORMAT};
 use crate::pipeline::{self, PipelineDesc};
 use crate::render::{View, DEPTH_FORMAT, FRAMES_IN_FLIGHT};
 use crate::scenes::deferred_data::{
-    self as data, Layout, LightsBlock, Meshes, MeshRange, GBUFFER_COLORS, GBUFFER_DEPTH,
+    self as data, Layout, LightsBlock, MeshRange, Meshes, GBUFFER_COLORS, GBUFFER_DEPTH,
     LIGHTING_COLOR, LIGHTING_INPUTS,
 };
 use crate::scenes::teapot_grid::{vertex_input, CameraBlock, TeapotBlock};
@@ -162,7 +162,12 @@ impl Deferred {
         });
         let [i0, i1, i2] = inputs;
         let lighting_set_layout = d.create_descriptor_set_layout(
-            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&[i0, i1, i2, uniform(3, fragment)]),
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&[
+                i0,
+                i1,
+                i2,
+                uniform(3, fragment),
+            ]),
         )?;
         let lighting_layout = pipeline::layout(gpu, &[&lighting_set_layout], fragment, 0)?;
         let vert = crate::shader(d, crate::spirv!("deferred_light.vert"))?;
@@ -256,8 +261,10 @@ impl Deferred {
             d.update_descriptor_sets(&writes, &[])?;
         }
         let meshes = Meshes::new();
-        let vertices = d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &meshes.vertices, a)?;
-        let indices = d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &meshes.indices, a)?;
+        let vertices =
+            d.create_buffer_with(vk::BufferUsageFlags::VERTEX_BUFFER, &meshes.vertices, a)?;
+        let indices =
+            d.create_buffer_with(vk::BufferUsageFlags::INDEX_BUFFER, &meshes.indices, a)?;
         Ok(Deferred {
             layout,
             ranges: meshes.ranges,
@@ -377,7 +384,12 @@ impl Deferred {
         rec.draw(3, 1, 0, 0)?;
         let mut rec = rec.end_render_pass();
         if let Some(buffer) = readback {
-            crate::render::record_readback(&mut rec, &self.outputs[view.slot], buffer, view.extent)?;
+            crate::render::record_readback(
+                &mut rec,
+                &self.outputs[view.slot],
+                buffer,
+                view.extent,
+            )?;
         }
         rec.end()?;
         Ok(())
@@ -430,7 +442,10 @@ pub fn render(
     threads: u32,
 ) -> Result<Run> {
     if !(1..=data::MAX_WORKERS).contains(&threads) {
-        bail!("the thread count must be 1 to {}, not {threads}", data::MAX_WORKERS);
+        bail!(
+            "the thread count must be 1 to {}, not {threads}",
+            data::MAX_WORKERS
+        );
     }
     crate::headless::check_extent(gpu, extent)?;
     let frames = frames.max(1);

@@ -105,7 +105,7 @@ impl Meshes {
         meshes
     }
 
-    fn add(&mut self, vertices: &[([f32; 3], [f32; 3])], indices: &[u32]) {
+    fn add(&mut self, vertices: &[Vertex], indices: &[u32]) {
         self.ranges.push(MeshRange {
             first_index: self.indices.len() as u32,
             index_count: indices.len() as u32,
@@ -163,9 +163,12 @@ const OCTAHEDRON_FACES: [[[f32; 3]; 4]; 8] = {
     ]
 };
 
+/// A vertex: position and normal.
+type Vertex = ([f32; 3], [f32; 3]);
+
 /// Flat-shaded vertices and indices of `faces`, quads whose last corner may repeat
 /// the first (a triangle).
-fn solid<const N: usize>(faces: &[[[f32; 3]; 4]; N]) -> (Vec<([f32; 3], [f32; 3])>, Vec<u32>) {
+fn solid<const N: usize>(faces: &[[[f32; 3]; 4]; N]) -> (Vec<Vertex>, Vec<u32>) {
     let mut vertices = Vec::new();
     let mut indices = Vec::new();
     for face in faces {
@@ -512,6 +515,10 @@ mod tests {
     fn lights_block_matches_the_shader_layout() {
         // mat4 + 3 vec4 + 64 lights of 2 vec4, std140.
         assert_eq!(size_of::<LightsBlock>(), 64 + 48 + MAX_LIGHTS * 32);
+    }
+
+    #[test]
+    fn grids_hold_one_to_the_most_objects_each_of_a_mesh() {
         assert!(Layout::grid(0, 1).is_err());
         assert!(Layout::grid(MAX_OBJECTS + 1, 1).is_err());
         let layout = Layout::grid(10, 3).expect("grid");
