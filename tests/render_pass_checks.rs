@@ -584,7 +584,7 @@ impl Default for Described {
     }
 }
 
-fn create_described(s: &Setup, d: &Described) -> (tuff::Result<()>, Vec<String>) {
+fn create_described(s: &Setup, d: &Described, unchecked: bool) -> (tuff::Result<()>, Vec<String>) {
     let subpass = tuff::SubpassDescription::new()
         .pipeline_bind_point(vk::PipelineBindPoint::GRAPHICS)
         .input_attachments(&d.inputs)
@@ -608,6 +608,9 @@ fn create_described(s: &Setup, d: &Described) -> (tuff::Result<()>, Vec<String>)
         info = info.push_next(&mut aspects);
     }
     let safe = s.device.create_render_pass(&info).map(drop);
+    if !unchecked {
+        return (safe, Vec::new());
+    }
     let layer = under_layer(s, || {
         let _ = unsafe { s.device.create_render_pass_unchecked(&info) };
     });
@@ -921,7 +924,7 @@ fn each_broken_description_rule_is_refused_and_the_layer_agrees() {
         (tuff_setup::setup_full_features(true), DESCRIBED),
         (tuff_setup::setup_bare(true), DESCRIBED_BARE),
     ] {
-        let (safe, layer) = create_described(&setup, &Described::default());
+        let (safe, layer) = create_described(&setup, &Described::default(), true);
         assert!(
             safe.is_ok() && layer.is_empty(),
             "the valid render pass: {safe:?} {layer:?}"
@@ -929,7 +932,7 @@ fn each_broken_description_rule_is_refused_and_the_layer_agrees() {
         for (vuid, also, change) in cases {
             let mut d = Described::default();
             change(&mut d);
-            let (safe, layer) = create_described(&setup, &d);
+            let (safe, layer) = create_described(&setup, &d, true);
             match &safe {
                 Err(tuff::Error::Validation { vuid: got, .. }) if got == vuid => {}
                 other => {
@@ -1472,26 +1475,48 @@ fn each_broken_second_version_description_rule_is_refused_and_the_layer_agrees()
         safe.is_ok() && layer.is_empty(),
         "a depth/stencil resolve: {safe:?} {layer:?}"
     );
-    // The mesh and task stages of a device without VK_EXT_mesh_shader: its
-    // parameter rule refuses them before the rules that name their features.
-    let mesh = Described {
-        dependencies: vec![between(
-            vk::SUBPASS_EXTERNAL,
-            0,
-            (
-                vk::PipelineStageFlags::MESH_SHADER_EXT,
-                vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT,
-            ),
-            Default::default(),
-            vk::DependencyFlags::empty(),
-        )],
-        ..Described::default()
-    };
-    let (safe, _) = create_described2(&full, &mesh, &Extra2::default(), false);
-    assert_eq!(
-        tuff_setup::vuid(safe),
-        "VUID-VkSubpassDependency2-srcStageMask-parameter"
-    );
+    // The stages of extensions the safe create_device does not enable (mesh and
+    // task shading, conditional rendering, fragment density, transform feedback,
+    // shading rate attachments), in either mask of either version: their parameter
+    // rule refuses them before the rules that name their features.
+    let extension_stages = [
+        vk::PipelineStageFlags::MESH_SHADER_EXT,
+        vk::PipelineStageFlags::TASK_SHADER_EXT,
+        vk::PipelineStageFlags::CONDITIONAL_RENDERING_EXT,
+        vk::PipelineStageFlags::FRAGMENT_DENSITY_PROCESS_EXT,
+        vk::PipelineStageFlags::TRANSFORM_FEEDBACK_EXT,
+        vk::PipelineStageFlags::FRAGMENT_SHADING_RATE_ATTACHMENT_KHR,
+    ];
+    let color = vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT;
+    for stage in extension_stages {
+        for (stages, mask) in [
+            ((stage, color), "srcStageMask"),
+            ((color, stage), "dstStageMask"),
+        ] {
+            let d = Described {
+                dependencies: vec![between(
+                    vk::SUBPASS_EXTERNAL,
+                    0,
+                    stages,
+                    Default::default(),
+                    vk::DependencyFlags::empty(),
+                )],
+                ..Described::default()
+            };
+            let (safe, _) = create_described2(&full, &d, &Extra2::default(), false);
+            assert_eq!(
+                tuff_setup::vuid(safe),
+                format!("VUID-VkSubpassDependency2-{mask}-parameter"),
+                "{stage:?}"
+            );
+            let (safe, _) = create_described(&full, &d, false);
+            assert_eq!(
+                tuff_setup::vuid(safe),
+                format!("VUID-VkSubpassDependency-{mask}-parameter"),
+                "{stage:?}"
+            );
+        }
+    }
     for (setup, vuid, d, x) in &cases {
         let (safe, layer) = create_described2(setup, d, x, !CRASH_UNCHECKED.contains(vuid));
         match &safe {

@@ -40,8 +40,8 @@ const OBJECT_STAGES: vk::ShaderStageFlags = vk::ShaderStageFlags::from_raw(
 pub struct Run {
     /// The last frame's pixels and the frame rate.
     pub rendered: Rendered,
-    /// Recording per frame, on average: from the workers' start to the end of the
-    /// primary's recording.
+    /// Recording per frame, on average over every frame but the first (zero for a
+    /// single frame): from the workers' start to the end of the primary's recording.
     pub recording: Duration,
 }
 
@@ -472,7 +472,10 @@ pub fn render(
         let last = n + 1 == frames;
         let began = Instant::now();
         scene.record(&mut frame, &view, last.then_some(&*readback))?;
-        recording += began.elapsed();
+        // The first frame's recording runs on cold caches: left out of the mean.
+        if n > 0 {
+            recording += began.elapsed();
+        }
         frame.submit(&gpu.queue, &[], &[])?;
     }
     ring.wait_all()?;
@@ -486,6 +489,6 @@ pub fn render(
             frames,
             elapsed,
         },
-        recording: recording / frames,
+        recording: recording / (frames - 1).max(1),
     })
 }

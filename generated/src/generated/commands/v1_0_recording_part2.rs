@@ -7,15 +7,14 @@ impl<'c> Recorder<'c, Outside> {
 
 # Example
 
-Called, as `examples/src/render.rs` (line 216) does; the example programs run in CI:
+Called, as `examples/src/scenes/deferred.rs` (line 366) does; the example programs run in CI:
 
 ```ignore
-let mut rec = frame.record()?.begin_render_pass(
-    &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
+let mut rec = rec.begin_render_pass(
+    &tuff::RenderPassBeginInfo::new(&self.render_pass, &self.framebuffers[view.slot])
         .render_area(area)
-        // Without a depth attachment, only the color is cleared.
-        .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
-    vk::SubpassContents::INLINE,
+        .clear_values(&clear),
+    vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
 );
 ```
 

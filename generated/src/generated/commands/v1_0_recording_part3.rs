@@ -128,7 +128,7 @@ The caller upholds the rules that [`Self::bind_descriptor_sets`] checks at run t
 
 # Example
 
-Called, as `examples/src/scenes/bezier.rs` (line 141) does; the example programs run in CI:
+Called, as `examples/src/scenes/bezier.rs` (line 143) does; the example programs run in CI:
 
 ```ignore
 rec.bind_index_buffer(&self.indices, 0, vk::IndexType::UINT32)?;
@@ -292,7 +292,7 @@ The caller upholds the rules that [`Self::bind_pipeline`] checks at run time: `V
 
 # Example
 
-Called, as `examples/src/scenes/teapots.rs` (line 160) does; the example programs run in CI:
+Called, as `examples/src/scenes/deferred.rs` (line 327) does; the example programs run in CI:
 
 ```ignore
 rec.bind_vertex_buffers(0, &self.vertices, &[0])?;
@@ -396,6 +396,14 @@ The caller upholds the rules that [`Self::bind_vertex_buffers`] checks at run ti
         Ok(())
     }
     /**`vkCmdExecuteCommands`
+
+# Example
+
+Called, as `examples/src/scenes/deferred.rs` (line 372) does; the example programs run in CI:
+
+```ignore
+rec.execute_commands(&tuff::HandleSlice::new(&secondaries))?;
+```
 
 # Valid usage
 

@@ -79,10 +79,10 @@ The caller upholds the rules that [`Self::clear_attachments`] checks at run time
 
 # Example
 
-Called, as `examples/src/scenes/textured_quad.rs` (line 143) does; the example programs run in CI:
+Called, as `examples/src/scenes/deferred.rs` (line 384) does; the example programs run in CI:
 
 ```ignore
-rec.draw(4, 1, 0, 0)
+rec.draw(3, 1, 0, 0)?;
 ```
 
 # Valid usage
@@ -447,7 +447,7 @@ The caller upholds the rules that [`Self::draw`] checks at run time: `VUID-vkCmd
 
 # Example
 
-Called, as `examples/src/scenes/bezier.rs` (line 147) does; the example programs run in CI:
+Called, as `examples/src/scenes/bezier.rs` (line 149) does; the example programs run in CI:
 
 ```ignore
 rec.draw_indexed(16, 1, patch * 16, 0, 0)?;

@@ -60,6 +60,14 @@ The caller upholds the rules that [`Self::end_render_pass`] checks at run time: 
     }
     /**`vkCmdNextSubpass`
 
+# Example
+
+Called, as `examples/src/scenes/deferred.rs` (line 373) does; the example programs run in CI:
+
+```ignore
+rec.next_subpass(vk::SubpassContents::INLINE);
+```
+
 # Valid usage
 
 The rules of `vkCmdNextSubpass` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/vkCmdNextSubpass.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:

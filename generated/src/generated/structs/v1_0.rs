@@ -552,6 +552,19 @@ impl<'a> CommandBufferAllocateInfo<'a> {
 }
 /**Safe counterpart of [`vk::CommandBufferBeginInfo`].
 
+# Example
+
+Made, as `examples/src/scenes/deferred.rs` (line 309) does; the example programs run in CI:
+
+```ignore
+let info = tuff::CommandBufferBeginInfo::new()
+    .flags(
+        vk::CommandBufferUsageFlags::RENDER_PASS_CONTINUE
+            | vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT,
+    )
+    .inheritance_info(Some(&inheritance));
+```
+
 # Valid usage
 
 The rules of `VkCommandBufferBeginInfo` that apply to this crate's API ([reference page](https://registry.khronos.org/vulkan/specs/1.3-extensions/man/html/VkCommandBufferBeginInfo.html)), each marked *yours* (the caller upholds it), *checked* (a run-time check returns `Error::Validation` naming it) or *by the types* (no program that compiles breaks it); how each is settled is in the crate's `validation.json`:
@@ -596,6 +609,17 @@ impl<'a> CommandBufferBeginInfo<'a> {
     }
 }
 /**Safe counterpart of [`vk::CommandBufferInheritanceInfo`].
+
+# Example
+
+Made, as `examples/src/scenes/deferred.rs` (line 305) does; the example programs run in CI:
+
+```ignore
+let inheritance = tuff::CommandBufferInheritanceInfo::new()
+    .render_pass(Some(&self.render_pass))
+    .subpass(0)
+    .framebuffer(Some(&self.framebuffers[view.slot]));
+```
 
 # Valid usage
 
@@ -932,13 +956,12 @@ impl<'a> DescriptorBufferInfo<'a> {
 
 # Example
 
-Made, as `examples/src/scenes/textured_quad.rs` (line 86) does; the example programs run in CI:
+Made, as `examples/src/scenes/deferred.rs` (line 238) does; the example programs run in CI:
 
 ```ignore
-let texture = [tuff::DescriptorImageInfo::new()
-    .sampler(Some(&sampler))
-    .image_view(Some(&view))
-    .image_layout(read)];
+[tuff::DescriptorImageInfo::new()
+    .image_view(Some(view))
+    .image_layout(reference.layout)]
 ```
 
 # Valid usage
@@ -1047,7 +1070,7 @@ impl<'a> DescriptorPoolCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/scenes/bezier.rs` (line 86) does; the example programs run in CI:
+Made, as `examples/src/scenes/bezier.rs` (line 88) does; the example programs run in CI:
 
 ```ignore
 let set = d

@@ -6,7 +6,7 @@ use super::*;
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 72) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 79) does; the example programs run in CI:
 
 ```ignore
 let mut info = tuff::GraphicsPipelineCreateInfo::new()
@@ -20,7 +20,7 @@ let mut info = tuff::GraphicsPipelineCreateInfo::new()
     .dynamic_state(Some(&dynamic))
     .layout(Some(layout))
     .render_pass(Some(render_pass))
-    .subpass(0);
+    .subpass(desc.subpass);
 ```
 
 # Valid usage

@@ -272,7 +272,7 @@ impl<'a> PipelineCacheCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 69) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 76) does; the example programs run in CI:
 
 ```ignore
 let blend = tuff::PipelineColorBlendStateCreateInfo::new().attachments(&blend_attachments);
@@ -350,7 +350,7 @@ impl<'a> PipelineColorBlendStateCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 60) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 64) does; the example programs run in CI:
 
 ```ignore
 let depth = tuff::PipelineDepthStencilStateCreateInfo::new()
@@ -447,7 +447,7 @@ impl<'a> PipelineDepthStencilStateCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 71) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 78) does; the example programs run in CI:
 
 ```ignore
 let dynamic = tuff::PipelineDynamicStateCreateInfo::new().dynamic_states(&dynamic_states);
@@ -488,7 +488,7 @@ impl<'a> PipelineDynamicStateCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 47) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 51) does; the example programs run in CI:
 
 ```ignore
 let assembly = tuff::PipelineInputAssemblyStateCreateInfo::new().topology(desc.topology);
@@ -656,7 +656,7 @@ impl<'a> PipelineLayoutCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 58) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 62) does; the example programs run in CI:
 
 ```ignore
 let multisample = tuff::PipelineMultisampleStateCreateInfo::new()
@@ -726,7 +726,7 @@ impl<'a> PipelineMultisampleStateCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 53) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 57) does; the example programs run in CI:
 
 ```ignore
 let raster = tuff::PipelineRasterizationStateCreateInfo::new()
@@ -950,7 +950,7 @@ impl<'a> PipelineShaderStageCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 48) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 52) does; the example programs run in CI:
 
 ```ignore
 let tessellation = tuff::PipelineTessellationStateCreateInfo::new()
@@ -991,7 +991,7 @@ impl<'a> PipelineTessellationStateCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 44) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 48) does; the example programs run in CI:
 
 ```ignore
 let vertex_input = tuff::PipelineVertexInputStateCreateInfo::new()
@@ -1053,7 +1053,7 @@ impl<'a> PipelineVertexInputStateCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/pipeline.rs` (line 50) does; the example programs run in CI:
+Made, as `examples/src/pipeline.rs` (line 54) does; the example programs run in CI:
 
 ```ignore
 let viewport = tuff::PipelineViewportStateCreateInfo::new()

@@ -2069,22 +2069,6 @@ The rules of `VkSubpassDependency2` that apply to this crate's API ([reference p
 
 - `VUID-VkSubpassDependency2-dependencyFlags-03090` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `srcSubpass` must not be equal to `VK_SUBPASS_EXTERNAL`
 - `VUID-VkSubpassDependency2-dependencyFlags-03091` (*yours*; checked by the safe methods in every build, but no oracle case breaks it yet): If `dependencyFlags` includes `VK_DEPENDENCY_VIEW_LOCAL_BIT`, `dstSubpass` must not be equal to `VK_SUBPASS_EXTERNAL`
-- `VUID-VkSubpassDependency2-srcStageMask-04092` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
-- `VUID-VkSubpassDependency2-dstStageMask-04092` (*yours*; explicit rule): If the `conditionalRendering` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
-- `VUID-VkSubpassDependency2-srcStageMask-04093` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
-- `VUID-VkSubpassDependency2-dstStageMask-04093` (*yours*; explicit rule): If the `fragmentDensityMap` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
-- `VUID-VkSubpassDependency2-srcStageMask-04094` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
-- `VUID-VkSubpassDependency2-dstStageMask-04094` (*yours*; explicit rule): If the `transformFeedback` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
-- `VUID-VkSubpassDependency2-srcStageMask-04095` (*yours*; checked by the safe methods in every build): If the `meshShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT`
-- `VUID-VkSubpassDependency2-srcStageMask-04096` (*yours*; checked by the safe methods in every build): If the `taskShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT`
-- `VUID-VkSubpassDependency2-dstStageMask-04095` (*yours*; checked by the safe methods in every build): If the `meshShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT`
-- `VUID-VkSubpassDependency2-dstStageMask-04096` (*yours*; checked by the safe methods in every build): If the `taskShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT`
-- `VUID-VkSubpassDependency2-srcStageMask-04097` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
-- `VUID-VkSubpassDependency2-dstStageMask-04097` (*yours*; explicit rule): If the `shadingRateImage` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
-- `VUID-VkSubpassDependency2-srcStageMask-07318` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
-- `VUID-VkSubpassDependency2-dstStageMask-07318` (*yours*; explicit rule): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
-- `VUID-VkSubpassDependency2-srcStageMask-07319` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
-- `VUID-VkSubpassDependency2-dstStageMask-07319` (*yours*; explicit rule): If the `attachmentFragmentShadingRate` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
 - `VUID-VkSubpassDependency2-srcStageMask-04996` (*yours*; explicit rule): `srcStageMask` must not be `0`
 - `VUID-VkSubpassDependency2-dstStageMask-04996` (*yours*; explicit rule): `dstStageMask` must not be `0`
 - `VUID-VkSubpassDependency2-srcStageMask-04090` (*checked*): If the `geometryShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT`
@@ -2108,7 +2092,23 @@ The rules of `VkSubpassDependency2` that apply to this crate's API ([reference p
 - `VUID-VkSubpassDependency2-srcStageMask-03937` (*checked*): If the `synchronization2` feature is not enabled, `srcStageMask` must not be `0`
 - `VUID-VkSubpassDependency2-dstStageMask-03937` (*checked*): If the `synchronization2` feature is not enabled, `dstStageMask` must not be `0`
 - `VUID-VkSubpassDependency2-sType-sType` (*by the types*): `sType` must be `VK_STRUCTURE_TYPE_SUBPASS_DEPENDENCY_2`
-- `VUID-VkSubpassDependency2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkMemoryBarrier2*/
+- `VUID-VkSubpassDependency2-pNext-pNext` (*by the types*): `pNext` must be `NULL` or a pointer to a valid instance of VkMemoryBarrier2
+- `VUID-VkSubpassDependency2-srcStageMask-04092` (*by the types*): If the `conditionalRendering` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04092` (*by the types*): If the `conditionalRendering` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_CONDITIONAL_RENDERING_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04093` (*by the types*): If the `fragmentDensityMap` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04093` (*by the types*): If the `fragmentDensityMap` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_DENSITY_PROCESS_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04094` (*by the types*): If the `transformFeedback` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04094` (*by the types*): If the `transformFeedback` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04095` (*by the types*): If the `meshShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04096` (*by the types*): If the `taskShader` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04095` (*by the types*): If the `meshShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_MESH_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-dstStageMask-04096` (*by the types*): If the `taskShader` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_TASK_SHADER_BIT_EXT`
+- `VUID-VkSubpassDependency2-srcStageMask-04097` (*by the types*): If the `shadingRateImage` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
+- `VUID-VkSubpassDependency2-dstStageMask-04097` (*by the types*): If the `shadingRateImage` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_SHADING_RATE_IMAGE_BIT_NV`
+- `VUID-VkSubpassDependency2-srcStageMask-07318` (*by the types*): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkSubpassDependency2-dstStageMask-07318` (*by the types*): If neither the `shadingRateImage` or `attachmentFragmentShadingRate` are enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkSubpassDependency2-srcStageMask-07319` (*by the types*): If the `attachmentFragmentShadingRate` feature is not enabled, `srcStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`
+- `VUID-VkSubpassDependency2-dstStageMask-07319` (*by the types*): If the `attachmentFragmentShadingRate` feature is not enabled, `dstStageMask` must not contain `VK_PIPELINE_STAGE_FRAGMENT_SHADING_RATE_ATTACHMENT_BIT_KHR`*/
 #[repr(transparent)]
 #[derive(Clone, Copy)]
 pub struct SubpassDependency2<'a> {

@@ -23,7 +23,7 @@ const DEPTH_RESOLVE: &str = "checks each subpass's chained VkSubpassDescriptionD
 const UNPROVEN_RESOLVE_MODES: &str = "checked by the safe methods in every build (against VkPhysicalDeviceDepthStencilResolveProperties), but no test breaks it: lavapipe resolves depth by every mode, and depth and stencil independently";
 const UNPROVEN_ALIASING: &str = "checked by the safe methods in every build where memory is known, at the render pass instance's begin: attachments whose views share memory, one written, are refused unless both have MAY_ALIAS, and then unless a chain of the render pass's dependencies orders every two subpasses that use them (the begin's aliasing check, VUID-vkCmdBeginRenderPass2-framebuffer-02533), but no test breaks it yet";
 
-const MESH_STAGES: &str = "checked by the safe methods in every build: the mesh and task shader stages are VK_EXT_mesh_shader's, whose bits the emitted parameter check refuses on a device that does not enable it, and the safe create_device does not (the extension brings rules no check enforces), so no safe dependency names them";
+const EXTENSION_STAGES: &str = "by the parameter check: these stages (mesh and task shading, conditional rendering, fragment density processing, transform feedback, shading rate attachments) belong to extensions whose bits the emitted `-parameter` check refuses on a device that does not enable them, and the safe create_device enables none of them (each brings rules no check enforces), so no safe dependency names them (tests/render_pass_checks.rs refuses each, in either mask of either version)";
 
 /// The rows of this concern.
 pub(super) const ROWS: &[Special] = &[
@@ -315,20 +315,68 @@ pub(super) const ROWS: &[Special] = &[
                 How::User(UNPROVEN_ALIASING),
             ),
             (
-                "VUID-VkSubpassDependency2-srcStageMask-04095",
-                How::User(MESH_STAGES),
+                "VUID-VkSubpassDependency2-srcStageMask-04092",
+                How::Static(EXTENSION_STAGES),
             ),
             (
-                "VUID-VkSubpassDependency2-srcStageMask-04096",
-                How::User(MESH_STAGES),
+                "VUID-VkSubpassDependency2-dstStageMask-04092",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-04093",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-04093",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-04094",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-04094",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-04095",
+                How::Static(EXTENSION_STAGES),
             ),
             (
                 "VUID-VkSubpassDependency2-dstStageMask-04095",
-                How::User(MESH_STAGES),
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-04096",
+                How::Static(EXTENSION_STAGES),
             ),
             (
                 "VUID-VkSubpassDependency2-dstStageMask-04096",
-                How::User(MESH_STAGES),
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-04097",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-04097",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-07318",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-07318",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-srcStageMask-07319",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency2-dstStageMask-07319",
+                How::Static(EXTENSION_STAGES),
             ),
         ],
         ..NONE
@@ -348,6 +396,70 @@ pub(super) const ROWS: &[Special] = &[
             &["self", "created", "create_info"],
         ),
         settles: &[
+            (
+                "VUID-VkSubpassDependency-srcStageMask-04092",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-04092",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-srcStageMask-04093",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-04093",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-srcStageMask-04094",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-04094",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-srcStageMask-04095",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-04095",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-srcStageMask-04096",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-04096",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-srcStageMask-04097",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-04097",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-srcStageMask-07318",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-07318",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-srcStageMask-07319",
+                How::Static(EXTENSION_STAGES),
+            ),
+            (
+                "VUID-VkSubpassDependency-dstStageMask-07319",
+                How::Static(EXTENSION_STAGES),
+            ),
             (
                 "VUID-VkAttachmentDescription-format-06698",
                 How::Dynamic(ATTACHMENT_DESCRIPTIONS),
