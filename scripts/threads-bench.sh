@@ -26,4 +26,4 @@ if [ "$label" = lavapipe ]; then
     export TUFF_DEVICE=llvmpipe
 fi
 target/threads/threads --tuff target/threads/deferred --ash target/threads/deferred_ash \
-    --out docs/stages --label "$label" "$@"
+    --out docs/stages --label "$label" --made-by "scripts/threads-bench.sh $label $*" "$@"

@@ -44,6 +44,9 @@ struct Args {
     /// Names the tables: `threads-<label>`.
     #[arg(long, default_value = "lavapipe")]
     label: String,
+    /// The command that made the tables, for their header.
+    #[arg(long, default_value = "target/threads/threads")]
+    made_by: String,
 }
 
 /// One run's figures.
@@ -163,7 +166,7 @@ fn bench(args: &Args) -> Result<()> {
          Recording per frame (workers recording their secondaries at once, then the primary), \
          median of {} interleaved rounds of {} frames ({} at 100,000 objects), first frame left out; \
          frames per second over the whole run; {}x{} pixels; speed-up over one thread of the same \
-         library. Device: {device}. Made by `scripts/threads-bench.sh {}` ({:.0} s).\n\n\
+         library. Device: {device}. Made by `{}` ({:.0} s).\n\n\
          | objects | threads | tuff µs/frame | ash µs/frame | tuff / ash | tuff speed-up | ash speed-up | tuff frames/s | ash frames/s |\n\
          |---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
         args.label,
@@ -172,7 +175,7 @@ fn bench(args: &Args) -> Result<()> {
         args.frames_100000,
         args.size,
         args.size,
-        args.label,
+        args.made_by,
         started.elapsed().as_secs_f64(),
     );
     let mut one_thread = std::collections::HashMap::new();
