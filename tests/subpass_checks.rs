@@ -2,7 +2,8 @@
 //! input attachment: the correct program records, runs and leaves the layer
 //! (synchronization validation included) silent, and a descriptor that states
 //! another layout than the subpass gives the attachment is refused
-//! (`VUID-VkDescriptorImageInfo-imageLayout-00344`).
+//! (`VUID-VkDescriptorImageInfo-imageLayout-00344`), as is a draw recorded inline in
+//! a subpass whose contents are secondaries.
 //!
 //! SAFETY of the `unsafe` blocks: `draw_unchecked` breaks, on purpose, only the rule
 //! each case names, which the layer skips (the command buffer is never submitted);
@@ -158,12 +159,14 @@ impl Scene {
             .expect("the input attachment");
     }
 
-    /// Records both subpasses into `cb`, the second's draw through the safe method
-    /// or `draw_unchecked`, and returns that draw's result with the recorder.
+    /// Records both subpasses into `cb`, the second begun with `contents` and its
+    /// binds and draw through the safe methods or their `_unchecked` forms, and
+    /// returns the first refusal among them (if any) with the recorder.
     fn record<'c>(
         &self,
         cb: &'c mut tuff::CommandBuffer,
         unchecked: bool,
+        contents: vk::SubpassContents,
     ) -> (tuff::Recorder<'c, tuff::InRenderPass>, tuff::Result<()>) {
         let area = vk::Rect2D {
             offset: vk::Offset2D::default(),
@@ -194,21 +197,35 @@ impl Scene {
         rec.set_scissor(0, &[area]).expect("scissor");
         pipelines::push_color(&mut rec, &self.p);
         rec.draw(3, 1, 0, 0).expect("subpass 0's draw");
-        rec.next_subpass(vk::SubpassContents::INLINE);
-        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.second)
-            .expect("bind");
-        rec.bind_descriptor_sets(
-            vk::PipelineBindPoint::GRAPHICS,
-            &self.layout,
-            0,
-            &self.set.set,
-            &[],
-        )
-        .expect("the input attachment's set");
+        rec.next_subpass(contents);
+        // SAFETY: as the module says; in subpass 1 the binds and the draw are valid
+        // but for the rule each case breaks.
         let r = if unchecked {
-            unsafe { rec.draw_unchecked(3, 1, 0, 0) }
+            unsafe {
+                rec.bind_pipeline_unchecked(vk::PipelineBindPoint::GRAPHICS, &self.second)
+                    .and_then(|()| {
+                        rec.bind_descriptor_sets_unchecked(
+                            vk::PipelineBindPoint::GRAPHICS,
+                            &self.layout,
+                            0,
+                            &self.set.set,
+                            &[],
+                        )
+                    })
+                    .and_then(|()| rec.draw_unchecked(3, 1, 0, 0))
+            }
         } else {
-            rec.draw(3, 1, 0, 0)
+            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.second)
+                .and_then(|()| {
+                    rec.bind_descriptor_sets(
+                        vk::PipelineBindPoint::GRAPHICS,
+                        &self.layout,
+                        0,
+                        &self.set.set,
+                        &[],
+                    )
+                })
+                .and_then(|()| rec.draw(3, 1, 0, 0))
         };
         (rec, r)
     }
@@ -223,7 +240,7 @@ fn a_second_subpass_reads_the_first_through_an_input_attachment() {
     let scene = Scene::new(&s);
     scene.write(&s, &scene._images[0].2, READ);
     let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    let (rec, r) = scene.record(&mut cb, false);
+    let (rec, r) = scene.record(&mut cb, false, vk::SubpassContents::INLINE);
     r.expect("the input attachment in the subpass's layout");
     rec.end_render_pass().end().expect("end");
     s.submit_wait(&cb);
@@ -243,7 +260,38 @@ fn an_input_attachment_descriptor_states_the_subpass_layout() {
         &s,
         "VUID-VkDescriptorImageInfo-imageLayout-00344",
         Layer::Names,
-        |unchecked| scene.record(&mut cb, unchecked).1,
+        |unchecked| {
+            scene
+                .record(&mut cb, unchecked, vk::SubpassContents::INLINE)
+                .1
+        },
+    );
+    assert_silent(&s.messages);
+}
+
+/// A subpass begun with SECONDARY_COMMAND_BUFFERS contents takes only
+/// `execute_commands` (and the commands that leave it): a bind or draw recorded in
+/// it inline is refused, and the layer reports the same.
+#[test]
+fn a_subpass_of_secondaries_refuses_inline_draws() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let scene = Scene::new(&s);
+    scene.write(&s, &scene._images[0].2, READ);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    breaks(
+        &s,
+        "UNASSIGNED-CoreValidation-DrawState-InvalidCommandBuffer",
+        Layer::Names,
+        |unchecked| {
+            scene
+                .record(
+                    &mut cb,
+                    unchecked,
+                    vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
+                )
+                .1
+        },
     );
     assert_silent(&s.messages);
 }

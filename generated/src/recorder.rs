@@ -630,6 +630,24 @@ impl<'c, S: Scope> Recorder<'c, S> {
         self.queue_flags
     }
 
+    /// Refuses a command in a primary's subpass begun with
+    /// `VK_SUBPASS_CONTENTS_SECONDARY_COMMAND_BUFFERS`, which takes only executing
+    /// secondaries and leaving the subpass (a continuing secondary's instance is
+    /// inline). The specification says so in prose, with no VUID; the error names
+    /// the validation layer's identifier.
+    #[inline]
+    pub(crate) fn inline_contents_check(&self) -> Result<()> {
+        match &self.instance {
+            Some(i) if !i.dynamic && i.contents == vk::SubpassContents::SECONDARY_COMMAND_BUFFERS => {
+                Err(crate::Error::Validation {
+                    vuid: "UNASSIGNED-CoreValidation-DrawState-InvalidCommandBuffer",
+                    message: "the current subpass was begun with SECONDARY_COMMAND_BUFFERS contents: only execute_commands, next_subpass and end_render_pass may be recorded in it; record this command in the secondaries it executes".into(),
+                })
+            }
+            _ => Ok(()),
+        }
+    }
+
     /// The record of a pipeline layout made through the wrappers.
     pub(crate) fn layout_record(
         &mut self,

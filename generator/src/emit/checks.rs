@@ -615,6 +615,7 @@ pub fn render(check: &Check) -> TokenStream {
             let fail = fail(&msg);
             quote!(if !crate::validation::supports(#flags, #needed) { #fail })
         }
+        CheckKind::InlineContents => quote!(self.inline_contents_check()?;),
         CheckKind::DeviceHasQueues => {
             let fail = fail("the device was created with no queue");
             quote!(if self.live().queue_infos().is_empty() { #fail })

@@ -143,6 +143,17 @@ pub enum QueueOf {
     Queue,
 }
 
+/// The commands a primary may record in a subpass begun with
+/// `VK_SUBPASS_CONTENTS_SECONDARY_COMMAND_BUFFERS`: executing the secondaries, and
+/// leaving the subpass.
+pub const SECONDARY_CONTENTS_COMMANDS: &[&str] = &[
+    "vkCmdExecuteCommands",
+    "vkCmdNextSubpass",
+    "vkCmdNextSubpass2",
+    "vkCmdEndRenderPass",
+    "vkCmdEndRenderPass2",
+];
+
 /// The kinds of dynamic check. The renderer in `emit::checks` writes each one; the
 /// failure message of those that fail with one is part of the data.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -203,6 +214,10 @@ pub enum CheckKind {
     },
     /// The device the command is called on was created with at least one queue.
     DeviceHasQueues,
+    /// The command is not recorded in a primary's subpass begun with
+    /// `VK_SUBPASS_CONTENTS_SECONDARY_COMMAND_BUFFERS`, which takes only the
+    /// commands of [`SECONDARY_CONTENTS_COMMANDS`].
+    InlineContents,
     /// The recording command buffer has this level.
     Level {
         /// Primary rather than secondary.
@@ -272,6 +287,7 @@ impl Check {
                 | CheckKind::ZeroFlags { .. }
                 | CheckKind::QueueFlags { .. }
                 | CheckKind::DeviceHasQueues
+                | CheckKind::InlineContents
                 | CheckKind::Level { .. }
         )
     }
@@ -927,6 +943,18 @@ impl<'c, 'm> Checker<'c, 'm> {
                     ty: p.type_name.clone(),
                     at,
                 },
+            });
+        }
+        // A subpass whose contents are secondaries takes nothing else: the
+        // specification says so in prose, with no VUID (the recorder's check names the
+        // layer's identifier for it), so the check settles no rule of the report.
+        if matches!(cmd.renderpass.as_deref(), Some("inside" | "both"))
+            && !SECONDARY_CONTENTS_COMMANDS.contains(&plan.name.as_str())
+        {
+            out.push(Check {
+                vuid: None,
+                what: String::new(),
+                kind: CheckKind::InlineContents,
             });
         }
         // Where handles come from is asked first.

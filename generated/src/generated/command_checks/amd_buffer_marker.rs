@@ -99,6 +99,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -35,6 +35,7 @@ impl<'c, S: State> Recorder<'c, S> {
             conditional_rendering_begin,
             s,
         )?;
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::end_conditional_rendering_ext`], run before the call.
@@ -48,6 +49,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

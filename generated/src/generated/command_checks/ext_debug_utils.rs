@@ -15,6 +15,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::end_debug_utils_label_ext`], run before the call.
@@ -28,6 +29,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::insert_debug_utils_label_ext`], run before the call.
@@ -41,6 +43,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

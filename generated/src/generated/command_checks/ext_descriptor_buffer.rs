@@ -32,6 +32,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::bind_descriptor_buffers_ext`], run before the call.
@@ -72,6 +73,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in binding_infos.iter() {
             crate::checks::check_descriptor_buffer_binding_info_ext(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_descriptor_buffer_offsets_ext`], run before the call.
@@ -108,6 +110,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`setCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -21,6 +21,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_patch_control_points_ext`], run before the call.
@@ -34,6 +35,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

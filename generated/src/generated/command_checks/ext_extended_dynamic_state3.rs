@@ -15,6 +15,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_alpha_to_one_enable_ext`], run before the call.
@@ -28,6 +29,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_color_blend_advanced_ext`], run before the call.
@@ -54,6 +56,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in color_blend_advanced.iter() {
             crate::checks::check_color_blend_advanced_ext(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_color_blend_enable_ext`], run before the call.
@@ -76,6 +79,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`attachmentCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_color_blend_equation_ext`], run before the call.
@@ -102,6 +106,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in color_blend_equations.iter() {
             crate::checks::check_color_blend_equation_ext(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_color_write_mask_ext`], run before the call.
@@ -132,6 +137,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`attachmentCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_conservative_rasterization_mode_ext`], run before the call.
@@ -154,6 +160,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_coverage_modulation_mode_nv`], run before the call.
@@ -176,6 +183,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_coverage_modulation_table_enable_nv`], run before the call.
@@ -189,6 +197,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_coverage_modulation_table_nv`], run before the call.
@@ -211,6 +220,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`coverageModulationTableCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_coverage_reduction_mode_nv`], run before the call.
@@ -233,6 +243,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_coverage_to_color_enable_nv`], run before the call.
@@ -246,6 +257,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_coverage_to_color_location_nv`], run before the call.
@@ -259,6 +271,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_clamp_enable_ext`], run before the call.
@@ -272,6 +285,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_clip_enable_ext`], run before the call.
@@ -285,6 +299,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_clip_negative_one_to_one_ext`], run before the call.
@@ -298,6 +313,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_extra_primitive_overestimation_size_ext`], run before the call.
@@ -313,6 +329,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_line_rasterization_mode_ext`], run before the call.
@@ -335,6 +352,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_line_stipple_enable_ext`], run before the call.
@@ -348,6 +366,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_logic_op_enable_ext`], run before the call.
@@ -361,6 +380,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_polygon_mode_ext`], run before the call.
@@ -383,6 +403,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_provoking_vertex_mode_ext`], run before the call.
@@ -405,6 +426,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_rasterization_samples_ext`], run before the call.
@@ -427,6 +449,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_rasterization_stream_ext`], run before the call.
@@ -440,6 +463,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_representative_fragment_test_enable_nv`], run before the call.
@@ -455,6 +479,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_sample_locations_enable_ext`], run before the call.
@@ -468,6 +493,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_sample_mask_ext`], run before the call.
@@ -490,6 +516,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_shading_rate_image_enable_nv`], run before the call.
@@ -503,6 +530,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_tessellation_domain_origin_ext`], run before the call.
@@ -525,6 +553,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_viewport_swizzle_nv`], run before the call.
@@ -551,6 +580,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in viewport_swizzles.iter() {
             crate::checks::check_viewport_swizzle_nv(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_viewport_w_scaling_enable_nv`], run before the call.
@@ -564,6 +594,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

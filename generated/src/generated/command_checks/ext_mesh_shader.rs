@@ -15,6 +15,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_count_ext`], run before the call.
@@ -45,6 +46,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_ext`], run before the call.
@@ -68,6 +70,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -15,6 +15,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_multi_indexed_ext`], run before the call.
@@ -28,6 +29,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -31,6 +31,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::bind_transform_feedback_buffers_ext`], run before the call.
@@ -62,6 +63,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`bindingCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::end_query_indexed_ext`], run before the call.
@@ -85,6 +87,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }
@@ -113,6 +116,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_indirect_byte_count_ext`], run before the call.
@@ -136,6 +140,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::end_transform_feedback_ext`], run before the call.
@@ -161,6 +166,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

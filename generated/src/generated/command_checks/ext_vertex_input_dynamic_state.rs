@@ -26,6 +26,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in vertex_attribute_descriptions.iter() {
             crate::checks::check_vertex_input_attribute_description2_ext(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -59,6 +59,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,transfer operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_performance_override_intel`], run before the call.
@@ -77,6 +78,7 @@ impl<'c, S: State> Recorder<'c, S> {
             );
         }
         crate::checks::check_performance_override_info_intel(override_info, s)?;
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_performance_stream_marker_intel`], run before the call.
@@ -90,6 +92,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,transfer operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

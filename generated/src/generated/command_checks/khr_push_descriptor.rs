@@ -50,6 +50,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in descriptor_writes.iter() {
             crate::checks::check_write_descriptor_set(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -105,6 +105,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -24,6 +24,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`viewportCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

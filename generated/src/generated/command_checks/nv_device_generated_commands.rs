@@ -31,6 +31,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }
@@ -64,6 +65,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
             );
         }
         crate::checks::check_generated_commands_info_nv(generated_commands_info, s)?;
+        self.inline_contents_check()?;
         Ok(())
     }
 }

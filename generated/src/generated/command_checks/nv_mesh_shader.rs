@@ -32,6 +32,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_mesh_tasks_indirect_nv`], run before the call.
@@ -55,6 +56,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_mesh_tasks_nv`], run before the call.
@@ -68,6 +70,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

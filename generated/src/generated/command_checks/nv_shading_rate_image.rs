@@ -33,6 +33,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_coarse_sample_order_nv`], run before the call.
@@ -59,6 +60,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in custom_sample_orders.iter() {
             crate::checks::check_coarse_sample_order_custom_nv(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_viewport_shading_rate_palette_nv`], run before the call.
@@ -85,6 +87,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in shading_rate_palettes.iter() {
             crate::checks::check_shading_rate_palette_nv(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -37,6 +37,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::end_query`] names come from, checked before its special case's check.
@@ -64,6 +65,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute,decode,encode operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::pipeline_barrier`] names come from, checked before its special case's check.
@@ -177,6 +179,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         for x in image_memory_barriers.iter() {
             crate::checks::check_image_memory_barrier(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::wait_events`] names come from, checked before its special case's check.
@@ -300,6 +303,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         for x in image_memory_barriers.iter() {
             crate::checks::check_image_memory_barrier(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::write_timestamp`] names come from, checked before its special case's check.
@@ -370,6 +374,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }
@@ -2750,6 +2755,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`descriptorSetCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::bind_index_buffer`] names come from, checked before its special case's check.
@@ -2786,6 +2792,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::bind_pipeline`] names come from, checked before its special case's check.
@@ -2822,6 +2829,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics,compute operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::bind_vertex_buffers`] names come from, checked before its special case's check.
@@ -2876,6 +2884,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::execute_commands`] names come from, checked before its special case's check.
@@ -2966,6 +2975,7 @@ impl<'c, S: State> Recorder<'c, S> {
         if values.is_empty() {
             return refuse("VUID-vkCmdPushConstants-size-arraylength", "`size` is 0");
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_blend_constants`], run before the call.
@@ -2979,6 +2989,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_bias`], run before the call.
@@ -3004,6 +3015,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_bounds`], run before the call.
@@ -3046,6 +3058,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_line_width`], run before the call.
@@ -3071,6 +3084,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_scissor`], run before the call.
@@ -3090,6 +3104,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`scissorCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_stencil_compare_mask`], run before the call.
@@ -3118,6 +3133,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_stencil_reference`], run before the call.
@@ -3146,6 +3162,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_stencil_write_mask`], run before the call.
@@ -3174,6 +3191,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_viewport`], run before the call.
@@ -3200,6 +3218,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in viewports.iter() {
             crate::checks::check_viewport(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }
@@ -3246,6 +3265,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
         for x in attachments.iter() {
             crate::checks::check_clear_attachment(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw`], run before the call.
@@ -3259,6 +3279,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::draw_indexed`], run before the call.
@@ -3272,6 +3293,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::draw_indexed_indirect`] names come from, checked before its special case's check.
@@ -3350,6 +3372,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::draw_indirect`] names come from, checked before its special case's check.
@@ -3425,6 +3448,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -148,6 +148,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

@@ -154,6 +154,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::draw_indirect_count`] names come from, checked before its special case's check.
@@ -259,6 +260,7 @@ impl<'c, S: Inside> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }

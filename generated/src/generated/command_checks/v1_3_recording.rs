@@ -314,6 +314,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 ),
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_cull_mode`], run before the call.
@@ -336,6 +337,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_bias_enable`], run before the call.
@@ -349,6 +351,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_bounds_test_enable`], run before the call.
@@ -362,6 +365,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_compare_op`], run before the call.
@@ -384,6 +388,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_test_enable`], run before the call.
@@ -397,6 +402,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_depth_write_enable`], run before the call.
@@ -410,6 +416,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_front_face`], run before the call.
@@ -432,6 +439,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_primitive_restart_enable`], run before the call.
@@ -445,6 +453,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_primitive_topology`], run before the call.
@@ -467,6 +476,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_rasterizer_discard_enable`], run before the call.
@@ -480,6 +490,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_scissor_with_count`], run before the call.
@@ -502,6 +513,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "`scissorCount` is 0",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_stencil_op`], run before the call.
@@ -554,6 +566,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_stencil_test_enable`], run before the call.
@@ -567,6 +580,7 @@ impl<'c, S: State> Recorder<'c, S> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///The dynamic checks of [`Self::set_viewport_with_count`], run before the call.
@@ -593,6 +607,7 @@ impl<'c, S: State> Recorder<'c, S> {
         for x in viewports.iter() {
             crate::checks::check_viewport(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }
@@ -608,6 +623,7 @@ impl<'c> Recorder<'c, InRendering> {
                 "the command buffer's pool does not support graphics operations",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }
@@ -654,6 +670,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             );
         }
         crate::checks::check_dependency_info(dependency_info, s)?;
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::wait_events2`] names come from, checked before its special case's check.
@@ -716,6 +733,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         for x in dependency_infos.iter() {
             crate::checks::check_dependency_info(x, s)?;
         }
+        self.inline_contents_check()?;
         Ok(())
     }
     ///Where the handles [`Self::write_timestamp2`] names come from, checked before its special case's check.
@@ -785,6 +803,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
                 "The `synchronization2` feature must be enabled",
             );
         }
+        self.inline_contents_check()?;
         Ok(())
     }
 }
