@@ -7,16 +7,42 @@
 # Vulkan loader, the layer or the driver are named there). Needs valgrind
 # (scripts/install-deps.sh installs it) and a display for the WSI tests
 # (scripts/xvfb.sh). Arguments go to every test binary (a filter, for one).
+#
+# valgrind runs a program's threads one at a time, so the suites run in two lanes at
+# once (soundness in one, the other two after each other in the second), each
+# lane's output kept apart and printed when it ends.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-for suite in soundness secondary_checks subpass_checks; do
+binary() {
+    local suite=$1 bin
     bin=$(cargo test -p tuff-tests --test "$suite" --no-run --message-format=json 2>/dev/null |
         sed -n "s/.*\"executable\":\"\([^\"]*${suite}-[^\"]*\)\".*/\1/p" | tail -1)
     if [ -z "$bin" ]; then
         echo "valgrind.sh: could not build tests/$suite.rs" >&2
         exit 1
     fi
+    echo "$bin"
+}
+memcheck() {
     (cd tests && valgrind --error-exitcode=1 --num-callers=40 \
         --suppressions=../scripts/valgrind.supp \
-        "$bin" --test-threads=1 "$@")
-done
+        "$1" --test-threads=1 "${@:2}")
+}
+soundness=$(binary soundness)
+secondary=$(binary secondary_checks)
+subpass=$(binary subpass_checks)
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+memcheck "$soundness" "$@" > "$logs/1" 2>&1 &
+first=$!
+(memcheck "$secondary" "$@" && memcheck "$subpass" "$@") > "$logs/2" 2>&1 &
+second=$!
+status=0
+wait "$first" || status=1
+cat "$logs/1"
+wait "$second" || status=1
+cat "$logs/2"
+if [ "$status" != 0 ]; then
+    echo "valgrind.sh: memcheck failed (above)" >&2
+fi
+exit "$status"

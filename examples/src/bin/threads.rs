@@ -117,6 +117,24 @@ fn run(
     Ok((figures, device))
 }
 
+/// Today's date (UTC), `YYYY-MM-DD`, from the system clock.
+fn today() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    // Days since 1970-01-01 to a civil date (Howard Hinnant's algorithm).
+    let z = (secs / 86_400) as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1_460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!("{year:04}-{month:02}-{day:02}")
+}
+
 fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     values[values.len() / 2]
@@ -166,7 +184,7 @@ fn bench(args: &Args) -> Result<()> {
          Recording per frame (workers recording their secondaries at once, then the primary), \
          median of {} interleaved rounds of {} frames ({} at 100,000 objects), first frame left out; \
          frames per second over the whole run; {}x{} pixels; speed-up over one thread of the same \
-         library. Device: {device}. Made by `{}` ({:.0} s).\n\n\
+         library. Device: {device}. Made by `{}` on {} ({:.0} s).\n\n\
          | objects | threads | tuff µs/frame | ash µs/frame | tuff / ash | tuff speed-up | ash speed-up | tuff frames/s | ash frames/s |\n\
          |---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
         args.label,
@@ -176,6 +194,7 @@ fn bench(args: &Args) -> Result<()> {
         args.size,
         args.size,
         args.made_by,
+        today(),
         started.elapsed().as_secs_f64(),
     );
     let mut one_thread = std::collections::HashMap::new();
