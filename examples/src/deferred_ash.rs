@@ -590,16 +590,7 @@ pub fn render(
             .wait_for_fences(&o.fences, true, u64::MAX)
             .context("vkWaitForFences")?;
         let elapsed = start.elapsed();
-        let ptr = device
-            .map_memory(
-                readback_memory,
-                0,
-                vk::WHOLE_SIZE,
-                vk::MemoryMapFlags::empty(),
-            )
-            .context("vkMapMemory")?;
-        let rgba = std::slice::from_raw_parts(ptr.cast::<u8>(), bytes as usize).to_vec();
-        device.unmap_memory(readback_memory);
+        let rgba = crate::raw_ash::read_memory(device, readback_memory, bytes as usize)?;
         Ok((rgba, elapsed, recording / (frames - 1).max(1)))
     }
 }

@@ -974,17 +974,30 @@ fn render<S: Scene>(
             .context("vkWaitForFences")?;
         let elapsed = start.elapsed();
 
-        let ptr = device
-            .map_memory(
-                readback_memory,
-                0,
-                vk::WHOLE_SIZE,
-                vk::MemoryMapFlags::empty(),
-            )
-            .context("vkMapMemory")?;
-        let rgba = std::slice::from_raw_parts(ptr.cast::<u8>(), bytes as usize).to_vec();
-        device.unmap_memory(readback_memory);
+        let rgba = read_memory(device, readback_memory, bytes as usize)?;
         Ok((rgba, elapsed))
+    }
+}
+
+/// The first `bytes` bytes of `memory`: mapped, copied, unmapped.
+///
+/// # Safety
+///
+/// `memory` is host-visible and host-coherent, not mapped, at least `bytes` long,
+/// and no device write to it is pending or unmade visible to the host.
+pub unsafe fn read_memory(
+    device: &ash::Device,
+    memory: vk::DeviceMemory,
+    bytes: usize,
+) -> Result<Vec<u8>> {
+    // SAFETY: as the caller promises; the mapping is read only while mapped.
+    unsafe {
+        let ptr = device
+            .map_memory(memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty())
+            .context("vkMapMemory")?;
+        let bytes = std::slice::from_raw_parts(ptr.cast::<u8>(), bytes).to_vec();
+        device.unmap_memory(memory);
+        Ok(bytes)
     }
 }
 

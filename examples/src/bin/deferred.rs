@@ -7,22 +7,14 @@ use std::path::PathBuf;
 use tuff::vk;
 use tuff_examples::gpu::Gpu;
 use tuff_examples::scenes::deferred::{self, REQUIREMENTS};
-use tuff_examples::scenes::deferred_data::Layout;
+use tuff_examples::scenes::deferred_data::{Layout, Options};
 
 /// Renders a G-buffer and a lighting subpass through tuff, headless, the objects
 /// recorded into secondary command buffers by worker threads.
 #[derive(Parser)]
 struct Args {
-    /// How many objects, 1 to 100,000.
-    #[arg(long, default_value_t = 2000)]
-    count: u32,
-    /// Seeds the objects' meshes, colors, phases and spins, and the lights.
-    #[arg(long, default_value_t = 1)]
-    seed: u64,
-    /// Worker threads recording the objects, 1 to 64 (on threads of their own only
-    /// in a build with the `multi_thread` feature).
-    #[arg(long, default_value_t = 4)]
-    threads: u32,
+    #[command(flatten)]
+    scene: Options,
     #[command(flatten)]
     common: tuff_examples::cli::Headless,
 }
@@ -33,7 +25,7 @@ fn main() -> std::process::ExitCode {
 }
 
 fn run(args: &Args) -> Result<()> {
-    let layout = Layout::grid(args.count, args.seed)?;
+    let layout = Layout::grid(args.scene.count, args.scene.seed)?;
     let c = &args.common;
     if c.validate {
         tuff_examples::cli::enable_sync_validation();
@@ -43,7 +35,7 @@ fn run(args: &Args) -> Result<()> {
         width: c.width,
         height: c.height,
     };
-    let outcome = deferred::render(&gpu, layout, extent, c.frames, args.threads);
+    let outcome = deferred::render(&gpu, layout, extent, c.frames, args.scene.threads);
     let name = gpu.name.clone();
     let run = tuff_examples::cli::conclude(gpu.finish(), outcome)?;
     let out = c
@@ -57,8 +49,8 @@ fn run(args: &Args) -> Result<()> {
         out.display(),
         r.width,
         r.height,
-        args.count,
-        args.threads,
+        args.scene.count,
+        args.scene.threads,
         if tuff_examples::workers::TUFF_THREADS { "" } else { " (in turn: no multi_thread)" },
         r.frames,
         r.elapsed.as_secs_f64(),

@@ -297,7 +297,7 @@ fn bench(
 ) -> Result<()> {
     let me = std::env::current_exe().context("cannot find this binary")?;
     let mut rows = Vec::new();
-    let mut head = vec![format!("# date: {}", today())];
+    let mut head = vec![format!("# date: {}", tuff_examples::stages::today())];
     let started = std::time::Instant::now();
     for round in 0..plan.rounds {
         for &(window, count, writes) in configs {
@@ -375,7 +375,7 @@ fn bench(
     }
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let path = out.join(format!("{label}.csv"));
-    write_file(&path, &csv)?;
+    tuff_examples::stages::write_file(&path, &csv)?;
     write_reports(out, label, &head.join("\n"), &rows)
 }
 
@@ -393,39 +393,14 @@ fn write_reports(out: &std::path::Path, label: &str, head: &str, rows: &[Row]) -
     }
     md.push_str("\nEach configuration: median and 90th percentile per stage, the others' ratios to raw ash's, and their own medians.\n");
     md.push_str(&report::markdown(rows));
-    write_file(&out.join(format!("{label}.md")), &md)?;
+    tuff_examples::stages::write_file(&out.join(format!("{label}.md")), &md)?;
     for mode in ["headless", "window"] {
         if rows.iter().any(|r| r.mode == mode) {
             let title = format!("Median stage time / raw ash, {label}, {mode}");
             let svg = report::svg(rows, mode, &title);
-            write_file(&out.join(format!("{label}-{mode}.svg")), &svg)?;
+            tuff_examples::stages::write_file(&out.join(format!("{label}-{mode}.svg")), &svg)?;
         }
     }
     print!("{md}");
     Ok(())
-}
-
-/// Writes through a temporary file and a rename, so a failed run leaves the old file.
-fn write_file(path: &std::path::Path, text: &str) -> Result<()> {
-    let tmp = path.with_extension("tmp");
-    std::fs::write(&tmp, text).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("cannot write {}", path.display()))
-}
-
-/// Today's UTC date, YYYY-MM-DD.
-fn today() -> String {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    // Days to civil date (Howard Hinnant's algorithm).
-    let z = (secs / 86_400) as i64 + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!("{year:04}-{month:02}-{day:02}")
 }

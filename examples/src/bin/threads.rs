@@ -117,24 +117,6 @@ fn run(
     Ok((figures, device))
 }
 
-/// Today's date (UTC), `YYYY-MM-DD`, from the system clock.
-fn today() -> String {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    // Days since 1970-01-01 to a civil date (Howard Hinnant's algorithm).
-    let z = (secs / 86_400) as i64 + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1_460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!("{year:04}-{month:02}-{day:02}")
-}
-
 fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     values[values.len() / 2]
@@ -194,7 +176,7 @@ fn bench(args: &Args) -> Result<()> {
         args.size,
         args.size,
         args.made_by,
-        today(),
+        tuff_examples::stages::today(),
         started.elapsed().as_secs_f64(),
     );
     let mut one_thread = std::collections::HashMap::new();
@@ -223,8 +205,8 @@ fn bench(args: &Args) -> Result<()> {
     }
     std::fs::create_dir_all(&args.out)?;
     let base = args.out.join(format!("threads-{}", args.label));
-    std::fs::write(base.with_extension("csv"), csv)?;
-    std::fs::write(base.with_extension("md"), &md)?;
+    tuff_examples::stages::write_file(&base.with_extension("csv"), &csv)?;
+    tuff_examples::stages::write_file(&base.with_extension("md"), &md)?;
     print!("{md}");
     Ok(())
 }

@@ -36,6 +36,22 @@ pub const NORMAL: u32 = 2;
 /// See [`OUTPUT`].
 pub const DEPTH: u32 = 3;
 
+/// The scene's own command-line options (beside `cli::Headless`), shared by the tuff
+/// scene and its raw-ash twin.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Options {
+    /// How many objects, 1 to 100,000.
+    #[arg(long, default_value_t = 2000)]
+    pub count: u32,
+    /// Seeds the objects' meshes, colors, phases and spins, and the lights.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Worker threads recording the objects, 1 to 64 (tuff's on threads of their own
+    /// only in a build with the `multi_thread` feature).
+    #[arg(long, default_value_t = 4)]
+    pub threads: u32,
+}
+
 /// One point light (`Light` in `deferred_light.frag`): std140.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
