@@ -9,8 +9,9 @@
 # (scripts/xvfb.sh). Arguments go to every test binary (a filter, for one).
 #
 # valgrind runs a program's threads one at a time, so the suites run in two lanes at
-# once (soundness in one, the other two after each other in the second), each
-# lane's output kept apart and printed when it ends.
+# once, each lane's output kept apart and printed when it ends: the soundness suite's
+# tests split between the lanes (alternately, by name), the two other suites in the
+# second. With arguments (a filter), the soundness suite runs whole in the first lane.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 binary() {
@@ -33,10 +34,23 @@ secondary=$(binary secondary_checks)
 subpass=$(binary subpass_checks)
 logs=$(mktemp -d)
 trap 'rm -rf "$logs"' EXIT
-memcheck "$soundness" "$@" > "$logs/1" 2>&1 &
-first=$!
-(memcheck "$secondary" "$@" && memcheck "$subpass" "$@") > "$logs/2" 2>&1 &
-second=$!
+if [ $# -eq 0 ]; then
+    mapfile -t tests < <("$soundness" --list --format=terse | sed -n 's/: test$//p')
+    first_half=() second_half=()
+    for i in "${!tests[@]}"; do
+        if [ $((i % 2)) = 0 ]; then first_half+=("${tests[$i]}"); else second_half+=("${tests[$i]}"); fi
+    done
+    memcheck "$soundness" --exact "${first_half[@]}" > "$logs/1" 2>&1 &
+    first=$!
+    (memcheck "$soundness" --exact "${second_half[@]}" && memcheck "$secondary" &&
+        memcheck "$subpass") > "$logs/2" 2>&1 &
+    second=$!
+else
+    memcheck "$soundness" "$@" > "$logs/1" 2>&1 &
+    first=$!
+    (memcheck "$secondary" "$@" && memcheck "$subpass" "$@") > "$logs/2" 2>&1 &
+    second=$!
+fi
 status=0
 wait "$first" || status=1
 cat "$logs/1"
