@@ -2,8 +2,9 @@
 //! input attachment: the correct program records, runs and leaves the layer
 //! (synchronization validation included) silent, and a descriptor that states
 //! another layout than the subpass gives the attachment is refused
-//! (`VUID-VkDescriptorImageInfo-imageLayout-00344`), as is a draw recorded inline in
-//! a subpass whose contents are secondaries.
+//! (`VUID-VkDescriptorImageInfo-imageLayout-00344`), as are a descriptor that views
+//! another image than the framebuffer's (`VUID-vkCmdDraw-None-07469`) and a draw
+//! recorded inline in a subpass whose contents are secondaries.
 //!
 //! SAFETY of the `unsafe` blocks: `draw_unchecked` breaks, on purpose, only the rule
 //! each case names, which the layer skips (the command buffer is never submitted);
@@ -260,6 +261,30 @@ fn an_input_attachment_descriptor_states_the_subpass_layout() {
         &s,
         "VUID-VkDescriptorImageInfo-imageLayout-00344",
         Layer::Names,
+        |unchecked| {
+            scene
+                .record(&mut cb, unchecked, vk::SubpassContents::INLINE)
+                .1
+        },
+    );
+    assert_silent(&s.messages);
+}
+
+/// The input attachment's descriptor must view the framebuffer's image at that
+/// attachment: a view of another image of the same format (and usage) is refused.
+#[test]
+fn an_input_attachment_descriptor_views_the_framebuffer_image() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let scene = Scene::new(&s);
+    let other = s.color_image(SIZE, vk::ImageUsageFlags::INPUT_ATTACHMENT);
+    scene.write(&s, &other.2, READ);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    // The 1.3.239 layer does not check it when the draw is recorded.
+    breaks(
+        &s,
+        "VUID-vkCmdDraw-None-07469",
+        Layer::Silent,
         |unchecked| {
             scene
                 .record(&mut cb, unchecked, vk::SubpassContents::INLINE)
