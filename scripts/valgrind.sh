@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs the adversarial suites (tests/soundness.rs, and the secondaries' and
-# subpasses' cases of tests/secondary_checks.rs and tests/subpass_checks.rs) under
+# Runs the adversarial suites (tests/soundness.rs, the secondaries' and subpasses'
+# cases of tests/secondary_checks.rs and tests/subpass_checks.rs, and the render pass
+# instance's subpass count of tests/recorded_state.rs) under
 # valgrind's memcheck, on lavapipe with the validation layer, and fails on any
 # invalid read or write, use of uninitialised memory or bad free that
 # scripts/valgrind.supp does not name (only errors inside the dynamic loader, the
@@ -10,8 +11,9 @@
 #
 # valgrind runs a program's threads one at a time, so the suites run in two lanes at
 # once, each lane's output kept apart and printed when it ends: the soundness suite's
-# tests split between the lanes (alternately, by name), the two other suites in the
-# second. With arguments (a filter), the soundness suite runs whole in the first lane.
+# tests split between the lanes (alternately, by name), the recorded-state case in the
+# first, the two other suites in the second. With arguments (a filter), the soundness
+# suite runs whole in the first lane.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 binary() {
@@ -32,6 +34,8 @@ memcheck() {
 soundness=$(binary soundness)
 secondary=$(binary secondary_checks)
 subpass=$(binary subpass_checks)
+recorded=$(binary recorded_state)
+subpasses_case=render_pass_instances_end_in_their_last_subpass_and_the_layer_agrees
 logs=$(mktemp -d)
 trap 'rm -rf "$logs"' EXIT
 if [ $# -eq 0 ]; then
@@ -40,7 +44,8 @@ if [ $# -eq 0 ]; then
     for i in "${!tests[@]}"; do
         if [ $((i % 2)) = 0 ]; then first_half+=("${tests[$i]}"); else second_half+=("${tests[$i]}"); fi
     done
-    memcheck "$soundness" --exact "${first_half[@]}" > "$logs/1" 2>&1 &
+    (memcheck "$soundness" --exact "${first_half[@]}" &&
+        memcheck "$recorded" --exact "$subpasses_case") > "$logs/1" 2>&1 &
     first=$!
     (memcheck "$soundness" --exact "${second_half[@]}" && memcheck "$secondary" &&
         memcheck "$subpass") > "$logs/2" 2>&1 &

@@ -169,6 +169,17 @@ impl Scene {
         unchecked: bool,
         contents: vk::SubpassContents,
     ) -> (tuff::Recorder<'c, tuff::InRenderPass>, tuff::Result<()>) {
+        self.record_with(cb, unchecked, contents, &self.second)
+    }
+
+    /// [`Self::record`], binding `second` in subpass 1.
+    fn record_with<'c>(
+        &self,
+        cb: &'c mut tuff::CommandBuffer,
+        unchecked: bool,
+        contents: vk::SubpassContents,
+        second: &tuff::Pipeline,
+    ) -> (tuff::Recorder<'c, tuff::InRenderPass>, tuff::Result<()>) {
         let area = vk::Rect2D {
             offset: vk::Offset2D::default(),
             extent: vk::Extent2D {
@@ -203,7 +214,7 @@ impl Scene {
         // but for the rule each case breaks.
         let r = if unchecked {
             unsafe {
-                rec.bind_pipeline_unchecked(vk::PipelineBindPoint::GRAPHICS, &self.second)
+                rec.bind_pipeline_unchecked(vk::PipelineBindPoint::GRAPHICS, second)
                     .and_then(|()| {
                         rec.bind_descriptor_sets_unchecked(
                             vk::PipelineBindPoint::GRAPHICS,
@@ -216,7 +227,7 @@ impl Scene {
                     .and_then(|()| rec.draw_unchecked(3, 1, 0, 0))
             }
         } else {
-            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.second)
+            rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, second)
                 .and_then(|()| {
                     rec.bind_descriptor_sets(
                         vk::PipelineBindPoint::GRAPHICS,
@@ -288,6 +299,33 @@ fn an_input_attachment_descriptor_views_the_framebuffer_image() {
         |unchecked| {
             scene
                 .record(&mut cb, unchecked, vk::SubpassContents::INLINE)
+                .1
+        },
+    );
+    assert_silent(&s.messages);
+}
+
+/// A draw in subpass 1 with the pipeline made for subpass 0 is refused; the layer
+/// agrees.
+#[test]
+fn a_draw_uses_a_pipeline_made_for_its_subpass() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let scene = Scene::new(&s);
+    scene.write(&s, &scene._images[0].2, READ);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    breaks(
+        &s,
+        "VUID-vkCmdDraw-subpass-02685",
+        Layer::Names,
+        |unchecked| {
+            scene
+                .record_with(
+                    &mut cb,
+                    unchecked,
+                    vk::SubpassContents::INLINE,
+                    &scene.first,
+                )
                 .1
         },
     );
