@@ -259,104 +259,94 @@ fn a_second_subpass_reads_the_first_through_an_input_attachment() {
     assert_silent(&s.messages);
 }
 
-/// The input attachment's descriptor in another layout than the subpass's is
-/// refused; the layer agrees.
-#[test]
-fn an_input_attachment_descriptor_states_the_subpass_layout() {
-    let _serial = vulkan::serial();
-    let s = setup(true);
-    let scene = Scene::new(&s);
-    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    scene.write(&s, &scene._images[0].2, vk::ImageLayout::GENERAL);
-    breaks(
-        &s,
-        "VUID-VkDescriptorImageInfo-imageLayout-00344",
-        Layer::Names,
-        |unchecked| {
-            scene
-                .record(&mut cb, unchecked, vk::SubpassContents::INLINE)
-                .1
-        },
-    );
-    assert_silent(&s.messages);
+/// One way of breaking the correct two-subpass program.
+struct Broken {
+    /// The rule it breaks.
+    rule: &'static str,
+    /// What the 1.3.239 layer says of it through `_unchecked`.
+    layer: Layer<'static>,
+    /// The input attachment's descriptor views another image (of the same format
+    /// and usage) than the framebuffer's.
+    other_view: bool,
+    /// The layout the descriptor states.
+    layout: vk::ImageLayout,
+    /// How subpass 1 is begun.
+    contents: vk::SubpassContents,
+    /// Subpass 1 binds the pipeline made for subpass 0.
+    first_pipeline: bool,
 }
 
-/// The input attachment's descriptor must view the framebuffer's image at that
-/// attachment: a view of another image of the same format (and usage) is refused.
-#[test]
-fn an_input_attachment_descriptor_views_the_framebuffer_image() {
-    let _serial = vulkan::serial();
-    let s = setup(true);
-    let scene = Scene::new(&s);
-    let other = s.color_image(SIZE, vk::ImageUsageFlags::INPUT_ATTACHMENT);
-    scene.write(&s, &other.2, READ);
-    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    // The 1.3.239 layer does not check it when the draw is recorded.
-    breaks(
-        &s,
-        "VUID-vkCmdDraw-None-07469",
-        Layer::Silent,
-        |unchecked| {
-            scene
-                .record(&mut cb, unchecked, vk::SubpassContents::INLINE)
-                .1
-        },
-    );
-    assert_silent(&s.messages);
-}
+const CORRECT: Broken = Broken {
+    rule: "",
+    layer: Layer::Silent,
+    other_view: false,
+    layout: READ,
+    contents: vk::SubpassContents::INLINE,
+    first_pipeline: false,
+};
 
-/// A draw in subpass 1 with the pipeline made for subpass 0 is refused; the layer
-/// agrees.
-#[test]
-fn a_draw_uses_a_pipeline_made_for_its_subpass() {
-    let _serial = vulkan::serial();
-    let s = setup(true);
-    let scene = Scene::new(&s);
-    scene.write(&s, &scene._images[0].2, READ);
-    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    breaks(
-        &s,
-        "VUID-vkCmdDraw-subpass-02685",
-        Layer::Names,
-        |unchecked| {
-            scene
-                .record_with(
-                    &mut cb,
-                    unchecked,
-                    vk::SubpassContents::INLINE,
-                    &scene.first,
-                )
-                .1
-        },
-    );
-    assert_silent(&s.messages);
-}
+const BROKEN: &[Broken] = &[
+    // The descriptor states another layout than the subpass gives the attachment.
+    Broken {
+        rule: "VUID-VkDescriptorImageInfo-imageLayout-00344",
+        layer: Layer::Names,
+        layout: vk::ImageLayout::GENERAL,
+        ..CORRECT
+    },
+    // The descriptor views another image than the framebuffer's (the 1.3.239 layer
+    // does not check it when the draw is recorded).
+    Broken {
+        rule: "VUID-vkCmdDraw-None-07469",
+        layer: Layer::Silent,
+        other_view: true,
+        ..CORRECT
+    },
+    // A draw in subpass 1 with the pipeline made for subpass 0.
+    Broken {
+        rule: "VUID-vkCmdDraw-subpass-02685",
+        layer: Layer::Names,
+        first_pipeline: true,
+        ..CORRECT
+    },
+    // Subpass 1 begun with SECONDARY_COMMAND_BUFFERS contents takes only
+    // `execute_commands` and the commands that leave it: its bind is refused.
+    Broken {
+        rule: "UNASSIGNED-CoreValidation-DrawState-InvalidCommandBuffer",
+        layer: Layer::Names,
+        contents: vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
+        ..CORRECT
+    },
+];
 
-/// A subpass begun with SECONDARY_COMMAND_BUFFERS contents takes only
-/// `execute_commands` (and the commands that leave it): a bind or draw recorded in
-/// it inline is refused, and the layer reports the same.
+/// Each way of breaking the correct program is refused with its rule, and the layer
+/// names the same rule through `_unchecked` (or says nothing where it does not
+/// check it).
 #[test]
-fn a_subpass_of_secondaries_refuses_inline_draws() {
+fn broken_two_subpass_programs_are_refused() {
     let _serial = vulkan::serial();
-    let s = setup(true);
-    let scene = Scene::new(&s);
-    scene.write(&s, &scene._images[0].2, READ);
-    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
-    breaks(
-        &s,
-        "UNASSIGNED-CoreValidation-DrawState-InvalidCommandBuffer",
-        Layer::Names,
-        |unchecked| {
+    for case in BROKEN {
+        let s = setup(true);
+        let scene = Scene::new(&s);
+        let other = s.color_image(SIZE, vk::ImageUsageFlags::INPUT_ATTACHMENT);
+        let view = if case.other_view {
+            &other.2
+        } else {
+            &scene._images[0].2
+        };
+        scene.write(&s, view, case.layout);
+        let second = if case.first_pipeline {
+            &scene.first
+        } else {
+            &scene.second
+        };
+        let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+        breaks(&s, case.rule, case.layer, |unchecked| {
             scene
-                .record(
-                    &mut cb,
-                    unchecked,
-                    vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
-                )
+                .record_with(&mut cb, unchecked, case.contents, second)
                 .1
-        },
-    );
-    assert_silent(&s.messages);
+        });
+        assert_silent(&s.messages);
+    }
 }
 
 /// `Queue::submit_and_wait_with` hands its closure the recorder itself, so setup work

@@ -499,6 +499,7 @@ pub fn shader(s: &Setup, bytes: &[u8]) -> tuff::ShaderModule {
 
 /// What the validation layer says of an unchecked call that breaks a rule.
 #[allow(dead_code)]
+#[derive(Clone, Copy)]
 pub enum Layer<'a> {
     /// It names the rule.
     Names,
