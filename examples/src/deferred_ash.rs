@@ -346,7 +346,7 @@ impl Deferred {
             device
                 .begin_command_buffer(cb, &info)
                 .context("vkBeginCommandBuffer")?;
-            device.cmd_set_viewport(cb, 0, &[viewport(view.extent)]);
+            device.cmd_set_viewport(cb, 0, &[crate::render::viewport(view.extent)]);
             device.cmd_set_scissor(cb, 0, &[view.extent.into()]);
             device.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, self.gbuffer);
             device.cmd_bind_descriptor_sets(
@@ -423,7 +423,7 @@ impl Deferred {
             );
             device.cmd_execute_commands(cb, secondaries);
             device.cmd_next_subpass(cb, vk::SubpassContents::INLINE);
-            device.cmd_set_viewport(cb, 0, &[viewport(view.extent)]);
+            device.cmd_set_viewport(cb, 0, &[crate::render::viewport(view.extent)]);
             device.cmd_set_scissor(cb, 0, &[area]);
             device.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, self.lighting);
             device.cmd_bind_descriptor_sets(
@@ -441,18 +441,6 @@ impl Deferred {
             }
             device.end_command_buffer(cb).context("vkEndCommandBuffer")
         }
-    }
-}
-
-/// The viewport of the whole image.
-fn viewport(extent: vk::Extent2D) -> vk::Viewport {
-    vk::Viewport {
-        x: 0.0,
-        y: 0.0,
-        width: extent.width as f32,
-        height: extent.height as f32,
-        min_depth: 0.0,
-        max_depth: 1.0,
     }
 }
 

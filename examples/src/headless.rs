@@ -3,7 +3,7 @@
 
 use crate::gpu::Gpu;
 use crate::render::{self, Framebuffers, Scene, View, FRAMES_IN_FLIGHT};
-use anyhow::{bail, Result};
+use anyhow::Result;
 use std::time::{Duration, Instant};
 use tuff::vk;
 
@@ -34,22 +34,8 @@ impl Rendered {
 /// Fails unless `gpu` can render an image of `extent`: at least 1 pixel and at
 /// most the largest image and framebuffer side.
 pub fn check_extent(gpu: &Gpu, extent: vk::Extent2D) -> Result<()> {
-    let vk::Extent2D { width, height } = extent;
-    if width == 0 || height == 0 {
-        bail!("cannot render a {width}x{height} image: both sides must be at least 1");
-    }
-    let limits = gpu.physical.get_properties().limits;
-    let largest = limits
-        .max_image_dimension2_d
-        .min(limits.max_framebuffer_width)
-        .min(limits.max_framebuffer_height);
-    if width > largest || height > largest {
-        bail!(
-            "cannot render a {width}x{height} image: \"{}\" allows at most {largest} pixels a side",
-            gpu.name
-        );
-    }
-    Ok(())
+    render::check_nonempty(extent)?;
+    render::check_limits(extent, &gpu.physical.get_properties().limits, &gpu.name)
 }
 
 /// Renders `frames` frames (at least one) of the scene `make` builds, at

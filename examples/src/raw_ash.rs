@@ -96,32 +96,18 @@ pub fn run_with(
     req: Requirements,
     render: impl FnOnce(&mut Vulkan) -> Result<(Vec<u8>, Duration, String)>,
 ) -> Result<()> {
-    if common.width == 0 || common.height == 0 {
-        bail!(
-            "cannot render a {}x{} image: both sides must be at least 1",
-            common.width,
-            common.height
-        );
-    }
+    let extent = vk::Extent2D {
+        width: common.width,
+        height: common.height,
+    };
+    crate::render::check_nonempty(extent)?;
     let layer = if common.validate {
         Layer::Sync
     } else {
         Layer::Off
     };
     let mut vulkan = Vulkan::open(req, layer, false)?;
-    let limits = vulkan.properties().limits;
-    let largest = limits
-        .max_image_dimension2_d
-        .min(limits.max_framebuffer_width)
-        .min(limits.max_framebuffer_height);
-    if common.width > largest || common.height > largest {
-        bail!(
-            "cannot render a {}x{} image: \"{}\" allows at most {largest} pixels a side",
-            common.width,
-            common.height,
-            vulkan.name
-        );
-    }
+    crate::render::check_limits(extent, &vulkan.properties().limits, &vulkan.name)?;
     let rendered = render(&mut vulkan);
     let name = vulkan.name.clone();
     let messages = vulkan.finish();
@@ -1092,18 +1078,7 @@ pub(crate) unsafe fn record_frame<S: Scene>(
                 .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
             vk::SubpassContents::INLINE,
         );
-        device.cmd_set_viewport(
-            cb,
-            0,
-            &[vk::Viewport {
-                x: 0.0,
-                y: 0.0,
-                width: view.extent.width as f32,
-                height: view.extent.height as f32,
-                min_depth: 0.0,
-                max_depth: 1.0,
-            }],
-        );
+        device.cmd_set_viewport(cb, 0, &[crate::render::viewport(view.extent)]);
         device.cmd_set_scissor(cb, 0, &[area]);
         scene.draw(device, cb, view);
         device.cmd_end_render_pass(cb);

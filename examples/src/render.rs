@@ -46,6 +46,47 @@ pub trait Scene {
     ) -> tuff::Result<()>;
 }
 
+/// The viewport of a whole image of `extent`, depth 0 to 1.
+pub fn viewport(extent: vk::Extent2D) -> vk::Viewport {
+    vk::Viewport {
+        x: 0.0,
+        y: 0.0,
+        width: extent.width as f32,
+        height: extent.height as f32,
+        min_depth: 0.0,
+        max_depth: 1.0,
+    }
+}
+
+/// Fails unless both sides of `extent` are at least 1.
+pub fn check_nonempty(extent: vk::Extent2D) -> anyhow::Result<()> {
+    let vk::Extent2D { width, height } = extent;
+    if width == 0 || height == 0 {
+        anyhow::bail!("cannot render a {width}x{height} image: both sides must be at least 1");
+    }
+    Ok(())
+}
+
+/// Fails unless the device named `device`, of `limits`, can make an image and a
+/// framebuffer of `extent`.
+pub fn check_limits(
+    extent: vk::Extent2D,
+    limits: &vk::PhysicalDeviceLimits,
+    device: &str,
+) -> anyhow::Result<()> {
+    let vk::Extent2D { width, height } = extent;
+    let largest = limits
+        .max_image_dimension2_d
+        .min(limits.max_framebuffer_width)
+        .min(limits.max_framebuffer_height);
+    if width > largest || height > largest {
+        anyhow::bail!(
+            "cannot render a {width}x{height} image: \"{device}\" allows at most {largest} pixels a side"
+        );
+    }
+    Ok(())
+}
+
 /// A one-subpass render pass that clears a color attachment of `format` (and a
 /// depth attachment), stores the color and leaves it in `final_layout`: ready for
 /// a copy (headless) or for presentation.
@@ -220,17 +261,7 @@ pub fn record_frame<S: Scene>(
             .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
         vk::SubpassContents::INLINE,
     );
-    rec.set_viewport(
-        0,
-        &[vk::Viewport {
-            x: 0.0,
-            y: 0.0,
-            width: view.extent.width as f32,
-            height: view.extent.height as f32,
-            min_depth: 0.0,
-            max_depth: 1.0,
-        }],
-    )?;
+    rec.set_viewport(0, &[viewport(view.extent)])?;
     rec.set_scissor(0, &[area])?;
     scene.draw(&mut rec, view)?;
     let mut rec = rec.end_render_pass();

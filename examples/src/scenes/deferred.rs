@@ -314,7 +314,7 @@ impl Deferred {
             .inheritance_info(Some(&inheritance));
         let mut rec = secondary.begin_continuing(&info)?;
         // A secondary inherits no dynamic state: it sets its own.
-        rec.set_viewport(0, &[viewport(view.extent)])?;
+        rec.set_viewport(0, &[crate::render::viewport(view.extent)])?;
         rec.set_scissor(0, &[view.extent.into()])?;
         rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.gbuffer)?;
         rec.bind_descriptor_sets(
@@ -371,7 +371,7 @@ impl Deferred {
         );
         rec.execute_commands(&tuff::HandleSlice::new(&secondaries))?;
         rec.next_subpass(vk::SubpassContents::INLINE);
-        rec.set_viewport(0, &[viewport(view.extent)])?;
+        rec.set_viewport(0, &[crate::render::viewport(view.extent)])?;
         rec.set_scissor(0, &[area])?;
         rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &self.lighting)?;
         rec.bind_descriptor_sets(
@@ -393,18 +393,6 @@ impl Deferred {
         }
         rec.end()?;
         Ok(())
-    }
-}
-
-/// The viewport of the whole image.
-fn viewport(extent: vk::Extent2D) -> vk::Viewport {
-    vk::Viewport {
-        x: 0.0,
-        y: 0.0,
-        width: extent.width as f32,
-        height: extent.height as f32,
-        min_depth: 0.0,
-        max_depth: 1.0,
     }
 }
 

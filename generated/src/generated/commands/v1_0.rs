@@ -994,7 +994,7 @@ The caller upholds the rules that [`Self::create_fence`] checks at run time: `VU
 
 # Example
 
-Called, as `examples/src/render.rs` (line 175) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 216) does; the example programs run in CI:
 
 ```ignore
 Ok(gpu.device.create_framebuffer(
@@ -1568,7 +1568,7 @@ The caller upholds the rules that [`Self::create_query_pool`] checks at run time
 
 # Example
 
-Called, as `examples/src/render.rs` (line 131) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 172) does; the example programs run in CI:
 
 ```ignore
 Ok(gpu.device.create_render_pass(

@@ -915,7 +915,7 @@ The caller upholds the rules that [`Self::copy_image`] checks at run time: `VUID
 
 # Example
 
-Called, as `examples/src/render.rs` (line 252) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 283) does; the example programs run in CI:
 
 ```ignore
 rec.copy_image_to_buffer(

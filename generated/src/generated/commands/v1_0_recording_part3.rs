@@ -817,7 +817,7 @@ The caller upholds the rules that [`Self::set_line_width`] checks at run time: `
 
 # Example
 
-Called, as `examples/src/render.rs` (line 234) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 265) does; the example programs run in CI:
 
 ```ignore
 rec.set_scissor(0, &[area])?;
@@ -1042,20 +1042,10 @@ The caller upholds the rules that [`Self::set_stencil_write_mask`] checks at run
 
 # Example
 
-Called, as `examples/src/render.rs` (line 223) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 264) does; the example programs run in CI:
 
 ```ignore
-rec.set_viewport(
-    0,
-    &[vk::Viewport {
-        x: 0.0,
-        y: 0.0,
-        width: view.extent.width as f32,
-        height: view.extent.height as f32,
-        min_depth: 0.0,
-        max_depth: 1.0,
-    }],
-)?;
+rec.set_viewport(0, &[viewport(view.extent)])?;
 ```
 
 # Valid usage

@@ -333,7 +333,7 @@ impl<'a> BufferCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 268) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 299) does; the example programs run in CI:
 
 ```ignore
 // A fence wait does not make device writes visible to the host; this does.
@@ -1475,7 +1475,7 @@ impl<'a> FenceCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 176) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 217) does; the example programs run in CI:
 
 ```ignore
 Ok(gpu.device.create_framebuffer(

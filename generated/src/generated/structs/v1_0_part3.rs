@@ -1190,7 +1190,7 @@ impl<'a> QueryPoolCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 217) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 258) does; the example programs run in CI:
 
 ```ignore
 let mut rec = frame.record()?.begin_render_pass(
@@ -1289,7 +1289,7 @@ impl<'a> RenderPassBeginInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 132) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 173) does; the example programs run in CI:
 
 ```ignore
 Ok(gpu.device.create_render_pass(

@@ -99,7 +99,7 @@ impl<'a> SubmitInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 90) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 131) does; the example programs run in CI:
 
 ```ignore
 let mut subpass = tuff::SubpassDescription::new()
