@@ -18,10 +18,7 @@ pub fn on_threads<T: Send, E: Send>(
     job: impl Fn(usize, T) -> Result<(), E> + Sync,
 ) -> Result<(), E> {
     if items.len() <= 1 {
-        return items
-            .into_iter()
-            .enumerate()
-            .try_for_each(|(i, t)| job(i, t));
+        return in_order(items, job);
     }
     let job = &job;
     std::thread::scope(|scope| {
