@@ -448,3 +448,70 @@ fn a_newer_registry_emits_every_item_the_older_one_does() {
         lost.len()
     );
 }
+
+#[test]
+fn sync_tables_come_from_registries_that_have_them() {
+    let pinned = registry::load_registry(&root().join("vk.xml")).unwrap();
+    assert!(pinned.sync.is_none(), "1.3.239 has no <sync> block");
+    let reference = registry::load_registry(&root().join("reference/vk.xml")).unwrap();
+    let t = reference.sync.expect("1.3.281 has a <sync> block");
+    let stage = |n: &str| t.stages.iter().find(|s| s.name == n).expect(n);
+    let access = |n: &str| t.accesses.iter().find(|a| a.name == n).expect(n);
+    assert_eq!(stage("VK_PIPELINE_STAGE_2_COPY_BIT").bit, 1 << 32);
+    assert!(stage("VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT")
+        .equivalent
+        .contains(&"VK_PIPELINE_STAGE_2_COPY_BIT".to_owned()));
+    let read = access("VK_ACCESS_2_TRANSFER_READ_BIT");
+    assert!(read
+        .stages
+        .as_ref()
+        .unwrap()
+        .contains(&"VK_PIPELINE_STAGE_2_COPY_BIT".to_owned()));
+    // MEMORY_READ lists no stage: every stage.
+    assert!(access("VK_ACCESS_2_MEMORY_READ_BIT").stages.is_none());
+    let graphics = t
+        .pipelines
+        .iter()
+        .find(|p| p.name == "graphics primitive")
+        .unwrap();
+    let at = |n: &str| graphics.ordered.iter().position(|s| s == n).unwrap();
+    assert!(
+        at("VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT") < at("VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT")
+    );
+}
+
+#[test]
+fn the_hazard_trackers_facts_agree_with_every_sync_table() {
+    for version in ["1.3.281", "1.4.309", "1.4.330"] {
+        let reg = registry::load_registry(&shared_registry(version).join("vk.xml")).unwrap();
+        let t = reg.sync.expect("a <sync> block");
+        tuff_gen::plan::accesses::check(&t).unwrap_or_else(|e| panic!("{version}: {e}"));
+    }
+}
+
+#[test]
+fn a_fact_the_sync_tables_do_not_allow_stops_the_generator() {
+    let reg = registry::load_registry(&root().join("reference/vk.xml")).unwrap();
+    let whole = reg.sync.unwrap();
+    let mut t = whole.clone();
+    // The registry's transfer reads, minus the copy stage the table times copies at
+    // (and ALL_TRANSFER, which stands for it).
+    let read = t
+        .accesses
+        .iter_mut()
+        .find(|a| a.name == "VK_ACCESS_2_TRANSFER_READ_BIT")
+        .unwrap();
+    read.stages.as_mut().unwrap().retain(|s| {
+        s != "VK_PIPELINE_STAGE_2_COPY_BIT" && s != "VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT"
+    });
+    let e = tuff_gen::plan::accesses::check(&t).expect_err("refused");
+    assert!(
+        e.contains("does not allow VK_ACCESS_2_TRANSFER_READ_BIT at VK_PIPELINE_STAGE_2_COPY_BIT"),
+        "{e}"
+    );
+    let mut t = whole;
+    t.stages
+        .retain(|s| s.name != "VK_PIPELINE_STAGE_2_BLIT_BIT");
+    let e = tuff_gen::plan::accesses::check(&t).expect_err("refused");
+    assert!(e.contains("no stage VK_PIPELINE_STAGE_2_BLIT_BIT"), "{e}");
+}

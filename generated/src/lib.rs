@@ -205,6 +205,9 @@ mod features;
 #[path = "generated/formats.rs"]
 #[rustfmt::skip]
 mod formats;
+#[path = "generated/sync_tables.rs"]
+#[rustfmt::skip]
+mod sync_tables;
 #[path = "generated/handles.rs"]
 #[rustfmt::skip]
 pub mod handles;

@@ -425,6 +425,8 @@ pub struct Recorder<'c, S: Scope> {
     pub(crate) suspends: bool,
     /// The image layouts the recording needs at its start and leaves so far.
     pub(crate) layouts: crate::state::layouts::Recording,
+    /// What the recording's commands read and write, and the barriers between.
+    pub(crate) hazards: crate::state::hazards::Recording,
     /// The queries the recording needs reset at its start and leaves so far.
     pub(crate) query_states: crate::state::queries::Recording,
     /// What the recording does to events so far.
@@ -510,6 +512,7 @@ impl<'c> Recorder<'c, Outside> {
             query_types: Vec::new(),
             suspends: false,
             layouts: Default::default(),
+            hazards: Default::default(),
             query_states: Default::default(),
             event_states: Default::default(),
             pass_images: Vec::new(),
@@ -616,6 +619,40 @@ impl<'c, S: Scope> Recorder<'c, S> {
         (self.device.live(), &mut self.layouts)
     }
 
+    /// Turns automatic synchronization on or off for the commands recorded from now
+    /// on. Off (the default), a command that reads or writes memory an earlier
+    /// command of the recording wrote or read, with no barrier between that orders
+    /// the two, is refused with the hazard (`SYNC-HAZARD-READ-AFTER-WRITE`, ...),
+    /// naming both commands and the barrier that would order them. On, tuff records
+    /// that barrier itself, one global memory barrier just before the command
+    /// (`vkCmdPipelineBarrier2` where synchronization2 is enabled), from the earlier
+    /// accesses' stages to the command's. Barriers the recording names itself count
+    /// in both modes. Which commands the tracker knows, and what each reads and
+    /// writes, is the crate's `sync_tables` (from the registry's sync tables and the
+    /// generator's table of per-command facts); the report lists the others.
+    ///
+    /// ```no_run
+    /// # fn f(cb: &mut tuff::CommandBuffer, a: &tuff::Buffer, b: &tuff::Buffer, c: &tuff::Buffer) -> tuff::Result<()> {
+    /// let region = [tuff::vk::BufferCopy { src_offset: 0, dst_offset: 0, size: 64 }];
+    /// let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+    /// rec.auto_sync(true);
+    /// rec.copy_buffer(a, b, &region)?;
+    /// // Reads what the copy above wrote: tuff records the barrier between.
+    /// rec.copy_buffer(b, c, &region)?;
+    /// rec.end()?;
+    /// # Ok(()) }
+    /// ```
+    pub fn auto_sync(&mut self, on: bool) {
+        self.hazards.auto = on;
+    }
+
+    /// The device's records and the recording's hazard tracker, borrowed together.
+    pub(crate) fn hazards_mut(
+        &mut self,
+    ) -> (&crate::state::Live, &mut crate::state::hazards::Recording) {
+        (self.device.live(), &mut self.hazards)
+    }
+
     /// The device's records and the recording's query states, borrowed together
     /// for a command that resets or uses queries.
     pub(crate) fn query_states_mut(
@@ -687,6 +724,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             query_types: self.query_types,
             suspends: self.suspends,
             layouts: self.layouts,
+            hazards: self.hazards,
             query_states: self.query_states,
             event_states: self.event_states,
             pass_images: self.pass_images,

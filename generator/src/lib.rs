@@ -324,6 +324,16 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         None => None,
     };
     let model = model::Model::build(&reg, reference.as_ref(), &config, &opts.config)?;
+    // The per-command facts of the hazard tracker must be the sync tables' own.
+    if let Some(tables) = &model.sync {
+        plan::accesses::check(tables).map_err(|message| Error::BadRegistry {
+            path: opts.registry.clone(),
+            message: format!(
+                "the hazard tracker's facts (plan/accesses.rs) disagree with <sync> of {}: {message}",
+                tables.version
+            ),
+        })?;
+    }
     let validity = enabled_validity(&model, vu.as_ref());
     let mut cx = plan::Context::new(&model, &validity);
     let sources = scene_sources(&opts.config, &config);

@@ -68,6 +68,8 @@ pub(crate) struct BufferBarrier {
     pub scopes: Scopes,
     pub buffer: vk::Buffer,
     pub families: (u32, u32),
+    /// Its offset and size (`VK_WHOLE_SIZE`: to the buffer's end).
+    pub range: (vk::DeviceSize, vk::DeviceSize),
 }
 
 /// An image barrier of either version.
@@ -123,6 +125,7 @@ impl Barriers {
                     scopes: scopes(b.src_access_mask, b.dst_access_mask),
                     buffer: b.buffer,
                     families: (b.src_queue_family_index, b.dst_queue_family_index),
+                    range: (b.offset, b.size),
                 })
                 .collect(),
             images: image_memory_barriers
@@ -171,6 +174,7 @@ impl Barriers {
                     ),
                     buffer: b.buffer,
                     families: (b.src_queue_family_index, b.dst_queue_family_index),
+                    range: (b.offset, b.size),
                 })
                 .collect(),
             images: images

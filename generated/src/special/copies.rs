@@ -350,7 +350,7 @@ pub(crate) fn check_protected<S: Scope>(
 /// the format or aspect is not one the registry describes (an aspect mask of more
 /// than one aspect), which another rule refuses.
 #[allow(clippy::too_many_arguments)]
-fn buffer_image_end(
+pub(crate) fn buffer_image_end(
     format: vk::Format,
     aspect: vk::ImageAspectFlags,
     offset: vk::DeviceSize,

@@ -217,7 +217,44 @@ pub(crate) enum Names<'a> {
     ClearDepthStencil(vk::Image, vk::ImageLayout, &'a [vk::ImageSubresourceRange]),
 }
 
+/// The subresources a command reads and writes.
+pub(crate) struct Sides {
+    /// Its source side.
+    pub read: Vec<(vk::Image, Sel)>,
+    /// Its destination side, or the image it clears.
+    pub written: Vec<(vk::Image, Sel)>,
+}
+
 impl Names<'_> {
+    /// The subresources the command reads and writes.
+    pub(crate) fn sides(&self) -> Sides {
+        let named: Vec<(vk::Image, Sel)> = self.named().into_iter().map(|n| (n.0, n.1)).collect();
+        match self {
+            // Two images: the source's subresources first, as many as the destination's.
+            Names::CopyImage(..)
+            | Names::BlitImage(..)
+            | Names::ResolveImage(..)
+            | Names::CopyImage2(_)
+            | Names::BlitImage2(_)
+            | Names::ResolveImage2(_) => {
+                let mut read = named;
+                let written = read.split_off(read.len() / 2);
+                Sides { read, written }
+            }
+            Names::ImageToBuffer(..) | Names::ImageToBuffer2(_) => Sides {
+                read: named,
+                written: Vec::new(),
+            },
+            Names::BufferToImage(..)
+            | Names::BufferToImage2(_)
+            | Names::ClearColor(..)
+            | Names::ClearDepthStencil(..) => Sides {
+                read: Vec::new(),
+                written: named,
+            },
+        }
+    }
+
     fn named(&self) -> Vec<Named> {
         // SAFETY (each `raw_slice`): the safe structs store their arrays with their lengths.
         match self {

@@ -27,6 +27,7 @@ pub(crate) mod draw;
 pub(crate) mod draw_descriptors;
 pub(crate) mod draw_state;
 pub(crate) mod framebuffer;
+pub(crate) mod hazards;
 pub(crate) mod image;
 pub(crate) mod image_copies;
 pub(crate) mod image_layouts;

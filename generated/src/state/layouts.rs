@@ -75,7 +75,7 @@ impl Shape {
 
     /// The indices of the subresources `sel` names, clipped to the image (a range
     /// past the image is another rule's to refuse).
-    fn indices(&self, sel: &Sel) -> impl Iterator<Item = usize> + '_ {
+    pub(crate) fn indices(&self, sel: &Sel) -> impl Iterator<Item = usize> + '_ {
         let mips = sel.mips.0.min(self.mips)..sel.mips.1.min(self.mips);
         let (first, last) = if self.layers == 1 {
             (0, 1)

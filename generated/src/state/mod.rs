@@ -14,6 +14,7 @@ mod descriptors;
 pub(crate) mod events;
 mod features;
 mod framebuffer;
+pub(crate) mod hazards;
 mod image;
 pub(crate) mod layouts;
 mod live;

@@ -1105,6 +1105,17 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             let c = special_call(&c, &ret_expr);
             quote!(let _held = #c?;)
         });
+        // The hazard tracker's declaration of the command's accesses comes last, once
+        // every other check has passed: what it records is what the call does. A
+        // transition's joins its other checks' result (the recorder keeps it).
+        let hazard = crate::plan::accesses::row(&plan.name)
+            .filter(|_| model.sync.is_some())
+            .map(|row| super::sync_tables::call(row, transition.is_some()));
+        let hazard_join = match (&hazard, moves) {
+            (Some(c), true) => quote!(.and_then(|()| #c)),
+            _ => quote!(),
+        };
+        let last_join = quote!(#last_join #hazard_join);
         let always_vuids = special
             .filter(|s| s.check.is_some() || s.check_last.is_some() || s.hold.is_some())
             .map_or(&[][..], |s| s.settles);
@@ -1269,6 +1280,13 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 (ret_checked, quote!(r?;), call)
             }
         };
+        let hazard_code = match (&hazard, moves) {
+            (Some(c), false) if is_cmd && !fallible && transition.is_none() => {
+                Some(quote!(if !self.accept(#c) { return; }))
+            }
+            (Some(c), false) => Some(quote!(#c?;)),
+            _ => None,
+        };
         // A transition that keeps nothing (the ends of a render pass) does not
         // change the recorder it consumes before handing it on.
         let unchecked_self = if transition.is_some() && !uses_recorder && retain.is_empty() {
@@ -1307,6 +1325,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
                 // Checks that query the driver with the values, once they are valid.
                 #last_code
                 #hold_code
+                #hazard_code
                 __safety!("the rules the checks above settle hold; the others are the caller's (see the docs).");
                 #call
             }

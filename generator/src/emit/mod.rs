@@ -15,6 +15,7 @@ mod selected;
 pub mod status;
 pub mod structs;
 pub mod sync;
+pub mod sync_tables;
 
 use crate::model::Model;
 use crate::names;
@@ -388,6 +389,7 @@ pub fn emit(plans: &Plans) -> Emission {
         ("formats.rs".to_owned(), formats::emit(cx.model)),
         ("helpers.rs".to_owned(), helpers::emit(plans)),
         ("status.rs".to_owned(), status::emit(cx, &plans.statuses)),
+        ("sync_tables.rs".to_owned(), sync_tables::emit(cx.model)),
     ];
     files.extend(command_checks);
     files.extend(checks::emit(&plans.checker));

@@ -11,6 +11,9 @@ pub mod attrs;
 pub mod expr;
 mod item;
 pub mod reference;
+
+/// The registry's synchronization tables, as the model keeps them.
+pub use crate::registry::{SyncItem, SyncPipeline, SyncTables};
 pub mod tables;
 
 use crate::config::Config;
@@ -116,6 +119,10 @@ pub struct Model {
     pub promoted_to: BTreeMap<String, String>,
     /// The instance extensions (`type="instance"`); the others are device ones.
     pub instance_extensions: BTreeSet<String>,
+    /// The registry's synchronization tables (`<sync>`): this registry's, or where it
+    /// has none (before 1.3.2xx) the reference registry's, whose stages and access
+    /// types are ash's.
+    pub sync: Option<SyncTables>,
     /// The reference registry's version (the one the `ash` release the crate builds
     /// on was generated from), when the config names one.
     pub reference_version: Option<String>,
@@ -507,6 +514,10 @@ impl Model {
             })
             .collect();
         let mut model = Model {
+            sync: registry
+                .sync
+                .clone()
+                .or_else(|| reference.and_then(|r| r.sync.clone())),
             reference_version: reference.map(|r| r.version.clone()),
             left_out,
             returned_only_in_reference: reference

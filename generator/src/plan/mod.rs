@@ -8,6 +8,7 @@
 //! it is settled ([`settle`]). Renderers (`emit`) and the report are functions of
 //! [`Plans`]; nothing here imports them.
 
+pub mod accesses;
 pub mod checks;
 pub mod commands;
 pub mod features;

@@ -11,6 +11,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
     let mut numbers: BTreeMap<String, i64> = BTreeMap::new();
     let mut aliases: Vec<(String, String)> = Vec::new();
     let internal = internal_features(&parsed);
+    let mut sync = None;
     for child in parsed.0 {
         match child {
             vk::RegistryChild::Types(types) => {
@@ -126,6 +127,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
                     });
                 }
             }
+            vk::RegistryChild::Sync(s) => sync = Some(s),
             _ => {}
         }
     }
@@ -147,6 +149,14 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
             path: path.to_owned(),
             message: "it defines no commands or no VK_VERSION_1_0 feature".to_owned(),
         });
+    }
+    if let Some(block) = sync {
+        reg.sync = Some(super::sync::read(
+            block,
+            &reg.enum_numbers,
+            &reg.version,
+            path,
+        )?);
     }
     Ok(reg)
 }

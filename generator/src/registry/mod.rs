@@ -5,9 +5,11 @@
 //! no resolution of aliases or requirements: that is the model pass's job.
 
 mod convert;
+mod sync;
 mod validusage;
 mod wellformed;
 
+pub use sync::{SyncItem, SyncPipeline, SyncTables};
 pub use validusage::{load_validusage, ValidUsage, VuEntry};
 
 use crate::error::{Error, Result};
@@ -34,6 +36,8 @@ pub struct Registry {
     pub enum_numbers: std::collections::BTreeMap<String, i64>,
     /// Every `<format>` of the `<formats>` block: what a `VkFormat` is made of.
     pub formats: Vec<FormatDef>,
+    /// The `<sync>` block, where the registry has one (1.3.2xx on).
+    pub sync: Option<SyncTables>,
 }
 
 /// One `<format>` element.

@@ -337,6 +337,37 @@ fn explicit_section(s: &mut String, r: &Report) {
     }
 }
 
+/// The hazard tracker's reach: which recording commands it knows.
+fn accesses_section(s: &mut String, r: &Report) {
+    let a = &r.accesses;
+    let _ = writeln!(
+        s,
+        "\n## Synchronisation: what each recording command reads and writes\n\n\
+         The hazard tracker (`Recorder::auto_sync`, ARCHITECTURE.md) refuses, or in automatic \
+         mode orders with a barrier, a command whose access is not ordered after a \
+         conflicting earlier one of the same recording. It knows {} of the {} recording \
+         commands of the emitted API, from the sync tables of vk.xml {} and the generator's \
+         table of per-command facts (`generator/src/plan/accesses.rs`); the other {} are \
+         left to the user: their accesses order nothing and are checked against nothing.\n",
+        a.known.len(),
+        a.known.len() + a.left.len(),
+        a.tables.as_deref().unwrap_or("(none)"),
+        a.left.len()
+    );
+    for (c, uses) in &a.known {
+        let _ = writeln!(s, "- `{c}`: {}", uses.join("; "));
+    }
+    let _ = writeln!(
+        s,
+        "\nLeft to the user: {}.",
+        a.left
+            .iter()
+            .map(|c| format!("`{c}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+}
+
 /// The rules that apply to each method and who settles them.
 fn methods_section(s: &mut String, r: &Report) {
     if r.methods.is_empty() {
@@ -369,6 +400,7 @@ fn methods_section(s: &mut String, r: &Report) {
     }
     refused_section(s, r);
     core_unsafe_section(s, r);
+    accesses_section(s, r);
     let _ = writeln!(
         s,
         "\n## Per method (emitted API)\n\n\

@@ -113,6 +113,55 @@ pub struct Report<'a> {
     /// The emitted extensions the safe constructors refuse, with the rules each
     /// would bring to other methods; empty unless [`Report::add_methods`] ran.
     pub refused: Vec<(String, Vec<crate::plan::safety::Owned>)>,
+    /// The hazard tracker's reach: the emitted recording commands whose accesses it
+    /// knows (with what each reads and writes), and those it leaves to the user.
+    pub accesses: Accesses,
+}
+
+/// Which recording commands the hazard tracker knows (`plan/accesses.rs`).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Accesses {
+    /// The registry version of the sync tables, if any.
+    pub tables: Option<String>,
+    /// Each known command, with its accesses (`reads ... at ...`) and what else it
+    /// does to the tracker.
+    pub known: Vec<(String, Vec<String>)>,
+    /// The emitted recording commands whose accesses it does not know.
+    pub left: Vec<String>,
+}
+
+impl Accesses {
+    fn of(model: &Model) -> Self {
+        let recording = model
+            .commands
+            .keys()
+            .filter(|c| c.starts_with("vkCmd") && model.emitted.contains(c.as_str()));
+        let mut out = Accesses {
+            tables: model.sync.as_ref().map(|t| t.version.clone()),
+            ..Accesses::default()
+        };
+        for c in recording {
+            match crate::plan::accesses::row(c).filter(|_| model.sync.is_some()) {
+                Some(row) => out.known.push((
+                    c.clone(),
+                    row.uses
+                        .iter()
+                        .map(|u| {
+                            let what = if u.role == "src" { "reads" } else { "writes" };
+                            format!(
+                                "{what} `{}` at `{}`",
+                                u.access,
+                                u.stage.replace(',', "` or `")
+                            )
+                        })
+                        .chain((!row.does.is_empty()).then(|| row.does.to_owned()))
+                        .collect(),
+                )),
+                None => out.left.push(c.clone()),
+            }
+        }
+        out
+    }
 }
 
 /// The rules that apply to one emitted method: its command's and those of every
@@ -258,6 +307,7 @@ pub fn build<'a>(model: &Model, validity: &'a Validity, records: &[Record]) -> R
         reference_version: model.reference_version.clone(),
         left_out: model.left_out.clone(),
         refused: Vec::new(),
+        accesses: Accesses::of(model),
     };
     let known: std::collections::BTreeSet<&str> =
         validity.rules.iter().map(|r| r.vuid.as_str()).collect();

@@ -245,6 +245,14 @@ The rules of `vkCmdPipelineBarrier` that apply to this crate's API ([reference p
                 );
             r?;
         }
+        crate::special::hazards::pipeline_barrier(
+            self,
+            &crate::sync_tables::CMD_PIPELINE_BARRIER,
+            (src_stage_mask, dst_stage_mask),
+            memory_barriers,
+            buffer_memory_barriers,
+            image_memory_barriers,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -424,6 +432,14 @@ The rules of `vkCmdWaitEvents` that apply to this crate's API ([reference page](
             r?;
         }
         crate::special::sync::wait_events_signals(self, events, src_stage_mask)?;
+        crate::special::hazards::pipeline_barrier(
+            self,
+            &crate::sync_tables::CMD_WAIT_EVENTS,
+            (src_stage_mask, dst_stage_mask),
+            memory_barriers,
+            buffer_memory_barriers,
+            image_memory_barriers,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {

@@ -62,7 +62,12 @@ The rules of `vkCmdBeginRenderPass` that apply to this crate's API ([reference p
             let r = always
                 .and_then(|()| {
                     self.validate_begin_render_pass(render_pass_begin, contents)
-                });
+                })
+                .and_then(|()| crate::special::hazards::begin_render_pass(
+                    &mut self,
+                    &crate::sync_tables::CMD_BEGIN_RENDER_PASS,
+                    render_pass_begin,
+                ));
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -220,6 +225,17 @@ The rules of `vkCmdBlitImage` that apply to this crate's API ([reference page](h
             regions,
             filter,
         )?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_BLIT_IMAGE,
+            crate::special::image_layouts::Names::BlitImage(
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions,
+            ),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -334,6 +350,15 @@ The rules of `vkCmdClearColorImage` that apply to this crate's API ([reference p
             r?;
         }
         crate::special::copies::cmd_clear_color_image_checks(self, image, ranges)?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_CLEAR_COLOR_IMAGE,
+            crate::special::image_layouts::Names::ClearColor(
+                image.raw(),
+                image_layout,
+                ranges,
+            ),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.clear_color_image_unchecked(image, image_layout, color, ranges) }
@@ -446,6 +471,15 @@ The rules of `vkCmdClearDepthStencilImage` that apply to this crate's API ([refe
             image_layout,
             ranges,
         )?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_CLEAR_DEPTH_STENCIL_IMAGE,
+            crate::special::image_layouts::Names::ClearDepthStencil(
+                image.raw(),
+                image_layout,
+                ranges,
+            ),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -543,6 +577,13 @@ The rules of `vkCmdCopyBuffer` that apply to this crate's API ([reference page](
             let r = self.validate_copy_buffer(regions);
             r?;
         }
+        crate::special::hazards::copy_buffer(
+            self,
+            &crate::sync_tables::CMD_COPY_BUFFER,
+            src_buffer,
+            dst_buffer,
+            regions,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.copy_buffer_unchecked(src_buffer, dst_buffer, regions) }
@@ -669,6 +710,13 @@ The rules of `vkCmdCopyBufferToImage` that apply to this crate's API ([reference
         }
         crate::special::copies::cmd_copy_buffer_to_image_checks(
             self,
+            src_buffer,
+            dst_image,
+            regions,
+        )?;
+        crate::special::hazards::copy_buffer_to_image(
+            self,
+            &crate::sync_tables::CMD_COPY_BUFFER_TO_IMAGE,
             src_buffer,
             dst_image,
             regions,
@@ -855,6 +903,17 @@ The rules of `vkCmdCopyImage` that apply to this crate's API ([reference page](h
             (src_image.raw(), dst_image.raw()),
             regions,
         )?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_COPY_IMAGE,
+            crate::special::image_layouts::Names::CopyImage(
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions,
+            ),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1023,6 +1082,13 @@ The rules of `vkCmdCopyImageToBuffer` that apply to this crate's API ([reference
         }
         crate::special::copies::cmd_copy_image_to_buffer_checks(
             self,
+            src_image,
+            dst_buffer,
+            regions,
+        )?;
+        crate::special::hazards::copy_image_to_buffer(
+            self,
+            &crate::sync_tables::CMD_COPY_IMAGE_TO_BUFFER,
             src_image,
             dst_buffer,
             regions,
@@ -1534,6 +1600,13 @@ The rules of `vkCmdFillBuffer` that apply to this crate's API ([reference page](
             let r = self.validate_fill_buffer();
             r?;
         }
+        crate::special::hazards::fill_buffer(
+            self,
+            &crate::sync_tables::CMD_FILL_BUFFER,
+            dst_buffer,
+            dst_offset,
+            size,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.fill_buffer_unchecked(dst_buffer, dst_offset, size, data) }
@@ -1720,6 +1793,17 @@ The rules of `vkCmdResolveImage` that apply to this crate's API ([reference page
             (src_image.raw(), dst_image.raw()),
             regions,
         )?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_RESOLVE_IMAGE,
+            crate::special::image_layouts::Names::ResolveImage(
+                src_image.raw(),
+                src_image_layout,
+                dst_image.raw(),
+                dst_image_layout,
+                regions,
+            ),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1819,6 +1903,13 @@ The rules of `vkCmdUpdateBuffer` that apply to this crate's API ([reference page
             let r = self.validate_update_buffer(data);
             r?;
         }
+        crate::special::hazards::update_buffer(
+            self,
+            &crate::sync_tables::CMD_UPDATE_BUFFER,
+            dst_buffer,
+            dst_offset,
+            data,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.update_buffer_unchecked(dst_buffer, dst_offset, data) }

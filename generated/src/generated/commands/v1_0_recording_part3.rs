@@ -483,6 +483,10 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
             let r = self.validate_execute_commands(command_buffers);
             r?;
         }
+        crate::special::hazards::execute_commands(
+            self,
+            &crate::sync_tables::CMD_EXECUTE_COMMANDS,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.execute_commands_unchecked(command_buffers_given) }

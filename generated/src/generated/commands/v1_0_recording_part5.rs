@@ -35,7 +35,12 @@ The rules of `vkCmdEndRenderPass` that apply to this crate's API ([reference pag
             ("VUID-vkCmdEndRenderPass-None-00910", "VUID-vkCmdEndRenderPass-None-07004"),
         );
         {
-            let r = always.and_then(|()| self.validate_end_render_pass());
+            let r = always
+                .and_then(|()| self.validate_end_render_pass())
+                .and_then(|()| crate::special::hazards::end_render_pass(
+                    &mut self,
+                    &crate::sync_tables::CMD_END_RENDER_PASS,
+                ));
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -89,7 +94,12 @@ The rules of `vkCmdNextSubpass` that apply to this crate's API ([reference page]
             "VUID-vkCmdNextSubpass-None-00909",
         );
         {
-            let r = always.and_then(|()| self.validate_next_subpass(contents));
+            let r = always
+                .and_then(|()| self.validate_next_subpass(contents))
+                .and_then(|()| crate::special::hazards::next_subpass(
+                    self,
+                    &crate::sync_tables::CMD_NEXT_SUBPASS,
+                ));
             if r.is_err() {
                 let _ = self.accept(r);
                 return;

@@ -53,7 +53,12 @@ The rules of `vkCmdBeginRenderPass2` that apply to this crate's API ([reference 
                             render_pass_begin,
                             subpass_begin_info,
                         )
-                });
+                })
+                .and_then(|()| crate::special::hazards::begin_render_pass(
+                    &mut self,
+                    &crate::sync_tables::CMD_BEGIN_RENDER_PASS2,
+                    render_pass_begin,
+                ));
             if !self.accept(r) {
                 self.skip_begin(true);
                 return self.into_state();
@@ -947,7 +952,11 @@ The rules of `vkCmdEndRenderPass2` that apply to this crate's API ([reference pa
         );
         {
             let r = always
-                .and_then(|()| self.validate_end_render_pass2(subpass_end_info));
+                .and_then(|()| self.validate_end_render_pass2(subpass_end_info))
+                .and_then(|()| crate::special::hazards::end_render_pass(
+                    &mut self,
+                    &crate::sync_tables::CMD_END_RENDER_PASS2,
+                ));
             let _ = self.accept(r);
             if self.begin_skipped() {
                 return self.into_state();
@@ -1006,7 +1015,11 @@ The rules of `vkCmdNextSubpass2` that apply to this crate's API ([reference page
             let r = always
                 .and_then(|()| {
                     self.validate_next_subpass2(subpass_begin_info, subpass_end_info)
-                });
+                })
+                .and_then(|()| crate::special::hazards::next_subpass(
+                    self,
+                    &crate::sync_tables::CMD_NEXT_SUBPASS2,
+                ));
             if r.is_err() {
                 let _ = self.accept(r);
                 return;

@@ -106,6 +106,11 @@ The rules of `vkCmdBlitImage2` that apply to this crate's API ([reference page](
             r?;
         }
         crate::special::blits::cmd_blit_image2_checks(self, blit_image_info)?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_BLIT_IMAGE2,
+            crate::special::image_layouts::Names::BlitImage2(blit_image_info),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.blit_image2_unchecked(blit_image_info) }
@@ -173,6 +178,11 @@ The rules of `vkCmdCopyBuffer2` that apply to this crate's API ([reference page]
             r?;
         }
         crate::special::copies::cmd_copy_buffer2_checks(self, copy_buffer_info)?;
+        crate::special::hazards::copy_buffer2(
+            self,
+            &crate::sync_tables::CMD_COPY_BUFFER2,
+            copy_buffer_info,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.copy_buffer2_unchecked(copy_buffer_info) }
@@ -250,6 +260,11 @@ The rules of `vkCmdCopyBufferToImage2` that apply to this crate's API ([referenc
         }
         crate::special::copies::cmd_copy_buffer_to_image2_checks(
             self,
+            copy_buffer_to_image_info,
+        )?;
+        crate::special::hazards::copy_buffer_to_image2(
+            self,
+            &crate::sync_tables::CMD_COPY_BUFFER_TO_IMAGE2,
             copy_buffer_to_image_info,
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -335,6 +350,11 @@ The rules of `vkCmdCopyImage2` that apply to this crate's API ([reference page](
             r?;
         }
         crate::special::image_copies::cmd_copy_image2_checks(self, copy_image_info)?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_COPY_IMAGE2,
+            crate::special::image_layouts::Names::CopyImage2(copy_image_info),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.copy_image2_unchecked(copy_image_info) }
@@ -412,6 +432,11 @@ The rules of `vkCmdCopyImageToBuffer2` that apply to this crate's API ([referenc
         }
         crate::special::copies::cmd_copy_image_to_buffer2_checks(
             self,
+            copy_image_to_buffer_info,
+        )?;
+        crate::special::hazards::copy_image_to_buffer2(
+            self,
+            &crate::sync_tables::CMD_COPY_IMAGE_TO_BUFFER2,
             copy_image_to_buffer_info,
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
@@ -497,6 +522,11 @@ The rules of `vkCmdResolveImage2` that apply to this crate's API ([reference pag
             r?;
         }
         crate::special::resolves::cmd_resolve_image2_checks(self, resolve_image_info)?;
+        crate::special::hazards::images(
+            self,
+            &crate::sync_tables::CMD_RESOLVE_IMAGE2,
+            crate::special::image_layouts::Names::ResolveImage2(resolve_image_info),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.resolve_image2_unchecked(resolve_image_info) }
@@ -1430,6 +1460,11 @@ The rules of `vkCmdPipelineBarrier2` that apply to this crate's API ([reference 
             let r = self.validate_pipeline_barrier2(dependency_info);
             r?;
         }
+        crate::special::hazards::pipeline_barrier2(
+            self,
+            &crate::sync_tables::CMD_PIPELINE_BARRIER2,
+            &[dependency_info],
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.pipeline_barrier2_unchecked(dependency_info) }
@@ -1517,6 +1552,11 @@ The rules of `vkCmdWaitEvents2` that apply to this crate's API ([reference page]
             r?;
         }
         crate::special::sync::wait_events2_signals(self, events, dependency_infos)?;
+        crate::special::hazards::pipeline_barrier2(
+            self,
+            &crate::sync_tables::CMD_WAIT_EVENTS2,
+            &dependency_infos.iter().collect::<Vec<_>>(),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.wait_events2_unchecked(events_given, dependency_infos) }

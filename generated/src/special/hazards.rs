@@ -1,0 +1,598 @@
+//! Memory hazards between the commands of one recording: each command the tracker
+//! knows declares what it reads and writes (the stage and access type from the
+//! registry's sync tables, per the generator's reviewed table of per-command facts,
+//! `generator/src/plan/accesses.rs`; the memory from its parameters), is refused
+//! when that access is not ordered after a conflicting earlier one by the barriers
+//! recorded between, and is recorded; barriers, event waits and render pass
+//! dependencies order what came before ([`crate::state::hazards`]).
+//!
+//! The error names the two commands, the memory and the barrier that would order
+//! them, under the validation layer's synchronization-validation identifier
+//! (`SYNC-HAZARD-READ-AFTER-WRITE`, ...).
+
+use crate::handles::{Buffer, Image};
+use crate::recorder::{Recorder, Scope};
+use crate::special::barriers::Barriers;
+use crate::special::image_layouts::Names;
+use crate::state::hazards::{Barrier, Cmd, Hazard, Memory, Usage};
+use crate::state::layouts::Sel;
+use crate::structs::{
+    BufferMemoryBarrier, CopyBufferInfo2, CopyBufferToImageInfo2, CopyImageToBufferInfo2,
+    DependencyInfo, ImageMemoryBarrier, MemoryBarrier, RenderPassBeginInfo,
+};
+use crate::sync_tables::{Facts, Use};
+use crate::{Error, Handle, Result};
+use ash::vk;
+
+/// The identifier the validation layer's synchronization validation reports a hazard
+/// of this kind under.
+fn id(kind: &str) -> &'static str {
+    match kind {
+        "READ_AFTER_WRITE" => "SYNC-HAZARD-READ-AFTER-WRITE",
+        "WRITE_AFTER_READ" => "SYNC-HAZARD-WRITE-AFTER-READ",
+        _ => "SYNC-HAZARD-WRITE-AFTER-WRITE",
+    }
+}
+
+fn refuse(h: &Hazard, memory: &Memory) -> Error {
+    Error::Validation {
+        vuid: id(h.kind),
+        message: h.message(&memory.describe()),
+    }
+}
+
+/// Checks every access of one command against what the recording did before, then
+/// records them: none is recorded if one is refused. With automatic synchronization
+/// on ([`Recorder::auto_sync`]), the hazards found are ordered by one barrier
+/// recorded just before the command instead.
+fn touch<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    name: &'static str,
+    accesses: &[(Memory, Use)],
+) -> Result<()> {
+    let found = hazards_of(recorder, name, accesses);
+    if let Some((h, m)) = found.first() {
+        // A barrier inside a render pass instance needs a self-dependency of its
+        // subpass: the tracker inserts none there.
+        if !recorder.hazards.auto || recorder.instance.is_some() {
+            return Err(refuse(h, m));
+        }
+        let needed = needed(&found);
+        order(recorder, needed);
+        if let Some((h, m)) = hazards_of(recorder, name, accesses).first() {
+            return Err(refuse(h, m));
+        }
+    }
+    let (live, hazards) = recorder.hazards_mut();
+    let cmd = hazards.next(name);
+    for (m, u) in accesses {
+        hazards.record(live, m, usage(u, cmd));
+    }
+    Ok(())
+}
+
+fn usage(u: &Use, cmd: Cmd) -> Usage {
+    Usage {
+        stage: u.stage,
+        access: u.access,
+        write: u.write,
+        cmd,
+    }
+}
+
+/// The hazards of a command's accesses, each with the memory it is found in.
+fn hazards_of<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    name: &'static str,
+    accesses: &[(Memory, Use)],
+) -> Vec<(Hazard, Memory)> {
+    let cmd = recorder.hazards.peek(name);
+    accesses
+        .iter()
+        .filter_map(|(m, u)| Some((recorder.hazards.hazard(m, &usage(u, cmd))?, *m)))
+        .collect()
+}
+
+/// The masks of the one barrier that orders every hazard found: from the earlier
+/// accesses' stages (and, for a write, its access type) to the later ones'.
+fn needed(found: &[(Hazard, Memory)]) -> (u64, u64, u64, u64) {
+    const ALL_COMMANDS: u64 = 0x10000;
+    found.iter().fold((0, 0, 0, 0), |(ss, sa, ds, da), (h, _)| {
+        // A layout transition is ordered by a barrier its own chains into.
+        let src_stage = if h.earlier.stage == 0 {
+            ALL_COMMANDS
+        } else {
+            h.earlier.stage
+        };
+        let (src_access, dst_access) = match h.earlier.write {
+            true => (h.earlier.access, h.later.access),
+            // After a read, an execution dependency is enough.
+            false => (0, 0),
+        };
+        (
+            ss | src_stage,
+            sa | src_access,
+            ds | h.later.stage,
+            da | dst_access,
+        )
+    })
+}
+
+/// The first version's stages a second version's mask needs (the bits past 31 are
+/// the first version's meta stages split up).
+fn narrow_stages(mask: u64) -> vk::PipelineStageFlags {
+    type S1 = vk::PipelineStageFlags;
+    let low = S1::from_raw(mask as u32);
+    let high = mask >> 32;
+    let mut out = low;
+    // COPY, RESOLVE, BLIT, CLEAR: TRANSFER.
+    if high & 0xf != 0 {
+        out |= S1::TRANSFER;
+    }
+    // INDEX_INPUT, VERTEX_ATTRIBUTE_INPUT: VERTEX_INPUT.
+    if high & 0x30 != 0 {
+        out |= S1::VERTEX_INPUT;
+    }
+    if high & !0x3f != 0 {
+        out |= S1::ALL_COMMANDS;
+    }
+    out
+}
+
+/// The first version's access types a second version's mask needs.
+fn narrow_access(mask: u64) -> vk::AccessFlags {
+    type A1 = vk::AccessFlags;
+    let mut out = A1::from_raw(mask as u32);
+    let high = mask >> 32;
+    // SHADER_SAMPLED_READ, SHADER_STORAGE_READ: SHADER_READ.
+    if high & 0x3 != 0 {
+        out |= A1::SHADER_READ;
+    }
+    // SHADER_STORAGE_WRITE: SHADER_WRITE.
+    if high & 0x4 != 0 {
+        out |= A1::SHADER_WRITE;
+    }
+    if high & !0x7 != 0 {
+        out |= A1::MEMORY_READ | A1::MEMORY_WRITE;
+    }
+    out
+}
+
+/// Records one global memory barrier with these masks (synchronization2's where the
+/// device enabled it, else the first version's that cover them) and applies it to the
+/// tracker.
+fn order<S: Scope>(recorder: &mut Recorder<'_, S>, (ss, sa, ds, da): (u64, u64, u64, u64)) {
+    let live = recorder.device().live();
+    let sync2 = live.with_features(|f| f.v13.synchronization2) != vk::FALSE;
+    let fns = recorder.device().fns();
+    let raw = recorder.raw();
+    let recorded = if sync2 {
+        let m = [vk::MemoryBarrier2::default()
+            .src_stage_mask(vk::PipelineStageFlags2::from_raw(ss))
+            .src_access_mask(vk::AccessFlags2::from_raw(sa))
+            .dst_stage_mask(vk::PipelineStageFlags2::from_raw(ds))
+            .dst_access_mask(vk::AccessFlags2::from_raw(da))];
+        let info = vk::DependencyInfo::default().memory_barriers(&m);
+        // SAFETY: a recording command buffer outside a render pass instance (the
+        // caller's check), synchronization2 enabled (VUID-vkCmdPipelineBarrier2-synchronization2-03848);
+        // the stages and access types are those of commands the recording just
+        // recorded or is about to, so the queue family supports them and each access
+        // type belongs to its stage (VUID-VkMemoryBarrier2-srcAccessMask-03900...).
+        unsafe { (fns.fp_v1_3().cmd_pipeline_barrier2)(raw, &info) };
+        (ss, sa, ds, da)
+    } else {
+        let (ss1, sa1) = (narrow_stages(ss), narrow_access(sa));
+        let (ds1, da1) = (narrow_stages(ds), narrow_access(da));
+        let m = [vk::MemoryBarrier::default()
+            .src_access_mask(sa1)
+            .dst_access_mask(da1)];
+        // SAFETY: as above, in the first version's masks, which are not empty
+        // (VUID-vkCmdPipelineBarrier-srcStageMask-03937): every hazard has a stage on
+        // both sides.
+        unsafe {
+            (fns.fp_v1_0().cmd_pipeline_barrier)(
+                raw,
+                ss1,
+                ds1,
+                vk::DependencyFlags::empty(),
+                1,
+                m.as_ptr(),
+                0,
+                core::ptr::null(),
+                0,
+                core::ptr::null(),
+            )
+        };
+        (
+            u64::from(ss1.as_raw()),
+            u64::from(sa1.as_raw()),
+            u64::from(ds1.as_raw()),
+            u64::from(da1.as_raw()),
+        )
+    };
+    let (_, hazards) = recorder.hazards_mut();
+    hazards.next("a barrier tuff recorded");
+    hazards.apply_global(&[Barrier::new(recorded.0, recorded.1, recorded.2, recorded.3)]);
+}
+
+/// A buffer range from an offset and a size (`VK_WHOLE_SIZE`: to the end).
+fn bytes(buffer: vk::Buffer, offset: u64, size: u64) -> Memory {
+    let end = if size == vk::WHOLE_SIZE {
+        u64::MAX
+    } else {
+        offset.saturating_add(size)
+    };
+    Memory::Buffer(buffer, offset, end)
+}
+
+/// `vkCmdCopyBuffer`: reads each region of the source, writes each of the destination.
+pub(crate) fn copy_buffer<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    src_buffer: &Buffer,
+    dst_buffer: &Buffer,
+    regions: &[vk::BufferCopy],
+) -> Result<()> {
+    let r = regions.iter().map(|r| (r.src_offset, r.dst_offset, r.size));
+    buffer_copy(recorder, facts, (src_buffer.raw(), dst_buffer.raw()), r)
+}
+
+/// `vkCmdCopyBuffer2`.
+pub(crate) fn copy_buffer2<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    info: &CopyBufferInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
+    let r = regions.iter().map(|r| (r.src_offset, r.dst_offset, r.size));
+    buffer_copy(recorder, facts, (raw.src_buffer, raw.dst_buffer), r)
+}
+
+fn buffer_copy<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    (src, dst): (vk::Buffer, vk::Buffer),
+    regions: impl Iterator<Item = (u64, u64, u64)>,
+) -> Result<()> {
+    let mut list = Vec::new();
+    for (so, d, size) in regions {
+        list.push((bytes(src, so, size), facts.src));
+        list.push((bytes(dst, d, size), facts.dst));
+    }
+    touch(recorder, facts.name, &list)
+}
+
+/// `vkCmdFillBuffer`: writes the range.
+pub(crate) fn fill_buffer<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    dst_buffer: &Buffer,
+    dst_offset: vk::DeviceSize,
+    size: vk::DeviceSize,
+) -> Result<()> {
+    let m = bytes(dst_buffer.raw(), dst_offset, size);
+    touch(recorder, facts.name, &[(m, facts.dst)])
+}
+
+/// `vkCmdUpdateBuffer`: writes the range.
+pub(crate) fn update_buffer<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    dst_buffer: &Buffer,
+    dst_offset: vk::DeviceSize,
+    data: &[u8],
+) -> Result<()> {
+    let m = bytes(dst_buffer.raw(), dst_offset, data.len() as u64);
+    touch(recorder, facts.name, &[(m, facts.dst)])
+}
+
+/// A command between images, or one that clears one: reads the subresources its
+/// source side names, writes those of its destination side.
+pub(crate) fn images<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    names: Names<'_>,
+) -> Result<()> {
+    let sides = names.sides();
+    let list: Vec<(Memory, Use)> = sides
+        .read
+        .into_iter()
+        .map(|(i, s)| (Memory::Image(i, s), facts.src))
+        .chain(
+            sides
+                .written
+                .into_iter()
+                .map(|(i, s)| (Memory::Image(i, s), facts.dst)),
+        )
+        .collect();
+    touch(recorder, facts.name, &list)
+}
+
+/// The bytes of `buffer` each buffer-image copy region reaches (Buffer and Image
+/// Addressing over the image's recorded format).
+fn buffer_side(
+    recorder: &Recorder<'_, impl Scope>,
+    buffer: vk::Buffer,
+    image: vk::Image,
+    regions: impl Iterator<Item = crate::special::copies::Region>,
+) -> Vec<Memory> {
+    let Some(record) = recorder.device().live().image(image) else {
+        return Vec::new();
+    };
+    regions
+        .map(|r| {
+            let end = crate::special::copies::buffer_image_end(
+                record.format,
+                r.subresource.aspect_mask,
+                r.offset,
+                r.row_length,
+                r.image_height,
+                r.extent,
+                r.subresource.layer_count,
+            )
+            .unwrap_or(u64::MAX);
+            Memory::Buffer(buffer, r.offset, end)
+        })
+        .collect()
+}
+
+/// A copy between a buffer and an image, `to_image` saying which way.
+fn buffer_image<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    (buffer, image, to_image): (vk::Buffer, vk::Image, bool),
+    regions: Vec<crate::special::copies::Region>,
+) -> Result<()> {
+    let (buffer_use, image_use) = match to_image {
+        true => (facts.src, facts.dst),
+        false => (facts.dst, facts.src),
+    };
+    let mut list: Vec<(Memory, Use)> =
+        buffer_side(recorder, buffer, image, regions.iter().copied())
+            .into_iter()
+            .map(|m| (m, buffer_use))
+            .collect();
+    list.extend(
+        regions
+            .iter()
+            .map(|r| (Memory::Image(image, Sel::layers(&r.subresource)), image_use)),
+    );
+    touch(recorder, facts.name, &list)
+}
+
+/// `vkCmdCopyBufferToImage`.
+pub(crate) fn copy_buffer_to_image<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    src_buffer: &Buffer,
+    dst_image: &Image,
+    regions: &[vk::BufferImageCopy],
+) -> Result<()> {
+    let r = regions.iter().map(Into::into).collect();
+    buffer_image(
+        recorder,
+        facts,
+        (src_buffer.raw(), dst_image.raw(), true),
+        r,
+    )
+}
+
+/// `vkCmdCopyImageToBuffer`.
+pub(crate) fn copy_image_to_buffer<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    src_image: &Image,
+    dst_buffer: &Buffer,
+    regions: &[vk::BufferImageCopy],
+) -> Result<()> {
+    let r = regions.iter().map(Into::into).collect();
+    buffer_image(
+        recorder,
+        facts,
+        (dst_buffer.raw(), src_image.raw(), false),
+        r,
+    )
+}
+
+/// `vkCmdCopyBufferToImage2`.
+pub(crate) fn copy_buffer_to_image2<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    info: &CopyBufferToImageInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
+    let r = regions.iter().map(Into::into).collect();
+    buffer_image(recorder, facts, (raw.src_buffer, raw.dst_image, true), r)
+}
+
+/// `vkCmdCopyImageToBuffer2`.
+pub(crate) fn copy_image_to_buffer2<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    info: &CopyImageToBufferInfo2<'_>,
+) -> Result<()> {
+    let raw = info.as_raw();
+    // SAFETY: the safe struct stores the array with its length.
+    let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
+    let r = regions.iter().map(Into::into).collect();
+    buffer_image(recorder, facts, (raw.dst_buffer, raw.src_image, false), r)
+}
+
+/// Applies one command's barriers: each image barrier's layout transition is checked
+/// against what came before (it writes the image between the two scopes); the
+/// memory barriers and every barrier's execution dependency order everything, each
+/// buffer and image barrier its memory.
+fn apply<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    name: &'static str,
+    barriers: &Barriers,
+    command_stages: Option<(u64, u64)>,
+) -> Result<()> {
+    let (live, hazards) = recorder.hazards_mut();
+    let cmd = hazards.next(name);
+    let of = |s: &crate::special::barriers::Scopes| {
+        Barrier::new(
+            s.src_stage.as_raw(),
+            s.src_access.as_raw(),
+            s.dst_stage.as_raw(),
+            s.dst_access.as_raw(),
+        )
+    };
+    let transitions: Vec<(vk::Image, Sel, Barrier)> = barriers
+        .images
+        .iter()
+        .filter(|b| b.layouts.0 != b.layouts.1)
+        .map(|b| (b.image, Sel::range(&b.range), of(&b.scopes)))
+        .collect();
+    for (image, sel, b) in &transitions {
+        if let Some(h) = hazards.transition_hazard(*image, sel, b, cmd) {
+            return Err(refuse(&h, &Memory::Image(*image, *sel)));
+        }
+    }
+    // Every barrier is an execution dependency of everything; a memory barrier a
+    // memory dependency of all memory.
+    let mut global: Vec<Barrier> = barriers.memory.iter().map(of).collect();
+    global.extend(
+        barriers
+            .buffers
+            .iter()
+            .map(|b| of(&b.scopes).execution())
+            .chain(barriers.images.iter().map(|b| of(&b.scopes).execution())),
+    );
+    if let Some((src, dst)) = command_stages {
+        global.push(Barrier::new(src, 0, dst, 0));
+    }
+    hazards.apply_global(&global);
+    for b in &barriers.buffers {
+        let (offset, size) = b.range;
+        let end = if size == vk::WHOLE_SIZE {
+            u64::MAX
+        } else {
+            offset.saturating_add(size)
+        };
+        hazards.apply_buffer(b.buffer, offset, end, &of(&b.scopes));
+    }
+    for b in &barriers.images {
+        let sel = Sel::range(&b.range);
+        let transition = (b.layouts.0 != b.layouts.1).then_some(cmd);
+        hazards.apply_image(live, b.image, &sel, &of(&b.scopes), transition);
+    }
+    Ok(())
+}
+
+/// `vkCmdPipelineBarrier`, and `vkCmdWaitEvents` (whose wait orders what its events'
+/// sets ordered before them, at most what the barrier's masks name).
+pub(crate) fn pipeline_barrier<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    (src_stage_mask, dst_stage_mask): (vk::PipelineStageFlags, vk::PipelineStageFlags),
+    memory_barriers: &[MemoryBarrier<'_>],
+    buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
+    image_memory_barriers: &[ImageMemoryBarrier<'_>],
+) -> Result<()> {
+    let barriers = Barriers::of(
+        (src_stage_mask, dst_stage_mask),
+        memory_barriers,
+        buffer_memory_barriers,
+        image_memory_barriers,
+    );
+    let stages = (
+        u64::from(src_stage_mask.as_raw()),
+        u64::from(dst_stage_mask.as_raw()),
+    );
+    apply(recorder, facts.name, &barriers, Some(stages))
+}
+
+/// `vkCmdPipelineBarrier2`, and each dependency of `vkCmdWaitEvents2`.
+pub(crate) fn pipeline_barrier2<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    dependency_infos: &[&DependencyInfo<'_>],
+) -> Result<()> {
+    for d in dependency_infos {
+        apply(recorder, facts.name, &Barriers::of2(d), None)?;
+    }
+    Ok(())
+}
+
+/// The dependencies of the recorder's render pass whose destination is `dst`
+/// (`VK_SUBPASS_EXTERNAL` at the end), as barriers: each orders everything recorded
+/// before it (its first scope is at most that).
+fn dependencies<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    name: &'static str,
+    render_pass: vk::RenderPass,
+    dst: u32,
+) {
+    let Some(record) = recorder.device().live().render_pass(render_pass) else {
+        return;
+    };
+    let barriers: Vec<Barrier> = record
+        .compatibility
+        .dependencies
+        .iter()
+        .filter(|d| d.0 .1 == dst)
+        .map(|((_, _), (ss, ds), (sa, da), _, _)| {
+            Barrier::new(
+                u64::from(ss.as_raw()),
+                u64::from(sa.as_raw()),
+                u64::from(ds.as_raw()),
+                u64::from(da.as_raw()),
+            )
+        })
+        .collect();
+    let (_, hazards) = recorder.hazards_mut();
+    hazards.next(name);
+    if !barriers.is_empty() {
+        hazards.apply_global(&barriers);
+    }
+}
+
+/// `vkCmdBeginRenderPass` and `vkCmdBeginRenderPass2`: the external dependencies
+/// into the first subpass.
+pub(crate) fn begin_render_pass<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    begin: &RenderPassBeginInfo<'_>,
+) -> Result<()> {
+    dependencies(recorder, facts.name, begin.as_raw().render_pass, 0);
+    Ok(())
+}
+
+/// `vkCmdNextSubpass` and `vkCmdNextSubpass2`: the dependencies into the next subpass.
+pub(crate) fn next_subpass<S: Scope>(recorder: &mut Recorder<'_, S>, facts: &Facts) -> Result<()> {
+    if let Some(i) = recorder.instance.as_ref() {
+        let (pass, next) = (i.render_pass, i.subpass + 1);
+        dependencies(recorder, facts.name, pass, next);
+    }
+    Ok(())
+}
+
+/// `vkCmdEndRenderPass` and `vkCmdEndRenderPass2`: the external dependencies out of
+/// the render pass.
+pub(crate) fn end_render_pass<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+) -> Result<()> {
+    if let Some(pass) = recorder.instance.as_ref().map(|i| i.render_pass) {
+        dependencies(recorder, facts.name, pass, vk::SUBPASS_EXTERNAL);
+    }
+    Ok(())
+}
+
+/// `vkCmdExecuteCommands`: the tracker does not see into the secondaries, so what
+/// the recording did before them is forgotten (no later command is refused for
+/// what came before them).
+pub(crate) fn execute_commands<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+) -> Result<()> {
+    let (_, hazards) = recorder.hazards_mut();
+    hazards.next(facts.name);
+    hazards.forget();
+    Ok(())
+}

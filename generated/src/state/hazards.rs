@@ -1,0 +1,679 @@
+//! Memory hazards inside one recording: for each buffer range and image subresource
+//! the recording touches, its last write and the reads since, and which later
+//! stages and access types the barriers recorded since have made them available and
+//! visible to. A command whose access is not ordered after a conflicting earlier one
+//! (read after write, write after read, write after write, a layout transition after
+//! either) by those barriers is a hazard.
+//!
+//! The model is the specification's, as the validation layer's synchronization
+//! validation writes it: a barrier's first scope is its source stages and every stage
+//! logically earlier (the registry's `<syncpipeline>` orders), its first access scope
+//! only the access types of the stages it names; an access is in a barrier's scope
+//! when its own stage and access type are, or when an earlier barrier already chained
+//! it to one of those stages. Stages and access types that stand for others (`ALL_TRANSFER`,
+//! `SHADER_READ`) are expanded through the registry's `syncequivalent`
+//! (`generated/sync_tables.rs`).
+//!
+//! What the recording found at its start (writes of earlier submissions) is not
+//! known here: the first access of each range is never a hazard.
+
+use crate::state::layouts::{Sel, Shape};
+use crate::state::Live;
+use crate::sync_tables::{ACCESSES, EVERY_STAGE, STAGES};
+use ash::vk::{self, Handle as _};
+use rustc_hash::FxHashMap as HashMap;
+use std::sync::OnceLock;
+
+/// The stage and access-type relations, indexed by bit, built once from the tables.
+struct Relations {
+    /// For each stage bit: the stages it stands for (itself if none).
+    stage: [u64; 64],
+    /// For each stage bit: the stages logically earlier.
+    earlier: [u64; 64],
+    /// For each stage bit: the stages logically later.
+    later: [u64; 64],
+    /// For each access bit: the access types it stands for (itself if none).
+    access: [u64; 64],
+    /// For each access bit: the stages it may be used with.
+    access_stages: [u64; 64],
+    /// Every access type that writes.
+    writes: u64,
+    /// Every access type that reads.
+    reads: u64,
+}
+
+fn relations() -> &'static Relations {
+    static R: OnceLock<Relations> = OnceLock::new();
+    R.get_or_init(|| {
+        let mut r = Relations {
+            stage: [0; 64],
+            earlier: [0; 64],
+            later: [0; 64],
+            access: [0; 64],
+            access_stages: [0; 64],
+            writes: 0,
+            reads: 0,
+        };
+        for s in STAGES.iter().filter(|s| s.bit != 0) {
+            let i = s.bit.trailing_zeros() as usize;
+            r.stage[i] = if s.stands_for != 0 {
+                s.stands_for
+            } else {
+                s.bit
+            };
+            r.earlier[i] = s.earlier;
+            r.later[i] = s.later;
+        }
+        for a in ACCESSES.iter().filter(|a| a.bit != 0) {
+            let i = a.bit.trailing_zeros() as usize;
+            r.access[i] = if a.stands_for != 0 {
+                a.stands_for
+            } else {
+                a.bit
+            };
+            r.access_stages[i] = a.stages;
+            if a.stands_for == 0 {
+                if a.write {
+                    r.writes |= a.bit;
+                } else {
+                    r.reads |= a.bit;
+                }
+            }
+        }
+        // MEMORY_READ and MEMORY_WRITE stand for every read and every write.
+        for a in ACCESSES.iter().filter(|a| a.bit != 0 && a.stands_for == 0) {
+            if a.name.ends_with("_MEMORY_READ_BIT") {
+                r.access[a.bit.trailing_zeros() as usize] = r.reads;
+            } else if a.name.ends_with("_MEMORY_WRITE_BIT") {
+                r.access[a.bit.trailing_zeros() as usize] = r.writes;
+            }
+        }
+        r
+    })
+}
+
+fn bits(mask: u64) -> impl Iterator<Item = usize> {
+    (0..64).filter(move |i| mask & (1 << i) != 0)
+}
+
+/// The real stages a mask names: the stages each stands for. `TOP_OF_PIPE` and
+/// `BOTTOM_OF_PIPE` name none; `ALL_COMMANDS` every one.
+pub(crate) fn expand_stages(mask: u64) -> u64 {
+    let r = relations();
+    bits(mask).fold(0, |m, i| m | r.stage[i]) & EVERY_STAGE
+}
+
+/// The access types a mask names, those that stand for others expanded.
+pub(crate) fn expand_access(mask: u64) -> u64 {
+    let r = relations();
+    bits(mask).fold(0, |m, i| m | r.access[i])
+}
+
+/// A command of the recording, for the messages: its name and its number.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Cmd {
+    /// `vkCmdCopyBuffer`.
+    pub(crate) name: &'static str,
+    /// Its place in the recording, from 0.
+    pub(crate) index: u32,
+}
+
+impl core::fmt::Display for Cmd {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "{} (command {} of the recording)", self.name, self.index)
+    }
+}
+
+/// One access by a command: one real stage and one access type (`0`, `0`: a layout
+/// transition, which happens between a barrier's two scopes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Usage {
+    /// The stage: a single bit, or more for a command the specification can be read
+    /// to run in either (a barrier naming any of them orders it).
+    pub(crate) stage: u64,
+    /// The access type, a single bit.
+    pub(crate) access: u64,
+    /// Whether the access writes.
+    pub(crate) write: bool,
+    /// The command.
+    pub(crate) cmd: Cmd,
+}
+
+impl Usage {
+    fn describe(&self) -> String {
+        if self.stage == 0 {
+            return format!("the layout transition of {}", self.cmd);
+        }
+        format!(
+            "{} at {} by {}",
+            name_of(ACCESSES.iter().map(|a| (a.name, a.bit)), self.access),
+            name_of(STAGES.iter().map(|s| (s.name, s.bit)), self.stage),
+            self.cmd
+        )
+    }
+}
+
+/// The names of the bits of `mask`, joined with " or ".
+fn name_of(items: impl Iterator<Item = (&'static str, u64)>, mask: u64) -> String {
+    let names: Vec<&str> = items
+        .filter(|i| i.1 != 0 && i.1 & mask == i.1 && i.1.is_power_of_two())
+        .map(|i| i.0)
+        .collect();
+    match names.is_empty() {
+        true => format!("0x{mask:x}"),
+        false => names.join(" or "),
+    }
+}
+
+/// The scopes of one barrier (or subpass dependency), expanded.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Barrier {
+    /// The first execution scope: the source stages and every stage logically earlier.
+    src_exec: u64,
+    /// The source stages named, expanded: the first access scope's stages.
+    src_stages: u64,
+    /// The first access scope's access types, expanded.
+    src_access: u64,
+    /// The second execution scope: the destination stages and every stage logically later.
+    dst_exec: u64,
+    /// The destination stages named, expanded.
+    dst_stages: u64,
+    /// The second access scope's access types, expanded.
+    dst_access: u64,
+}
+
+impl Barrier {
+    /// The scopes of a barrier with these masks (synchronization2's bits; the first
+    /// version's are the same numbers).
+    pub(crate) fn new(src_stages: u64, src_access: u64, dst_stages: u64, dst_access: u64) -> Self {
+        let r = relations();
+        const TOP: u64 = 0x1;
+        const BOTTOM: u64 = 0x2000;
+        let src = expand_stages(src_stages);
+        let dst = expand_stages(dst_stages);
+        // BOTTOM_OF_PIPE in the first scope waits for every stage; TOP_OF_PIPE in the
+        // second blocks every stage (both with no access).
+        let mut src_exec = bits(src).fold(src, |m, i| m | r.earlier[i]);
+        if src_stages & BOTTOM != 0 {
+            src_exec = EVERY_STAGE;
+        }
+        let mut dst_exec = bits(dst).fold(dst, |m, i| m | r.later[i]);
+        if dst_stages & TOP != 0 {
+            dst_exec = EVERY_STAGE;
+        }
+        Barrier {
+            src_exec,
+            src_stages: src,
+            src_access: expand_access(src_access),
+            dst_exec,
+            dst_stages: dst,
+            dst_access: expand_access(dst_access),
+        }
+    }
+
+    /// An execution dependency alone: the same stages, no access.
+    pub(crate) fn execution(&self) -> Barrier {
+        Barrier {
+            src_access: 0,
+            dst_access: 0,
+            ..*self
+        }
+    }
+}
+
+/// The last write of a range and what barriers have made it visible to.
+#[derive(Clone, Debug)]
+struct Write {
+    usage: Usage,
+    /// Each `(stages, access types)` the write is visible to (a union of products).
+    visible: Vec<(u64, u64)>,
+    /// The stages ordered after the write by the barriers so far.
+    chain: u64,
+}
+
+impl Write {
+    fn visible_to(&self, u: &Usage) -> bool {
+        self.visible
+            .iter()
+            .any(|&(s, a)| s & u.stage != 0 && a & u.access != 0)
+    }
+}
+
+/// A read since the last write, and the stages ordered after it.
+#[derive(Clone, Debug)]
+struct Read {
+    usage: Usage,
+    after: u64,
+}
+
+/// What the recording has done to one buffer range or image subresource.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct State {
+    write: Option<Write>,
+    reads: Vec<Read>,
+}
+
+/// Two accesses the recording does not order.
+#[derive(Clone, Debug)]
+pub(crate) struct Hazard {
+    /// `READ_AFTER_WRITE`, `WRITE_AFTER_READ` or `WRITE_AFTER_WRITE`, as the
+    /// validation layer's `SYNC-HAZARD-...` names them.
+    pub(crate) kind: &'static str,
+    /// The earlier access.
+    pub(crate) earlier: Usage,
+    /// The later one.
+    pub(crate) later: Usage,
+}
+
+impl Hazard {
+    /// The message: what, the two commands, and the barrier that would order them.
+    pub(crate) fn message(&self, resource: &str) -> String {
+        let fix = if self.earlier.write {
+            let src = if self.earlier.stage == 0 {
+                "the stages of the transition's barrier".to_owned()
+            } else {
+                format!(
+                    "{} with {}",
+                    name_of(STAGES.iter().map(|s| (s.name, s.bit)), self.earlier.stage),
+                    name_of(
+                        ACCESSES.iter().map(|a| (a.name, a.bit)),
+                        self.earlier.access
+                    )
+                )
+            };
+            format!(
+                "a barrier from {src} to {} with {} between them",
+                name_of(STAGES.iter().map(|s| (s.name, s.bit)), self.later.stage),
+                if self.later.stage == 0 {
+                    "its access".to_owned()
+                } else {
+                    name_of(ACCESSES.iter().map(|a| (a.name, a.bit)), self.later.access)
+                }
+            )
+        } else {
+            format!(
+                "an execution dependency from {} to {} between them",
+                name_of(STAGES.iter().map(|s| (s.name, s.bit)), self.earlier.stage),
+                if self.later.stage == 0 {
+                    "the transition's stages".to_owned()
+                } else {
+                    name_of(STAGES.iter().map(|s| (s.name, s.bit)), self.later.stage)
+                }
+            )
+        };
+        format!(
+            "{}: {} of {resource} is not ordered after {}; it needs {fix}",
+            self.kind,
+            self.later.describe(),
+            self.earlier.describe()
+        )
+    }
+}
+
+impl State {
+    /// The hazard of `u` after what the state holds, if any.
+    fn hazard(&self, u: &Usage) -> Option<Hazard> {
+        let found = |kind, earlier: &Usage| {
+            Some(Hazard {
+                kind,
+                earlier: *earlier,
+                later: *u,
+            })
+        };
+        if !u.write {
+            return match &self.write {
+                Some(w) if !w.visible_to(u) => found("READ_AFTER_WRITE", &w.usage),
+                _ => None,
+            };
+        }
+        if !self.reads.is_empty() {
+            return self
+                .reads
+                .iter()
+                .find(|r| u.stage & r.after == 0)
+                .and_then(|r| found("WRITE_AFTER_READ", &r.usage));
+        }
+        match &self.write {
+            Some(w) if !w.visible_to(u) => found("WRITE_AFTER_WRITE", &w.usage),
+            _ => None,
+        }
+    }
+
+    /// The hazard of a layout transition between `b`'s scopes, if any: every earlier
+    /// access must be in its first scope.
+    fn transition_hazard(&self, b: &Barrier, cmd: Cmd) -> Option<Hazard> {
+        let later = Usage {
+            stage: 0,
+            access: 0,
+            write: true,
+            cmd,
+        };
+        if let Some(r) = self
+            .reads
+            .iter()
+            .find(|r| (r.usage.stage | r.after) & b.src_exec == 0)
+        {
+            return Some(Hazard {
+                kind: "WRITE_AFTER_READ",
+                earlier: r.usage,
+                later,
+            });
+        }
+        if self.reads.is_empty() {
+            if let Some(w) = &self.write {
+                if !in_first_scope(w, b) {
+                    return Some(Hazard {
+                        kind: "WRITE_AFTER_WRITE",
+                        earlier: w.usage,
+                        later,
+                    });
+                }
+            }
+        }
+        None
+    }
+
+    fn record(&mut self, u: Usage) {
+        if u.write {
+            self.reads.clear();
+            self.write = Some(Write {
+                usage: u,
+                visible: Vec::new(),
+                chain: 0,
+            });
+        } else if let Some(r) = self.reads.iter_mut().find(|r| r.usage.stage == u.stage) {
+            r.usage = u;
+            r.after = 0;
+        } else {
+            self.reads.push(Read { usage: u, after: 0 });
+        }
+    }
+
+    /// Applies the barriers of one command, all against the state before any of them.
+    fn apply(&mut self, barriers: &[Barrier]) {
+        if let Some(w) = &mut self.write {
+            let mut chain = 0;
+            let mut visible: Vec<(u64, u64)> = Vec::new();
+            for b in barriers.iter().filter(|b| in_first_scope(w, b)) {
+                chain |= b.dst_exec;
+                if b.dst_access != 0 {
+                    visible.push((b.dst_stages, b.dst_access));
+                }
+            }
+            w.chain |= chain;
+            for (s, a) in visible {
+                match w.visible.iter_mut().find(|v| v.0 == s) {
+                    Some(v) => v.1 |= a,
+                    None => w.visible.push((s, a)),
+                }
+            }
+        }
+        for r in &mut self.reads {
+            let from = r.usage.stage | r.after;
+            r.after |= barriers
+                .iter()
+                .filter(|b| from & b.src_exec != 0)
+                .fold(0, |m, b| m | b.dst_exec);
+        }
+    }
+
+    /// A layout transition between `b`'s scopes: a write, visible to its second scope.
+    fn transition(&mut self, b: &Barrier, cmd: Cmd) {
+        self.reads.clear();
+        self.write = Some(Write {
+            usage: Usage {
+                stage: 0,
+                access: 0,
+                write: true,
+                cmd,
+            },
+            visible: if b.dst_access != 0 {
+                vec![(b.dst_stages, b.dst_access)]
+            } else {
+                Vec::new()
+            },
+            chain: b.dst_exec,
+        });
+    }
+}
+
+/// Whether a write is in a barrier's first scope: its stage and access type are, or a
+/// barrier before chained it to one of its stages.
+fn in_first_scope(w: &Write, b: &Barrier) -> bool {
+    (w.usage.stage & b.src_stages != 0 && w.usage.access & b.src_access != 0)
+        || w.chain & b.src_exec != 0
+}
+
+/// One buffer's ranges, each with its state, sorted and disjoint.
+#[derive(Clone, Debug, Default)]
+struct Ranges(Vec<(u64, u64, State)>);
+
+impl Ranges {
+    /// Splits the ranges at `at`.
+    fn split(&mut self, at: u64) {
+        if let Some(i) = self.0.iter().position(|r| r.0 < at && at < r.1) {
+            let mut right = self.0[i].clone();
+            right.0 = at;
+            self.0[i].1 = at;
+            self.0.insert(i + 1, right);
+        }
+    }
+
+    /// The states of `start..end`, the range made whole (untouched parts added).
+    fn cover(&mut self, start: u64, end: u64) -> impl Iterator<Item = &mut State> {
+        self.split(start);
+        self.split(end);
+        let mut at = start;
+        let mut gaps = Vec::new();
+        for r in self.0.iter().filter(|r| r.1 > start && r.0 < end) {
+            if r.0 > at {
+                gaps.push((at, r.0));
+            }
+            at = r.1;
+        }
+        if at < end {
+            gaps.push((at, end));
+        }
+        for (s, e) in gaps {
+            let i = self.0.partition_point(|r| r.0 < s);
+            self.0.insert(i, (s, e, State::default()));
+        }
+        self.0
+            .iter_mut()
+            .filter(move |r| r.1 > start && r.0 < end)
+            .map(|r| &mut r.2)
+    }
+
+    fn states(&self, start: u64, end: u64) -> impl Iterator<Item = &State> {
+        self.0
+            .iter()
+            .filter(move |r| r.1 > start && r.0 < end)
+            .map(|r| &r.2)
+    }
+}
+
+/// One image's subresources, each with its state.
+#[derive(Clone, Debug)]
+struct Subresources {
+    shape: Shape,
+    states: Vec<State>,
+}
+
+/// Some memory a command touches: a buffer range or an image's subresources.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Memory {
+    /// A buffer and a range of its bytes (`start..end`).
+    Buffer(vk::Buffer, u64, u64),
+    /// An image and some of its subresources.
+    Image(vk::Image, Sel),
+}
+
+impl Memory {
+    /// How a message names it.
+    pub(crate) fn describe(&self) -> String {
+        match self {
+            Memory::Buffer(b, s, e) => format!("bytes {s}..{e} of buffer 0x{:x}", b.as_raw()),
+            Memory::Image(i, sel) => format!(
+                "{:?} of mip levels {}..{}, array layers {}..{} of image 0x{:x}",
+                sel.aspect,
+                sel.mips.0,
+                sel.mips.1,
+                sel.layers.0,
+                sel.layers.1,
+                i.as_raw()
+            ),
+        }
+    }
+}
+
+/// What one recording has done to the memory it touched.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Recording {
+    buffers: HashMap<u64, Ranges>,
+    images: HashMap<u64, Subresources>,
+    /// How many commands the recording has recorded that the tracker saw.
+    commands: u32,
+    /// Whether a hazard gets the barrier that orders it, rather than an error.
+    pub(crate) auto: bool,
+}
+
+impl Recording {
+    /// The next command's place in the recording.
+    pub(crate) fn next(&mut self, name: &'static str) -> Cmd {
+        let cmd = Cmd {
+            name,
+            index: self.commands,
+        };
+        self.commands += 1;
+        cmd
+    }
+
+    /// What [`Recording::next`] will return, without counting it.
+    pub(crate) fn peek(&self, name: &'static str) -> Cmd {
+        Cmd {
+            name,
+            index: self.commands,
+        }
+    }
+
+    fn image(&mut self, live: &Live, image: vk::Image) -> Option<&mut Subresources> {
+        use std::collections::hash_map::Entry;
+        match self.images.entry(image.as_raw()) {
+            Entry::Occupied(e) => Some(e.into_mut()),
+            Entry::Vacant(e) => {
+                let shape = Shape::of(&live.image(image)?);
+                let states = vec![State::default(); shape.len()];
+                Some(e.insert(Subresources { shape, states }))
+            }
+        }
+    }
+
+    /// The first hazard of an access to `memory`, if any.
+    pub(crate) fn hazard(&self, memory: &Memory, u: &Usage) -> Option<Hazard> {
+        match memory {
+            Memory::Buffer(b, s, e) => self
+                .buffers
+                .get(&b.as_raw())?
+                .states(*s, *e)
+                .find_map(|st| st.hazard(u)),
+            Memory::Image(i, sel) => {
+                let sub = self.images.get(&i.as_raw())?;
+                sub.shape.indices(sel).find_map(|k| sub.states[k].hazard(u))
+            }
+        }
+    }
+
+    /// Records an access to `memory`.
+    pub(crate) fn record(&mut self, live: &Live, memory: &Memory, u: Usage) {
+        match memory {
+            Memory::Buffer(b, s, e) => {
+                if s < e {
+                    for st in self.buffers.entry(b.as_raw()).or_default().cover(*s, *e) {
+                        st.record(u);
+                    }
+                }
+            }
+            Memory::Image(i, sel) => {
+                if let Some(sub) = self.image(live, *i) {
+                    let Subresources { shape, states } = sub;
+                    for k in shape.indices(sel) {
+                        states[k].record(u);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The hazard of a layout transition of `image`'s subresources `sel` between
+    /// `b`'s scopes, if any.
+    pub(crate) fn transition_hazard(
+        &self,
+        image: vk::Image,
+        sel: &Sel,
+        b: &Barrier,
+        cmd: Cmd,
+    ) -> Option<Hazard> {
+        let sub = self.images.get(&image.as_raw())?;
+        sub.shape
+            .indices(sel)
+            .find_map(|k| sub.states[k].transition_hazard(b, cmd))
+    }
+
+    /// Applies barriers to everything the recording touched (memory barriers and
+    /// execution dependencies).
+    pub(crate) fn apply_global(&mut self, barriers: &[Barrier]) {
+        for r in self.buffers.values_mut() {
+            for st in &mut r.0 {
+                st.2.apply(barriers);
+            }
+        }
+        for sub in self.images.values_mut() {
+            for st in &mut sub.states {
+                st.apply(barriers);
+            }
+        }
+    }
+
+    /// Applies a barrier to a buffer range.
+    pub(crate) fn apply_buffer(&mut self, buffer: vk::Buffer, start: u64, end: u64, b: &Barrier) {
+        if let Some(r) = self.buffers.get_mut(&buffer.as_raw()) {
+            if start < end {
+                for st in r.cover(start, end) {
+                    st.apply(core::slice::from_ref(b));
+                }
+            }
+        }
+    }
+
+    /// Applies a barrier to an image's subresources, with a layout transition
+    /// between its scopes when `transition`.
+    pub(crate) fn apply_image(
+        &mut self,
+        live: &Live,
+        image: vk::Image,
+        sel: &Sel,
+        b: &Barrier,
+        transition: Option<Cmd>,
+    ) {
+        let Some(sub) = (match transition {
+            Some(_) => self.image(live, image),
+            None => self.images.get_mut(&image.as_raw()),
+        }) else {
+            return;
+        };
+        let Subresources { shape, states } = sub;
+        for k in shape.indices(sel) {
+            match transition {
+                Some(cmd) => states[k].transition(b, cmd),
+                None => states[k].apply(core::slice::from_ref(b)),
+            }
+        }
+    }
+
+    /// Forgets everything: what the recording did before is no longer known (a
+    /// command the tracker cannot see into ran).
+    pub(crate) fn forget(&mut self) {
+        self.buffers.clear();
+        self.images.clear();
+    }
+}

@@ -1,0 +1,384 @@
+//! What each recording command reads and writes, for the hazard tracker: one
+//! reviewed table of per-command facts (which parameter is read or written, at
+//! which stage and access type of synchronization2) over the registry's sync
+//! tables, which say which stages each access type may be used with. A row whose
+//! stage or access type the tables lack, or whose access type the tables do not
+//! allow at its stage, stops the generator.
+//!
+//! Each row names the crate's `special::hazards` function that reads the memory
+//! from the command's parameters; the emitted safe method calls it last, before the
+//! command is recorded, with the row's facts (`sync_tables::CMD_*`). A recording
+//! command without a row is one whose accesses the tracker does not know: the
+//! report lists them as left to the user.
+
+use super::special::Call;
+use crate::model::SyncTables;
+
+/// One access of a command: a role (the field of the crate's `Facts` it fills:
+/// `src`, `dst`), a stage and an access type, as the registry spells them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Use {
+    /// `src` or `dst`.
+    pub role: &'static str,
+    /// `VK_PIPELINE_STAGE_2_COPY_BIT`; a comma-separated list for a command the
+    /// specification can be read to run in either stage.
+    pub stage: &'static str,
+    /// `VK_ACCESS_2_TRANSFER_READ_BIT`.
+    pub access: &'static str,
+}
+
+/// One command's facts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Accesses {
+    /// `vkCmdCopyBuffer`.
+    pub command: &'static str,
+    /// The crate function that declares the command's accesses to the tracker.
+    pub call: Call,
+    /// Its accesses (none for a command that only orders others: a barrier).
+    pub uses: &'static [Use],
+    /// What it does to the tracker besides its accesses, for the report.
+    pub does: &'static str,
+}
+
+const fn call(path: &'static str, args: &'static [&'static str]) -> Call {
+    Call {
+        path,
+        args,
+        promise: None,
+    }
+}
+
+const COPY_READ: Use = Use {
+    role: "src",
+    stage: "VK_PIPELINE_STAGE_2_COPY_BIT",
+    access: "VK_ACCESS_2_TRANSFER_READ_BIT",
+};
+const COPY_WRITE: Use = Use {
+    role: "dst",
+    stage: "VK_PIPELINE_STAGE_2_COPY_BIT",
+    access: "VK_ACCESS_2_TRANSFER_WRITE_BIT",
+};
+const COPY: &[Use] = &[COPY_READ, COPY_WRITE];
+const BLIT: &[Use] = &[
+    Use {
+        role: "src",
+        stage: "VK_PIPELINE_STAGE_2_BLIT_BIT",
+        access: "VK_ACCESS_2_TRANSFER_READ_BIT",
+    },
+    Use {
+        role: "dst",
+        stage: "VK_PIPELINE_STAGE_2_BLIT_BIT",
+        access: "VK_ACCESS_2_TRANSFER_WRITE_BIT",
+    },
+];
+const RESOLVE: &[Use] = &[
+    Use {
+        role: "src",
+        stage: "VK_PIPELINE_STAGE_2_RESOLVE_BIT",
+        access: "VK_ACCESS_2_TRANSFER_READ_BIT",
+    },
+    Use {
+        role: "dst",
+        stage: "VK_PIPELINE_STAGE_2_RESOLVE_BIT",
+        access: "VK_ACCESS_2_TRANSFER_WRITE_BIT",
+    },
+];
+/// Clear commands: the specification's `VK_PIPELINE_STAGE_2_CLEAR_BIT` covers
+/// `vkCmdClearColorImage` and `vkCmdClearDepthStencilImage`.
+const CLEAR: &[Use] = &[Use {
+    role: "dst",
+    stage: "VK_PIPELINE_STAGE_2_CLEAR_BIT",
+    access: "VK_ACCESS_2_TRANSFER_WRITE_BIT",
+}];
+/// `vkCmdFillBuffer` and `vkCmdUpdateBuffer`: the specification describes them among
+/// the clear commands and calls them "transfer" operations; the validation layer's
+/// synchronization validation times them at `COPY` (the corpus shows it). Both
+/// stages are theirs, so a barrier naming either orders them: no correct program
+/// under either reading is refused.
+const FILL: &[Use] = &[Use {
+    role: "dst",
+    stage: "VK_PIPELINE_STAGE_2_COPY_BIT,VK_PIPELINE_STAGE_2_CLEAR_BIT",
+    access: "VK_ACCESS_2_TRANSFER_WRITE_BIT",
+}];
+
+/// A command that reads or writes images through the layout tracker's shapes.
+macro_rules! images {
+    ($command:literal, $names:literal, $uses:expr) => {
+        Accesses {
+            command: $command,
+            call: call("special::hazards::images", &["self", "&facts", $names]),
+            uses: $uses,
+            does: "",
+        }
+    };
+}
+
+/// The table.
+pub const ROWS: &[Accesses] = &[
+    Accesses {
+        command: "vkCmdCopyBuffer",
+        call: call(
+            "special::hazards::copy_buffer",
+            &["self", "&facts", "src_buffer", "dst_buffer", "regions"],
+        ),
+        uses: COPY,
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdCopyBuffer2",
+        call: call(
+            "special::hazards::copy_buffer2",
+            &["self", "&facts", "copy_buffer_info"],
+        ),
+        uses: COPY,
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdCopyBufferToImage",
+        call: call(
+            "special::hazards::copy_buffer_to_image",
+            &["self", "&facts", "src_buffer", "dst_image", "regions"],
+        ),
+        uses: COPY,
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdCopyBufferToImage2",
+        call: call(
+            "special::hazards::copy_buffer_to_image2",
+            &["self", "&facts", "copy_buffer_to_image_info"],
+        ),
+        uses: COPY,
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdCopyImageToBuffer",
+        call: call(
+            "special::hazards::copy_image_to_buffer",
+            &["self", "&facts", "src_image", "dst_buffer", "regions"],
+        ),
+        uses: COPY,
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdCopyImageToBuffer2",
+        call: call(
+            "special::hazards::copy_image_to_buffer2",
+            &["self", "&facts", "copy_image_to_buffer_info"],
+        ),
+        uses: COPY,
+        does: "",
+    },
+    images!(
+        "vkCmdCopyImage",
+        "crate::special::image_layouts::Names::CopyImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)",
+        COPY
+    ),
+    images!(
+        "vkCmdCopyImage2",
+        "crate::special::image_layouts::Names::CopyImage2(copy_image_info)",
+        COPY
+    ),
+    images!(
+        "vkCmdBlitImage",
+        "crate::special::image_layouts::Names::BlitImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)",
+        BLIT
+    ),
+    images!(
+        "vkCmdBlitImage2",
+        "crate::special::image_layouts::Names::BlitImage2(blit_image_info)",
+        BLIT
+    ),
+    images!(
+        "vkCmdResolveImage",
+        "crate::special::image_layouts::Names::ResolveImage(src_image.raw(), src_image_layout, dst_image.raw(), dst_image_layout, regions)",
+        RESOLVE
+    ),
+    images!(
+        "vkCmdResolveImage2",
+        "crate::special::image_layouts::Names::ResolveImage2(resolve_image_info)",
+        RESOLVE
+    ),
+    images!(
+        "vkCmdClearColorImage",
+        "crate::special::image_layouts::Names::ClearColor(image.raw(), image_layout, ranges)",
+        CLEAR
+    ),
+    images!(
+        "vkCmdClearDepthStencilImage",
+        "crate::special::image_layouts::Names::ClearDepthStencil(image.raw(), image_layout, ranges)",
+        CLEAR
+    ),
+    Accesses {
+        command: "vkCmdFillBuffer",
+        call: call(
+            "special::hazards::fill_buffer",
+            &["self", "&facts", "dst_buffer", "dst_offset", "size"],
+        ),
+        uses: FILL,
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdUpdateBuffer",
+        call: call(
+            "special::hazards::update_buffer",
+            &["self", "&facts", "dst_buffer", "dst_offset", "data"],
+        ),
+        uses: FILL,
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdPipelineBarrier",
+        call: call(
+            "special::hazards::pipeline_barrier",
+            &[
+                "self",
+                "&facts",
+                "(src_stage_mask, dst_stage_mask)",
+                "memory_barriers",
+                "buffer_memory_barriers",
+                "image_memory_barriers",
+            ],
+        ),
+        uses: &[],
+        does: "its barriers order the accesses before them against those after",
+    },
+    Accesses {
+        command: "vkCmdPipelineBarrier2",
+        call: call(
+            "special::hazards::pipeline_barrier2",
+            &["self", "&facts", "&[dependency_info]"],
+        ),
+        uses: &[],
+        does: "its barriers order the accesses before them against those after",
+    },
+    Accesses {
+        command: "vkCmdWaitEvents",
+        call: call(
+            "special::hazards::pipeline_barrier",
+            &[
+                "self",
+                "&facts",
+                "(src_stage_mask, dst_stage_mask)",
+                "memory_barriers",
+                "buffer_memory_barriers",
+                "image_memory_barriers",
+            ],
+        ),
+        uses: &[],
+        does: "its barriers order the accesses before them against those after",
+    },
+    Accesses {
+        command: "vkCmdWaitEvents2",
+        call: call(
+            "special::hazards::pipeline_barrier2",
+            &["self", "&facts", "&dependency_infos.iter().collect::<Vec<_>>()"],
+        ),
+        uses: &[],
+        does: "its barriers order the accesses before them against those after",
+    },
+    Accesses {
+        command: "vkCmdBeginRenderPass",
+        call: call(
+            "special::hazards::begin_render_pass",
+            &["self", "&facts", "render_pass_begin"],
+        ),
+        uses: &[],
+        does: "the render pass's dependencies into the subpass it begins (or out of the pass) order the accesses before against those after",
+    },
+    Accesses {
+        command: "vkCmdBeginRenderPass2",
+        call: call(
+            "special::hazards::begin_render_pass",
+            &["self", "&facts", "render_pass_begin"],
+        ),
+        uses: &[],
+        does: "the render pass's dependencies into the subpass it begins (or out of the pass) order the accesses before against those after",
+    },
+    Accesses {
+        command: "vkCmdNextSubpass",
+        call: call("special::hazards::next_subpass", &["self", "&facts"]),
+        uses: &[],
+        does: "the render pass's dependencies into the subpass it begins (or out of the pass) order the accesses before against those after",
+    },
+    Accesses {
+        command: "vkCmdNextSubpass2",
+        call: call("special::hazards::next_subpass", &["self", "&facts"]),
+        uses: &[],
+        does: "the render pass's dependencies into the subpass it begins (or out of the pass) order the accesses before against those after",
+    },
+    Accesses {
+        command: "vkCmdEndRenderPass",
+        call: call("special::hazards::end_render_pass", &["self", "&facts"]),
+        uses: &[],
+        does: "the render pass's dependencies into the subpass it begins (or out of the pass) order the accesses before against those after",
+    },
+    Accesses {
+        command: "vkCmdEndRenderPass2",
+        call: call("special::hazards::end_render_pass", &["self", "&facts"]),
+        uses: &[],
+        does: "the render pass's dependencies into the subpass it begins (or out of the pass) order the accesses before against those after",
+    },
+    Accesses {
+        command: "vkCmdExecuteCommands",
+        call: call("special::hazards::execute_commands", &["self", "&facts"]),
+        uses: &[],
+        does: "the tracker does not see into the secondaries: what the recording did before is forgotten (no later command is refused for it)",
+    },
+];
+
+/// The row of a command, if the tracker knows its accesses.
+pub fn row(command: &str) -> Option<&'static Accesses> {
+    ROWS.iter().find(|r| r.command == command)
+}
+
+/// The name of the facts constant of a command: `vkCmdCopyBuffer` -> `CMD_COPY_BUFFER`.
+pub fn facts_name(command: &str) -> String {
+    use heck::ToShoutySnakeCase as _;
+    command
+        .strip_prefix("vk")
+        .unwrap_or(command)
+        .to_shouty_snake_case()
+}
+
+/// Refuses a row whose stage or access type the tables lack, or whose access type
+/// the tables do not allow at its stage.
+pub fn check(tables: &SyncTables) -> Result<(), String> {
+    for row in ROWS {
+        for (u, name) in row
+            .uses
+            .iter()
+            .flat_map(|u| u.stage.split(',').map(move |n| (u, n)))
+        {
+            let stage = tables
+                .stages
+                .iter()
+                .find(|s| s.name == name)
+                .ok_or_else(|| format!("{}: no stage {name} in <sync>", row.command))?;
+            let access = tables
+                .accesses
+                .iter()
+                .find(|a| a.name == u.access)
+                .ok_or_else(|| format!("{}: no access type {} in <sync>", row.command, u.access))?;
+            if let Some(stages) = &access.stages {
+                let allowed = stages.iter().any(|s| {
+                    s == &stage.name
+                        || tables
+                            .stages
+                            .iter()
+                            .any(|m| &m.name == s && m.equivalent.contains(&stage.name))
+                });
+                if !allowed {
+                    return Err(format!(
+                        "{}: the registry does not allow {} at {name}",
+                        row.command, u.access
+                    ));
+                }
+            }
+            if !matches!(u.role, "src" | "dst") {
+                return Err(format!("{}: no role {}", row.command, u.role));
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,684 @@
+//! Memory hazards inside a recording: a corpus of small programs, each a command
+//! that reads or writes what an earlier one wrote or read, with the barrier that
+//! orders them missing or too weak, and the same program with it right.
+//!
+//! Each broken program runs twice (`tuff_setup::breaks`): through the safe methods,
+//! where tuff must refuse its last command with the hazard's identifier and the
+//! layer say nothing, and with that command through its `_unchecked` twin, where the
+//! layer's synchronization validation (on in every test setup) must report the same
+//! hazard: so the corpus proves itself against the layer. Each fixed program is
+//! recorded through the safe methods, submitted and waited for: tuff refuses
+//! nothing and the layer, synchronization validation included, says nothing.
+//!
+//! SAFETY of the `unsafe` blocks: each `_unchecked` call breaks only the ordering
+//! under test, which the layer reports and so skips; the buffer is never submitted.
+
+#[path = "common/tuff_setup.rs"]
+mod tuff_setup;
+#[path = "common/vulkan.rs"]
+mod vulkan;
+
+use tuff::vk;
+use tuff_setup::{breaks, setup, Layer, Setup};
+use vulkan::assert_silent;
+
+type L = vk::ImageLayout;
+type S = vk::PipelineStageFlags;
+type A = vk::AccessFlags;
+type S2 = vk::PipelineStageFlags2;
+type A2 = vk::AccessFlags2;
+type Rec<'c> = tuff::Recorder<'c, tuff::Outside>;
+
+const RAW: &str = "SYNC-HAZARD-READ-AFTER-WRITE";
+const WAR: &str = "SYNC-HAZARD-WRITE-AFTER-READ";
+const WAW: &str = "SYNC-HAZARD-WRITE-AFTER-WRITE";
+const IGNORED: u32 = vk::QUEUE_FAMILY_IGNORED;
+
+/// The buffers, image and event the programs use.
+struct Objects {
+    a: tuff::Buffer,
+    b: tuff::Buffer,
+    c: tuff::Buffer,
+    /// RGBA8, 4x4, a transfer source and destination.
+    image: tuff::Image,
+    event: tuff::Event,
+    _memory: Vec<tuff::DeviceMemory>,
+}
+
+fn buffer(s: &Setup) -> (tuff::Buffer, tuff::DeviceMemory) {
+    let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
+    let b = s
+        .device
+        .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
+        .expect("buffer");
+    let needs = s.device.get_buffer_memory_requirements(&b).expect("needs");
+    let m = s
+        .device
+        .allocate_memory(
+            &tuff::MemoryAllocateInfo::new()
+                .allocation_size(needs.size)
+                .memory_type_index(
+                    s.memory_type(needs.memory_type_bits, vk::MemoryPropertyFlags::empty()),
+                ),
+        )
+        .expect("memory");
+    s.device.bind_buffer_memory(&b, &m, 0).expect("bind");
+    (b, m)
+}
+
+fn objects(s: &Setup) -> Objects {
+    let (a, m1) = buffer(s);
+    let (b, m2) = buffer(s);
+    let (c, m3) = buffer(s);
+    let image = s
+        .device
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 4,
+                    height: 4,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(1)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST),
+        )
+        .expect("image");
+    let m4 = s.bind_image(&image);
+    let event = s
+        .device
+        .create_event(&tuff::EventCreateInfo::new())
+        .expect("event");
+    Objects {
+        a,
+        b,
+        c,
+        image,
+        event,
+        _memory: vec![m1, m2, m3, m4],
+    }
+}
+
+fn region(src: u64, dst: u64, size: u64) -> [vk::BufferCopy; 1] {
+    [vk::BufferCopy {
+        src_offset: src,
+        dst_offset: dst,
+        size,
+    }]
+}
+
+const WHOLE: vk::ImageSubresourceRange = vk::ImageSubresourceRange {
+    aspect_mask: vk::ImageAspectFlags::COLOR,
+    base_mip_level: 0,
+    level_count: 1,
+    base_array_layer: 0,
+    layer_count: 1,
+};
+
+fn texels() -> [vk::BufferImageCopy; 1] {
+    [vk::BufferImageCopy {
+        buffer_offset: 0,
+        buffer_row_length: 0,
+        buffer_image_height: 0,
+        image_subresource: vk::ImageSubresourceLayers {
+            aspect_mask: vk::ImageAspectFlags::COLOR,
+            mip_level: 0,
+            base_array_layer: 0,
+            layer_count: 1,
+        },
+        image_offset: vk::Offset3D::default(),
+        image_extent: vk::Extent3D {
+            width: 4,
+            height: 4,
+            depth: 1,
+        },
+    }]
+}
+
+/// A global memory barrier of the first version.
+fn barrier(rec: &mut Rec<'_>, (ss, sa): (S, A), (ds, da): (S, A)) -> tuff::Result<()> {
+    let m = [tuff::MemoryBarrier::new()
+        .src_access_mask(sa)
+        .dst_access_mask(da)];
+    rec.pipeline_barrier(ss, ds, vk::DependencyFlags::empty(), &m, &[], &[])
+}
+
+/// The first version's image barrier of the whole image, from `old` to `new`.
+fn image_barrier(
+    o: &Objects,
+    (old, new): (L, L),
+    (sa, da): (A, A),
+) -> [tuff::ImageMemoryBarrier<'_>; 1] {
+    [tuff::ImageMemoryBarrier::new(&o.image)
+        .old_layout(old)
+        .new_layout(new)
+        .src_access_mask(sa)
+        .dst_access_mask(da)
+        .src_queue_family_index(IGNORED)
+        .dst_queue_family_index(IGNORED)
+        .subresource_range(WHOLE)]
+}
+
+/// The image out of UNDEFINED into TRANSFER_DST_OPTIMAL, before the transfers.
+fn to_dst(o: &Objects, rec: &mut Rec<'_>) -> tuff::Result<()> {
+    let b = image_barrier(
+        o,
+        (L::UNDEFINED, L::TRANSFER_DST_OPTIMAL),
+        (A::empty(), A::TRANSFER_WRITE),
+    );
+    rec.pipeline_barrier(
+        S::TOP_OF_PIPE,
+        S::TRANSFER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &b,
+    )
+}
+
+/// The image into TRANSFER_DST_OPTIMAL, then cleared.
+fn clear(o: &Objects, rec: &mut Rec<'_>) -> tuff::Result<()> {
+    to_dst(o, rec)?;
+    let color = vk::ClearColorValue { float32: [1.0; 4] };
+    rec.clear_color_image(&o.image, L::TRANSFER_DST_OPTIMAL, &color, &[WHOLE])
+}
+
+/// The image from TRANSFER_DST_OPTIMAL to TRANSFER_SRC_OPTIMAL, after `src`, for
+/// transfer reads.
+fn dst_to_src(
+    o: &Objects,
+    rec: &mut Rec<'_>,
+    (ss, sa): (S, A),
+    unchecked: bool,
+) -> tuff::Result<()> {
+    let b = image_barrier(
+        o,
+        (L::TRANSFER_DST_OPTIMAL, L::TRANSFER_SRC_OPTIMAL),
+        (sa, A::TRANSFER_READ),
+    );
+    let (ds, f) = (S::TRANSFER, vk::DependencyFlags::empty());
+    match unchecked {
+        false => rec.pipeline_barrier(ss, ds, f, &[], &[], &b),
+        true => unsafe { rec.pipeline_barrier_unchecked(ss, ds, f, &[], &[], &b) },
+    }
+}
+
+/// The image from TRANSFER_SRC_OPTIMAL back to TRANSFER_DST_OPTIMAL, after `src`.
+fn src_to_dst(o: &Objects, rec: &mut Rec<'_>, ss: S, unchecked: bool) -> tuff::Result<()> {
+    let b = image_barrier(
+        o,
+        (L::TRANSFER_SRC_OPTIMAL, L::TRANSFER_DST_OPTIMAL),
+        (A::empty(), A::TRANSFER_WRITE),
+    );
+    let (ds, f) = (S::TRANSFER, vk::DependencyFlags::empty());
+    match unchecked {
+        false => rec.pipeline_barrier(ss, ds, f, &[], &[], &b),
+        true => unsafe { rec.pipeline_barrier_unchecked(ss, ds, f, &[], &[], &b) },
+    }
+}
+
+/// The image gets `a`'s first 64 bytes.
+fn texels_from_a(o: &Objects, rec: &mut Rec<'_>, unchecked: bool) -> tuff::Result<()> {
+    let (t, l) = (texels(), L::TRANSFER_DST_OPTIMAL);
+    match unchecked {
+        false => rec.copy_buffer_to_image(&o.a, &o.image, l, &t),
+        true => unsafe { rec.copy_buffer_to_image_unchecked(&o.a, &o.image, l, &t) },
+    }
+}
+
+const TRANSFER_WRITE: (S, A) = (S::TRANSFER, A::TRANSFER_WRITE);
+const TRANSFER_READ: (S, A) = (S::TRANSFER, A::TRANSFER_READ);
+
+/// `c` gets `b`'s first 64 bytes: the command most programs end with.
+fn copy_b_to_c(o: &Objects, rec: &mut Rec<'_>, unchecked: bool) -> tuff::Result<()> {
+    let r = region(0, 0, 64);
+    match unchecked {
+        false => rec.copy_buffer(&o.b, &o.c, &r),
+        true => unsafe { rec.copy_buffer_unchecked(&o.b, &o.c, &r) },
+    }
+}
+
+fn fill_b(o: &Objects, rec: &mut Rec<'_>, unchecked: bool) -> tuff::Result<()> {
+    match unchecked {
+        false => rec.fill_buffer(&o.b, 0, 64, 7),
+        true => unsafe { rec.fill_buffer_unchecked(&o.b, 0, 64, 7) },
+    }
+}
+
+/// A program: it records into `rec` and returns the result of its last command,
+/// recorded through `_unchecked` when the flag says so.
+type Program = fn(&Objects, &mut Rec<'_>, bool) -> tuff::Result<()>;
+
+/// One hazard: the broken program, the hazard it has, and the program made right.
+struct Case {
+    name: &'static str,
+    hazard: &'static str,
+    broken: Option<Program>,
+    fixed: Program,
+    /// Whether automatic synchronization makes the broken program right: not where
+    /// the hazard is the program's own barrier (a layout transition it does not
+    /// order), which tuff leaves as written.
+    auto: bool,
+}
+
+const CASES: &[Case] = &[
+    Case {
+        name: "a copy reads what a copy wrote",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            rec.copy_buffer(&o.a, &o.b, &region(0, 0, 64))?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            rec.copy_buffer(&o.a, &o.b, &region(0, 0, 64))?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "a copy reads what a fill wrote",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "a copy reads what an update wrote",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            rec.update_buffer(&o.b, 0, &[1; 64])?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            rec.update_buffer(&o.b, 0, &[1; 64])?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "a fill overwrites what a copy reads",
+        auto: true,
+        hazard: WAR,
+        broken: Some(|o, rec, u| {
+            rec.copy_buffer(&o.b, &o.a, &region(0, 0, 64))?;
+            fill_b(o, rec, u)
+        }),
+        // A write after a read needs only an execution dependency.
+        fixed: |o, rec, u| {
+            rec.copy_buffer(&o.b, &o.a, &region(0, 0, 64))?;
+            rec.pipeline_barrier(
+                S::TRANSFER,
+                S::TRANSFER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &[],
+                &[],
+            )?;
+            fill_b(o, rec, u)
+        },
+    },
+    Case {
+        name: "a fill overwrites a fill",
+        auto: true,
+        hazard: WAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            fill_b(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, TRANSFER_WRITE, (S::TRANSFER, A::TRANSFER_WRITE))?;
+            fill_b(o, rec, u)
+        },
+    },
+    Case {
+        name: "the barrier waits for no stage (TOP_OF_PIPE as its source)",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, (S::TOP_OF_PIPE, A::empty()), TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "the barrier makes nothing available (no source access)",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, (S::TRANSFER, A::empty()), TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "the barrier makes the write visible to another stage",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, TRANSFER_WRITE, (S::FRAGMENT_SHADER, A::SHADER_READ))?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(
+                rec,
+                TRANSFER_WRITE,
+                (
+                    S::FRAGMENT_SHADER | S::TRANSFER,
+                    A::SHADER_READ | A::TRANSFER_READ,
+                ),
+            )?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "a buffer barrier of other bytes",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            let b = [tuff::BufferMemoryBarrier::new(&o.b)
+                .src_access_mask(A::TRANSFER_WRITE)
+                .dst_access_mask(A::TRANSFER_READ)
+                .src_queue_family_index(IGNORED)
+                .dst_queue_family_index(IGNORED)
+                .offset(64)
+                .size(64)];
+            rec.pipeline_barrier(
+                S::TRANSFER,
+                S::TRANSFER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &b,
+                &[],
+            )?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            let b = [tuff::BufferMemoryBarrier::new(&o.b)
+                .src_access_mask(A::TRANSFER_WRITE)
+                .dst_access_mask(A::TRANSFER_READ)
+                .src_queue_family_index(IGNORED)
+                .dst_queue_family_index(IGNORED)
+                .offset(0)
+                .size(64)];
+            rec.pipeline_barrier(
+                S::TRANSFER,
+                S::TRANSFER,
+                vk::DependencyFlags::empty(),
+                &[],
+                &b,
+                &[],
+            )?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "a copy reads bytes other than those written (no hazard)",
+        auto: true,
+        hazard: "",
+        broken: None,
+        fixed: |o, rec, u| {
+            rec.fill_buffer(&o.b, 64, 64, 7)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "two barriers chained: available, then visible",
+        auto: true,
+        hazard: "",
+        broken: None,
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier(rec, TRANSFER_WRITE, (S::COMPUTE_SHADER, A::empty()))?;
+            barrier(rec, (S::COMPUTE_SHADER, A::empty()), TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "a copy into an image overwrites a clear",
+        auto: true,
+        hazard: WAW,
+        broken: Some(|o, rec, u| {
+            clear(o, rec)?;
+            texels_from_a(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            clear(o, rec)?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_WRITE)?;
+            texels_from_a(o, rec, u)
+        },
+    },
+    Case {
+        name: "a copy into an image reads what a fill wrote",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            to_dst(o, rec)?;
+            rec.fill_buffer(&o.a, 0, 64, 7)?;
+            texels_from_a(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            to_dst(o, rec)?;
+            rec.fill_buffer(&o.a, 0, 64, 7)?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            texels_from_a(o, rec, u)
+        },
+    },
+    Case {
+        name: "a layout transition overwrites a clear it does not wait for",
+        auto: false,
+        hazard: WAW,
+        broken: Some(|o, rec, u| {
+            clear(o, rec)?;
+            dst_to_src(o, rec, (S::TOP_OF_PIPE, A::empty()), u)
+        }),
+        fixed: |o, rec, u| {
+            clear(o, rec)?;
+            dst_to_src(o, rec, TRANSFER_WRITE, u)
+        },
+    },
+    Case {
+        name: "a layout transition overwrites what a copy reads",
+        auto: false,
+        hazard: WAR,
+        broken: Some(|o, rec, u| {
+            clear(o, rec)?;
+            dst_to_src(o, rec, TRANSFER_WRITE, false)?;
+            rec.copy_image_to_buffer(&o.image, L::TRANSFER_SRC_OPTIMAL, &o.c, &texels())?;
+            src_to_dst(o, rec, S::TOP_OF_PIPE, u)
+        }),
+        // A transition after a read needs only an execution dependency.
+        fixed: |o, rec, u| {
+            clear(o, rec)?;
+            dst_to_src(o, rec, TRANSFER_WRITE, false)?;
+            rec.copy_image_to_buffer(&o.image, L::TRANSFER_SRC_OPTIMAL, &o.c, &texels())?;
+            src_to_dst(o, rec, S::TRANSFER, u)
+        },
+    },
+    Case {
+        name: "a copy out of an image after its clear and transition (no hazard)",
+        auto: true,
+        hazard: "",
+        broken: None,
+        fixed: |o, rec, _| {
+            clear(o, rec)?;
+            dst_to_src(o, rec, TRANSFER_WRITE, false)?;
+            rec.copy_image_to_buffer(&o.image, L::TRANSFER_SRC_OPTIMAL, &o.c, &texels())
+        },
+    },
+    Case {
+        name: "synchronization2: the barrier names the blit stage, not the fill's",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier2(rec, (S2::BLIT, A2::TRANSFER_WRITE))?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            barrier2(rec, (S2::COPY, A2::TRANSFER_WRITE))?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "an event wait that makes nothing visible",
+        auto: true,
+        hazard: RAW,
+        broken: Some(|o, rec, u| {
+            fill_b(o, rec, false)?;
+            rec.set_event(&o.event, S::TRANSFER)?;
+            wait(o, rec, A::empty())?;
+            copy_b_to_c(o, rec, u)
+        }),
+        fixed: |o, rec, u| {
+            fill_b(o, rec, false)?;
+            rec.set_event(&o.event, S::TRANSFER)?;
+            wait(o, rec, A::TRANSFER_READ)?;
+            copy_b_to_c(o, rec, u)
+        },
+    },
+];
+
+/// A synchronization2 memory barrier from `src` to the copy's read.
+fn barrier2(rec: &mut Rec<'_>, (ss, sa): (S2, A2)) -> tuff::Result<()> {
+    let m = [tuff::MemoryBarrier2::new()
+        .src_stage_mask(ss)
+        .src_access_mask(sa)
+        .dst_stage_mask(S2::COPY)
+        .dst_access_mask(A2::TRANSFER_READ)];
+    rec.pipeline_barrier2(&tuff::DependencyInfo::new().memory_barriers(&m))
+}
+
+/// Waits for the event, making transfer writes visible as `dst` to transfers.
+fn wait(o: &Objects, rec: &mut Rec<'_>, dst: A) -> tuff::Result<()> {
+    let m = [tuff::MemoryBarrier::new()
+        .src_access_mask(A::TRANSFER_WRITE)
+        .dst_access_mask(dst)];
+    rec.wait_events(&o.event, S::TRANSFER, S::TRANSFER, &m, &[], &[])
+}
+
+#[test]
+fn each_broken_program_is_refused_and_the_layer_reports_the_same_hazard() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut cb = cb;
+    for case in CASES {
+        let Some(broken) = case.broken else {
+            continue;
+        };
+        println!("{}", case.name);
+        breaks(&s, case.hazard, Layer::Names, |unchecked| {
+            let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+            let r = broken(&o, &mut rec, unchecked);
+            let _ = rec.end();
+            r
+        });
+    }
+}
+
+#[test]
+fn each_fixed_program_runs_and_the_layer_is_silent() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for case in CASES {
+        println!("{}", case.name);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        if let Err(e) = (case.fixed)(&o, &mut rec, false) {
+            panic!("{}: refused: {e}", case.name);
+        }
+        rec.end().expect("end");
+        s.submit_wait(&cb);
+        assert_silent(&s.messages);
+    }
+}
+
+#[test]
+fn automatic_synchronization_records_the_missing_barrier_and_the_layer_is_silent() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for case in CASES {
+        let Some(broken) = case.broken else {
+            continue;
+        };
+        println!("{}", case.name);
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        rec.auto_sync(true);
+        let r = broken(&o, &mut rec, false);
+        if !case.auto {
+            // The program's own barrier is the hazard: refused as without the mode.
+            assert_eq!(tuff_setup::vuid(r), case.hazard, "{}", case.name);
+            let _ = rec.end();
+            continue;
+        }
+        if let Err(e) = r {
+            panic!("{}: refused: {e}", case.name);
+        }
+        rec.end().expect("end");
+        s.submit_wait(&cb);
+        assert_silent(&s.messages);
+    }
+}
+
+#[test]
+fn the_error_names_both_commands_the_memory_and_the_barrier() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    fill_b(&o, &mut rec, false).expect("fill");
+    let e = copy_b_to_c(&o, &mut rec, false).expect_err("a hazard");
+    let _ = rec.end();
+    let text = e.to_string();
+    for part in [
+        RAW,
+        "vkCmdCopyBuffer (command 1 of the recording)",
+        "vkCmdFillBuffer (command 0 of the recording)",
+        "VK_ACCESS_2_TRANSFER_READ_BIT at VK_PIPELINE_STAGE_2_COPY_BIT",
+        "VK_ACCESS_2_TRANSFER_WRITE_BIT at VK_PIPELINE_STAGE_2_COPY_BIT or VK_PIPELINE_STAGE_2_CLEAR_BIT",
+        "bytes 0..64 of buffer",
+        "a barrier from VK_PIPELINE_STAGE_2_COPY_BIT or VK_PIPELINE_STAGE_2_CLEAR_BIT with VK_ACCESS_2_TRANSFER_WRITE_BIT to VK_PIPELINE_STAGE_2_COPY_BIT with VK_ACCESS_2_TRANSFER_READ_BIT",
+    ] {
+        assert!(text.contains(part), "the error does not say {part:?}: {text}");
+    }
+    assert_silent(&s.messages);
+}
