@@ -13,6 +13,8 @@
 //! SAFETY of the `unsafe` blocks: each `_unchecked` call breaks only the ordering
 //! under test, which the layer reports and so skips; the buffer is never submitted.
 
+#[path = "common/pipelines.rs"]
+mod pipelines;
 #[path = "common/tuff_setup.rs"]
 mod tuff_setup;
 #[path = "common/vulkan.rs"]
@@ -681,4 +683,215 @@ fn the_error_names_both_commands_the_memory_and_the_barrier() {
         assert!(text.contains(part), "the error does not say {part:?}: {text}");
     }
     assert_silent(&s.messages);
+}
+
+/// What the draw programs use: a color target, a pipeline fetching binding 0's
+/// 20-byte vertices, a vertex buffer of six and an index buffer of three that
+/// transfers also write.
+struct Draws {
+    target: tuff_setup::ColorTarget,
+    _layout: tuff::PipelineLayout,
+    pipeline: tuff::Pipeline,
+    vertices: tuff::Buffer,
+    indices: tuff::Buffer,
+    _memory: Vec<tuff::DeviceMemory>,
+}
+
+fn draws(s: &Setup) -> Draws {
+    const SIZE: u32 = 4;
+    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let layout = s
+        .device
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
+        .expect("layout");
+    let pipeline = pipelines::vertex_pipeline(s, &layout, &target.render_pass);
+    let u = vk::BufferUsageFlags::TRANSFER_DST;
+    // Three vertices drawn, room for three more.
+    let (vertices, m1) = pipelines::host_buffer(s, 120, u | vk::BufferUsageFlags::VERTEX_BUFFER);
+    let (indices, m2) = pipelines::host_buffer(s, 12, u | vk::BufferUsageFlags::INDEX_BUFFER);
+    Draws {
+        target,
+        _layout: layout,
+        pipeline,
+        vertices,
+        indices,
+        _memory: vec![m1, m2],
+    }
+}
+
+/// Which draw a draw program ends its render pass instance with.
+#[derive(Clone, Copy)]
+enum Drawn {
+    /// Three vertices.
+    Vertices,
+    /// Three indices.
+    Indexed,
+}
+
+/// A render pass instance with one draw, `unchecked` through `_unchecked`; the
+/// draw's result.
+fn draw_pass<'c>(
+    d: &Draws,
+    rec: Rec<'c>,
+    drawn: Drawn,
+    unchecked: bool,
+) -> (Rec<'c>, tuff::Result<()>) {
+    let clear = [vk::ClearValue::default()];
+    let area = vk::Rect2D {
+        offset: vk::Offset2D::default(),
+        extent: vk::Extent2D {
+            width: 4,
+            height: 4,
+        },
+    };
+    let begin = tuff::RenderPassBeginInfo::new(&d.target.render_pass, &d.target.framebuffer)
+        .render_area(area)
+        .clear_values(&clear);
+    let mut rec = rec.begin_render_pass(&begin, vk::SubpassContents::INLINE);
+    let viewport = vk::Viewport {
+        width: 4.0,
+        height: 4.0,
+        max_depth: 1.0,
+        ..Default::default()
+    };
+    let setup = (|| {
+        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &d.pipeline)?;
+        rec.bind_vertex_buffers(0, &d.vertices, &[0])?;
+        rec.bind_index_buffer(&d.indices, 0, vk::IndexType::UINT32)?;
+        rec.set_viewport(0, &[viewport])?;
+        rec.set_scissor(0, &[area])
+    })();
+    setup.expect("the draw's state");
+    let r = match (drawn, unchecked) {
+        (Drawn::Vertices, false) => rec.draw(3, 1, 0, 0),
+        (Drawn::Vertices, true) => unsafe { rec.draw_unchecked(3, 1, 0, 0) },
+        (Drawn::Indexed, false) => rec.draw_indexed(3, 1, 0, 0, 0),
+        (Drawn::Indexed, true) => unsafe { rec.draw_indexed_unchecked(3, 1, 0, 0, 0) },
+    };
+    (rec.end_render_pass(), r)
+}
+
+/// What a draw program records after its render pass: `(fixed, unchecked)` flags.
+type After = fn(&Objects, &Draws, &mut Rec<'_>, bool, bool) -> tuff::Result<()>;
+
+/// The draw cases: what comes before the draw, which draw, what comes after it, and
+/// the hazard; `fixed` says whether the barrier that orders them is recorded.
+struct DrawCase {
+    name: &'static str,
+    hazard: &'static str,
+    before: fn(&Objects, &Draws, &mut Rec<'_>, bool) -> tuff::Result<()>,
+    drawn: Drawn,
+    /// After the render pass; its result is the program's when the draw is not the
+    /// hazard.
+    after: Option<After>,
+}
+
+const DRAW_CASES: &[DrawCase] = &[
+    DrawCase {
+        name: "a draw fetches vertices a copy wrote",
+        hazard: RAW,
+        before: |o, d, rec, fixed| {
+            rec.copy_buffer(&o.a, &d.vertices, &region(0, 0, 60))?;
+            if fixed {
+                barrier(
+                    rec,
+                    TRANSFER_WRITE,
+                    (S::VERTEX_INPUT, A::VERTEX_ATTRIBUTE_READ),
+                )?;
+            }
+            Ok(())
+        },
+        drawn: Drawn::Vertices,
+        after: None,
+    },
+    DrawCase {
+        name: "an indexed draw reads indices a fill wrote",
+        hazard: RAW,
+        before: |_, d, rec, fixed| {
+            rec.fill_buffer(&d.indices, 0, 12, 0)?;
+            if fixed {
+                barrier(rec, TRANSFER_WRITE, (S::VERTEX_INPUT, A::INDEX_READ))?;
+            }
+            Ok(())
+        },
+        drawn: Drawn::Indexed,
+        after: None,
+    },
+    DrawCase {
+        name: "a fill overwrites vertices a draw fetched",
+        hazard: WAR,
+        before: |_, _, _, _| Ok(()),
+        drawn: Drawn::Vertices,
+        after: Some(|_, d, rec, fixed, unchecked| {
+            if fixed {
+                rec.pipeline_barrier(
+                    S::VERTEX_INPUT,
+                    S::TRANSFER,
+                    vk::DependencyFlags::empty(),
+                    &[],
+                    &[],
+                    &[],
+                )?;
+            }
+            match unchecked {
+                false => rec.fill_buffer(&d.vertices, 0, 60, 0),
+                true => unsafe { rec.fill_buffer_unchecked(&d.vertices, 0, 60, 0) },
+            }
+        }),
+    },
+    DrawCase {
+        name: "a draw fetches vertices other than those a fill wrote (no hazard)",
+        hazard: "",
+        before: |_, d, rec, _| rec.fill_buffer(&d.vertices, 60, 60, 0),
+        drawn: Drawn::Vertices,
+        after: None,
+    },
+];
+
+/// Records a draw case's program into `cb`: the hazardous command through
+/// `_unchecked` when `unchecked`; its result.
+fn draw_program(
+    o: &Objects,
+    d: &Draws,
+    cb: &mut tuff::CommandBuffer,
+    case: &DrawCase,
+    (fixed, unchecked): (bool, bool),
+) -> tuff::Result<()> {
+    let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+    (case.before)(o, d, &mut rec, fixed)?;
+    let draw_is_last = case.after.is_none();
+    let (mut rec, drawn) = draw_pass(d, rec, case.drawn, unchecked && draw_is_last);
+    let r = match case.after {
+        None => drawn,
+        Some(after) => drawn.and_then(|()| after(o, d, &mut rec, fixed, unchecked)),
+    };
+    let _ = rec.end();
+    r
+}
+
+#[test]
+fn draws_read_their_buffers_after_what_wrote_them() {
+    let _serial = vulkan::serial();
+    // Robust buffer access lets an indexed draw fetch vertices its indices pick.
+    let robust = vk::PhysicalDeviceFeatures {
+        robust_buffer_access: vk::TRUE,
+        ..Default::default()
+    };
+    let s = tuff_setup::setup_with_features(true, robust);
+    let o = objects(&s);
+    let d = draws(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for case in DRAW_CASES {
+        println!("{}", case.name);
+        if !case.hazard.is_empty() {
+            breaks(&s, case.hazard, Layer::Names, |unchecked| {
+                draw_program(&o, &d, &mut cb, case, (false, unchecked))
+            });
+        }
+        if let Err(e) = draw_program(&o, &d, &mut cb, case, (true, false)) {
+            panic!("{}: refused: {e}", case.name);
+        }
+        s.submit_wait(&cb);
+        assert_silent(&s.messages);
+    }
 }

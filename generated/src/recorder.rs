@@ -96,6 +96,8 @@ pub(crate) struct Bound {
     pub written: Vec<crate::state::SetWritten>,
     /// The index buffer bound (graphics only): its size, the offset and index type.
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
+    /// The index buffer bound, for the hazard tracker.
+    pub index_buffer: vk::Buffer,
     /// The vertex-buffer bindings bound (graphics only; the first 64), one bit each.
     pub vertex: u64,
     /// Each binding's bound vertex buffer range, by binding.
@@ -105,6 +107,8 @@ pub(crate) struct Bound {
 /// The range of a bound vertex buffer.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct VertexRange {
+    /// The buffer bound, and the offset.
+    pub buffer: (vk::Buffer, u64),
     /// The bytes past the bound offset (the bound size, if one was given).
     pub bytes: u64,
     /// The stride bound with it (`vkCmdBindVertexBuffers2`), if any.

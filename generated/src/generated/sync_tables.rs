@@ -666,7 +666,39 @@ pub(crate) struct Facts {
     pub(crate) src: Use,
     /// What it writes: its destination side.
     pub(crate) dst: Use,
+    /// A draw's reads of its vertex buffers.
+    pub(crate) vertex: Use,
+    /// A draw's reads of its index buffer.
+    pub(crate) index: Use,
 }
+///What `vkCmdDraw` reads and writes: `vertex`: `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT` at `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`.
+pub(crate) const CMD_DRAW: Facts = Facts {
+    name: "vkCmdDraw",
+    src: Use::NONE,
+    dst: Use::NONE,
+    vertex: Use {
+        stage: 0x2000000000,
+        access: 0x4,
+        write: false,
+    },
+    index: Use::NONE,
+};
+///What `vkCmdDrawIndexed` reads and writes: `index`: `VK_ACCESS_2_INDEX_READ_BIT` at `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`; `vertex`: `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT` at `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`.
+pub(crate) const CMD_DRAW_INDEXED: Facts = Facts {
+    name: "vkCmdDrawIndexed",
+    src: Use::NONE,
+    dst: Use::NONE,
+    vertex: Use {
+        stage: 0x2000000000,
+        access: 0x4,
+        write: false,
+    },
+    index: Use {
+        stage: 0x1000000000,
+        access: 0x2,
+        write: false,
+    },
+};
 ///What `vkCmdCopyBuffer` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_BUFFER: Facts = Facts {
     name: "vkCmdCopyBuffer",
@@ -680,6 +712,8 @@ pub(crate) const CMD_COPY_BUFFER: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdCopyBuffer2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_BUFFER2: Facts = Facts {
@@ -694,6 +728,8 @@ pub(crate) const CMD_COPY_BUFFER2: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdCopyBufferToImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_BUFFER_TO_IMAGE: Facts = Facts {
@@ -708,6 +744,8 @@ pub(crate) const CMD_COPY_BUFFER_TO_IMAGE: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdCopyBufferToImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_BUFFER_TO_IMAGE2: Facts = Facts {
@@ -722,6 +760,8 @@ pub(crate) const CMD_COPY_BUFFER_TO_IMAGE2: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdCopyImageToBuffer` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE_TO_BUFFER: Facts = Facts {
@@ -736,6 +776,8 @@ pub(crate) const CMD_COPY_IMAGE_TO_BUFFER: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdCopyImageToBuffer2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE_TO_BUFFER2: Facts = Facts {
@@ -750,6 +792,8 @@ pub(crate) const CMD_COPY_IMAGE_TO_BUFFER2: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdCopyImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE: Facts = Facts {
@@ -764,6 +808,8 @@ pub(crate) const CMD_COPY_IMAGE: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdCopyImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE2: Facts = Facts {
@@ -778,6 +824,8 @@ pub(crate) const CMD_COPY_IMAGE2: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdBlitImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`.
 pub(crate) const CMD_BLIT_IMAGE: Facts = Facts {
@@ -792,6 +840,8 @@ pub(crate) const CMD_BLIT_IMAGE: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdBlitImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`.
 pub(crate) const CMD_BLIT_IMAGE2: Facts = Facts {
@@ -806,6 +856,8 @@ pub(crate) const CMD_BLIT_IMAGE2: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdResolveImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`.
 pub(crate) const CMD_RESOLVE_IMAGE: Facts = Facts {
@@ -820,6 +872,8 @@ pub(crate) const CMD_RESOLVE_IMAGE: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdResolveImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`.
 pub(crate) const CMD_RESOLVE_IMAGE2: Facts = Facts {
@@ -834,6 +888,8 @@ pub(crate) const CMD_RESOLVE_IMAGE2: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdClearColorImage` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_CLEAR_COLOR_IMAGE: Facts = Facts {
@@ -844,6 +900,8 @@ pub(crate) const CMD_CLEAR_COLOR_IMAGE: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdClearDepthStencilImage` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_CLEAR_DEPTH_STENCIL_IMAGE: Facts = Facts {
@@ -854,6 +912,8 @@ pub(crate) const CMD_CLEAR_DEPTH_STENCIL_IMAGE: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdFillBuffer` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT,VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_FILL_BUFFER: Facts = Facts {
@@ -864,6 +924,8 @@ pub(crate) const CMD_FILL_BUFFER: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///What `vkCmdUpdateBuffer` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT,VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_UPDATE_BUFFER: Facts = Facts {
@@ -874,70 +936,94 @@ pub(crate) const CMD_UPDATE_BUFFER: Facts = Facts {
         access: 0x1000,
         write: true,
     },
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdPipelineBarrier`, which orders other commands' accesses.
 pub(crate) const CMD_PIPELINE_BARRIER: Facts = Facts {
     name: "vkCmdPipelineBarrier",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdPipelineBarrier2`, which orders other commands' accesses.
 pub(crate) const CMD_PIPELINE_BARRIER2: Facts = Facts {
     name: "vkCmdPipelineBarrier2",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdWaitEvents`, which orders other commands' accesses.
 pub(crate) const CMD_WAIT_EVENTS: Facts = Facts {
     name: "vkCmdWaitEvents",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdWaitEvents2`, which orders other commands' accesses.
 pub(crate) const CMD_WAIT_EVENTS2: Facts = Facts {
     name: "vkCmdWaitEvents2",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdBeginRenderPass`, which orders other commands' accesses.
 pub(crate) const CMD_BEGIN_RENDER_PASS: Facts = Facts {
     name: "vkCmdBeginRenderPass",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdBeginRenderPass2`, which orders other commands' accesses.
 pub(crate) const CMD_BEGIN_RENDER_PASS2: Facts = Facts {
     name: "vkCmdBeginRenderPass2",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdNextSubpass`, which orders other commands' accesses.
 pub(crate) const CMD_NEXT_SUBPASS: Facts = Facts {
     name: "vkCmdNextSubpass",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdNextSubpass2`, which orders other commands' accesses.
 pub(crate) const CMD_NEXT_SUBPASS2: Facts = Facts {
     name: "vkCmdNextSubpass2",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdEndRenderPass`, which orders other commands' accesses.
 pub(crate) const CMD_END_RENDER_PASS: Facts = Facts {
     name: "vkCmdEndRenderPass",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdEndRenderPass2`, which orders other commands' accesses.
 pub(crate) const CMD_END_RENDER_PASS2: Facts = Facts {
     name: "vkCmdEndRenderPass2",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };
 ///`vkCmdExecuteCommands`, which orders other commands' accesses.
 pub(crate) const CMD_EXECUTE_COMMANDS: Facts = Facts {
     name: "vkCmdExecuteCommands",
     src: Use::NONE,
     dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
 };

@@ -742,6 +742,7 @@ pub(crate) fn cmd_bind_vertex_buffers_done<S: Scope>(
                     _ => size.saturating_sub(offset),
                 };
                 crate::recorder::VertexRange {
+                    buffer: (b.raw(), offset),
                     bytes,
                     stride: strides.get(i).copied(),
                 }
@@ -848,9 +849,10 @@ pub(crate) fn cmd_bind_index_buffer_done<'b, S: Scope>(
     offset: vk::DeviceSize,
     index_type: vk::IndexType,
 ) {
+    let buffer = buffer.into();
     let size = buffer
-        .into()
         .and_then(|b| recorder.device().live().buffer(b.raw()))
         .map(|r| r.size);
     recorder.bound[0].index = size.map(|size| (size, offset, index_type));
+    recorder.bound[0].index_buffer = buffer.map_or(vk::Buffer::null(), |b| b.raw());
 }

@@ -264,6 +264,132 @@ fn buffer_copy<S: Scope>(
     touch(recorder, facts.name, &list)
 }
 
+/// The bytes of the vertex buffers a draw fetches: for each binding the bound
+/// pipeline's vertex shader reads, from its first fetched element to the end of its
+/// last (`vertices`: `None` for an indexed draw, whose vertices the indices pick: the
+/// whole bound range).
+fn vertex_memory<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    vertices: Option<(u64, u64)>,
+    (first_instance, instance_count): (u64, u64),
+    out: &mut Vec<(Memory, Use)>,
+    read: Use,
+) {
+    let bound = &recorder.bound[0];
+    let Some(pipeline) = &bound.pipeline else {
+        return;
+    };
+    let dynamic_stride = pipeline.dynamic
+        & crate::state::dynamic_bit(vk::DynamicState::VERTEX_INPUT_BINDING_STRIDE)
+        != 0;
+    for v in &pipeline.vertex_reads {
+        let Some(Some(range)) = bound.vertex_ranges.get(v.binding as usize) else {
+            continue;
+        };
+        let (buffer, offset) = range.buffer;
+        let stride = match (dynamic_stride, range.stride) {
+            (true, Some(stride)) => stride,
+            _ => u64::from(v.stride),
+        };
+        let fetched = if v.instance {
+            Some((first_instance, instance_count))
+        } else {
+            vertices
+        };
+        let (start, end) = match fetched {
+            Some((_, 0)) => continue,
+            Some((first, count)) => {
+                let last = first.saturating_add(count - 1);
+                (
+                    first.saturating_mul(stride),
+                    last.saturating_mul(stride).saturating_add(v.end),
+                )
+            }
+            None => (0, range.bytes),
+        };
+        let end = end.min(range.bytes);
+        out.push((
+            Memory::Buffer(
+                buffer,
+                offset.saturating_add(start),
+                offset.saturating_add(end),
+            ),
+            read,
+        ));
+    }
+}
+
+/// `vkCmdDraw`: reads the vertices and instances it fetches.
+pub(crate) fn draw<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    (first_vertex, vertex_count): (u32, u32),
+    (first_instance, instance_count): (u32, u32),
+) -> Result<()> {
+    let mut list = Vec::new();
+    vertex_memory(
+        recorder,
+        Some((u64::from(first_vertex), u64::from(vertex_count))),
+        (u64::from(first_instance), u64::from(instance_count)),
+        &mut list,
+        facts.vertex,
+    );
+    reads(recorder, facts.name, &list)
+}
+
+/// `vkCmdDrawIndexed`: reads its indices, and the vertices and instances it fetches.
+pub(crate) fn draw_indexed<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    (first_index, index_count): (u32, u32),
+    (first_instance, instance_count): (u32, u32),
+) -> Result<()> {
+    let mut list = Vec::new();
+    if let Some((_, offset, ty)) = recorder.bound[0].index {
+        let size: u64 = match ty {
+            vk::IndexType::UINT16 => 2,
+            vk::IndexType::UINT8_EXT => 1,
+            _ => 4,
+        };
+        let start = offset.saturating_add(u64::from(first_index).saturating_mul(size));
+        let end = start.saturating_add(u64::from(index_count).saturating_mul(size));
+        let buffer = recorder.bound[0].index_buffer;
+        if index_count > 0 {
+            list.push((Memory::Buffer(buffer, start, end), facts.index));
+        }
+    }
+    vertex_memory(
+        recorder,
+        None,
+        (u64::from(first_instance), u64::from(instance_count)),
+        &mut list,
+        facts.vertex,
+    );
+    reads(recorder, facts.name, &list)
+}
+
+/// A draw's reads: checked and recorded, unless every one is a read the tracker
+/// already holds with nothing changed since (the next draw of a run on one state
+/// reads what the last one read, and the verdict is the same).
+fn reads<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    name: &'static str,
+    list: &[(Memory, Use)],
+) -> Result<()> {
+    if list.is_empty()
+        || recorder
+            .hazards
+            .holds_reads(list.iter().map(|(m, u)| (m, u.stage)))
+    {
+        return Ok(());
+    }
+    touch(recorder, name, list)?;
+    recorder
+        .hazards
+        .remember_reads(list.iter().map(|(m, u)| (*m, u.stage)));
+    Ok(())
+}
+
 /// `vkCmdFillBuffer`: writes the range.
 pub(crate) fn fill_buffer<S: Scope>(
     recorder: &mut Recorder<'_, S>,

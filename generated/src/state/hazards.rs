@@ -535,6 +535,12 @@ pub(crate) struct Recording {
     commands: u32,
     /// Whether a hazard gets the barrier that orders it, rather than an error.
     pub(crate) auto: bool,
+    /// Counts every change that could change a verdict: a write or a barrier recorded,
+    /// or what the recording did forgotten.
+    generation: u64,
+    /// The buffer reads of the last draws recorded (buffer, range, stage) while the
+    /// generation was the second value: a draw reading within them adds nothing.
+    drawn: (Vec<(vk::Buffer, u64, u64, u64)>, u64),
 }
 
 impl Recording {
@@ -546,6 +552,43 @@ impl Recording {
         };
         self.commands += 1;
         cmd
+    }
+
+    /// Whether the tracker already holds each of these buffer reads, recorded by a
+    /// draw with nothing changed since.
+    pub(crate) fn holds_reads<'m>(
+        &self,
+        mut reads: impl Iterator<Item = (&'m Memory, u64)>,
+    ) -> bool {
+        self.drawn.1 == self.generation
+            && reads.all(|(m, stage)| match m {
+                Memory::Buffer(b, s, e) => self
+                    .drawn
+                    .0
+                    .iter()
+                    .any(|d| d.0 == *b && d.1 <= *s && *e <= d.2 && d.3 == stage),
+                Memory::Image(..) => false,
+            })
+    }
+
+    /// Remembers buffer reads a draw recorded.
+    pub(crate) fn remember_reads(&mut self, reads: impl Iterator<Item = (Memory, u64)>) {
+        if self.drawn.1 != self.generation {
+            self.drawn = (Vec::new(), self.generation);
+        }
+        for (m, stage) in reads {
+            if let Memory::Buffer(b, s, e) = m {
+                match self.drawn.0.iter_mut().find(|d| d.0 == b && d.3 == stage) {
+                    // One range per buffer and stage: the union where they touch.
+                    Some(d) if s <= d.2 && d.1 <= e => {
+                        d.1 = d.1.min(s);
+                        d.2 = d.2.max(e);
+                    }
+                    Some(d) => *d = (b, s, e, stage),
+                    None => self.drawn.0.push((b, s, e, stage)),
+                }
+            }
+        }
     }
 
     /// What [`Recording::next`] will return, without counting it.
@@ -585,6 +628,9 @@ impl Recording {
 
     /// Records an access to `memory`.
     pub(crate) fn record(&mut self, live: &Live, memory: &Memory, u: Usage) {
+        if u.write {
+            self.generation += 1;
+        }
         match memory {
             Memory::Buffer(b, s, e) => {
                 if s < e {
@@ -622,6 +668,7 @@ impl Recording {
     /// Applies barriers to everything the recording touched (memory barriers and
     /// execution dependencies).
     pub(crate) fn apply_global(&mut self, barriers: &[Barrier]) {
+        self.generation += 1;
         for r in self.buffers.values_mut() {
             for st in &mut r.0 {
                 st.2.apply(barriers);
@@ -636,6 +683,7 @@ impl Recording {
 
     /// Applies a barrier to a buffer range.
     pub(crate) fn apply_buffer(&mut self, buffer: vk::Buffer, start: u64, end: u64, b: &Barrier) {
+        self.generation += 1;
         if let Some(r) = self.buffers.get_mut(&buffer.as_raw()) {
             if start < end {
                 for st in r.cover(start, end) {
@@ -655,6 +703,7 @@ impl Recording {
         b: &Barrier,
         transition: Option<Cmd>,
     ) {
+        self.generation += 1;
         let Some(sub) = (match transition {
             Some(_) => self.image(live, image),
             None => self.images.get_mut(&image.as_raw()),
@@ -673,6 +722,7 @@ impl Recording {
     /// Forgets everything: what the recording did before is no longer known (a
     /// command the tracker cannot see into ran).
     pub(crate) fn forget(&mut self) {
+        self.generation += 1;
         self.buffers.clear();
         self.images.clear();
     }

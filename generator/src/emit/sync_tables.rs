@@ -217,6 +217,10 @@ pub fn emit(model: &Model) -> TokenStream {
             pub(crate) src: Use,
             /// What it writes: its destination side.
             pub(crate) dst: Use,
+            /// A draw's reads of its vertex buffers.
+            pub(crate) vertex: Use,
+            /// A draw's reads of its index buffer.
+            pub(crate) index: Use,
         }
 
         #(#facts)*
@@ -248,6 +252,7 @@ fn facts(model: &Model, t: &SyncTables) -> Vec<TokenStream> {
                 None => quote!(Use::NONE),
             };
             let (src, dst) = (role("src"), role("dst"));
+            let (vertex, index) = (role("vertex"), role("index"));
             let said: Vec<String> = r
                 .uses
                 .iter()
@@ -260,7 +265,7 @@ fn facts(model: &Model, t: &SyncTables) -> Vec<TokenStream> {
             quote! {
                 #[doc = #doc]
                 #cfg
-                pub(crate) const #konst: Facts = Facts { name: #name, src: #src, dst: #dst };
+                pub(crate) const #konst: Facts = Facts { name: #name, src: #src, dst: #dst, vertex: #vertex, index: #index };
             }
         })
         .collect()

@@ -15,10 +15,12 @@ use super::special::Call;
 use crate::model::SyncTables;
 
 /// One access of a command: a role (the field of the crate's `Facts` it fills:
-/// `src`, `dst`), a stage and an access type, as the registry spells them.
+/// `src`, `dst`, `vertex`, `index`), a stage and an access type, as the registry
+/// spells them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Use {
-    /// `src` or `dst`.
+    /// `src` (what it reads), `dst` (what it writes), `vertex` or `index` (a draw's
+    /// vertex and index buffers).
     pub role: &'static str,
     /// `VK_PIPELINE_STAGE_2_COPY_BIT`; a comma-separated list for a command the
     /// specification can be read to run in either stage.
@@ -113,8 +115,50 @@ macro_rules! images {
     };
 }
 
+/// The roles a use may fill, the fields of the crate's `Facts`.
+pub const ROLES: &[&str] = &["src", "dst", "vertex", "index"];
+
+const VERTEX: Use = Use {
+    role: "vertex",
+    stage: "VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT",
+    access: "VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT",
+};
+const INDEX: Use = Use {
+    role: "index",
+    stage: "VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT",
+    access: "VK_ACCESS_2_INDEX_READ_BIT",
+};
+
 /// The table.
 pub const ROWS: &[Accesses] = &[
+    Accesses {
+        command: "vkCmdDraw",
+        call: call(
+            "special::hazards::draw",
+            &[
+                "self",
+                "&facts",
+                "(first_vertex, vertex_count)",
+                "(first_instance, instance_count)",
+            ],
+        ),
+        uses: &[VERTEX],
+        does: "",
+    },
+    Accesses {
+        command: "vkCmdDrawIndexed",
+        call: call(
+            "special::hazards::draw_indexed",
+            &[
+                "self",
+                "&facts",
+                "(first_index, index_count)",
+                "(first_instance, instance_count)",
+            ],
+        ),
+        uses: &[INDEX, VERTEX],
+        does: "",
+    },
     Accesses {
         command: "vkCmdCopyBuffer",
         call: call(
@@ -375,7 +419,7 @@ pub fn check(tables: &SyncTables) -> Result<(), String> {
                     ));
                 }
             }
-            if !matches!(u.role, "src" | "dst") {
+            if !ROLES.contains(&u.role) {
                 return Err(format!("{}: no role {}", row.command, u.role));
             }
         }

@@ -147,7 +147,12 @@ impl Accesses {
                     row.uses
                         .iter()
                         .map(|u| {
-                            let what = if u.role == "src" { "reads" } else { "writes" };
+                            let what = match u.role {
+                                "dst" => "writes",
+                                "vertex" => "reads vertex buffers:",
+                                "index" => "reads the index buffer:",
+                                _ => "reads",
+                            };
                             format!(
                                 "{what} `{}` at `{}`",
                                 u.access,

@@ -400,6 +400,12 @@ The rules of `vkCmdDraw` that apply to this crate's API ([reference page](https:
             let r = self.validate_draw();
             r?;
         }
+        crate::special::hazards::draw(
+            self,
+            &crate::sync_tables::CMD_DRAW,
+            (first_vertex, vertex_count),
+            (first_instance, instance_count),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -774,6 +780,12 @@ The rules of `vkCmdDrawIndexed` that apply to this crate's API ([reference page]
             let r = self.validate_draw_indexed();
             r?;
         }
+        crate::special::hazards::draw_indexed(
+            self,
+            &crate::sync_tables::CMD_DRAW_INDEXED,
+            (first_index, index_count),
+            (first_instance, instance_count),
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
