@@ -264,6 +264,10 @@ fn buffer_copy<S: Scope>(
     touch(recorder, facts.name, &list)
 }
 
+/// A draw's reads, on the stack for the usual few bindings: a draw records no
+/// allocation.
+type Reads = smallvec::SmallVec<[(Memory, Use); 4]>;
+
 /// The bytes of the vertex buffers a draw fetches: for each binding the bound
 /// pipeline's vertex shader reads, from its first fetched element to the end of its
 /// last (`vertices`: `None` for an indexed draw, whose vertices the indices pick: the
@@ -272,7 +276,7 @@ fn vertex_memory<S: Scope>(
     recorder: &Recorder<'_, S>,
     vertices: Option<(u64, u64)>,
     (first_instance, instance_count): (u64, u64),
-    out: &mut Vec<(Memory, Use)>,
+    out: &mut Reads,
     read: Use,
 ) {
     let bound = &recorder.bound[0];
@@ -326,7 +330,7 @@ pub(crate) fn draw<S: Scope>(
     (first_vertex, vertex_count): (u32, u32),
     (first_instance, instance_count): (u32, u32),
 ) -> Result<()> {
-    let mut list = Vec::new();
+    let mut list = Reads::new();
     vertex_memory(
         recorder,
         Some((u64::from(first_vertex), u64::from(vertex_count))),
@@ -344,7 +348,7 @@ pub(crate) fn draw_indexed<S: Scope>(
     (first_index, index_count): (u32, u32),
     (first_instance, instance_count): (u32, u32),
 ) -> Result<()> {
-    let mut list = Vec::new();
+    let mut list = Reads::new();
     if let Some((_, offset, ty)) = recorder.bound[0].index {
         let size: u64 = match ty {
             vk::IndexType::UINT16 => 2,
