@@ -129,6 +129,16 @@ const INDEX: Use = Use {
     access: "VK_ACCESS_2_INDEX_READ_BIT",
 };
 
+/// The first version's barrier arguments, which `vkCmdWaitEvents` shares.
+const BARRIER_ARGS: &[&str] = &[
+    "self",
+    "&facts",
+    "(src_stage_mask, dst_stage_mask)",
+    "memory_barriers",
+    "buffer_memory_barriers",
+    "image_memory_barriers",
+];
+
 /// The table.
 pub const ROWS: &[Accesses] = &[
     Accesses {
@@ -275,14 +285,7 @@ pub const ROWS: &[Accesses] = &[
         command: "vkCmdPipelineBarrier",
         call: call(
             "special::hazards::pipeline_barrier",
-            &[
-                "self",
-                "&facts",
-                "(src_stage_mask, dst_stage_mask)",
-                "memory_barriers",
-                "buffer_memory_barriers",
-                "image_memory_barriers",
-            ],
+            BARRIER_ARGS,
         ),
         uses: &[],
         does: "its barriers order the accesses before them against those after",
@@ -300,14 +303,7 @@ pub const ROWS: &[Accesses] = &[
         command: "vkCmdWaitEvents",
         call: call(
             "special::hazards::pipeline_barrier",
-            &[
-                "self",
-                "&facts",
-                "(src_stage_mask, dst_stage_mask)",
-                "memory_barriers",
-                "buffer_memory_barriers",
-                "image_memory_barriers",
-            ],
+            BARRIER_ARGS,
         ),
         uses: &[],
         does: "its barriers order the accesses before them against those after",
