@@ -222,6 +222,27 @@ fn src_to_dst(o: &Objects, rec: &mut Rec<'_>, ss: S, unchecked: bool) -> tuff::R
     }
 }
 
+/// A 2x2 region of the image at `(x, y)` gets `a`'s first 16 bytes.
+fn quarter_from_a(
+    o: &Objects,
+    rec: &mut Rec<'_>,
+    (x, y): (i32, i32),
+    unchecked: bool,
+) -> tuff::Result<()> {
+    let mut t = texels();
+    t[0].image_offset = vk::Offset3D { x, y, z: 0 };
+    t[0].image_extent = vk::Extent3D {
+        width: 2,
+        height: 2,
+        depth: 1,
+    };
+    let l = L::TRANSFER_DST_OPTIMAL;
+    match unchecked {
+        false => rec.copy_buffer_to_image(&o.a, &o.image, l, &t),
+        true => unsafe { rec.copy_buffer_to_image_unchecked(&o.a, &o.image, l, &t) },
+    }
+}
+
 /// The image gets `a`'s first 64 bytes.
 fn texels_from_a(o: &Objects, rec: &mut Rec<'_>, unchecked: bool) -> tuff::Result<()> {
     let (t, l) = (texels(), L::TRANSFER_DST_OPTIMAL);
@@ -425,6 +446,29 @@ const CASES: &[Case] = &[
                 barrier(rec, TRANSFER_WRITE, TRANSFER_WRITE)?;
             }
             texels_from_a(o, rec, u)
+        },
+    },
+    Case {
+        name: "copies into two disjoint regions of one image level (no hazard)",
+        auto: true,
+        hazard: "",
+        program: |o, rec, _, u| {
+            to_dst(o, rec)?;
+            quarter_from_a(o, rec, (0, 0), false)?;
+            quarter_from_a(o, rec, (2, 2), u)
+        },
+    },
+    Case {
+        name: "a copy into an image region that meets one a copy wrote",
+        auto: true,
+        hazard: WAW,
+        program: |o, rec, fixed, u| {
+            to_dst(o, rec)?;
+            quarter_from_a(o, rec, (0, 0), false)?;
+            if fixed {
+                barrier(rec, TRANSFER_WRITE, TRANSFER_WRITE)?;
+            }
+            quarter_from_a(o, rec, (1, 1), u)
         },
     },
     Case {

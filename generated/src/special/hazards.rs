@@ -14,7 +14,7 @@ use crate::handles::{Buffer, Image};
 use crate::recorder::{Recorder, Scope};
 use crate::special::barriers::Barriers;
 use crate::special::image_layouts::Names;
-use crate::state::hazards::{Barrier, Cmd, Hazard, Memory, Usage};
+use crate::state::hazards::{Barrier, Cmd, Hazard, Memory, Usage, EVERY_TEXEL};
 use crate::state::layouts::Sel;
 use crate::structs::{
     BufferMemoryBarrier, CopyBufferInfo2, CopyBufferToImageInfo2, CopyImageToBufferInfo2,
@@ -429,12 +429,12 @@ pub(crate) fn images<S: Scope>(
     let list: Vec<(Memory, Use)> = sides
         .read
         .into_iter()
-        .map(|(i, s)| (Memory::Image(i, s), facts.src))
+        .map(|(i, s, t)| (Memory::Image(i, s, t), facts.src))
         .chain(
             sides
                 .written
                 .into_iter()
-                .map(|(i, s)| (Memory::Image(i, s), facts.dst)),
+                .map(|(i, s, t)| (Memory::Image(i, s, t), facts.dst)),
         )
         .collect();
     touch(recorder, facts.name, &list)
@@ -484,11 +484,14 @@ fn buffer_image<S: Scope>(
             .into_iter()
             .map(|m| (m, buffer_use))
             .collect();
-    list.extend(
-        regions
-            .iter()
-            .map(|r| (Memory::Image(image, Sel::layers(&r.subresource)), image_use)),
-    );
+    list.extend(regions.iter().map(|r| {
+        let sel = Sel::layers(&r.subresource);
+        let e = r.extent;
+        let o = r.image_offset;
+        let axis = |o: i32, e: u32| (i64::from(o), i64::from(o) + i64::from(e));
+        let texels = [axis(o.x, e.width), axis(o.y, e.height), axis(o.z, e.depth)];
+        (Memory::Image(image, sel, texels), image_use)
+    }));
     touch(recorder, facts.name, &list)
 }
 
@@ -580,7 +583,7 @@ fn apply<S: Scope>(
         .collect();
     for (image, sel, b) in &transitions {
         if let Some(h) = hazards.transition_hazard(*image, sel, b, cmd) {
-            return Err(refuse(&h, &Memory::Image(*image, *sel)));
+            return Err(refuse(&h, &Memory::Image(*image, *sel, EVERY_TEXEL)));
         }
     }
     // Every barrier is an execution dependency of everything; a memory barrier a

@@ -4,6 +4,7 @@
 
 use crate::handles::CommandBuffer;
 use crate::recorder::{Recorder, Scope};
+use crate::state::hazards::{Texels, EVERY_TEXEL};
 use crate::state::layouts::Sel;
 use crate::structs::{
     BlitImageInfo2, CopyBufferToImageInfo2, CopyImageInfo2, CopyImageToBufferInfo2, DependencyInfo,
@@ -217,18 +218,91 @@ pub(crate) enum Names<'a> {
     ClearDepthStencil(vk::Image, vk::ImageLayout, &'a [vk::ImageSubresourceRange]),
 }
 
-/// The subresources a command reads and writes.
+/// The subresources a command reads and writes, each with the texels it touches.
 pub(crate) struct Sides {
     /// Its source side.
-    pub read: Vec<(vk::Image, Sel)>,
+    pub read: Vec<(vk::Image, Sel, Texels)>,
     /// Its destination side, or the image it clears.
-    pub written: Vec<(vk::Image, Sel)>,
+    pub written: Vec<(vk::Image, Sel, Texels)>,
+}
+
+/// The texels of a region from its offset and extent.
+fn boxed(o: vk::Offset3D, e: vk::Extent3D) -> Texels {
+    let axis = |o: i32, e: u32| (i64::from(o), i64::from(o) + i64::from(e));
+    [axis(o.x, e.width), axis(o.y, e.height), axis(o.z, e.depth)]
+}
+
+/// The texels between a blit region's two corners.
+fn cornered(c: [vk::Offset3D; 2]) -> Texels {
+    let axis = |a: i32, b: i32| (i64::from(a.min(b)), i64::from(a.max(b)));
+    [
+        axis(c[0].x, c[1].x),
+        axis(c[0].y, c[1].y),
+        axis(c[0].z, c[1].z),
+    ]
 }
 
 impl Names<'_> {
-    /// The subresources the command reads and writes.
+    /// The texels each of [`Names::named`]'s subresources is touched at, in its order
+    /// (a two-image command's sources first).
+    fn texels(&self) -> Vec<Texels> {
+        fn two<R>(r: &[R], side: impl Fn(&R) -> (Texels, Texels)) -> Vec<Texels> {
+            let (src, dst): (Vec<Texels>, Vec<Texels>) = r.iter().map(side).unzip();
+            src.into_iter().chain(dst).collect()
+        }
+        // SAFETY (each `raw_slice`): the safe structs store their arrays with their lengths.
+        match self {
+            Names::CopyImage(.., r) => two(r, |r| {
+                (boxed(r.src_offset, r.extent), boxed(r.dst_offset, r.extent))
+            }),
+            Names::BlitImage(.., r) => {
+                two(r, |r| (cornered(r.src_offsets), cornered(r.dst_offsets)))
+            }
+            Names::ResolveImage(.., r) => two(r, |r| {
+                (boxed(r.src_offset, r.extent), boxed(r.dst_offset, r.extent))
+            }),
+            Names::CopyImage2(i) => two(
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) },
+                |r| (boxed(r.src_offset, r.extent), boxed(r.dst_offset, r.extent)),
+            ),
+            Names::BlitImage2(i) => two(
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) },
+                |r| (cornered(r.src_offsets), cornered(r.dst_offsets)),
+            ),
+            Names::ResolveImage2(i) => two(
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) },
+                |r| (boxed(r.src_offset, r.extent), boxed(r.dst_offset, r.extent)),
+            ),
+            Names::BufferToImage(_, _, r) | Names::ImageToBuffer(_, _, r) => r
+                .iter()
+                .map(|r| boxed(r.image_offset, r.image_extent))
+                .collect(),
+            Names::BufferToImage2(i) => {
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) }
+                    .iter()
+                    .map(|r| boxed(r.image_offset, r.image_extent))
+                    .collect()
+            }
+            Names::ImageToBuffer2(i) => {
+                unsafe { crate::state::raw_slice(i.p_regions, i.region_count) }
+                    .iter()
+                    .map(|r| boxed(r.image_offset, r.image_extent))
+                    .collect()
+            }
+            Names::ClearColor(_, _, r) | Names::ClearDepthStencil(_, _, r) => {
+                vec![EVERY_TEXEL; r.len()]
+            }
+        }
+    }
+
+    /// The subresources the command reads and writes, with their texels.
     pub(crate) fn sides(&self) -> Sides {
-        let named: Vec<(vk::Image, Sel)> = self.named().into_iter().map(|n| (n.0, n.1)).collect();
+        let named: Vec<(vk::Image, Sel, Texels)> = self
+            .named()
+            .into_iter()
+            .zip(self.texels())
+            .map(|(n, t)| (n.0, n.1, t))
+            .collect();
         match self {
             // Two images: the source's subresources first, as many as the destination's.
             Names::CopyImage(..)

@@ -221,10 +221,27 @@ impl Barrier {
     }
 }
 
+/// The texels of a subresource an access touches: x, y and z as `start..end`.
+/// Buffer ranges and whole subresources touch [`EVERY_TEXEL`].
+pub(crate) type Texels = [(i64, i64); 3];
+
+/// Every texel.
+pub(crate) const EVERY_TEXEL: Texels = [(i64::MIN, i64::MAX); 3];
+
+fn meet(a: &Texels, b: &Texels) -> bool {
+    (0..3).all(|i| a[i].0 < b[i].1 && b[i].0 < a[i].1)
+}
+
+fn holds(outer: &Texels, inner: &Texels) -> bool {
+    (0..3).all(|i| outer[i].0 <= inner[i].0 && inner[i].1 <= outer[i].1)
+}
+
 /// The last write of a range and what barriers have made it visible to.
 #[derive(Clone, Debug)]
 struct Write {
     usage: Usage,
+    /// The texels it wrote.
+    texels: Texels,
     /// Each `(stages, access types)` the write is visible to (a union of products).
     visible: Vec<(u64, u64)>,
     /// The stages ordered after the write by the barriers so far.
@@ -239,14 +256,19 @@ impl Write {
     }
 }
 
-/// A read since the last write, and the stages ordered after it.
+/// A read since the last write, the texels it read, and the stages ordered after it.
 #[derive(Clone, Debug)]
 struct Read {
     usage: Usage,
+    texels: Texels,
     after: u64,
 }
 
-/// What the recording has done to one buffer range or image subresource.
+/// What the recording has done to one buffer range or image subresource. Of an
+/// image's subresource, accesses to texels that do not meet are not compared (two
+/// copies into disjoint regions of one level need no barrier); a write keeps the
+/// reads of texels it does not cover, and forgets the write before it (so a hazard
+/// with a write it did not cover goes unseen: never a false refusal).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct State {
     write: Option<Write>,
@@ -311,8 +333,8 @@ impl Hazard {
 }
 
 impl State {
-    /// The hazard of `u` after what the state holds, if any.
-    fn hazard(&self, u: &Usage) -> Option<Hazard> {
+    /// The hazard of `u`, touching `texels`, after what the state holds, if any.
+    fn hazard(&self, u: &Usage, texels: &Texels) -> Option<Hazard> {
         let found = |kind, earlier: &Usage| {
             Some(Hazard {
                 kind,
@@ -320,20 +342,24 @@ impl State {
                 later: *u,
             })
         };
+        let write = self.write.as_ref().filter(|w| meet(&w.texels, texels));
         if !u.write {
-            return match &self.write {
+            return match write {
                 Some(w) if !w.visible_to(u) => found("READ_AFTER_WRITE", &w.usage),
                 _ => None,
             };
         }
-        if !self.reads.is_empty() {
-            return self
-                .reads
-                .iter()
+        let mut reads = self
+            .reads
+            .iter()
+            .filter(|r| meet(&r.texels, texels))
+            .peekable();
+        if reads.peek().is_some() {
+            return reads
                 .find(|r| u.stage & r.after == 0)
                 .and_then(|r| found("WRITE_AFTER_READ", &r.usage));
         }
-        match &self.write {
+        match write {
             Some(w) if !w.visible_to(u) => found("WRITE_AFTER_WRITE", &w.usage),
             _ => None,
         }
@@ -373,19 +399,28 @@ impl State {
         None
     }
 
-    fn record(&mut self, u: Usage) {
+    fn record(&mut self, u: Usage, texels: Texels) {
         if u.write {
-            self.reads.clear();
+            self.reads.retain(|r| !holds(&texels, &r.texels));
             self.write = Some(Write {
                 usage: u,
+                texels,
                 visible: Vec::new(),
                 chain: 0,
             });
-        } else if let Some(r) = self.reads.iter_mut().find(|r| r.usage.stage == u.stage) {
+        } else if let Some(r) = self
+            .reads
+            .iter_mut()
+            .find(|r| r.usage.stage == u.stage && r.texels == texels)
+        {
             r.usage = u;
             r.after = 0;
         } else {
-            self.reads.push(Read { usage: u, after: 0 });
+            self.reads.push(Read {
+                usage: u,
+                texels,
+                after: 0,
+            });
         }
     }
 
@@ -427,6 +462,7 @@ impl State {
                 write: true,
                 cmd,
             },
+            texels: EVERY_TEXEL,
             visible: if b.dst_access != 0 {
                 vec![(b.dst_stages, b.dst_access)]
             } else {
@@ -504,8 +540,8 @@ struct Subresources {
 pub(crate) enum Memory {
     /// A buffer and a range of its bytes (`start..end`).
     Buffer(vk::Buffer, u64, u64),
-    /// An image and some of its subresources.
-    Image(vk::Image, Sel),
+    /// An image, some of its subresources, and the texels of each.
+    Image(vk::Image, Sel, Texels),
 }
 
 impl Memory {
@@ -513,7 +549,7 @@ impl Memory {
     pub(crate) fn describe(&self) -> String {
         match self {
             Memory::Buffer(b, s, e) => format!("bytes {s}..{e} of buffer 0x{:x}", b.as_raw()),
-            Memory::Image(i, sel) => format!(
+            Memory::Image(i, sel, _) => format!(
                 "{:?} of mip levels {}..{}, array layers {}..{} of image 0x{:x}",
                 sel.aspect,
                 sel.mips.0,
@@ -618,10 +654,12 @@ impl Recording {
                 .buffers
                 .get(&b.as_raw())?
                 .states(*s, *e)
-                .find_map(|st| st.hazard(u)),
-            Memory::Image(i, sel) => {
+                .find_map(|st| st.hazard(u, &EVERY_TEXEL)),
+            Memory::Image(i, sel, texels) => {
                 let sub = self.images.get(&i.as_raw())?;
-                sub.shape.indices(sel).find_map(|k| sub.states[k].hazard(u))
+                sub.shape
+                    .indices(sel)
+                    .find_map(|k| sub.states[k].hazard(u, texels))
             }
         }
     }
@@ -635,15 +673,15 @@ impl Recording {
             Memory::Buffer(b, s, e) => {
                 if s < e {
                     for st in self.buffers.entry(b.as_raw()).or_default().cover(*s, *e) {
-                        st.record(u);
+                        st.record(u, EVERY_TEXEL);
                     }
                 }
             }
-            Memory::Image(i, sel) => {
+            Memory::Image(i, sel, texels) => {
                 if let Some(sub) = self.image(live, *i) {
                     let Subresources { shape, states } = sub;
                     for k in shape.indices(sel) {
-                        states[k].record(u);
+                        states[k].record(u, *texels);
                     }
                 }
             }
