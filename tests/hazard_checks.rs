@@ -670,7 +670,10 @@ struct Draws {
 
 fn draws(s: &Setup) -> Draws {
     const SIZE: u32 = 4;
-    let target = s.color_target(SIZE, vk::ImageUsageFlags::empty());
+    let target = s.color_target(
+        SIZE,
+        vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST,
+    );
     let layout = s
         .device
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
@@ -811,6 +814,37 @@ const DRAW_CASES: &[DrawCase] = &[
         }),
     },
     DrawCase {
+        name: "a layout transition for a copy out overwrites what the render pass stored",
+        hazard: WAW,
+        before: |_, _, _, _| Ok(()),
+        drawn: Drawn::Vertices,
+        after: Some(|o, d, rec, fixed, unchecked| {
+            // The render pass leaves its color attachment in COLOR_ATTACHMENT_OPTIMAL.
+            let (src, access) = match fixed {
+                true => (S::COLOR_ATTACHMENT_OUTPUT, A::COLOR_ATTACHMENT_WRITE),
+                false => (S::TRANSFER, A::empty()),
+            };
+            let b = [tuff::ImageMemoryBarrier::new(&d.target.image)
+                .old_layout(L::COLOR_ATTACHMENT_OPTIMAL)
+                .new_layout(L::TRANSFER_SRC_OPTIMAL)
+                .src_access_mask(access)
+                .dst_access_mask(A::TRANSFER_READ)
+                .src_queue_family_index(IGNORED)
+                .dst_queue_family_index(IGNORED)
+                .subresource_range(WHOLE)];
+            let (ds, f) = (S::TRANSFER, vk::DependencyFlags::empty());
+            let r = match unchecked {
+                false => rec.pipeline_barrier(src, ds, f, &[], &[], &b),
+                true => unsafe { rec.pipeline_barrier_unchecked(src, ds, f, &[], &[], &b) },
+            };
+            if r.is_err() || unchecked {
+                return r;
+            }
+            let l = L::TRANSFER_SRC_OPTIMAL;
+            rec.copy_image_to_buffer(&d.target.image, l, &o.c, &texels())
+        }),
+    },
+    DrawCase {
         name: "a draw fetches vertices other than those a fill wrote (no hazard)",
         hazard: "",
         before: |_, d, rec, _| rec.fill_buffer(&d.vertices, 60, 60, 0),
@@ -865,4 +899,48 @@ fn draws_read_their_buffers_after_what_wrote_them() {
         s.submit_wait(&cb);
         assert_silent(&s.messages);
     }
+}
+
+/// A render pass whose attachment's initial layout is UNDEFINED transitions it when
+/// it begins, under the implicit dependency from outside (whose first scope is
+/// TOP_OF_PIPE): a copy into the image just before, with no dependency that waits
+/// for it, is overwritten unordered.
+#[test]
+fn a_render_pass_transitions_its_attachment_after_what_wrote_it() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let d = draws(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    breaks(&s, WAW, Layer::Names, |unchecked| {
+        let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+        let b = [tuff::ImageMemoryBarrier::new(&d.target.image)
+            .old_layout(L::UNDEFINED)
+            .new_layout(L::TRANSFER_DST_OPTIMAL)
+            .dst_access_mask(A::TRANSFER_WRITE)
+            .src_queue_family_index(IGNORED)
+            .dst_queue_family_index(IGNORED)
+            .subresource_range(WHOLE)];
+        let f = vk::DependencyFlags::empty();
+        rec.pipeline_barrier(S::TOP_OF_PIPE, S::TRANSFER, f, &[], &[], &b)?;
+        let l = L::TRANSFER_DST_OPTIMAL;
+        rec.copy_buffer_to_image(&o.a, &d.target.image, l, &texels())?;
+        let clear = [vk::ClearValue::default()];
+        let area = vk::Rect2D {
+            offset: vk::Offset2D::default(),
+            extent: vk::Extent2D {
+                width: 4,
+                height: 4,
+            },
+        };
+        let begin = tuff::RenderPassBeginInfo::new(&d.target.render_pass, &d.target.framebuffer)
+            .render_area(area)
+            .clear_values(&clear);
+        let contents = vk::SubpassContents::INLINE;
+        let rec = match unchecked {
+            false => rec.begin_render_pass(&begin, contents),
+            true => unsafe { rec.begin_render_pass_unchecked(&begin, contents) },
+        };
+        rec.end_render_pass().end()
+    });
 }

@@ -652,23 +652,19 @@ pub(crate) fn pipeline_barrier2<S: Scope>(
     Ok(())
 }
 
-/// The dependencies of the recorder's render pass whose destination is `dst`
-/// (`VK_SUBPASS_EXTERNAL` at the end), as barriers: each orders everything recorded
-/// before it (its first scope is at most that).
-fn dependencies<S: Scope>(
-    recorder: &mut Recorder<'_, S>,
-    name: &'static str,
-    render_pass: vk::RenderPass,
+/// The dependencies of a render pass whose destination is `dst` (`VK_SUBPASS_EXTERNAL`
+/// at the end), as barriers: each orders everything recorded before it (its first
+/// scope is at most that).
+fn dependencies(
+    record: &crate::state::RenderPassRecord,
     dst: u32,
-) {
-    let Some(record) = recorder.device().live().render_pass(render_pass) else {
-        return;
-    };
-    let barriers: Vec<Barrier> = record
+    from_outside: bool,
+) -> Vec<Barrier> {
+    record
         .compatibility
         .dependencies
         .iter()
-        .filter(|d| d.0 .1 == dst)
+        .filter(|d| d.0 .1 == dst && (!from_outside || d.0 .0 == vk::SUBPASS_EXTERNAL))
         .map(|((_, _), (ss, ds), (sa, da), _, _)| {
             Barrier::new(
                 u64::from(ss.as_raw()),
@@ -677,42 +673,265 @@ fn dependencies<S: Scope>(
                 u64::from(da.as_raw()),
             )
         })
-        .collect();
-    let (_, hazards) = recorder.hazards_mut();
-    hazards.next(name);
-    if !barriers.is_empty() {
-        hazards.apply_global(&barriers);
+        .collect()
+}
+
+/// One barrier standing for several: the union of their masks (a layout transition
+/// under several dependencies is ordered by each).
+fn merged(barriers: &[Barrier]) -> Option<Barrier> {
+    barriers.iter().copied().reduce(|a, b| a.union(&b))
+}
+
+/// The attachments of the framebuffer a render pass instance begins with: each
+/// one's image and subresources, by attachment number (`None` for an imageless
+/// framebuffer's, which the begin info gives, or a view the wrappers did not make).
+fn attachment_memory(
+    live: &crate::state::Live,
+    framebuffer: vk::Framebuffer,
+) -> Vec<Option<(vk::Image, Sel)>> {
+    live.framebuffer_views(framebuffer)
+        .iter()
+        .map(|v| {
+            let r = live.view(*v)?;
+            let sel = Sel {
+                aspect: r.aspect,
+                mips: (r.base_level, r.base_level.saturating_add(r.levels)),
+                layers: (r.base_layer, r.base_layer.saturating_add(r.layers)),
+            };
+            Some((r.image, sel))
+        })
+        .collect()
+}
+
+/// The access of a load (`store == false`) or store operation of an attachment's
+/// color or depth (`depth`) or stencil aspect, if it makes one.
+fn edge_access(
+    depth: bool,
+    (load, store): (vk::AttachmentLoadOp, vk::AttachmentStoreOp),
+    is_store: bool,
+) -> Option<(u64, u64, bool)> {
+    // COLOR_ATTACHMENT_OUTPUT, EARLY and LATE_FRAGMENT_TESTS; the attachment access types.
+    const OUTPUT: u64 = 0x400;
+    const EARLY: u64 = 0x100;
+    const LATE: u64 = 0x200;
+    let (read, write) = match depth {
+        false => (0x80, 0x100),
+        true => (0x200, 0x400),
+    };
+    if is_store {
+        if store == vk::AttachmentStoreOp::NONE {
+            return None;
+        }
+        return Some((if depth { LATE } else { OUTPUT }, write, true));
+    }
+    let stage = if depth { EARLY } else { OUTPUT };
+    match load {
+        vk::AttachmentLoadOp::LOAD => Some((stage, read, false)),
+        vk::AttachmentLoadOp::NONE_EXT => None,
+        _ => Some((stage, write, true)),
     }
 }
 
-/// `vkCmdBeginRenderPass` and `vkCmdBeginRenderPass2`: the external dependencies
-/// into the first subpass.
+/// An attachment's subresources in two parts: the color or depth aspect, and the
+/// stencil aspect (empty where the format has none), each with whether its access
+/// types are the depth/stencil ones and whether it is the stencil part.
+fn aspects(sel: Sel) -> [(Sel, bool, bool); 2] {
+    let (d, st) = (vk::ImageAspectFlags::DEPTH, vk::ImageAspectFlags::STENCIL);
+    let part = |aspect| Sel { aspect, ..sel };
+    [
+        (part(sel.aspect & !st), sel.aspect.contains(d), false),
+        (part(sel.aspect & st), true, true),
+    ]
+}
+
+/// The layout transitions and load operations of the attachments a subpass uses
+/// first, under the dependencies into it: each transition and access is checked
+/// against what came before, then recorded.
+fn subpass_begins<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    name: &'static str,
+    (render_pass, framebuffer): (vk::RenderPass, vk::Framebuffer),
+    subpass: u32,
+) -> Result<()> {
+    let live = recorder.device().live();
+    let Some(record) = live.render_pass(render_pass) else {
+        return recorder_next(recorder, name);
+    };
+    let memory = attachment_memory(live, framebuffer);
+    let into = dependencies(&record, subpass, false);
+    // An attachment's first layout transition happens under the dependencies from
+    // outside into the subpass that uses it first; without one, under the implicit
+    // one, which orders nothing before it (its first scope is TOP_OF_PIPE).
+    const ALL_COMMANDS: u64 = 0x10000;
+    const ATTACHMENT_ACCESS: u64 = 0x10 | 0x80 | 0x100 | 0x200 | 0x400;
+    let transition_barrier = merged(&dependencies(&record, subpass, true))
+        .unwrap_or_else(|| Barrier::new(0x1, 0, ALL_COMMANDS, ATTACHMENT_ACCESS));
+    let mut transitions: Vec<(vk::Image, Sel)> = Vec::new();
+    let mut accesses: Vec<(Memory, Use)> = Vec::new();
+    for (a, b) in record.boundaries.iter().enumerate() {
+        let Some((_, layout, stencil_layout)) = b.first.filter(|f| f.0 == subpass) else {
+            continue;
+        };
+        let Some(Some((image, sel))) = memory.get(a) else {
+            continue;
+        };
+        let layouts = record.layouts[a];
+        for (part, depth, stencil) in aspects(*sel) {
+            if part.aspect.is_empty() {
+                continue;
+            }
+            let (initial, now, load) = match stencil {
+                false => (layouts.initial, layout, b.load.0),
+                true => (layouts.stencil_initial, stencil_layout, b.load.1),
+            };
+            if initial != now {
+                transitions.push((*image, part));
+            }
+            let op = (load, vk::AttachmentStoreOp::STORE);
+            if let Some((stage, access, write)) = edge_access(depth || stencil, op, false) {
+                accesses.push((
+                    Memory::Image(*image, part, EVERY_TEXEL),
+                    Use {
+                        stage,
+                        access,
+                        write,
+                    },
+                ));
+            }
+        }
+    }
+    let (live, hazards) = recorder.hazards_mut();
+    let cmd = hazards.next(name);
+    for (image, sel) in &transitions {
+        if let Some(h) = hazards.transition_hazard(*image, sel, &transition_barrier, cmd) {
+            return Err(refuse(&h, &Memory::Image(*image, *sel, EVERY_TEXEL)));
+        }
+    }
+    if !into.is_empty() {
+        hazards.apply_global(&into);
+    }
+    for (image, sel) in &transitions {
+        hazards.apply_image(live, *image, sel, &transition_barrier, Some(cmd));
+    }
+    for (m, u) in &accesses {
+        if let Some(h) = hazards.hazard(m, &usage(u, cmd)) {
+            return Err(refuse(&h, m));
+        }
+    }
+    for (m, u) in &accesses {
+        hazards.record(live, m, usage(u, cmd));
+    }
+    Ok(())
+}
+
+/// Counts a command that touches nothing the tracker knows.
+fn recorder_next<S: Scope>(recorder: &mut Recorder<'_, S>, name: &'static str) -> Result<()> {
+    recorder.hazards.next(name);
+    Ok(())
+}
+
+/// `vkCmdBeginRenderPass` and `vkCmdBeginRenderPass2`: the dependencies from outside
+/// into the first subpass, the layout transitions and load operations of the
+/// attachments it uses first.
 pub(crate) fn begin_render_pass<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     facts: &Facts,
     begin: &RenderPassBeginInfo<'_>,
 ) -> Result<()> {
-    dependencies(recorder, facts.name, begin.as_raw().render_pass, 0);
-    Ok(())
+    let raw = begin.as_raw();
+    subpass_begins(recorder, facts.name, (raw.render_pass, raw.framebuffer), 0)
 }
 
-/// `vkCmdNextSubpass` and `vkCmdNextSubpass2`: the dependencies into the next subpass.
+/// `vkCmdNextSubpass` and `vkCmdNextSubpass2`: the dependencies into the next
+/// subpass, and the attachments it uses first.
 pub(crate) fn next_subpass<S: Scope>(recorder: &mut Recorder<'_, S>, facts: &Facts) -> Result<()> {
-    if let Some(i) = recorder.instance.as_ref() {
-        let (pass, next) = (i.render_pass, i.subpass + 1);
-        dependencies(recorder, facts.name, pass, next);
+    match recorder.instance.as_ref() {
+        Some(i) => {
+            let (pass, fb, next) = (i.render_pass, i.framebuffer, i.subpass + 1);
+            subpass_begins(recorder, facts.name, (pass, fb), next)
+        }
+        None => recorder_next(recorder, facts.name),
     }
-    Ok(())
 }
 
-/// `vkCmdEndRenderPass` and `vkCmdEndRenderPass2`: the external dependencies out of
-/// the render pass.
+/// `vkCmdEndRenderPass` and `vkCmdEndRenderPass2`: the store operations of the
+/// attachments, their final layout transitions, and the dependencies out of the
+/// render pass.
 pub(crate) fn end_render_pass<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     facts: &Facts,
 ) -> Result<()> {
-    if let Some(pass) = recorder.instance.as_ref().map(|i| i.render_pass) {
-        dependencies(recorder, facts.name, pass, vk::SUBPASS_EXTERNAL);
+    let Some((pass, fb)) = recorder
+        .instance
+        .as_ref()
+        .map(|i| (i.render_pass, i.framebuffer))
+    else {
+        return recorder_next(recorder, facts.name);
+    };
+    let live = recorder.device().live();
+    let Some(record) = live.render_pass(pass) else {
+        return recorder_next(recorder, facts.name);
+    };
+    let memory = attachment_memory(live, fb);
+    let out = dependencies(&record, vk::SUBPASS_EXTERNAL, false);
+    // Without a dependency out, the implicit one: every attachment write, to
+    // BOTTOM_OF_PIPE.
+    const ALL_COMMANDS: u64 = 0x10000;
+    const BOTTOM: u64 = 0x2000;
+    const ATTACHMENT_WRITES: u64 = 0x100 | 0x400;
+    let transition_barrier =
+        merged(&out).unwrap_or_else(|| Barrier::new(ALL_COMMANDS, ATTACHMENT_WRITES, BOTTOM, 0));
+    let mut stores: Vec<(Memory, Use)> = Vec::new();
+    let mut transitions: Vec<(vk::Image, Sel)> = Vec::new();
+    for (a, b) in record.boundaries.iter().enumerate() {
+        let Some((_, layout, stencil_layout)) = b.last else {
+            continue;
+        };
+        let Some(Some((image, sel))) = memory.get(a) else {
+            continue;
+        };
+        let layouts = record.layouts[a];
+        for (part, depth, stencil) in aspects(*sel) {
+            if part.aspect.is_empty() {
+                continue;
+            }
+            let (last, now, store) = match stencil {
+                false => (layouts.last, layout, b.store.0),
+                true => (layouts.stencil_last, stencil_layout, b.store.1),
+            };
+            let op = (vk::AttachmentLoadOp::LOAD, store);
+            if let Some((stage, access, write)) = edge_access(depth || stencil, op, true) {
+                stores.push((
+                    Memory::Image(*image, part, EVERY_TEXEL),
+                    Use {
+                        stage,
+                        access,
+                        write,
+                    },
+                ));
+            }
+            if last != now {
+                transitions.push((*image, part));
+            }
+        }
+    }
+    let (live, hazards) = recorder.hazards_mut();
+    let cmd = hazards.next(facts.name);
+    // The stores follow the instance's own accesses of the attachment, which the
+    // render pass orders: recorded, not checked.
+    for (m, u) in &stores {
+        hazards.record(live, m, usage(u, cmd));
+    }
+    for (image, sel) in &transitions {
+        if let Some(h) = hazards.transition_hazard(*image, sel, &transition_barrier, cmd) {
+            return Err(refuse(&h, &Memory::Image(*image, *sel, EVERY_TEXEL)));
+        }
+    }
+    if !out.is_empty() {
+        hazards.apply_global(&out);
+    }
+    for (image, sel) in &transitions {
+        hazards.apply_image(live, *image, sel, &transition_barrier, Some(cmd));
     }
     Ok(())
 }

@@ -219,6 +219,8 @@ pub(super) struct Pass {
 pub(super) struct Described {
     /// Its `loadOp` and `stencilLoadOp`.
     pub(super) load: (vk::AttachmentLoadOp, vk::AttachmentLoadOp),
+    /// Its `storeOp` and `stencilStoreOp`.
+    pub(super) store: (vk::AttachmentStoreOp, vk::AttachmentStoreOp),
     pub(super) may_alias: bool,
     pub(super) layouts: crate::state::AttachmentLayouts,
     /// Whether a `VkAttachmentDescriptionStencilLayout` gave the stencil aspect's.
@@ -231,6 +233,7 @@ macro_rules! described {
     ($a:expr, $stencil:expr) => {
         Described::of(
             ($a.load_op, $a.stencil_load_op),
+            ($a.store_op, $a.stencil_store_op),
             $a.flags,
             ($a.initial_layout, $a.final_layout),
             $stencil,
@@ -241,6 +244,7 @@ macro_rules! described {
 impl Described {
     fn of(
         (load, stencil_load): (vk::AttachmentLoadOp, vk::AttachmentLoadOp),
+        store: (vk::AttachmentStoreOp, vk::AttachmentStoreOp),
         flags: vk::AttachmentDescriptionFlags,
         (initial, last): (vk::ImageLayout, vk::ImageLayout),
         stencil: Option<(vk::ImageLayout, vk::ImageLayout)>,
@@ -248,6 +252,7 @@ impl Described {
         let (stencil_initial, stencil_last) = stencil.unwrap_or((initial, last));
         Described {
             load: (load, stencil_load),
+            store,
             may_alias: flags.contains(vk::AttachmentDescriptionFlags::MAY_ALIAS),
             layouts: crate::state::AttachmentLayouts {
                 initial,
@@ -623,9 +628,34 @@ impl Pass {
                     .collect(),
                 second: self.second,
                 compatibility: self.compatibility(),
+                boundaries: self.boundaries(),
             },
         );
         render_pass
+    }
+
+    /// What each attachment does at the render pass instance's edges: its load and
+    /// store operations, and the subpasses that use it first and last with the
+    /// layouts (depth or color, stencil) they give it.
+    fn boundaries(&self) -> Vec<crate::state::Boundary> {
+        let uses = |a: u32| {
+            self.subpasses.iter().enumerate().filter_map(move |(i, s)| {
+                s.refs()
+                    .map(|(_, r)| r)
+                    .find(|r| r.attachment == a)
+                    .map(|r| (i as u32, r.layout, r.stencil_layout))
+            })
+        };
+        self.described
+            .iter()
+            .enumerate()
+            .map(|(a, d)| crate::state::Boundary {
+                load: d.load,
+                store: d.store,
+                first: uses(a as u32).next(),
+                last: uses(a as u32).next_back(),
+            })
+            .collect()
     }
 
     /// What the render pass compatibility of the specification compares: every

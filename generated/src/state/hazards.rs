@@ -211,6 +211,18 @@ impl Barrier {
         }
     }
 
+    /// The barrier of both: each scope the union of theirs.
+    pub(crate) fn union(&self, o: &Barrier) -> Barrier {
+        Barrier {
+            src_exec: self.src_exec | o.src_exec,
+            src_stages: self.src_stages | o.src_stages,
+            src_access: self.src_access | o.src_access,
+            dst_exec: self.dst_exec | o.dst_exec,
+            dst_stages: self.dst_stages | o.dst_stages,
+            dst_access: self.dst_access | o.dst_access,
+        }
+    }
+
     /// An execution dependency alone: the same stages, no access.
     pub(crate) fn execution(&self) -> Barrier {
         Barrier {

@@ -48,8 +48,8 @@ pub(crate) use self::pipeline::{
 pub(crate) use self::query::QueryPoolRecord;
 pub(crate) use self::queue::{Ledger, Submission};
 pub(crate) use self::render_pass::{
-    AttachmentLayouts, Compatibility, RenderPassRecord, SelfDependency, SubpassShape, USED_COLOR,
-    USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
+    AttachmentLayouts, Boundary, Compatibility, RenderPassRecord, SelfDependency, SubpassShape,
+    USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
 };
 pub(crate) use self::sync::{Binary, Timeline};
 pub(crate) use self::view::ViewRecord;

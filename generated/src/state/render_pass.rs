@@ -58,6 +58,8 @@ pub(crate) struct RenderPassRecord {
     pub dependencies: Vec<(u32, u32)>,
     /// Made by `vkCreateRenderPass2`.
     pub second: bool,
+    /// What each attachment does at the edges of a render pass instance.
+    pub boundaries: Vec<Boundary>,
     /// What render pass compatibility compares.
     pub compatibility: Compatibility,
 }
@@ -150,6 +152,18 @@ pub(crate) struct SelfDependency {
     pub stages: (vk::PipelineStageFlags, vk::PipelineStageFlags),
     /// Its source and destination access masks.
     pub access: (vk::AccessFlags, vk::AccessFlags),
+}
+
+/// What an attachment does at the edges of a render pass instance, for the hazard
+/// tracker: its load and store operations (color or depth, stencil), and the first
+/// and last subpasses that use it with the layouts they give it (color or depth,
+/// stencil); `None` for an attachment no subpass uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Boundary {
+    pub load: (vk::AttachmentLoadOp, vk::AttachmentLoadOp),
+    pub store: (vk::AttachmentStoreOp, vk::AttachmentStoreOp),
+    pub first: Option<(u32, vk::ImageLayout, vk::ImageLayout)>,
+    pub last: Option<(u32, vk::ImageLayout, vk::ImageLayout)>,
 }
 
 /// The layouts a render pass instance needs an attachment in and leaves it in.
