@@ -1651,6 +1651,13 @@ fn dispatches_refuse_dynamic_state_set_since_their_pipeline() {
         bind(&mut rec);
         dispatch(&mut rec, false).expect("a dispatch with nothing set since the bind");
         rec.set_line_width(1.0);
+        // The dispatches write the same storage buffer: ordered, or they race.
+        let w = [tuff::MemoryBarrier::new()
+            .src_access_mask(vk::AccessFlags::SHADER_WRITE)
+            .dst_access_mask(vk::AccessFlags::SHADER_WRITE)];
+        let cs = vk::PipelineStageFlags::COMPUTE_SHADER;
+        rec.pipeline_barrier(cs, cs, vk::DependencyFlags::empty(), &w, &[], &[])
+            .expect("barrier");
         bind(&mut rec);
         dispatch(&mut rec, false).expect("a dispatch after the pipeline is bound again");
         rec.end().expect("end");

@@ -36,7 +36,8 @@ const WAR: &str = "SYNC-HAZARD-WRITE-AFTER-READ";
 const WAW: &str = "SYNC-HAZARD-WRITE-AFTER-WRITE";
 const IGNORED: u32 = vk::QUEUE_FAMILY_IGNORED;
 
-/// The buffers, image and event the programs use.
+/// The buffers, image and event the programs use, and a compute pipeline over the
+/// buffers.
 struct Objects {
     a: tuff::Buffer,
     b: tuff::Buffer,
@@ -44,11 +45,131 @@ struct Objects {
     /// RGBA8, 4x4, a transfer source and destination.
     image: tuff::Image,
     event: tuff::Event,
+    /// `add.comp`: reads `a` and `b`, writes `c` (16 floats each).
+    add: Dispatcher,
     _memory: Vec<tuff::DeviceMemory>,
 }
 
+/// A compute pipeline over storage buffers, with its set written.
+struct Dispatcher {
+    pipeline: tuff::Pipeline,
+    layout: tuff::PipelineLayout,
+    set: tuff::DescriptorSet,
+    _pool: tuff::DescriptorPool,
+    _set_layout: tuff::DescriptorSetLayout,
+    _module: tuff::ShaderModule,
+}
+
+/// A compute pipeline of `bytes` whose set binds `buffers` as storage buffers
+/// 0, 1, ... (their first 64 bytes), and takes a 4-byte push constant.
+fn dispatcher(s: &Setup, bytes: &[u8], buffers: &[&tuff::Buffer]) -> Dispatcher {
+    let d = &s.device;
+    let storage = vk::DescriptorType::STORAGE_BUFFER;
+    let bindings: Vec<_> = (0..buffers.len() as u32)
+        .map(|b| {
+            tuff::DescriptorSetLayoutBinding::new()
+                .binding(b)
+                .descriptor_type(storage)
+                .descriptor_count(1)
+                .stage_flags(vk::ShaderStageFlags::COMPUTE)
+        })
+        .collect();
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let push = [vk::PushConstantRange {
+        stage_flags: vk::ShaderStageFlags::COMPUTE,
+        offset: 0,
+        size: 4,
+    }];
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let layout = d
+        .create_pipeline_layout(
+            &tuff::PipelineLayoutCreateInfo::new()
+                .set_layouts(&set_layouts)
+                .push_constant_ranges(&push),
+        )
+        .expect("layout");
+    let module = tuff_setup::shader(s, bytes);
+    let stage = tuff::PipelineShaderStageCreateInfo::new(c"main")
+        .stage(vk::ShaderStageFlags::COMPUTE)
+        .module(Some(&module));
+    let pipeline = d
+        .create_compute_pipeline(None, &tuff::ComputePipelineCreateInfo::new(stage, &layout))
+        .expect("compute pipeline");
+    let sizes = [vk::DescriptorPoolSize {
+        ty: storage,
+        descriptor_count: buffers.len() as u32,
+    }];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("pool");
+    let set = d
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
+        )
+        .expect("set")
+        .pop()
+        .expect("one set");
+    let infos: Vec<[tuff::DescriptorBufferInfo<'_>; 1]> = buffers
+        .iter()
+        .map(|b| {
+            [tuff::DescriptorBufferInfo::new()
+                .buffer(Some(b))
+                .offset(0)
+                .range(64)]
+        })
+        .collect();
+    let writes: Vec<_> = infos
+        .iter()
+        .enumerate()
+        .map(|(b, info)| {
+            tuff::WriteDescriptorSet::new(&set)
+                .dst_binding(b as u32)
+                .descriptor_type(storage)
+                .buffer_info(info)
+        })
+        .collect();
+    d.update_descriptor_sets(&writes, &[]).expect("writes");
+    Dispatcher {
+        pipeline,
+        layout,
+        set,
+        _pool: pool,
+        _set_layout: set_layout,
+        _module: module,
+    }
+}
+
+/// Binds `p` and its set, pushes 16 (add.comp's count) and dispatches one group,
+/// through `_unchecked` when `unchecked`.
+fn dispatch(p: &Dispatcher, rec: &mut Rec<'_>, unchecked: bool) -> tuff::Result<()> {
+    let bind = vk::PipelineBindPoint::COMPUTE;
+    rec.bind_pipeline(bind, &p.pipeline)?;
+    rec.bind_descriptor_sets(bind, &p.layout, 0, &p.set, &[])?;
+    rec.push_constants(
+        &p.layout,
+        vk::ShaderStageFlags::COMPUTE,
+        0,
+        &16u32.to_ne_bytes(),
+    )?;
+    match unchecked {
+        false => rec.dispatch(1, 1, 1),
+        true => unsafe { rec.dispatch_unchecked(1, 1, 1) },
+    }
+}
+
 fn buffer(s: &Setup) -> (tuff::Buffer, tuff::DeviceMemory) {
-    let usage = vk::BufferUsageFlags::TRANSFER_SRC | vk::BufferUsageFlags::TRANSFER_DST;
+    let usage = vk::BufferUsageFlags::TRANSFER_SRC
+        | vk::BufferUsageFlags::TRANSFER_DST
+        | vk::BufferUsageFlags::STORAGE_BUFFER;
     let b = s
         .device
         .create_buffer(&tuff::BufferCreateInfo::new().size(256).usage(usage))
@@ -94,12 +215,18 @@ fn objects(s: &Setup) -> Objects {
         .device
         .create_event(&tuff::EventCreateInfo::new())
         .expect("event");
+    let add = dispatcher(
+        s,
+        include_bytes!("../shaders/spv/add.comp.spv"),
+        &[&a, &b, &c],
+    );
     Objects {
         a,
         b,
         c,
         image,
         event,
+        add,
         _memory: vec![m1, m2, m3, m4],
     }
 }
@@ -534,6 +661,71 @@ const CASES: &[Case] = &[
         },
     },
     Case {
+        name: "a dispatch reads what a copy wrote",
+        auto: true,
+        hazard: RAW,
+        program: |o, rec, fixed, u| {
+            rec.copy_buffer(&o.b, &o.a, &region(0, 0, 64))?;
+            if fixed {
+                barrier(rec, TRANSFER_WRITE, (S::COMPUTE_SHADER, A::SHADER_READ))?;
+            }
+            dispatch(&o.add, rec, u)
+        },
+    },
+    Case {
+        name: "a copy reads what a dispatch wrote",
+        auto: true,
+        hazard: RAW,
+        program: |o, rec, fixed, u| {
+            dispatch(&o.add, rec, false)?;
+            if fixed {
+                barrier(rec, (S::COMPUTE_SHADER, A::SHADER_WRITE), TRANSFER_READ)?;
+            }
+            let r = region(0, 0, 64);
+            match u {
+                false => rec.copy_buffer(&o.c, &o.b, &r),
+                true => unsafe { rec.copy_buffer_unchecked(&o.c, &o.b, &r) },
+            }
+        },
+    },
+    Case {
+        name: "a fill overwrites what a dispatch reads",
+        auto: true,
+        hazard: WAR,
+        program: |o, rec, fixed, u| {
+            dispatch(&o.add, rec, false)?;
+            if fixed {
+                let f = vk::DependencyFlags::empty();
+                rec.pipeline_barrier(S::COMPUTE_SHADER, S::TRANSFER, f, &[], &[], &[])?;
+            }
+            match u {
+                false => rec.fill_buffer(&o.a, 0, 64, 0),
+                true => unsafe { rec.fill_buffer_unchecked(&o.a, 0, 64, 0) },
+            }
+        },
+    },
+    Case {
+        name: "a copy overwrites what a dispatch wrote",
+        auto: true,
+        hazard: WAW,
+        program: |o, rec, fixed, u| {
+            dispatch(&o.add, rec, false)?;
+            if fixed {
+                barrier(rec, (S::COMPUTE_SHADER, A::SHADER_WRITE), TRANSFER_WRITE)?;
+            }
+            copy_b_to_c(o, rec, u)
+        },
+    },
+    Case {
+        name: "a dispatch reads what a copy wrote beside its range (no hazard)",
+        auto: true,
+        hazard: "",
+        program: |o, rec, _, u| {
+            rec.copy_buffer(&o.b, &o.a, &region(0, 64, 64))?;
+            dispatch(&o.add, rec, u)
+        },
+    },
+    Case {
         name: "an event wait that makes nothing visible",
         auto: true,
         hazard: RAW,
@@ -658,14 +850,108 @@ fn the_error_names_both_commands_the_memory_and_the_barrier() {
 
 /// What the draw programs use: a color target, a pipeline fetching binding 0's
 /// 20-byte vertices, a vertex buffer of six and an index buffer of three that
-/// transfers also write.
+/// transfers also write; `produce.comp` writing the vertices and an indirect draw's
+/// parameters; a pipeline sampling a texture through a combined image sampler.
 struct Draws {
     target: tuff_setup::ColorTarget,
     _layout: tuff::PipelineLayout,
     pipeline: tuff::Pipeline,
     vertices: tuff::Buffer,
     indices: tuff::Buffer,
+    /// One `VkDrawIndirectCommand`, which `produce` writes.
+    args: tuff::Buffer,
+    produce: Dispatcher,
+    sampling: Sampling,
     _memory: Vec<tuff::DeviceMemory>,
+}
+
+/// `quad.vert` and `quad.frag` sampling `texture` (RGBA8, 4x4) through set 0.
+struct Sampling {
+    pipeline: tuff::Pipeline,
+    layout: tuff::PipelineLayout,
+    set: tuff::DescriptorSet,
+    texture: tuff::Image,
+    _view: tuff::ImageView,
+    _sampler: tuff::Sampler,
+    _pool: tuff::DescriptorPool,
+    _set_layout: tuff::DescriptorSetLayout,
+    _modules: [tuff::ShaderModule; 2],
+    _memory: tuff::DeviceMemory,
+}
+
+fn sampling(s: &Setup, render_pass: &tuff::RenderPass) -> Sampling {
+    let d = &s.device;
+    let (texture, memory, view) = s.color_image(
+        4,
+        vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
+    );
+    let sampler = d
+        .create_sampler(&tuff::SamplerCreateInfo::new())
+        .expect("sampler");
+    let combined = vk::DescriptorType::COMBINED_IMAGE_SAMPLER;
+    let bindings = [tuff::DescriptorSetLayoutBinding::new()
+        .binding(0)
+        .descriptor_type(combined)
+        .descriptor_count(1)
+        .stage_flags(vk::ShaderStageFlags::FRAGMENT)];
+    let set_layout = d
+        .create_descriptor_set_layout(
+            &tuff::DescriptorSetLayoutCreateInfo::new().bindings(&bindings),
+        )
+        .expect("set layout");
+    let set_layouts = tuff::HandleSlice::new(&[&set_layout]);
+    let layout = d
+        .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new().set_layouts(&set_layouts))
+        .expect("layout");
+    let module = |bytes| tuff_setup::shader(s, bytes);
+    let vert = module(include_bytes!("../shaders/spv/quad.vert.spv"));
+    let frag = module(include_bytes!("../shaders/spv/quad.frag.spv"));
+    let stages = pipelines::test_stages(&vert, &frag);
+    let (mut made, _) = pipelines::with_graphics_info(&stages, &layout, render_pass, |info| {
+        d.create_graphics_pipelines(None, &[info])
+    })
+    .expect("sampling pipeline");
+    let pipeline = made.pop().expect("one pipeline");
+    let sizes = [vk::DescriptorPoolSize {
+        ty: combined,
+        descriptor_count: 1,
+    }];
+    let pool = d
+        .create_descriptor_pool(
+            &tuff::DescriptorPoolCreateInfo::new()
+                .max_sets(1)
+                .pool_sizes(&sizes),
+        )
+        .expect("pool");
+    let set = d
+        .allocate_descriptor_sets(
+            &pool,
+            &tuff::DescriptorSetAllocateInfo::new(&pool).set_layouts(&set_layout),
+        )
+        .expect("set")
+        .pop()
+        .expect("one set");
+    let info = [tuff::DescriptorImageInfo::new()
+        .sampler(Some(&sampler))
+        .image_view(Some(&view))
+        .image_layout(L::SHADER_READ_ONLY_OPTIMAL)];
+    let write = tuff::WriteDescriptorSet::new(&set)
+        .dst_binding(0)
+        .descriptor_type(combined)
+        .image_info(&info);
+    d.update_descriptor_sets(&[write], &[]).expect("write");
+    Sampling {
+        pipeline,
+        layout,
+        set,
+        texture,
+        _view: view,
+        _sampler: sampler,
+        _pool: pool,
+        _set_layout: set_layout,
+        _modules: [vert, frag],
+        _memory: memory,
+    }
 }
 
 fn draws(s: &Setup) -> Draws {
@@ -679,17 +965,27 @@ fn draws(s: &Setup) -> Draws {
         .create_pipeline_layout(&tuff::PipelineLayoutCreateInfo::new())
         .expect("layout");
     let pipeline = pipelines::vertex_pipeline(s, &layout, &target.render_pass);
-    let u = vk::BufferUsageFlags::TRANSFER_DST;
+    let u = vk::BufferUsageFlags::TRANSFER_DST | vk::BufferUsageFlags::STORAGE_BUFFER;
     // Three vertices drawn, room for three more.
     let (vertices, m1) = pipelines::host_buffer(s, 120, u | vk::BufferUsageFlags::VERTEX_BUFFER);
     let (indices, m2) = pipelines::host_buffer(s, 12, u | vk::BufferUsageFlags::INDEX_BUFFER);
+    let (args, m3) = pipelines::host_buffer(s, 64, u | vk::BufferUsageFlags::INDIRECT_BUFFER);
+    let produce = dispatcher(
+        s,
+        include_bytes!("../shaders/spv/produce.comp.spv"),
+        &[&vertices, &args],
+    );
+    let sampling = sampling(s, &target.render_pass);
     Draws {
         target,
         _layout: layout,
         pipeline,
         vertices,
         indices,
-        _memory: vec![m1, m2],
+        args,
+        produce,
+        sampling,
+        _memory: vec![m1, m2, m3],
     }
 }
 
@@ -700,6 +996,10 @@ enum Drawn {
     Vertices,
     /// Three indices.
     Indexed,
+    /// The parameters in `args`.
+    Indirect,
+    /// Three vertices of the sampling pipeline.
+    Sampled,
 }
 
 /// A render pass instance with one draw, `unchecked` through `_unchecked`; the
@@ -728,19 +1028,29 @@ fn draw_pass<'c>(
         max_depth: 1.0,
         ..Default::default()
     };
+    let graphics = vk::PipelineBindPoint::GRAPHICS;
     let setup = (|| {
-        rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &d.pipeline)?;
-        rec.bind_vertex_buffers(0, &d.vertices, &[0])?;
-        rec.bind_index_buffer(&d.indices, 0, vk::IndexType::UINT32)?;
+        if let Drawn::Sampled = drawn {
+            let p = &d.sampling;
+            rec.bind_pipeline(graphics, &p.pipeline)?;
+            rec.bind_descriptor_sets(graphics, &p.layout, 0, &p.set, &[])?;
+        } else {
+            rec.bind_pipeline(graphics, &d.pipeline)?;
+            rec.bind_vertex_buffers(0, &d.vertices, &[0])?;
+            rec.bind_index_buffer(&d.indices, 0, vk::IndexType::UINT32)?;
+        }
         rec.set_viewport(0, &[viewport])?;
         rec.set_scissor(0, &[area])
     })();
     setup.expect("the draw's state");
+    // SAFETY (the indirect draw): `produce.comp` writes three vertices, one instance.
     let r = match (drawn, unchecked) {
-        (Drawn::Vertices, false) => rec.draw(3, 1, 0, 0),
-        (Drawn::Vertices, true) => unsafe { rec.draw_unchecked(3, 1, 0, 0) },
+        (Drawn::Vertices | Drawn::Sampled, false) => rec.draw(3, 1, 0, 0),
+        (Drawn::Vertices | Drawn::Sampled, true) => unsafe { rec.draw_unchecked(3, 1, 0, 0) },
         (Drawn::Indexed, false) => rec.draw_indexed(3, 1, 0, 0, 0),
         (Drawn::Indexed, true) => unsafe { rec.draw_indexed_unchecked(3, 1, 0, 0, 0) },
+        (Drawn::Indirect, false) => unsafe { rec.draw_indirect(&d.args, 0, 1, 16) },
+        (Drawn::Indirect, true) => unsafe { rec.draw_indirect_unchecked(&d.args, 0, 1, 16) },
     };
     (rec.end_render_pass(), r)
 }
@@ -758,6 +1068,9 @@ struct DrawCase {
     /// After the render pass; its result is the program's when the draw is not the
     /// hazard.
     after: Option<After>,
+    /// Whether automatic synchronization makes the broken program right (see
+    /// [`Case::auto`]).
+    auto: bool,
 }
 
 const DRAW_CASES: &[DrawCase] = &[
@@ -777,6 +1090,7 @@ const DRAW_CASES: &[DrawCase] = &[
         },
         drawn: Drawn::Vertices,
         after: None,
+        auto: true,
     },
     DrawCase {
         name: "an indexed draw reads indices a fill wrote",
@@ -790,6 +1104,7 @@ const DRAW_CASES: &[DrawCase] = &[
         },
         drawn: Drawn::Indexed,
         after: None,
+        auto: true,
     },
     DrawCase {
         name: "a fill overwrites vertices a draw fetched",
@@ -812,6 +1127,7 @@ const DRAW_CASES: &[DrawCase] = &[
                 true => unsafe { rec.fill_buffer_unchecked(&d.vertices, 0, 60, 0) },
             }
         }),
+        auto: true,
     },
     DrawCase {
         name: "a layout transition for a copy out overwrites what the render pass stored",
@@ -843,6 +1159,81 @@ const DRAW_CASES: &[DrawCase] = &[
             let l = L::TRANSFER_SRC_OPTIMAL;
             rec.copy_image_to_buffer(&d.target.image, l, &o.c, &texels())
         }),
+        auto: false,
+    },
+    DrawCase {
+        name: "a draw fetches vertices a dispatch wrote",
+        hazard: RAW,
+        before: |_, d, rec, fixed| {
+            dispatch(&d.produce, rec, false)?;
+            if fixed {
+                let fetch = (S::VERTEX_INPUT, A::VERTEX_ATTRIBUTE_READ);
+                barrier(rec, (S::COMPUTE_SHADER, A::SHADER_WRITE), fetch)?;
+            }
+            Ok(())
+        },
+        drawn: Drawn::Vertices,
+        after: None,
+        auto: true,
+    },
+    DrawCase {
+        name: "an indirect draw reads parameters a dispatch wrote",
+        hazard: RAW,
+        before: |_, d, rec, fixed| {
+            dispatch(&d.produce, rec, false)?;
+            if fixed {
+                let read = (
+                    S::DRAW_INDIRECT | S::VERTEX_INPUT,
+                    A::INDIRECT_COMMAND_READ | A::VERTEX_ATTRIBUTE_READ,
+                );
+                barrier(rec, (S::COMPUTE_SHADER, A::SHADER_WRITE), read)?;
+            }
+            Ok(())
+        },
+        drawn: Drawn::Indirect,
+        after: None,
+        auto: true,
+    },
+    DrawCase {
+        name: "a draw samples a texture whose barrier waits for another stage",
+        hazard: RAW,
+        before: |o, d, rec, fixed| {
+            let texture = &d.sampling.texture;
+            let to = |old, new, (sa, da)| {
+                [tuff::ImageMemoryBarrier::new(texture)
+                    .old_layout(old)
+                    .new_layout(new)
+                    .src_access_mask(sa)
+                    .dst_access_mask(da)
+                    .src_queue_family_index(IGNORED)
+                    .dst_queue_family_index(IGNORED)
+                    .subresource_range(WHOLE)]
+            };
+            let f = vk::DependencyFlags::empty();
+            let b = to(
+                L::UNDEFINED,
+                L::TRANSFER_DST_OPTIMAL,
+                (A::empty(), A::TRANSFER_WRITE),
+            );
+            rec.pipeline_barrier(S::TOP_OF_PIPE, S::TRANSFER, f, &[], &[], &b)?;
+            let l = L::TRANSFER_DST_OPTIMAL;
+            rec.copy_buffer_to_image(&o.a, texture, l, &texels())?;
+            // A compute shader would see the texture; the fragment shader does not.
+            let dst = if fixed {
+                S::FRAGMENT_SHADER
+            } else {
+                S::COMPUTE_SHADER
+            };
+            let b = to(
+                L::TRANSFER_DST_OPTIMAL,
+                L::SHADER_READ_ONLY_OPTIMAL,
+                (A::TRANSFER_WRITE, A::SHADER_READ),
+            );
+            rec.pipeline_barrier(S::TRANSFER, dst, f, &[], &[], &b)
+        },
+        drawn: Drawn::Sampled,
+        after: None,
+        auto: true,
     },
     DrawCase {
         name: "a draw fetches vertices other than those a fill wrote (no hazard)",
@@ -850,6 +1241,7 @@ const DRAW_CASES: &[DrawCase] = &[
         before: |_, d, rec, _| rec.fill_buffer(&d.vertices, 60, 60, 0),
         drawn: Drawn::Vertices,
         after: None,
+        auto: true,
     },
 ];
 
@@ -860,9 +1252,10 @@ fn draw_program(
     d: &Draws,
     cb: &mut tuff::CommandBuffer,
     case: &DrawCase,
-    (fixed, unchecked): (bool, bool),
+    (fixed, unchecked, auto): (bool, bool, bool),
 ) -> tuff::Result<()> {
     let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+    rec.auto_sync(auto);
     (case.before)(o, d, &mut rec, fixed)?;
     let draw_is_last = case.after.is_none();
     let (mut rec, drawn) = draw_pass(d, rec, case.drawn, unchecked && draw_is_last);
@@ -890,11 +1283,22 @@ fn draws_read_their_buffers_after_what_wrote_them() {
         println!("{}", case.name);
         if !case.hazard.is_empty() {
             breaks(&s, case.hazard, Layer::Names, |unchecked| {
-                draw_program(&o, &d, &mut cb, case, (false, unchecked))
+                draw_program(&o, &d, &mut cb, case, (false, unchecked, false))
             });
         }
-        if let Err(e) = draw_program(&o, &d, &mut cb, case, (true, false)) {
+        if let Err(e) = draw_program(&o, &d, &mut cb, case, (true, false, false)) {
             panic!("{}: refused: {e}", case.name);
+        }
+        s.submit_wait(&cb);
+        assert_silent(&s.messages);
+        // The broken program with automatic synchronization.
+        let r = draw_program(&o, &d, &mut cb, case, (false, false, true));
+        if !case.auto {
+            assert_eq!(tuff_setup::vuid(r), case.hazard, "{}", case.name);
+            continue;
+        }
+        if let Err(e) = r {
+            panic!("{}: refused with automatic synchronization: {e}", case.name);
         }
         s.submit_wait(&cb);
         assert_silent(&s.messages);
@@ -943,4 +1347,158 @@ fn a_render_pass_transitions_its_attachment_after_what_wrote_it() {
         };
         rec.end_render_pass().end()
     });
+}
+
+/// Two submissions to one queue, neither waited for before the next: what the
+/// first does, and the second's commands (with the barrier that orders them after
+/// the first's when `fixed` and no semaphore fixes them).
+struct SubmissionCase {
+    name: &'static str,
+    hazard: &'static str,
+    first: fn(&Objects, &mut Rec<'_>) -> tuff::Result<()>,
+    second: fn(&Objects, &mut Rec<'_>, bool) -> tuff::Result<()>,
+    /// Fixed by a semaphore the first submission signals and the second waits for
+    /// at these stages, rather than by a barrier.
+    semaphore: Option<S>,
+}
+
+const SUBMISSION_CASES: &[SubmissionCase] = &[
+    SubmissionCase {
+        name: "a fill overwrites what the last submission's copy reads",
+        hazard: WAR,
+        first: |o, rec| copy_b_to_c(o, rec, false),
+        second: |o, rec, fixed| {
+            if fixed {
+                let f = vk::DependencyFlags::empty();
+                rec.pipeline_barrier(S::TRANSFER, S::TRANSFER, f, &[], &[], &[])?;
+            }
+            fill_b(o, rec, false)
+        },
+        semaphore: None,
+    },
+    SubmissionCase {
+        name: "two submissions without a semaphore: a copy reads what a fill wrote",
+        hazard: RAW,
+        first: |o, rec| fill_b(o, rec, false),
+        second: |o, rec, _| copy_b_to_c(o, rec, false),
+        semaphore: Some(S::TRANSFER),
+    },
+    SubmissionCase {
+        name: "two submissions without a semaphore: a copy reads what a dispatch wrote",
+        hazard: RAW,
+        first: |o, rec| dispatch(&o.add, rec, false),
+        second: |o, rec, _| {
+            let r = region(0, 0, 64);
+            rec.copy_buffer(&o.c, &o.b, &r)
+        },
+        semaphore: Some(S::TRANSFER),
+    },
+    SubmissionCase {
+        name: "the last submission's fill made visible by a barrier in the next (no hazard)",
+        hazard: "",
+        first: |o, rec| fill_b(o, rec, false),
+        second: |o, rec, _| {
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            copy_b_to_c(o, rec, false)
+        },
+        semaphore: None,
+    },
+];
+
+/// Records `case`'s two command buffers (the second fixed when `fixed`, with
+/// automatic synchronization when `auto`), submits the first, and then the
+/// second (through `_unchecked` when `unchecked`, waiting for the first's
+/// semaphore when `semaphore`); waits for the queue and returns the second
+/// submission's result.
+fn submit_pair(
+    s: &Setup,
+    o: &Objects,
+    cbs: &mut [tuff::CommandBuffer; 2],
+    case: &SubmissionCase,
+    (fixed, auto, unchecked): (bool, bool, bool),
+) -> tuff::Result<()> {
+    let [one, two] = cbs;
+    let mut rec = one.begin(&tuff::CommandBufferBeginInfo::new())?;
+    (case.first)(o, &mut rec)?;
+    rec.end()?;
+    let mut rec = two.begin(&tuff::CommandBufferBeginInfo::new())?;
+    rec.auto_sync(auto);
+    (case.second)(o, &mut rec, fixed && case.semaphore.is_none())?;
+    rec.end()?;
+    let semaphore = s
+        .device
+        .create_semaphore(&tuff::SemaphoreCreateInfo::new())?;
+    let gate = tuff::HandleSlice::new(&[&semaphore]);
+    let wait = case.semaphore.filter(|_| fixed);
+    let stages = wait.map(|st| [st]).unwrap_or_default();
+    let first = tuff::HandleSlice::new(&[&*one]);
+    let mut info = tuff::SubmitInfo::new().command_buffers(&first);
+    if wait.is_some() {
+        info = info.signal_semaphores(&gate);
+    }
+    s.queue.submit(&[info], None)?;
+    let second = tuff::HandleSlice::new(&[&*two]);
+    let mut info = tuff::SubmitInfo::new().command_buffers(&second);
+    if wait.is_some() {
+        info = info.wait_semaphores(&gate, &stages)?;
+    }
+    let r = match unchecked {
+        false => s.queue.submit(&[info], None),
+        true => unsafe { s.queue.submit_unchecked(&[info], None) },
+    };
+    s.queue.wait_idle()?;
+    r
+}
+
+#[test]
+fn submissions_are_ordered_after_what_the_queue_did_before() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, one) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let (_pool2, two) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut cbs = [one, two];
+    for case in SUBMISSION_CASES {
+        println!("{}", case.name);
+        if !case.hazard.is_empty() {
+            // The 1.3.239 layer's synchronization validation does not compare
+            // submissions: tuff's error alone shows these.
+            breaks(&s, case.hazard, Layer::Silent, |unchecked| {
+                submit_pair(&s, &o, &mut cbs, case, (false, false, unchecked))
+            });
+            // Automatic synchronization orders what came before the recording.
+            if let Err(e) = submit_pair(&s, &o, &mut cbs, case, (false, true, false)) {
+                panic!("{}: refused with automatic synchronization: {e}", case.name);
+            }
+            assert_silent(&s.messages);
+        }
+        if let Err(e) = submit_pair(&s, &o, &mut cbs, case, (true, false, false)) {
+            panic!("{}: refused: {e}", case.name);
+        }
+        assert_silent(&s.messages);
+    }
+}
+
+/// A fence waited for between two submissions orders the first before the second:
+/// nothing of it is compared.
+#[test]
+fn a_waited_submission_is_complete() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let (_pool2, mut cb2) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    fill_b(&o, &mut rec, false).expect("fill");
+    rec.end().expect("end");
+    s.submit_wait(&cb);
+    let mut rec = cb2
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    copy_b_to_c(&o, &mut rec, false).expect("copy");
+    rec.end().expect("end");
+    s.submit_wait(&cb2);
+    assert_silent(&s.messages);
 }

@@ -1566,6 +1566,13 @@ fn a_base_group_needs_a_dispatch_base_pipeline() {
         drop(unsafe { rec.dispatch_base_unchecked(1, 0, 0, 1, 1, 1) });
     });
     rec.bind_pipeline(compute, &based).expect("bind");
+    // The dispatches write the same storage buffer: ordered, or they race.
+    let w = [tuff::MemoryBarrier::new()
+        .src_access_mask(vk::AccessFlags::SHADER_WRITE)
+        .dst_access_mask(vk::AccessFlags::SHADER_WRITE)];
+    let cs = vk::PipelineStageFlags::COMPUTE_SHADER;
+    rec.pipeline_barrier(cs, cs, vk::DependencyFlags::empty(), &w, &[], &[])
+        .expect("barrier");
     rec.dispatch_base(1, 1, 1, 1, 1, 1)
         .expect("a dispatch from a base group with a pipeline made for it");
     rec.end().expect("end");

@@ -749,7 +749,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
     }
 
     /// `vkEndCommandBuffer`, in a state where ending is valid.
-    fn finish(self) -> Result<()> {
+    fn finish(mut self) -> Result<()> {
         // SAFETY: the recorder proves the buffer is recording, and its callers are
         // the states outside a render pass instance begun in this buffer
         // (VUID-vkEndCommandBuffer-commandBuffer-00060).
@@ -766,6 +766,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         self.cb.uses().ended(true);
         self.cb.uses().set_layouts(self.layouts);
+        self.cb.uses().set_hazards(self.hazards.take_log());
         self.cb.uses().set_queries(self.query_states);
         self.cb.uses().set_event_states(self.event_states);
         self.cb

@@ -237,6 +237,12 @@ pub(crate) mod ops {
     /// (fetches, gathers, reads, writes, atomics, queries), which an image with a
     /// sampler Y'CbCr conversion cannot serve.
     pub const NOT_SAMPLE: u16 = 256;
+    /// A load through a pointer traced to it (`OpLoad`, the source of
+    /// `OpCopyMemory`, atomics): how a shader reads a buffer.
+    pub const LOAD: u16 = 512;
+    /// A store through a pointer traced to it (`OpStore`, the target of
+    /// `OpCopyMemory`, atomics that change memory): how a shader writes a buffer.
+    pub const STORE: u16 = 1024;
 }
 
 /// What a module's shaders need from a pipeline layout: every resource variable it
@@ -968,12 +974,16 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
         };
         let (element, count) = m.element(pointee);
         let (ops, write_components) = used.get(&id).copied().unwrap_or((0, 0));
+        let image = m.image_shape(element);
+        // Loading an image variable loads a handle, not its memory.
+        let handle = image.map_or(0, |_| ops::LOAD | ops::STORE);
+        let ops = ops & !handle;
         out.resources.push(Resource {
             set,
             binding,
             kind: m.kind(storage, element),
             count,
-            image: m.image_shape(element),
+            image,
             ops,
             write_components,
             input_index: m.decorations.get(&(id, INPUT_ATTACHMENT_INDEX)).copied(),
@@ -1188,6 +1198,26 @@ fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, U
     };
     let mut used: HashMap<u32, Uses> = HashMap::new();
     let mut unplaced: Uses = (0, 0);
+    // Loads and stores: only those traced to a variable (most are a function's own).
+    // OpStore, OpAtomicStore; OpAtomicLoad; OpCopyMemory(Sized); the other atomics.
+    let atomic = |op: u32| matches!(op, 229..=242 | 318 | 5614 | 5615 | 6035);
+    for &(op, w) in &code {
+        let (pointer, bits) = match (op, w) {
+            (OP_LOAD | 227, [_, _, pointer, ..]) => (*pointer, ops::LOAD),
+            (62 | 228, [pointer, ..]) => (*pointer, ops::STORE),
+            (63 | 64, [target, source, ..]) => {
+                for v in origin.get(source).into_iter().flatten() {
+                    used.entry(*v).or_default().0 |= ops::LOAD;
+                }
+                (*target, ops::STORE)
+            }
+            (op, [_, _, pointer, ..]) if atomic(op) => (*pointer, ops::LOAD | ops::STORE),
+            _ => continue,
+        };
+        for v in origin.get(&pointer).into_iter().flatten() {
+            used.entry(*v).or_default().0 |= bits;
+        }
+    }
     let mut mark = |id: u32, bits: u16, written: u8| {
         let add = |u: &mut Uses| {
             u.0 |= bits;
@@ -1338,14 +1368,15 @@ mod tests {
                 .find(|r| r.binding == binding)
                 .map(|r| r.ops)
         };
-        // imageLoad reads the storage image; the output block is not an image.
+        // imageLoad reads the storage image.
         assert_eq!(
             ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 0),
             Some(ops::READ | ops::NOT_SAMPLE)
         );
+        // The output block is a buffer the shader stores to.
         assert_eq!(
             ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 1),
-            Some(0)
+            Some(ops::STORE)
         );
         assert_eq!(
             ops_of(include_bytes!("../../shaders/spv/atomic.comp.spv"), 0),

@@ -670,7 +670,38 @@ pub(crate) struct Facts {
     pub(crate) vertex: Use,
     /// A draw's reads of its index buffer.
     pub(crate) index: Use,
+    /// An indirect command's read of its parameters.
+    pub(crate) indirect: Use,
 }
+/// The access type of each way a shader reaches a descriptor, from the
+/// generator's reviewed table (`plan/accesses.rs`).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DescriptorAccess {
+    /// A uniform buffer's loads.
+    pub(crate) uniform: u64,
+    /// A sampled image's or uniform texel buffer's samples and fetches.
+    pub(crate) sampled: u64,
+    /// A storage buffer's or image's loads.
+    pub(crate) storage_read: u64,
+    /// A storage buffer's or image's stores.
+    pub(crate) storage_write: u64,
+}
+/// How shaders reach their descriptors.
+pub(crate) const DESCRIPTORS: DescriptorAccess = DescriptorAccess {
+    uniform: 0x8,
+    sampled: 0x100000000,
+    storage_read: 0x200000000,
+    storage_write: 0x400000000,
+};
+/// The stage at which each shader stage reaches its descriptors.
+pub(crate) const SHADER_STAGES: &[(ash::vk::ShaderStageFlags, u64)] = &[
+    (ash::vk::ShaderStageFlags::VERTEX, 0x8),
+    (ash::vk::ShaderStageFlags::TESSELLATION_CONTROL, 0x10),
+    (ash::vk::ShaderStageFlags::TESSELLATION_EVALUATION, 0x20),
+    (ash::vk::ShaderStageFlags::GEOMETRY, 0x40),
+    (ash::vk::ShaderStageFlags::FRAGMENT, 0x80),
+    (ash::vk::ShaderStageFlags::COMPUTE, 0x800),
+];
 ///What `vkCmdDraw` reads and writes: `vertex`: `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT` at `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`.
 pub(crate) const CMD_DRAW: Facts = Facts {
     name: "vkCmdDraw",
@@ -682,6 +713,7 @@ pub(crate) const CMD_DRAW: Facts = Facts {
         write: false,
     },
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdDrawIndexed` reads and writes: `index`: `VK_ACCESS_2_INDEX_READ_BIT` at `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`; `vertex`: `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT` at `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`.
 pub(crate) const CMD_DRAW_INDEXED: Facts = Facts {
@@ -696,6 +728,76 @@ pub(crate) const CMD_DRAW_INDEXED: Facts = Facts {
     index: Use {
         stage: 0x1000000000,
         access: 0x2,
+        write: false,
+    },
+    indirect: Use::NONE,
+};
+///What `vkCmdDrawIndirect` reads and writes: `indirect`: `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT` at `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`; `vertex`: `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT` at `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`.
+pub(crate) const CMD_DRAW_INDIRECT: Facts = Facts {
+    name: "vkCmdDrawIndirect",
+    src: Use::NONE,
+    dst: Use::NONE,
+    vertex: Use {
+        stage: 0x2000000000,
+        access: 0x4,
+        write: false,
+    },
+    index: Use::NONE,
+    indirect: Use {
+        stage: 0x2,
+        access: 0x1,
+        write: false,
+    },
+};
+///What `vkCmdDrawIndexedIndirect` reads and writes: `indirect`: `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT` at `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`; `index`: `VK_ACCESS_2_INDEX_READ_BIT` at `VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT`; `vertex`: `VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT` at `VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT`.
+pub(crate) const CMD_DRAW_INDEXED_INDIRECT: Facts = Facts {
+    name: "vkCmdDrawIndexedIndirect",
+    src: Use::NONE,
+    dst: Use::NONE,
+    vertex: Use {
+        stage: 0x2000000000,
+        access: 0x4,
+        write: false,
+    },
+    index: Use {
+        stage: 0x1000000000,
+        access: 0x2,
+        write: false,
+    },
+    indirect: Use {
+        stage: 0x2,
+        access: 0x1,
+        write: false,
+    },
+};
+///`vkCmdDispatch`, which orders other commands' accesses.
+pub(crate) const CMD_DISPATCH: Facts = Facts {
+    name: "vkCmdDispatch",
+    src: Use::NONE,
+    dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
+    indirect: Use::NONE,
+};
+///`vkCmdDispatchBase`, which orders other commands' accesses.
+pub(crate) const CMD_DISPATCH_BASE: Facts = Facts {
+    name: "vkCmdDispatchBase",
+    src: Use::NONE,
+    dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
+    indirect: Use::NONE,
+};
+///What `vkCmdDispatchIndirect` reads and writes: `indirect`: `VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT` at `VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT`.
+pub(crate) const CMD_DISPATCH_INDIRECT: Facts = Facts {
+    name: "vkCmdDispatchIndirect",
+    src: Use::NONE,
+    dst: Use::NONE,
+    vertex: Use::NONE,
+    index: Use::NONE,
+    indirect: Use {
+        stage: 0x2,
+        access: 0x1,
         write: false,
     },
 };
@@ -714,6 +816,7 @@ pub(crate) const CMD_COPY_BUFFER: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdCopyBuffer2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_BUFFER2: Facts = Facts {
@@ -730,6 +833,7 @@ pub(crate) const CMD_COPY_BUFFER2: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdCopyBufferToImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_BUFFER_TO_IMAGE: Facts = Facts {
@@ -746,6 +850,7 @@ pub(crate) const CMD_COPY_BUFFER_TO_IMAGE: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdCopyBufferToImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_BUFFER_TO_IMAGE2: Facts = Facts {
@@ -762,6 +867,7 @@ pub(crate) const CMD_COPY_BUFFER_TO_IMAGE2: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdCopyImageToBuffer` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE_TO_BUFFER: Facts = Facts {
@@ -778,6 +884,7 @@ pub(crate) const CMD_COPY_IMAGE_TO_BUFFER: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdCopyImageToBuffer2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE_TO_BUFFER2: Facts = Facts {
@@ -794,6 +901,7 @@ pub(crate) const CMD_COPY_IMAGE_TO_BUFFER2: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdCopyImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE: Facts = Facts {
@@ -810,6 +918,7 @@ pub(crate) const CMD_COPY_IMAGE: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdCopyImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT`.
 pub(crate) const CMD_COPY_IMAGE2: Facts = Facts {
@@ -826,6 +935,7 @@ pub(crate) const CMD_COPY_IMAGE2: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdBlitImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`.
 pub(crate) const CMD_BLIT_IMAGE: Facts = Facts {
@@ -842,6 +952,7 @@ pub(crate) const CMD_BLIT_IMAGE: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdBlitImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_BLIT_BIT`.
 pub(crate) const CMD_BLIT_IMAGE2: Facts = Facts {
@@ -858,6 +969,7 @@ pub(crate) const CMD_BLIT_IMAGE2: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdResolveImage` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`.
 pub(crate) const CMD_RESOLVE_IMAGE: Facts = Facts {
@@ -874,6 +986,7 @@ pub(crate) const CMD_RESOLVE_IMAGE: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdResolveImage2` reads and writes: `src`: `VK_ACCESS_2_TRANSFER_READ_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`; `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_RESOLVE_BIT`.
 pub(crate) const CMD_RESOLVE_IMAGE2: Facts = Facts {
@@ -890,6 +1003,7 @@ pub(crate) const CMD_RESOLVE_IMAGE2: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdClearColorImage` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_CLEAR_COLOR_IMAGE: Facts = Facts {
@@ -902,6 +1016,7 @@ pub(crate) const CMD_CLEAR_COLOR_IMAGE: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdClearDepthStencilImage` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_CLEAR_DEPTH_STENCIL_IMAGE: Facts = Facts {
@@ -914,6 +1029,7 @@ pub(crate) const CMD_CLEAR_DEPTH_STENCIL_IMAGE: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdFillBuffer` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT,VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_FILL_BUFFER: Facts = Facts {
@@ -926,6 +1042,7 @@ pub(crate) const CMD_FILL_BUFFER: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///What `vkCmdUpdateBuffer` reads and writes: `dst`: `VK_ACCESS_2_TRANSFER_WRITE_BIT` at `VK_PIPELINE_STAGE_2_COPY_BIT,VK_PIPELINE_STAGE_2_CLEAR_BIT`.
 pub(crate) const CMD_UPDATE_BUFFER: Facts = Facts {
@@ -938,6 +1055,7 @@ pub(crate) const CMD_UPDATE_BUFFER: Facts = Facts {
     },
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdPipelineBarrier`, which orders other commands' accesses.
 pub(crate) const CMD_PIPELINE_BARRIER: Facts = Facts {
@@ -946,6 +1064,7 @@ pub(crate) const CMD_PIPELINE_BARRIER: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdPipelineBarrier2`, which orders other commands' accesses.
 pub(crate) const CMD_PIPELINE_BARRIER2: Facts = Facts {
@@ -954,6 +1073,7 @@ pub(crate) const CMD_PIPELINE_BARRIER2: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdWaitEvents`, which orders other commands' accesses.
 pub(crate) const CMD_WAIT_EVENTS: Facts = Facts {
@@ -962,6 +1082,7 @@ pub(crate) const CMD_WAIT_EVENTS: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdWaitEvents2`, which orders other commands' accesses.
 pub(crate) const CMD_WAIT_EVENTS2: Facts = Facts {
@@ -970,6 +1091,7 @@ pub(crate) const CMD_WAIT_EVENTS2: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdBeginRenderPass`, which orders other commands' accesses.
 pub(crate) const CMD_BEGIN_RENDER_PASS: Facts = Facts {
@@ -978,6 +1100,7 @@ pub(crate) const CMD_BEGIN_RENDER_PASS: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdBeginRenderPass2`, which orders other commands' accesses.
 pub(crate) const CMD_BEGIN_RENDER_PASS2: Facts = Facts {
@@ -986,6 +1109,7 @@ pub(crate) const CMD_BEGIN_RENDER_PASS2: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdNextSubpass`, which orders other commands' accesses.
 pub(crate) const CMD_NEXT_SUBPASS: Facts = Facts {
@@ -994,6 +1118,7 @@ pub(crate) const CMD_NEXT_SUBPASS: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdNextSubpass2`, which orders other commands' accesses.
 pub(crate) const CMD_NEXT_SUBPASS2: Facts = Facts {
@@ -1002,6 +1127,7 @@ pub(crate) const CMD_NEXT_SUBPASS2: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdEndRenderPass`, which orders other commands' accesses.
 pub(crate) const CMD_END_RENDER_PASS: Facts = Facts {
@@ -1010,6 +1136,7 @@ pub(crate) const CMD_END_RENDER_PASS: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdEndRenderPass2`, which orders other commands' accesses.
 pub(crate) const CMD_END_RENDER_PASS2: Facts = Facts {
@@ -1018,6 +1145,7 @@ pub(crate) const CMD_END_RENDER_PASS2: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };
 ///`vkCmdExecuteCommands`, which orders other commands' accesses.
 pub(crate) const CMD_EXECUTE_COMMANDS: Facts = Facts {
@@ -1026,4 +1154,5 @@ pub(crate) const CMD_EXECUTE_COMMANDS: Facts = Facts {
     dst: Use::NONE,
     vertex: Use::NONE,
     index: Use::NONE,
+    indirect: Use::NONE,
 };

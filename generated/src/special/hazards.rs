@@ -22,7 +22,7 @@ use crate::structs::{
 };
 use crate::sync_tables::{Facts, Use};
 use crate::{Error, Handle, Result};
-use ash::vk;
+use ash::vk::{self, Handle as _};
 
 /// The identifier the validation layer's synchronization validation reports a hazard
 /// of this kind under.
@@ -50,6 +50,7 @@ fn touch<S: Scope>(
     name: &'static str,
     accesses: &[(Memory, Use)],
 ) -> Result<()> {
+    order_what_came_before(recorder);
     let found = hazards_of(recorder, name, accesses);
     if let Some((h, m)) = found.first() {
         // A barrier inside a render pass instance needs a self-dependency of its
@@ -77,6 +78,21 @@ fn usage(u: &Use, cmd: Cmd) -> Usage {
         access: u.access,
         write: u.write,
         cmd,
+    }
+}
+
+/// With automatic synchronization on, orders everything before the recording (the
+/// accesses of earlier submissions, which the recording cannot see) before its
+/// first access, with one barrier from every stage's writes to every stage's
+/// accesses; outside a render pass instance only.
+fn order_what_came_before<S: Scope>(recorder: &mut Recorder<'_, S>) {
+    // ALL_COMMANDS; MEMORY_READ, MEMORY_WRITE.
+    const ALL: u64 = 0x10000;
+    const READ: u64 = 0x8000;
+    const WRITE: u64 = 0x10000;
+    if recorder.hazards.auto && !recorder.hazards.started && recorder.instance.is_none() {
+        recorder.hazards.started = true;
+        order(recorder, (ALL, WRITE, ALL, READ | WRITE));
     }
 }
 
@@ -338,6 +354,7 @@ pub(crate) fn draw<S: Scope>(
         &mut list,
         facts.vertex,
     );
+    descriptor_memory(recorder, 0, &mut list);
     reads(recorder, facts.name, &list)
 }
 
@@ -369,28 +386,122 @@ pub(crate) fn draw_indexed<S: Scope>(
         &mut list,
         facts.vertex,
     );
+    descriptor_memory(recorder, 0, &mut list);
     reads(recorder, facts.name, &list)
 }
 
-/// A draw's reads: checked and recorded, unless every one is a read the tracker
-/// already holds with nothing changed since (the next draw of a run on one state
-/// reads what the last one read, and the verdict is the same).
+/// The memory a draw or dispatch reaches through the sets bound at bind point
+/// `bind` (0: graphics, 1: compute), as the bound pipeline's shaders use it
+/// (`PipelineRecord::descriptor_uses`): each image view's subresources, each buffer
+/// descriptor's range. Input attachments are the render pass's to order; a
+/// dynamic buffer descriptor is not tracked.
+fn descriptor_memory<S: Scope>(recorder: &Recorder<'_, S>, bind: usize, out: &mut Reads) {
+    use crate::state::SlotKind;
+    let bound = &recorder.bound[bind];
+    let Some(pipeline) = &bound.pipeline else {
+        return;
+    };
+    for u in pipeline.descriptor_uses.iter() {
+        let Some(Some(list)) = bound.images.get(u.set as usize) else {
+            continue;
+        };
+        let slots = list
+            .iter()
+            .filter(|((b, e), _)| *b == u.binding && (u.count == 0 || *e < u.count));
+        for (_, d) in slots {
+            let m = match (d.kind, d.bytes) {
+                (SlotKind::Image, _) => Memory::Image(d.image, d.sel, EVERY_TEXEL),
+                (SlotKind::Buffer | SlotKind::TexelBuffer, Some((s, e))) => {
+                    Memory::Buffer(d.buffer, s, e)
+                }
+                _ => continue,
+            };
+            let usage = Use {
+                stage: u.stage,
+                access: u.access,
+                write: u.write,
+            };
+            out.push((m, usage));
+        }
+    }
+}
+
+/// `vkCmdDrawIndirect` and `vkCmdDrawIndexedIndirect` (`indexed`): read their
+/// parameters, the whole bound index range and each bound vertex buffer the
+/// pipeline fetches from (which vertices the parameters pick is not known here), and
+/// their descriptors.
+pub(crate) fn draw_indirect<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    buffer: &Buffer,
+    (offset, draw_count, stride): (u64, u32, u32),
+    indexed: bool,
+) -> Result<()> {
+    let size: u64 = if indexed { 20 } else { 16 };
+    let mut list = Reads::new();
+    if draw_count > 0 {
+        let last = u64::from(draw_count - 1).saturating_mul(u64::from(stride));
+        let end = offset.saturating_add(last).saturating_add(size);
+        list.push((Memory::Buffer(buffer.raw(), offset, end), facts.indirect));
+    }
+    if indexed {
+        if let Some((bytes, offset, _)) = recorder.bound[0].index {
+            let buffer = recorder.bound[0].index_buffer;
+            list.push((Memory::Buffer(buffer, offset, bytes), facts.index));
+        }
+    }
+    vertex_memory(recorder, None, (0, u64::MAX), &mut list, facts.vertex);
+    descriptor_memory(recorder, 0, &mut list);
+    reads(recorder, facts.name, &list)
+}
+
+/// `vkCmdDispatch` and `vkCmdDispatchBase`: what the bound compute pipeline's
+/// shader reaches through its descriptors.
+pub(crate) fn dispatch<S: Scope>(recorder: &mut Recorder<'_, S>, facts: &Facts) -> Result<()> {
+    let mut list = Reads::new();
+    descriptor_memory(recorder, 1, &mut list);
+    reads(recorder, facts.name, &list)
+}
+
+/// `vkCmdDispatchIndirect`: its parameters, and its descriptors.
+pub(crate) fn dispatch_indirect<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    buffer: &Buffer,
+    offset: u64,
+) -> Result<()> {
+    let mut list = Reads::new();
+    // VkDispatchIndirectCommand: three 32-bit counts.
+    let params = Memory::Buffer(buffer.raw(), offset, offset.saturating_add(12));
+    list.push((params, facts.indirect));
+    descriptor_memory(recorder, 1, &mut list);
+    reads(recorder, facts.name, &list)
+}
+
+/// A draw's or dispatch's accesses: checked and recorded, unless every one is a
+/// read the tracker already holds with nothing changed since (the next draw of a run
+/// on one state reads what the last one read, and the verdict is the same).
 fn reads<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     name: &'static str,
     list: &[(Memory, Use)],
 ) -> Result<()> {
-    if list.is_empty()
-        || recorder
+    if list.is_empty() {
+        return Ok(());
+    }
+    if list.iter().all(|(_, u)| !u.write)
+        && recorder
             .hazards
             .holds_reads(list.iter().map(|(m, u)| (m, u.stage)))
     {
         return Ok(());
     }
     touch(recorder, name, list)?;
-    recorder
-        .hazards
-        .remember_reads(list.iter().map(|(m, u)| (*m, u.stage)));
+    recorder.hazards.remember_reads(
+        list.iter()
+            .filter(|(_, u)| !u.write)
+            .map(|(m, u)| (*m, u.stage)),
+    );
     Ok(())
 }
 
@@ -839,7 +950,28 @@ pub(crate) fn begin_render_pass<S: Scope>(
     begin: &RenderPassBeginInfo<'_>,
 ) -> Result<()> {
     let raw = begin.as_raw();
+    flush_before_instance(recorder);
     subpass_begins(recorder, facts.name, (raw.render_pass, raw.framebuffer), 0)
+}
+
+/// With automatic synchronization on, makes every write recorded since the last
+/// such barrier visible to what a render pass instance's commands do (read
+/// parameters, indices, vertices and descriptors, use attachments): inside the
+/// instance no barrier can be recorded, and which memory its draws will read is not
+/// known yet. One barrier, only when something was written.
+fn flush_before_instance<S: Scope>(recorder: &mut Recorder<'_, S>) {
+    // DRAW_INDIRECT, VERTEX_INPUT, VERTEX_SHADER, FRAGMENT_SHADER,
+    // EARLY_FRAGMENT_TESTS, LATE_FRAGMENT_TESTS, COLOR_ATTACHMENT_OUTPUT.
+    const STAGES: u64 = 0x2 | 0x4 | 0x8 | 0x80 | 0x100 | 0x200 | 0x400;
+    // INDIRECT_COMMAND_READ to DEPTH_STENCIL_ATTACHMENT_WRITE: what those stages do.
+    const ACCESS: u64 = 0x7ff;
+    order_what_came_before(recorder);
+    let (stages, access) = recorder.hazards.pending;
+    if !recorder.hazards.auto || stages == 0 {
+        return;
+    }
+    order(recorder, (stages, access, STAGES, ACCESS));
+    recorder.hazards.pending = (0, 0);
 }
 
 /// `vkCmdNextSubpass` and `vkCmdNextSubpass2`: the dependencies into the next
@@ -920,7 +1052,7 @@ pub(crate) fn end_render_pass<S: Scope>(
     // The stores follow the instance's own accesses of the attachment, which the
     // render pass orders: recorded, not checked.
     for (m, u) in &stores {
-        hazards.record(live, m, usage(u, cmd));
+        hazards.record_ordered(live, m, usage(u, cmd));
     }
     for (image, sel) in &transitions {
         if let Some(h) = hazards.transition_hazard(*image, sel, &transition_barrier, cmd) {
@@ -947,4 +1079,70 @@ pub(crate) fn execute_commands<S: Scope>(
     hazards.next(facts.name);
     hazards.forget();
     Ok(())
+}
+
+/// One batch of a submission, as the hazard checks read it: the stages its
+/// semaphore waits block (synchronization2's bits; the first version's are the same
+/// numbers), and its command buffers in order.
+pub(crate) struct Batch {
+    pub(crate) waits: Vec<u64>,
+    pub(crate) command_buffers: Vec<vk::CommandBuffer>,
+}
+
+/// Before a submission to `queue`: replays what each of its command buffers did
+/// (their recordings' accesses and barriers), batch by batch, on what the queue's
+/// submissions not known complete did; a batch's semaphore waits order everything
+/// before them (a signal covers every access before it, its wait makes them visible
+/// to the stages it blocks). The first hazard refuses the submission.
+///
+/// Other queues' submissions are not seen: what they do is not compared.
+pub(crate) fn submit_checks(queue: &crate::handles::Queue, batches: &[Batch]) -> Result<()> {
+    // ALL_COMMANDS with MEMORY_WRITE; MEMORY_READ and MEMORY_WRITE.
+    const ALL: u64 = 0x10000;
+    const READ: u64 = 0x8000;
+    const WRITE: u64 = 0x10000;
+    let device = queue.parent();
+    let live = device.live();
+    let mut queues = live.hazard_queues.lock();
+    let q = queues.entry(queue.raw().as_raw()).or_default();
+    let (mut state, number) = q.begin();
+    for (i, batch) in batches.iter().enumerate() {
+        let waits: Vec<Barrier> = batch
+            .waits
+            .iter()
+            .map(|stages| Barrier::new(ALL, WRITE, *stages, READ | WRITE))
+            .collect();
+        if !waits.is_empty() {
+            state.apply_global(&waits);
+        }
+        for (j, raw) in batch.command_buffers.iter().enumerate() {
+            let Some(log) = device.command_buffer_uses(*raw).and_then(|u| u.hazards()) else {
+                continue;
+            };
+            if let Err(found) = state.replay(live, &log, number) {
+                let (h, m) = *found;
+                return Err(Error::Validation {
+                    vuid: id(h.kind),
+                    message: format!(
+                        "batch {i}, command buffer {j}: {}",
+                        h.message(&m.describe())
+                    ),
+                });
+            }
+        }
+    }
+    q.stage(state, number);
+    Ok(())
+}
+
+/// The checked submission to `queue` was made as `sub`: what it does is now the
+/// queue's.
+pub(crate) fn submitted(
+    queue: &crate::handles::Queue,
+    sub: &tuff_runtime::Vrc<crate::state::Submission>,
+) {
+    let live = queue.parent().live();
+    if let Some(q) = live.hazard_queues.lock().get_mut(&queue.raw().as_raw()) {
+        q.made(sub);
+    }
 }

@@ -307,7 +307,7 @@ fn static_depth_stencil(raw: &vk::GraphicsPipelineCreateInfo<'_>) -> crate::stat
 /// declare; a graphics pipeline's adds its fixed-function state.
 fn pipeline_record(
     flags: vk::PipelineCreateFlags,
-    (resources, push): (Vrc<[crate::spirv::Resource]>, Option<(u32, u32)>),
+    declared: crate::special::shader::Declared,
 ) -> PipelineRecord {
     PipelineRecord {
         bind_point: vk::PipelineBindPoint::COMPUTE,
@@ -323,8 +323,9 @@ fn pipeline_record(
         pass: None,
         dynamic: 0,
         rendering: None,
-        resources,
-        push,
+        resources: declared.resources,
+        push: declared.push,
+        descriptor_uses: declared.uses,
         viewports: (0, 0),
         depth_stencil: NO_DEPTH_STENCIL_WRITES,
         blend: 0,

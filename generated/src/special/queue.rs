@@ -5,6 +5,7 @@
 use super::sync::timeline_difference;
 use super::{chained, refuse};
 use crate::handles::*;
+use crate::special::hazards;
 use crate::structs::*;
 use crate::submission::{self, Batch, Batches, SubmitRules};
 use crate::{Handle, Result};
@@ -28,7 +29,25 @@ pub(crate) fn queue_submit_checks(
     for b in submits {
         submission::check_timeline_batch(queue.parent().live(), b, &submission::SUBMIT_TIMELINE)?;
     }
-    Ok(())
+    // Last: it keeps the state the submission leaves, for `done`.
+    let batches: Vec<_> = submits
+        .iter()
+        .map(|b| {
+            let b = b.as_raw();
+            // SAFETY: the safe struct stores each array with its count.
+            let (stages, cbs) = unsafe {
+                (
+                    crate::state::raw_slice(b.p_wait_dst_stage_mask, b.wait_semaphore_count),
+                    crate::state::raw_slice(b.p_command_buffers, b.command_buffer_count),
+                )
+            };
+            hazards::Batch {
+                waits: stages.iter().map(|s| u64::from(s.as_raw())).collect(),
+                command_buffers: cbs.to_vec(),
+            }
+        })
+        .collect();
+    hazards::submit_checks(queue, &batches)
 }
 
 /// Refuses a batch whose command buffers come from a pool of another queue family
@@ -226,7 +245,25 @@ pub(crate) fn queue_submit2_checks(
     for (i, b) in submits.iter().enumerate() {
         check_batch2(queue, i, b)?;
     }
-    Ok(())
+    // Last: it keeps the state the submission leaves, for `done`.
+    let batches: Vec<_> = submits
+        .iter()
+        .map(|b| {
+            let b = b.as_raw();
+            // SAFETY: the safe struct stores each array with its count.
+            let (waits, cbs) = unsafe {
+                (
+                    crate::state::raw_slice(b.p_wait_semaphore_infos, b.wait_semaphore_info_count),
+                    crate::state::raw_slice(b.p_command_buffer_infos, b.command_buffer_info_count),
+                )
+            };
+            hazards::Batch {
+                waits: waits.iter().map(|w| w.stage_mask.as_raw()).collect(),
+                command_buffers: cbs.iter().map(|c| c.command_buffer).collect(),
+            }
+        })
+        .collect();
+    hazards::submit_checks(queue, &batches)
 }
 
 /// The rules of one `VkSubmitInfo2` that the first version's batches keep in other
@@ -362,7 +399,7 @@ fn submit_checks(
 /// command buffers, which keep what their recordings use, its semaphores, and whatever
 /// else its structs reach) until the submission is known complete; without a fence,
 /// the queue does, until a later fence of the queue or an idle wait shows it complete.
-fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>) {
+fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>, replayed: bool) {
     let device = queue.parent();
     let live = device.live();
     let mut reached = crate::validation::Reached::keeping(live);
@@ -380,6 +417,11 @@ fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>) {
         b.completes,
     );
     submission::record_binary_ops(device, queue.raw(), &b.ops, Some(&sub));
+    // A submission whose command buffers the hazard checks replayed: what they
+    // did is now the queue's.
+    if replayed {
+        hazards::submitted(queue, &sub);
+    }
     submission::record_timeline_values(live, &b.timeline, &sub);
     if fence.is_none() {
         queue.hold(sub);
@@ -388,7 +430,7 @@ fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>) {
 
 /// After `vkQueueSubmit`.
 pub(crate) fn queue_submit_done(queue: &Queue, submits: &[SubmitInfo<'_>], fence: Option<&Fence>) {
-    done(queue, submits, fence);
+    done(queue, submits, fence, true);
 }
 
 /// After `vkQueueSubmit2`.
@@ -397,7 +439,7 @@ pub(crate) fn queue_submit2_done(
     submits: &[SubmitInfo2<'_>],
     fence: Option<&Fence>,
 ) {
-    done(queue, submits, fence);
+    done(queue, submits, fence, true);
 }
 
 /// After `vkQueueBindSparse` (a timeline signal tells nothing of sparse binds yet).
@@ -406,7 +448,7 @@ pub(crate) fn queue_bind_sparse_done(
     bind_info: &[BindSparseInfo<'_>],
     fence: &Fence,
 ) {
-    done(queue, bind_info, Some(fence));
+    done(queue, bind_info, Some(fence), false);
 }
 
 /// Every queue operation of the queue is complete.

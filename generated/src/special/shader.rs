@@ -453,14 +453,27 @@ pub(super) fn check_shader_layout(
     Ok(())
 }
 
-/// The resource variables that the modules of a pipeline's stages declare (every
-/// one, as which of them the entry points use is not read), by set and binding.
+/// What the modules of a pipeline's stages declare: their resource variables (every
+/// one, as which of them the entry points use is not read), by set and binding, the
+/// bytes of their push-constant blocks, and what each stage reads and writes
+/// through its descriptors.
+pub(crate) struct Declared {
+    /// The resource variables.
+    pub resources: Vrc<[crate::spirv::Resource]>,
+    /// The push-constant bytes `start..end`, if any module has a block.
+    pub push: Option<(u32, u32)>,
+    /// The descriptor accesses, for the hazard tracker.
+    pub uses: Vrc<[crate::state::DescriptorUse]>,
+}
+
+/// [`Declared`] for a pipeline's stages.
 pub(super) fn declared_resources<'a>(
     device: &Device,
     stages: impl Iterator<Item = &'a vk::PipelineShaderStageCreateInfo<'a>>,
-) -> (Vrc<[crate::spirv::Resource]>, Option<(u32, u32)>) {
+) -> Declared {
     let live = device.live();
     let mut resources = Vec::new();
+    let mut uses = Vec::new();
     let mut push: Option<(u32, u32)> = None;
     for stage in stages {
         if let Some(interface) = live.shader_module(stage.module) {
@@ -468,9 +481,63 @@ pub(super) fn declared_resources<'a>(
             if let Some((start, end)) = interface.push_constants {
                 push = Some(push.map_or((start, end), |(s, e)| (s.min(start), e.max(end))));
             }
+            // A stage the tables give no pipeline stage for is not tracked.
+            if let Some((_, at)) = crate::sync_tables::SHADER_STAGES
+                .iter()
+                .find(|(s, _)| *s == stage.stage)
+            {
+                for r in &interface.resources {
+                    descriptor_uses(r, *at, &mut uses);
+                }
+            }
         }
     }
     resources.sort_unstable_by_key(|r| (r.set, r.binding));
     resources.dedup();
-    (resources.into(), push)
+    uses.sort_unstable_by_key(|u: &crate::state::DescriptorUse| (u.set, u.binding, u.stage));
+    uses.dedup();
+    Declared {
+        resources: resources.into(),
+        push,
+        uses: uses.into(),
+    }
+}
+
+/// What a shader stage (at pipeline stage `stage`) reads and writes through a
+/// resource variable, by its kind and what the module's instructions do with it: a
+/// variable no instruction reaches is not accessed. An input attachment is the
+/// render pass's to order, a sampler reaches no memory.
+fn descriptor_uses(
+    r: &crate::spirv::Resource,
+    stage: u64,
+    out: &mut Vec<crate::state::DescriptorUse>,
+) {
+    use crate::spirv::{ops, ResourceKind as K};
+    let d = crate::sync_tables::DESCRIPTORS;
+    let (read, write) = match r.kind {
+        K::UniformBuffer => ((r.ops & ops::LOAD != 0).then_some(d.uniform), None),
+        K::StorageBuffer => (
+            (r.ops & ops::LOAD != 0).then_some(d.storage_read),
+            (r.ops & ops::STORE != 0).then_some(d.storage_write),
+        ),
+        K::SampledImage | K::CombinedImageSampler | K::UniformTexelBuffer => (
+            (r.ops & (ops::SAMPLE | ops::READ) != 0).then_some(d.sampled),
+            None,
+        ),
+        K::StorageImage | K::StorageTexelBuffer => (
+            (r.ops & (ops::READ | ops::ATOMIC) != 0).then_some(d.storage_read),
+            (r.ops & (ops::WRITE | ops::ATOMIC) != 0).then_some(d.storage_write),
+        ),
+        K::Sampler | K::InputAttachment | K::Other => (None, None),
+    };
+    let at = |access: u64, write: bool| crate::state::DescriptorUse {
+        set: r.set,
+        binding: r.binding,
+        count: r.count,
+        stage,
+        access,
+        write,
+    };
+    out.extend(read.map(|a| at(a, false)));
+    out.extend(write.map(|a| at(a, true)));
 }

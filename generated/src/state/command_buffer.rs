@@ -51,6 +51,9 @@ struct UsesState {
     /// The image layouts the last recording needs at its start and leaves at its
     /// end; `None` while recording, or when it names none.
     layouts: Option<Vrc<crate::state::layouts::Recording>>,
+    /// What the last recording did to memory, for its submissions to replay; `None`
+    /// while recording, or when it did nothing the hazard tracker saw.
+    hazards: Option<Vrc<[crate::state::hazards::Event]>>,
     /// The descriptor sets the last recording bound, each with its generation then.
     sets: Vec<(u64, u64)>,
     /// The queue family of the buffer's pool and whether the pool is protected, as
@@ -278,6 +281,16 @@ impl Uses {
     pub(crate) fn set_layouts(&self, layouts: crate::state::layouts::Recording) {
         let layouts = (!layouts.is_empty()).then(|| Vrc::new(layouts));
         self.state.lock().layouts = layouts;
+    }
+
+    /// What the recording that just ended did to memory.
+    pub(crate) fn set_hazards(&self, log: Vec<crate::state::hazards::Event>) {
+        self.state.lock().hazards = (!log.is_empty()).then(|| log.into());
+    }
+
+    /// What the last recording did to memory, if anything the tracker saw.
+    pub(crate) fn hazards(&self) -> Option<Vrc<[crate::state::hazards::Event]>> {
+        self.state.lock().hazards.clone()
     }
 
     /// The image layouts the last recording needs at its start and leaves.

@@ -78,6 +78,10 @@ pub(crate) struct ImageDescriptor {
     pub format: vk::Format,
     /// Whether the slot is an input attachment's.
     pub input: bool,
+    /// The bytes `start..end` of `buffer` a buffer descriptor or texel buffer view
+    /// reaches, for the hazard tracker (none for a dynamic buffer descriptor, whose
+    /// offset binding adds: not tracked).
+    pub bytes: Option<(u64, u64)>,
 }
 
 /// What a descriptor slot holds, in [`ImageDescriptor::kind`].
@@ -286,6 +290,7 @@ impl Live {
             view_type: vk::ImageViewType::default(),
             format: vk::Format::UNDEFINED,
             input: false,
+            bytes: None,
         };
         match ty {
             T::SAMPLER => {
@@ -298,6 +303,8 @@ impl Live {
                     kind: SlotKind::TexelBuffer,
                     buffer,
                     format,
+                    // The whole buffer: the view's range is not kept.
+                    bytes: Some((0, u64::MAX)),
                     ..empty
                 })
             }
@@ -305,11 +312,16 @@ impl Live {
             | T::STORAGE_BUFFER
             | T::UNIFORM_BUFFER_DYNAMIC
             | T::STORAGE_BUFFER_DYNAMIC => {
-                let b = buffer().buffer;
-                self.buffer(b)?;
+                let info = buffer();
+                self.buffer(info.buffer)?;
+                let end = match info.range {
+                    vk::WHOLE_SIZE => u64::MAX,
+                    range => info.offset.saturating_add(range),
+                };
                 Some(ImageDescriptor {
                     kind: SlotKind::Buffer,
-                    buffer: b,
+                    buffer: info.buffer,
+                    bytes: (!is_dynamic(ty)).then_some((info.offset, end)),
                     ..empty
                 })
             }
@@ -357,6 +369,7 @@ impl Live {
             view_type: view.view_type,
             format: view.format,
             input: false,
+            bytes: None,
         })
     }
 

@@ -23,6 +23,7 @@ use crate::sync_tables::{ACCESSES, EVERY_STAGE, STAGES};
 use ash::vk::{self, Handle as _};
 use rustc_hash::FxHashMap as HashMap;
 use std::sync::OnceLock;
+use tuff_runtime::{Vrc, Vweak};
 
 /// The stage and access-type relations, indexed by bit, built once from the tables.
 struct Relations {
@@ -116,11 +117,21 @@ pub(crate) struct Cmd {
     pub(crate) name: &'static str,
     /// Its place in the recording, from 0.
     pub(crate) index: u32,
+    /// The submission to its queue it was replayed in (numbered from 1), or 0 for
+    /// the recording being checked.
+    pub(crate) submission: u32,
 }
 
 impl core::fmt::Display for Cmd {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        write!(f, "{} (command {} of the recording)", self.name, self.index)
+        match self.submission {
+            0 => write!(f, "{} (command {} of the recording)", self.name, self.index),
+            n => write!(
+                f,
+                "{} (command {} of submission {n} to the queue)",
+                self.name, self.index
+            ),
+        }
     }
 }
 
@@ -586,9 +597,34 @@ pub(crate) struct Recording {
     /// Counts every change that could change a verdict: a write or a barrier recorded,
     /// or what the recording did forgotten.
     generation: u64,
-    /// The buffer reads of the last draws recorded (buffer, range, stage) while the
-    /// generation was the second value: a draw reading within them adds nothing.
-    drawn: (Vec<(vk::Buffer, u64, u64, u64)>, u64),
+    /// The reads of the last draws recorded (memory, stage) while the generation
+    /// was the second value: a draw reading within them adds nothing.
+    drawn: (Vec<(Memory, u64)>, u64),
+    /// The stages and access types of every write recorded since automatic
+    /// synchronization last made them visible to a render pass instance's commands.
+    pub(crate) pending: (u64, u64),
+    /// Whether automatic synchronization has ordered everything before the recording
+    /// (earlier submissions' accesses) with one barrier.
+    pub(crate) started: bool,
+    /// Every change the recording made, in order, for its submissions to replay on
+    /// their queue's state; none is kept for a queue's own state.
+    log: Vec<Event>,
+    /// A queue's state: nothing is logged.
+    unlogged: bool,
+}
+
+/// One change a recording made to what it tracks: an access, or a barrier's
+/// effect (on everything, a buffer range, or an image's subresources, with its
+/// layout transition), or everything forgotten.
+#[derive(Clone, Debug)]
+pub(crate) enum Event {
+    /// An access, and whether it was checked (a render pass's store operations
+    /// follow what its instance ordered, and are not).
+    Access(Memory, Usage, bool),
+    Global(Vec<Barrier>),
+    Buffer(vk::Buffer, u64, u64, Barrier),
+    Image(vk::Image, Sel, Barrier, Option<Cmd>),
+    Forget,
 }
 
 impl Recording {
@@ -597,44 +633,56 @@ impl Recording {
         let cmd = Cmd {
             name,
             index: self.commands,
+            submission: 0,
         };
         self.commands += 1;
         cmd
     }
 
-    /// Whether the tracker already holds each of these buffer reads, recorded by a
-    /// draw with nothing changed since.
+    /// Whether the tracker already holds each of these reads, recorded by a draw
+    /// with nothing changed since.
     pub(crate) fn holds_reads<'m>(
         &self,
         mut reads: impl Iterator<Item = (&'m Memory, u64)>,
     ) -> bool {
         self.drawn.1 == self.generation
-            && reads.all(|(m, stage)| match m {
-                Memory::Buffer(b, s, e) => self
-                    .drawn
-                    .0
-                    .iter()
-                    .any(|d| d.0 == *b && d.1 <= *s && *e <= d.2 && d.3 == stage),
-                Memory::Image(..) => false,
+            && reads.all(|(m, stage)| {
+                self.drawn.0.iter().any(|(d, st)| {
+                    *st == stage
+                        && match (d, m) {
+                            (Memory::Buffer(db, ds, de), Memory::Buffer(b, s, e)) => {
+                                db == b && ds <= s && e <= de
+                            }
+                            (Memory::Image(di, dsel, dt), Memory::Image(i, sel, t)) => {
+                                di == i && dsel.same(sel) && dt == t
+                            }
+                            _ => false,
+                        }
+                })
             })
     }
 
-    /// Remembers buffer reads a draw recorded.
+    /// Remembers reads a draw recorded.
     pub(crate) fn remember_reads(&mut self, reads: impl Iterator<Item = (Memory, u64)>) {
         if self.drawn.1 != self.generation {
             self.drawn = (Vec::new(), self.generation);
         }
         for (m, stage) in reads {
-            if let Memory::Buffer(b, s, e) = m {
-                match self.drawn.0.iter_mut().find(|d| d.0 == b && d.3 == stage) {
-                    // One range per buffer and stage: the union where they touch.
-                    Some(d) if s <= d.2 && d.1 <= e => {
-                        d.1 = d.1.min(s);
-                        d.2 = d.2.max(e);
-                    }
-                    Some(d) => *d = (b, s, e, stage),
-                    None => self.drawn.0.push((b, s, e, stage)),
+            let Memory::Buffer(b, s, e) = m else {
+                self.drawn.0.push((m, stage));
+                continue;
+            };
+            let same = |d: &&mut (Memory, u64)| {
+                d.1 == stage && matches!(d.0, Memory::Buffer(db, ..) if db == b)
+            };
+            match self.drawn.0.iter_mut().find(same) {
+                // One range per buffer and stage: the union where they touch.
+                Some((Memory::Buffer(_, ds, de), _)) if s <= *de && *ds <= e => {
+                    *ds = (*ds).min(s);
+                    *de = (*de).max(e);
                 }
+                Some(d) => *d = (m, stage),
+                None => self.drawn.0.push((m, stage)),
             }
         }
     }
@@ -644,6 +692,7 @@ impl Recording {
         Cmd {
             name,
             index: self.commands,
+            submission: 0,
         }
     }
 
@@ -678,8 +727,23 @@ impl Recording {
 
     /// Records an access to `memory`.
     pub(crate) fn record(&mut self, live: &Live, memory: &Memory, u: Usage) {
+        self.record_as(live, memory, u, true);
+    }
+
+    /// Records an access to `memory` the caller did not check (a render pass's
+    /// store operations, which follow what its instance ordered).
+    pub(crate) fn record_ordered(&mut self, live: &Live, memory: &Memory, u: Usage) {
+        self.record_as(live, memory, u, false);
+    }
+
+    fn record_as(&mut self, live: &Live, memory: &Memory, u: Usage, checked: bool) {
+        if !self.unlogged {
+            self.log.push(Event::Access(*memory, u, checked));
+        }
         if u.write {
             self.generation += 1;
+            self.pending.0 |= u.stage;
+            self.pending.1 |= u.access;
         }
         match memory {
             Memory::Buffer(b, s, e) => {
@@ -719,6 +783,9 @@ impl Recording {
     /// execution dependencies).
     pub(crate) fn apply_global(&mut self, barriers: &[Barrier]) {
         self.generation += 1;
+        if !self.unlogged {
+            self.log.push(Event::Global(barriers.to_vec()));
+        }
         for r in self.buffers.values_mut() {
             for st in &mut r.0 {
                 st.2.apply(barriers);
@@ -734,6 +801,9 @@ impl Recording {
     /// Applies a barrier to a buffer range.
     pub(crate) fn apply_buffer(&mut self, buffer: vk::Buffer, start: u64, end: u64, b: &Barrier) {
         self.generation += 1;
+        if !self.unlogged {
+            self.log.push(Event::Buffer(buffer, start, end, *b));
+        }
         if let Some(r) = self.buffers.get_mut(&buffer.as_raw()) {
             if start < end {
                 for st in r.cover(start, end) {
@@ -754,6 +824,14 @@ impl Recording {
         transition: Option<Cmd>,
     ) {
         self.generation += 1;
+        if !self.unlogged {
+            self.log.push(Event::Image(image, *sel, *b, transition));
+        }
+        if transition.is_some() {
+            // A layout transition writes; a barrier from ALL_COMMANDS orders it
+            // whatever stages it chained to.
+            self.pending.0 |= 0x10000;
+        }
         let Some(sub) = (match transition {
             Some(_) => self.image(live, image),
             None => self.images.get_mut(&image.as_raw()),
@@ -773,7 +851,123 @@ impl Recording {
     /// command the tracker cannot see into ran).
     pub(crate) fn forget(&mut self) {
         self.generation += 1;
+        if !self.unlogged {
+            self.log.push(Event::Forget);
+        }
         self.buffers.clear();
         self.images.clear();
+    }
+}
+
+impl Recording {
+    /// The changes the recording made, for its submissions (empty when it made
+    /// none).
+    pub(crate) fn take_log(&mut self) -> Vec<Event> {
+        core::mem::take(&mut self.log)
+    }
+
+    /// Replays a recording's changes on this (a queue's) state as the commands of
+    /// submission `submission`: the first hazard, with its memory, stops it.
+    pub(crate) fn replay(
+        &mut self,
+        live: &Live,
+        log: &[Event],
+        submission: u32,
+    ) -> Result<(), Box<(Hazard, Memory)>> {
+        let at = |c: Cmd| Cmd { submission, ..c };
+        for e in log {
+            match e {
+                Event::Access(m, u, checked) => {
+                    let u = Usage {
+                        cmd: at(u.cmd),
+                        ..*u
+                    };
+                    if let Some(h) = checked.then(|| self.hazard(m, &u)).flatten() {
+                        return Err(Box::new((h, *m)));
+                    }
+                    self.record_as(live, m, u, *checked);
+                }
+                Event::Global(b) => self.apply_global(b),
+                Event::Buffer(buffer, s, e, b) => self.apply_buffer(*buffer, *s, *e, b),
+                Event::Image(image, sel, b, transition) => {
+                    let transition = transition.map(at);
+                    if let Some(cmd) = transition {
+                        if let Some(h) = self.transition_hazard(*image, sel, b, cmd) {
+                            return Err(Box::new((h, Memory::Image(*image, *sel, EVERY_TEXEL))));
+                        }
+                    }
+                    self.apply_image(live, *image, sel, b, transition);
+                }
+                Event::Forget => self.forget(),
+            }
+        }
+        Ok(())
+    }
+
+    /// Drops every access of a submission `done` says is complete.
+    fn prune(&mut self, done: impl Fn(u32) -> bool) {
+        let keep = |st: &mut State| {
+            if st
+                .write
+                .as_ref()
+                .is_some_and(|w| done(w.usage.cmd.submission))
+            {
+                st.write = None;
+            }
+            st.reads.retain(|r| !done(r.usage.cmd.submission));
+            st.write.is_some() || !st.reads.is_empty()
+        };
+        self.buffers.retain(|_, r| {
+            r.0.retain_mut(|(_, _, st)| keep(st));
+            !r.0.is_empty()
+        });
+        self.images.retain(|_, sub| {
+            let mut any = false;
+            for st in &mut sub.states {
+                any |= keep(st);
+            }
+            any
+        });
+    }
+}
+
+/// What a queue's submissions not yet known complete have done to memory, for
+/// each new submission to be checked against (submission order, with the
+/// semaphore waits between its batches, as the specification orders them).
+#[derive(Default)]
+pub(crate) struct QueueHazards {
+    state: Recording,
+    /// The number of the next submission.
+    next: u32,
+    /// The submissions replayed, by number, while not known complete.
+    subs: Vec<(u32, Vweak<crate::state::Submission>)>,
+    /// The state a checked submission leaves, with its number, until it is made.
+    staged: Option<(Recording, u32)>,
+}
+
+impl QueueHazards {
+    /// The state a new submission starts from, its number, and the device: the
+    /// accesses of complete submissions dropped.
+    pub(crate) fn begin(&mut self) -> (Recording, u32) {
+        self.subs
+            .retain(|(_, w)| w.upgrade().is_some_and(|s| !s.is_complete()));
+        let live: Vec<u32> = self.subs.iter().map(|(n, _)| *n).collect();
+        self.state.prune(|n| !live.contains(&n));
+        self.state.unlogged = true;
+        self.next += 1;
+        (self.state.clone(), self.next)
+    }
+
+    /// The state a checked submission leaves, kept until it is made.
+    pub(crate) fn stage(&mut self, state: Recording, number: u32) {
+        self.staged = Some((state, number));
+    }
+
+    /// The checked submission was made as `sub`.
+    pub(crate) fn made(&mut self, sub: &Vrc<crate::state::Submission>) {
+        if let Some((state, number)) = self.staged.take() {
+            self.state = state;
+            self.subs.push((number, Vrc::downgrade(sub)));
+        }
     }
 }

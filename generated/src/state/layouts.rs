@@ -118,6 +118,11 @@ pub(crate) struct Sel {
 }
 
 impl Sel {
+    /// Whether two selections name the same subresources.
+    pub(crate) fn same(&self, o: &Sel) -> bool {
+        self.aspect == o.aspect && self.mips == o.mips && self.layers == o.layers
+    }
+
     /// The subresources of a range, `VK_REMAINING_*` counts reaching the end.
     pub(crate) fn range(r: &vk::ImageSubresourceRange) -> Sel {
         Sel {

@@ -173,6 +173,8 @@ pub(crate) struct Live {
     /// Each event's state as the submissions and the host so far leave it, with
     /// the last submissions that set, reset or wait on it.
     pub(super) event_records: Vutex<HashMap<u64, super::events::EventRecord>>,
+    /// What each queue's submissions not known complete did to memory, by queue.
+    pub(crate) hazard_queues: Vutex<HashMap<u64, super::hazards::QueueHazards>>,
 }
 
 impl Default for Live {
@@ -193,6 +195,7 @@ impl Default for Live {
             timeline_difference: std::sync::OnceLock::new(),
             event_uses: Vutex::new(HashMap::default()),
             event_records: Vutex::new(HashMap::default()),
+            hazard_queues: Vutex::new(HashMap::default()),
             binaries: Vutex::new(HashMap::default()),
             device_only_events: Vutex::new(std::collections::HashSet::new()),
             render_passes: Vutex::new(HashMap::default()),

@@ -43,7 +43,8 @@ pub(crate) use self::image::ImageRecord;
 pub(crate) use self::live::{limits, Live};
 pub(crate) use self::memory::{Binding, MemoryAsked, MemoryRecords};
 pub(crate) use self::pipeline::{
-    dynamic_bit, DepthStencil, LayoutRecord, PipelineRecord, RenderingFormats, VertexRead,
+    dynamic_bit, DepthStencil, DescriptorUse, LayoutRecord, PipelineRecord, RenderingFormats,
+    VertexRead,
 };
 pub(crate) use self::query::QueryPoolRecord;
 pub(crate) use self::queue::{Ledger, Submission};

@@ -97,6 +97,9 @@ pub(crate) struct PipelineRecord {
     /// The bytes `start..end` of the push-constant blocks its stages' modules
     /// declare, if any does.
     pub push: Option<(u32, u32)>,
+    /// What its shaders read and write through their descriptors, for the hazard
+    /// tracker.
+    pub descriptor_uses: Vrc<[DescriptorUse]>,
     /// Its viewport state's viewport and scissor counts (0 without one).
     pub viewports: (u32, u32),
     /// Its depth/stencil and rasterizer discard state, where static.
@@ -128,6 +131,24 @@ impl RenderingFormats {
             stencil,
         }
     }
+}
+
+/// One way a pipeline's shader stage reaches a descriptor binding: the elements it
+/// spans, the stage and access type (`sync_tables` bits) of the access.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct DescriptorUse {
+    /// The set number.
+    pub set: u32,
+    /// The binding.
+    pub binding: u32,
+    /// The elements `0..count` of the binding it spans (0: every element).
+    pub count: u32,
+    /// The stage of the shader that reaches it.
+    pub stage: u64,
+    /// The access type.
+    pub access: u64,
+    /// Whether the access type writes.
+    pub write: bool,
 }
 
 /// A vertex binding a pipeline's vertex shader reads.

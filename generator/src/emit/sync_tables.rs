@@ -143,6 +143,29 @@ pub fn emit(model: &Model) -> TokenStream {
         Some(_) => facts(model, t),
         None => Vec::new(),
     };
+    let access_of = |field: &str| {
+        let name = crate::plan::accesses::DESCRIPTOR_ACCESSES
+            .iter()
+            .find(|(f, _)| *f == field)
+            .map_or("", |(_, n)| *n);
+        let bit = hex(access_bits.get(name).copied().unwrap_or(0));
+        let f = ident(field);
+        quote!(#f: #bit)
+    };
+    let fields = ["uniform", "sampled", "storage_read", "storage_write"].map(access_of);
+    let descriptors = quote!(DescriptorAccess { #(#fields),* });
+    let shader_stages =
+        crate::plan::accesses::SHADER_STAGES
+            .iter()
+            .filter_map(|(shader, stage)| {
+                let bit = bits.get(stage)?;
+                let name = shader
+                    .strip_prefix("VK_SHADER_STAGE_")
+                    .and_then(|n| n.strip_suffix("_BIT"))?;
+                let konst = ident(name);
+                let bit = hex(*bit);
+                Some(quote!((ash::vk::ShaderStageFlags::#konst, #bit)))
+            });
     quote! {
         #![doc = #version]
         //! synchronization2 with what the registry says of it (`<syncstage>`,
@@ -221,7 +244,29 @@ pub fn emit(model: &Model) -> TokenStream {
             pub(crate) vertex: Use,
             /// A draw's reads of its index buffer.
             pub(crate) index: Use,
+            /// An indirect command's read of its parameters.
+            pub(crate) indirect: Use,
         }
+
+        /// The access type of each way a shader reaches a descriptor, from the
+        /// generator's reviewed table (`plan/accesses.rs`).
+        #[derive(Clone, Copy, Debug)]
+        pub(crate) struct DescriptorAccess {
+            /// A uniform buffer's loads.
+            pub(crate) uniform: u64,
+            /// A sampled image's or uniform texel buffer's samples and fetches.
+            pub(crate) sampled: u64,
+            /// A storage buffer's or image's loads.
+            pub(crate) storage_read: u64,
+            /// A storage buffer's or image's stores.
+            pub(crate) storage_write: u64,
+        }
+
+        /// How shaders reach their descriptors.
+        pub(crate) const DESCRIPTORS: DescriptorAccess = #descriptors;
+
+        /// The stage at which each shader stage reaches its descriptors.
+        pub(crate) const SHADER_STAGES: &[(ash::vk::ShaderStageFlags, u64)] = &[#(#shader_stages),*];
 
         #(#facts)*
     }
@@ -252,7 +297,7 @@ fn facts(model: &Model, t: &SyncTables) -> Vec<TokenStream> {
                 None => quote!(Use::NONE),
             };
             let (src, dst) = (role("src"), role("dst"));
-            let (vertex, index) = (role("vertex"), role("index"));
+            let (vertex, index, indirect) = (role("vertex"), role("index"), role("indirect"));
             let said: Vec<String> = r
                 .uses
                 .iter()
@@ -265,7 +310,7 @@ fn facts(model: &Model, t: &SyncTables) -> Vec<TokenStream> {
             quote! {
                 #[doc = #doc]
                 #cfg
-                pub(crate) const #konst: Facts = Facts { name: #name, src: #src, dst: #dst, vertex: #vertex, index: #index };
+                pub(crate) const #konst: Facts = Facts { name: #name, src: #src, dst: #dst, vertex: #vertex, index: #index, indirect: #indirect };
             }
         })
         .collect()

@@ -116,7 +116,56 @@ macro_rules! images {
 }
 
 /// The roles a use may fill, the fields of the crate's `Facts`.
-pub const ROLES: &[&str] = &["src", "dst", "vertex", "index"];
+pub const ROLES: &[&str] = &["src", "dst", "vertex", "index", "indirect"];
+
+/// An indirect command's read of its parameters.
+const INDIRECT: Use = Use {
+    role: "indirect",
+    stage: "VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT",
+    access: "VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT",
+};
+
+/// The pipeline stage at which each shader stage reaches its descriptors: a draw or
+/// dispatch reads and writes what its bound pipeline's shaders reach through the
+/// bound descriptor sets, at the stage of the shader that does (`ShaderStageFlagBits`
+/// name, stage name).
+pub const SHADER_STAGES: &[(&str, &str)] = &[
+    (
+        "VK_SHADER_STAGE_VERTEX_BIT",
+        "VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT",
+    ),
+    (
+        "VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT",
+        "VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT",
+    ),
+    (
+        "VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT",
+        "VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT",
+    ),
+    (
+        "VK_SHADER_STAGE_GEOMETRY_BIT",
+        "VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT",
+    ),
+    (
+        "VK_SHADER_STAGE_FRAGMENT_BIT",
+        "VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT",
+    ),
+    (
+        "VK_SHADER_STAGE_COMPUTE_BIT",
+        "VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT",
+    ),
+];
+
+/// The access type of each way a shader reaches a descriptor (the field of the
+/// crate's `DescriptorAccess` it fills, the access type): a uniform buffer's loads, a
+/// sampled image's or uniform texel buffer's samples and fetches, a storage buffer's
+/// or storage image's loads and stores (an atomic is both).
+pub const DESCRIPTOR_ACCESSES: &[(&str, &str)] = &[
+    ("uniform", "VK_ACCESS_2_UNIFORM_READ_BIT"),
+    ("sampled", "VK_ACCESS_2_SHADER_SAMPLED_READ_BIT"),
+    ("storage_read", "VK_ACCESS_2_SHADER_STORAGE_READ_BIT"),
+    ("storage_write", "VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT"),
+];
 
 const VERTEX: Use = Use {
     role: "vertex",
@@ -153,7 +202,7 @@ pub const ROWS: &[Accesses] = &[
             ],
         ),
         uses: &[VERTEX],
-        does: "",
+        does: "its descriptors as its bound pipeline's shaders use them",
     },
     Accesses {
         command: "vkCmdDrawIndexed",
@@ -167,7 +216,58 @@ pub const ROWS: &[Accesses] = &[
             ],
         ),
         uses: &[INDEX, VERTEX],
-        does: "",
+        does: "its descriptors as its bound pipeline's shaders use them",
+    },
+    Accesses {
+        command: "vkCmdDrawIndirect",
+        call: call(
+            "special::hazards::draw_indirect",
+            &[
+                "self",
+                "&facts",
+                "buffer",
+                "(offset, draw_count, stride)",
+                "false",
+            ],
+        ),
+        uses: &[INDIRECT, VERTEX],
+        does: "its descriptors as its bound pipeline's shaders use them",
+    },
+    Accesses {
+        command: "vkCmdDrawIndexedIndirect",
+        call: call(
+            "special::hazards::draw_indirect",
+            &[
+                "self",
+                "&facts",
+                "buffer",
+                "(offset, draw_count, stride)",
+                "true",
+            ],
+        ),
+        uses: &[INDIRECT, INDEX, VERTEX],
+        does: "its descriptors as its bound pipeline's shaders use them",
+    },
+    Accesses {
+        command: "vkCmdDispatch",
+        call: call("special::hazards::dispatch", &["self", "&facts"]),
+        uses: &[],
+        does: "its descriptors as its bound pipeline's shaders use them",
+    },
+    Accesses {
+        command: "vkCmdDispatchBase",
+        call: call("special::hazards::dispatch", &["self", "&facts"]),
+        uses: &[],
+        does: "its descriptors as its bound pipeline's shaders use them",
+    },
+    Accesses {
+        command: "vkCmdDispatchIndirect",
+        call: call(
+            "special::hazards::dispatch_indirect",
+            &["self", "&facts", "buffer", "offset"],
+        ),
+        uses: &[INDIRECT],
+        does: "its descriptors as its bound pipeline's shaders use them",
     },
     Accesses {
         command: "vkCmdCopyBuffer",
@@ -382,42 +482,54 @@ pub fn facts_name(command: &str) -> String {
 }
 
 /// Refuses a row whose stage or access type the tables lack, or whose access type
-/// the tables do not allow at its stage.
+/// the tables do not allow at its stage; the same for each descriptor access type at
+/// each shader stage.
 pub fn check(tables: &SyncTables) -> Result<(), String> {
+    for (_, stage) in SHADER_STAGES {
+        for (_, access) in DESCRIPTOR_ACCESSES {
+            allowed(tables, "a descriptor", stage, access)?;
+        }
+    }
     for row in ROWS {
         for (u, name) in row
             .uses
             .iter()
             .flat_map(|u| u.stage.split(',').map(move |n| (u, n)))
         {
-            let stage = tables
-                .stages
-                .iter()
-                .find(|s| s.name == name)
-                .ok_or_else(|| format!("{}: no stage {name} in <sync>", row.command))?;
-            let access = tables
-                .accesses
-                .iter()
-                .find(|a| a.name == u.access)
-                .ok_or_else(|| format!("{}: no access type {} in <sync>", row.command, u.access))?;
-            if let Some(stages) = &access.stages {
-                let allowed = stages.iter().any(|s| {
-                    s == &stage.name
-                        || tables
-                            .stages
-                            .iter()
-                            .any(|m| &m.name == s && m.equivalent.contains(&stage.name))
-                });
-                if !allowed {
-                    return Err(format!(
-                        "{}: the registry does not allow {} at {name}",
-                        row.command, u.access
-                    ));
-                }
-            }
+            allowed(tables, row.command, name, u.access)?;
             if !ROLES.contains(&u.role) {
                 return Err(format!("{}: no role {}", row.command, u.role));
             }
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a stage or access type the tables lack, or an access type the tables do
+/// not allow at the stage (`what` names the fact in the error).
+fn allowed(tables: &SyncTables, what: &str, name: &str, access: &str) -> Result<(), String> {
+    let stage = tables
+        .stages
+        .iter()
+        .find(|s| s.name == name)
+        .ok_or_else(|| format!("{what}: no stage {name} in <sync>"))?;
+    let access_row = tables
+        .accesses
+        .iter()
+        .find(|a| a.name == access)
+        .ok_or_else(|| format!("{what}: no access type {access} in <sync>"))?;
+    if let Some(stages) = &access_row.stages {
+        let ok = stages.iter().any(|s| {
+            s == &stage.name
+                || tables
+                    .stages
+                    .iter()
+                    .any(|m| &m.name == s && m.equivalent.contains(&stage.name))
+        });
+        if !ok {
+            return Err(format!(
+                "{what}: the registry does not allow {access} at {name}"
+            ));
         }
     }
     Ok(())

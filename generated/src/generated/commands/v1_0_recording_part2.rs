@@ -1380,6 +1380,7 @@ The rules of `vkCmdDispatch` that apply to this crate's API ([reference page](ht
             let r = self.validate_dispatch(group_count_x, group_count_y, group_count_z);
             r?;
         }
+        crate::special::hazards::dispatch(self, &crate::sync_tables::CMD_DISPATCH)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.dispatch_unchecked(group_count_x, group_count_y, group_count_z) }
@@ -1530,6 +1531,12 @@ The rules of `vkCmdDispatchIndirect` that apply to this crate's API ([reference 
             let r = self.validate_dispatch_indirect(buffer, offset);
             r?;
         }
+        crate::special::hazards::dispatch_indirect(
+            self,
+            &crate::sync_tables::CMD_DISPATCH_INDIRECT,
+            buffer,
+            offset,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.dispatch_indirect_unchecked(buffer, offset) }

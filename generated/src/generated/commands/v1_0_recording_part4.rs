@@ -1167,6 +1167,13 @@ The rules of `vkCmdDrawIndexedIndirect` that apply to this crate's API ([referen
             let r = self.validate_draw_indexed_indirect(buffer, offset, draw_count);
             r?;
         }
+        crate::special::hazards::draw_indirect(
+            self,
+            &crate::sync_tables::CMD_DRAW_INDEXED_INDIRECT,
+            buffer,
+            (offset, draw_count, stride),
+            true,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
@@ -1529,6 +1536,13 @@ The rules of `vkCmdDrawIndirect` that apply to this crate's API ([reference page
             let r = self.validate_draw_indirect(buffer, offset, draw_count);
             r?;
         }
+        crate::special::hazards::draw_indirect(
+            self,
+            &crate::sync_tables::CMD_DRAW_INDIRECT,
+            buffer,
+            (offset, draw_count, stride),
+            false,
+        )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe { self.draw_indirect_unchecked(buffer, offset, draw_count, stride) }

@@ -137,6 +137,7 @@ The rules of `vkCmdDispatchBase` that apply to this crate's API ([reference page
             base_group_y,
             base_group_z,
         )?;
+        crate::special::hazards::dispatch(self, &crate::sync_tables::CMD_DISPATCH_BASE)?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
         unsafe {
