@@ -1502,3 +1502,39 @@ fn a_waited_submission_is_complete() {
     s.submit_wait(&cb2);
     assert_silent(&s.messages);
 }
+
+/// A secondary's commands are checked where the primary executes them: its copy
+/// reads what the primary's fill wrote before, with no barrier between.
+#[test]
+fn a_secondary_is_checked_against_what_its_primary_did() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut secondary) = s.command_buffer(vk::CommandBufferLevel::SECONDARY);
+    let inheritance = tuff::CommandBufferInheritanceInfo::new();
+    let begin = tuff::CommandBufferBeginInfo::new().inheritance_info(Some(&inheritance));
+    let mut rec = secondary.begin(&begin).expect("begin");
+    copy_b_to_c(&o, &mut rec, false).expect("copy");
+    rec.end().expect("end");
+    let (_pool2, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let program = |cb: &mut tuff::CommandBuffer, (fixed, auto, unchecked)| {
+        let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+        rec.auto_sync(auto);
+        fill_b(&o, &mut rec, false)?;
+        transfer_barrier(&mut rec, fixed)?;
+        let r = match unchecked {
+            false => rec.execute_commands(&secondary),
+            true => unsafe { rec.execute_commands_unchecked(&secondary) },
+        };
+        let _ = rec.end();
+        r
+    };
+    breaks(&s, RAW, Layer::Names, |unchecked| {
+        program(&mut cb, (false, false, unchecked))
+    });
+    for (fixed, auto) in [(true, false), (false, true)] {
+        program(&mut cb, (fixed, auto, false)).expect("ordered");
+        s.submit_wait(&cb);
+        assert_silent(&s.messages);
+    }
+}

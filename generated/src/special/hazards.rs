@@ -1068,18 +1068,49 @@ pub(crate) fn end_render_pass<S: Scope>(
     Ok(())
 }
 
-/// `vkCmdExecuteCommands`: the tracker does not see into the secondaries, so what
-/// the recording did before them is forgotten (no later command is refused for
-/// what came before them).
+/// `vkCmdExecuteCommands`: replays what each secondary's recording did (its
+/// accesses and barriers, in order) on the recording's, as if recorded here; a
+/// hazard between a secondary's command and what came before refuses the command,
+/// or (automatic synchronization, outside a render pass instance) gets the barrier
+/// that orders it before the secondaries.
 pub(crate) fn execute_commands<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     facts: &Facts,
+    command_buffers: &[&crate::handles::CommandBuffer],
 ) -> Result<()> {
-    let (_, hazards) = recorder.hazards_mut();
-    hazards.next(facts.name);
-    hazards.forget();
+    let logs: Vec<_> = command_buffers
+        .iter()
+        .filter_map(|cb| cb.uses().hazards())
+        .collect();
+    order_what_came_before(recorder);
+    let live = recorder.device().live();
+    // Found on a copy first: a refused command changes nothing.
+    let mut trial = recorder.hazards.clone();
+    let mut found = logs
+        .iter()
+        .find_map(|log| trial.replay(live, log, SECONDARY).err());
+    if let Some(f) = &found {
+        if recorder.hazards.auto && recorder.instance.is_none() {
+            let (h, m) = (**f).clone();
+            order(recorder, needed(&[(h, m)]));
+            let live = recorder.device().live();
+            trial = recorder.hazards.clone();
+            found = logs
+                .iter()
+                .find_map(|log| trial.replay(live, log, SECONDARY).err());
+        }
+    }
+    if let Some(f) = found {
+        let (h, m) = *f;
+        return Err(refuse(&h, &m));
+    }
+    trial.next(facts.name);
+    recorder.hazards = trial;
     Ok(())
 }
+
+/// The submission number that labels a secondary's commands replayed in a primary.
+const SECONDARY: u32 = u32::MAX;
 
 /// One batch of a submission, as the hazard checks read it: the stages its
 /// semaphore waits block (synchronization2's bits; the first version's are the same

@@ -126,6 +126,7 @@ impl core::fmt::Display for Cmd {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self.submission {
             0 => write!(f, "{} (command {} of the recording)", self.name, self.index),
+            u32::MAX => write!(f, "{} (command {} of a secondary)", self.name, self.index),
             n => write!(
                 f,
                 "{} (command {} of submission {n} to the queue)",

@@ -461,9 +461,12 @@ pub const ROWS: &[Accesses] = &[
     },
     Accesses {
         command: "vkCmdExecuteCommands",
-        call: call("special::hazards::execute_commands", &["self", "&facts"]),
+        call: call(
+            "special::hazards::execute_commands",
+            &["self", "&facts", "command_buffers"],
+        ),
         uses: &[],
-        does: "the tracker does not see into the secondaries: what the recording did before is forgotten (no later command is refused for it)",
+        does: "each secondary's recorded accesses and barriers, replayed in order on the recording's",
     },
 ];
 

@@ -486,6 +486,7 @@ The rules of `vkCmdExecuteCommands` that apply to this crate's API ([reference p
         crate::special::hazards::execute_commands(
             self,
             &crate::sync_tables::CMD_EXECUTE_COMMANDS,
+            command_buffers,
         )?;
         // SAFETY: the rules the checks above settle hold; the others are the caller's (see the
         // docs).
