@@ -1102,6 +1102,14 @@ fn two_wrappers_of_one_queue_never_submit_at_once() {
                 let mut rec = cb
                     .begin(&tuff::CommandBufferBeginInfo::new())
                     .expect("begin");
+                // The other thread's submissions fill the same bytes: ordered after
+                // them, or the fills race.
+                let w = [tuff::MemoryBarrier::new()
+                    .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
+                    .dst_access_mask(vk::AccessFlags::TRANSFER_WRITE)];
+                let t = vk::PipelineStageFlags::TRANSFER;
+                rec.pipeline_barrier(t, t, vk::DependencyFlags::empty(), &w, &[], &[])
+                    .expect("barrier");
                 rec.fill_buffer(buffer, 0, 256, 1).expect("fill");
                 rec.end().expect("end");
                 for _ in 0..200 {

@@ -1162,18 +1162,23 @@ pub(crate) fn submit_checks(queue: &crate::handles::Queue, batches: &[Batch]) ->
             }
         }
     }
-    q.stage(state, number);
+    let cbs = batches
+        .iter()
+        .flat_map(|b| b.command_buffers.iter().copied())
+        .collect();
+    q.stage(state, number, cbs);
     Ok(())
 }
 
-/// The checked submission to `queue` was made as `sub`: what it does is now the
-/// queue's.
+/// A submission of `cbs` to `queue` was made as `sub`: what it does is now the
+/// queue's, if its check passed.
 pub(crate) fn submitted(
     queue: &crate::handles::Queue,
     sub: &tuff_runtime::Vrc<crate::state::Submission>,
+    cbs: &[vk::CommandBuffer],
 ) {
     let live = queue.parent().live();
     if let Some(q) = live.hazard_queues.lock().get_mut(&queue.raw().as_raw()) {
-        q.made(sub);
+        q.made(sub, cbs);
     }
 }

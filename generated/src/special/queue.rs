@@ -420,7 +420,7 @@ fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>, replayed:
     // A submission whose command buffers the hazard checks replayed: what they
     // did is now the queue's.
     if replayed {
-        hazards::submitted(queue, &sub);
+        hazards::submitted(queue, &sub, &b.command_buffers);
     }
     submission::record_timeline_values(live, &b.timeline, &sub);
     if fence.is_none() {

@@ -1,7 +1,7 @@
 //! Render passes: `vkCreateRenderPass` and `vkCreateRenderPass2` read into one `Pass`,
 //! whose rules are each written once.
 
-use super::subpass_dependencies::subpass_dependency_checks;
+use super::subpass_dependencies::{subpass_dependency_checks, subpass_hazard_checks};
 use super::{chained, refuse};
 use crate::handles::*;
 use crate::state::RenderPassRecord;
@@ -1232,6 +1232,15 @@ pub(crate) fn render_pass_reference_checks(
     device: &Device,
     create_info: &RenderPassCreateInfo<'_>,
 ) -> Result<()> {
+    reference_and_view_checks(device, create_info)?;
+    // Last: a render pass that breaks a rule is refused for the rule.
+    subpass_hazard_checks(&Pass::of(create_info))
+}
+
+fn reference_and_view_checks(
+    device: &Device,
+    create_info: &RenderPassCreateInfo<'_>,
+) -> Result<()> {
     Pass::of(create_info).check_references(device)?;
     render_pass_description_checks(device, create_info)?;
     let raw = create_info.as_raw();
@@ -1288,7 +1297,9 @@ pub(crate) fn render_pass2_reference_checks(
     };
     let masks: Vec<_> = subpasses.iter().map(|s| s.view_mask).collect();
     let flags: Vec<_> = dependencies.iter().map(|d| d.dependency_flags).collect();
-    check_view_masks(device, &masks, raw.correlated_view_mask_count, &flags, true)
+    check_view_masks(device, &masks, raw.correlated_view_mask_count, &flags, true)?;
+    // Last: a render pass that breaks a rule is refused for the rule.
+    subpass_hazard_checks(&pass)
 }
 
 /// One more than the largest attachment index a render pass instance clears: a

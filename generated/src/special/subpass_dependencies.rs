@@ -217,3 +217,179 @@ const CORRELATION: Rule = (
     "VUID-VkRenderPassMultiviewCreateInfo-pCorrelationMasks-00841",
     "VUID-VkRenderPassCreateInfo2-pCorrelatedViewMasks-03056",
 );
+
+/// How a subpass uses an attachment, for the hazards between subpasses: the stage
+/// an earlier use is waited for at, the stage a later one starts at, the access
+/// type, whether it writes, its layout and how the message names it.
+#[derive(Clone, Copy)]
+struct AttachmentUse {
+    subpass: u32,
+    done_at: u64,
+    starts_at: u64,
+    access: u64,
+    write: bool,
+    layout: vk::ImageLayout,
+    what: &'static str,
+}
+
+/// The uses of attachment `a` by each subpass that uses it, in order (a subpass
+/// that both reads and writes it counts as writing).
+fn attachment_uses(pass: &Pass, a: u32) -> Vec<AttachmentUse> {
+    // COLOR_ATTACHMENT_OUTPUT, EARLY and LATE_FRAGMENT_TESTS, FRAGMENT_SHADER; the
+    // attachment access types.
+    const OUTPUT: u64 = 0x400;
+    const EARLY: u64 = 0x100;
+    const LATE: u64 = 0x200;
+    const FRAGMENT: u64 = 0x80;
+    const INPUT: u64 = 0x10;
+    const COLOR_WRITE: u64 = 0x100;
+    const DEPTH_READ: u64 = 0x200;
+    const DEPTH_WRITE: u64 = 0x400;
+    let read_only = |l: vk::ImageLayout| {
+        use vk::ImageLayout as L;
+        matches!(
+            l,
+            L::DEPTH_STENCIL_READ_ONLY_OPTIMAL
+                | L::DEPTH_READ_ONLY_OPTIMAL
+                | L::STENCIL_READ_ONLY_OPTIMAL
+                | L::DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL
+                | L::READ_ONLY_OPTIMAL
+        )
+    };
+    let mut uses = Vec::new();
+    for (i, s) in pass.subpasses.iter().enumerate() {
+        let subpass = i as u32;
+        let at = |r: &&super::render_pass::Ref| r.attachment == a;
+        let color = s.colors.iter().chain(s.resolves.iter().flatten()).find(at);
+        let depth = s.depth.as_ref().filter(|r| r.attachment == a);
+        let input = s.inputs.iter().find(at);
+        let found = if let Some(r) = color {
+            Some((
+                OUTPUT,
+                OUTPUT,
+                COLOR_WRITE,
+                true,
+                r.layout,
+                "a color or resolve attachment",
+            ))
+        } else if let Some(r) = depth.filter(|r| !read_only(r.layout)) {
+            Some((
+                LATE,
+                EARLY,
+                DEPTH_WRITE,
+                true,
+                r.layout,
+                "its depth/stencil attachment",
+            ))
+        } else if let Some(r) = depth {
+            Some((
+                LATE,
+                EARLY,
+                DEPTH_READ,
+                false,
+                r.layout,
+                "its read-only depth/stencil attachment",
+            ))
+        } else {
+            input.map(|r| {
+                (
+                    FRAGMENT,
+                    FRAGMENT,
+                    INPUT,
+                    false,
+                    r.layout,
+                    "an input attachment",
+                )
+            })
+        };
+        if let Some((done_at, starts_at, access, write, layout, what)) = found {
+            uses.push(AttachmentUse {
+                subpass,
+                done_at,
+                starts_at,
+                access,
+                write,
+                layout,
+                what,
+            });
+        }
+    }
+    uses
+}
+
+/// A later subpass that reads or writes an attachment an earlier one wrote (or
+/// writes one it read) needs a subpass dependency between them that orders the two
+/// uses: without one the subpasses may run in any order, or at once. A path through
+/// other subpasses' dependencies counts (its masks are not compared), so no correct
+/// render pass is refused. The error names the hazard as the validation layer's
+/// synchronization validation reports it when the render pass runs.
+pub(super) fn subpass_hazard_checks(pass: &Pass) -> Result<()> {
+    use crate::state::hazards::Barrier;
+    let external = vk::SUBPASS_EXTERNAL;
+    let linked = |from: u32, to: u32| -> bool {
+        // Whether a chain of dependencies leads from `from` to `to`.
+        let mut reached = vec![from];
+        let mut at = 0;
+        while at < reached.len() {
+            let s = reached[at];
+            for d in &pass.dependencies {
+                let (src, dst) = d.subpasses;
+                if src == s && dst != external && dst > s && !reached.contains(&dst) {
+                    reached.push(dst);
+                }
+            }
+            at += 1;
+        }
+        reached.contains(&to)
+    };
+    for a in 0..pass.attachments.len() as u32 {
+        let uses = attachment_uses(pass, a);
+        for pair in uses.windows(2) {
+            let (before, after) = (pair[0], pair[1]);
+            if !before.write && !after.write {
+                continue;
+            }
+            let ordered = pass
+                .dependencies
+                .iter()
+                .filter(|d| d.subpasses == (before.subpass, after.subpass))
+                .any(|d| {
+                    let b = Barrier::new(
+                        u64::from(d.stages.0.as_raw()),
+                        u64::from(d.access.0.as_raw()),
+                        u64::from(d.stages.1.as_raw()),
+                        u64::from(d.access.1.as_raw()),
+                    );
+                    b.orders(
+                        (before.done_at, before.access, before.write),
+                        (after.starts_at, after.access),
+                    )
+                });
+            let (b, e) = (before.subpass, after.subpass);
+            let chained = (b + 1..e).any(|k| linked(b, k) && linked(k, e));
+            if ordered || chained {
+                continue;
+            }
+            let kind = match (before.write, after.write) {
+                (true, true) => "SYNC-HAZARD-WRITE-AFTER-WRITE",
+                // A layout transition between them writes.
+                (true, false) if before.layout != after.layout => "SYNC-HAZARD-WRITE-AFTER-WRITE",
+                (true, false) => "SYNC-HAZARD-READ-AFTER-WRITE",
+                _ => "SYNC-HAZARD-WRITE-AFTER-READ",
+            };
+            let fix = if before.write {
+                "a dependency from the stage that writes it, with its access type, to the stage and access type that use it"
+            } else {
+                "a dependency from the stage that reads it to the stage that writes it"
+            };
+            refuse(
+                kind,
+                format!(
+                    "pSubpasses[{}] uses attachment {a} as {} after pSubpasses[{}] uses it as {}, and no subpass dependency from {} to {} orders the two: it needs {fix}",
+                    after.subpass, after.what, before.subpass, before.what, before.subpass, after.subpass
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}

@@ -235,6 +235,23 @@ impl Barrier {
         }
     }
 
+    /// Whether the barrier orders an access at `earlier` (stage, access type, whether
+    /// it writes) before one at `later` (stage, access type): the first in its first
+    /// scope and the second in its second, and for a write, made available and
+    /// visible between them.
+    pub(crate) fn orders(&self, earlier: (u64, u64, bool), later: (u64, u64)) -> bool {
+        let (es, ea, write) = earlier;
+        let (ls, la) = (expand_stages(later.0), expand_access(later.1));
+        let es = expand_stages(es);
+        let executes = es & self.src_exec != 0 && ls & self.dst_exec != 0;
+        executes
+            && (!write
+                || (es & self.src_stages != 0
+                    && expand_access(ea) & self.src_access != 0
+                    && ls & self.dst_stages != 0
+                    && la & self.dst_access != 0))
+    }
+
     /// An execution dependency alone: the same stages, no access.
     pub(crate) fn execution(&self) -> Barrier {
         Barrier {
@@ -942,8 +959,9 @@ pub(crate) struct QueueHazards {
     next: u32,
     /// The submissions replayed, by number, while not known complete.
     subs: Vec<(u32, Vweak<crate::state::Submission>)>,
-    /// The state a checked submission leaves, with its number, until it is made.
-    staged: Option<(Recording, u32)>,
+    /// The state a checked submission leaves, with its number and command buffers,
+    /// until it is made.
+    staged: Option<(Recording, u32, Vec<vk::CommandBuffer>)>,
 }
 
 impl QueueHazards {
@@ -959,16 +977,21 @@ impl QueueHazards {
         (self.state.clone(), self.next)
     }
 
-    /// The state a checked submission leaves, kept until it is made.
-    pub(crate) fn stage(&mut self, state: Recording, number: u32) {
-        self.staged = Some((state, number));
+    /// The state a checked submission of `cbs` leaves, kept until it is made.
+    pub(crate) fn stage(&mut self, state: Recording, number: u32, cbs: Vec<vk::CommandBuffer>) {
+        self.staged = Some((state, number, cbs));
     }
 
-    /// The checked submission was made as `sub`.
-    pub(crate) fn made(&mut self, sub: &Vrc<crate::state::Submission>) {
-        if let Some((state, number)) = self.staged.take() {
-            self.state = state;
-            self.subs.push((number, Vrc::downgrade(sub)));
+    /// A submission of `cbs` was made as `sub`: the state its check left is the
+    /// queue's (none is kept for a submission that was not checked, or whose check
+    /// a later rule refused).
+    pub(crate) fn made(&mut self, sub: &Vrc<crate::state::Submission>, cbs: &[vk::CommandBuffer]) {
+        match self.staged.take() {
+            Some((state, number, checked)) if checked == cbs => {
+                self.state = state;
+                self.subs.push((number, Vrc::downgrade(sub)));
+            }
+            _ => {}
         }
     }
 }
