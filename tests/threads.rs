@@ -124,22 +124,28 @@ mod threaded {
 
     /// The frame ring with worker secondaries: two frames in flight, four workers
     /// each recording their frame's secondary on a thread of their own, the
-    /// primary executing them; six frames, the layer silent.
+    /// primary executing them; six frames, the layer silent. Each frame in flight
+    /// renders to its own target: one target would be written by two frames at once
+    /// (its render pass's implicit dependency waits for nothing).
     #[test]
     fn frames_in_flight_hand_each_worker_its_secondary() {
         let _serial = vulkan::serial();
         let s = tuff_setup::setup(true);
-        let target = s.color_target(8, vk::ImageUsageFlags::empty());
+        let targets = [
+            s.color_target(8, vk::ImageUsageFlags::empty()),
+            s.color_target(8, vk::ImageUsageFlags::empty()),
+        ];
         let mut frames = s
             .device
             .frames_in_flight_with_workers(s.family, 2, 4)
             .expect("frames");
         for _ in 0..6 {
             let mut frame = frames.next_frame().expect("frame");
-            record_workers(&target, frame.workers().iter_mut());
+            let target = &targets[frame.index];
+            record_workers(target, frame.workers().iter_mut());
             let (primary, workers) = frame.parts();
             let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().collect();
-            execute_workers(primary, &target, &secondaries);
+            execute_workers(primary, target, &secondaries);
             frame.submit(&s.queue, &[], &[]).expect("submit");
         }
         frames.wait_all().expect("wait");

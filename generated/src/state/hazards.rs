@@ -344,15 +344,16 @@ impl Hazard {
                     )
                 )
             };
-            format!(
-                "a barrier from {src} to {} with {} between them",
-                name_of(STAGES.iter().map(|s| (s.name, s.bit)), self.later.stage),
-                if self.later.stage == 0 {
-                    "its access".to_owned()
-                } else {
+            match self.later.stage {
+                // A layout transition happens in its barrier or dependency: the
+                // write must be in that one's first scope.
+                0 => format!("the transition's barrier or dependency to wait for {src}"),
+                stage => format!(
+                    "a barrier from {src} to {} with {} between them",
+                    name_of(STAGES.iter().map(|s| (s.name, s.bit)), stage),
                     name_of(ACCESSES.iter().map(|a| (a.name, a.bit)), self.later.access)
-                }
-            )
+                ),
+            }
         } else {
             format!(
                 "an execution dependency from {} to {} between them",
