@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The stage benchmark (issue: what safety costs per frame stage). Builds the `stages`
-# binary three times (plain, with `multi_thread`, with `implicit_checks`), runs every
+# binary four times (plain, with `multi_thread`, with `implicit_checks`, and without
+# the hazard tracker: `--cfg tuff_untracked`), runs every
 # variant over every configuration interleaved, and writes docs/stages/<label>.csv,
 # .md and -<mode>.svg. Then times a full regeneration and, unless STAGES_NO_COMPILE=1,
 # the clean compile of tuff against ash (scripts/compile-time.sh).
@@ -26,6 +27,11 @@ build() {
 suffix=-mt build --features multi_thread
 suffix=-checks build --features implicit_checks
 suffix= build
+# Without the hazard tracker: a cfg, not a feature, in a target folder of its own
+# (other RUSTFLAGS rebuild everything).
+RUSTFLAGS="--cfg tuff_untracked" CARGO_TARGET_DIR=target/untracked \
+    cargo build -q --release -p tuff-examples --bin stages
+cp target/untracked/release/stages target/stages/stages-untracked
 if [ "${STAGES_BUILD_ONLY:-0}" = 1 ]; then
     exit 0
 fi
@@ -36,7 +42,8 @@ if [ "$label" = lavapipe ]; then
     extra+=(--window)
 fi
 target/stages/stages bench --out docs/stages --label "$label" \
-    --mt target/stages/stages-mt --checks target/stages/stages-checks "${extra[@]}" "$@"
+    --mt target/stages/stages-mt --checks target/stages/stages-checks \
+    --untracked target/stages/stages-untracked "${extra[@]}" "$@"
 # The generator's full run (regenerate into a scratch folder), and the clean compile
 # of the generated crate against ash alone.
 cargo build -q --release -p tuff-gen

@@ -229,6 +229,15 @@ impl Framebuffers {
     }
 }
 
+/// Whether [`record_frame`] records with automatic synchronization (the stage
+/// benchmark's `tuff-auto` variant).
+static AUTO_SYNC: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Makes [`record_frame`] record with `tuff::Recorder::auto_sync(on)`.
+pub fn set_auto_sync(on: bool) {
+    AUTO_SYNC.store(on, std::sync::atomic::Ordering::Relaxed);
+}
+
 /// Records a frame of `scene` into `frame`: the render pass on `framebuffer`, the
 /// scene's draws and, when asked, the copy of an image (in TRANSFER_SRC_OPTIMAL
 /// after the render pass) into a buffer, tightly packed, for the host to read.
@@ -254,7 +263,9 @@ pub fn record_frame<S: Scene>(
         },
     ];
     let area: vk::Rect2D = view.extent.into();
-    let mut rec = frame.record()?.begin_render_pass(
+    let mut rec = frame.record()?;
+    rec.auto_sync(AUTO_SYNC.load(std::sync::atomic::Ordering::Relaxed));
+    let mut rec = rec.begin_render_pass(
         &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
             // Without a depth attachment, only the color is cleared.

@@ -72,6 +72,10 @@ impl Inside for Continuing {}
 impl OutsideRenderPass for Outside {}
 impl OutsideRenderPass for InVideoCoding {}
 
+/// The [`Recorder::verified`] bit of the hazard tracker's last draw: set when a
+/// draw's reads were recorded, cleared with the others by any change of state.
+const HAZARD_DRAW: u8 = 1 << 4;
+
 /// Tells the buffer's lifecycle state when its recorder goes, however it goes.
 struct Alive(Vrc<Uses>);
 
@@ -558,6 +562,22 @@ impl<'c, S: Scope> Recorder<'c, S> {
     #[inline]
     pub(crate) fn state_changed(&mut self) {
         self.verified = 0;
+    }
+
+    /// Whether a draw with these parameters (`key`) would read what the last draw
+    /// the hazard tracker recorded read, with nothing recorded since that could
+    /// change the verdict: no state changed (the bound pipeline, sets and buffers),
+    /// nothing written and no barrier recorded.
+    #[inline]
+    pub(crate) fn hazard_draw_unchanged(&self, key: [u64; 5]) -> bool {
+        self.verified & HAZARD_DRAW != 0 && self.hazards.last_draw(key)
+    }
+
+    /// The hazard tracker recorded a draw's reads (and no write) under `key`.
+    #[inline]
+    pub(crate) fn hazard_draw_recorded(&mut self, key: [u64; 5]) {
+        self.verified |= HAZARD_DRAW;
+        self.hazards.set_last_draw(key);
     }
 
     /// Runs `checks` of the state at bind point `index`, unless they passed with

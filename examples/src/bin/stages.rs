@@ -28,7 +28,8 @@ enum Cmd {
     /// One variant, one configuration: prints `# device:`/`# driver:` lines and one CSV
     /// line of stage times (ns) per timed frame.
     Run {
-        /// One of ash, tuff, tuff-mt, tuff-checks, ash-layer, ash-sync.
+        /// One of ash, tuff, tuff-auto, tuff-untracked, tuff-mt, tuff-checks,
+        /// ash-layer, ash-sync.
         #[arg(long)]
         variant: String,
         #[command(flatten)]
@@ -49,6 +50,9 @@ enum Cmd {
         /// The build of this binary with the `implicit_checks` feature.
         #[arg(long)]
         checks: Option<PathBuf>,
+        /// The build of this binary with `--cfg tuff_untracked` (no hazard tracker).
+        #[arg(long)]
+        untracked: Option<PathBuf>,
         /// Rounds over the variants.
         #[arg(long, default_value_t = 3)]
         rounds: u32,
@@ -115,6 +119,7 @@ fn main() -> std::process::ExitCode {
             label,
             mt,
             checks,
+            untracked,
             rounds,
             counts,
             many_writes,
@@ -137,6 +142,7 @@ fn main() -> std::process::ExitCode {
             let plan = Plan {
                 mt,
                 checks,
+                untracked,
                 rounds,
                 frames,
                 frames_10000,
@@ -159,20 +165,23 @@ fn main() -> std::process::ExitCode {
 
 /// The variant's feature set must be the one this binary was built with.
 fn check_build(variant: &str) -> Result<()> {
-    let (mt, checks) = (
+    let (mt, checks, untracked) = (
         cfg!(feature = "multi_thread"),
         cfg!(feature = "implicit_checks"),
+        cfg!(tuff_untracked),
     );
     let wanted = match variant {
-        "tuff-mt" => (true, false),
-        "tuff-checks" => (false, true),
-        _ => (false, false),
+        "tuff-mt" => (true, false, false),
+        "tuff-checks" => (false, true, false),
+        "tuff-untracked" => (false, false, true),
+        _ => (false, false, false),
     };
-    if (mt, checks) != wanted {
+    if (mt, checks, untracked) != wanted {
         bail!(
-            "variant {variant} needs a build with multi_thread={} and implicit_checks={}; this one has {mt} and {checks}",
+            "variant {variant} needs a build with multi_thread={}, implicit_checks={} and tuff_untracked={}; this one has {mt}, {checks} and {untracked}",
             wanted.0,
-            wanted.1
+            wanted.1,
+            wanted.2
         );
     }
     Ok(())
@@ -183,6 +192,7 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
         bail!("unknown variant {variant:?}");
     }
     check_build(variant)?;
+    tuff_examples::render::set_auto_sync(variant == "tuff-auto");
     let run = Run {
         count: a.count,
         writes: a.writes,
@@ -281,6 +291,7 @@ fn fail_on_messages(messages: &[String]) -> Result<()> {
 struct Plan {
     mt: Option<PathBuf>,
     checks: Option<PathBuf>,
+    untracked: Option<PathBuf>,
     rounds: u32,
     frames: u32,
     frames_10000: u32,
@@ -305,6 +316,7 @@ fn bench(
                 let binary = match variant {
                     "tuff-mt" => plan.mt.as_ref(),
                     "tuff-checks" => plan.checks.as_ref(),
+                    "tuff-untracked" => plan.untracked.as_ref(),
                     _ => Some(&me),
                 };
                 let Some(binary) = binary else { continue };

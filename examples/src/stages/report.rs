@@ -9,9 +9,11 @@ use std::fmt::Write as _;
 
 /// The variants, in the order they run and appear, with their table headings. The
 /// first is the baseline every ratio is to.
-pub const VARIANTS: [(&str, &str); 6] = [
+pub const VARIANTS: [(&str, &str); 8] = [
     ("ash", "raw ash"),
     ("tuff", "tuff"),
+    ("tuff-auto", "tuff `auto_sync`"),
+    ("tuff-untracked", "tuff without hazard tracking"),
     ("tuff-mt", "tuff `multi_thread`"),
     ("tuff-checks", "tuff + implicit checks"),
     ("ash-layer", "ash + layer"),

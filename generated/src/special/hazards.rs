@@ -24,6 +24,10 @@ use crate::sync_tables::{Facts, Use};
 use crate::{Error, Handle, Result};
 use ash::vk::{self, Handle as _};
 
+/// Built with `--cfg tuff_untracked` (the stage benchmark's build without the
+/// tracker, to measure what it costs): every entry point returns at once.
+const UNTRACKED: bool = cfg!(tuff_untracked);
+
 /// The identifier the validation layer's synchronization validation reports a hazard
 /// of this kind under.
 fn id(kind: &str) -> &'static str {
@@ -249,6 +253,9 @@ pub(crate) fn copy_buffer<S: Scope>(
     dst_buffer: &Buffer,
     regions: &[vk::BufferCopy],
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let r = regions.iter().map(|r| (r.src_offset, r.dst_offset, r.size));
     buffer_copy(recorder, facts, (src_buffer.raw(), dst_buffer.raw()), r)
 }
@@ -259,6 +266,9 @@ pub(crate) fn copy_buffer2<S: Scope>(
     facts: &Facts,
     info: &CopyBufferInfo2<'_>,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
@@ -346,6 +356,20 @@ pub(crate) fn draw<S: Scope>(
     (first_vertex, vertex_count): (u32, u32),
     (first_instance, instance_count): (u32, u32),
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
+    let key = [
+        0,
+        first_vertex,
+        vertex_count,
+        first_instance,
+        instance_count,
+    ]
+    .map(u64::from);
+    if recorder.hazard_draw_unchanged(key) {
+        return Ok(());
+    }
     let mut list = Reads::new();
     vertex_memory(
         recorder,
@@ -355,7 +379,17 @@ pub(crate) fn draw<S: Scope>(
         facts.vertex,
     );
     descriptor_memory(recorder, 0, &mut list);
-    reads(recorder, facts.name, &list)
+    reads(recorder, facts.name, &list)?;
+    draw_recorded(recorder, &list, key);
+    Ok(())
+}
+
+/// Lets the next draw with the same parameters and nothing changed skip its reads:
+/// unless this one wrote (a second write after it would be a hazard).
+fn draw_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, list: &[(Memory, Use)], key: [u64; 5]) {
+    if list.iter().all(|(_, u)| !u.write) {
+        recorder.hazard_draw_recorded(key);
+    }
 }
 
 /// `vkCmdDrawIndexed`: reads its indices, and the vertices and instances it fetches.
@@ -365,6 +399,13 @@ pub(crate) fn draw_indexed<S: Scope>(
     (first_index, index_count): (u32, u32),
     (first_instance, instance_count): (u32, u32),
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
+    let key = [1, first_index, index_count, first_instance, instance_count].map(u64::from);
+    if recorder.hazard_draw_unchanged(key) {
+        return Ok(());
+    }
     let mut list = Reads::new();
     if let Some((_, offset, ty)) = recorder.bound[0].index {
         let size: u64 = match ty {
@@ -387,7 +428,9 @@ pub(crate) fn draw_indexed<S: Scope>(
         facts.vertex,
     );
     descriptor_memory(recorder, 0, &mut list);
-    reads(recorder, facts.name, &list)
+    reads(recorder, facts.name, &list)?;
+    draw_recorded(recorder, &list, key);
+    Ok(())
 }
 
 /// The memory a draw or dispatch reaches through the sets bound at bind point
@@ -437,6 +480,9 @@ pub(crate) fn draw_indirect<S: Scope>(
     (offset, draw_count, stride): (u64, u32, u32),
     indexed: bool,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let size: u64 = if indexed { 20 } else { 16 };
     let mut list = Reads::new();
     if draw_count > 0 {
@@ -458,6 +504,9 @@ pub(crate) fn draw_indirect<S: Scope>(
 /// `vkCmdDispatch` and `vkCmdDispatchBase`: what the bound compute pipeline's
 /// shader reaches through its descriptors.
 pub(crate) fn dispatch<S: Scope>(recorder: &mut Recorder<'_, S>, facts: &Facts) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let mut list = Reads::new();
     descriptor_memory(recorder, 1, &mut list);
     reads(recorder, facts.name, &list)
@@ -470,6 +519,9 @@ pub(crate) fn dispatch_indirect<S: Scope>(
     buffer: &Buffer,
     offset: u64,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let mut list = Reads::new();
     // VkDispatchIndirectCommand: three 32-bit counts.
     let params = Memory::Buffer(buffer.raw(), offset, offset.saturating_add(12));
@@ -513,6 +565,9 @@ pub(crate) fn fill_buffer<S: Scope>(
     dst_offset: vk::DeviceSize,
     size: vk::DeviceSize,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let m = bytes(dst_buffer.raw(), dst_offset, size);
     touch(recorder, facts.name, &[(m, facts.dst)])
 }
@@ -525,6 +580,9 @@ pub(crate) fn update_buffer<S: Scope>(
     dst_offset: vk::DeviceSize,
     data: &[u8],
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let m = bytes(dst_buffer.raw(), dst_offset, data.len() as u64);
     touch(recorder, facts.name, &[(m, facts.dst)])
 }
@@ -536,6 +594,9 @@ pub(crate) fn images<S: Scope>(
     facts: &Facts,
     names: Names<'_>,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let sides = names.sides();
     let list: Vec<(Memory, Use)> = sides
         .read
@@ -614,6 +675,9 @@ pub(crate) fn copy_buffer_to_image<S: Scope>(
     dst_image: &Image,
     regions: &[vk::BufferImageCopy],
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let r = regions.iter().map(Into::into).collect();
     buffer_image(
         recorder,
@@ -631,6 +695,9 @@ pub(crate) fn copy_image_to_buffer<S: Scope>(
     dst_buffer: &Buffer,
     regions: &[vk::BufferImageCopy],
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let r = regions.iter().map(Into::into).collect();
     buffer_image(
         recorder,
@@ -646,6 +713,9 @@ pub(crate) fn copy_buffer_to_image2<S: Scope>(
     facts: &Facts,
     info: &CopyBufferToImageInfo2<'_>,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
@@ -659,6 +729,9 @@ pub(crate) fn copy_image_to_buffer2<S: Scope>(
     facts: &Facts,
     info: &CopyImageToBufferInfo2<'_>,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
@@ -738,6 +811,9 @@ pub(crate) fn pipeline_barrier<S: Scope>(
     buffer_memory_barriers: &[BufferMemoryBarrier<'_>],
     image_memory_barriers: &[ImageMemoryBarrier<'_>],
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let barriers = Barriers::of(
         (src_stage_mask, dst_stage_mask),
         memory_barriers,
@@ -757,6 +833,9 @@ pub(crate) fn pipeline_barrier2<S: Scope>(
     facts: &Facts,
     dependency_infos: &[&DependencyInfo<'_>],
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     for d in dependency_infos {
         apply(recorder, facts.name, &Barriers::of2(d), None)?;
     }
@@ -949,6 +1028,9 @@ pub(crate) fn begin_render_pass<S: Scope>(
     facts: &Facts,
     begin: &RenderPassBeginInfo<'_>,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let raw = begin.as_raw();
     flush_before_instance(recorder);
     subpass_begins(recorder, facts.name, (raw.render_pass, raw.framebuffer), 0)
@@ -977,6 +1059,9 @@ fn flush_before_instance<S: Scope>(recorder: &mut Recorder<'_, S>) {
 /// `vkCmdNextSubpass` and `vkCmdNextSubpass2`: the dependencies into the next
 /// subpass, and the attachments it uses first.
 pub(crate) fn next_subpass<S: Scope>(recorder: &mut Recorder<'_, S>, facts: &Facts) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     match recorder.instance.as_ref() {
         Some(i) => {
             let (pass, fb, next) = (i.render_pass, i.framebuffer, i.subpass + 1);
@@ -993,6 +1078,9 @@ pub(crate) fn end_render_pass<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     facts: &Facts,
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let Some((pass, fb)) = recorder
         .instance
         .as_ref()
@@ -1078,6 +1166,9 @@ pub(crate) fn execute_commands<S: Scope>(
     facts: &Facts,
     command_buffers: &[&crate::handles::CommandBuffer],
 ) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     let logs: Vec<_> = command_buffers
         .iter()
         .filter_map(|cb| cb.uses().hazards())
@@ -1128,6 +1219,9 @@ pub(crate) struct Batch {
 ///
 /// Other queues' submissions are not seen: what they do is not compared.
 pub(crate) fn submit_checks(queue: &crate::handles::Queue, batches: &[Batch]) -> Result<()> {
+    if UNTRACKED {
+        return Ok(());
+    }
     // ALL_COMMANDS with MEMORY_WRITE; MEMORY_READ and MEMORY_WRITE.
     const ALL: u64 = 0x10000;
     const READ: u64 = 0x8000;

@@ -622,6 +622,9 @@ pub(crate) struct Recording {
     /// The stages and access types of every write recorded since automatic
     /// synchronization last made them visible to a render pass instance's commands.
     pub(crate) pending: (u64, u64),
+    /// The parameters of the last draw whose reads were recorded, with the
+    /// generation after it.
+    last_draw: ([u64; 5], u64),
     /// Whether automatic synchronization has ordered everything before the recording
     /// (earlier submissions' accesses) with one barrier.
     pub(crate) started: bool,
@@ -656,6 +659,17 @@ impl Recording {
         };
         self.commands += 1;
         cmd
+    }
+
+    /// Whether the last draw recorded had parameters `key` and nothing changed
+    /// since (the caller knows no state did).
+    pub(crate) fn last_draw(&self, key: [u64; 5]) -> bool {
+        self.last_draw == (key, self.generation)
+    }
+
+    /// The last draw recorded had parameters `key`.
+    pub(crate) fn set_last_draw(&mut self, key: [u64; 5]) {
+        self.last_draw = (key, self.generation);
     }
 
     /// Whether the tracker already holds each of these reads, recorded by a draw
