@@ -332,8 +332,8 @@ fn the_stage_benchmark_loops_are_valid_vulkan() {
     }
 }
 
-/// `stages bench` interleaves the variants this build has (raw ash, tuff, and raw ash
-/// under the layer) and writes the samples, the tables and the charts; a variant that
+/// `stages bench` interleaves the variants this build has (raw ash, tuff, tuff with
+/// `auto_sync`, and raw ash under the layer) and writes the samples, the tables and the charts; a variant that
 /// needs another build is refused by name.
 #[test]
 fn the_stage_benchmark_writes_its_tables() {
@@ -365,9 +365,9 @@ fn the_stage_benchmark_writes_its_tables() {
     );
     let csv = std::fs::read_to_string(dir.path().join("test.csv")).expect("the CSV");
     let rows = tuff_examples::stages::report::parse_csv(&csv).expect("a CSV it can read");
-    // 2 rounds x 2 modes x 2 configurations x 4 variants x 2 frames.
-    assert_eq!(rows.len(), 64, "{csv}");
-    for variant in ["ash", "tuff", "ash-layer", "ash-sync"] {
+    // 2 rounds x 2 modes x 2 configurations x 5 variants x 2 frames.
+    assert_eq!(rows.len(), 80, "{csv}");
+    for variant in ["ash", "tuff", "tuff-auto", "ash-layer", "ash-sync"] {
         assert_eq!(
             rows.iter().filter(|r| r.variant == variant).count(),
             16,
@@ -377,8 +377,10 @@ fn the_stage_benchmark_writes_its_tables() {
     assert!(csv.contains("# device: llvmpipe"), "{csv}");
     let md = std::fs::read_to_string(dir.path().join("test.md")).expect("the tables");
     assert_eq!(
-        md.matches("| Stage | raw ash | tuff | ash + layer | ash + layer + sync |")
-            .count(),
+        md.matches(
+            "| Stage | raw ash | tuff | tuff `auto_sync` | ash + layer | ash + layer + sync |"
+        )
+        .count(),
         4,
         "{md}"
     );
@@ -401,4 +403,10 @@ fn the_stage_benchmark_writes_its_tables() {
         err.contains("variant tuff-mt needs a build with multi_thread=true"),
         "{err}"
     );
+    let mut untracked = scene(stages);
+    untracked.args(["run", "--variant", "tuff-untracked", "--frames", "1"]);
+    let refused = self::output(untracked);
+    assert!(!refused.status.success());
+    let err = String::from_utf8_lossy(&refused.stderr);
+    assert!(err.contains("tuff_untracked=true"), "{err}");
 }
