@@ -443,6 +443,12 @@ smallvec = "1"
 rustc-hash = "2"
 raw-window-handle = "0.6"
 
+# `--cfg tuff_untracked` (RUSTFLAGS) builds tuff without its hazard tracker, for the
+# stage benchmark's "no tracking" column alone (scripts/hazard-bench.sh): never a
+# feature, so no dependency graph can turn it on.
+[lints.rust]
+unexpected_cfgs = { level = "warn", check-cfg = ['cfg(tuff_untracked)'] }
+
 [features]
 default = []
 # Kept so that builds naming it still work: the dynamic checks of implicit rules

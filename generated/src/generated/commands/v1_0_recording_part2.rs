@@ -7,14 +7,15 @@ impl<'c> Recorder<'c, Outside> {
 
 # Example
 
-Called, as `examples/src/scenes/deferred.rs` (line 366) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 268) does; the example programs run in CI:
 
 ```ignore
 let mut rec = rec.begin_render_pass(
-    &tuff::RenderPassBeginInfo::new(&self.render_pass, &self.framebuffers[view.slot])
+    &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
         .render_area(area)
-        .clear_values(&clear),
-    vk::SubpassContents::SECONDARY_COMMAND_BUFFERS,
+        // Without a depth attachment, only the color is cleared.
+        .clear_values(&clear[..1 + usize::from(S::DEPTH)]),
+    vk::SubpassContents::INLINE,
 );
 ```
 
@@ -974,7 +975,7 @@ The caller upholds the rules that [`Self::copy_image`] checks at run time: `VUID
 
 # Example
 
-Called, as `examples/src/render.rs` (line 283) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 294) does; the example programs run in CI:
 
 ```ignore
 rec.copy_image_to_buffer(

@@ -822,7 +822,7 @@ The caller upholds the rules that [`Self::set_line_width`] checks at run time: `
 
 # Example
 
-Called, as `examples/src/render.rs` (line 265) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 276) does; the example programs run in CI:
 
 ```ignore
 rec.set_scissor(0, &[area])?;
@@ -1047,7 +1047,7 @@ The caller upholds the rules that [`Self::set_stencil_write_mask`] checks at run
 
 # Example
 
-Called, as `examples/src/render.rs` (line 264) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 275) does; the example programs run in CI:
 
 ```ignore
 rec.set_viewport(0, &[viewport(view.extent)])?;

@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 # Example
 
-Called, as `examples/src/render.rs` (line 267) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 278) does; the example programs run in CI:
 
 ```ignore
 let mut rec = rec.end_render_pass();

@@ -1190,10 +1190,10 @@ impl<'a> QueryPoolCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 258) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 269) does; the example programs run in CI:
 
 ```ignore
-let mut rec = frame.record()?.begin_render_pass(
+let mut rec = rec.begin_render_pass(
     &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
         .render_area(area)
         // Without a depth attachment, only the color is cleared.
