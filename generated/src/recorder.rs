@@ -501,6 +501,7 @@ impl<'c> Recorder<'c, Outside> {
         device_mask: u32,
     ) -> Self {
         let queue_flags = cb.parent().queue_flags();
+        let log = cb.uses().spare_log();
         Recorder {
             device: cb.device().clone(),
             raw: cb.raw(),
@@ -520,7 +521,7 @@ impl<'c> Recorder<'c, Outside> {
             query_types: Vec::new(),
             suspends: false,
             layouts: Default::default(),
-            hazards: Default::default(),
+            hazards: crate::state::hazards::Recording::with_log(log),
             query_states: Default::default(),
             event_states: Default::default(),
             pass_images: Vec::new(),
@@ -569,13 +570,13 @@ impl<'c, S: Scope> Recorder<'c, S> {
     /// change the verdict: no state changed (the bound pipeline, sets and buffers),
     /// nothing written and no barrier recorded.
     #[inline]
-    pub(crate) fn hazard_draw_unchanged(&self, key: [u64; 5]) -> bool {
+    pub(crate) fn hazard_draw_unchanged(&self, key: crate::state::hazards::DrawKey) -> bool {
         self.verified & HAZARD_DRAW != 0 && self.hazards.last_draw(key)
     }
 
     /// The hazard tracker recorded a draw's reads (and no write) under `key`.
     #[inline]
-    pub(crate) fn hazard_draw_recorded(&mut self, key: [u64; 5]) {
+    pub(crate) fn hazard_draw_recorded(&mut self, key: crate::state::hazards::DrawKey) {
         self.verified |= HAZARD_DRAW;
         self.hazards.set_last_draw(key);
     }

@@ -14,7 +14,7 @@ use crate::handles::{Buffer, Image};
 use crate::recorder::{Recorder, Scope};
 use crate::special::barriers::Barriers;
 use crate::special::image_layouts::Names;
-use crate::state::hazards::{Barrier, Cmd, Hazard, Memory, Usage, EVERY_TEXEL};
+use crate::state::hazards::{Barrier, Cmd, DrawKey, Hazard, Memory, Usage, EVERY_TEXEL};
 use crate::state::layouts::Sel;
 use crate::structs::{
     BufferMemoryBarrier, CopyBufferInfo2, CopyBufferToImageInfo2, CopyImageToBufferInfo2,
@@ -350,31 +350,35 @@ fn vertex_memory<S: Scope>(
 }
 
 /// `vkCmdDraw`: reads the vertices and instances it fetches.
+#[inline]
 pub(crate) fn draw<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     facts: &Facts,
-    (first_vertex, vertex_count): (u32, u32),
-    (first_instance, instance_count): (u32, u32),
+    vertices: (u32, u32),
+    instances: (u32, u32),
 ) -> Result<()> {
     if UNTRACKED {
         return Ok(());
     }
-    let key = [
-        0,
-        first_vertex,
-        vertex_count,
-        first_instance,
-        instance_count,
-    ]
-    .map(u64::from);
+    let key = DrawKey::new(0, vertices, instances);
     if recorder.hazard_draw_unchanged(key) {
         return Ok(());
     }
+    draw_tracked(recorder, facts, key)
+}
+
+/// [`draw`] past the check that the last draw's verdict stands.
+#[inline(never)]
+fn draw_tracked<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    key: DrawKey,
+) -> Result<()> {
     let mut list = Reads::new();
     vertex_memory(
         recorder,
-        Some((u64::from(first_vertex), u64::from(vertex_count))),
-        (u64::from(first_instance), u64::from(instance_count)),
+        Some((u64::from(key.first), u64::from(key.count))),
+        (u64::from(key.first_instance), u64::from(key.instances)),
         &mut list,
         facts.vertex,
     );
@@ -386,35 +390,47 @@ pub(crate) fn draw<S: Scope>(
 
 /// Lets the next draw with the same parameters and nothing changed skip its reads:
 /// unless this one wrote (a second write after it would be a hazard).
-fn draw_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, list: &[(Memory, Use)], key: [u64; 5]) {
+fn draw_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, list: &[(Memory, Use)], key: DrawKey) {
     if list.iter().all(|(_, u)| !u.write) {
         recorder.hazard_draw_recorded(key);
     }
 }
 
 /// `vkCmdDrawIndexed`: reads its indices, and the vertices and instances it fetches.
+#[inline]
 pub(crate) fn draw_indexed<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     facts: &Facts,
-    (first_index, index_count): (u32, u32),
-    (first_instance, instance_count): (u32, u32),
+    indices: (u32, u32),
+    instances: (u32, u32),
 ) -> Result<()> {
     if UNTRACKED {
         return Ok(());
     }
-    let key = [1, first_index, index_count, first_instance, instance_count].map(u64::from);
+    let key = DrawKey::new(1, indices, instances);
     if recorder.hazard_draw_unchanged(key) {
         return Ok(());
     }
+    draw_indexed_tracked(recorder, facts, key)
+}
+
+/// [`draw_indexed`] past the check that the last draw's verdict stands.
+#[inline(never)]
+fn draw_indexed_tracked<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    key: DrawKey,
+) -> Result<()> {
     let mut list = Reads::new();
+    let (first_index, index_count) = (u64::from(key.first), u64::from(key.count));
     if let Some((_, offset, ty)) = recorder.bound[0].index {
         let size: u64 = match ty {
             vk::IndexType::UINT16 => 2,
             vk::IndexType::UINT8_EXT => 1,
             _ => 4,
         };
-        let start = offset.saturating_add(u64::from(first_index).saturating_mul(size));
-        let end = start.saturating_add(u64::from(index_count).saturating_mul(size));
+        let start = offset.saturating_add(first_index.saturating_mul(size));
+        let end = start.saturating_add(index_count.saturating_mul(size));
         let buffer = recorder.bound[0].index_buffer;
         if index_count > 0 {
             list.push((Memory::Buffer(buffer, start, end), facts.index));
@@ -423,7 +439,7 @@ pub(crate) fn draw_indexed<S: Scope>(
     vertex_memory(
         recorder,
         None,
-        (u64::from(first_instance), u64::from(instance_count)),
+        (u64::from(key.first_instance), u64::from(key.instances)),
         &mut list,
         facts.vertex,
     );

@@ -53,7 +53,7 @@ struct UsesState {
     layouts: Option<Vrc<crate::state::layouts::Recording>>,
     /// What the last recording did to memory, for its submissions to replay; `None`
     /// while recording, or when it did nothing the hazard tracker saw.
-    hazards: Option<Vrc<[crate::state::hazards::Event]>>,
+    hazards: Option<Vrc<Vec<crate::state::hazards::Event>>>,
     /// The descriptor sets the last recording bound, each with its generation then.
     sets: Vec<(u64, u64)>,
     /// The queue family of the buffer's pool and whether the pool is protected, as
@@ -285,12 +285,24 @@ impl Uses {
 
     /// What the recording that just ended did to memory.
     pub(crate) fn set_hazards(&self, log: Vec<crate::state::hazards::Event>) {
-        self.state.lock().hazards = (!log.is_empty()).then(|| log.into());
+        self.state.lock().hazards = (!log.is_empty()).then(|| Vrc::new(log));
     }
 
     /// What the last recording did to memory, if anything the tracker saw.
-    pub(crate) fn hazards(&self) -> Option<Vrc<[crate::state::hazards::Event]>> {
+    pub(crate) fn hazards(&self) -> Option<Vrc<Vec<crate::state::hazards::Event>>> {
         self.state.lock().hazards.clone()
+    }
+
+    /// The last recording's log, emptied, for the next recording to fill without
+    /// allocating again (a new one when a submission check still holds it). The
+    /// last recording is over: a new one begins.
+    pub(crate) fn spare_log(&self) -> Vec<crate::state::hazards::Event> {
+        let taken = self.state.lock().hazards.take();
+        let mut log = taken
+            .and_then(|log| Vrc::try_unwrap(log).ok())
+            .unwrap_or_default();
+        log.clear();
+        log
     }
 
     /// The image layouts the last recording needs at its start and leaves.

@@ -22,6 +22,7 @@ use crate::state::Live;
 use crate::sync_tables::{ACCESSES, EVERY_STAGE, STAGES};
 use ash::vk::{self, Handle as _};
 use rustc_hash::FxHashMap as HashMap;
+use smallvec::{smallvec, SmallVec};
 use std::sync::OnceLock;
 use tuff_runtime::{Vrc, Vweak};
 
@@ -93,8 +94,13 @@ fn relations() -> &'static Relations {
     })
 }
 
-fn bits(mask: u64) -> impl Iterator<Item = usize> {
-    (0..64).filter(move |i| mask & (1 << i) != 0)
+/// The positions of the set bits of `mask`, lowest first.
+fn bits(mut mask: u64) -> impl Iterator<Item = usize> {
+    core::iter::from_fn(move || {
+        let i = mask.trailing_zeros() as usize;
+        mask &= mask.checked_sub(1)?;
+        Some(i)
+    })
 }
 
 /// The real stages a mask names: the stages each stands for. `TOP_OF_PIPE` and
@@ -108,6 +114,32 @@ pub(crate) fn expand_stages(mask: u64) -> u64 {
 pub(crate) fn expand_access(mask: u64) -> u64 {
     let r = relations();
     bits(mask).fold(0, |m, i| m | r.access[i])
+}
+
+/// The parameters of a draw, for the tracker's check that a run of draws with the
+/// same parameters on one state reads what the first read: compared field by field,
+/// on every draw.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct DrawKey {
+    /// 0: `vkCmdDraw` (vertices); 1: `vkCmdDrawIndexed` (indices).
+    pub(crate) kind: u32,
+    pub(crate) first: u32,
+    pub(crate) count: u32,
+    pub(crate) first_instance: u32,
+    pub(crate) instances: u32,
+}
+
+impl DrawKey {
+    #[inline]
+    pub(crate) fn new(kind: u32, (first, count): (u32, u32), instances: (u32, u32)) -> Self {
+        DrawKey {
+            kind,
+            first,
+            count,
+            first_instance: instances.0,
+            instances: instances.1,
+        }
+    }
 }
 
 /// A command of the recording, for the messages: its name and its number.
@@ -284,7 +316,7 @@ struct Write {
     /// The texels it wrote.
     texels: Texels,
     /// Each `(stages, access types)` the write is visible to (a union of products).
-    visible: Vec<(u64, u64)>,
+    visible: SmallVec<[(u64, u64); 2]>,
     /// The stages ordered after the write by the barriers so far.
     chain: u64,
 }
@@ -313,7 +345,7 @@ struct Read {
 #[derive(Clone, Debug, Default)]
 pub(crate) struct State {
     write: Option<Write>,
-    reads: Vec<Read>,
+    reads: SmallVec<[Read; 1]>,
 }
 
 /// Two accesses the recording does not order.
@@ -447,7 +479,7 @@ impl State {
             self.write = Some(Write {
                 usage: u,
                 texels,
-                visible: Vec::new(),
+                visible: SmallVec::new(),
                 chain: 0,
             });
         } else if let Some(r) = self
@@ -470,7 +502,7 @@ impl State {
     fn apply(&mut self, barriers: &[Barrier]) {
         if let Some(w) = &mut self.write {
             let mut chain = 0;
-            let mut visible: Vec<(u64, u64)> = Vec::new();
+            let mut visible: SmallVec<[(u64, u64); 2]> = SmallVec::new();
             for b in barriers.iter().filter(|b| in_first_scope(w, b)) {
                 chain |= b.dst_exec;
                 if b.dst_access != 0 {
@@ -506,9 +538,9 @@ impl State {
             },
             texels: EVERY_TEXEL,
             visible: if b.dst_access != 0 {
-                vec![(b.dst_stages, b.dst_access)]
+                smallvec![(b.dst_stages, b.dst_access)]
             } else {
-                Vec::new()
+                SmallVec::new()
             },
             chain: b.dst_exec,
         });
@@ -624,7 +656,7 @@ pub(crate) struct Recording {
     pub(crate) pending: (u64, u64),
     /// The parameters of the last draw whose reads were recorded, with the
     /// generation after it.
-    last_draw: ([u64; 5], u64),
+    last_draw: (DrawKey, u64),
     /// Whether automatic synchronization has ordered everything before the recording
     /// (earlier submissions' accesses) with one barrier.
     pub(crate) started: bool,
@@ -650,6 +682,14 @@ pub(crate) enum Event {
 }
 
 impl Recording {
+    /// A recording that logs into `log` (emptied; its capacity is kept).
+    pub(crate) fn with_log(log: Vec<Event>) -> Self {
+        Recording {
+            log,
+            ..Default::default()
+        }
+    }
+
     /// The next command's place in the recording.
     pub(crate) fn next(&mut self, name: &'static str) -> Cmd {
         let cmd = Cmd {
@@ -663,12 +703,13 @@ impl Recording {
 
     /// Whether the last draw recorded had parameters `key` and nothing changed
     /// since (the caller knows no state did).
-    pub(crate) fn last_draw(&self, key: [u64; 5]) -> bool {
-        self.last_draw == (key, self.generation)
+    #[inline]
+    pub(crate) fn last_draw(&self, key: DrawKey) -> bool {
+        self.last_draw.1 == self.generation && self.last_draw.0 == key
     }
 
     /// The last draw recorded had parameters `key`.
-    pub(crate) fn set_last_draw(&mut self, key: [u64; 5]) {
+    pub(crate) fn set_last_draw(&mut self, key: DrawKey) {
         self.last_draw = (key, self.generation);
     }
 
