@@ -1647,3 +1647,82 @@ fn a_render_pass_orders_an_attachment_between_its_subpasses() {
     two_subpasses(&s, &mut cb, views, true).expect("ordered");
     assert_silent(&s.messages);
 }
+
+/// With automatic synchronization, the end of a recording that wrote a buffer
+/// records one barrier to the host (a fence's memory dependency covers device
+/// accesses only): one barrier orders what came before the recording, one the copy
+/// after the fill, one the host's reads after both. A recording that writes only an
+/// image gets no barrier to the host, and checked mode records none at all.
+#[test]
+fn automatic_synchronization_makes_buffer_writes_visible_to_the_host() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.auto_sync(true);
+    assert!(rec.is_auto_sync());
+    fill_b(&o, &mut rec, false).expect("fill");
+    copy_b_to_c(&o, &mut rec, false).expect("copy");
+    rec.end().expect("end");
+    assert_eq!(cb.auto_barriers(), 3);
+    s.submit_wait(&cb);
+
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.auto_sync(true);
+    let color = vk::ImageAspectFlags::COLOR;
+    rec.transition_image(&o.image, color, L::UNDEFINED, L::TRANSFER_DST_OPTIMAL)
+        .expect("transition");
+    rec.copy_buffer_to_image(&o.a, &o.image, L::TRANSFER_DST_OPTIMAL, &texels())
+        .expect("upload");
+    rec.end().expect("end");
+    assert_eq!(cb.auto_barriers(), 1, "only the one before the copy");
+    s.submit_wait(&cb);
+
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    fill_b(&o, &mut rec, false).expect("fill");
+    rec.end().expect("end");
+    assert_eq!(cb.auto_barriers(), 0);
+    s.submit_wait(&cb);
+    assert_silent(&s.messages);
+}
+
+/// `transition_image` waits for what the recording did to the image, as the tracker
+/// followed it (its old layout alone only where the recording has not touched the
+/// image): after a copy wrote the image, the transition's barrier waits for that
+/// copy, and the copy out in the new layout reads what it wrote. A first scope that
+/// missed the copy is refused by tuff's transition check and reported by the layer;
+/// neither says anything.
+#[test]
+fn transition_image_waits_for_what_the_recording_did_to_the_image() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let color = vk::ImageAspectFlags::COLOR;
+    rec.transition_image(&o.image, color, L::UNDEFINED, L::TRANSFER_DST_OPTIMAL)
+        .expect("to TRANSFER_DST");
+    rec.copy_buffer_to_image(&o.a, &o.image, L::TRANSFER_DST_OPTIMAL, &texels())
+        .expect("upload");
+    rec.transition_image(
+        &o.image,
+        color,
+        L::TRANSFER_DST_OPTIMAL,
+        L::TRANSFER_SRC_OPTIMAL,
+    )
+    .expect("after the copy");
+    rec.copy_image_to_buffer(&o.image, L::TRANSFER_SRC_OPTIMAL, &o.c, &texels())
+        .expect("the copy out reads after the transition");
+    rec.end().expect("end");
+    s.submit_wait(&cb);
+    assert_silent(&s.messages);
+}

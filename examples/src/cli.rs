@@ -33,6 +33,11 @@ pub struct Common {
     /// resizes), then close it.
     #[arg(long, default_value_t = 0)]
     pub resizes: u32,
+    /// Record with automatic synchronization (`tuff::Recorder::auto_sync`): tuff
+    /// records every barrier the frames need, the one before the host reads the
+    /// image included.
+    #[arg(long)]
+    pub auto_sync: bool,
 }
 
 /// Runs a scene as `common` says and reports what the validation layer said.
@@ -46,6 +51,7 @@ pub fn run<S: Scene>(
         enable_sync_validation();
     }
     req.window = common.window;
+    crate::render::set_auto_sync(common.auto_sync);
     let frames = common.frames.unwrap_or(1);
     if frames == 0 && !common.window {
         bail!("--frames must be at least 1 without --window");

@@ -238,6 +238,11 @@ pub fn set_auto_sync(on: bool) {
     AUTO_SYNC.store(on, std::sync::atomic::Ordering::Relaxed);
 }
 
+/// Whether frames record with automatic synchronization ([`set_auto_sync`]).
+pub fn auto_sync() -> bool {
+    AUTO_SYNC.load(std::sync::atomic::Ordering::Relaxed)
+}
+
 /// Records a frame of `scene` into `frame`: the render pass on `framebuffer`, the
 /// scene's draws and, when asked, the copy of an image (in TRANSFER_SRC_OPTIMAL
 /// after the render pass) into a buffer, tightly packed, for the host to read.
@@ -264,7 +269,7 @@ pub fn record_frame<S: Scene>(
     ];
     let area: vk::Rect2D = view.extent.into();
     let mut rec = frame.record()?;
-    rec.auto_sync(AUTO_SYNC.load(std::sync::atomic::Ordering::Relaxed));
+    rec.auto_sync(auto_sync());
     let mut rec = rec.begin_render_pass(
         &tuff::RenderPassBeginInfo::new(render_pass, framebuffer)
             .render_area(area)
@@ -284,7 +289,8 @@ pub fn record_frame<S: Scene>(
 }
 
 /// Records the copy of the whole color image of `extent` (in TRANSFER_SRC_OPTIMAL) into
-/// `buffer`, tightly packed, and the barrier that makes it visible to the host.
+/// `buffer`, tightly packed, and the barrier that makes it visible to the host (with
+/// automatic synchronization on, the recorder's end records that one).
 pub fn record_readback(
     rec: &mut tuff::Recorder<'_, tuff::Outside>,
     image: &tuff::Image,
@@ -306,6 +312,9 @@ pub fn record_readback(
             ..Default::default()
         }],
     )?;
+    if rec.is_auto_sync() {
+        return Ok(());
+    }
     // A fence wait does not make device writes visible to the host; this does.
     let to_host = [tuff::BufferMemoryBarrier::new(buffer)
         .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)

@@ -42,6 +42,25 @@ fn deferred_matches_its_golden_image_with_one_and_four_workers_and_in_raw_ash() 
     }
 }
 
+/// With automatic synchronization (`--auto-sync`) the primary has no barrier
+/// written by hand, not even the one before the host reads the image (tuff records
+/// it at the recording's end): the same image, byte for byte, and the layer with
+/// synchronization validation says nothing.
+#[test]
+fn deferred_with_automatic_synchronization_renders_the_same_image() {
+    let binary = env!("CARGO_BIN_EXE_deferred");
+    let args = ["--count", "300", "--seed", "1", "--threads", "2"];
+    let dir = tempfile::tempdir().expect("temp dir");
+    let manual = render(binary, "deferred-manual", dir.path(), &args);
+    let mut auto_args = args.to_vec();
+    auto_args.push("--auto-sync");
+    let auto = render(binary, "deferred-auto", dir.path(), &auto_args);
+    assert!(
+        manual == auto,
+        "deferred: --auto-sync rendered another image"
+    );
+}
+
 /// Built with `multi_thread` (the test command's threaded pass), the tuff scene's
 /// workers run on threads of their own; without it, in turn, and it says so.
 #[test]

@@ -50,6 +50,35 @@ fn textured_quad_shows_its_checkerboard() {
     }
 }
 
+/// The textured quad, the teapots and the Bézier patches with automatic
+/// synchronization (`--auto-sync`): no barrier written by hand in their frames (the
+/// texture's upload is `Queue::upload_image`'s, the host's read tuff's at the end of
+/// the recording), the same image byte for byte, and the layer with synchronization
+/// validation quiet.
+#[test]
+fn scenes_with_automatic_synchronization_render_the_same_images() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (binary, name, args) in [
+        (
+            env!("CARGO_BIN_EXE_textured_quad"),
+            "textured_quad",
+            &[][..],
+        ),
+        (
+            env!("CARGO_BIN_EXE_teapots"),
+            "teapots",
+            &["--count", "20", "--seed", "1"][..],
+        ),
+        (env!("CARGO_BIN_EXE_bezier"), "bezier", &[][..]),
+    ] {
+        let manual = render(binary, &format!("{name}-manual"), dir.path(), args);
+        let mut auto_args = args.to_vec();
+        auto_args.push("--auto-sync");
+        let auto = render(binary, &format!("{name}-auto"), dir.path(), &auto_args);
+        assert!(manual == auto, "{name}: --auto-sync rendered another image");
+    }
+}
+
 /// The compute example adds two arrays of a million floats on the device, under the
 /// layer, and checks every sum on the host.
 #[test]

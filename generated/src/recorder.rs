@@ -652,7 +652,9 @@ impl<'c, S: Scope> Recorder<'c, S> {
     /// that barrier itself, one global memory barrier just before the command
     /// (`vkCmdPipelineBarrier2` where synchronization2 is enabled), from the earlier
     /// accesses' stages to the command's. Barriers the recording names itself count
-    /// in both modes. Which commands the tracker knows, and what each reads and
+    /// in both modes. On, [`Recorder::end`] also makes the buffer writes of the
+    /// recording visible to the host (one barrier to `HOST`), which a fence alone
+    /// does not. Which commands the tracker knows, and what each reads and
     /// writes, is the crate's `sync_tables` (from the registry's sync tables and the
     /// generator's table of per-command facts); the report lists the others.
     ///
@@ -669,6 +671,97 @@ impl<'c, S: Scope> Recorder<'c, S> {
     /// ```
     pub fn auto_sync(&mut self, on: bool) {
         self.hazards.auto = on;
+    }
+
+    /// Whether automatic synchronization is on ([`Recorder::auto_sync`]).
+    #[inline]
+    pub fn is_auto_sync(&self) -> bool {
+        self.hazards.auto
+    }
+
+    /// Records one global memory barrier with these masks (synchronization2's,
+    /// `(src stages, src access, dst stages, dst access)`, as
+    /// `vkCmdPipelineBarrier2` where the device enabled synchronization2, else the
+    /// first version's masks that cover them) and applies it to the hazard tracker:
+    /// automatic synchronization's barrier, outside a render pass instance.
+    pub(crate) fn record_memory_barrier(&mut self, (ss, sa, ds, da): (u64, u64, u64, u64)) {
+        let live = self.device().live();
+        let sync2 = live.with_features(|f| f.v13.synchronization2) != vk::FALSE;
+        let fns = self.device().fns();
+        let raw = self.raw();
+        let recorded = if sync2 {
+            let m = [vk::MemoryBarrier2::default()
+                .src_stage_mask(vk::PipelineStageFlags2::from_raw(ss))
+                .src_access_mask(vk::AccessFlags2::from_raw(sa))
+                .dst_stage_mask(vk::PipelineStageFlags2::from_raw(ds))
+                .dst_access_mask(vk::AccessFlags2::from_raw(da))];
+            let info = vk::DependencyInfo::default().memory_barriers(&m);
+            // SAFETY: a recording command buffer outside a render pass instance (the
+            // caller's check), synchronization2 enabled (VUID-vkCmdPipelineBarrier2-synchronization2-03848);
+            // the stages and access types are those of commands the recording just
+            // recorded or is about to, so the queue family supports them and each access
+            // type belongs to its stage (VUID-VkMemoryBarrier2-srcAccessMask-03900...).
+            unsafe { (fns.fp_v1_3().cmd_pipeline_barrier2)(raw, &info) };
+            (ss, sa, ds, da)
+        } else {
+            let (ss1, sa1) = (
+                crate::state::hazards::narrow_stages(ss),
+                crate::state::hazards::narrow_access(sa),
+            );
+            let (ds1, da1) = (
+                crate::state::hazards::narrow_stages(ds),
+                crate::state::hazards::narrow_access(da),
+            );
+            let m = [vk::MemoryBarrier::default()
+                .src_access_mask(sa1)
+                .dst_access_mask(da1)];
+            // SAFETY: as above, in the first version's masks, which are not empty
+            // (VUID-vkCmdPipelineBarrier-srcStageMask-03937): every hazard has a stage on
+            // both sides.
+            unsafe {
+                (fns.fp_v1_0().cmd_pipeline_barrier)(
+                    raw,
+                    ss1,
+                    ds1,
+                    vk::DependencyFlags::empty(),
+                    1,
+                    m.as_ptr(),
+                    0,
+                    core::ptr::null(),
+                    0,
+                    core::ptr::null(),
+                )
+            };
+            (
+                u64::from(ss1.as_raw()),
+                u64::from(sa1.as_raw()),
+                u64::from(ds1.as_raw()),
+                u64::from(da1.as_raw()),
+            )
+        };
+        let (_, hazards) = self.hazards_mut();
+        hazards.auto_barriers += 1;
+        hazards.next("a barrier tuff recorded");
+        hazards.apply_global(&[crate::state::hazards::Barrier::new(
+            recorded.0, recorded.1, recorded.2, recorded.3,
+        )]);
+    }
+
+    /// With automatic synchronization on, at the end of a recording: makes the
+    /// buffer writes it made visible to the host with one barrier to `HOST`, since a
+    /// fence's memory dependency covers device accesses only and a host read of what
+    /// the device wrote needs this barrier (the specification's fence signal
+    /// operation).
+    fn make_visible_to_host(&mut self) {
+        // HOST; HOST_READ, HOST_WRITE.
+        const HOST: u64 = 0x4000;
+        const HOST_ACCESS: u64 = 0x2000 | 0x4000;
+        let (stages, access) = self.hazards.buffer_writes;
+        if cfg!(tuff_untracked) || !self.hazards.auto || stages == 0 {
+            return;
+        }
+        self.record_memory_barrier((stages, access, HOST, HOST_ACCESS));
+        self.hazards.buffer_writes = (0, 0);
     }
 
     /// The device's records and the recording's hazard tracker, borrowed together.
@@ -788,6 +881,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         self.cb.uses().ended(true);
         self.cb.uses().set_layouts(self.layouts);
         self.cb.uses().set_hazards(self.hazards.take_log());
+        self.cb.uses().set_auto_barriers(self.hazards.auto_barriers);
         self.cb.uses().set_queries(self.query_states);
         self.cb.uses().set_event_states(self.event_states);
         self.cb
@@ -826,6 +920,9 @@ impl<'c> Recorder<'c, Outside> {
                 // still active.
                 unsafe { end_query(self.raw, q.pool, q.query) };
             }
+        }
+        if self.poisoned.is_none() {
+            self.make_visible_to_host();
         }
         self.finish()
     }

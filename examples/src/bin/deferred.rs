@@ -17,6 +17,11 @@ struct Args {
     scene: Options,
     #[command(flatten)]
     common: tuff_examples::cli::Headless,
+    /// Record with automatic synchronization (`tuff::Recorder::auto_sync`): tuff
+    /// records every barrier the frames need, the one before the host reads the
+    /// image included.
+    #[arg(long)]
+    auto_sync: bool,
 }
 
 fn main() -> std::process::ExitCode {
@@ -30,6 +35,7 @@ fn run(args: &Args) -> Result<()> {
     if c.validate {
         tuff_examples::cli::enable_sync_validation();
     }
+    tuff_examples::render::set_auto_sync(args.auto_sync);
     let gpu = Gpu::new(REQUIREMENTS, c.validate)?;
     let extent = vk::Extent2D {
         width: c.width,

@@ -222,6 +222,7 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
                 frames: Some(run.warmup + run.frames),
                 validate: false,
                 resizes: 0,
+                auto_sync: variant == "tuff-auto",
             };
             let writes = u64::from(run.writes);
             tuff_examples::window::run_timed(

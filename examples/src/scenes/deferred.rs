@@ -357,10 +357,11 @@ impl Deferred {
         })?;
         let (primary, workers) = frame.parts();
         let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().collect();
-        let rec = primary.begin(
+        let mut rec = primary.begin(
             &tuff::CommandBufferBeginInfo::new()
                 .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
         )?;
+        rec.auto_sync(crate::render::auto_sync());
         let clear = data::clear_values();
         let area: vk::Rect2D = view.extent.into();
         let mut rec = rec.begin_render_pass(

@@ -1,6 +1,7 @@
 //! Routine setup work in one call each: record, submit and wait
-//! ([`Queue::submit_and_wait`]); an image-layout transition whose stages and accesses
-//! follow from its two layouts ([`Recorder::transition_image`]); and bytes uploaded
+//! ([`Queue::submit_and_wait`]); an image-layout transition that waits for what the
+//! recording did to the image, as the hazard tracker followed it, and blocks what
+//! its new layout is for ([`Recorder::transition_image`]); and bytes uploaded
 //! into an image through a staging buffer, with the transitions around the copy
 //! ([`Queue::upload_image`]).
 //!
@@ -47,7 +48,10 @@ impl Recorder<'_, Outside> {
         /// Moves every mip level and array layer of `aspect` of `image` from `old` to
         /// `new` with one pipeline barrier: the work that used it in `old` (none for
         /// `UNDEFINED`) finishes, and its writes are visible, before any work that uses
-        /// it in `new` starts.
+        /// it in `new` starts. The barrier waits for the recording's last accesses to
+        /// the image as the hazard tracker followed them (the copy that wrote it, the
+        /// draws that sampled it), and, where the recording has not touched every
+        /// subresource, for what `old` implies (any stage for `GENERAL`).
         ///
         /// `old` must be the layout the image is in when the command buffer runs; tuff
         /// follows every image's layouts and refuses the submission otherwise
@@ -77,7 +81,18 @@ impl Recorder<'_, Outside> {
             old: vk::ImageLayout,
             new: vk::ImageLayout,
         ) -> Result<()> {
-            let (src_stage, src_access) = layout_use(old);
+            let range = vk::ImageSubresourceRange {
+                aspect_mask: aspect,
+                base_mip_level: 0,
+                level_count: vk::REMAINING_MIP_LEVELS,
+                base_array_layer: 0,
+                layer_count: vk::REMAINING_ARRAY_LAYERS,
+            };
+            // What waits: the recording's last uses of the image as the hazard
+            // tracker followed them, else the uses its old layout implies.
+            let (src_stage, src_access) =
+                crate::special::hazards::source_scope(self, image, &range)
+                    .unwrap_or_else(|| layout_use(old));
             let (dst_stage, dst_access) = layout_use(new);
             let barrier = ImageMemoryBarrier::new(image)
                 .src_access_mask(src_access)
@@ -86,13 +101,7 @@ impl Recorder<'_, Outside> {
                 .new_layout(new)
                 .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
                 .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-                .subresource_range(vk::ImageSubresourceRange {
-                    aspect_mask: aspect,
-                    base_mip_level: 0,
-                    level_count: vk::REMAINING_MIP_LEVELS,
-                    base_array_layer: 0,
-                    layer_count: vk::REMAINING_ARRAY_LAYERS,
-                });
+                .subresource_range(range);
             #[allow(unused_unsafe)]
             // SAFETY: where `pipeline_barrier` is `unsafe`, so is this method, and
             // its caller upholds the rules of this barrier.

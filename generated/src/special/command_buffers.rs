@@ -356,4 +356,24 @@ impl CommandBuffer {
     pub fn device(&self) -> &Device {
         self.parent().parent()
     }
+
+    /// How many pipeline barriers automatic synchronization
+    /// ([`Recorder::auto_sync`]) recorded into the last recording that ended: what
+    /// it cost, and where a hand-written barrier could take over.
+    ///
+    /// ```no_run
+    /// # fn f(cb: &mut tuff::CommandBuffer, a: &tuff::Buffer, b: &tuff::Buffer) -> tuff::Result<()> {
+    /// let region = [tuff::vk::BufferCopy { src_offset: 0, dst_offset: 0, size: 64 }];
+    /// let mut rec = cb.begin(&tuff::CommandBufferBeginInfo::new())?;
+    /// rec.auto_sync(true);
+    /// rec.copy_buffer(a, b, &region)?;
+    /// rec.end()?;
+    /// // One before the copy (what earlier submissions did), one before the host
+    /// // reads `b`.
+    /// assert_eq!(cb.auto_barriers(), 2);
+    /// # Ok(()) }
+    /// ```
+    pub fn auto_barriers(&self) -> u32 {
+        self.uses().auto_barriers()
+    }
 }

@@ -138,101 +138,31 @@ fn needed(found: &[(Hazard, Memory)]) -> (u64, u64, u64, u64) {
     })
 }
 
-/// The first version's stages a second version's mask needs (the bits past 31 are
-/// the first version's meta stages split up).
-fn narrow_stages(mask: u64) -> vk::PipelineStageFlags {
-    type S1 = vk::PipelineStageFlags;
-    let low = S1::from_raw(mask as u32);
-    let high = mask >> 32;
-    let mut out = low;
-    // COPY, RESOLVE, BLIT, CLEAR: TRANSFER.
-    if high & 0xf != 0 {
-        out |= S1::TRANSFER;
-    }
-    // INDEX_INPUT, VERTEX_ATTRIBUTE_INPUT: VERTEX_INPUT.
-    if high & 0x30 != 0 {
-        out |= S1::VERTEX_INPUT;
-    }
-    if high & !0x3f != 0 {
-        out |= S1::ALL_COMMANDS;
-    }
-    out
-}
-
-/// The first version's access types a second version's mask needs.
-fn narrow_access(mask: u64) -> vk::AccessFlags {
-    type A1 = vk::AccessFlags;
-    let mut out = A1::from_raw(mask as u32);
-    let high = mask >> 32;
-    // SHADER_SAMPLED_READ, SHADER_STORAGE_READ: SHADER_READ.
-    if high & 0x3 != 0 {
-        out |= A1::SHADER_READ;
-    }
-    // SHADER_STORAGE_WRITE: SHADER_WRITE.
-    if high & 0x4 != 0 {
-        out |= A1::SHADER_WRITE;
-    }
-    if high & !0x7 != 0 {
-        out |= A1::MEMORY_READ | A1::MEMORY_WRITE;
-    }
-    out
-}
-
 /// Records one global memory barrier with these masks (synchronization2's where the
 /// device enabled it, else the first version's that cover them) and applies it to the
 /// tracker.
-fn order<S: Scope>(recorder: &mut Recorder<'_, S>, (ss, sa, ds, da): (u64, u64, u64, u64)) {
-    let live = recorder.device().live();
-    let sync2 = live.with_features(|f| f.v13.synchronization2) != vk::FALSE;
-    let fns = recorder.device().fns();
-    let raw = recorder.raw();
-    let recorded = if sync2 {
-        let m = [vk::MemoryBarrier2::default()
-            .src_stage_mask(vk::PipelineStageFlags2::from_raw(ss))
-            .src_access_mask(vk::AccessFlags2::from_raw(sa))
-            .dst_stage_mask(vk::PipelineStageFlags2::from_raw(ds))
-            .dst_access_mask(vk::AccessFlags2::from_raw(da))];
-        let info = vk::DependencyInfo::default().memory_barriers(&m);
-        // SAFETY: a recording command buffer outside a render pass instance (the
-        // caller's check), synchronization2 enabled (VUID-vkCmdPipelineBarrier2-synchronization2-03848);
-        // the stages and access types are those of commands the recording just
-        // recorded or is about to, so the queue family supports them and each access
-        // type belongs to its stage (VUID-VkMemoryBarrier2-srcAccessMask-03900...).
-        unsafe { (fns.fp_v1_3().cmd_pipeline_barrier2)(raw, &info) };
-        (ss, sa, ds, da)
-    } else {
-        let (ss1, sa1) = (narrow_stages(ss), narrow_access(sa));
-        let (ds1, da1) = (narrow_stages(ds), narrow_access(da));
-        let m = [vk::MemoryBarrier::default()
-            .src_access_mask(sa1)
-            .dst_access_mask(da1)];
-        // SAFETY: as above, in the first version's masks, which are not empty
-        // (VUID-vkCmdPipelineBarrier-srcStageMask-03937): every hazard has a stage on
-        // both sides.
-        unsafe {
-            (fns.fp_v1_0().cmd_pipeline_barrier)(
-                raw,
-                ss1,
-                ds1,
-                vk::DependencyFlags::empty(),
-                1,
-                m.as_ptr(),
-                0,
-                core::ptr::null(),
-                0,
-                core::ptr::null(),
-            )
-        };
-        (
-            u64::from(ss1.as_raw()),
-            u64::from(sa1.as_raw()),
-            u64::from(ds1.as_raw()),
-            u64::from(da1.as_raw()),
-        )
-    };
-    let (_, hazards) = recorder.hazards_mut();
-    hazards.next("a barrier tuff recorded");
-    hazards.apply_global(&[Barrier::new(recorded.0, recorded.1, recorded.2, recorded.3)]);
+fn order<S: Scope>(recorder: &mut Recorder<'_, S>, masks: (u64, u64, u64, u64)) {
+    recorder.record_memory_barrier(masks);
+}
+
+/// The first scope of a barrier out of `image`'s subresources `range` (the first
+/// version's masks): the accesses the recording made to them last, when the tracker
+/// followed every one ([`crate::state::hazards::Recording::last_uses`]).
+pub(crate) fn source_scope<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    image: &Image,
+    range: &vk::ImageSubresourceRange,
+) -> Option<(vk::PipelineStageFlags, vk::AccessFlags)> {
+    if UNTRACKED {
+        return None;
+    }
+    let (stages, access) = recorder
+        .hazards
+        .last_uses(image.raw(), &Sel::range(range))?;
+    Some((
+        crate::state::hazards::narrow_stages(stages),
+        crate::state::hazards::narrow_access(access),
+    ))
 }
 
 /// A buffer range from an offset and a size (`VK_WHOLE_SIZE`: to the end).

@@ -54,6 +54,8 @@ struct UsesState {
     /// What the last recording did to memory, for its submissions to replay; `None`
     /// while recording, or when it did nothing the hazard tracker saw.
     hazards: Option<Vrc<Vec<crate::state::hazards::Event>>>,
+    /// How many barriers automatic synchronization recorded into the last recording.
+    auto_barriers: u32,
     /// The descriptor sets the last recording bound, each with its generation then.
     sets: Vec<(u64, u64)>,
     /// The queue family of the buffer's pool and whether the pool is protected, as
@@ -288,6 +290,18 @@ impl Uses {
         self.state.lock().hazards = (!log.is_empty()).then(|| Vrc::new(log));
     }
 
+    /// How many barriers automatic synchronization recorded into the recording
+    /// that just ended.
+    pub(crate) fn set_auto_barriers(&self, n: u32) {
+        self.state.lock().auto_barriers = n;
+    }
+
+    /// How many barriers automatic synchronization recorded into the last
+    /// recording.
+    pub(crate) fn auto_barriers(&self) -> u32 {
+        self.state.lock().auto_barriers
+    }
+
     /// What the last recording did to memory, if anything the tracker saw.
     pub(crate) fn hazards(&self) -> Option<Vrc<Vec<crate::state::hazards::Event>>> {
         self.state.lock().hazards.clone()
@@ -297,7 +311,11 @@ impl Uses {
     /// allocating again (a new one when a submission check still holds it). The
     /// last recording is over: a new one begins.
     pub(crate) fn spare_log(&self) -> Vec<crate::state::hazards::Event> {
-        let taken = self.state.lock().hazards.take();
+        let taken = {
+            let mut state = self.state.lock();
+            state.auto_barriers = 0;
+            state.hazards.take()
+        };
         let mut log = taken
             .and_then(|log| Vrc::try_unwrap(log).ok())
             .unwrap_or_default();

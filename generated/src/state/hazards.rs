@@ -142,6 +142,46 @@ impl DrawKey {
     }
 }
 
+/// The first version's stages a second version's mask needs (the bits past 31 are
+/// the first version's meta stages split up).
+pub(crate) fn narrow_stages(mask: u64) -> vk::PipelineStageFlags {
+    type S1 = vk::PipelineStageFlags;
+    let low = S1::from_raw(mask as u32);
+    let high = mask >> 32;
+    let mut out = low;
+    // COPY, RESOLVE, BLIT, CLEAR: TRANSFER.
+    if high & 0xf != 0 {
+        out |= S1::TRANSFER;
+    }
+    // INDEX_INPUT, VERTEX_ATTRIBUTE_INPUT: VERTEX_INPUT.
+    if high & 0x30 != 0 {
+        out |= S1::VERTEX_INPUT;
+    }
+    if high & !0x3f != 0 {
+        out |= S1::ALL_COMMANDS;
+    }
+    out
+}
+
+/// The first version's access types a second version's mask needs.
+pub(crate) fn narrow_access(mask: u64) -> vk::AccessFlags {
+    type A1 = vk::AccessFlags;
+    let mut out = A1::from_raw(mask as u32);
+    let high = mask >> 32;
+    // SHADER_SAMPLED_READ, SHADER_STORAGE_READ: SHADER_READ.
+    if high & 0x3 != 0 {
+        out |= A1::SHADER_READ;
+    }
+    // SHADER_STORAGE_WRITE: SHADER_WRITE.
+    if high & 0x4 != 0 {
+        out |= A1::SHADER_WRITE;
+    }
+    if high & !0x7 != 0 {
+        out |= A1::MEMORY_READ | A1::MEMORY_WRITE;
+    }
+    out
+}
+
 /// A command of the recording, for the messages: its name and its number.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Cmd {
@@ -654,6 +694,11 @@ pub(crate) struct Recording {
     /// The stages and access types of every write recorded since automatic
     /// synchronization last made them visible to a render pass instance's commands.
     pub(crate) pending: (u64, u64),
+    /// The stages and access types of every buffer write the recording made, for
+    /// automatic synchronization to make visible to the host at its end.
+    pub(crate) buffer_writes: (u64, u64),
+    /// How many barriers automatic synchronization recorded.
+    pub(crate) auto_barriers: u32,
     /// The parameters of the last draw whose reads were recorded, with the
     /// generation after it.
     last_draw: (DrawKey, u64),
@@ -799,6 +844,30 @@ impl Recording {
         }
     }
 
+    /// The stages and access types a barrier out of `image`'s subresources `sel`
+    /// waits for: of each subresource, its last write (stage and access type) and the
+    /// reads since (stages: after a read an execution dependency is enough). `None`
+    /// when the recording has not touched one of them, or last transitioned it:
+    /// what came before is then not known here.
+    pub(crate) fn last_uses(&self, image: vk::Image, sel: &Sel) -> Option<(u64, u64)> {
+        let sub = self.images.get(&image.as_raw())?;
+        let (mut stages, mut access) = (0, 0);
+        for k in sub.shape.indices(sel) {
+            let st = &sub.states[k];
+            match &st.write {
+                Some(w) if w.usage.stage == 0 => return None,
+                Some(w) => {
+                    stages |= w.usage.stage;
+                    access |= w.usage.access;
+                }
+                None if st.reads.is_empty() => return None,
+                None => {}
+            }
+            stages = st.reads.iter().fold(stages, |m, r| m | r.usage.stage);
+        }
+        (stages != 0).then_some((stages, access))
+    }
+
     /// Records an access to `memory`.
     pub(crate) fn record(&mut self, live: &Live, memory: &Memory, u: Usage) {
         self.record_as(live, memory, u, true);
@@ -821,6 +890,10 @@ impl Recording {
         }
         match memory {
             Memory::Buffer(b, s, e) => {
+                if u.write {
+                    self.buffer_writes.0 |= u.stage;
+                    self.buffer_writes.1 |= u.access;
+                }
                 if s < e {
                     for st in self.buffers.entry(b.as_raw()).or_default().cover(*s, *e) {
                         st.record(u, EVERY_TEXEL);

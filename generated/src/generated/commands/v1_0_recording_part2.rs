@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, Outside> {
 
 # Example
 
-Called, as `examples/src/render.rs` (line 268) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 273) does; the example programs run in CI:
 
 ```ignore
 let mut rec = rec.begin_render_pass(
@@ -975,7 +975,7 @@ The caller upholds the rules that [`Self::copy_image`] checks at run time: `VUID
 
 # Example
 
-Called, as `examples/src/render.rs` (line 294) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 300) does; the example programs run in CI:
 
 ```ignore
 rec.copy_image_to_buffer(

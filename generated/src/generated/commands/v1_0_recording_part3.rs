@@ -399,7 +399,7 @@ The caller upholds the rules that [`Self::bind_vertex_buffers`] checks at run ti
 
 # Example
 
-Called, as `examples/src/scenes/deferred.rs` (line 372) does; the example programs run in CI:
+Called, as `examples/src/scenes/deferred.rs` (line 373) does; the example programs run in CI:
 
 ```ignore
 rec.execute_commands(&tuff::HandleSlice::new(&secondaries))?;
@@ -822,7 +822,7 @@ The caller upholds the rules that [`Self::set_line_width`] checks at run time: `
 
 # Example
 
-Called, as `examples/src/render.rs` (line 276) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 281) does; the example programs run in CI:
 
 ```ignore
 rec.set_scissor(0, &[area])?;
@@ -1047,7 +1047,7 @@ The caller upholds the rules that [`Self::set_stencil_write_mask`] checks at run
 
 # Example
 
-Called, as `examples/src/render.rs` (line 275) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 280) does; the example programs run in CI:
 
 ```ignore
 rec.set_viewport(0, &[viewport(view.extent)])?;

@@ -79,7 +79,7 @@ The caller upholds the rules that [`Self::clear_attachments`] checks at run time
 
 # Example
 
-Called, as `examples/src/scenes/deferred.rs` (line 384) does; the example programs run in CI:
+Called, as `examples/src/scenes/deferred.rs` (line 385) does; the example programs run in CI:
 
 ```ignore
 rec.draw(3, 1, 0, 0)?;

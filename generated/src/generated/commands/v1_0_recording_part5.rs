@@ -7,7 +7,7 @@ impl<'c> Recorder<'c, InRenderPass> {
 
 # Example
 
-Called, as `examples/src/render.rs` (line 278) does; the example programs run in CI:
+Called, as `examples/src/render.rs` (line 283) does; the example programs run in CI:
 
 ```ignore
 let mut rec = rec.end_render_pass();
@@ -67,7 +67,7 @@ The caller upholds the rules that [`Self::end_render_pass`] checks at run time: 
 
 # Example
 
-Called, as `examples/src/scenes/deferred.rs` (line 373) does; the example programs run in CI:
+Called, as `examples/src/scenes/deferred.rs` (line 374) does; the example programs run in CI:
 
 ```ignore
 rec.next_subpass(vk::SubpassContents::INLINE);

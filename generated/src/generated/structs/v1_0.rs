@@ -333,7 +333,7 @@ impl<'a> BufferCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 310) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 319) does; the example programs run in CI:
 
 ```ignore
 // A fence wait does not make device writes visible to the host; this does.

@@ -1190,7 +1190,7 @@ impl<'a> QueryPoolCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/render.rs` (line 269) does; the example programs run in CI:
+Made, as `examples/src/render.rs` (line 274) does; the example programs run in CI:
 
 ```ignore
 let mut rec = rec.begin_render_pass(
