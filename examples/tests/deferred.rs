@@ -42,10 +42,12 @@ fn deferred_matches_its_golden_image_with_one_and_four_workers_and_in_raw_ash() 
     }
 }
 
-/// With automatic synchronization (`--auto-sync`) the primary has no barrier
-/// written by hand, not even the one before the host reads the image (tuff records
-/// it at the recording's end): the same image, byte for byte, and the layer with
-/// synchronization validation says nothing.
+/// With automatic synchronization (`--auto-sync`) the frame has no synchronization
+/// written by hand: no barrier in the primary, not even the one before the host
+/// reads the image (tuff records it at the recording's end), and the render pass's
+/// subpass dependencies are those `RenderPassCreateInfo::needed_dependencies`
+/// derives: the same image, byte for byte, and the layer with synchronization
+/// validation says nothing.
 #[test]
 fn deferred_with_automatic_synchronization_renders_the_same_image() {
     let binary = env!("CARGO_BIN_EXE_deferred");

@@ -398,7 +398,8 @@ impl Deferred {
 }
 
 /// The render pass: four attachments, the G-buffer subpass and the lighting
-/// subpass (`deferred_data` describes both).
+/// subpass (`deferred_data` describes both), with the dependencies written by hand,
+/// or with automatic synchronization those tuff derives.
 fn render_pass(gpu: &Gpu) -> Result<tuff::RenderPass> {
     let attachments = data::attachments(COLOR_FORMAT);
     let subpasses = [
@@ -411,13 +412,18 @@ fn render_pass(gpu: &Gpu) -> Result<tuff::RenderPass> {
             .input_attachments(&LIGHTING_INPUTS)
             .color_attachments(&LIGHTING_COLOR),
     ];
-    let dependencies = data::dependencies();
-    Ok(gpu.device.create_render_pass(
-        &tuff::RenderPassCreateInfo::new()
-            .attachments(&attachments)
-            .subpasses(&subpasses)
-            .dependencies(&dependencies),
-    )?)
+    let info = tuff::RenderPassCreateInfo::new()
+        .attachments(&attachments)
+        .subpasses(&subpasses);
+    // With automatic synchronization, tuff derives the dependencies from how the
+    // subpasses use the attachments; otherwise they are written by hand.
+    let dependencies = match crate::render::auto_sync() {
+        true => info.needed_dependencies(),
+        false => data::dependencies().to_vec(),
+    };
+    Ok(gpu
+        .device
+        .create_render_pass(&info.dependencies(&dependencies))?)
 }
 
 /// Renders `frames` frames (at least one) of `layout` at `extent` with `threads`

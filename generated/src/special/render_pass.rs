@@ -390,7 +390,7 @@ macro_rules! subpasses {
 
 impl Pass {
     /// Reads `vkCreateRenderPass`'s create info.
-    fn of(create_info: &RenderPassCreateInfo<'_>) -> Pass {
+    pub(super) fn of(create_info: &RenderPassCreateInfo<'_>) -> Pass {
         let raw = create_info.as_raw();
         // SAFETY: the safe setters store each array with its count, resolve
         // attachments one per color attachment; a depth/stencil reference outlives

@@ -4,6 +4,7 @@
 use super::refuse;
 use super::render_pass::{multiview_view_count, Pass, Rule};
 use crate::handles::*;
+use crate::structs::RenderPassCreateInfo;
 use crate::Result;
 use ash::vk;
 
@@ -317,13 +318,11 @@ fn attachment_uses(pass: &Pass, a: u32) -> Vec<AttachmentUse> {
     uses
 }
 
-/// A later subpass that reads or writes an attachment an earlier one wrote (or
-/// writes one it read) needs a subpass dependency between them that orders the two
-/// uses: without one the subpasses may run in any order, or at once. A path through
-/// other subpasses' dependencies counts (its masks are not compared), so no correct
-/// render pass is refused. The error names the hazard as the validation layer's
-/// synchronization validation reports it when the render pass runs.
-pub(super) fn subpass_hazard_checks(pass: &Pass) -> Result<()> {
+/// The pairs of uses of one attachment by two subpasses, one of which writes, that
+/// no subpass dependency orders: neither one between the two whose scopes hold
+/// both uses, nor a chain of dependencies through the subpasses between (its masks
+/// are not compared, so no correct render pass is found wanting).
+fn unordered(pass: &Pass) -> Vec<(u32, AttachmentUse, AttachmentUse)> {
     use crate::state::hazards::Barrier;
     let external = vk::SUBPASS_EXTERNAL;
     let linked = |from: u32, to: u32| -> bool {
@@ -342,6 +341,7 @@ pub(super) fn subpass_hazard_checks(pass: &Pass) -> Result<()> {
         }
         reached.contains(&to)
     };
+    let mut found = Vec::new();
     for a in 0..pass.attachments.len() as u32 {
         let uses = attachment_uses(pass, a);
         for pair in uses.windows(2) {
@@ -367,29 +367,176 @@ pub(super) fn subpass_hazard_checks(pass: &Pass) -> Result<()> {
                 });
             let (b, e) = (before.subpass, after.subpass);
             let chained = (b + 1..e).any(|k| linked(b, k) && linked(k, e));
-            if ordered || chained {
-                continue;
+            if !ordered && !chained {
+                found.push((a, before, after));
             }
-            let kind = match (before.write, after.write) {
-                (true, true) => "SYNC-HAZARD-WRITE-AFTER-WRITE",
-                // A layout transition between them writes.
-                (true, false) if before.layout != after.layout => "SYNC-HAZARD-WRITE-AFTER-WRITE",
-                (true, false) => "SYNC-HAZARD-READ-AFTER-WRITE",
-                _ => "SYNC-HAZARD-WRITE-AFTER-READ",
-            };
-            let fix = if before.write {
-                "a dependency from the stage that writes it, with its access type, to the stage and access type that use it"
-            } else {
-                "a dependency from the stage that reads it to the stage that writes it"
-            };
-            refuse(
-                kind,
-                format!(
-                    "pSubpasses[{}] uses attachment {a} as {} after pSubpasses[{}] uses it as {}, and no subpass dependency from {} to {} orders the two: it needs {fix}",
-                    after.subpass, after.what, before.subpass, before.what, before.subpass, after.subpass
-                ),
-            )?;
         }
     }
+    found
+}
+
+/// A later subpass that reads or writes an attachment an earlier one wrote (or
+/// writes one it read) needs a subpass dependency between them that orders the two
+/// uses: without one the subpasses may run in any order, or at once. A path through
+/// other subpasses' dependencies counts (its masks are not compared), so no correct
+/// render pass is refused. The error names the hazard as the validation layer's
+/// synchronization validation reports it when the render pass runs.
+pub(super) fn subpass_hazard_checks(pass: &Pass) -> Result<()> {
+    if let Some((a, before, after)) = unordered(pass).first() {
+        let kind = match (before.write, after.write) {
+            (true, true) => "SYNC-HAZARD-WRITE-AFTER-WRITE",
+            // A layout transition between them writes.
+            (true, false) if before.layout != after.layout => "SYNC-HAZARD-WRITE-AFTER-WRITE",
+            (true, false) => "SYNC-HAZARD-READ-AFTER-WRITE",
+            _ => "SYNC-HAZARD-WRITE-AFTER-READ",
+        };
+        let fix = if before.write {
+            "a dependency from the stage that writes it, with its access type, to the stage and access type that use it"
+        } else {
+            "a dependency from the stage that reads it to the stage that writes it"
+        };
+        refuse(
+            kind,
+            format!(
+                "pSubpasses[{}] uses attachment {a} as {} after pSubpasses[{}] uses it as {}, and no subpass dependency from {} to {} orders the two: it needs {fix} (`RenderPassCreateInfo::needed_dependencies` adds it)",
+                after.subpass, after.what, before.subpass, before.what, before.subpass, after.subpass
+            ),
+        )?;
+    }
     Ok(())
+}
+
+impl RenderPassCreateInfo<'_> {
+    /// The subpass dependencies the render pass needs: its own, one for each pair of
+    /// subpasses that use an attachment in turn, one of them writing, that none of
+    /// its own orders (from the earlier use's stage and access type to the later
+    /// one's, by region: what [`Device::create_render_pass`] refuses without), and
+    /// for each subpass that uses an attachment first or last with no dependency
+    /// with the outside, one from every command before the render pass instance, or
+    /// to every command after it. The masks are those of the uses, so the
+    /// dependencies are as narrow as the attachments allow; what comes before and
+    /// after the instance is not known here, so the outside's side is every
+    /// command. Pass them back with `dependencies`:
+    ///
+    /// ```no_run
+    /// # fn f(device: &tuff::Device, attachments: &[tuff::vk::AttachmentDescription], subpasses: &[tuff::SubpassDescription<'_>]) -> tuff::Result<()> {
+    /// let info = tuff::RenderPassCreateInfo::new()
+    ///     .attachments(attachments)
+    ///     .subpasses(subpasses);
+    /// let dependencies = info.needed_dependencies();
+    /// let render_pass = device.create_render_pass(&info.dependencies(&dependencies))?;
+    /// # Ok(()) }
+    /// ```
+    pub fn needed_dependencies(&self) -> Vec<vk::SubpassDependency> {
+        needed_dependencies(&Pass::of(self))
+    }
+}
+
+/// [`RenderPassCreateInfo::needed_dependencies`] of a render pass read.
+fn needed_dependencies(pass: &Pass) -> Vec<vk::SubpassDependency> {
+    use vk::{AccessFlags as A, PipelineStageFlags as P};
+    let external = vk::SUBPASS_EXTERNAL;
+    let mut out: Vec<vk::SubpassDependency> = pass
+        .dependencies
+        .iter()
+        .map(|d| vk::SubpassDependency {
+            src_subpass: d.subpasses.0,
+            dst_subpass: d.subpasses.1,
+            src_stage_mask: d.stages.0,
+            dst_stage_mask: d.stages.1,
+            src_access_mask: d.access.0,
+            dst_access_mask: d.access.1,
+            dependency_flags: d.flags,
+        })
+        .collect();
+    let own = out.len();
+    // One dependency per pair of subpasses: a second need widens the first.
+    let add = |out: &mut Vec<vk::SubpassDependency>, d: vk::SubpassDependency| match out[own..]
+        .iter_mut()
+        .find(|o| (o.src_subpass, o.dst_subpass) == (d.src_subpass, d.dst_subpass))
+    {
+        Some(o) => {
+            o.src_stage_mask |= d.src_stage_mask;
+            o.dst_stage_mask |= d.dst_stage_mask;
+            o.src_access_mask |= d.src_access_mask;
+            o.dst_access_mask |= d.dst_access_mask;
+            o.dependency_flags &= d.dependency_flags;
+        }
+        None => out.push(d),
+    };
+    let stages = |m: u64| P::from_raw(m as u32);
+    let access = |m: u64| A::from_raw(m as u32);
+    for (_, before, after) in unordered(pass) {
+        let (src_access, dst_access) = match before.write {
+            true => (access(before.access), access(after.access)),
+            // After a read, an execution dependency is enough.
+            false => (A::empty(), A::empty()),
+        };
+        add(
+            &mut out,
+            vk::SubpassDependency {
+                src_subpass: before.subpass,
+                dst_subpass: after.subpass,
+                src_stage_mask: stages(before.done_at),
+                dst_stage_mask: stages(after.starts_at),
+                src_access_mask: src_access,
+                dst_access_mask: dst_access,
+                dependency_flags: vk::DependencyFlags::BY_REGION,
+            },
+        );
+    }
+    let has = |src: u32, dst: u32| pass.dependencies.iter().any(|d| d.subpasses == (src, dst));
+    for a in 0..pass.attachments.len() as u32 {
+        let uses = attachment_uses(pass, a);
+        let (Some(first), Some(last)) = (uses.first(), uses.last()) else {
+            continue;
+        };
+        // The load operation and layout transition at the first use, the store
+        // operation and final transition at the last: each reads or writes the
+        // attachment as its kind (color or depth/stencil) does.
+        let depth = uses.iter().any(|u| u.what.contains("depth"));
+        let (read_write, store) = match depth {
+            true => (
+                A::DEPTH_STENCIL_ATTACHMENT_READ | A::DEPTH_STENCIL_ATTACHMENT_WRITE,
+                (P::LATE_FRAGMENT_TESTS, A::DEPTH_STENCIL_ATTACHMENT_WRITE),
+            ),
+            false => (
+                A::COLOR_ATTACHMENT_READ | A::COLOR_ATTACHMENT_WRITE,
+                (P::COLOR_ATTACHMENT_OUTPUT, A::COLOR_ATTACHMENT_WRITE),
+            ),
+        };
+        let load_stage = match depth {
+            true => P::EARLY_FRAGMENT_TESTS | P::LATE_FRAGMENT_TESTS,
+            false => P::COLOR_ATTACHMENT_OUTPUT,
+        };
+        if !has(external, first.subpass) {
+            add(
+                &mut out,
+                vk::SubpassDependency {
+                    src_subpass: external,
+                    dst_subpass: first.subpass,
+                    src_stage_mask: P::ALL_COMMANDS,
+                    dst_stage_mask: load_stage | stages(first.starts_at),
+                    src_access_mask: A::MEMORY_WRITE,
+                    dst_access_mask: read_write | access(first.access),
+                    dependency_flags: vk::DependencyFlags::empty(),
+                },
+            );
+        }
+        if !has(last.subpass, external) {
+            add(
+                &mut out,
+                vk::SubpassDependency {
+                    src_subpass: last.subpass,
+                    dst_subpass: external,
+                    src_stage_mask: store.0 | stages(last.done_at),
+                    dst_stage_mask: P::ALL_COMMANDS,
+                    src_access_mask: store.1,
+                    dst_access_mask: A::MEMORY_READ | A::MEMORY_WRITE,
+                    dependency_flags: vk::DependencyFlags::empty(),
+                },
+            );
+        }
+    }
+    out
 }
