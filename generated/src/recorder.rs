@@ -501,7 +501,7 @@ impl<'c> Recorder<'c, Outside> {
         device_mask: u32,
     ) -> Self {
         let queue_flags = cb.parent().queue_flags();
-        let log = cb.uses().spare_log();
+        let hazards = cb.uses().spare_recording();
         Recorder {
             device: cb.device().clone(),
             raw: cb.raw(),
@@ -521,7 +521,7 @@ impl<'c> Recorder<'c, Outside> {
             query_types: Vec::new(),
             suspends: false,
             layouts: Default::default(),
-            hazards: crate::state::hazards::Recording::with_log(log),
+            hazards,
             query_states: Default::default(),
             event_states: Default::default(),
             pass_images: Vec::new(),
@@ -882,6 +882,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         self.cb.uses().set_layouts(self.layouts);
         self.cb.uses().set_hazards(self.hazards.take_log());
         self.cb.uses().set_auto_barriers(self.hazards.auto_barriers);
+        self.cb.uses().set_spare(core::mem::take(&mut self.hazards));
         self.cb.uses().set_queries(self.query_states);
         self.cb.uses().set_event_states(self.event_states);
         self.cb

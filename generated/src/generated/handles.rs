@@ -1575,7 +1575,7 @@ struct DeviceInner {
     fns: ash::Device,
     ext: DeviceExtensions,
     command_buffers: Vutex<
-        std::collections::HashMap<vk::CommandBuffer, Vrc<crate::state::Uses>>,
+        rustc_hash::FxHashMap<vk::CommandBuffer, Vrc<crate::state::Uses>>,
     >,
     live: crate::state::Live,
     exts: crate::checks::Exts,

@@ -56,6 +56,9 @@ struct UsesState {
     hazards: Option<Vrc<Vec<crate::state::hazards::Event>>>,
     /// How many barriers automatic synchronization recorded into the last recording.
     auto_barriers: u32,
+    /// The last recording's hazard tracker, emptied, for the next one to fill
+    /// without allocating its tables again.
+    spare: Option<crate::state::hazards::Recording>,
     /// The descriptor sets the last recording bound, each with its generation then.
     sets: Vec<(u64, u64)>,
     /// The queue family of the buffer's pool and whether the pool is protected, as
@@ -307,20 +310,25 @@ impl Uses {
         self.state.lock().hazards.clone()
     }
 
-    /// The last recording's log, emptied, for the next recording to fill without
-    /// allocating again (a new one when a submission check still holds it). The
-    /// last recording is over: a new one begins.
-    pub(crate) fn spare_log(&self) -> Vec<crate::state::hazards::Event> {
-        let taken = {
+    /// What the recording that just ended left of its hazard tracker (its tables,
+    /// to be emptied and filled again by the next recording).
+    pub(crate) fn set_spare(&self, spare: crate::state::hazards::Recording) {
+        self.state.lock().spare = Some(spare);
+    }
+
+    /// An empty hazard tracker for a new recording, in the last recording's
+    /// allocations where it can (its log, unless a submission check still holds
+    /// it, and its tables). The last recording is over: a new one begins.
+    pub(crate) fn spare_recording(&self) -> crate::state::hazards::Recording {
+        let (taken, spare) = {
             let mut state = self.state.lock();
             state.auto_barriers = 0;
-            state.hazards.take()
+            (state.hazards.take(), state.spare.take())
         };
-        let mut log = taken
+        let log = taken
             .and_then(|log| Vrc::try_unwrap(log).ok())
             .unwrap_or_default();
-        log.clear();
-        log
+        spare.unwrap_or_default().recycled(log)
     }
 
     /// The image layouts the last recording needs at its start and leaves.

@@ -727,9 +727,53 @@ pub(crate) enum Event {
 }
 
 impl Recording {
-    /// A recording that logs into `log` (emptied; its capacity is kept).
-    pub(crate) fn with_log(log: Vec<Event>) -> Self {
+    /// Becomes a copy of `o` in its own allocations (a queue's state, copied for
+    /// each submission's check).
+    fn copy_of(&mut self, o: &Recording) {
+        // Every field named: a new one is copied here too, or the build fails.
+        let Recording {
+            buffers,
+            images,
+            commands,
+            auto,
+            generation,
+            drawn,
+            pending,
+            buffer_writes,
+            auto_barriers,
+            last_draw,
+            started,
+            log,
+            unlogged,
+        } = o;
+        self.buffers.clone_from(buffers);
+        self.images.clone_from(images);
+        self.drawn.0.clone_from(&drawn.0);
+        self.drawn.1 = drawn.1;
+        self.log.clone_from(log);
+        (self.commands, self.auto, self.generation) = (*commands, *auto, *generation);
+        (self.pending, self.buffer_writes) = (*pending, *buffer_writes);
+        (self.auto_barriers, self.last_draw) = (*auto_barriers, *last_draw);
+        (self.started, self.unlogged) = (*started, *unlogged);
+    }
+
+    /// This recording emptied for a new one that logs into `log`: its tables and
+    /// the log keep their allocations.
+    pub(crate) fn recycled(self, mut log: Vec<Event>) -> Self {
+        let Recording {
+            mut buffers,
+            mut images,
+            drawn: (mut drawn, _),
+            ..
+        } = self;
+        buffers.clear();
+        images.clear();
+        drawn.clear();
+        log.clear();
         Recording {
+            buffers,
+            images,
+            drawn: (drawn, 0),
             log,
             ..Default::default()
         }
@@ -1091,6 +1135,9 @@ pub(crate) struct QueueHazards {
     /// The state a checked submission leaves, with its number and command buffers,
     /// until it is made.
     staged: Option<(Recording, u32, Vec<vk::CommandBuffer>)>,
+    /// The state before the last submission made, whose allocations the next
+    /// submission's copy reuses.
+    scratch: Recording,
 }
 
 impl QueueHazards {
@@ -1103,7 +1150,9 @@ impl QueueHazards {
         self.state.prune(|n| !live.contains(&n));
         self.state.unlogged = true;
         self.next += 1;
-        (self.state.clone(), self.next)
+        let mut copy = core::mem::take(&mut self.scratch);
+        copy.copy_of(&self.state);
+        (copy, self.next)
     }
 
     /// The state a checked submission of `cbs` leaves, kept until it is made.
@@ -1117,7 +1166,7 @@ impl QueueHazards {
     pub(crate) fn made(&mut self, sub: &Vrc<crate::state::Submission>, cbs: &[vk::CommandBuffer]) {
         match self.staged.take() {
             Some((state, number, checked)) if checked == cbs => {
-                self.state = state;
+                self.scratch = core::mem::replace(&mut self.state, state);
                 self.subs.push((number, Vrc::downgrade(sub)));
             }
             _ => {}

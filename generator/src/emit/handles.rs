@@ -268,7 +268,7 @@ fn emit_device(cx: &Context) -> TokenStream {
             physical: PhysicalDevice,
             fns: ash::Device,
             ext: DeviceExtensions,
-            command_buffers: Vutex<std::collections::HashMap<vk::CommandBuffer, Vrc<crate::state::Uses>>>,
+            command_buffers: Vutex<rustc_hash::FxHashMap<vk::CommandBuffer, Vrc<crate::state::Uses>>>,
             live: crate::state::Live,
             exts: crate::checks::Exts,
             objects: crate::validation::Objects,
