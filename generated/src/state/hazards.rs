@@ -663,15 +663,21 @@ impl Memory {
     pub(crate) fn describe(&self) -> String {
         match self {
             Memory::Buffer(b, s, e) => format!("bytes {s}..{e} of buffer 0x{:x}", b.as_raw()),
-            Memory::Image(i, sel, _) => format!(
-                "{:?} of mip levels {}..{}, array layers {}..{} of image 0x{:x}",
-                sel.aspect,
-                sel.mips.0,
-                sel.mips.1,
-                sel.layers.0,
-                sel.layers.1,
-                i.as_raw()
-            ),
+            Memory::Image(i, sel, _) => {
+                // A range to VK_REMAINING_* reaches the image's end, whatever it is.
+                let span = |(start, end): (u32, u32), what: &str| match (start, end) {
+                    (0, u32::MAX) => format!("every {what}"),
+                    (start, u32::MAX) => format!("{what}s {start}.."),
+                    (start, end) => format!("{what}s {start}..{end}"),
+                };
+                format!(
+                    "{:?} of {}, {} of image 0x{:x}",
+                    sel.aspect,
+                    span(sel.mips, "mip level"),
+                    span(sel.layers, "array layer"),
+                    i.as_raw()
+                )
+            }
         }
     }
 }
