@@ -866,6 +866,22 @@ pub(crate) struct Region {
     pub extent: vk::Extent3D,
 }
 
+impl Region {
+    /// The end of the buffer bytes the region reaches, for an image of `format`
+    /// (`None` where the region's numbers overflow, which another rule refuses).
+    pub(crate) fn buffer_end(&self, format: vk::Format) -> Option<u64> {
+        buffer_image_end(
+            format,
+            self.subresource.aspect_mask,
+            self.offset,
+            self.row_length,
+            self.image_height,
+            self.extent,
+            self.subresource.layer_count,
+        )
+    }
+}
+
 impl From<&vk::BufferImageCopy> for Region {
     fn from(r: &vk::BufferImageCopy) -> Self {
         Region {
@@ -1210,15 +1226,7 @@ pub(crate) fn check_overlap(
         return Ok(());
     }
     for (n, r) in regions.iter().enumerate() {
-        let Some(end) = buffer_image_end(
-            record.format,
-            r.subresource.aspect_mask,
-            r.offset,
-            r.row_length,
-            r.image_height,
-            r.extent,
-            r.subresource.layer_count,
-        ) else {
+        let Some(end) = r.buffer_end(record.format) else {
             continue;
         };
         let (start, end) = (boff.saturating_add(r.offset), boff.saturating_add(end));

@@ -571,16 +571,7 @@ fn buffer_side(
     };
     regions
         .map(|r| {
-            let end = crate::special::copies::buffer_image_end(
-                record.format,
-                r.subresource.aspect_mask,
-                r.offset,
-                r.row_length,
-                r.image_height,
-                r.extent,
-                r.subresource.layer_count,
-            )
-            .unwrap_or(u64::MAX);
+            let end = r.buffer_end(record.format).unwrap_or(u64::MAX);
             Memory::Buffer(buffer, r.offset, end)
         })
         .collect()
@@ -603,12 +594,11 @@ fn buffer_image<S: Scope>(
             .map(|m| (m, buffer_use))
             .collect();
     list.extend(regions.iter().map(|r| {
-        let sel = Sel::layers(&r.subresource);
-        let e = r.extent;
-        let o = r.image_offset;
-        let axis = |o: i32, e: u32| (i64::from(o), i64::from(o) + i64::from(e));
-        let texels = [axis(o.x, e.width), axis(o.y, e.height), axis(o.z, e.depth)];
-        (Memory::Image(image, sel, texels), image_use)
+        let texels = crate::special::image_layouts::boxed(r.image_offset, r.extent);
+        (
+            Memory::Image(image, Sel::layers(&r.subresource), texels),
+            image_use,
+        )
     }));
     touch(recorder, facts.name, &list)
 }

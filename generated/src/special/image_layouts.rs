@@ -227,7 +227,7 @@ pub(crate) struct Sides {
 }
 
 /// The texels of a region from its offset and extent.
-fn boxed(o: vk::Offset3D, e: vk::Extent3D) -> Texels {
+pub(crate) fn boxed(o: vk::Offset3D, e: vk::Extent3D) -> Texels {
     let axis = |o: i32, e: u32| (i64::from(o), i64::from(o) + i64::from(e));
     [axis(o.x, e.width), axis(o.y, e.height), axis(o.z, e.depth)]
 }
