@@ -1764,3 +1764,46 @@ fn transition_image_waits_for_what_the_recording_did_to_the_image() {
     s.submit_wait(&cb);
     assert_silent(&s.messages);
 }
+
+/// With automatic synchronization, a copy that names a transfer layout the
+/// recording left the image out of gets the layout transition before it: the copy
+/// out after an upload needs no hand-written transition (one barrier orders what came
+/// before the recording, one moves the image to TRANSFER_SRC_OPTIMAL after the
+/// upload, one makes the buffer's bytes visible to the host), and the layer says
+/// nothing. Checked, the same program is refused for its layout. A copy whose region
+/// reaches past the image's layers is refused by its own checks with no transition recorded
+/// (the layer would report one over subresources the image does not have).
+#[test]
+fn automatic_synchronization_moves_an_image_to_the_layout_a_copy_names() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let color = vk::ImageAspectFlags::COLOR;
+    let program = |rec: &mut Rec<'_>| -> tuff::Result<()> {
+        rec.transition_image(&o.image, color, L::UNDEFINED, L::TRANSFER_DST_OPTIMAL)?;
+        rec.copy_buffer_to_image(&o.a, &o.image, L::TRANSFER_DST_OPTIMAL, &texels())?;
+        rec.copy_image_to_buffer(&o.image, L::TRANSFER_SRC_OPTIMAL, &o.c, &texels())
+    };
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    let e = program(&mut rec).expect_err("checked: the image is in TRANSFER_DST_OPTIMAL");
+    assert!(e.to_string().contains("TRANSFER_DST_OPTIMAL"), "{e}");
+    let _ = rec.end();
+    assert_silent(&s.messages);
+
+    let mut rec = cb
+        .begin(&tuff::CommandBufferBeginInfo::new())
+        .expect("begin");
+    rec.auto_sync(true);
+    program(&mut rec).expect("automatic: the transition is tuff's");
+    let mut outside = texels();
+    outside[0].image_subresource.layer_count = 2;
+    rec.copy_image_to_buffer(&o.image, L::GENERAL, &o.c, &outside)
+        .expect_err("an array layer the image does not have");
+    rec.end().expect("end");
+    assert_eq!(cb.auto_barriers(), 3);
+    s.submit_wait(&cb);
+    assert_silent(&s.messages);
+}

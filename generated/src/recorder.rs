@@ -652,9 +652,11 @@ impl<'c, S: Scope> Recorder<'c, S> {
     /// that barrier itself, one global memory barrier just before the command
     /// (`vkCmdPipelineBarrier2` where synchronization2 is enabled), from the earlier
     /// accesses' stages to the command's. Barriers the recording names itself count
-    /// in both modes. On, [`Recorder::end`] also makes the buffer writes of the
-    /// recording visible to the host (one barrier to `HOST`), which a fence alone
-    /// does not. Which commands the tracker knows, and what each reads and
+    /// in both modes. On, a copy, blit, resolve or clear that names a transfer
+    /// layout (or `GENERAL`) for subresources the recording left in another layout
+    /// gets the layout transition before it, and [`Recorder::end`] makes the buffer
+    /// writes of the recording visible to the host (one barrier to `HOST`), which a
+    /// fence alone does not. Which commands the tracker knows, and what each reads and
     /// writes, is the crate's `sync_tables` (from the registry's sync tables and the
     /// generator's table of per-command facts); the report lists the others.
     ///

@@ -145,6 +145,115 @@ fn order<S: Scope>(recorder: &mut Recorder<'_, S>, masks: (u64, u64, u64, u64)) 
     recorder.record_memory_barrier(masks);
 }
 
+/// With automatic synchronization on, outside a render pass instance: moves
+/// subresources a command names in a layout from the one the recording left them
+/// in, with one image barrier each, waiting for the accesses the tracker followed
+/// (every write where it followed none) and blocking every command after. Only
+/// where the recording knows the layout (at an image's first use it is the
+/// submission's to check), for the transfer layouts and `GENERAL` of an image with
+/// the usage they need, and subresources inside the image with aspects of its
+/// format: a command whose names break a rule is refused by its own checks, and
+/// the transition is not recorded. Recorded as the command is checked: a later
+/// check that refuses the command leaves the subresources in the new layout.
+pub(crate) fn auto_transitions<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    needs: &[(vk::Image, Sel, vk::ImageLayout)],
+) {
+    use vk::{ImageLayout as L, ImageUsageFlags as U};
+    if UNTRACKED || !recorder.hazards.auto || recorder.instance.is_some() {
+        return;
+    }
+    for (image, sel, need) in needs {
+        let Some(old) = recorder.layouts.known(*image, sel) else {
+            continue;
+        };
+        let Some(record) = recorder.device().live().image(*image) else {
+            continue;
+        };
+        let usage = match *need {
+            L::TRANSFER_SRC_OPTIMAL => U::TRANSFER_SRC,
+            L::TRANSFER_DST_OPTIMAL => U::TRANSFER_DST,
+            L::GENERAL => U::empty(),
+            _ => continue,
+        };
+        let layers = match record.image_type {
+            vk::ImageType::TYPE_3D => 1,
+            _ => record.array_layers,
+        };
+        let inside = sel.mips.0 < sel.mips.1
+            && sel.mips.1 <= record.mip_levels
+            && sel.layers.0 < sel.layers.1
+            && sel.layers.1 <= layers
+            && !sel.aspect.is_empty()
+            && crate::formats::aspects(record.format).is_some_and(|a| a.contains(sel.aspect));
+        if old == *need || !record.usage.contains(usage) || !inside {
+            continue;
+        }
+        const ALL_COMMANDS: u64 = 0x10000;
+        const MEMORY_READ_WRITE: u64 = 0x8000 | 0x10000;
+        let (ss, sa) = recorder
+            .hazards
+            .last_uses(*image, sel)
+            .unwrap_or((ALL_COMMANDS, 0x10000));
+        let (ss1, sa1) = (
+            crate::state::hazards::narrow_stages(ss),
+            crate::state::hazards::narrow_access(sa),
+        );
+        let (ds1, da1) = (
+            vk::PipelineStageFlags::ALL_COMMANDS,
+            vk::AccessFlags::from_raw(MEMORY_READ_WRITE as u32),
+        );
+        let b = [vk::ImageMemoryBarrier::default()
+            .src_access_mask(sa1)
+            .dst_access_mask(da1)
+            .old_layout(old)
+            .new_layout(*need)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .image(*image)
+            .subresource_range(vk::ImageSubresourceRange {
+                aspect_mask: sel.aspect,
+                base_mip_level: sel.mips.0,
+                level_count: sel.mips.1 - sel.mips.0,
+                base_array_layer: sel.layers.0,
+                layer_count: sel.layers.1 - sel.layers.0,
+            })];
+        // SAFETY: outside a render pass instance (checked above); the image is live
+        // (the command names it through its wrapper) and has the usage the new layout
+        // needs (VUID-VkImageMemoryBarrier-oldLayout-01212, -01213); the old layout is
+        // the one the recording's earlier commands leave every subresource in (01197);
+        // the range lies inside the image (01486, 01488) with aspects of its format
+        // (01671 and its siblings); the stages are those of accesses the recording
+        // made, or every command, with access types of those stages.
+        unsafe {
+            (recorder.device().fns().fp_v1_0().cmd_pipeline_barrier)(
+                recorder.raw(),
+                ss1,
+                ds1,
+                vk::DependencyFlags::empty(),
+                0,
+                core::ptr::null(),
+                0,
+                core::ptr::null(),
+                1,
+                b.as_ptr(),
+            )
+        };
+        let barrier = Barrier::new(
+            u64::from(ss1.as_raw()),
+            u64::from(sa1.as_raw()),
+            ALL_COMMANDS,
+            MEMORY_READ_WRITE,
+        );
+        let (live, hazards) = recorder.hazards_mut();
+        hazards.auto_barriers += 1;
+        let cmd = hazards.next("a layout transition tuff recorded");
+        hazards.apply_image(live, *image, sel, &barrier, Some(cmd));
+        let (live, layouts) = recorder.layouts_mut();
+        layouts.set(live, *image, *sel, *need);
+    }
+}
+
 /// The first scope of a barrier out of `image`'s subresources `range` (the first
 /// version's masks): the accesses the recording made to them last, when the tracker
 /// followed every one ([`crate::state::hazards::Recording::last_uses`]).

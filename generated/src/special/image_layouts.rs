@@ -446,10 +446,14 @@ impl Names<'_> {
 /// its subresources out of, or (for the commands that name subresources with
 /// `VkImageSubresourceLayers`) color with depth or stencil.
 pub(crate) fn image_layout_checks<S: Scope>(
-    recorder: &Recorder<'_, S>,
+    recorder: &mut Recorder<'_, S>,
     names: Names<'_>,
 ) -> Result<()> {
     let named = names.named();
+    if recorder.is_auto_sync() {
+        let needs: Vec<_> = named.iter().map(|n| (n.0, n.1, n.2)).collect();
+        crate::special::hazards::auto_transitions(recorder, &needs);
+    }
     if !matches!(names, Names::ClearColor(..) | Names::ClearDepthStencil(..)) {
         // The others name their subresources with `VkImageSubresourceLayers`.
         for (_, sel, _, _, _) in &named {

@@ -251,6 +251,16 @@ impl Recording {
         Ok(())
     }
 
+    /// The one layout the recording's commands so far leave every one of `sel`'s
+    /// subresources in, if it knows one (`None` where one is untouched or they
+    /// differ).
+    pub(crate) fn known(&self, image: vk::Image, sel: &Sel) -> Option<vk::ImageLayout> {
+        let t = self.images.get(&image.as_raw())?;
+        let mut indices = t.shape.indices(sel);
+        let first = t.now[indices.next()?];
+        (first != UNKNOWN && indices.all(|i| t.now[i] == first)).then_some(first)
+    }
+
     /// A command needs the subresources in `layout` when it executes (`vuid`
     /// names the rule): those the recording has not touched need it at its start.
     pub(crate) fn require(
