@@ -151,8 +151,8 @@ fn order<S: Scope>(recorder: &mut Recorder<'_, S>, masks: (u64, u64, u64, u64)) 
 /// (every write where it followed none) and blocking every command after. Only
 /// where the recording knows the layout (at an image's first use it is the
 /// submission's to check), for the transfer layouts and `GENERAL` of an image with
-/// the usage they need, and subresources inside the image with aspects of its
-/// format: a command whose names break a rule is refused by its own checks, and
+/// the usage they need, and subresources inside the image with every aspect of
+/// its format: a command whose names break a rule is refused by its own checks, and
 /// the transition is not recorded. Recorded as the command is checked: a later
 /// check that refuses the command leaves the subresources in the new layout.
 pub(crate) fn auto_transitions<S: Scope>(
@@ -185,7 +185,10 @@ pub(crate) fn auto_transitions<S: Scope>(
             && sel.layers.0 < sel.layers.1
             && sel.layers.1 <= layers
             && !sel.aspect.is_empty()
-            && crate::formats::aspects(record.format).is_some_and(|a| a.contains(sel.aspect));
+            // Every aspect of the format: a depth/stencil image's two move together
+            // unless separateDepthStencilLayouts is on, a multi-planar one's planes
+            // only as COLOR unless it is disjoint; neither is tuff's to pick here.
+            && crate::formats::aspects(record.format) == Some(sel.aspect);
         if old == *need || !record.usage.contains(usage) || !inside {
             continue;
         }
