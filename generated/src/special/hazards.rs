@@ -399,14 +399,23 @@ pub(crate) fn draw<S: Scope>(
     vertices: (u32, u32),
     instances: (u32, u32),
 ) -> Result<()> {
-    if UNTRACKED {
-        return Ok(());
-    }
     let key = DrawKey::new(0, vertices, instances);
-    if recorder.hazard_draw_unchanged(key) {
+    unless_unchanged(recorder, facts, key, draw_tracked)
+}
+
+/// A draw's tracking (`tracked`), unless the last draw's verdict stands: the same
+/// parameters with nothing changed since.
+#[inline]
+fn unless_unchanged<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    key: DrawKey,
+    tracked: fn(&mut Recorder<'_, S>, &Facts, DrawKey) -> Result<()>,
+) -> Result<()> {
+    if UNTRACKED || recorder.hazard_draw_unchanged(key) {
         return Ok(());
     }
-    draw_tracked(recorder, facts, key)
+    tracked(recorder, facts, key)
 }
 
 /// [`draw`] past the check that the last draw's verdict stands.
@@ -446,14 +455,8 @@ pub(crate) fn draw_indexed<S: Scope>(
     indices: (u32, u32),
     instances: (u32, u32),
 ) -> Result<()> {
-    if UNTRACKED {
-        return Ok(());
-    }
     let key = DrawKey::new(1, indices, instances);
-    if recorder.hazard_draw_unchanged(key) {
-        return Ok(());
-    }
-    draw_indexed_tracked(recorder, facts, key)
+    unless_unchanged(recorder, facts, key, draw_indexed_tracked)
 }
 
 /// [`draw_indexed`] past the check that the last draw's verdict stands.

@@ -780,7 +780,15 @@ impl Recording {
             drawn: (mut drawn, _),
             ..
         } = self;
-        buffers.clear();
+        // A buffer's ranges keep their allocation for the next recording, which
+        // most often touches the same buffers (a bounded number: a recording of
+        // many short-lived buffers starts empty). An image's states depend on its
+        // shape, and a destroyed image's handle may name a new one: they go.
+        if buffers.len() <= 64 {
+            buffers.values_mut().for_each(|r| r.0.clear());
+        } else {
+            buffers.clear();
+        }
         images.clear();
         drawn.clear();
         log.clear();
