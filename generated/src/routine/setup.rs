@@ -91,7 +91,11 @@ impl Recorder<'_, Outside> {
             // What waits: the recording's last uses of the image as the hazard
             // tracker followed them, else the uses its old layout implies.
             let (src_stage, src_access) =
-                crate::special::hazards::source_scope(self, image, &range)
+                crate::special::hazards::source_scope(
+                    self,
+                    image.raw(),
+                    &crate::state::layouts::Sel::range(&range),
+                )
                     .unwrap_or_else(|| layout_use(old));
             let (dst_stage, dst_access) = layout_use(new);
             let barrier = ImageMemoryBarrier::new(image)

@@ -194,14 +194,10 @@ pub(crate) fn auto_transitions<S: Scope>(
         }
         const ALL_COMMANDS: u64 = 0x10000;
         const MEMORY_READ_WRITE: u64 = 0x8000 | 0x10000;
-        let (ss, sa) = recorder
-            .hazards
-            .last_uses(*image, sel)
-            .unwrap_or((ALL_COMMANDS, 0x10000));
-        let (ss1, sa1) = (
-            crate::state::hazards::narrow_stages(ss),
-            crate::state::hazards::narrow_access(sa),
-        );
+        let (ss1, sa1) = source_scope(recorder, *image, sel).unwrap_or((
+            vk::PipelineStageFlags::ALL_COMMANDS,
+            vk::AccessFlags::MEMORY_WRITE,
+        ));
         let (ds1, da1) = (
             vk::PipelineStageFlags::ALL_COMMANDS,
             vk::AccessFlags::from_raw(MEMORY_READ_WRITE as u32),
@@ -257,20 +253,18 @@ pub(crate) fn auto_transitions<S: Scope>(
     }
 }
 
-/// The first scope of a barrier out of `image`'s subresources `range` (the first
+/// The first scope of a barrier out of `image`'s subresources `sel` (the first
 /// version's masks): the accesses the recording made to them last, when the tracker
 /// followed every one ([`crate::state::hazards::Recording::last_uses`]).
 pub(crate) fn source_scope<S: Scope>(
     recorder: &Recorder<'_, S>,
-    image: &Image,
-    range: &vk::ImageSubresourceRange,
+    image: vk::Image,
+    sel: &Sel,
 ) -> Option<(vk::PipelineStageFlags, vk::AccessFlags)> {
     if UNTRACKED {
         return None;
     }
-    let (stages, access) = recorder
-        .hazards
-        .last_uses(image.raw(), &Sel::range(range))?;
+    let (stages, access) = recorder.hazards.last_uses(image, sel)?;
     Some((
         crate::state::hazards::narrow_stages(stages),
         crate::state::hazards::narrow_access(access),
@@ -433,18 +427,25 @@ fn draw_tracked<S: Scope>(
         &mut list,
         facts.vertex,
     );
-    descriptor_memory(recorder, 0, &mut list);
-    reads(recorder, facts.name, &list)?;
-    draw_recorded(recorder, &list, key);
-    Ok(())
+    draw_reads(recorder, facts, list, key)
 }
 
-/// Lets the next draw with the same parameters and nothing changed skip its reads:
-/// unless this one wrote (a second write after it would be a hazard).
-fn draw_recorded<S: Scope>(recorder: &mut Recorder<'_, S>, list: &[(Memory, Use)], key: DrawKey) {
+/// A draw's reads (its vertices and indices in `list`, then its descriptors):
+/// checked and recorded, and the next draw with the same parameters and nothing
+/// changed lets skip them, unless this one wrote (a second write after it would be
+/// a hazard).
+fn draw_reads<S: Scope>(
+    recorder: &mut Recorder<'_, S>,
+    facts: &Facts,
+    mut list: Reads,
+    key: DrawKey,
+) -> Result<()> {
+    descriptor_memory(recorder, 0, &mut list);
+    reads(recorder, facts.name, &list)?;
     if list.iter().all(|(_, u)| !u.write) {
         recorder.hazard_draw_recorded(key);
     }
+    Ok(())
 }
 
 /// `vkCmdDrawIndexed`: reads its indices, and the vertices and instances it fetches.
@@ -488,10 +489,7 @@ fn draw_indexed_tracked<S: Scope>(
         &mut list,
         facts.vertex,
     );
-    descriptor_memory(recorder, 0, &mut list);
-    reads(recorder, facts.name, &list)?;
-    draw_recorded(recorder, &list, key);
-    Ok(())
+    draw_reads(recorder, facts, list, key)
 }
 
 /// The memory a draw or dispatch reaches through the sets bound at bind point
