@@ -441,6 +441,12 @@ pub struct Recorder<'c, S: Scope> {
     pub(crate) event_states: crate::state::events::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
     pub(crate) pass_images: Vec<vk::Image>,
+    /// The render pass and the framebuffer's attachments of the instance the
+    /// recording began, for the hazard tracker's subpass edges and end.
+    pub(crate) pass_memory: Option<(
+        Vrc<crate::state::RenderPassRecord>,
+        crate::state::AttachmentMemory,
+    )>,
     /// The descriptor sets bound so far, each with its generation then: an update
     /// that changes it leaves the buffer invalid.
     pub(crate) sets: Vec<(u64, u64)>,
@@ -525,6 +531,7 @@ impl<'c> Recorder<'c, Outside> {
             query_states: Default::default(),
             event_states: Default::default(),
             pass_images: Vec::new(),
+            pass_memory: None,
             sets: Vec::new(),
             events: Vec::new(),
             dynamic: (0, 0),
@@ -848,6 +855,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             query_states: self.query_states,
             event_states: self.event_states,
             pass_images: self.pass_images,
+            pass_memory: self.pass_memory,
             sets: self.sets,
             events: self.events,
             dynamic: self.dynamic,

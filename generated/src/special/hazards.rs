@@ -23,6 +23,7 @@ use crate::structs::{
 use crate::sync_tables::{Facts, Use};
 use crate::{Error, Handle, Result};
 use ash::vk::{self, Handle as _};
+use smallvec::SmallVec;
 
 /// Built with `--cfg tuff_untracked` (the stage benchmark's build without the
 /// tracker, to measure what it costs): every entry point returns at once.
@@ -657,7 +658,7 @@ pub(crate) fn images<S: Scope>(
         return Ok(());
     }
     let sides = names.sides();
-    let list: Vec<(Memory, Use)> = sides
+    let list: Reads = sides
         .read
         .into_iter()
         .map(|(i, s, t)| (Memory::Image(i, s, t), facts.src))
@@ -671,42 +672,27 @@ pub(crate) fn images<S: Scope>(
     touch(recorder, facts.name, &list)
 }
 
-/// The bytes of `buffer` each buffer-image copy region reaches (Buffer and Image
-/// Addressing over the image's recorded format).
-fn buffer_side(
-    recorder: &Recorder<'_, impl Scope>,
-    buffer: vk::Buffer,
-    image: vk::Image,
-    regions: impl Iterator<Item = crate::special::copies::Region>,
-) -> Vec<Memory> {
-    let Some(record) = recorder.device().live().image(image) else {
-        return Vec::new();
-    };
-    regions
-        .map(|r| {
-            let end = r.buffer_end(record.format).unwrap_or(u64::MAX);
-            Memory::Buffer(buffer, r.offset, end)
-        })
-        .collect()
-}
-
-/// A copy between a buffer and an image, `to_image` saying which way.
+/// A copy between a buffer and an image, `to_image` saying which way: the bytes of
+/// the buffer each region reaches (Buffer and Image Addressing over the image's
+/// recorded format), and the image's texels.
 fn buffer_image<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     facts: &Facts,
     (buffer, image, to_image): (vk::Buffer, vk::Image, bool),
-    regions: Vec<crate::special::copies::Region>,
+    regions: impl Iterator<Item = crate::special::copies::Region> + Clone,
 ) -> Result<()> {
     let (buffer_use, image_use) = match to_image {
         true => (facts.src, facts.dst),
         false => (facts.dst, facts.src),
     };
-    let mut list: Vec<(Memory, Use)> =
-        buffer_side(recorder, buffer, image, regions.iter().copied())
-            .into_iter()
-            .map(|m| (m, buffer_use))
-            .collect();
-    list.extend(regions.iter().map(|r| {
+    let mut list = Reads::new();
+    if let Some(format) = recorder.device().live().image(image).map(|r| r.format) {
+        list.extend(regions.clone().map(|r| {
+            let end = r.buffer_end(format).unwrap_or(u64::MAX);
+            (Memory::Buffer(buffer, r.offset, end), buffer_use)
+        }));
+    }
+    list.extend(regions.map(|r| {
         let texels = crate::special::image_layouts::boxed(r.image_offset, r.extent);
         (
             Memory::Image(image, Sel::layers(&r.subresource), texels),
@@ -727,7 +713,7 @@ pub(crate) fn copy_buffer_to_image<S: Scope>(
     if UNTRACKED {
         return Ok(());
     }
-    let r = regions.iter().map(Into::into).collect();
+    let r = regions.iter().map(Into::into);
     buffer_image(
         recorder,
         facts,
@@ -747,7 +733,7 @@ pub(crate) fn copy_image_to_buffer<S: Scope>(
     if UNTRACKED {
         return Ok(());
     }
-    let r = regions.iter().map(Into::into).collect();
+    let r = regions.iter().map(Into::into);
     buffer_image(
         recorder,
         facts,
@@ -768,7 +754,7 @@ pub(crate) fn copy_buffer_to_image2<S: Scope>(
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
-    let r = regions.iter().map(Into::into).collect();
+    let r = regions.iter().map(Into::into);
     buffer_image(recorder, facts, (raw.src_buffer, raw.dst_image, true), r)
 }
 
@@ -784,7 +770,7 @@ pub(crate) fn copy_image_to_buffer2<S: Scope>(
     let raw = info.as_raw();
     // SAFETY: the safe struct stores the array with its length.
     let regions = unsafe { crate::state::raw_slice(raw.p_regions, raw.region_count) };
-    let r = regions.iter().map(Into::into).collect();
+    let r = regions.iter().map(Into::into);
     buffer_image(recorder, facts, (raw.dst_buffer, raw.src_image, false), r)
 }
 
@@ -808,44 +794,59 @@ fn apply<S: Scope>(
             s.dst_access.as_raw(),
         )
     };
-    let transitions: Vec<(vk::Image, Sel, Barrier)> = barriers
-        .images
-        .iter()
-        .filter(|b| b.layouts.0 != b.layouts.1)
-        .map(|b| (b.image, Sel::range(&b.range), of(&b.scopes)))
-        .collect();
-    for (image, sel, b) in &transitions {
-        if let Some(h) = hazards.transition_hazard(*image, sel, b, cmd) {
-            return Err(refuse(&h, &Memory::Image(*image, *sel, EVERY_TEXEL)));
+    // Each barrier's scopes, expanded once.
+    let buffer_scopes: SmallVec<[Barrier; 2]> =
+        barriers.buffers.iter().map(|b| of(&b.scopes)).collect();
+    let image_scopes: SmallVec<[Barrier; 2]> =
+        barriers.images.iter().map(|b| of(&b.scopes)).collect();
+    let transitions = || {
+        barriers
+            .images
+            .iter()
+            .zip(&image_scopes)
+            .filter(|(b, _)| b.layouts.0 != b.layouts.1)
+    };
+    for (b, scope) in transitions() {
+        let sel = Sel::range(&b.range);
+        if let Some(h) = hazards.transition_hazard(b.image, &sel, scope, cmd) {
+            return Err(refuse(&h, &Memory::Image(b.image, sel, EVERY_TEXEL)));
         }
     }
     // Every barrier is an execution dependency of everything; a memory barrier a
-    // memory dependency of all memory.
-    let mut global: Vec<Barrier> = barriers.memory.iter().map(of).collect();
-    global.extend(
-        barriers
-            .buffers
-            .iter()
-            .map(|b| of(&b.scopes).execution())
-            .chain(barriers.images.iter().map(|b| of(&b.scopes).execution())),
-    );
-    if let Some((src, dst)) = command_stages {
-        global.push(Barrier::new(src, 0, dst, 0));
+    // memory dependency of all memory. The first version's barriers share the
+    // command's stages: each distinct one is applied once (applying one twice
+    // changes nothing).
+    let mut global: SmallVec<[Barrier; 4]> = SmallVec::new();
+    let executions = buffer_scopes
+        .iter()
+        .chain(&image_scopes)
+        .map(Barrier::execution);
+    let stages = command_stages.map(|(src, dst)| Barrier::new(src, 0, dst, 0));
+    for b in barriers
+        .memory
+        .iter()
+        .map(of)
+        .chain(executions)
+        .chain(stages)
+    {
+        if !global.contains(&b) {
+            global.push(b);
+        }
     }
     hazards.apply_global(&global);
-    for b in &barriers.buffers {
+    for (b, scope) in barriers.buffers.iter().zip(&buffer_scopes) {
         let (offset, size) = b.range;
         let end = if size == vk::WHOLE_SIZE {
             u64::MAX
         } else {
             offset.saturating_add(size)
         };
-        hazards.apply_buffer(b.buffer, offset, end, &of(&b.scopes));
+        hazards.apply_buffer(b.buffer, offset, end, scope);
     }
-    for b in &barriers.images {
+    for (b, scope) in barriers.images.iter().zip(&image_scopes) {
         let sel = Sel::range(&b.range);
         let transition = (b.layouts.0 != b.layouts.1).then_some(cmd);
-        hazards.apply_image(live, b.image, &sel, &of(&b.scopes), transition);
+        hazards.apply_image(live, b.image, &sel, scope, transition);
     }
     Ok(())
 }
@@ -889,57 +890,6 @@ pub(crate) fn pipeline_barrier2<S: Scope>(
         apply(recorder, facts.name, &Barriers::of2(d), None)?;
     }
     Ok(())
-}
-
-/// The dependencies of a render pass whose destination is `dst` (`VK_SUBPASS_EXTERNAL`
-/// at the end), as barriers: each orders everything recorded before it (its first
-/// scope is at most that).
-fn dependencies(
-    record: &crate::state::RenderPassRecord,
-    dst: u32,
-    from_outside: bool,
-) -> Vec<Barrier> {
-    record
-        .compatibility
-        .dependencies
-        .iter()
-        .filter(|d| d.0 .1 == dst && (!from_outside || d.0 .0 == vk::SUBPASS_EXTERNAL))
-        .map(|((_, _), (ss, ds), (sa, da), _, _)| {
-            Barrier::new(
-                u64::from(ss.as_raw()),
-                u64::from(sa.as_raw()),
-                u64::from(ds.as_raw()),
-                u64::from(da.as_raw()),
-            )
-        })
-        .collect()
-}
-
-/// One barrier standing for several: the union of their masks (a layout transition
-/// under several dependencies is ordered by each).
-fn merged(barriers: &[Barrier]) -> Option<Barrier> {
-    barriers.iter().copied().reduce(|a, b| a.union(&b))
-}
-
-/// The attachments of the framebuffer a render pass instance begins with: each
-/// one's image and subresources, by attachment number (`None` for an imageless
-/// framebuffer's, which the begin info gives, or a view the wrappers did not make).
-fn attachment_memory(
-    live: &crate::state::Live,
-    framebuffer: vk::Framebuffer,
-) -> Vec<Option<(vk::Image, Sel)>> {
-    live.framebuffer_views(framebuffer)
-        .iter()
-        .map(|v| {
-            let r = live.view(*v)?;
-            let sel = Sel {
-                aspect: r.aspect,
-                mips: (r.base_level, r.base_level.saturating_add(r.levels)),
-                layers: (r.base_layer, r.base_layer.saturating_add(r.layers)),
-            };
-            Some((r.image, sel))
-        })
-        .collect()
 }
 
 /// The access of a load (`store == false`) or store operation of an attachment's
@@ -989,24 +939,20 @@ fn aspects(sel: Sel) -> [(Sel, bool, bool); 2] {
 fn subpass_begins<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     name: &'static str,
-    (render_pass, framebuffer): (vk::RenderPass, vk::Framebuffer),
     subpass: u32,
 ) -> Result<()> {
-    let live = recorder.device().live();
-    let Some(record) = live.render_pass(render_pass) else {
+    let Some((record, memory)) = recorder.pass_memory.clone() else {
         return recorder_next(recorder, name);
     };
-    let memory = attachment_memory(live, framebuffer);
-    let into = dependencies(&record, subpass, false);
-    // An attachment's first layout transition happens under the dependencies from
-    // outside into the subpass that uses it first; without one, under the implicit
-    // one, which orders nothing before it (its first scope is TOP_OF_PIPE).
-    const ALL_COMMANDS: u64 = 0x10000;
-    const ATTACHMENT_ACCESS: u64 = 0x10 | 0x80 | 0x100 | 0x200 | 0x400;
-    let transition_barrier = merged(&dependencies(&record, subpass, true))
-        .unwrap_or_else(|| Barrier::new(0x1, 0, ALL_COMMANDS, ATTACHMENT_ACCESS));
-    let mut transitions: Vec<(vk::Image, Sel)> = Vec::new();
-    let mut accesses: Vec<(Memory, Use)> = Vec::new();
+    let edges = &record.edges;
+    let (Some(into), Some(transition_barrier)) = (
+        edges.into.get(subpass as usize),
+        edges.first_transitions.get(subpass as usize),
+    ) else {
+        return recorder_next(recorder, name);
+    };
+    let mut transitions: SmallVec<[(vk::Image, Sel); 4]> = SmallVec::new();
+    let mut accesses: SmallVec<[(Memory, Use); 4]> = SmallVec::new();
     for (a, b) in record.boundaries.iter().enumerate() {
         let Some((_, layout, stencil_layout)) = b.first.filter(|f| f.0 == subpass) else {
             continue;
@@ -1042,15 +988,15 @@ fn subpass_begins<S: Scope>(
     let (live, hazards) = recorder.hazards_mut();
     let cmd = hazards.next(name);
     for (image, sel) in &transitions {
-        if let Some(h) = hazards.transition_hazard(*image, sel, &transition_barrier, cmd) {
+        if let Some(h) = hazards.transition_hazard(*image, sel, transition_barrier, cmd) {
             return Err(refuse(&h, &Memory::Image(*image, *sel, EVERY_TEXEL)));
         }
     }
     if !into.is_empty() {
-        hazards.apply_global(&into);
+        hazards.apply_global(into);
     }
     for (image, sel) in &transitions {
-        hazards.apply_image(live, *image, sel, &transition_barrier, Some(cmd));
+        hazards.apply_image(live, *image, sel, transition_barrier, Some(cmd));
     }
     for (m, u) in &accesses {
         if let Some(h) = hazards.hazard(m, &usage(u, cmd)) {
@@ -1082,7 +1028,11 @@ pub(crate) fn begin_render_pass<S: Scope>(
     }
     let raw = begin.as_raw();
     flush_before_instance(recorder);
-    subpass_begins(recorder, facts.name, (raw.render_pass, raw.framebuffer), 0)
+    let live = recorder.device().live();
+    recorder.pass_memory = live
+        .render_pass(raw.render_pass)
+        .zip(live.framebuffer_memory(raw.framebuffer));
+    subpass_begins(recorder, facts.name, 0)
 }
 
 /// With automatic synchronization on, makes every write recorded since the last
@@ -1112,10 +1062,7 @@ pub(crate) fn next_subpass<S: Scope>(recorder: &mut Recorder<'_, S>, facts: &Fac
         return Ok(());
     }
     match recorder.instance.as_ref() {
-        Some(i) => {
-            let (pass, fb, next) = (i.render_pass, i.framebuffer, i.subpass + 1);
-            subpass_begins(recorder, facts.name, (pass, fb), next)
-        }
+        Some(i) => subpass_begins(recorder, facts.name, i.subpass + 1),
         None => recorder_next(recorder, facts.name),
     }
 }
@@ -1130,28 +1077,12 @@ pub(crate) fn end_render_pass<S: Scope>(
     if UNTRACKED {
         return Ok(());
     }
-    let Some((pass, fb)) = recorder
-        .instance
-        .as_ref()
-        .map(|i| (i.render_pass, i.framebuffer))
-    else {
+    let Some((record, memory)) = recorder.pass_memory.take() else {
         return recorder_next(recorder, facts.name);
     };
-    let live = recorder.device().live();
-    let Some(record) = live.render_pass(pass) else {
-        return recorder_next(recorder, facts.name);
-    };
-    let memory = attachment_memory(live, fb);
-    let out = dependencies(&record, vk::SUBPASS_EXTERNAL, false);
-    // Without a dependency out, the implicit one: every attachment write, to
-    // BOTTOM_OF_PIPE.
-    const ALL_COMMANDS: u64 = 0x10000;
-    const BOTTOM: u64 = 0x2000;
-    const ATTACHMENT_WRITES: u64 = 0x100 | 0x400;
-    let transition_barrier =
-        merged(&out).unwrap_or_else(|| Barrier::new(ALL_COMMANDS, ATTACHMENT_WRITES, BOTTOM, 0));
-    let mut stores: Vec<(Memory, Use)> = Vec::new();
-    let mut transitions: Vec<(vk::Image, Sel)> = Vec::new();
+    let (out, transition_barrier) = (&record.edges.out, &record.edges.last_transition);
+    let mut stores: SmallVec<[(Memory, Use); 4]> = SmallVec::new();
+    let mut transitions: SmallVec<[(vk::Image, Sel); 4]> = SmallVec::new();
     for (a, b) in record.boundaries.iter().enumerate() {
         let Some((_, layout, stencil_layout)) = b.last else {
             continue;
@@ -1192,15 +1123,15 @@ pub(crate) fn end_render_pass<S: Scope>(
         hazards.record_ordered(live, m, usage(u, cmd));
     }
     for (image, sel) in &transitions {
-        if let Some(h) = hazards.transition_hazard(*image, sel, &transition_barrier, cmd) {
+        if let Some(h) = hazards.transition_hazard(*image, sel, transition_barrier, cmd) {
             return Err(refuse(&h, &Memory::Image(*image, *sel, EVERY_TEXEL)));
         }
     }
     if !out.is_empty() {
-        hazards.apply_global(&out);
+        hazards.apply_global(out);
     }
     for (image, sel) in &transitions {
-        hazards.apply_image(live, *image, sel, &transition_barrier, Some(cmd));
+        hazards.apply_image(live, *image, sel, transition_barrier, Some(cmd));
     }
     Ok(())
 }

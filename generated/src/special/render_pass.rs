@@ -592,6 +592,8 @@ impl Pass {
             .fold(Default::default(), |(s, d), x| {
                 (s | x.stages.0, d | x.stages.1)
             });
+        let compatibility = self.compatibility();
+        let edges = crate::state::Edges::of(&compatibility, self.subpasses.len() as u32);
         device.live().render_pass_created(
             render_pass.raw(),
             RenderPassRecord {
@@ -627,7 +629,8 @@ impl Pass {
                     .filter(|(a, b)| *a != vk::SUBPASS_EXTERNAL && *b != vk::SUBPASS_EXTERNAL)
                     .collect(),
                 second: self.second,
-                compatibility: self.compatibility(),
+                compatibility,
+                edges,
                 boundaries: self.boundaries(),
             },
         );

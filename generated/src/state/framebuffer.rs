@@ -1,14 +1,20 @@
 //! What the device records of framebuffers: their attachments and size, and what an
 //! imageless one says of the views it takes.
 
+use super::layouts::Sel;
 use super::live::Live;
 use super::render_pass::RenderPassRecord;
 use ash::vk::{self, Handle as _};
 use tuff_runtime::Vrc;
 
-/// A framebuffer's attachments (none for an imageless one) and its width, height
-/// and layer count.
-pub(crate) type FramebufferRecord = (Vec<vk::ImageView>, [u32; 3]);
+/// A framebuffer's attachments (none for an imageless one), its width, height
+/// and layer count, and its attachments' memory ([`AttachmentMemory`]).
+pub(crate) type FramebufferRecord = (Vec<vk::ImageView>, [u32; 3], AttachmentMemory);
+
+/// Each attachment of a framebuffer as the hazard tracker names it: its view's
+/// image and subresources, by attachment number (`None` for a view the wrappers did
+/// not make). Read once at creation: a render pass instance begins every frame.
+pub(crate) type AttachmentMemory = Vrc<[Option<(vk::Image, Sel)>]>;
 
 /// What an imageless framebuffer's `VkFramebufferAttachmentImageInfo` says of the
 /// view that a render pass instance on it gives for one attachment.
@@ -32,9 +38,21 @@ impl Live {
         views: &[vk::ImageView],
         size: [u32; 3],
     ) {
+        let memory = views
+            .iter()
+            .map(|v| {
+                let r = self.view(*v)?;
+                let sel = Sel {
+                    aspect: r.aspect,
+                    mips: (r.base_level, r.base_level.saturating_add(r.levels)),
+                    layers: (r.base_layer, r.base_layer.saturating_add(r.layers)),
+                };
+                Some((r.image, sel))
+            })
+            .collect();
         self.framebuffers
             .lock()
-            .insert(raw.as_raw(), (views.to_vec(), size));
+            .insert(raw.as_raw(), (views.to_vec(), size, memory));
     }
 
     /// Records an imageless framebuffer's attachment image infos.
@@ -66,6 +84,14 @@ impl Live {
     /// A live framebuffer's width, height and layer count.
     pub(crate) fn framebuffer_size(&self, raw: vk::Framebuffer) -> Option<[u32; 3]> {
         self.framebuffers.lock().get(&raw.as_raw()).map(|f| f.1)
+    }
+
+    /// The memory of a live framebuffer's attachments (empty for an imageless one).
+    pub(crate) fn framebuffer_memory(&self, raw: vk::Framebuffer) -> Option<AttachmentMemory> {
+        self.framebuffers
+            .lock()
+            .get(&raw.as_raw())
+            .map(|f| f.2.clone())
     }
 
     /// The attachments of a live framebuffer (empty for an imageless one).

@@ -250,7 +250,7 @@ fn name_of(items: impl Iterator<Item = (&'static str, u64)>, mask: u64) -> Strin
 }
 
 /// The scopes of one barrier (or subpass dependency), expanded.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Barrier {
     /// The first execution scope: the source stages and every stage logically earlier.
     src_exec: u64,
@@ -541,19 +541,22 @@ impl State {
     /// Applies the barriers of one command, all against the state before any of them.
     fn apply(&mut self, barriers: &[Barrier]) {
         if let Some(w) = &mut self.write {
-            let mut chain = 0;
-            let mut visible: SmallVec<[(u64, u64); 2]> = SmallVec::new();
-            for b in barriers.iter().filter(|b| in_first_scope(w, b)) {
-                chain |= b.dst_exec;
-                if b.dst_access != 0 {
-                    visible.push((b.dst_stages, b.dst_access));
+            // Whether the write is in a barrier's first scope depends on its usage
+            // and on the chain before this command only.
+            let (usage, before) = (w.usage, w.chain);
+            for b in barriers {
+                let in_scope = (usage.stage & b.src_stages != 0
+                    && usage.access & b.src_access != 0)
+                    || before & b.src_exec != 0;
+                if !in_scope {
+                    continue;
                 }
-            }
-            w.chain |= chain;
-            for (s, a) in visible {
-                match w.visible.iter_mut().find(|v| v.0 == s) {
-                    Some(v) => v.1 |= a,
-                    None => w.visible.push((s, a)),
+                w.chain |= b.dst_exec;
+                if b.dst_access != 0 {
+                    match w.visible.iter_mut().find(|v| v.0 == b.dst_stages) {
+                        Some(v) => v.1 |= b.dst_access,
+                        None => w.visible.push((b.dst_stages, b.dst_access)),
+                    }
                 }
             }
         }
@@ -615,31 +618,36 @@ impl Ranges {
         let first = |v: &Vec<(u64, u64, State)>| v.partition_point(|r| r.1 <= start);
         // Most accesses touch a range an earlier one made whole (the same bytes
         // read again): nothing to split or add.
-        let exact = self
-            .0
-            .get(first(&self.0))
-            .is_some_and(|r| r.0 == start && r.1 == end);
-        if !exact {
-            self.split(start);
-            self.split(end);
-            let mut at = start;
-            let mut gaps: SmallVec<[(u64, u64); 4]> = SmallVec::new();
-            for r in self.0.iter().filter(|r| r.1 > start && r.0 < end) {
-                if r.0 > at {
-                    gaps.push((at, r.0));
-                }
-                at = r.1;
-            }
-            if at < end {
-                gaps.push((at, end));
-            }
-            for (s, e) in gaps {
-                let i = self.0.partition_point(|r| r.0 < s);
-                self.0.insert(i, (s, e, State::default()));
-            }
-        }
-        let (lo, hi) = (first(&self.0), self.0.partition_point(|r| r.0 < end));
+        let at = first(&self.0);
+        let exact = self.0.get(at).is_some_and(|r| r.0 == start && r.1 == end);
+        let (lo, hi) = if exact {
+            (at, at + 1)
+        } else {
+            self.make_whole(start, end);
+            (first(&self.0), self.0.partition_point(|r| r.0 < end))
+        };
         self.0[lo..hi].iter_mut().map(|r| &mut r.2)
+    }
+
+    /// Splits the ranges at `start` and `end` and adds the untouched parts between.
+    fn make_whole(&mut self, start: u64, end: u64) {
+        self.split(start);
+        self.split(end);
+        let mut at = start;
+        let mut gaps: SmallVec<[(u64, u64); 4]> = SmallVec::new();
+        for r in self.0.iter().filter(|r| r.1 > start && r.0 < end) {
+            if r.0 > at {
+                gaps.push((at, r.0));
+            }
+            at = r.1;
+        }
+        if at < end {
+            gaps.push((at, end));
+        }
+        for (s, e) in gaps {
+            let i = self.0.partition_point(|r| r.0 < s);
+            self.0.insert(i, (s, e, State::default()));
+        }
     }
 
     fn states(&self, start: u64, end: u64) -> impl Iterator<Item = &State> {
@@ -724,6 +732,9 @@ pub(crate) struct Recording {
     log: Vec<Event>,
     /// A queue's state: nothing is logged.
     unlogged: bool,
+    /// Emptied subresource tables of the images an earlier recording touched, for
+    /// the images this one touches first (a recording per frame touches the same).
+    spare_states: Vec<Vec<State>>,
 }
 
 /// One change a recording made to what it tracks: an access, or a barrier's
@@ -734,7 +745,7 @@ pub(crate) enum Event {
     /// An access, and whether it was checked (a render pass's store operations
     /// follow what its instance ordered, and are not).
     Access(Memory, Usage, bool),
-    Global(Vec<Barrier>),
+    Global(SmallVec<[Barrier; 1]>),
     Buffer(vk::Buffer, u64, u64, Barrier),
     Image(vk::Image, Sel, Barrier, Option<Cmd>),
     Forget,
@@ -759,6 +770,8 @@ impl Recording {
             started,
             log,
             unlogged,
+            // Allocations only: nothing to copy.
+            spare_states: _,
         } = o;
         self.buffers.clone_from(buffers);
         self.images.clone_from(images);
@@ -778,6 +791,7 @@ impl Recording {
             mut buffers,
             mut images,
             drawn: (mut drawn, _),
+            mut spare_states,
             ..
         } = self;
         // A buffer's ranges keep their allocation for the next recording, which
@@ -789,7 +803,14 @@ impl Recording {
         } else {
             buffers.clear();
         }
-        images.clear();
+        // Their tables' allocations stay, a bounded number.
+        for (_, sub) in images.drain() {
+            if spare_states.len() < 16 {
+                let mut states = sub.states;
+                states.clear();
+                spare_states.push(states);
+            }
+        }
         drawn.clear();
         log.clear();
         Recording {
@@ -797,6 +818,7 @@ impl Recording {
             images,
             drawn: (drawn, 0),
             log,
+            spare_states,
             ..Default::default()
         }
     }
@@ -850,7 +872,8 @@ impl Recording {
     /// Remembers reads a draw recorded.
     pub(crate) fn remember_reads(&mut self, reads: impl Iterator<Item = (Memory, u64)>) {
         if self.drawn.1 != self.generation {
-            self.drawn = (Vec::new(), self.generation);
+            self.drawn.0.clear();
+            self.drawn.1 = self.generation;
         }
         for (m, stage) in reads {
             let Memory::Buffer(b, s, e) = m else {
@@ -887,7 +910,8 @@ impl Recording {
             Entry::Occupied(e) => Some(e.into_mut()),
             Entry::Vacant(e) => {
                 let shape = Shape::of(&live.image(image)?);
-                let states = vec![State::default(); shape.len()];
+                let mut states = self.spare_states.pop().unwrap_or_default();
+                states.extend((0..shape.len()).map(|_| State::default()));
                 Some(e.insert(Subresources { shape, states }))
             }
         }
@@ -997,7 +1021,7 @@ impl Recording {
     pub(crate) fn apply_global(&mut self, barriers: &[Barrier]) {
         self.generation += 1;
         if !self.unlogged {
-            self.log.push(Event::Global(barriers.to_vec()));
+            self.log.push(Event::Global(SmallVec::from_slice(barriers)));
         }
         for r in self.buffers.values_mut() {
             for st in &mut r.0 {

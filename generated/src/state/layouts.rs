@@ -75,33 +75,74 @@ impl Shape {
 
     /// The indices of the subresources `sel` names, clipped to the image (a range
     /// past the image is another rule's to refuse).
-    pub(crate) fn indices(&self, sel: &Sel) -> impl Iterator<Item = usize> + '_ {
-        let mips = sel.mips.0.min(self.mips)..sel.mips.1.min(self.mips);
-        let (first, last) = if self.layers == 1 {
+    pub(crate) fn indices(&self, sel: &Sel) -> Indices {
+        let planes = vk::ImageAspectFlags::PLANE_0
+            | vk::ImageAspectFlags::PLANE_1
+            | vk::ImageAspectFlags::PLANE_2;
+        let mut aspects = 0u8;
+        for a in 0..self.count as usize {
+            let own = self.aspects[a];
+            // COLOR names every plane of a multi-planar image.
+            if sel.aspect.intersects(own)
+                || (sel.aspect.contains(vk::ImageAspectFlags::COLOR) && own.intersects(planes))
+            {
+                aspects |= 1 << a;
+            }
+        }
+        let layers = if self.layers == 1 {
             (0, 1)
         } else {
             (sel.layers.0.min(self.layers), sel.layers.1.min(self.layers))
         };
-        let aspect = sel.aspect;
-        (0..self.count as usize)
-            .filter(move |a| {
-                let own = self.aspects[*a];
-                // COLOR names every plane of a multi-planar image.
-                aspect.intersects(own)
-                    || (aspect.contains(vk::ImageAspectFlags::COLOR)
-                        && own.intersects(
-                            vk::ImageAspectFlags::PLANE_0
-                                | vk::ImageAspectFlags::PLANE_1
-                                | vk::ImageAspectFlags::PLANE_2,
-                        ))
-            })
-            .flat_map(move |a| {
-                mips.clone().flat_map(move |m| {
-                    (first..last).map(move |l| {
-                        (a * self.mips as usize + m as usize) * self.layers as usize + l as usize
-                    })
-                })
-            })
+        let mips = (sel.mips.0.min(self.mips), sel.mips.1.min(self.mips));
+        Indices {
+            aspects,
+            levels: self.mips as usize,
+            count: self.layers as usize,
+            mips,
+            layers,
+            at: (0, mips.1, layers.1),
+        }
+    }
+}
+
+/// The indices of some subresources of an image ([`Shape::indices`]): aspect by
+/// aspect, then level by level, layer by layer. A plain counter: the recorder asks
+/// on every command that touches an image.
+pub(crate) struct Indices {
+    /// The aspects (by their place in the shape) not visited yet, as bits.
+    aspects: u8,
+    /// The image's mip levels and array layers.
+    levels: usize,
+    count: usize,
+    /// The levels and layers named, clipped to the image (`start..end`).
+    mips: (u32, u32),
+    layers: (u32, u32),
+    /// The aspect, level and layer of the next index.
+    at: (usize, u32, u32),
+}
+
+impl Iterator for Indices {
+    type Item = usize;
+
+    fn next(&mut self) -> Option<usize> {
+        loop {
+            let (a, m, l) = self.at;
+            if m < self.mips.1 {
+                if l < self.layers.1 {
+                    self.at.2 += 1;
+                    return Some((a * self.levels + m as usize) * self.count + l as usize);
+                }
+                self.at = (a, m + 1, self.layers.0);
+                continue;
+            }
+            if self.aspects == 0 {
+                return None;
+            }
+            let next = self.aspects.trailing_zeros() as usize;
+            self.aspects &= self.aspects - 1;
+            self.at = (next, self.mips.0, self.layers.0);
+        }
     }
 }
 

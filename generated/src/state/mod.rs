@@ -38,7 +38,7 @@ pub(crate) use self::descriptors::{
     SAMPLER_YCBCR,
 };
 pub(crate) use self::features::Features;
-pub(crate) use self::framebuffer::AttachmentImage;
+pub(crate) use self::framebuffer::{AttachmentImage, AttachmentMemory};
 pub(crate) use self::image::ImageRecord;
 pub(crate) use self::live::{limits, Live};
 pub(crate) use self::memory::{Binding, MemoryAsked, MemoryRecords};
@@ -49,8 +49,8 @@ pub(crate) use self::pipeline::{
 pub(crate) use self::query::QueryPoolRecord;
 pub(crate) use self::queue::{Ledger, Submission};
 pub(crate) use self::render_pass::{
-    AttachmentLayouts, Boundary, Compatibility, RenderPassRecord, SelfDependency, SubpassShape,
-    USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
+    AttachmentLayouts, Boundary, Compatibility, Edges, RenderPassRecord, SelfDependency,
+    SubpassShape, USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,
 };
 pub(crate) use self::sync::{Binary, Timeline};
 pub(crate) use self::view::ViewRecord;

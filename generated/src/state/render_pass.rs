@@ -1,6 +1,7 @@
 //! What the device records of render passes: each subpass's attachments, layouts and
 //! self-dependencies.
 
+use super::hazards::Barrier;
 use super::live::Live;
 use ash::vk::{self, Handle as _};
 use tuff_runtime::Vrc;
@@ -62,6 +63,72 @@ pub(crate) struct RenderPassRecord {
     pub boundaries: Vec<Boundary>,
     /// What render pass compatibility compares.
     pub compatibility: Compatibility,
+    /// The barriers at an instance's edges, for the hazard tracker.
+    pub edges: Edges,
+}
+
+/// The barriers at the edges of a render pass instance's subpasses, expanded once
+/// at creation (an instance begins every frame): each subpass's dependencies into
+/// it, the one its attachments' first layout transitions happen under, and the
+/// same out of the render pass.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Edges {
+    /// Each subpass's dependencies into it.
+    pub into: Vec<Vec<Barrier>>,
+    /// For each subpass, the barrier of the layout transitions of the attachments it
+    /// uses first.
+    pub first_transitions: Vec<Barrier>,
+    /// The dependencies out of the render pass.
+    pub out: Vec<Barrier>,
+    /// The barrier of the attachments' final layout transitions.
+    pub last_transition: Barrier,
+}
+
+impl Edges {
+    /// The edges of a render pass of `subpasses` subpasses with these dependencies.
+    pub(crate) fn of(compatibility: &Compatibility, subpasses: u32) -> Edges {
+        // Each dependency whose destination is `dst` (`VK_SUBPASS_EXTERNAL` at the
+        // end), only those from outside when `from_outside`, as barriers.
+        let dependencies = |dst: u32, from_outside: bool| -> Vec<Barrier> {
+            compatibility
+                .dependencies
+                .iter()
+                .filter(|d| d.0 .1 == dst && (!from_outside || d.0 .0 == vk::SUBPASS_EXTERNAL))
+                .map(|(_, (ss, ds), (sa, da), _, _)| {
+                    Barrier::new(
+                        u64::from(ss.as_raw()),
+                        u64::from(sa.as_raw()),
+                        u64::from(ds.as_raw()),
+                        u64::from(da.as_raw()),
+                    )
+                })
+                .collect()
+        };
+        // A layout transition under several dependencies is ordered by each.
+        let merged = |b: Vec<Barrier>| b.into_iter().reduce(|a, b| a.union(&b));
+        const TOP: u64 = 0x1;
+        const BOTTOM: u64 = 0x2000;
+        const ALL_COMMANDS: u64 = 0x10000;
+        const ATTACHMENT_ACCESS: u64 = 0x10 | 0x80 | 0x100 | 0x200 | 0x400;
+        const ATTACHMENT_WRITES: u64 = 0x100 | 0x400;
+        let out = dependencies(vk::SUBPASS_EXTERNAL, false);
+        Edges {
+            into: (0..subpasses).map(|s| dependencies(s, false)).collect(),
+            // Without a dependency from outside, the implicit one, which orders
+            // nothing before it (its first scope is TOP_OF_PIPE).
+            first_transitions: (0..subpasses)
+                .map(|s| {
+                    merged(dependencies(s, true))
+                        .unwrap_or_else(|| Barrier::new(TOP, 0, ALL_COMMANDS, ATTACHMENT_ACCESS))
+                })
+                .collect(),
+            // Without a dependency out, the implicit one: every attachment write,
+            // to BOTTOM_OF_PIPE.
+            last_transition: merged(out.clone())
+                .unwrap_or_else(|| Barrier::new(ALL_COMMANDS, ATTACHMENT_WRITES, BOTTOM, 0)),
+            out,
+        }
+    }
 }
 
 /// What the specification's render pass compatibility compares of a render pass
