@@ -1479,6 +1479,66 @@ fn submissions_are_ordered_after_what_the_queue_did_before() {
     }
 }
 
+/// Something recorded into a command buffer.
+type Recording<'a> = dyn Fn(&mut Rec<'_>) -> tuff::Result<()> + 'a;
+
+/// A refused submission leaves nothing of itself in the queue's state, neither
+/// what its command buffer wrote nor what its barriers ordered before the hazard:
+/// the next submissions are compared with the submissions that were made only.
+#[test]
+fn a_refused_submission_leaves_nothing_behind() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pools, mut cbs): (Vec<_>, Vec<_>) = (0..4)
+        .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
+        .unzip();
+    let fill_a = |rec: &mut Rec<'_>| rec.fill_buffer(&o.a, 0, 64, 1);
+    let programs: [&Recording<'_>; 4] = [
+        &|rec| fill_b(&o, rec, false),
+        // Makes the fill of B visible to transfer reads, not to a write: the
+        // second fill of B is refused after the fill of A and the barrier.
+        &|rec| {
+            fill_a(rec)?;
+            barrier(rec, TRANSFER_WRITE, TRANSFER_READ)?;
+            fill_b(&o, rec, false)
+        },
+        &|rec| fill_a(rec),
+        &|rec| copy_b_to_c(&o, rec, false),
+    ];
+    for (cb, program) in cbs.iter_mut().zip(programs) {
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        program(&mut rec).expect("recorded");
+        rec.end().expect("end");
+    }
+    let submit = |cb: &tuff::CommandBuffer| {
+        let list = tuff::HandleSlice::new(&[cb]);
+        s.queue
+            .submit(&[tuff::SubmitInfo::new().command_buffers(&list)], None)
+    };
+    submit(&cbs[0]).expect("the fill of B");
+    let refused = submit(&cbs[1]).expect_err("a second fill of B not ordered after the first");
+    assert!(
+        refused.to_string().contains("WRITE-AFTER-WRITE"),
+        "{refused}"
+    );
+    // A is written by no submission that was made.
+    if let Err(e) = submit(&cbs[2]) {
+        panic!("refused after the refused submission's fill of A: {e}");
+    }
+    // The refused submission's barrier was never made: the copy reads B with
+    // nothing between it and the fill.
+    let refused = submit(&cbs[3]).expect_err("a copy of B not ordered after its fill");
+    assert!(
+        refused.to_string().contains("READ-AFTER-WRITE"),
+        "{refused}"
+    );
+    s.queue.wait_idle().expect("wait");
+    assert_silent(&s.messages);
+}
+
 /// A fence waited for between two submissions orders the first before the second:
 /// nothing of it is compared.
 #[test]

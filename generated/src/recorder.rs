@@ -873,7 +873,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
     }
 
     /// `vkEndCommandBuffer`, in a state where ending is valid.
-    fn finish(mut self) -> Result<()> {
+    fn finish(self) -> Result<()> {
         // SAFETY: the recorder proves the buffer is recording, and its callers are
         // the states outside a render pass instance begun in this buffer
         // (VUID-vkEndCommandBuffer-commandBuffer-00060).
@@ -890,9 +890,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
         }
         self.cb.uses().ended(true);
         self.cb.uses().set_layouts(self.layouts);
-        self.cb.uses().set_hazards(self.hazards.take_log());
-        self.cb.uses().set_auto_barriers(self.hazards.auto_barriers);
-        self.cb.uses().set_spare(core::mem::take(&mut self.hazards));
+        self.cb.uses().set_hazards(self.hazards);
         self.cb.uses().set_queries(self.query_states);
         self.cb.uses().set_event_states(self.event_states);
         self.cb

@@ -12,6 +12,7 @@ use crate::recorder::{Recorder, Scope};
 use crate::structs::{BufferMemoryBarrier, DependencyInfo, ImageMemoryBarrier, MemoryBarrier};
 use crate::Result;
 use ash::vk;
+use smallvec::SmallVec;
 
 type S2 = vk::PipelineStageFlags2;
 type A2 = vk::AccessFlags2;
@@ -86,9 +87,11 @@ pub(crate) struct ImageBarrier {
 #[derive(Debug)]
 pub(crate) struct Barriers {
     pub version: Version,
-    pub memory: Vec<Scopes>,
-    pub buffers: Vec<BufferBarrier>,
-    pub images: Vec<ImageBarrier>,
+    // Inline for the few barriers a command most often has: read on every
+    // barrier command, by its checks and the hazard tracker.
+    pub memory: SmallVec<[Scopes; 1]>,
+    pub buffers: SmallVec<[BufferBarrier; 1]>,
+    pub images: SmallVec<[ImageBarrier; 1]>,
 }
 
 fn widen(stages: vk::PipelineStageFlags) -> S2 {

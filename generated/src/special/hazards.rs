@@ -14,7 +14,7 @@ use crate::handles::{Buffer, Image};
 use crate::recorder::{Recorder, Scope};
 use crate::special::barriers::Barriers;
 use crate::special::image_layouts::Names;
-use crate::state::hazards::{Barrier, Cmd, DrawKey, Hazard, Memory, Usage, EVERY_TEXEL};
+use crate::state::hazards::{Barrier, Cmd, DrawKey, Hazard, Memory, Replayed, Usage, EVERY_TEXEL};
 use crate::state::layouts::Sel;
 use crate::structs::{
     BufferMemoryBarrier, CopyBufferInfo2, CopyBufferToImageInfo2, CopyImageToBufferInfo2,
@@ -1159,7 +1159,7 @@ pub(crate) fn execute_commands<S: Scope>(
     let mut trial = recorder.hazards.clone();
     let mut found = logs
         .iter()
-        .find_map(|log| trial.replay(live, log, SECONDARY).err());
+        .find_map(|log| trial.replay(live, log, SECONDARY, true).err());
     if let Some(f) = &found {
         if recorder.hazards.auto && recorder.instance.is_none() {
             let (h, m) = (**f).clone();
@@ -1168,7 +1168,7 @@ pub(crate) fn execute_commands<S: Scope>(
             trial = recorder.hazards.clone();
             found = logs
                 .iter()
-                .find_map(|log| trial.replay(live, log, SECONDARY).err());
+                .find_map(|log| trial.replay(live, log, SECONDARY, true).err());
         }
     }
     if let Some(f) = found {
@@ -1210,21 +1210,24 @@ pub(crate) fn submit_checks(queue: &crate::handles::Queue, batches: &[Batch]) ->
     let live = device.live();
     let mut queues = live.hazard_queues.lock();
     let q = queues.entry(queue.raw().as_raw()).or_default();
-    let (mut state, number) = q.begin();
+    let number = q.begin(live);
+    let cbs = batches
+        .iter()
+        .flat_map(|b| b.command_buffers.iter().copied())
+        .collect();
+    let mut replayed = Replayed::new(number, cbs);
     for (i, batch) in batches.iter().enumerate() {
         let waits: Vec<Barrier> = batch
             .waits
             .iter()
             .map(|stages| Barrier::new(ALL, WRITE, *stages, READ | WRITE))
             .collect();
-        if !waits.is_empty() {
-            state.apply_global(&waits);
-        }
+        q.wait(&mut replayed, waits);
         for (j, raw) in batch.command_buffers.iter().enumerate() {
             let Some(log) = device.command_buffer_uses(*raw).and_then(|u| u.hazards()) else {
                 continue;
             };
-            if let Err(found) = state.replay(live, &log, number) {
+            if let Err(found) = q.replay(live, &mut replayed, &log) {
                 let (h, m) = *found;
                 return Err(Error::Validation {
                     vuid: id(h.kind),
@@ -1236,11 +1239,7 @@ pub(crate) fn submit_checks(queue: &crate::handles::Queue, batches: &[Batch]) ->
             }
         }
     }
-    let cbs = batches
-        .iter()
-        .flat_map(|b| b.command_buffers.iter().copied())
-        .collect();
-    q.stage(state, number, cbs);
+    q.stage(replayed);
     Ok(())
 }
 
@@ -1253,6 +1252,6 @@ pub(crate) fn submitted(
 ) {
     let live = queue.parent().live();
     if let Some(q) = live.hazard_queues.lock().get_mut(&queue.raw().as_raw()) {
-        q.made(sub, cbs);
+        q.made(live, sub, cbs);
     }
 }

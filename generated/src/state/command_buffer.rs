@@ -288,15 +288,15 @@ impl Uses {
         self.state.lock().layouts = layouts;
     }
 
-    /// What the recording that just ended did to memory.
-    pub(crate) fn set_hazards(&self, log: Vec<crate::state::hazards::Event>) {
-        self.state.lock().hazards = (!log.is_empty()).then(|| Vrc::new(log));
-    }
-
-    /// How many barriers automatic synchronization recorded into the recording
-    /// that just ended.
-    pub(crate) fn set_auto_barriers(&self, n: u32) {
-        self.state.lock().auto_barriers = n;
+    /// What the recording that just ended did to memory (its log, for its
+    /// submissions), how many barriers automatic synchronization recorded into it,
+    /// and its tables (to be emptied and filled again by the next recording).
+    pub(crate) fn set_hazards(&self, mut recording: crate::state::hazards::Recording) {
+        let log = recording.take_log();
+        let mut state = self.state.lock();
+        state.hazards = (!log.is_empty()).then(|| Vrc::new(log));
+        state.auto_barriers = recording.auto_barriers;
+        state.spare = Some(recording);
     }
 
     /// How many barriers automatic synchronization recorded into the last
@@ -308,12 +308,6 @@ impl Uses {
     /// What the last recording did to memory, if anything the tracker saw.
     pub(crate) fn hazards(&self) -> Option<Vrc<Vec<crate::state::hazards::Event>>> {
         self.state.lock().hazards.clone()
-    }
-
-    /// What the recording that just ended left of its hazard tracker (its tables,
-    /// to be emptied and filled again by the next recording).
-    pub(crate) fn set_spare(&self, spare: crate::state::hazards::Recording) {
-        self.state.lock().spare = Some(spare);
     }
 
     /// An empty hazard tracker for a new recording, in the last recording's

@@ -618,6 +618,10 @@ impl Ranges {
         let first = |v: &Vec<(u64, u64, State)>| v.partition_point(|r| r.1 <= start);
         // Most accesses touch a range an earlier one made whole (the same bytes
         // read again): nothing to split or add.
+        if self.0.is_empty() {
+            // A buffer's first access in the recording: one whole range.
+            self.0.push((start, end, State::default()));
+        }
         let at = first(&self.0);
         let exact = self.0.get(at).is_some_and(|r| r.0 == start && r.1 == end);
         let (lo, hi) = if exact {
@@ -752,38 +756,6 @@ pub(crate) enum Event {
 }
 
 impl Recording {
-    /// Becomes a copy of `o` in its own allocations (a queue's state, copied for
-    /// each submission's check).
-    fn copy_of(&mut self, o: &Recording) {
-        // Every field named: a new one is copied here too, or the build fails.
-        let Recording {
-            buffers,
-            images,
-            commands,
-            auto,
-            generation,
-            drawn,
-            pending,
-            buffer_writes,
-            auto_barriers,
-            last_draw,
-            started,
-            log,
-            unlogged,
-            // Allocations only: nothing to copy.
-            spare_states: _,
-        } = o;
-        self.buffers.clone_from(buffers);
-        self.images.clone_from(images);
-        self.drawn.0.clone_from(&drawn.0);
-        self.drawn.1 = drawn.1;
-        self.log.clone_from(log);
-        (self.commands, self.auto, self.generation) = (*commands, *auto, *generation);
-        (self.pending, self.buffer_writes) = (*pending, *buffer_writes);
-        (self.auto_barriers, self.last_draw) = (*auto_barriers, *last_draw);
-        (self.started, self.unlogged) = (*started, *unlogged);
-    }
-
     /// This recording emptied for a new one that logs into `log`: its tables and
     /// the log keep their allocations.
     pub(crate) fn recycled(self, mut log: Vec<Event>) -> Self {
@@ -1105,11 +1077,14 @@ impl Recording {
 
     /// Replays a recording's changes on this (a queue's) state as the commands of
     /// submission `submission`: the first hazard, with its memory, stops it.
+    /// Unless `check`, nothing is compared: the changes are only made (a queue's
+    /// state rebuilt from submissions already checked).
     pub(crate) fn replay(
         &mut self,
         live: &Live,
         log: &[Event],
         submission: u32,
+        check: bool,
     ) -> Result<(), Box<(Hazard, Memory)>> {
         let at = |c: Cmd| Cmd { submission, ..c };
         for e in log {
@@ -1119,7 +1094,7 @@ impl Recording {
                         cmd: at(u.cmd),
                         ..*u
                     };
-                    if let Some(h) = checked.then(|| self.hazard(m, &u)).flatten() {
+                    if let Some(h) = (check && *checked).then(|| self.hazard(m, &u)).flatten() {
                         return Err(Box::new((h, *m)));
                     }
                     self.record_as(live, m, u, *checked);
@@ -1128,7 +1103,7 @@ impl Recording {
                 Event::Buffer(buffer, s, e, b) => self.apply_buffer(*buffer, *s, *e, b),
                 Event::Image(image, sel, b, transition) => {
                     let transition = transition.map(at);
-                    if let Some(cmd) = transition {
+                    if let Some(cmd) = transition.filter(|_| check) {
                         if let Some(h) = self.transition_hazard(*image, sel, b, cmd) {
                             return Err(Box::new((h, Memory::Image(*image, *sel, EVERY_TEXEL))));
                         }
@@ -1171,52 +1146,147 @@ impl Recording {
 /// What a queue's submissions not yet known complete have done to memory, for
 /// each new submission to be checked against (submission order, with the
 /// semaphore waits between its batches, as the specification orders them).
+///
+/// A submission is checked by replaying its command buffers on the queue's state
+/// itself: nothing is copied on the way that succeeds. A refused submission, or a
+/// checked one that was not made after all (a later rule refused it), leaves the
+/// state to be rebuilt from the submissions still running, which are kept for that.
 #[derive(Default)]
 pub(crate) struct QueueHazards {
     state: Recording,
     /// The number of the next submission.
     next: u32,
-    /// The submissions replayed, by number, while not known complete.
-    subs: Vec<(u32, Vweak<crate::state::Submission>)>,
-    /// The state a checked submission leaves, with its number and command buffers,
-    /// until it is made.
-    staged: Option<(Recording, u32, Vec<vk::CommandBuffer>)>,
-    /// The state before the last submission made, whose allocations the next
-    /// submission's copy reuses.
-    scratch: Recording,
+    /// The submissions made and replayed on the state, while not known complete.
+    subs: Vec<Replayed>,
+    /// The last submission checked and replayed on the state, until it is made.
+    staged: Option<Replayed>,
+}
+
+/// A submission replayed on a queue's state: its number, its submission once made,
+/// its command buffers, and for each batch the barriers of its semaphore waits and
+/// its command buffers' logs (held weakly: a command buffer is recorded again only
+/// once its submissions are complete, and its log's allocation is then reused).
+pub(crate) struct Replayed {
+    number: u32,
+    sub: Option<Vweak<crate::state::Submission>>,
+    cbs: Vec<vk::CommandBuffer>,
+    batches: Vec<ReplayedBatch>,
+}
+
+/// One batch of a [`Replayed`] submission.
+struct ReplayedBatch {
+    /// The barriers its semaphore waits make.
+    waits: Vec<Barrier>,
+    /// Its command buffers' logs.
+    logs: Vec<Vweak<Vec<Event>>>,
+}
+
+impl Replayed {
+    /// A submission numbered `number` of `cbs`, not yet replayed.
+    pub(crate) fn new(number: u32, cbs: Vec<vk::CommandBuffer>) -> Self {
+        Replayed {
+            number,
+            sub: None,
+            cbs,
+            batches: Vec::new(),
+        }
+    }
 }
 
 impl QueueHazards {
-    /// The state a new submission starts from, its number, and the device: the
-    /// accesses of complete submissions dropped.
-    pub(crate) fn begin(&mut self) -> (Recording, u32) {
-        self.subs
-            .retain(|(_, w)| w.upgrade().is_some_and(|s| !s.is_complete()));
-        let live: Vec<u32> = self.subs.iter().map(|(n, _)| *n).collect();
-        self.state.prune(|n| !live.contains(&n));
+    /// Readies the state for a new submission and returns its number: the
+    /// accesses of complete submissions dropped, and the state rebuilt if the last
+    /// submission checked was not made.
+    pub(crate) fn begin(&mut self, live: &Live) -> u32 {
+        self.subs.retain(|r| {
+            r.sub
+                .as_ref()
+                .and_then(Vweak::upgrade)
+                .is_some_and(|s| !s.is_complete())
+        });
+        if self.staged.take().is_some() {
+            self.rebuild(live);
+        } else {
+            let running: SmallVec<[u32; 4]> = self.subs.iter().map(|r| r.number).collect();
+            self.state.prune(|n| !running.contains(&n));
+        }
         self.state.unlogged = true;
         self.next += 1;
-        let mut copy = core::mem::take(&mut self.scratch);
-        copy.copy_of(&self.state);
-        (copy, self.next)
+        self.next
     }
 
-    /// The state a checked submission of `cbs` leaves, kept until it is made.
-    pub(crate) fn stage(&mut self, state: Recording, number: u32, cbs: Vec<vk::CommandBuffer>) {
-        self.staged = Some((state, number, cbs));
-    }
-
-    /// A submission of `cbs` was made as `sub`: the state its check left is the
-    /// queue's (none is kept for a submission that was not checked, or whose check
-    /// a later rule refused).
-    pub(crate) fn made(&mut self, sub: &Vrc<crate::state::Submission>, cbs: &[vk::CommandBuffer]) {
-        match self.staged.take() {
-            Some((state, number, checked)) if checked == cbs => {
-                self.scratch = core::mem::replace(&mut self.state, state);
-                self.subs.push((number, Vrc::downgrade(sub)));
-            }
-            _ => {}
+    /// Applies a batch's semaphore waits (`waits`: the barriers they make) as part
+    /// of the submission `replayed`.
+    pub(crate) fn wait(&mut self, replayed: &mut Replayed, waits: Vec<Barrier>) {
+        if !waits.is_empty() {
+            self.state.apply_global(&waits);
         }
+        replayed.batches.push(ReplayedBatch {
+            waits,
+            logs: Vec::new(),
+        });
+    }
+
+    /// Replays one command buffer's log as part of the submission `replayed`, in
+    /// its last batch: the first hazard stops it, and the state is rebuilt without
+    /// the submission.
+    pub(crate) fn replay(
+        &mut self,
+        live: &Live,
+        replayed: &mut Replayed,
+        log: &Vrc<Vec<Event>>,
+    ) -> Result<(), Box<(Hazard, Memory)>> {
+        if let Err(found) = self.state.replay(live, log, replayed.number, true) {
+            self.rebuild(live);
+            return Err(found);
+        }
+        if let Some(batch) = replayed.batches.last_mut() {
+            batch.logs.push(Vrc::downgrade(log));
+        }
+        Ok(())
+    }
+
+    /// The submission checked and replayed, kept until it is made.
+    pub(crate) fn stage(&mut self, replayed: Replayed) {
+        self.staged = Some(replayed);
+    }
+
+    /// A submission of `cbs` was made as `sub`: the one checked is the queue's (a
+    /// submission that was not checked leaves nothing; one checked but not made is
+    /// undone at the next).
+    pub(crate) fn made(
+        &mut self,
+        live: &Live,
+        sub: &Vrc<crate::state::Submission>,
+        cbs: &[vk::CommandBuffer],
+    ) {
+        match self.staged.take() {
+            Some(mut r) if r.cbs == cbs => {
+                r.sub = Some(Vrc::downgrade(sub));
+                self.subs.push(r);
+            }
+            Some(_) => self.rebuild(live),
+            None => {}
+        }
+    }
+
+    /// The state again from the submissions still running, replayed in order (they
+    /// were checked when made: nothing is compared).
+    fn rebuild(&mut self, live: &Live) {
+        let mut state = core::mem::take(&mut self.state).recycled(Vec::new());
+        state.unlogged = true;
+        for r in &self.subs {
+            for batch in &r.batches {
+                if !batch.waits.is_empty() {
+                    state.apply_global(&batch.waits);
+                }
+                for log in batch.logs.iter().filter_map(Vweak::upgrade) {
+                    // Unchecked: a replay that checks nothing finds nothing.
+                    let _ = state.replay(live, &log, r.number, false);
+                }
+            }
+        }
+        self.state = state;
     }
 }
 
