@@ -10,16 +10,15 @@ use crate::handles::{Device, Instance};
 use crate::state::Features;
 use crate::Handle;
 use ash::vk;
-use rustc_hash::FxHashMap;
 use tuff_runtime::Vutex;
 
 /// The objects created, allocated or retrieved from one device or instance. Counted,
 /// because non-dispatchable handles need not be unique.
-pub(crate) struct Objects(Vutex<FxHashMap<(vk::ObjectType, u64), u32>>);
+pub(crate) struct Objects(Vutex<crate::state::HashMap<(vk::ObjectType, u64), u32>>);
 
 impl Default for Objects {
     fn default() -> Self {
-        Objects(Vutex::new(FxHashMap::default()))
+        Objects(Vutex::new(crate::state::HashMap::default()))
     }
 }
 

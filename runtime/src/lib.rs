@@ -29,9 +29,11 @@ pub use memory::{
     DeviceOwner, GpuAllocator, MemoryLocation, NaiveAllocator,
 };
 pub use sync::{
-    lock_all, HostSync, HostSyncGuard, MaybeSend, MaybeSendSync, Retain, Retained, Vrc, Vutex,
-    VutexGuard, Vweak, MULTI_THREAD,
+    count_hash, lock_all, HostSync, HostSyncGuard, MaybeSend, MaybeSendSync, Retain, Retained, Vrc,
+    Vutex, VutexGuard, Vweak, MULTI_THREAD,
 };
+#[cfg(feature = "work_counts")]
+pub use sync::{hashes_taken, locks_taken};
 
 /// Always true: the generated code runs its checks of implicit rules in every safe
 /// method, so that no build leaves a safe method without the checks its safety needs

@@ -74,6 +74,68 @@ pub trait MaybeSend {}
 #[cfg(not(feature = "multi_thread"))]
 impl<T: ?Sized> MaybeSend for T {}
 
+/// How many locks this thread has taken ([`Vutex`] and [`HostSync`], held or tried),
+/// with the `work_counts` feature: tests assert that a path takes none (a count is
+/// work, not time, so noise cannot fool them). Without the feature nothing counts.
+///
+/// ```
+/// # #[cfg(feature = "work_counts")] {
+/// let before = tuff_runtime::locks_taken();
+/// drop(tuff_runtime::Vutex::new(0).lock());
+/// assert_eq!(tuff_runtime::locks_taken(), before + 1);
+/// # }
+/// ```
+#[cfg(feature = "work_counts")]
+pub fn locks_taken() -> u64 {
+    COUNTS.with(|c| c.get().0)
+}
+
+/// How many hashes this thread has computed through [`count_hash`] (tuff's record
+/// tables count every lookup and insertion), with the `work_counts` feature.
+///
+/// ```
+/// # #[cfg(feature = "work_counts")] {
+/// let before = tuff_runtime::hashes_taken();
+/// tuff_runtime::count_hash();
+/// assert_eq!(tuff_runtime::hashes_taken(), before + 1);
+/// # }
+/// ```
+#[cfg(feature = "work_counts")]
+pub fn hashes_taken() -> u64 {
+    COUNTS.with(|c| c.get().1)
+}
+
+#[cfg(feature = "work_counts")]
+thread_local! {
+    /// Locks and hashes taken by this thread.
+    static COUNTS: core::cell::Cell<(u64, u64)> = const { core::cell::Cell::new((0, 0)) };
+}
+
+/// Counts one lock taken by this thread (with `work_counts`; nothing without).
+#[inline(always)]
+fn count_lock() {
+    #[cfg(feature = "work_counts")]
+    COUNTS.with(|c| {
+        let (locks, hashes) = c.get();
+        c.set((locks + 1, hashes));
+    });
+}
+
+/// Counts one hash computed by this thread (with `work_counts`; nothing without):
+/// tuff's hashers call it.
+///
+/// ```
+/// tuff_runtime::count_hash();
+/// ```
+#[inline(always)]
+pub fn count_hash() {
+    #[cfg(feature = "work_counts")]
+    COUNTS.with(|c| {
+        let (locks, hashes) = c.get();
+        c.set((locks, hashes + 1));
+    });
+}
+
 /// A lock for externally synchronized Vulkan objects, with one API in both modes.
 ///
 /// ```
@@ -142,6 +204,7 @@ impl<T> Vutex<T> {
     /// assert_eq!(*count.lock(), 1);
     /// ```
     pub fn lock(&self) -> VutexGuard<'_, T> {
+        count_lock();
         #[cfg(not(feature = "multi_thread"))]
         {
             self.cell
@@ -164,6 +227,7 @@ impl<T> Vutex<T> {
     /// assert!(v.try_lock().is_some());
     /// ```
     pub fn try_lock(&self) -> Option<VutexGuard<'_, T>> {
+        count_lock();
         #[cfg(not(feature = "multi_thread"))]
         {
             self.cell.try_borrow_mut().ok()
@@ -316,6 +380,7 @@ impl HostSync {
     /// Waits until no other thread holds the object, then holds it.
     #[inline]
     pub fn lock(&self) -> HostSyncGuard {
+        count_lock();
         HostSyncGuard {
             #[cfg(feature = "multi_thread")]
             _guard: parking_lot::ReentrantMutex::lock_arc(&self.lock),
@@ -325,6 +390,7 @@ impl HostSync {
     /// Holds the object if no other thread does, without waiting.
     #[inline]
     pub fn try_lock(&self) -> Option<HostSyncGuard> {
+        count_lock();
         #[cfg(feature = "multi_thread")]
         {
             parking_lot::ReentrantMutex::try_lock_arc(&self.lock)

@@ -3,8 +3,8 @@
 
 use super::live::Live;
 use super::read;
+use super::HashMap;
 use ash::vk::{self, Handle as _};
-use rustc_hash::FxHashMap as HashMap;
 use tuff_runtime::{Retained, Vrc, Vweak};
 
 /// Whether a descriptor type takes a dynamic offset at binding.

@@ -22,7 +22,7 @@ use super::queue::Submission;
 use crate::{Error, Result};
 use ash::vk;
 // Looked up on every event command: a fast hash for handles.
-use rustc_hash::FxHashMap as HashMap;
+use super::HashMap;
 use std::sync::Arc;
 use tuff_runtime::{Vrc, Vweak};
 

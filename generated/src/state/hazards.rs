@@ -17,11 +17,11 @@
 //! What the recording found at its start (writes of earlier submissions) is not
 //! known here: the first access of each range is never a hazard.
 
+use super::HashMap;
 use crate::state::layouts::{Sel, Shape};
 use crate::state::Live;
 use crate::sync_tables::{ACCESSES, EVERY_STAGE, STAGES};
 use ash::vk::{self, Handle as _};
-use rustc_hash::FxHashMap as HashMap;
 use smallvec::{smallvec, SmallVec};
 use std::sync::OnceLock;
 use tuff_runtime::{Vrc, Vweak};

@@ -14,7 +14,7 @@ use crate::state::{ImageRecord, Live};
 use crate::{Error, Result};
 use ash::vk::{self, Handle as _};
 // Looked up on every command that names an image layout: a fast hash for handles.
-use rustc_hash::FxHashMap as HashMap;
+use super::HashMap;
 
 /// A subresource whose layout the recording has not yet set or needed.
 const UNKNOWN: vk::ImageLayout = vk::ImageLayout::from_raw(i32::MIN);

@@ -23,8 +23,8 @@ use super::render_pass::RenderPassRecord;
 use super::swapchain::SwapchainState;
 use super::sync::EventSubmissions;
 use super::view::ViewRecord;
+use super::HashMap;
 use ash::vk;
-use rustc_hash::FxHashMap as HashMap;
 use tuff_runtime::{HostSync, Retained, Vrc, Vutex, Vweak};
 
 /// A live object, weakly, and its host synchronization.

@@ -21,8 +21,7 @@ pub(crate) struct MemoryRecord {
 }
 
 /// The records of a device's memories, by raw handle, locked.
-pub(crate) type MemoryRecords<'a> =
-    tuff_runtime::VutexGuard<'a, rustc_hash::FxHashMap<u64, MemoryRecord>>;
+pub(crate) type MemoryRecords<'a> = tuff_runtime::VutexGuard<'a, super::HashMap<u64, MemoryRecord>>;
 
 /// Where a buffer or image is bound: the raw memory, the offset there and the
 /// bytes it takes.

@@ -82,3 +82,46 @@ pub(super) unsafe fn read<T: Copy + Default>(ptr: *const T, i: usize) -> T {
         unsafe { *ptr.add(i) }
     }
 }
+
+/// The hash map of the device's records and the recorder's tables: FxHash (their
+/// keys are handles and small tuples, looked up on every recorded command), each hash
+/// counted by `tuff_runtime::count_hash` (nothing in a build without the runtime's
+/// `work_counts`; with it, tests assert the draw path computes none).
+pub(crate) type HashMap<K, V> =
+    std::collections::HashMap<K, V, core::hash::BuildHasherDefault<CountedFx>>;
+
+/// [`rustc_hash::FxHasher`], counted ([`HashMap`]).
+#[derive(Default)]
+pub(crate) struct CountedFx(rustc_hash::FxHasher);
+
+impl core::hash::Hasher for CountedFx {
+    #[inline]
+    fn finish(&self) -> u64 {
+        tuff_runtime::count_hash();
+        self.0.finish()
+    }
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        self.0.write(bytes);
+    }
+    #[inline]
+    fn write_u8(&mut self, n: u8) {
+        self.0.write_u8(n);
+    }
+    #[inline]
+    fn write_u16(&mut self, n: u16) {
+        self.0.write_u16(n);
+    }
+    #[inline]
+    fn write_u32(&mut self, n: u32) {
+        self.0.write_u32(n);
+    }
+    #[inline]
+    fn write_u64(&mut self, n: u64) {
+        self.0.write_u64(n);
+    }
+    #[inline]
+    fn write_usize(&mut self, n: usize) {
+        self.0.write_usize(n);
+    }
+}

@@ -14,7 +14,7 @@ use super::queue::Submission;
 use crate::{Error, Result};
 use ash::vk::{self, Handle as _};
 // Looked up on every query command: a fast hash for handles.
-use rustc_hash::FxHashMap as HashMap;
+use super::HashMap;
 use tuff_runtime::{Vrc, Vweak};
 
 /// Where one query stands.

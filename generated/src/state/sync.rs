@@ -2,8 +2,8 @@
 
 use super::live::Live;
 use super::queue::Submission;
+use super::HashMap;
 use ash::vk::{self, Handle as _};
-use rustc_hash::FxHashMap as HashMap;
 use tuff_runtime::{Vrc, Vweak};
 
 /// What the device knows of a timeline semaphore's value: a value it has reached,
