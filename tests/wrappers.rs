@@ -973,6 +973,18 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
             source.memory().write(source.memory().size(), &[1u8]),
             Err(tuff::Error::Map(_))
         ));
+        // A run of writes under one lock: the same checks, the same bytes.
+        let doubled: Vec<u32> = words[32..63].iter().map(|w| w * 2).collect();
+        let size = source.memory().size();
+        {
+            let mut held = source.memory().lock();
+            held.write(128, &doubled).expect("write under the lock");
+            assert_eq!(held.read::<u32>(128, 31).expect("read back"), doubled);
+            assert!(matches!(
+                held.write_value(size, &1u8),
+                Err(tuff::Error::Map(_))
+            ));
+        }
         // The copy's source goes, memory and all, while the copy may still run: the
         // submission keeps it (the layer would report memory freed in use).
         submit_and_wait(&s, |rec| {
@@ -989,6 +1001,7 @@ fn allocated_buffers_are_bound_written_and_kept_while_in_flight() {
             source
         });
         let mut expected = words.clone();
+        expected[32..63].copy_from_slice(&doubled);
         expected[63] = 7;
         assert_eq!(
             target.memory().read::<u32>(0, 64).expect("read"),

@@ -240,7 +240,9 @@ pub use ash::vk;
 #[cfg(feature = "ext_debug_utils")]
 pub use diagnostics::debug_log::MessageLog;
 pub use handles::*;
-pub use memory::allocation::{Bound, BoundMemory, GpuAllocator, MemoryLocation, NaiveAllocator};
+pub use memory::allocation::{
+    Bound, BoundMemory, GpuAllocator, LockedMemory, MemoryLocation, NaiveAllocator,
+};
 pub use memory::indirect::{IndirectArguments, IndirectBuffer};
 pub use memory::mapping::MappedMemory;
 pub use recorder::{

@@ -138,7 +138,9 @@ impl Scene for Teapots {
 
     fn update(&mut self, view: &View) -> Result<()> {
         let block = self.layout_data.camera(view.extent);
-        let memory = self.uniforms[view.slot].memory();
+        // One lock for the frame's writes (a lock per write would drain the
+        // write-combining buffers of host-visible VRAM each time with `multi_thread`).
+        let mut memory = self.uniforms[view.slot].memory().lock();
         let size = std::mem::size_of::<CameraBlock>() as u64;
         for i in 0..self.writes {
             memory.write_value(i * size, &block)?;
