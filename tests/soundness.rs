@@ -3605,6 +3605,10 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
                 .expect("vertex buffer");
             rec.draw(3, 1, 0, 0)
                 .expect("a draw with its vertex buffer bound");
+            // The same state with more vertices than the buffer holds: the draw's
+            // ranges are checked again, not taken from the draw before.
+            assert_eq!(vuid(rec.draw(1000, 1, 0, 0)), "VUID-vkCmdDraw-None-02721");
+            rec.draw(3, 1, 0, 0).expect("the first draw again");
         }
         rec.bind_pipeline(vk::PipelineBindPoint::GRAPHICS, &p.graphics)
             .expect("bind");
@@ -3619,6 +3623,10 @@ fn every_draw_and_dispatch_needs_a_bound_pipeline() {
             .expect("push");
             rec.draw_indexed(64, 1, 0, 0, 0)
                 .expect("64 indices inside the buffer");
+            // One index more on the same state: checked again.
+            assert_eq!(vuid(rec.draw_indexed(65, 1, 0, 0, 0)), past);
+            rec.draw_indexed(64, 1, 0, 0, 0)
+                .expect("the draw inside the buffer again");
         }
         rec.end_render_pass().end().expect("end");
         if !unchecked {

@@ -76,6 +76,20 @@ impl OutsideRenderPass for InVideoCoding {}
 /// draw's reads were recorded, cleared with the others by any change of state.
 const HAZARD_DRAW: u8 = 1 << 4;
 
+/// The [`Recorder::verified`] bit of the last draw's parameter checks (its index,
+/// vertex and instance ranges): set when they passed, cleared with the others by any
+/// change of state.
+const DRAW_PARAMS: u8 = 1 << 5;
+
+/// The [`Recorder::verified`] bits of the descriptor layouts the last draw (bit 6)
+/// or dispatch (bit 7) required: a run on one state requires the same.
+const LAYOUTS_USED: u8 = 1 << 6;
+
+/// A draw's parameters, as its range checks read them: the command (its rule's
+/// identifier's address), the first and count of its indices or vertices, its first
+/// instance and instance count, and its vertex offset.
+pub(crate) type DrawParams = (usize, u32, u32, u32, u32, i32);
+
 /// Tells the buffer's lifecycle state when its recorder goes, however it goes.
 struct Alive(Vrc<Uses>);
 
@@ -471,6 +485,8 @@ pub struct Recorder<'c, S: Scope> {
     /// of draws on one state is checked once. Cleared by every recorded command but
     /// the draws, dispatches and push constants, and by every change of state.
     verified: u8,
+    /// The parameters of the last draw whose range checks passed ([`DRAW_PARAMS`]).
+    draw_params: DrawParams,
     /// The command buffer's initial device mask (`VkDeviceGroupCommandBufferBeginInfo`,
     /// or every physical device of the device).
     pub(crate) device_mask: u32,
@@ -540,6 +556,7 @@ impl<'c> Recorder<'c, Outside> {
             counts: (None, None),
             depth_stencil: DepthStencil::default(),
             verified: 0,
+            draw_params: (0, 0, 0, 0, 0, 0),
             device_mask,
             current_device_mask: device_mask,
             _state: PhantomData,
@@ -586,6 +603,34 @@ impl<'c, S: Scope> Recorder<'c, S> {
     pub(crate) fn hazard_draw_recorded(&mut self, key: crate::state::hazards::DrawKey) {
         self.verified |= HAZARD_DRAW;
         self.hazards.set_last_draw(key);
+    }
+
+    /// Runs a draw's checks of its parameters (`params`: the ranges it reads),
+    /// unless the last draw's passed with the same parameters and nothing changed
+    /// since: they read the parameters and the state only.
+    #[inline]
+    pub(crate) fn verify_draw_params(
+        &mut self,
+        params: DrawParams,
+        checks: impl FnOnce(&Self) -> Result<()>,
+    ) -> Result<()> {
+        if self.verified & DRAW_PARAMS != 0 && self.draw_params == params {
+            return Ok(());
+        }
+        checks(self)?;
+        self.verified |= DRAW_PARAMS;
+        self.draw_params = params;
+        Ok(())
+    }
+
+    /// Whether the descriptor layouts a draw (`index` 0) or dispatch (1) requires
+    /// were required with nothing changed since; marks them required.
+    #[inline]
+    pub(crate) fn layouts_used_again(&mut self, index: usize) -> bool {
+        let bit = LAYOUTS_USED << index;
+        let again = self.verified & bit != 0;
+        self.verified |= bit;
+        again
     }
 
     /// Runs `checks` of the state at bind point `index`, unless they passed with
@@ -864,6 +909,7 @@ impl<'c, S: Scope> Recorder<'c, S> {
             counts: self.counts,
             depth_stencil: self.depth_stencil,
             verified: 0,
+            draw_params: self.draw_params,
             device_mask: self.device_mask,
             current_device_mask: self.current_device_mask,
             alive: self.alive,

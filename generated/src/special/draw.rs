@@ -75,7 +75,18 @@ pub(crate) fn draw_checks<S: Scope>(
         stride_checks(recorder)?;
         draw_state_checks(recorder, rules)
     })?;
-    vertices_checks(recorder, vertices)
+    let Some((first, count, first_instance, instance_count, vuid, _)) = vertices else {
+        return Ok(());
+    };
+    let params = (
+        vuid.as_ptr() as usize,
+        first,
+        count,
+        first_instance,
+        instance_count,
+        0,
+    );
+    recorder.verify_draw_params(params, |recorder| vertices_checks(recorder, vertices))
 }
 
 /// The vertices and instances of one draw (a direct draw's parameters, or the
@@ -648,6 +659,10 @@ pub(crate) fn descriptor_layouts_used<S: Scope>(
     let Some(i) = crate::recorder::Bound::index(bind_point) else {
         return;
     };
+    // A run of draws on one state requires the same layouts: the first does.
+    if recorder.layouts_used_again(i) {
+        return;
+    }
     let bound = &recorder.bound[i];
     let n = bound.pipeline.as_ref().map_or(0, |p| p.layout.sets.len());
     // Most draws read no image descriptor: nothing to collect.
@@ -1059,7 +1074,19 @@ pub(crate) fn indexed_draw_checks<S: Scope>(
     if recorder.bound[0].index.is_none() {
         return refuse(bound_vuid, "no index buffer is bound");
     }
-    indexed_range_checks(recorder, range)
+    let Some((count, first, first_instance, instance_count, vertex_offset, vuid, ..)) = range
+    else {
+        return Ok(());
+    };
+    let params = (
+        vuid.as_ptr() as usize,
+        first,
+        count,
+        first_instance,
+        instance_count,
+        vertex_offset,
+    );
+    recorder.verify_draw_params(params, |recorder| indexed_range_checks(recorder, range))
 }
 
 /// The indices, vertices and instances of one indexed draw (a direct draw's
