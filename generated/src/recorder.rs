@@ -85,10 +85,10 @@ const DRAW_PARAMS: u8 = 1 << 5;
 /// or dispatch (bit 7) required: a run on one state requires the same.
 const LAYOUTS_USED: u8 = 1 << 6;
 
-/// A draw's parameters, as its range checks read them: the command (its rule's
-/// identifier's address), the first and count of its indices or vertices, its first
-/// instance and instance count, and its vertex offset.
-pub(crate) type DrawParams = (usize, u32, u32, u32, u32, i32);
+/// A draw's parameters, as its range checks read them: the command (its range rule's
+/// identifier), the first and count of its indices or vertices, its first instance
+/// and instance count, and its vertex offset.
+pub(crate) type DrawParams = (&'static str, [u32; 4], i32);
 
 /// Tells the buffer's lifecycle state when its recorder goes, however it goes.
 struct Alive(Vrc<Uses>);
@@ -556,7 +556,7 @@ impl<'c> Recorder<'c, Outside> {
             counts: (None, None),
             depth_stencil: DepthStencil::default(),
             verified: 0,
-            draw_params: (0, 0, 0, 0, 0, 0),
+            draw_params: ("", [0; 4], 0),
             device_mask,
             current_device_mask: device_mask,
             _state: PhantomData,
@@ -614,7 +614,10 @@ impl<'c, S: Scope> Recorder<'c, S> {
         params: DrawParams,
         checks: impl FnOnce(&Self) -> Result<()>,
     ) -> Result<()> {
-        if self.verified & DRAW_PARAMS != 0 && self.draw_params == params {
+        // The command by its identifier's address: one comparison, not the text's.
+        let same =
+            |a: &DrawParams, b: &DrawParams| core::ptr::eq(a.0, b.0) && a.1 == b.1 && a.2 == b.2;
+        if self.verified & DRAW_PARAMS != 0 && same(&self.draw_params, &params) {
             return Ok(());
         }
         checks(self)?;

@@ -78,14 +78,7 @@ pub(crate) fn draw_checks<S: Scope>(
     let Some((first, count, first_instance, instance_count, vuid, _)) = vertices else {
         return Ok(());
     };
-    let params = (
-        vuid.as_ptr() as usize,
-        first,
-        count,
-        first_instance,
-        instance_count,
-        0,
-    );
+    let params = (vuid, [first, count, first_instance, instance_count], 0);
     recorder.verify_draw_params(params, |recorder| vertices_checks(recorder, vertices))
 }
 
@@ -1079,11 +1072,8 @@ pub(crate) fn indexed_draw_checks<S: Scope>(
         return Ok(());
     };
     let params = (
-        vuid.as_ptr() as usize,
-        first,
-        count,
-        first_instance,
-        instance_count,
+        vuid,
+        [first, count, first_instance, instance_count],
         vertex_offset,
     );
     recorder.verify_draw_params(params, |recorder| indexed_range_checks(recorder, range))
