@@ -466,10 +466,7 @@ impl BoundMemory {
     /// # Ok(()) }
     /// ```
     pub fn write<T: bytemuck::NoUninit>(&self, offset: u64, data: &[T]) -> Result<()> {
-        self.cell
-            .lock()
-            .write_slice(offset, data)
-            .map_err(Error::Map)
+        self.lock().write(offset, data)
     }
 
     /// Copies one value to `offset` bytes into the memory: the fast path for a uniform
@@ -481,7 +478,7 @@ impl BoundMemory {
     /// # Ok(()) }
     /// ```
     pub fn write_value<T: bytemuck::NoUninit>(&self, offset: u64, value: &T) -> Result<()> {
-        self.cell.lock().write(offset, value).map_err(Error::Map)
+        self.lock().write_value(offset, value)
     }
 
     /// Holds the memory for a run of writes and reads: one lock for all of them,
@@ -516,12 +513,7 @@ impl BoundMemory {
         offset: u64,
         count: usize,
     ) -> Result<Vec<T>> {
-        let mut out = vec![T::zeroed(); count];
-        self.cell
-            .lock()
-            .read_slice(offset, &mut out)
-            .map_err(Error::Map)?;
-        Ok(out)
+        self.lock().read(offset, count)
     }
 
     /// The size in bytes, at least what the resource required.
