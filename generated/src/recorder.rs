@@ -455,12 +455,10 @@ pub struct Recorder<'c, S: Scope> {
     pub(crate) event_states: crate::state::events::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
     pub(crate) pass_images: Vec<vk::Image>,
-    /// The render pass and the framebuffer's attachments of the instance the
-    /// recording began, for the hazard tracker's subpass edges and end.
-    pub(crate) pass_memory: Option<(
-        Vrc<crate::state::RenderPassRecord>,
-        crate::state::AttachmentMemory,
-    )>,
+    /// The framebuffer's attachments of the render pass instance the recording
+    /// began, for the hazard tracker's subpass edges and end (the render pass's
+    /// record is the instance's).
+    pub(crate) pass_memory: Option<crate::state::AttachmentMemory>,
     /// The descriptor sets bound so far, each with its generation then: an update
     /// that changes it leaves the buffer invalid.
     pub(crate) sets: Vec<(u64, u64)>,

@@ -24,6 +24,7 @@ use crate::sync_tables::{Facts, Use};
 use crate::{Error, Handle, Result};
 use ash::vk::{self, Handle as _};
 use smallvec::SmallVec;
+use tuff_runtime::Vrc;
 
 /// Built with `--cfg tuff_untracked` (the stage benchmark's build without the
 /// tracker, to measure what it costs): every entry point returns at once.
@@ -939,9 +940,10 @@ fn aspects(sel: Sel) -> [(Sel, bool, bool); 2] {
 fn subpass_begins<S: Scope>(
     recorder: &mut Recorder<'_, S>,
     name: &'static str,
+    record: Option<Vrc<crate::state::RenderPassRecord>>,
     subpass: u32,
 ) -> Result<()> {
-    let Some((record, memory)) = recorder.pass_memory.clone() else {
+    let (Some(record), Some(memory)) = (record, recorder.pass_memory.clone()) else {
         return recorder_next(recorder, name);
     };
     let edges = &record.edges;
@@ -1028,11 +1030,11 @@ pub(crate) fn begin_render_pass<S: Scope>(
     }
     let raw = begin.as_raw();
     flush_before_instance(recorder);
+    // The instance is not begun yet: its render pass's record is looked up here.
     let live = recorder.device().live();
-    recorder.pass_memory = live
-        .render_pass(raw.render_pass)
-        .zip(live.framebuffer_memory(raw.framebuffer));
-    subpass_begins(recorder, facts.name, 0)
+    let record = live.render_pass(raw.render_pass);
+    recorder.pass_memory = live.framebuffer_memory(raw.framebuffer);
+    subpass_begins(recorder, facts.name, record, 0)
 }
 
 /// With automatic synchronization on, makes every write recorded since the last
@@ -1062,7 +1064,10 @@ pub(crate) fn next_subpass<S: Scope>(recorder: &mut Recorder<'_, S>, facts: &Fac
         return Ok(());
     }
     match recorder.instance.as_ref() {
-        Some(i) => subpass_begins(recorder, facts.name, i.subpass + 1),
+        Some(i) => {
+            let (record, next) = (i.record.clone(), i.subpass + 1);
+            subpass_begins(recorder, facts.name, record, next)
+        }
         None => recorder_next(recorder, facts.name),
     }
 }
@@ -1077,7 +1082,8 @@ pub(crate) fn end_render_pass<S: Scope>(
     if UNTRACKED {
         return Ok(());
     }
-    let Some((record, memory)) = recorder.pass_memory.take() else {
+    let record = recorder.instance.as_ref().and_then(|i| i.record.clone());
+    let (Some(record), Some(memory)) = (record, recorder.pass_memory.take()) else {
         return recorder_next(recorder, facts.name);
     };
     let (out, transition_barrier) = (&record.edges.out, &record.edges.last_transition);
