@@ -10,6 +10,7 @@ use crate::state::{dynamic_bit, DepthStencil};
 use crate::{Error, Handle, Result};
 use ash::vk;
 use core::marker::PhantomData;
+use smallvec::SmallVec;
 use tuff_runtime::{Retained, Vrc};
 
 /// Any recording state, inside a video coding scope or not: the commands Vulkan
@@ -99,19 +100,21 @@ impl Drop for Alive {
     }
 }
 
-/// What a recorder has bound at one bind point.
+/// What a recorder has bound at one bind point. Its lists hold the first few sets
+/// and vertex bindings inline: a recorder is made per recording, and a frame that
+/// binds one set and one vertex buffer then allocates nothing for them.
 #[derive(Default)]
 pub(crate) struct Bound {
     /// The pipeline's record.
-    pub pipeline: Option<crate::state::PipelineRecord>,
+    pub pipeline: Option<Vrc<crate::state::PipelineRecord>>,
     /// The set layouts of the sets bound, by set number.
-    pub sets: Vec<Option<Vrc<crate::state::SetLayoutRecord>>>,
+    pub sets: SmallVec<[Option<Vrc<crate::state::SetLayoutRecord>>; 4]>,
     /// The image descriptors of the sets bound when they were bound, by set number:
     /// an update after that leaves the recording invalid, so they stay what a draw
     /// or dispatch reads.
-    pub images: Vec<Option<crate::state::SetImages>>,
+    pub images: SmallVec<[Option<crate::state::SetImages>; 4]>,
     /// The written slots of the sets bound when they were bound, by set number.
-    pub written: Vec<crate::state::SetWritten>,
+    pub written: SmallVec<[crate::state::SetWritten; 4]>,
     /// The index buffer bound (graphics only): its size, the offset and index type.
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
     /// The index buffer bound, for the hazard tracker.
@@ -119,7 +122,7 @@ pub(crate) struct Bound {
     /// The vertex-buffer bindings bound (graphics only; the first 64), one bit each.
     pub vertex: u64,
     /// Each binding's bound vertex buffer range, by binding.
-    pub vertex_ranges: Vec<Option<VertexRange>>,
+    pub vertex_ranges: SmallVec<[Option<VertexRange>; 2]>,
 }
 
 /// The range of a bound vertex buffer.
@@ -454,7 +457,7 @@ pub struct Recorder<'c, S: Scope> {
     /// What the recording does to events so far.
     pub(crate) event_states: crate::state::events::Recording,
     /// The images of the render pass instance's attachments, by attachment index.
-    pub(crate) pass_images: Vec<vk::Image>,
+    pub(crate) pass_images: SmallVec<[vk::Image; 4]>,
     /// The framebuffer's attachments of the render pass instance the recording
     /// began, for the hazard tracker's subpass edges and end (the render pass's
     /// record is the instance's).
@@ -544,7 +547,7 @@ impl<'c> Recorder<'c, Outside> {
             hazards,
             query_states: Default::default(),
             event_states: Default::default(),
-            pass_images: Vec::new(),
+            pass_images: SmallVec::new(),
             pass_memory: None,
             sets: Vec::new(),
             events: Vec::new(),

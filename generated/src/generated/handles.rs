@@ -404,10 +404,12 @@ impl CommandBuffer {
         &self.inner.uses
     }
     /// Keeps what the last recording uses; what the recording before kept
-    /// goes, which `begin` allows only once no submission uses it.
-    pub(crate) fn keep_alive(&self, objects: Vec<Retained>) {
-        let old = core::mem::replace(&mut *self.inner.resources.lock(), objects);
-        drop(old);
+    /// goes, which `begin` allows only once no submission uses it. Returns
+    /// that list emptied, for the next recording to fill in its allocation.
+    pub(crate) fn keep_alive(&self, objects: Vec<Retained>) -> Vec<Retained> {
+        let mut old = core::mem::replace(&mut *self.inner.resources.lock(), objects);
+        old.clear();
+        old
     }
     pub(crate) fn set_executable(&self, executable: bool) {
         self.inner.uses.set_executable(executable);

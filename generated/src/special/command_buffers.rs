@@ -323,12 +323,15 @@ impl CommandBuffer {
         }
         // The earlier recording can no longer run (it is not pending, checked above):
         // what it kept alive goes now, not when this one ends.
-        self.keep_alive(Vec::new());
+        let spare = self.keep_alive(Vec::new());
         self.uses().began(info.flags);
         self.uses().set_inheritance(inheritance);
         // The render pass and framebuffer a secondary's inheritance names live as
         // long as the recording, which refers to them.
         let mut reached = crate::validation::Reached::keeping(self.device().live());
+        // In the last recording's list's allocation: a recording per frame keeps about
+        // as many objects as the one before.
+        reached.kept = spare;
         // SAFETY: a safe struct, whose setters store every pointer with its length
         // and borrow what it points to.
         unsafe { crate::reach::command_buffer_begin_info(info.as_raw(), &mut reached) };

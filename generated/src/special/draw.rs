@@ -673,7 +673,7 @@ pub(crate) fn descriptor_layouts_used<S: Scope>(
     let in_pass = recorder.instance.as_ref().is_some_and(|i| !i.dynamic);
     let inputs = lists.iter().any(|l| l.iter().any(|(_, d)| d.input));
     let attachments = if in_pass && inputs {
-        recorder.pass_images.clone()
+        recorder.pass_images.to_vec()
     } else {
         Vec::new()
     };

@@ -12,6 +12,7 @@ use crate::structs::{
 };
 use crate::Result;
 use ash::vk;
+use tuff_runtime::Vrc;
 
 /// The rule of a barrier's `oldLayout` (`VkImageMemoryBarrier`).
 pub(crate) const BARRIER: &str = "VUID-VkImageMemoryBarrier-oldLayout-01197";
@@ -511,11 +512,12 @@ pub(crate) fn execute_layouts_done<S: Scope>(
 }
 
 /// The image views a render pass instance renders to: its framebuffer's, or those
-/// an imageless framebuffer's begin info chains.
+/// an imageless framebuffer's begin info chains (a framebuffer's shared with its
+/// record: a begin copies nothing).
 pub(crate) fn pass_views(
     live: &crate::state::Live,
     render_pass_begin: &RenderPassBeginInfo<'_>,
-) -> Vec<vk::ImageView> {
+) -> Vrc<[vk::ImageView]> {
     let raw = render_pass_begin.as_raw();
     let views = live.framebuffer_views(raw.framebuffer);
     if !views.is_empty() {
@@ -528,10 +530,13 @@ pub(crate) fn pass_views(
             vk::StructureType::RENDER_PASS_ATTACHMENT_BEGIN_INFO,
         )
     };
-    imageless.map_or(Vec::new(), |i| {
-        // SAFETY: the safe setter stores the views with their count.
-        unsafe { crate::state::raw_slice(i.p_attachments, i.attachment_count) }.to_vec()
-    })
+    imageless.map_or_else(
+        || Vrc::from([]),
+        |i| {
+            // SAFETY: the safe setter stores the views with their count.
+            unsafe { crate::state::raw_slice(i.p_attachments, i.attachment_count) }.into()
+        },
+    )
 }
 
 /// The layouts a render pass instance needs its attachments in (`vuid` names the

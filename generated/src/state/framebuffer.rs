@@ -9,7 +9,7 @@ use tuff_runtime::Vrc;
 
 /// A framebuffer's attachments (none for an imageless one), its width, height
 /// and layer count, and its attachments' memory ([`AttachmentMemory`]).
-pub(crate) type FramebufferRecord = (Vec<vk::ImageView>, [u32; 3], AttachmentMemory);
+pub(crate) type FramebufferRecord = (Vrc<[vk::ImageView]>, [u32; 3], AttachmentMemory);
 
 /// Each attachment of a framebuffer as the hazard tracker names it: its view's
 /// image and subresources, by attachment number (`None` for a view the wrappers did
@@ -52,7 +52,7 @@ impl Live {
             .collect();
         self.framebuffers
             .lock()
-            .insert(raw.as_raw(), (views.to_vec(), size, memory));
+            .insert(raw.as_raw(), (views.into(), size, memory));
     }
 
     /// Records an imageless framebuffer's attachment image infos.
@@ -95,11 +95,10 @@ impl Live {
     }
 
     /// The attachments of a live framebuffer (empty for an imageless one).
-    pub(crate) fn framebuffer_views(&self, raw: vk::Framebuffer) -> Vec<vk::ImageView> {
+    pub(crate) fn framebuffer_views(&self, raw: vk::Framebuffer) -> Vrc<[vk::ImageView]> {
         self.framebuffers
             .lock()
             .get(&raw.as_raw())
-            .map(|f| f.0.clone())
-            .unwrap_or_default()
+            .map_or_else(|| Vrc::from([]), |f| f.0.clone())
     }
 }

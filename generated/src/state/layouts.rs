@@ -13,6 +13,7 @@
 use crate::state::{ImageRecord, Live};
 use crate::{Error, Result};
 use ash::vk::{self, Handle as _};
+use smallvec::{smallvec, SmallVec};
 // Looked up on every command that names an image layout: a fast hash for handles.
 use super::HashMap;
 
@@ -213,11 +214,12 @@ impl Sel {
 struct Track {
     shape: Shape,
     /// For each subresource: the layout the recording needs it in when it starts
-    /// (`UNKNOWN`: none), and the rule that needs it.
-    first: Vec<(vk::ImageLayout, &'static str)>,
+    /// (`UNKNOWN`: none), and the rule that needs it. Inline for an image of one
+    /// or two subresources (an attachment's), the most a recording per frame tracks.
+    first: SmallVec<[(vk::ImageLayout, &'static str); 2]>,
     /// For each subresource: the layout the recording's commands so far leave it
     /// in (`UNKNOWN`: untouched).
-    now: Vec<vk::ImageLayout>,
+    now: SmallVec<[vk::ImageLayout; 2]>,
 }
 
 /// The image layouts one recording needs at its start and leaves at its end.
@@ -253,8 +255,8 @@ impl Recording {
                 let len = shape.len();
                 Some(e.insert(Track {
                     shape,
-                    first: vec![(UNKNOWN, ""); len],
-                    now: vec![UNKNOWN; len],
+                    first: smallvec![(UNKNOWN, ""); len],
+                    now: smallvec![UNKNOWN; len],
                 }))
             }
         }
@@ -367,8 +369,8 @@ impl Recording {
         for (image, theirs) in &other.images {
             let ours = self.images.entry(*image).or_insert_with(|| Track {
                 shape: theirs.shape,
-                first: vec![(UNKNOWN, ""); theirs.now.len()],
-                now: vec![UNKNOWN; theirs.now.len()],
+                first: smallvec![(UNKNOWN, ""); theirs.now.len()],
+                now: smallvec![UNKNOWN; theirs.now.len()],
             });
             for (i, need) in theirs.first.iter().enumerate() {
                 if need.0 != UNKNOWN && ours.now[i] == UNKNOWN {

@@ -122,7 +122,7 @@ pub(crate) struct Live {
     /// Each pipeline layout's push-constant ranges and sets.
     pub(super) pipeline_layouts: Vutex<HashMap<u64, Vrc<LayoutRecord>>>,
     /// Each pipeline's bind point and layout.
-    pub(super) pipelines: Vutex<HashMap<u64, PipelineRecord>>,
+    pub(super) pipelines: Vutex<HashMap<u64, Vrc<PipelineRecord>>>,
     /// Each descriptor set layout's bindings.
     pub(super) set_layouts: Vutex<HashMap<u64, Vrc<SetLayoutRecord>>>,
     /// Each descriptor set's layout record.

@@ -182,12 +182,13 @@ pub(crate) struct RenderingFormats {
 impl Live {
     /// Records a new pipeline's bind point and layout.
     pub(crate) fn pipeline_created(&self, raw: vk::Pipeline, record: PipelineRecord) {
-        let old = self.pipelines.lock().insert(raw.as_raw(), record);
+        let old = self.pipelines.lock().insert(raw.as_raw(), Vrc::new(record));
         drop(old);
     }
 
-    /// The record of a live pipeline made through the wrappers.
-    pub(crate) fn pipeline(&self, raw: vk::Pipeline) -> Option<PipelineRecord> {
+    /// The record of a live pipeline made through the wrappers: shared, so that a
+    /// bind takes it without copying its lists.
+    pub(crate) fn pipeline(&self, raw: vk::Pipeline) -> Option<Vrc<PipelineRecord>> {
         self.pipelines.lock().get(&raw.as_raw()).cloned()
     }
 
