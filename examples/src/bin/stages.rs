@@ -90,7 +90,7 @@ enum Cmd {
     },
 }
 
-#[derive(clap::Args, Clone, Copy)]
+#[derive(clap::Args, Clone)]
 struct RunArgs {
     #[arg(long, default_value_t = 100)]
     count: u32,
@@ -108,6 +108,10 @@ struct RunArgs {
     /// for tuff and raw ash alike (any message fails the run). Not for timing.
     #[arg(long)]
     validate: bool,
+    /// Writes the last frame, as read back, into this PNG (headless only): the
+    /// variants draw the same image.
+    #[arg(long)]
+    png: Option<PathBuf>,
 }
 
 fn main() -> std::process::ExitCode {
@@ -192,6 +196,9 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
         bail!("unknown variant {variant:?}");
     }
     check_build(variant)?;
+    if a.png.is_some() && a.window {
+        bail!("--png reads the last frame back, which only headless runs do");
+    }
     tuff_examples::render::set_auto_sync(variant == "tuff-auto");
     let run = Run {
         count: a.count,
@@ -268,6 +275,9 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
         }
         samples
     };
+    if let Some(path) = &a.png {
+        tuff_examples::image_file::write_png(path, run.size, run.size, &samples.last_frame)?;
+    }
     for s in &samples.frames {
         let times: Vec<String> = s.iter().map(u64::to_string).collect();
         println!("{}", times.join(","));

@@ -35,7 +35,8 @@ fn semaphores(vulkan: &mut Vulkan, count: usize) -> Result<Vec<vk::Semaphore>> {
 }
 
 /// Renders `run.warmup + run.frames` frames of the teapots headless in raw ash, as
-/// [`super::tuff_frames::headless`] does in tuff, and returns the timed frames' stages.
+/// [`super::tuff_frames::headless`] does in tuff, and returns the timed frames' stages
+/// (and the last frame's pixels).
 pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
     let extent = vk::Extent2D {
         width: run.size,
@@ -82,7 +83,7 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
         images.push((image, framebuffer));
         let cached = vk::MemoryPropertyFlags::HOST_CACHED;
         let dst = vk::BufferUsageFlags::TRANSFER_DST;
-        readbacks.push(o.buffer(&device, bytes, dst, cached)?.0);
+        readbacks.push(o.buffer(&device, bytes, dst, cached)?);
     }
     let frames = raw_ash::frame_slots(vulkan, FRAMES_IN_FLIGHT)?;
     let copies = raw_ash::frame_slots(vulkan, FRAMES_IN_FLIGHT)?;
@@ -91,7 +92,9 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
     let mut timer = Timer::default();
     // SAFETY: every handle is a live object of `device`; a slot's command buffers are
     // recorded only after their fences say the last submissions of them completed,
-    // and each fence is reset right before the submission that signals it.
+    // and each fence is reset right before the submission that signals it; the last
+    // frame's readback (host-visible and coherent, never mapped, its copy made visible
+    // to the host by the copy's barrier) is read once the device is idle.
     unsafe {
         for n in 0..run.warmup + run.frames {
             let slot = n as usize % FRAMES_IN_FLIGHT;
@@ -128,7 +131,7 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
                         .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
                 )
                 .context("vkBeginCommandBuffer")?;
-            raw_ash::record_readback(&device, copy, images[slot].0, readbacks[slot], extent);
+            raw_ash::record_readback(&device, copy, images[slot].0, readbacks[slot].0, extent);
             device
                 .end_command_buffer(copy)
                 .context("vkEndCommandBuffer")?;
@@ -145,6 +148,8 @@ pub fn headless(vulkan: &mut Vulkan, run: &Run) -> Result<Samples> {
             samples.push(&timer);
         }
         device.device_wait_idle().context("vkDeviceWaitIdle")?;
+        let last = (run.warmup + run.frames).saturating_sub(1) as usize % FRAMES_IN_FLIGHT;
+        samples.last_frame = raw_ash::read_memory(&device, readbacks[last].1, bytes as usize)?;
     }
     Ok(samples)
 }

@@ -123,6 +123,9 @@ pub struct Samples {
     seen: u32,
     /// The kept frames' samples, in frame order.
     pub frames: Vec<Sample>,
+    /// The last frame as read back, RGBA with packed rows (headless runs; empty in a
+    /// window): what shows the variants draw the same image.
+    pub last_frame: Vec<u8>,
 }
 
 impl Samples {

@@ -76,5 +76,7 @@ pub fn headless(gpu: &Gpu, run: &Run) -> Result<Samples> {
     }
     frames.wait_all()?;
     copies.wait_all()?;
+    let last = (run.warmup + run.frames).saturating_sub(1) as usize % FRAMES_IN_FLIGHT;
+    samples.last_frame = readbacks[last].memory().read(0, bytes as usize)?;
     Ok(samples)
 }
