@@ -321,13 +321,22 @@ pub fn compact(rows: &[Row], mode: &str) -> String {
     md
 }
 
-const COLOURS: [&str; 5] = ["#2166ac", "#67a9cf", "#1b7837", "#d6604d", "#b2182b"];
+/// A colour per variant after raw ash, as [`VARIANTS`] orders them.
+const COLOURS: [&str; 8] = [
+    "#2166ac", "#67a9cf", "#1b7837", "#7fbf7b", "#762a83", "#e08214", "#d6604d", "#b2182b",
+];
 
 /// A bar chart of each variant's median ratio to raw ash, per configuration and
-/// stage of `mode`, on a log scale, with the line of 1x. Self-contained SVG.
+/// stage of `mode`, on a log scale, with the line of 1x: a bar per variant the mode's
+/// rows have (a variant keeps its colour from chart to chart). Self-contained SVG.
 pub fn svg(rows: &[Row], mode: &str, title: &str) -> String {
     let summary = summarise(rows);
-    let others: Vec<(&str, &str)> = VARIANTS[1..].to_vec();
+    let others: Vec<(usize, (&str, &str))> = VARIANTS[1..]
+        .iter()
+        .copied()
+        .enumerate()
+        .filter(|(_, (v, _))| rows.iter().any(|r| r.mode == mode && r.variant == *v))
+        .collect();
     let mut groups = Vec::new();
     for ((m, count, writes), variants) in &summary {
         let Some(base) = variants.get("ash") else {
@@ -344,7 +353,7 @@ pub fn svg(rows: &[Row], mode: &str, title: &str) -> String {
             }
             let bars: Vec<Option<f64>> = others
                 .iter()
-                .map(|(v, _)| {
+                .map(|(_, (v, _))| {
                     variants
                         .get(*v)
                         .map(|s| ratio(s[i].median, base[i].median))
@@ -390,7 +399,7 @@ pub fn svg(rows: &[Row], mode: &str, title: &str) -> String {
         e += 1.0;
     }
     let slot = (right - left) / groups.len().max(1) as f64;
-    let bar = slot * 0.8 / others.len() as f64;
+    let bar = slot * 0.8 / others.len().max(1) as f64;
     for (g, (label, bars)) in groups.iter().enumerate() {
         let x0 = left + slot * g as f64 + slot * 0.1;
         for (b, value) in bars.iter().enumerate() {
@@ -403,9 +412,9 @@ pub fn svg(rows: &[Row], mode: &str, title: &str) -> String {
                 y1.min(y0),
                 bar,
                 (y1 - y0).abs().max(0.5),
-                COLOURS[b % COLOURS.len()],
+                COLOURS[others[b].0 % COLOURS.len()],
                 escape(label),
-                escape(others[b].1),
+                escape(others[b].1 .1),
                 r
             );
         }
@@ -418,14 +427,17 @@ pub fn svg(rows: &[Row], mode: &str, title: &str) -> String {
             escape(label)
         );
     }
-    for (b, (_, name)) in others.iter().enumerate() {
-        let lx = left + 10.0 + 175.0 * b as f64;
+    // The legend: four to a row, two rows above the plot.
+    for (b, (colour, (_, name))) in others.iter().enumerate() {
+        let lx = left + 10.0 + 220.0 * (b % 4) as f64;
+        let ly = 30.0 + 16.0 * (b / 4) as f64;
         let _ = writeln!(
             s,
-            "<rect x=\"{lx:.1}\" y=\"34\" width=\"12\" height=\"12\" fill=\"{}\"/>\
-             <text x=\"{:.1}\" y=\"44\">{}</text>",
-            COLOURS[b % COLOURS.len()],
+            "<rect x=\"{lx:.1}\" y=\"{ly:.1}\" width=\"12\" height=\"12\" fill=\"{}\"/>\
+             <text x=\"{:.1}\" y=\"{:.1}\">{}</text>",
+            COLOURS[colour % COLOURS.len()],
             lx + 16.0,
+            ly + 10.0,
             escape(&name.replace('`', ""))
         );
     }
