@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The stage benchmark (issue: what safety costs per frame stage). Builds the `stages`
-# binary four times (plain, with `multi_thread`, with `implicit_checks`, and without
-# the hazard tracker: `--cfg tuff_untracked`), runs every
-# variant over every configuration interleaved, and writes docs/stages/<label>.csv,
+# binary five times (plain, with `multi_thread`, with `implicit_checks`, with `vulkano`
+# for the vulkano peer, and without the hazard tracker: `--cfg tuff_untracked`), runs
+# every variant over every configuration interleaved, and writes docs/stages/<label>.csv,
 # .md and -<mode>.svg. Then times a full regeneration and, unless STAGES_NO_COMPILE=1,
 # the clean compile of tuff against ash (scripts/compile-time.sh).
 #
@@ -11,8 +11,8 @@
 # Label defaults to `lavapipe`, which runs on Mesa lavapipe (TUFF_DEVICE=llvmpipe),
 # headless and in a window under Xvfb. Options go to `stages bench` (see --help),
 # e.g. `--rounds 1 --frames 20` for a quick look. STAGES_BUILD_ONLY=1 only builds
-# target/stages/stages{,-mt,-checks}, to carry to a machine without Rust (README.md
-# says how the GPU tables were made).
+# target/stages/stages{,-mt,-checks,-vulkano,-untracked}, to carry to a machine
+# without Rust (README.md says how the GPU tables were made).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/install-deps.sh
@@ -26,6 +26,7 @@ build() {
 }
 suffix=-mt build --features multi_thread
 suffix=-checks build --features implicit_checks
+suffix=-vulkano build --features vulkano
 suffix= build
 # Without the hazard tracker: a cfg, not a feature, in a target folder of its own
 # (other RUSTFLAGS rebuild everything).
@@ -43,7 +44,8 @@ if [ "$label" = lavapipe ]; then
 fi
 target/stages/stages bench --out docs/stages --label "$label" \
     --mt target/stages/stages-mt --checks target/stages/stages-checks \
-    --untracked target/stages/stages-untracked "${extra[@]}" "$@"
+    --untracked target/stages/stages-untracked --vulkano target/stages/stages-vulkano \
+    "${extra[@]}" "$@"
 # The generator's full run (regenerate into a scratch folder), and the clean compile
 # of the generated crate against ash alone.
 cargo build -q --release -p tuff-gen

@@ -438,4 +438,15 @@ fn the_stage_benchmark_writes_its_tables() {
     assert!(!refused.status.success());
     let err = String::from_utf8_lossy(&refused.stderr);
     assert!(err.contains("tuff_untracked=true"), "{err}");
+    if !cfg!(feature = "vulkano") {
+        let mut peer = scene(stages);
+        peer.args(["run", "--variant", "vulkano", "--frames", "1"]);
+        let refused = self::output(peer);
+        assert!(!refused.status.success());
+        let err = String::from_utf8_lossy(&refused.stderr);
+        assert!(
+            err.contains("needs a build with the vulkano feature"),
+            "{err}"
+        );
+    }
 }

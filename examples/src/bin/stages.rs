@@ -1,5 +1,6 @@
 //! The stage benchmark: what each stage of the teapots' frame costs through tuff,
-//! against raw ash and raw ash under the validation layer.
+//! against raw ash, raw ash under the validation layer, and vulkano (a build with the
+//! `vulkano` feature; headless only).
 //!
 //! `stages bench` runs every variant over every configuration, interleaved (each
 //! round runs each configuration's variants one after another, so drift hits all
@@ -29,7 +30,7 @@ enum Cmd {
     /// line of stage times (ns) per timed frame.
     Run {
         /// One of ash, tuff, tuff-auto, tuff-untracked, tuff-mt, tuff-checks,
-        /// ash-layer, ash-sync.
+        /// vulkano, ash-layer, ash-sync.
         #[arg(long)]
         variant: String,
         #[command(flatten)]
@@ -53,6 +54,10 @@ enum Cmd {
         /// The build of this binary with `--cfg tuff_untracked` (no hazard tracker).
         #[arg(long)]
         untracked: Option<PathBuf>,
+        /// The build of this binary with the `vulkano` feature (the vulkano peer,
+        /// headless only).
+        #[arg(long)]
+        vulkano: Option<PathBuf>,
         /// Rounds over the variants.
         #[arg(long, default_value_t = 3)]
         rounds: u32,
@@ -106,6 +111,7 @@ struct RunArgs {
     window: bool,
     /// Check the run itself: the validation layer with synchronization validation on
     /// for tuff and raw ash alike (any message fails the run). Not for timing.
+    /// Not for vulkano, which has its own checks.
     #[arg(long)]
     validate: bool,
     /// Writes the last frame, as read back, into this PNG (headless only): the
@@ -124,6 +130,7 @@ fn main() -> std::process::ExitCode {
             mt,
             checks,
             untracked,
+            vulkano,
             rounds,
             counts,
             many_writes,
@@ -147,6 +154,7 @@ fn main() -> std::process::ExitCode {
                 mt,
                 checks,
                 untracked,
+                vulkano,
                 rounds,
                 frames,
                 frames_10000,
@@ -167,8 +175,16 @@ fn main() -> std::process::ExitCode {
     })
 }
 
-/// The variant's feature set must be the one this binary was built with.
+/// The variant's feature set must be the one this binary was built with (the
+/// `vulkano` feature adds the vulkano peer and changes nothing else).
 fn check_build(variant: &str) -> Result<()> {
+    if variant == "vulkano" && !cfg!(feature = "vulkano") {
+        bail!(
+            "variant vulkano needs a build with the vulkano feature \
+             (cargo build --release -p tuff-examples --bin stages --features vulkano); \
+             this one has none"
+        );
+    }
     let (mt, checks, untracked) = (
         cfg!(feature = "multi_thread"),
         cfg!(feature = "implicit_checks"),
@@ -208,7 +224,9 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
         size: a.size,
         window: a.window,
     };
-    let samples = if variant.starts_with("tuff") {
+    let samples = if variant == "vulkano" {
+        vulkano_run(&run, a.validate)?
+    } else if variant.starts_with("tuff") {
         let mut req = tuff_examples::scenes::teapots::REQUIREMENTS;
         req.window = run.window;
         if a.validate {
@@ -285,6 +303,27 @@ fn run(variant: &str, a: RunArgs) -> Result<()> {
     Ok(())
 }
 
+/// The vulkano peer's run: headless only, and without the layer (vulkano validates
+/// every call itself; the benchmark times it so).
+#[cfg(feature = "vulkano")]
+fn vulkano_run(run: &Run, validate: bool) -> Result<tuff_examples::stages::Samples> {
+    use tuff_examples::stages::vulkano_frames;
+    if run.window {
+        bail!("the vulkano variant runs headless only");
+    }
+    if validate {
+        bail!("the vulkano variant runs without the layer (--validate)");
+    }
+    let vulkano = vulkano_frames::Vulkano::open()?;
+    println!("# device: {}", vulkano.name());
+    vulkano_frames::headless(&vulkano, run)
+}
+
+#[cfg(not(feature = "vulkano"))]
+fn vulkano_run(_: &Run, _: bool) -> Result<tuff_examples::stages::Samples> {
+    bail!("this build has no vulkano (check_build refuses the variant first)")
+}
+
 /// Fails when the validation layer reported anything, printing what it said.
 fn fail_on_messages(messages: &[String]) -> Result<()> {
     if messages.is_empty() {
@@ -303,6 +342,7 @@ struct Plan {
     mt: Option<PathBuf>,
     checks: Option<PathBuf>,
     untracked: Option<PathBuf>,
+    vulkano: Option<PathBuf>,
     rounds: u32,
     frames: u32,
     frames_10000: u32,
@@ -328,6 +368,9 @@ fn bench(
                     "tuff-mt" => plan.mt.as_ref(),
                     "tuff-checks" => plan.checks.as_ref(),
                     "tuff-untracked" => plan.untracked.as_ref(),
+                    // Headless only.
+                    "vulkano" if window => None,
+                    "vulkano" => plan.vulkano.as_ref(),
                     _ => Some(&me),
                 };
                 let Some(binary) = binary else { continue };

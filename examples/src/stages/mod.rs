@@ -1,7 +1,8 @@
 //! The stage benchmark: each frame of the teapots scene split into the stages a
 //! frame loop goes through, timed on the host, for tuff and for raw ash, headless and
-//! in a window. `src/bin/stages.rs` runs the variants interleaved and writes the
-//! tables; this module holds the frame loops' clock, the samples and their report.
+//! in a window, and for vulkano (headless; behind the `vulkano` feature), the peer.
+//! `src/bin/stages.rs` runs the variants interleaved and writes the tables; this
+//! module holds the frame loops' clock, the samples and their report.
 //!
 //! Stages, in frame order: **wait** (the fence of the frame slot's last submission),
 //! **acquire** (the next swapchain image; windows only), **uniform** (the frame's
@@ -15,6 +16,8 @@
 pub mod ash_frames;
 pub mod report;
 pub mod tuff_frames;
+#[cfg(feature = "vulkano")]
+pub mod vulkano_frames;
 
 use anyhow::Context as _;
 use std::time::{Duration, Instant};

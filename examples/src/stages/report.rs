@@ -8,14 +8,16 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 /// The variants, in the order they run and appear, with their table headings. The
-/// first is the baseline every ratio is to.
-pub const VARIANTS: [(&str, &str); 8] = [
+/// first is the baseline every ratio is to. `vulkano` is the peer: the same frame loop
+/// through vulkano's automatic command buffer builder (headless only).
+pub const VARIANTS: [(&str, &str); 9] = [
     ("ash", "raw ash"),
     ("tuff", "tuff"),
     ("tuff-auto", "tuff `auto_sync`"),
     ("tuff-untracked", "tuff without hazard tracking"),
     ("tuff-mt", "tuff `multi_thread`"),
     ("tuff-checks", "tuff + implicit checks"),
+    ("vulkano", "vulkano (automatic builder)"),
     ("ash-layer", "ash + layer"),
     ("ash-sync", "ash + layer + sync"),
 ];
@@ -522,5 +524,46 @@ mod tests {
         assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
         assert!(svg.contains("a &lt;title&gt;"));
         assert!(svg.contains("2.00x") && !svg.contains("NaN"));
+    }
+
+    #[test]
+    fn a_variant_a_mode_lacks_is_left_out_of_its_tables_and_chart() {
+        let mut rows = Vec::new();
+        for mode in ["headless", "window"] {
+            for variant in ["ash", "tuff", "vulkano"] {
+                if mode == "window" && variant == "vulkano" {
+                    continue;
+                }
+                let mut r = row(variant, 100, if variant == "ash" { 1000 } else { 3000 });
+                r.mode = mode.into();
+                rows.push(r);
+            }
+        }
+        let headless = compact(&rows, "headless");
+        assert!(
+            headless.contains("| Stage | Teapots | raw ash | tuff | vulkano (automatic builder) |"),
+            "{headless}"
+        );
+        assert!(
+            headless.contains("| command | 100 | 1.00 µs | 3.00x (3.00 µs) | 3.00x (3.00 µs) |")
+        );
+        let window = compact(&rows, "window");
+        assert!(
+            window.contains("| Stage | Teapots | raw ash | tuff |\n"),
+            "{window}"
+        );
+        let md = markdown(&rows);
+        assert!(md.contains("| Stage | raw ash | tuff | vulkano (automatic builder) |"));
+        assert!(md.contains("| Stage | raw ash | tuff |\n"), "{md}");
+        let chart = svg(&rows, "window", "window");
+        assert!(
+            !chart.contains("vulkano") && chart.contains(">tuff<"),
+            "{chart}"
+        );
+        let chart = svg(&rows, "headless", "headless");
+        assert!(
+            chart.contains("vulkano (automatic builder): 3.00x"),
+            "{chart}"
+        );
     }
 }
