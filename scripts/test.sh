@@ -48,6 +48,10 @@ step cargo test -p tuff-runtime -p tuff-tests -p tuff-examples \
     --test deferred
 # The adversarial suite under valgrind's memcheck: no invalid read or write, no use
 # of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
+# The stage benchmark's vulkano peer (an optional feature: vulkano is a benchmark
+# dependency only): it builds, passes clippy, and draws raw ash's and tuff's image.
+step cargo clippy -p tuff-examples --all-targets --features vulkano -- -D warnings
+step cargo test -p tuff-examples --features vulkano --test vulkano_peer
 step bash scripts/valgrind.sh
 # The generator outside the pinned inputs: each newer registry, with every extension
 # ash has, regenerated into a scratch crate and compiled (scripts/wide-check.sh).
