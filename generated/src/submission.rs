@@ -873,12 +873,14 @@ pub(crate) fn record_binary_ops(
 pub(crate) struct Batches {
     /// The command buffers of every batch, in order.
     pub command_buffers: SmallVec<[vk::CommandBuffer; 8]>,
-    /// The semaphore operations: each batch's waits, then its signals.
-    pub ops: Vec<SemOp>,
+    /// The semaphore operations: each batch's waits, then its signals. Its lists
+    /// hold a frame's usual few inline: a submission reads its batches three times
+    /// (checks, hold, done) and allocates for none of them.
+    pub ops: SmallVec<[SemOp; 4]>,
     /// The timeline operations among them that carry a value, in the same order.
-    pub timeline: Vec<TimelineOp>,
+    pub timeline: SmallVec<[TimelineOp; 2]>,
     /// For each batch, the timeline values it signals once all its commands are done.
-    pub completes: Vec<Vec<(vk::Semaphore, u64)>>,
+    pub completes: SmallVec<[Vec<(vk::Semaphore, u64)>; 2]>,
 }
 
 /// One semaphore of a batch as [`Batches`] reads it: the semaphore, its timeline

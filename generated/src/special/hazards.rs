@@ -1223,7 +1223,7 @@ pub(crate) fn submit_checks(queue: &crate::handles::Queue, batches: &[Batch]) ->
         .collect();
     let mut replayed = Replayed::new(number, cbs);
     for (i, batch) in batches.iter().enumerate() {
-        let waits: Vec<Barrier> = batch
+        let waits: SmallVec<[Barrier; 1]> = batch
             .waits
             .iter()
             .map(|stages| Barrier::new(ALL, WRITE, *stages, READ | WRITE))

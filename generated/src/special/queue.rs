@@ -414,7 +414,7 @@ fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>, replayed:
         fence,
         &b.command_buffers,
         kept,
-        b.completes,
+        b.completes.into_vec(),
     );
     submission::record_binary_ops(device, queue.raw(), &b.ops, Some(&sub));
     // A submission whose command buffers the hazard checks replayed: what they

@@ -1166,29 +1166,31 @@ pub(crate) struct QueueHazards {
 /// its command buffers, and for each batch the barriers of its semaphore waits and
 /// its command buffers' logs (held weakly: a command buffer is recorded again only
 /// once its submissions are complete, and its log's allocation is then reused).
+/// Its lists hold a frame's usual one batch of a command buffer or two inline: a
+/// submission of a frame allocates nothing for them.
 pub(crate) struct Replayed {
     number: u32,
     sub: Option<Vweak<crate::state::Submission>>,
-    cbs: Vec<vk::CommandBuffer>,
-    batches: Vec<ReplayedBatch>,
+    cbs: SmallVec<[vk::CommandBuffer; 2]>,
+    batches: SmallVec<[ReplayedBatch; 1]>,
 }
 
 /// One batch of a [`Replayed`] submission.
 struct ReplayedBatch {
     /// The barriers its semaphore waits make.
-    waits: Vec<Barrier>,
+    waits: SmallVec<[Barrier; 1]>,
     /// Its command buffers' logs.
-    logs: Vec<Vweak<Vec<Event>>>,
+    logs: SmallVec<[Vweak<Vec<Event>>; 2]>,
 }
 
 impl Replayed {
     /// A submission numbered `number` of `cbs`, not yet replayed.
-    pub(crate) fn new(number: u32, cbs: Vec<vk::CommandBuffer>) -> Self {
+    pub(crate) fn new(number: u32, cbs: SmallVec<[vk::CommandBuffer; 2]>) -> Self {
         Replayed {
             number,
             sub: None,
             cbs,
-            batches: Vec::new(),
+            batches: SmallVec::new(),
         }
     }
 }
@@ -1198,6 +1200,7 @@ impl QueueHazards {
     /// accesses of complete submissions dropped, and the state rebuilt if the last
     /// submission checked was not made.
     pub(crate) fn begin(&mut self, live: &Live) -> u32 {
+        let before = self.subs.len();
         self.subs.retain(|r| {
             r.sub
                 .as_ref()
@@ -1206,7 +1209,9 @@ impl QueueHazards {
         });
         if self.staged.take().is_some() {
             self.rebuild(live);
-        } else {
+        } else if self.subs.len() < before {
+            // The state holds only the accesses of submissions not known complete
+            // at the last begin: with none completed since, nothing is dropped.
             let running: SmallVec<[u32; 4]> = self.subs.iter().map(|r| r.number).collect();
             self.state.prune(|n| !running.contains(&n));
         }
@@ -1217,13 +1222,13 @@ impl QueueHazards {
 
     /// Applies a batch's semaphore waits (`waits`: the barriers they make) as part
     /// of the submission `replayed`.
-    pub(crate) fn wait(&mut self, replayed: &mut Replayed, waits: Vec<Barrier>) {
+    pub(crate) fn wait(&mut self, replayed: &mut Replayed, waits: SmallVec<[Barrier; 1]>) {
         if !waits.is_empty() {
             self.state.apply_global(&waits);
         }
         replayed.batches.push(ReplayedBatch {
             waits,
-            logs: Vec::new(),
+            logs: SmallVec::new(),
         });
     }
 
@@ -1261,7 +1266,7 @@ impl QueueHazards {
         cbs: &[vk::CommandBuffer],
     ) {
         match self.staged.take() {
-            Some(mut r) if r.cbs == cbs => {
+            Some(mut r) if r.cbs.as_slice() == cbs => {
                 r.sub = Some(Vrc::downgrade(sub));
                 self.subs.push(r);
             }

@@ -4,6 +4,11 @@
 use super::live::Live;
 use ash::vk::{self, Handle as _};
 
+/// The layouts of an image's subresources, in subresource order: inline for an image
+/// of one or two (an attachment's), so a submission's layout checks copy them
+/// without allocating.
+pub(crate) type ImageLayouts = smallvec::SmallVec<[vk::ImageLayout; 2]>;
+
 /// An image's creation parameters, as its checks read them.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ImageRecord {
@@ -64,10 +69,10 @@ impl Live {
 
     /// The layouts of an image's `len` subresources as the submissions so far
     /// leave them.
-    pub(crate) fn image_layouts(&self, image: u64, len: usize) -> Vec<vk::ImageLayout> {
+    pub(crate) fn image_layouts(&self, image: u64, len: usize) -> ImageLayouts {
         match self.layouts.lock().get(&image) {
             Some(l) if l.len() == len => l.clone(),
-            _ => vec![vk::ImageLayout::UNDEFINED; len],
+            _ => smallvec::smallvec![vk::ImageLayout::UNDEFINED; len],
         }
     }
 
@@ -75,14 +80,15 @@ impl Live {
     pub(crate) fn image_preinitialized(&self, image: vk::Image) {
         if let Some(record) = self.image(image) {
             let len = crate::state::layouts::Shape::of(&record).len();
-            self.layouts
-                .lock()
-                .insert(image.as_raw(), vec![vk::ImageLayout::PREINITIALIZED; len]);
+            self.layouts.lock().insert(
+                image.as_raw(),
+                smallvec::smallvec![vk::ImageLayout::PREINITIALIZED; len],
+            );
         }
     }
 
     /// Records the layouts a submission leaves an image's subresources in.
-    pub(crate) fn set_image_layouts(&self, image: u64, layouts: Vec<vk::ImageLayout>) {
+    pub(crate) fn set_image_layouts(&self, image: u64, layouts: ImageLayouts) {
         // Only a listed image: one destroyed since the check keeps no entry.
         if self.images.lock().contains_key(&image) {
             self.layouts.lock().insert(image, layouts);

@@ -396,7 +396,7 @@ impl Recording {
 /// the device only once the submission is made.
 pub(crate) struct Overlay<'a> {
     live: &'a Live,
-    images: HashMap<u64, Vec<vk::ImageLayout>>,
+    images: HashMap<u64, super::image::ImageLayouts>,
 }
 
 impl<'a> Overlay<'a> {
@@ -408,7 +408,7 @@ impl<'a> Overlay<'a> {
         }
     }
 
-    fn layouts(&mut self, image: u64, len: usize) -> &mut Vec<vk::ImageLayout> {
+    fn layouts(&mut self, image: u64, len: usize) -> &mut super::image::ImageLayouts {
         let live = self.live;
         self.images
             .entry(image)

@@ -105,7 +105,7 @@ pub(crate) struct Live {
     /// The layout of each subresource of an image (numbered as
     /// [`crate::state::layouts::Shape`] does) as the submissions so far leave it; an
     /// unlisted image is wholly `UNDEFINED`.
-    pub(super) layouts: Vutex<HashMap<u64, Vec<vk::ImageLayout>>>,
+    pub(super) layouts: Vutex<HashMap<u64, super::image::ImageLayouts>>,
     /// Each swapchain's images, as one record: what `get_swapchain_images_khr`
     /// records for every image it returns.
     pub(super) swapchains: Vutex<HashMap<u64, ImageRecord>>,
