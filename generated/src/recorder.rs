@@ -153,8 +153,9 @@ pub(crate) struct Pushed {
     /// The layout they were pushed with: they are the values of every layout with
     /// the same push-constant ranges (compatible for push constants).
     pub layout: Vrc<crate::state::LayoutRecord>,
-    /// The bytes set, one bit each.
-    bytes: Vec<u64>,
+    /// The bytes set, one bit each (inline up to 256 bytes, the largest
+    /// `maxPushConstantsSize` devices report in practice).
+    bytes: SmallVec<[u64; 4]>,
     /// The last push (layout, offset, size): a repeat of it sets nothing new.
     pub last: (vk::PipelineLayout, u32, usize),
 }
@@ -164,7 +165,7 @@ impl Pushed {
     pub(crate) fn new(layout: Vrc<crate::state::LayoutRecord>) -> Self {
         Pushed {
             layout,
-            bytes: Vec::new(),
+            bytes: SmallVec::new(),
             last: (vk::PipelineLayout::null(), 0, 0),
         }
     }
@@ -172,12 +173,7 @@ impl Pushed {
     /// Bytes `offset..offset + size` are set.
     pub(crate) fn set(&mut self, offset: u32, size: u32) {
         let end = offset.saturating_add(size) as usize;
-        if self.bytes.len() * 64 < end {
-            self.bytes.resize(end.div_ceil(64), 0);
-        }
-        for b in offset as usize..end {
-            self.bytes[b / 64] |= 1 << (b % 64);
-        }
+        set_bits(&mut self.bytes, offset as usize, end);
     }
 
     /// Whether byte `b` is set.
@@ -186,6 +182,28 @@ impl Pushed {
         self.bytes
             .get(b / 64)
             .is_some_and(|w| w & (1 << (b % 64)) != 0)
+    }
+}
+
+/// Sets bits `start..end` of `words` (64 to a word, grown as needed), a word at a
+/// time: a push of 128 bytes is two word writes, not 128 bit writes.
+fn set_bits(words: &mut SmallVec<[u64; 4]>, start: usize, end: usize) {
+    if start >= end {
+        return;
+    }
+    if words.len() * 64 < end {
+        words.resize(end.div_ceil(64), 0);
+    }
+    for w in start / 64..end.div_ceil(64) {
+        // Bits `lo..hi` of word `w`.
+        let lo = start.max(w * 64) - w * 64;
+        let hi = end.min(w * 64 + 64) - w * 64;
+        let ones = if hi - lo == 64 {
+            !0
+        } else {
+            ((1u64 << (hi - lo)) - 1) << lo
+        };
+        words[w] |= ones;
     }
 }
 
@@ -992,5 +1010,30 @@ impl<'c> Recorder<'c, Continuing> {
     /// pass instance; a primary inside a compatible instance can execute it.
     pub fn end(self) -> Result<()> {
         self.finish()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Word-wise setting sets exactly the bits one at a time would, for every
+    /// range up to 200 bits into words that already hold some.
+    #[test]
+    fn set_bits_sets_exactly_the_range() {
+        for start in 0..200 {
+            for end in 0..200 {
+                let mut words: SmallVec<[u64; 4]> = SmallVec::from_slice(&[1 << 63]);
+                set_bits(&mut words, start, end);
+                for b in 0..256 {
+                    let set = words.get(b / 64).is_some_and(|w| w & (1 << (b % 64)) != 0);
+                    assert_eq!(
+                        set,
+                        b == 63 || (start..end).contains(&b),
+                        "{start}..{end}: bit {b}"
+                    );
+                }
+            }
+        }
     }
 }
