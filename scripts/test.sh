@@ -46,14 +46,15 @@ step cargo test -p tuff-runtime -p tuff-tests -p tuff-examples \
     --features tuff-runtime/multi_thread,tuff-tests/multi_thread,tuff-examples/multi_thread \
     --lib --test soundness --test wrappers --test submission_checks --test runtime_memory --test oracle --test threads \
     --test deferred
-# The adversarial suite under valgrind's memcheck: no invalid read or write, no use
-# of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 # The stage benchmark's vulkano peer (an optional feature: vulkano is a benchmark
 # dependency only): it builds, passes clippy, and draws raw ash's and tuff's image.
 step cargo clippy -p tuff-examples --all-targets --features vulkano -- -D warnings
 step cargo test -p tuff-examples --features vulkano --test vulkano_peer
+# The adversarial suite under valgrind's memcheck: no invalid read or write, no use
+# of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 step bash scripts/valgrind.sh
 # The generator outside the pinned inputs: each newer registry, with every extension
-# ash has, regenerated into a scratch crate and compiled (scripts/wide-check.sh).
-step bash scripts/wide-check.sh all-1.4.309 all-1.4.330
+# ash has, regenerated into a scratch crate and compiled (scripts/wide-check.sh); and
+# Vulkan 1.4 as the core version, whose commands ash has no table for.
+step bash scripts/wide-check.sh all-1.4.309 all-1.4.330 core14-1.4.309
 echo "test.sh: target folder $(du -sh target | cut -f1)"

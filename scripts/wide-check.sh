@@ -12,6 +12,9 @@
 #   all-1.4.309,   the pinned config itself (every extension ash has) on each newer
 #   all-1.4.330    registry: what 1.4 promoted is named by the alias ash has, and the
 #                  items ash lacks are left out, each with its reason (gen.log).
+#   core14-1.4.309, the same with api_version = "1.4": Vulkan 1.4's commands through
+#   core14-1.4.330  the crate's own table (ash has none), its items named as ash names
+#                  them, the two ash lacks altogether left out (gen.log).
 #
 # (The pinned config itself emits every extension ash 0.38 has, so the committed crate
 # is the every-extension check; scripts/test.sh builds it with all_extensions.)
@@ -77,8 +80,20 @@ for name in "${names[@]}"; do
             "$root/tuff-gen.toml" >"$cfg"
         check "$name" --registry "$registry/$version/vk.xml" --config "$cfg" || status=1
         ;;
+    core14-1.4.309 | core14-1.4.330)
+        # Vulkan 1.4 as the core version (api_version = "1.4"), every extension ash
+        # has: ash has no function table for 1.4, so its commands go through the
+        # one the generated crate defines (DeviceFnV1_4), typed by ash's names.
+        version="${name#core14-}"
+        cfg="$scratch/core14.toml"
+        sed -e 's/^api_version = "1.3"/api_version = "1.4"/' \
+            -e "s#\"reference/vk.xml\"#\"$root/reference/vk.xml\"#" \
+            -e "s#\"examples/src\"#\"$root/examples/src\"#" \
+            "$root/tuff-gen.toml" >"$cfg"
+        check "$name" --registry "$registry/$version/vk.xml" --config "$cfg" || status=1
+        ;;
     *)
-        echo "wide-check: unknown configuration $name (known: 1.4.309, 1.4.330, all-1.4.309, all-1.4.330)" >&2
+        echo "wide-check: unknown configuration $name (known: 1.4.309, 1.4.330, all-1.4.309, all-1.4.330, core14-1.4.309, core14-1.4.330)" >&2
         status=1
         ;;
     esac

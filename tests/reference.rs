@@ -263,7 +263,9 @@ fn a_newer_registry_is_emitted_by_the_names_ash_has_and_loses_only_what_ash_lack
         "vkGetCalibratedTimestampsEXT"
     );
     // A config asking for core 1.4, which ash has no table for: the version is
-    // left out and listed first, and the crate is the 1.3 one.
+    // emitted, its commands through the crate's own table, its items named as ash
+    // names them (the extension aliases they were promoted from), and the two ash
+    // lacks altogether left out, each with its reason.
     let v14 = tuff_gen::config::Config {
         api_version: "1.4".to_owned(),
         ..config.clone()
@@ -275,10 +277,65 @@ fn a_newer_registry_is_emitted_by_the_names_ash_has_and_loses_only_what_ash_lack
         std::path::Path::new("test.toml"),
     )
     .expect("the model builds");
-    assert_eq!(m14.left_out[0].name, "VK_VERSION_1_4");
-    assert!(m14.left_out[0].reason.contains("no such core version"));
-    assert!(!m14.enabled.contains("VK_VERSION_1_4"));
-    assert_eq!(m14.emitted, model.emitted);
+    assert!(m14.enabled.contains("VK_VERSION_1_4"));
+    assert_eq!(m14.own_tables, [4].into_iter().collect());
+    assert_eq!(
+        tuff_gen::names::table(&m14, "vkCmdPushDescriptorSet"),
+        Some(tuff_gen::names::Table::Own(4))
+    );
+    // Typed by ash's PFN of the name it knows the command by, which is no alias
+    // there (vkCmdSetLineStippleEXT is one of vkCmdSetLineStippleKHR in 1.3.281).
+    assert_eq!(
+        m14.spelling("vkCmdPushDescriptorSet"),
+        "vkCmdPushDescriptorSetKHR"
+    );
+    assert_eq!(
+        m14.spelling("vkCmdSetLineStipple"),
+        "vkCmdSetLineStippleKHR"
+    );
+    assert_eq!(
+        tuff_gen::names::methods(&m14)["vkCmdPushDescriptorSet"],
+        "push_descriptor_set"
+    );
+    // The 19 commands of 1.4 are all emitted.
+    let core14 = [
+        "vkMapMemory2",
+        "vkUnmapMemory2",
+        "vkGetDeviceImageSubresourceLayout",
+        "vkGetImageSubresourceLayout2",
+        "vkCopyMemoryToImage",
+        "vkCopyImageToMemory",
+        "vkCopyImageToImage",
+        "vkTransitionImageLayout",
+        "vkCmdPushDescriptorSet",
+        "vkCmdPushDescriptorSetWithTemplate",
+        "vkCmdBindDescriptorSets2",
+        "vkCmdPushConstants2",
+        "vkCmdPushDescriptorSet2",
+        "vkCmdPushDescriptorSetWithTemplate2",
+        "vkCmdSetLineStipple",
+        "vkCmdBindIndexBuffer2",
+        "vkGetRenderingAreaGranularity",
+        "vkCmdSetRenderingAttachmentLocations",
+        "vkCmdSetRenderingInputAttachmentIndices",
+    ];
+    for c in core14 {
+        assert!(m14.emitted.contains(c), "{c} is not emitted");
+    }
+    let left14: Vec<&str> = m14
+        .left_out
+        .iter()
+        .filter(|l| l.name.contains("Vulkan14"))
+        .map(|l| l.name.as_str())
+        .collect();
+    assert_eq!(
+        left14,
+        [
+            "VkPhysicalDeviceVulkan14Features",
+            "VkPhysicalDeviceVulkan14Properties"
+        ]
+    );
+    assert!(!m14.left_out.iter().any(|l| l.name == "VK_VERSION_1_4"));
     // The pinned registry needs no other spelling.
     let (pinned, _) = registries();
     let model = tuff_gen::model::Model::build(

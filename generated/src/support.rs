@@ -48,6 +48,9 @@ pub enum Error {
     /// An extension command was called on an instance or device that did not enable
     /// the extension.
     ExtensionNotEnabled(&'static str),
+    /// A command of a core version (`"Vulkan 1.4"`) was called on a device whose
+    /// version, or its instance's `apiVersion`, is lower.
+    VersionNotSupported(&'static str),
     /// A safe `create_instance` or `create_device` was asked to enable an extension
     /// that tuff does not emit. Its rules would then apply to calls no safe method
     /// checks them on; the `unsafe` `_unchecked` constructor enables it.
@@ -93,6 +96,10 @@ impl core::fmt::Display for Error {
             Error::ExtensionNotEnabled(name) => {
                 write!(f, "extension {name} is not enabled on this instance or device")
             }
+            Error::VersionNotSupported(version) => write!(
+                f,
+                "{version} commands need a device of {version} or newer, created from an instance whose apiVersion is at least {version}"
+            ),
             Error::ExtensionNotEmitted(name) => write!(
                 f,
                 "extension {name} is outside tuff's emitted API (`api_info::EXTENSIONS`); only the `unsafe` `_unchecked` constructor enables it"

@@ -34,6 +34,16 @@ pub fn command_fn(name: &str) -> String {
     name.strip_prefix("vk").unwrap_or(name).to_snake_case()
 }
 
+/// The name a command's method is made from: the one ash knows it by, except for a
+/// command of a core version ash has no table for, which the emitted crate calls by
+/// its core name (`vkCmdPushDescriptorSet`, not ash's `vkCmdPushDescriptorSetKHR`).
+fn method_spelling<'a>(model: &'a Model, command: &'a str) -> &'a str {
+    match table(model, command) {
+        Some(Table::Own(_)) => command,
+        _ => model.spelling(command),
+    }
+}
+
 /// The method of every command of `model`, by command: `command_fn` of the name the
 /// emitted API knows it by ([`Model::spelling`]), less the words that repeat the
 /// receiver (see [`receiver_relative`]), unless that would give two commands of one
@@ -45,7 +55,12 @@ pub fn methods(model: &Model) -> BTreeMap<String, String> {
     let full: BTreeMap<&str, (String, String)> = model
         .commands
         .keys()
-        .map(|c| (c.as_str(), (receiver_of(c), command_fn(model.spelling(c)))))
+        .map(|c| {
+            (
+                c.as_str(),
+                (receiver_of(c), command_fn(method_spelling(model, c))),
+            )
+        })
         .collect();
     let taken: BTreeSet<(&str, &str)> = full
         .values()
@@ -247,8 +262,24 @@ pub fn cfg_of(model: &Model, condition: &Condition) -> Option<TokenStream> {
 /// (`get_ray_tracing_shader_group_handles_nv` in `VK_NV_ray_tracing`'s table).
 pub fn fn_field(model: &Model, command: &str, table: &Table) -> Ident {
     match table {
-        Table::Core(_) => ident(&command_fn(command)),
+        Table::Core(_) | Table::Own(_) => ident(&command_fn(command)),
         Table::Extension(e) => ident(&command_fn(model.name_in(command, e))),
+    }
+}
+
+/// Of a table that may be absent (an extension's, or the crate's own of a core
+/// version ash lacks): its field of the receiver's `ext()`, and the error a call
+/// gets without it. A core table of ash's is always there.
+pub fn optional_table(table: &Table) -> (Ident, TokenStream) {
+    match table {
+        Table::Extension(e) => (ident(&feature(e)), quote!(Error::ExtensionNotEnabled(#e))),
+        Table::Own(m) | Table::Core(m) => {
+            let version = format!("Vulkan 1.{m}");
+            (
+                ident(&format!("v1_{m}")),
+                quote!(Error::VersionNotSupported(#version)),
+            )
+        }
     }
 }
 

@@ -231,7 +231,7 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
     let the_table = table(model, &plan.name);
     // A transition's missing extension table poisons the recorder.
     let poisons_without_table =
-        plan.transition.is_some() && matches!(the_table, Some(Table::Extension(_)));
+        plan.transition.is_some() && matches!(the_table, Some(Table::Extension(_) | Table::Own(_)));
     let field = the_table
         .as_ref()
         .map(|t| crate::names::fn_field(model, &plan.name, t));
@@ -240,31 +240,35 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             let table = ident(&format!("fp_v1_{m}"));
             (quote!(let fp = #device_path.fns().#table().#field;), false)
         }
-        // A method that moves the recorder returns the next one, not a `Result`: a
-        // missing table poisons the recorder (its `end` returns the error), and a
-        // begin not recorded makes its end a no-op.
-        Some(Table::Extension(e)) if plan.transition.is_some() => {
-            let fe = ident(&crate::names::feature(&e));
-            let skip = matches!(plan.transition, Some(Transition::Begin(_)))
-                .then(|| quote!(self.skip_begin(true);));
-            (
-                quote! {
-                    let Some(table) = #device_path.ext().#fe.as_ref() else {
-                        let _ = self.accept(Err(Error::ExtensionNotEnabled(#e)));
-                        #skip
-                        return self.into_state();
-                    };
-                    let fp = table.#field;
-                },
-                false,
-            )
-        }
-        Some(Table::Extension(e)) => {
-            let fe = ident(&crate::names::feature(&e));
-            (
-                quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(Error::ExtensionNotEnabled(#e))?.#field;),
-                true,
-            )
+        // An extension's table, or the crate's own table of a core version ash
+        // lacks: either may be absent (the extension not enabled, the version not
+        // the device's), and the call is then refused.
+        Some(t @ (Table::Extension(_) | Table::Own(_))) => {
+            let (fe, missing) = crate::names::optional_table(&t);
+            match plan.transition {
+                // A method that moves the recorder returns the next one, not a
+                // `Result`: a missing table poisons the recorder (its `end` returns
+                // the error), and a begin not recorded makes its end a no-op.
+                Some(_) => {
+                    let skip = matches!(plan.transition, Some(Transition::Begin(_)))
+                        .then(|| quote!(self.skip_begin(true);));
+                    (
+                        quote! {
+                            let Some(table) = #device_path.ext().#fe.as_ref() else {
+                                let _ = self.accept(Err(#missing));
+                                #skip
+                                return self.into_state();
+                            };
+                            let fp = table.#field;
+                        },
+                        false,
+                    )
+                }
+                None => (
+                    quote!(let fp = #device_path.ext().#fe.as_ref().ok_or(#missing)?.#field;),
+                    true,
+                ),
+            }
         }
         None => return (quote!(), quote!(), None),
     };

@@ -100,6 +100,7 @@ fn ext_tables(
     at: Level,
     kind: &str,
     loader_args: TokenStream,
+    own_fields: Vec<TokenStream>,
 ) -> (TokenStream, Vec<TokenStream>) {
     let struct_name = ident(&format!("{kind}Extensions"));
     let kind_ext = format!("{kind}Extensions");
@@ -144,6 +145,7 @@ fn ext_tables(
             #[allow(missing_copy_implementations)]
             pub struct #struct_name {
                 #(#fields)*
+                #(#own_fields)*
             }
             impl core::fmt::Debug for #struct_name {
                 fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
@@ -155,9 +157,104 @@ fn ext_tables(
     )
 }
 
+/// The function tables the crate defines for the core versions ash has none for
+/// (`Model::own_tables`), at device level: each table's struct, its field of
+/// `DeviceExtensions`, and the statement that loads it when the device's version
+/// (capped by the instance's) is at least the table's. Each field is typed by the
+/// `PFN_` type ash has for the command under the name it knows it by (the extension
+/// alias a version promoted), and loaded by the command's core name.
+fn own_device_tables(cx: &Context) -> (TokenStream, Vec<TokenStream>, Vec<TokenStream>) {
+    let model = cx.model;
+    let mut defs = Vec::new();
+    let mut fields = Vec::new();
+    let mut loads = Vec::new();
+    for m in &model.own_tables {
+        let commands: Vec<&String> = model
+            .commands
+            .values()
+            .filter(|c| {
+                c.alias.is_none()
+                    && model.emitted.contains(&c.name)
+                    && level(model, &c.name) == Level::Device
+                    && crate::names::table(model, &c.name) == Some(crate::names::Table::Own(*m))
+            })
+            .map(|c| &c.name)
+            .collect();
+        if commands.is_empty() {
+            continue;
+        }
+        let struct_name = ident(&format!("DeviceFnV1_{m}"));
+        let field = ident(&format!("v1_{m}"));
+        let version = format!("VK_VERSION_1_{m}");
+        let mut members = Vec::new();
+        let mut inits = Vec::new();
+        for c in &commands {
+            let f = ident(&crate::names::command_fn(c));
+            let pfn = ident(&format!("PFN_{}", model.spelling(c)));
+            let doc = format!("`{c}`.");
+            let name = proc_macro2::Literal::c_string(
+                &std::ffi::CString::new(c.as_str()).expect("a command name has no NUL"),
+            );
+            members.push(quote! {
+                #[doc = #doc]
+                pub #f: vk::#pfn,
+            });
+            inits.push(quote! {
+                #f: {
+                    let f = get(#name)?;
+                    __safety!("the loader returned the command named, whose signature is that of the `PFN_` type of ash's name for it (the same command under the extension alias it was promoted from).");
+                    unsafe { core::mem::transmute::<unsafe extern "system" fn(), vk::#pfn>(f) }
+                },
+            });
+        }
+        let doc = format!(
+            "`{version}`'s device-level commands, which ash has no function table for: loaded by their core names through `vkGetDeviceProcAddr`."
+        );
+        let load_doc = format!(
+            "Loads every command of the table for `device`; `None` if the loader lacks one (a device below Vulkan 1.{m} gives none)."
+        );
+        defs.push(quote! {
+            #[doc = #doc]
+            #[derive(Clone, Copy)]
+            #[allow(missing_debug_implementations)]
+            pub struct #struct_name {
+                #(#members)*
+            }
+            impl #struct_name {
+                #[doc = #load_doc]
+                pub fn load(instance: &ash::Instance, device: vk::Device) -> Option<Self> {
+                    let get = |name: &core::ffi::CStr| {
+                        __safety!("`device` is a live device of `instance`, and `name` a NUL-terminated string.");
+                        unsafe { (instance.fp_v1_0().get_device_proc_addr)(device, name.as_ptr()) }
+                    };
+                    Some(#struct_name { #(#inits)* })
+                }
+            }
+        });
+        let field_doc =
+            format!("`{version}`'s commands, when the device's version is at least 1.{m}.");
+        fields.push(quote! {
+            #[doc = #field_doc]
+            pub #field: Option<#struct_name>,
+        });
+        let minor = *m;
+        loads.push(quote! {
+            if exts.version(#minor) {
+                ext.#field = #struct_name::load(physical.parent().fns(), raw);
+            }
+        });
+    }
+    (quote!(#(#defs)*), fields, loads)
+}
+
 fn emit_instance(cx: &Context) -> TokenStream {
-    let (ext_struct, load_stmts) =
-        ext_tables(cx, Level::Instance, "Instance", quote!(entry.fns(), &fns));
+    let (ext_struct, load_stmts) = ext_tables(
+        cx,
+        Level::Instance,
+        "Instance",
+        quote!(entry.fns(), &fns),
+        Vec::new(),
+    );
     quote! {
         #ext_struct
 
@@ -248,14 +345,17 @@ fn emit_instance(cx: &Context) -> TokenStream {
 }
 
 fn emit_device(cx: &Context) -> TokenStream {
+    let (own_defs, own_fields, own_loads) = own_device_tables(cx);
     let (ext_struct, load_stmts) = ext_tables(
         cx,
         Level::Device,
         "Device",
         quote!(physical.parent().fns(), &fns),
+        own_fields,
     );
     quote! {
         #ext_struct
+        #own_defs
 
         /// A logical device: its function tables and the extensions enabled on it.
         /// Clones share it; the last one waits for the device to go idle and destroys it.
@@ -287,6 +387,7 @@ fn emit_device(cx: &Context) -> TokenStream {
                     let props = unsafe { instance.fns().get_physical_device_properties(physical.raw()) };
                     instance.exts().cap(vk::api_version_minor(props.api_version)).with(crate::checks::Exts::new(0, enabled))
                 };
+                #(#own_loads)*
                 Device { inner: Vrc::new(DeviceInner {
                     raw, physical: physical.clone(), fns, ext, command_buffers: Vutex::new(Default::default()),
                     live: Default::default(),
@@ -492,6 +593,10 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
             }
             crate::names::Table::Extension(e) => {
                 let f = ident(&feature(e.as_str()));
+                quote!(match self #device_path.ext().#f.as_ref() { Some(t) => t, None => return })
+            }
+            crate::names::Table::Own(m) => {
+                let f = ident(&format!("v1_{m}"));
                 quote!(match self #device_path.ext().#f.as_ref() { Some(t) => t, None => return })
             }
         };

@@ -129,6 +129,10 @@ pub struct Model {
     /// The extensions the config wants that the reference lacks or defines
     /// otherwise, with the reason, in name order.
     pub left_out: Vec<reference::LeftOut>,
+    /// The minor numbers of the enabled core versions ash has no function table for
+    /// (the reference registry lacks them): the emitted crate defines and loads one
+    /// for each (`DeviceFnV1_<minor>`).
+    pub own_tables: BTreeSet<u32>,
     /// Structs this registry does not mark `returnedonly` and the reference
     /// registry does: Khronos found Vulkan only writes them, and dropped the value
     /// rules of their members.
@@ -243,38 +247,26 @@ impl Model {
         config: &Config,
         config_path: &Path,
     ) -> Result<Model> {
-        // A core version the reference lacks has no function table in ash: it is
-        // left out, listed, and its items come only through the extensions that
-        // bring them.
-        let (versions, mut version_left): (Vec<String>, Vec<String>) = config
-            .enabled_versions()
-            .into_iter()
-            .partition(|v| reference.is_none_or(|r| r.features.iter().any(|f| &f.name == v)));
-        if version_left
+        // A core version the reference lacks has no function table in ash: its
+        // commands go through a table the emitted crate defines and loads by their
+        // core names (`own_tables`); its items ash lacks altogether are left out one
+        // by one (`reference::missing_items`), and the others are named as ash names
+        // them (the extension aliases it has).
+        let versions = config.enabled_versions();
+        let own_tables: BTreeSet<u32> = versions
             .iter()
-            .any(|v| !registry.features.iter().any(|f| &f.name == v))
-        {
-            // The registry lacks it too: the config's error, reported below.
-            version_left.clear();
-        }
-        let (extensions, mut left_out) = reference::select(
+            .filter(|v| {
+                reference.is_some_and(|r| !r.features.iter().any(|f| &f.name == *v))
+                    && registry.features.iter().any(|f| &f.name == *v)
+            })
+            .filter_map(|v| v.strip_prefix("VK_VERSION_1_")?.parse().ok())
+            .collect();
+        let (extensions, left_out) = reference::select(
             registry,
             reference,
             &versions,
             &config.wanted_extensions(registry),
         );
-        for v in &version_left {
-            left_out.insert(
-                0,
-                reference::LeftOut {
-                    name: v.clone(),
-                    reason: format!(
-                        "the reference registry (Vulkan {}) has no such core version, so ash has no function table for it",
-                        reference.map_or("", |r| r.version.as_str())
-                    ),
-                },
-            );
-        }
         let types: BTreeMap<String, TypeDef> = registry
             .types
             .iter()
@@ -288,9 +280,6 @@ impl Model {
 
         let mut enabled: BTreeSet<String> = BTreeSet::new();
         for version in config.enabled_versions() {
-            if version_left.contains(&version) {
-                continue;
-            }
             if !registry.features.iter().any(|f| f.name == version) {
                 let newest = registry
                     .features
@@ -410,10 +399,33 @@ impl Model {
                 .get(name)
                 .is_some_and(|alts| alts.iter().any(|a| expr::eval(a, &enabled)))
         };
+        // What ash names, where a reference registry says: an item the reference
+        // lacks under its own name but has under an alias is spelled by that alias
+        // (an item of a core version ash has no table for, promoted from an
+        // extension ash has).
+        // Of the reference's names, ash defines a command's `PFN_` type under the one
+        // that is no alias there: that one is preferred.
+        let in_reference = |name: &str, canonical: bool| {
+            reference.is_some_and(|r| {
+                r.types
+                    .iter()
+                    .any(|t| t.name == name && !(canonical && t.alias.is_some()))
+                    || r.commands
+                        .iter()
+                        .any(|c| c.name == name && !(canonical && c.alias.is_some()))
+            })
+        };
         let mut spellings: BTreeMap<String, String> = BTreeMap::new();
-        for (alias, target) in &aliased {
-            if !names_enabled(target) && names_enabled(alias) && !spellings.contains_key(target) {
-                spellings.insert(target.clone(), alias.clone());
+        for canonical in [true, false] {
+            for (alias, target) in &aliased {
+                let by_interface = !canonical && !names_enabled(target) && names_enabled(alias);
+                let by_reference = !own_tables.is_empty()
+                    && !in_reference(target, false)
+                    && in_reference(alias, canonical)
+                    && names_enabled(target);
+                if (by_interface || by_reference) && !spellings.contains_key(target) {
+                    spellings.insert(target.clone(), alias.clone());
+                }
             }
         }
         for (alias, target) in aliased {
@@ -520,6 +532,7 @@ impl Model {
                 .or_else(|| reference.and_then(|r| r.sync.clone())),
             reference_version: reference.map(|r| r.version.clone()),
             left_out,
+            own_tables,
             returned_only_in_reference: reference
                 .map(|r| {
                     r.types

@@ -363,12 +363,28 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut>
             if c.alias.is_some() {
                 continue;
             }
+            let device_level = c.params.first().is_some_and(|p| {
+                matches!(
+                    p.type_name.as_str(),
+                    "VkDevice" | "VkQueue" | "VkCommandBuffer"
+                )
+            });
             if !defined.commands.contains_key(spelled) {
                 out.insert(
                     name.clone(),
                     format!(
                         "the reference registry (Vulkan {}) has no command `{spelled}`",
                         reference.version
+                    ),
+                );
+            } else if let (Some(super::tables::Table::Own(m)), false) =
+                (super::tables::table(model, name), device_level)
+            {
+                // The crate's own tables of a version ash lacks are device-level.
+                out.insert(
+                    name.clone(),
+                    format!(
+                        "ash has no function table for `VK_VERSION_1_{m}`, and the emitted crate loads only its device-level commands"
                     ),
                 );
             } else if let Some(super::tables::Table::Extension(e)) =

@@ -67,6 +67,9 @@ pub enum Table {
     Core(u32),
     /// An extension's `InstanceFn` or `DeviceFn`.
     Extension(String),
+    /// A core version ash has no table for (`Model::own_tables`): the emitted
+    /// crate's `DeviceFnV1_<minor>`, loaded by the commands' core names.
+    Own(u32),
 }
 
 /// The table a command of the emitted API is called through: the oldest core version
@@ -87,7 +90,10 @@ pub fn table(model: &Model, command: &str) -> Option<Table> {
         })
         .min();
     if let Some(m) = best {
-        return Some(Table::Core(m));
+        return Some(match model.own_tables.contains(&m) {
+            true => Table::Own(m),
+            false => Table::Core(m),
+        });
     }
     minimal_feature_sets(model, condition)
         .into_iter()
