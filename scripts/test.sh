@@ -57,4 +57,7 @@ step bash scripts/valgrind.sh
 # ash has, regenerated into a scratch crate and compiled (scripts/wide-check.sh); and
 # Vulkan 1.4 as the core version, whose commands ash has no table for.
 step bash scripts/wide-check.sh all-1.4.309 all-1.4.330 core14-1.4.309
+# A Vulkan 1.4 program through that crate (examples/core14): on lavapipe, a 1.3
+# device, its 1.4 call is refused with Error::VersionNotSupported, layer quiet.
+TUFF_DEVICE=llvmpipe step bash scripts/core14.sh
 echo "test.sh: target folder $(du -sh target | cut -f1)"

@@ -299,6 +299,16 @@ impl Origins {
                 all.extend(o);
             }
         }
+        // Every enabled version is numbered, whether or not an enum value names it:
+        // `Exts::version` answers for each (a version whose values ash lacks, and
+        // whose own function table loads only where it holds).
+        all.extend(
+            model
+                .enabled
+                .iter()
+                .filter(|n| n.starts_with("VK_VERSION_"))
+                .cloned(),
+        );
         let mut versions: Vec<(u32, String)> = all
             .iter()
             .filter_map(|n| {
