@@ -48,8 +48,11 @@ step cargo test -p tuff-runtime -p tuff-tests -p tuff-examples \
     --test deferred
 # The stage benchmark's vulkano peer (an optional feature: vulkano is a benchmark
 # dependency only): it builds, passes clippy, and draws raw ash's and tuff's image.
-step cargo clippy -p tuff-examples --all-targets --features vulkano -- -D warnings
-step cargo test -p tuff-examples --features vulkano --test vulkano_peer
+# In a target folder of its own, removed after: with the feature every scene binary
+# is built again (about 1 GB), which nothing later needs.
+CARGO_TARGET_DIR=target/peer step cargo clippy -p tuff-examples --all-targets --features vulkano -- -D warnings
+CARGO_TARGET_DIR=target/peer step cargo test -p tuff-examples --features vulkano --test vulkano_peer
+rm -rf target/peer
 # The adversarial suite under valgrind's memcheck: no invalid read or write, no use
 # of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 step bash scripts/valgrind.sh
@@ -60,4 +63,5 @@ step bash scripts/wide-check.sh all-1.4.309 all-1.4.330 core14-1.4.309
 # A Vulkan 1.4 program through that crate (examples/core14): on lavapipe, a 1.3
 # device, its 1.4 call is refused with Error::VersionNotSupported, layer quiet.
 TUFF_DEVICE=llvmpipe step bash scripts/core14.sh
+rm -rf target/core14
 echo "test.sh: target folder $(du -sh target | cut -f1)"
