@@ -269,17 +269,18 @@ pub fn fn_field(model: &Model, command: &str, table: &Table) -> Ident {
 
 /// Of a table that may be absent (an extension's, or the crate's own of a core
 /// version ash lacks): its field of the receiver's `ext()`, and the error a call
-/// gets without it. A core table of ash's is always there.
-pub fn optional_table(table: &Table) -> (Ident, TokenStream) {
+/// gets without it; `None` for a core table of ash's, which is always there.
+pub fn optional_table(table: &Table) -> Option<(Ident, TokenStream)> {
     match table {
-        Table::Extension(e) => (ident(&feature(e)), quote!(Error::ExtensionNotEnabled(#e))),
-        Table::Own(m) | Table::Core(m) => {
+        Table::Extension(e) => Some((ident(&feature(e)), quote!(Error::ExtensionNotEnabled(#e)))),
+        Table::Own(m) => {
             let version = format!("Vulkan 1.{m}");
-            (
+            Some((
                 ident(&format!("v1_{m}")),
                 quote!(Error::VersionNotSupported(#version)),
-            )
+            ))
         }
+        Table::Core(_) => None,
     }
 }
 

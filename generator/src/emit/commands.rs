@@ -243,8 +243,10 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
         // An extension's table, or the crate's own table of a core version ash
         // lacks: either may be absent (the extension not enabled, the version not
         // the device's), and the call is then refused.
-        Some(t @ (Table::Extension(_) | Table::Own(_))) => {
-            let (fe, missing) = crate::names::optional_table(&t);
+        Some(t) => {
+            let Some((fe, missing)) = crate::names::optional_table(&t) else {
+                unreachable!("a core table is matched above")
+            };
             match plan.transition {
                 // A method that moves the recorder returns the next one, not a
                 // `Result`: a missing table poisons the recorder (its `end` returns

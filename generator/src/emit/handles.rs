@@ -591,12 +591,8 @@ fn emit_handle(cx: &Context, name: &str) -> TokenStream {
                 let fp = ident(&format!("fp_v1_{m}"));
                 quote!(self #device_path.fns().#fp())
             }
-            crate::names::Table::Extension(e) => {
-                let f = ident(&feature(e.as_str()));
-                quote!(match self #device_path.ext().#f.as_ref() { Some(t) => t, None => return })
-            }
-            crate::names::Table::Own(m) => {
-                let f = ident(&format!("v1_{m}"));
+            optional => {
+                let (f, _) = crate::names::optional_table(&optional)?;
                 quote!(match self #device_path.ext().#f.as_ref() { Some(t) => t, None => return })
             }
         };
