@@ -333,6 +333,21 @@ fn vulkan<T, E: std::fmt::Display>(what: &str, result: Result<T, E>) -> Result<T
     result.map_err(|e| anyhow!("{what}: {e}"))
 }
 
+/// A primary command buffer builder for one submission: the frame's and the copy's.
+fn one_time(
+    commands: &Arc<StandardCommandBufferAllocator>,
+    family: u32,
+) -> Result<AutoCommandBufferBuilder<vulkano::command_buffer::PrimaryAutoCommandBuffer>> {
+    vulkan(
+        "AutoCommandBufferBuilder::primary",
+        AutoCommandBufferBuilder::primary(
+            commands.clone(),
+            family,
+            CommandBufferUsage::OneTimeSubmit,
+        ),
+    )
+}
+
 /// Renders `run.warmup + run.frames` frames of the teapots headless through vulkano,
 /// as [`super::tuff_frames::headless`] does through tuff, and returns the timed
 /// frames' stages (and the last frame's pixels). Each frame is recorded by an
@@ -515,14 +530,7 @@ pub fn headless(vulkano: &Vulkano, run: &Run) -> Result<Samples> {
             }
         }
         timer.lap(Stage::Uniform);
-        let mut builder = vulkan(
-            "AutoCommandBufferBuilder::primary",
-            AutoCommandBufferBuilder::primary(
-                commands.clone(),
-                family,
-                CommandBufferUsage::OneTimeSubmit,
-            ),
-        )?;
+        let mut builder = one_time(&commands, family)?;
         vulkan(
             "begin_render_pass",
             builder.begin_render_pass(
@@ -601,14 +609,7 @@ pub fn headless(vulkano: &Vulkano, run: &Run) -> Result<Samples> {
         // The slot's copy follows its frame in the same chain; one fence covers both,
         // and the slot's last one was waited above.
         timer.lap(Stage::Wait);
-        let mut copy = vulkan(
-            "AutoCommandBufferBuilder::primary",
-            AutoCommandBufferBuilder::primary(
-                commands.clone(),
-                family,
-                CommandBufferUsage::OneTimeSubmit,
-            ),
-        )?;
+        let mut copy = one_time(&commands, family)?;
         vulkan(
             "copy_image_to_buffer",
             copy.copy_image_to_buffer(CopyImageToBufferInfo::image_buffer(
