@@ -225,6 +225,8 @@ pub mod status;
 pub mod structs;
 
 mod diagnostics;
+#[doc(hidden)]
+pub mod fuzzing;
 mod memory;
 mod present;
 pub mod recorder;

@@ -509,24 +509,25 @@ impl Module {
 
     /// The size in bytes of a type as laid out in a block; `stride` is the
     /// `MatrixStride` of the member it is, for a matrix.
-    fn size(&self, id: u32, stride: Option<u32>, depth: u32) -> u32 {
-        if depth > 16 {
+    fn size(&self, id: u32, stride: Option<u32>, depth: u32, budget: &mut u32) -> u32 {
+        if depth > 16 || !spend(budget) {
             return 0;
         }
         match self.ty(id) {
             Some((OP_TYPE_INT | OP_TYPE_FLOAT, [width, ..])) => width / 8,
             Some((OP_TYPE_VECTOR, [component, count, ..])) => {
-                count.saturating_mul(self.size(*component, None, depth + 1))
+                count.saturating_mul(self.size(*component, None, depth + 1, budget))
             }
-            Some((OP_TYPE_MATRIX, [column, columns, ..])) => columns
-                .saturating_mul(stride.unwrap_or_else(|| self.size(*column, None, depth + 1))),
+            Some((OP_TYPE_MATRIX, [column, columns, ..])) => columns.saturating_mul(
+                stride.unwrap_or_else(|| self.size(*column, None, depth + 1, budget)),
+            ),
             Some((OP_TYPE_ARRAY, [elem, len, ..])) => {
                 let len = self.constants.get(len).copied().unwrap_or(1);
                 let stride = self
                     .decorations
                     .get(&(id, DEC_ARRAY_STRIDE))
                     .copied()
-                    .unwrap_or_else(|| self.size(*elem, None, depth + 1));
+                    .unwrap_or_else(|| self.size(*elem, None, depth + 1, budget));
                 len.saturating_mul(stride)
             }
             Some((OP_TYPE_STRUCT, members)) => {
@@ -542,7 +543,7 @@ impl Module {
                         .member_decorations
                         .get(&(id, i, DEC_MATRIX_STRIDE))
                         .copied();
-                    end = end.max(offset.saturating_add(self.size(*m, stride, depth + 1)));
+                    end = end.max(offset.saturating_add(self.size(*m, stride, depth + 1, budget)));
                 }
                 end
             }
@@ -554,8 +555,8 @@ impl Module {
     /// How many locations an input variable of type `id` takes: one per scalar or
     /// vector (two for a 64-bit vector of three or four), one per matrix column,
     /// times an array's length.
-    fn locations(&self, id: u32, depth: u32) -> u32 {
-        if depth > 16 {
+    fn locations(&self, id: u32, depth: u32, budget: &mut u32) -> u32 {
+        if depth > 16 || !spend(budget) {
             return 1;
         }
         match self.ty(id) {
@@ -571,21 +572,21 @@ impl Module {
                 }
             }
             Some((OP_TYPE_MATRIX, [column, columns, ..])) => {
-                columns.saturating_mul(self.locations(*column, depth + 1))
+                columns.saturating_mul(self.locations(*column, depth + 1, budget))
             }
             Some((OP_TYPE_ARRAY, [elem, len, ..])) => self
                 .constants
                 .get(len)
                 .copied()
                 .unwrap_or(1)
-                .saturating_mul(self.locations(*elem, depth + 1)),
+                .saturating_mul(self.locations(*elem, depth + 1, budget)),
             _ => 1,
         }
     }
 
     /// The interface-matching type of type `id`.
-    fn io_type(&self, id: u32, depth: u32) -> IoType {
-        if depth > 16 {
+    fn io_type(&self, id: u32, depth: u32, budget: &mut u32) -> IoType {
+        if depth > 16 || !spend(budget) {
             return IoType::Unknown;
         }
         match self.ty(id) {
@@ -593,20 +594,21 @@ impl Module {
             Some((OP_TYPE_INT, [width, signed, ..])) => {
                 IoType::Scalar(if *signed == 1 { 1 } else { 2 }, *width)
             }
-            Some((OP_TYPE_VECTOR, [component, count, ..])) => {
-                IoType::Vector(Box::new(self.io_type(*component, depth + 1)), *count)
-            }
+            Some((OP_TYPE_VECTOR, [component, count, ..])) => IoType::Vector(
+                Box::new(self.io_type(*component, depth + 1, budget)),
+                *count,
+            ),
             Some((OP_TYPE_MATRIX, [column, columns, ..])) => {
-                IoType::Matrix(Box::new(self.io_type(*column, depth + 1)), *columns)
+                IoType::Matrix(Box::new(self.io_type(*column, depth + 1, budget)), *columns)
             }
             Some((OP_TYPE_ARRAY, [elem, len, ..])) => IoType::Array(
-                Box::new(self.io_type(*elem, depth + 1)),
+                Box::new(self.io_type(*elem, depth + 1, budget)),
                 self.constants.get(len).copied().unwrap_or(0),
             ),
             Some((OP_TYPE_STRUCT, members)) => IoType::Struct(
                 members
                     .iter()
-                    .map(|m| self.io_type(*m, depth + 1))
+                    .map(|m| self.io_type(*m, depth + 1, budget))
                     .collect(),
             ),
             _ => IoType::Unknown,
@@ -666,7 +668,7 @@ impl Module {
                     let i = i as u32;
                     let at = self.member_decorations.get(&(ty, i, LOCATION)).copied();
                     let location = at.unwrap_or(next);
-                    let member_ty = self.io_type(*member, 0);
+                    let member_ty = self.io_type(*member, 0, &mut { TYPE_WALK });
                     next = match location {
                         u32::MAX => u32::MAX,
                         l => l.saturating_add(member_ty.locations()),
@@ -690,7 +692,7 @@ impl Module {
                 location: location.unwrap_or(u32::MAX),
                 component,
                 patch,
-                ty: self.io_type(ty, 0),
+                ty: self.io_type(ty, 0, &mut { TYPE_WALK }),
             }]),
         }
     }
@@ -749,7 +751,7 @@ impl Module {
     /// The bytes a push-constant block of struct type `id` spans.
     fn block_range(&self, id: u32) -> (u32, u32) {
         let Some((OP_TYPE_STRUCT, members)) = self.ty(id) else {
-            return (0, self.size(id, None, 0));
+            return (0, self.size(id, None, 0, &mut { TYPE_WALK }));
         };
         let mut start = u32::MAX;
         for i in 0..members.len() as u32 {
@@ -760,13 +762,27 @@ impl Module {
                 .unwrap_or(0);
             start = start.min(offset);
         }
-        (start.min(self.size(id, None, 0)), self.size(id, None, 0))
+        (
+            start.min(self.size(id, None, 0, &mut { TYPE_WALK })),
+            self.size(id, None, 0, &mut { TYPE_WALK }),
+        )
     }
 }
 
 /// The instructions of a module after its five-word header: each opcode with its
 /// words, the first (which holds the opcode and the word count) included. A
 /// malformed instruction ends the walk.
+/// How many types one walk of a type tree may visit. A module's types form a graph,
+/// which a malformed one may give cycles and exponential fan-out (a structure of
+/// sixteen copies of itself); a real shader's types are a few dozen.
+const TYPE_WALK: u32 = 4096;
+
+/// Takes one visit off `budget`; false when none is left.
+fn spend(budget: &mut u32) -> bool {
+    *budget = budget.saturating_sub(1);
+    *budget > 0
+}
+
 fn instructions(words: &[u32]) -> impl Iterator<Item = (u32, &[u32])> {
     let mut at = 5;
     std::iter::from_fn(move || {
@@ -948,7 +964,7 @@ pub(crate) fn interface(words: &[u32]) -> Interface {
                     Some((OP_TYPE_POINTER, [_, pointee, ..])) => *pointee,
                     _ => return None,
                 };
-                Some((*location, m.locations(pointee, 0)))
+                Some((*location, m.locations(pointee, 0, &mut { TYPE_WALK })))
             })
             .collect();
         out.vertex_inputs.push((name, inputs));
@@ -1290,208 +1306,4 @@ fn variable_ops(words: &[u32], variables: &[(u32, u32, u32)]) -> (HashMap<u32, U
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn words(bytes: &[u8]) -> Vec<u32> {
-        spirv_words(bytes).expect("SPIR-V")
-    }
-
-    #[test]
-    fn a_vertex_shader_reads_its_input_locations() {
-        let triangle = interface(&words(include_bytes!(
-            "../../shaders/spv/triangle.vert.spv"
-        )));
-        assert_eq!(
-            triangle.vertex_inputs,
-            [("main".to_owned(), vec![(0, 1), (1, 1)])]
-        );
-        assert!(triangle.reads_vertex_location(b"main", 1));
-        assert_eq!(triangle.entry_points.len(), 1);
-        assert_eq!(
-            (
-                triangle.entry_points[0].name.as_str(),
-                triangle.entry_points[0].model
-            ),
-            ("main", 0)
-        );
-        let entry = |name: &[u8], stage| triangle.entry_point(name, stage).is_some();
-        assert!(entry(b"main", ash::vk::ShaderStageFlags::VERTEX));
-        assert!(!entry(b"main", ash::vk::ShaderStageFlags::FRAGMENT));
-        assert!(!entry(b"other", ash::vk::ShaderStageFlags::VERTEX));
-        assert!(!triangle.reads_vertex_location(b"main", 2));
-        assert!(!triangle.reads_vertex_location(b"other", 0));
-        let test = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));
-        assert_eq!(test.vertex_inputs, [("main".to_owned(), vec![])]);
-    }
-
-    #[test]
-    fn the_test_shaders_interfaces() {
-        let comp = interface(&words(include_bytes!("../../shaders/spv/test.comp.spv")));
-        let mut found: Vec<(u32, u32, ResourceKind, u32)> = comp
-            .resources
-            .iter()
-            .map(|r| (r.set, r.binding, r.kind, r.count))
-            .collect();
-        found.sort_unstable_by_key(|r| (r.0, r.1));
-        assert_eq!(
-            found,
-            [
-                (0, 0, ResourceKind::UniformBuffer, 1),
-                (0, 1, ResourceKind::StorageBuffer, 1)
-            ]
-        );
-        assert_eq!(comp.push_constants, None);
-        assert!(comp.resources.iter().all(|r| r.image.is_none()));
-        let image = interface(&words(include_bytes!("../../shaders/spv/image.comp.spv")));
-        let shape = image
-            .resources
-            .iter()
-            .find(|r| r.binding == 0)
-            .and_then(|r| r.image)
-            .expect("the storage image");
-        assert_eq!(
-            shape,
-            ImageShape {
-                dim: 1,
-                arrayed: false,
-                numeric: 1,
-                // rgba8
-                format: 4,
-            }
-        );
-        assert_eq!(shape.view_type(), Some(ash::vk::ImageViewType::TYPE_2D));
-        let ops_of = |bytes: &[u8], binding: u32| {
-            interface(&words(bytes))
-                .resources
-                .iter()
-                .find(|r| r.binding == binding)
-                .map(|r| r.ops)
-        };
-        // imageLoad reads the storage image.
-        assert_eq!(
-            ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 0),
-            Some(ops::READ | ops::NOT_SAMPLE)
-        );
-        // The output block is a buffer the shader stores to.
-        assert_eq!(
-            ops_of(include_bytes!("../../shaders/spv/image.comp.spv"), 1),
-            Some(ops::STORE)
-        );
-        assert_eq!(
-            ops_of(include_bytes!("../../shaders/spv/atomic.comp.spv"), 0),
-            Some(ops::ATOMIC | ops::NOT_SAMPLE)
-        );
-        // texture() samples with an implicit LOD; textureLodOffset with an offset.
-        assert_eq!(
-            ops_of(include_bytes!("../../shaders/spv/sample_uint.frag.spv"), 0),
-            Some(ops::SAMPLE | ops::IMPLICIT_DREF_PROJ)
-        );
-        assert_eq!(
-            ops_of(include_bytes!("../../shaders/spv/sample_lod.frag.spv"), 0),
-            Some(ops::SAMPLE | ops::SAMPLE_BIAS_OFFSET | ops::OFFSET)
-        );
-        // imageStore writes four components.
-        let store = interface(&words(include_bytes!(
-            "../../shaders/spv/image_store.frag.spv"
-        )));
-        assert_eq!(store.resources[0].write_components, 4);
-        assert_eq!(store.resources[0].ops, ops::WRITE | ops::NOT_SAMPLE);
-        let frag = interface(&words(include_bytes!("../../shaders/spv/test.frag.spv")));
-        assert!(frag.resources.is_empty());
-        // The test fragment shader pushes one vec4.
-        assert_eq!(frag.push_constants, Some((0, 16)));
-    }
-
-    #[test]
-    fn entry_points_keep_their_execution_modes() {
-        let geometry = interface(&words(include_bytes!("../../shaders/spv/points.geom.spv")));
-        let e = geometry
-            .entry_point(b"main", ash::vk::ShaderStageFlags::GEOMETRY)
-            .expect("the geometry entry point");
-        // InputPoints, OutputPoints, OutputVertices 1, Invocations 1.
-        assert!(e.mode(19).is_some());
-        assert!(e.mode(27).is_some());
-        assert_eq!(e.mode(26), Some(&[1][..]));
-        assert_eq!(e.mode(0), Some(&[1][..]));
-        let tese = interface(&words(include_bytes!("../../shaders/spv/bezier.tese.spv")));
-        let e = tese
-            .entry_point(b"main", ash::vk::ShaderStageFlags::TESSELLATION_EVALUATION)
-            .expect("the evaluation entry point");
-        // Quads.
-        assert_eq!(e.first_of(&[22, 24, 25]), Some(24));
-        // The geometry shader reads gl_in[] and writes gl_PerVertex: Position (0) and
-        // PointSize (1) among the members of each block (Input 1, Output 3).
-        let builtins = &interface(&words(include_bytes!("../../shaders/spv/points.geom.spv")))
-            .entry_points[0]
-            .builtins;
-        assert!(builtins.contains(&(0, 1, 1)));
-        assert!(builtins.contains(&(1, 3, 1)));
-        // It writes Position and PointSize; the test vertex shader Position only.
-        let geometry = interface(&words(include_bytes!("../../shaders/spv/points.geom.spv")));
-        assert_eq!(geometry.entry_points[0].writes, [0, 1]);
-        let vertex = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));
-        assert_eq!(vertex.entry_points[0].writes, [0]);
-    }
-
-    #[test]
-    fn interface_variables_keep_their_locations_and_types() {
-        use super::{IoType, IoVar};
-        let vec = |n| IoType::Vector(Box::new(IoType::Scalar(0, 32)), n);
-        let var = |output, location, ty| IoVar {
-            output,
-            location,
-            component: 0,
-            patch: false,
-            ty,
-        };
-        // The geometry stage's per-vertex input array is taken off.
-        let geom = interface(&words(include_bytes!("../../shaders/spv/varying.geom.spv")));
-        let mut io = geom.entry_points[0].io.clone();
-        io.sort_unstable_by_key(|v| v.output);
-        assert_eq!(io, [var(false, 0, vec(4)), var(true, 0, vec(4))]);
-        let full = vec![(0, 1), (1, 1), (3, 1), (4, 1)];
-        assert_eq!(
-            geom.entry_points[0].builtin_blocks,
-            [full.clone(), full.clone()]
-        );
-        let frag = interface(&words(include_bytes!("../../shaders/spv/bezier.frag.spv")));
-        let inputs: Vec<_> = frag.entry_points[0]
-            .io
-            .iter()
-            .filter(|v| !v.output)
-            .cloned()
-            .collect();
-        assert_eq!(inputs, [var(false, 0, vec(3)), var(false, 1, vec(3))]);
-        // A redeclared output block of gl_Position alone.
-        let vert = interface(&words(include_bytes!(
-            "../../shaders/spv/position_only.vert.spv"
-        )));
-        assert_eq!(vert.entry_points[0].builtin_blocks, [vec![], vec![(0, 1)]]);
-        // A vector of more components matches a narrower input only with narrowing.
-        assert!(vec(4).matches(&vec(4), false));
-        assert!(!vec(4).matches(&vec(3), false));
-        assert!(vec(4).matches(&vec(3), true));
-        assert!(!vec(3).matches(&vec(4), true));
-        assert!(!IoType::Unknown.matches(&IoType::Unknown, true));
-        assert!(
-            !IoType::Array(Box::new(vec(4)), 0).matches(&IoType::Array(Box::new(vec(4)), 0), false)
-        );
-    }
-
-    #[test]
-    fn specialization_constants_keep_their_sizes() {
-        let spec = interface(&words(include_bytes!("../../shaders/spv/spec.vert.spv")));
-        assert_eq!(spec.spec_constants, [(0, 4)]);
-        let test = interface(&words(include_bytes!("../../shaders/spv/test.vert.spv")));
-        assert!(test.spec_constants.is_empty());
-    }
-
-    #[test]
-    fn a_truncated_module_keeps_what_was_read() {
-        let mut w = words(include_bytes!("../../shaders/spv/test.comp.spv"));
-        w.truncate(20);
-        let _ = interface(&w);
-        assert_eq!(interface(&w[..3]), Interface::default());
-    }
-}
+mod tests;

@@ -323,28 +323,62 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         Some(path) => Some(registry::load_registry(&path)?),
         None => None,
     };
-    let model = model::Model::build(&reg, reference.as_ref(), &config, &opts.config)?;
+    let sources = scene_sources(&opts.config, &config);
+    let inputs = Inputs {
+        registry_path: &opts.registry,
+        registry: &reg,
+        reference: reference.as_ref(),
+        validusage: vu.as_ref(),
+        config: &config,
+        config_path: &opts.config,
+        sources: &sources,
+    };
+    let mut generation = passes(&inputs)?;
+    standalone(&opts.out, &mut generation.files)?;
+    Ok(generation)
+}
+
+/// The inputs of the passes, read.
+pub(crate) struct Inputs<'a> {
+    pub(crate) registry_path: &'a Path,
+    pub(crate) registry: &'a registry::Registry,
+    pub(crate) reference: Option<&'a registry::Registry>,
+    pub(crate) validusage: Option<&'a registry::ValidUsage>,
+    pub(crate) config: &'a config::Config,
+    pub(crate) config_path: &'a Path,
+    pub(crate) sources: &'a [(String, String)],
+}
+
+/// Every pass from the model to the rendered files, on inputs already read.
+pub(crate) fn passes(inputs: &Inputs) -> Result<Generation> {
+    let config = inputs.config;
+    let model = model::Model::build(
+        inputs.registry,
+        inputs.reference,
+        config,
+        inputs.config_path,
+    )?;
     // The per-command facts of the hazard tracker must be the sync tables' own.
     if let Some(tables) = &model.sync {
         plan::accesses::check(tables).map_err(|message| Error::BadRegistry {
-            path: opts.registry.clone(),
+            path: inputs.registry_path.to_owned(),
             message: format!(
                 "the hazard tracker's facts (plan/accesses.rs) disagree with <sync> of {}: {message}",
                 tables.version
             ),
         })?;
     }
-    let validity = enabled_validity(&model, vu.as_ref());
+    let validity = enabled_validity(&model, inputs.validusage);
     let mut cx = plan::Context::new(&model, &validity);
-    let sources = scene_sources(&opts.config, &config);
-    cx.examples = scene_snippets(&sources);
+    let sources = inputs.sources;
+    cx.examples = scene_snippets(sources);
     let plans = plan::Plans::build(&cx);
     let emission = emit::emit(&plans);
     let mut report = report::build(&model, &validity, &plans.records);
     // The commands the scenes use: called by their ash name in the raw-ash programs,
     // or by their method, on a receiver of its type, in the tuff ones (as the docs'
     // examples are chosen).
-    let ash_calls = scene_calls(&sources);
+    let ash_calls = scene_calls(sources);
     let scenes: std::collections::BTreeSet<String> = plans
         .methods
         .iter()
@@ -369,7 +403,6 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         path: ITEMS_FILE.into(),
         contents: items_list(&model),
     });
-    standalone(&opts.out, &mut files)?;
     Ok(Generation {
         files,
         version: model.version.clone(),
@@ -379,6 +412,11 @@ pub fn generate(opts: &Options) -> Result<Generation> {
         left_out: model.left_out.clone(),
     })
 }
+
+/// The fuzz targets' bodies (`fuzz/`), here so that the test suite replays their
+/// corpus and every crash they found on the stable toolchain (`tests/fuzz_corpus.rs`).
+#[doc(hidden)]
+pub mod fuzzing;
 
 /// For an output folder other than the repository's `generated/`, what makes it a
 /// crate that builds where it is: the crate's hand-written modules, copied from the

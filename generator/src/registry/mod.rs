@@ -10,7 +10,7 @@ mod validusage;
 mod wellformed;
 
 pub use sync::{SyncItem, SyncPipeline, SyncTables};
-pub use validusage::{load_validusage, ValidUsage, VuEntry};
+pub use validusage::{load_validusage, parse_validusage, ValidUsage, VuEntry};
 
 use crate::error::{Error, Result};
 use std::path::Path;
@@ -217,17 +217,22 @@ pub fn load_registry(path: &Path) -> Result<Registry> {
         path: path.to_owned(),
         source,
     })?;
-    wellformed::check(path, &bytes)?;
-    let (parsed, recoverable) =
-        vk_parse::parse_stream(bytes.as_slice()).map_err(|e| Error::BadRegistry {
-            path: path.to_owned(),
-            message: match e {
-                vk_parse::FatalError::MissingRegistryElement => {
-                    "the root element is not <registry>".to_owned()
-                }
-                other => format!("{other:?}"),
-            },
-        })?;
+    parse_registry(path, &bytes)
+}
+
+/// Convert the text of a `vk.xml` already read; `path` names it in errors. Any bytes
+/// give a registry or an error, never a panic (`fuzz/`'s `registry` target).
+pub fn parse_registry(path: &Path, bytes: &[u8]) -> Result<Registry> {
+    wellformed::check(path, bytes)?;
+    let (parsed, recoverable) = vk_parse::parse_stream(bytes).map_err(|e| Error::BadRegistry {
+        path: path.to_owned(),
+        message: match e {
+            vk_parse::FatalError::MissingRegistryElement => {
+                "the root element is not <registry>".to_owned()
+            }
+            other => format!("{other:?}"),
+        },
+    })?;
     // Elements and attributes vk-parse does not know are schema additions of newer
     // registries and are skipped; missing or malformed parts mean the file is broken.
     if let Some(e) = recoverable.iter().find(|e| {

@@ -92,7 +92,13 @@ pub fn load_validusage(path: &Path) -> Result<ValidUsage> {
         path: path.to_owned(),
         source,
     })?;
-    let file: File = serde_json::from_slice(&bytes).map_err(|e| match e.classify() {
+    parse_validusage(path, &bytes)
+}
+
+/// Read the text of a `validusage.json` already read; `path` names it in errors. Any
+/// bytes give the rules or an error, never a panic (`fuzz/`'s `validusage` target).
+pub fn parse_validusage(path: &Path, bytes: &[u8]) -> Result<ValidUsage> {
+    let file: File = serde_json::from_slice(bytes).map_err(|e| match e.classify() {
         serde_json::error::Category::Syntax | serde_json::error::Category::Eof => {
             Error::MalformedJson {
                 path: path.to_owned(),

@@ -1,0 +1,4 @@
+//! Any bytes as a `validusage.json`: an error or a result, never a panic.
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|bytes: &[u8]| tuff_gen::fuzzing::validusage(bytes));
