@@ -56,6 +56,9 @@ rm -rf target/peer
 # The adversarial suite under valgrind's memcheck: no invalid read or write, no use
 # of uninitialised memory, outside the few loader errors scripts/valgrind.supp names.
 step bash scripts/valgrind.sh
+# Leaks: the scenes for 100 frames and a window through 30 resizes under memcheck's
+# leak check; a block lost with a frame in tuff's code fails (scripts/leaks.sh).
+step bash scripts/leaks.sh
 # The generator outside the pinned inputs: each newer registry, with every extension
 # ash has, regenerated into a scratch crate and compiled (scripts/wide-check.sh); and
 # Vulkan 1.4 as the core version, whose commands ash has no table for.

@@ -67,7 +67,7 @@ pub fn run<S: Scene>(
                 .unwrap_or_else(|| PathBuf::from(format!("{}.png", req.scene)));
             crate::image_file::write_png(&out, r.width, r.height, &r.rgba)?;
             println!(
-                "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}",
+                "{}: wrote {} ({}x{}); {} frames in {:.3} s: {:.1} frames/s on {}{}",
                 req.scene,
                 out.display(),
                 r.width,
@@ -75,7 +75,8 @@ pub fn run<S: Scene>(
                 r.frames,
                 r.elapsed.as_secs_f64(),
                 r.fps(),
-                gpu.name
+                gpu.name,
+                r.resident.describe("frame", r.frames)
             );
             Ok(())
         })

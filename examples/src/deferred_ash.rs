@@ -508,14 +508,15 @@ fn worker_secondaries(
 /// Renders `frames` frames (at least one) of `layout` at `extent` with `threads`
 /// workers (1 to [`data::MAX_WORKERS`]) and reads the last one back: its pixels, the
 /// time from the first recording to the last completion, and the average
-/// recording time per frame over every frame but the first (zero for one frame).
+/// recording time per frame over every frame but the first (zero for one frame), and
+/// the resident memory through the run.
 pub fn render(
     vulkan: &mut Vulkan,
     layout: Layout,
     extent: vk::Extent2D,
     frames: u32,
     threads: u32,
-) -> Result<(Vec<u8>, Duration, Duration)> {
+) -> Result<(Vec<u8>, Duration, Duration, crate::headless::Resident)> {
     if !(1..=data::MAX_WORKERS).contains(&threads) {
         bail!(
             "the thread count must be 1 to {}, not {threads}",
@@ -539,6 +540,7 @@ pub fn render(
     let (readback, readback_memory) =
         o.buffer(device, bytes, vk::BufferUsageFlags::TRANSFER_DST, cached)?;
     let mut recording = Duration::ZERO;
+    let mut resident = crate::headless::Resident::default();
     // SAFETY: a slot is updated and recorded only after its fence says the slot's
     // last submission completed, and the readback is read only after every fence.
     unsafe {
@@ -573,12 +575,14 @@ pub fn render(
             device
                 .queue_submit(queue, &[submit], fence)
                 .context("vkQueueSubmit")?;
+            resident.after_frame(frame + 1, frames);
         }
         device
             .wait_for_fences(&o.fences, true, u64::MAX)
             .context("vkWaitForFences")?;
         let elapsed = start.elapsed();
+        resident.finish();
         let rgba = crate::raw_ash::read_memory(device, readback_memory, bytes as usize)?;
-        Ok((rgba, elapsed, recording / (frames - 1).max(1)))
+        Ok((rgba, elapsed, recording / (frames - 1).max(1), resident))
     }
 }

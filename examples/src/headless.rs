@@ -22,6 +22,60 @@ pub struct Rendered {
     pub frames: u32,
     /// From the first frame's recording to the last frame's completion.
     pub elapsed: Duration,
+    /// Resident memory through the run: whether frames leak.
+    pub resident: Resident,
+}
+
+/// The process's resident memory after the first tenth of a run's frames and after
+/// the last one (completed): a run that leaks per frame grows between the two. Read
+/// from `/proc/self/status` (`VmRSS`); empty elsewhere, and for runs of fewer than
+/// 10 frames.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Resident {
+    /// The frame after which the first reading was taken, and the bytes.
+    pub early: Option<(u32, u64)>,
+    /// The bytes after the last frame completed.
+    pub last: Option<u64>,
+}
+
+impl Resident {
+    /// Takes the first reading if `frame` (counted from 1) of `frames` is the last of
+    /// the run's first tenth (a frame, or any step a run counts).
+    pub fn after_frame(&mut self, frame: u32, frames: u32) {
+        if frames >= 10 && frame == frames / 10 {
+            self.early = resident_bytes().map(|b| (frame, b));
+        }
+    }
+
+    /// Takes the last reading, once the last frame completed.
+    pub fn finish(&mut self) {
+        if self.early.is_some() {
+            self.last = resident_bytes();
+        }
+    }
+
+    /// `"; resident memory 41.2 MiB after frame 1000, 41.3 MiB after frame 10000
+    /// (+0.2 %)"` (`unit` is `frame`), or nothing without both readings.
+    pub fn describe(&self, unit: &str, frames: u32) -> String {
+        let (Some((frame, early)), Some(last)) = (self.early, self.last) else {
+            return String::new();
+        };
+        let mib = |b: u64| b as f64 / (1024.0 * 1024.0);
+        format!(
+            "; resident memory {:.1} MiB after {unit} {frame}, {:.1} MiB after {unit} {frames} ({:+.1} %)",
+            mib(early),
+            mib(last),
+            (last as f64 / early as f64 - 1.0) * 100.0
+        )
+    }
+}
+
+/// This process's resident memory in bytes (`VmRSS` of `/proc/self/status`).
+pub fn resident_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
 }
 
 impl Rendered {
@@ -70,6 +124,7 @@ pub fn render<S: Scene>(
         tuff::MemoryLocation::Readback,
     )?;
     let mut ring = gpu.device.frames_in_flight(gpu.family, FRAMES_IN_FLIGHT)?;
+    let mut resident = Resident::default();
     let start = Instant::now();
     for n in 0..frames {
         let mut frame = ring.next_frame()?;
@@ -84,9 +139,11 @@ pub fn render<S: Scene>(
         let framebuffer = &targets.framebuffers[slot];
         render::record_frame(&mut frame, &render_pass, framebuffer, &scene, &view, copy)?;
         frame.submit(&gpu.queue, &[], &[])?;
+        resident.after_frame(n + 1, frames);
     }
     ring.wait_all()?;
     let elapsed = start.elapsed();
+    resident.finish();
     let rgba = readback.memory().read(0, bytes as usize)?;
     Ok(Rendered {
         width,
@@ -94,5 +151,6 @@ pub fn render<S: Scene>(
         rgba,
         frames,
         elapsed,
+        resident,
     })
 }

@@ -29,6 +29,38 @@ const RESIZES: [(u32, u32); 10] = [
     (33, 33),
 ];
 
+/// What scripted resize number `n` does: the sizes of [`RESIZES`] first, then sizes
+/// drawn from a fixed sequence (most ordinary, some of one to four pixels a side),
+/// every 25th `0x0`, and every 50th a minimise and, at the next step, a restore.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Step {
+    Size(u32, u32),
+    Minimise,
+    Restore,
+}
+
+fn step(n: u32) -> Step {
+    if let Some(&(w, h)) = RESIZES.get(n as usize) {
+        return Step::Size(w, h);
+    }
+    match n % 50 {
+        0 => return Step::Minimise,
+        1 => return Step::Restore,
+        25 => return Step::Size(0, 0),
+        _ => {}
+    }
+    // splitmix64: the same sizes on every run.
+    let mut z = u64::from(n).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^= z >> 31;
+    let side = |bits: u64| match bits % 8 {
+        0 => 1 + (bits >> 3) as u32 % 4,
+        _ => 1 + (bits >> 3) as u32 % 1024,
+    };
+    Step::Size(side(z & 0xffff_ffff), side(z >> 32))
+}
+
 /// The instance extensions a window on X11 needs.
 pub const INSTANCE_EXTENSIONS: [tuff::CStrPtr<'static>; 2] = [
     tuff::CStrPtr::new(c"VK_KHR_surface"),
@@ -122,6 +154,8 @@ struct Live<S> {
     paused: bool,
     /// Each swapchain's extent, in order (repeats of the last one left out).
     extents: Vec<vk::Extent2D>,
+    /// Resident memory after the first tenth of the scripted resizes.
+    resident: crate::headless::Resident,
 }
 
 struct App<'g, S, F> {
@@ -195,6 +229,7 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> App<'_, S, F> {
             paused_frames: 0,
             paused: false,
             extents: Vec::new(),
+            resident: crate::headless::Resident::default(),
         })
     }
 }
@@ -428,8 +463,12 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
                 };
                 let common = self.common;
                 if drawn {
-                    live.frames_since_request += 1;
                     self.samples.push(&self.timer);
+                }
+                // While the window has no area, scripted steps go on at the pace of
+                // the wake-ups `about_to_wait` asks for.
+                if drawn || live.paused {
+                    live.frames_since_request += 1;
                 }
                 // Scripted resizes, for tests: wait a few frames between them.
                 if common.resizes > 0 {
@@ -438,10 +477,17 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
                             event_loop.exit();
                             return;
                         }
-                        let (w, h) = RESIZES[live.resizes_requested as usize % RESIZES.len()];
-                        // The window manager (if any) may refuse; the swapchain
-                        // follows whatever size the window ends up with.
-                        let _ = live.window.request_inner_size(PhysicalSize::new(w, h));
+                        match step(live.resizes_requested) {
+                            // The window manager (if any) may refuse; the swapchain
+                            // follows whatever size the window ends up with.
+                            Step::Size(w, h) => {
+                                let _ = live.window.request_inner_size(PhysicalSize::new(w, h));
+                            }
+                            Step::Minimise => live.window.set_minimized(true),
+                            Step::Restore => live.window.set_minimized(false),
+                        }
+                        live.resident
+                            .after_frame(live.resizes_requested + 1, common.resizes);
                         // Look at the surface again next frame rather than wait for
                         // the resize event.
                         live.resized = true;
@@ -461,8 +507,13 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
         if let Some(live) = &self.live {
-            // While minimised nothing is drawn; sleep until an event (a resize) comes.
-            if live.paused {
+            // While minimised nothing is drawn; sleep until an event (a resize) comes,
+            // or, with scripted resizes, until the next step is due.
+            if live.paused && self.common.resizes > 0 {
+                let due = Instant::now() + std::time::Duration::from_millis(10);
+                event_loop.set_control_flow(ControlFlow::WaitUntil(due));
+                live.window.request_redraw();
+            } else if live.paused {
                 event_loop.set_control_flow(ControlFlow::Wait);
             } else {
                 event_loop.set_control_flow(ControlFlow::Poll);
@@ -483,14 +534,17 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
             return;
         }
         let seconds = live.start.elapsed().as_secs_f64();
+        let mut resident = live.resident;
+        resident.finish();
         println!(
-            "window: {} frames in {:.2} s ({:.1} frames/s), {} resizes, {} swapchain recreations, {} frames paused",
+            "window: {} frames in {:.2} s ({:.1} frames/s), {} resizes, {} swapchain recreations, {} frames paused{}",
             live.frame,
             seconds,
             live.frame as f64 / seconds.max(1e-9),
             live.resizes_requested,
             live.recreations,
-            live.paused_frames
+            live.paused_frames,
+            resident.describe("resize", live.resizes_requested)
         );
         let extents: Vec<String> = live
             .extents
@@ -505,6 +559,30 @@ impl<S: Scene, F: Fn(&Gpu, &tuff::RenderPass) -> Result<S>> ApplicationHandler f
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_storm_has_every_kind_of_step() {
+        let steps: Vec<Step> = (0..500).map(step).collect();
+        assert_eq!(
+            steps[..RESIZES.len()],
+            RESIZES.map(|(w, h)| Step::Size(w, h))
+        );
+        assert_eq!(
+            (steps[50], steps[51], steps[75]),
+            (Step::Minimise, Step::Restore, Step::Size(0, 0))
+        );
+        let sizes: Vec<(u32, u32)> = steps
+            .iter()
+            .filter_map(|s| match *s {
+                Step::Size(w, h) => Some((w, h)),
+                _ => None,
+            })
+            .collect();
+        assert!(sizes.iter().filter(|&&(w, h)| w <= 4 || h <= 4).count() > 50);
+        assert!(sizes.iter().all(|&(w, h)| w <= 1024 && h <= 1024));
+        assert!(sizes.iter().filter(|&&(w, h)| w > 512 && h > 512).count() > 50);
+        assert_eq!(steps, (0..500).map(step).collect::<Vec<_>>());
+    }
 
     fn caps(current: (u32, u32)) -> vk::SurfaceCapabilitiesKHR {
         vk::SurfaceCapabilitiesKHR {

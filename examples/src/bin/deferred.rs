@@ -51,7 +51,7 @@ fn run(args: &Args) -> Result<()> {
     let r = &run.rendered;
     tuff_examples::image_file::write_png(&out, r.width, r.height, &r.rgba)?;
     println!(
-        "deferred: wrote {} ({}x{}); {} objects, {} threads{}; {} frames in {:.3} s: {:.1} frames/s, recording {:.1} us/frame on {name}",
+        "deferred: wrote {} ({}x{}); {} objects, {} threads{}; {} frames in {:.3} s: {:.1} frames/s, recording {:.1} us/frame on {name}{}",
         out.display(),
         r.width,
         r.height,
@@ -62,6 +62,7 @@ fn run(args: &Args) -> Result<()> {
         r.elapsed.as_secs_f64(),
         r.fps(),
         run.recording.as_secs_f64() * 1e6,
+        r.resident.describe("frame", r.frames),
     );
     Ok(())
 }

@@ -25,13 +25,14 @@ fn main() -> std::process::ExitCode {
             height: c.height,
         };
         raw_ash::run_with(c, REQUIREMENTS, |vulkan| {
-            let (rgba, elapsed, recording) =
+            let (rgba, elapsed, recording, resident) =
                 deferred_ash::render(vulkan, layout, extent, c.frames, args.scene.threads)?;
             let note = format!(
-                "; {} objects, {} threads, recording {:.1} us/frame",
+                "; {} objects, {} threads, recording {:.1} us/frame{}",
                 args.scene.count,
                 args.scene.threads,
-                recording.as_secs_f64() * 1e6
+                recording.as_secs_f64() * 1e6,
+                resident.describe("frame", c.frames.max(1))
             );
             Ok((rgba, elapsed, note))
         })

@@ -455,6 +455,7 @@ pub fn render(
         gpu.device
             .frames_in_flight_with_workers(gpu.family, FRAMES_IN_FLIGHT, threads as usize)?;
     let mut recording = Duration::ZERO;
+    let mut resident = crate::headless::Resident::default();
     let start = Instant::now();
     for n in 0..frames {
         let mut frame = ring.next_frame()?;
@@ -472,9 +473,11 @@ pub fn render(
             recording += began.elapsed();
         }
         frame.submit(&gpu.queue, &[], &[])?;
+        resident.after_frame(n + 1, frames);
     }
     ring.wait_all()?;
     let elapsed = start.elapsed();
+    resident.finish();
     let rgba = readback.memory().read(0, bytes as usize)?;
     Ok(Run {
         rendered: Rendered {
@@ -483,6 +486,7 @@ pub fn render(
             rgba,
             frames,
             elapsed,
+            resident,
         },
         recording: recording / (frames - 1).max(1),
     })
