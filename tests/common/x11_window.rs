@@ -13,6 +13,8 @@ pub struct X11Window {
     pub window: xlib::Window,
     /// The default screen the window is on.
     screen: i32,
+    /// The window was destroyed before drop ([`X11Window::destroy_window`]).
+    destroyed: std::sync::atomic::AtomicBool,
 }
 
 // SAFETY: the process calls XInitThreads before any other Xlib call (`open`), which
@@ -76,6 +78,7 @@ impl X11Window {
                 display,
                 window,
                 screen,
+                destroyed: false.into(),
             }
         }
     }
@@ -99,12 +102,30 @@ impl X11Window {
     }
 }
 
+impl X11Window {
+    /// Destroys the window behind the back of whatever surface was made from it, as a
+    /// window manager or the user closing it would: the surface is lost. The display
+    /// connection stays open until drop.
+    pub fn destroy_window(&self) {
+        use std::sync::atomic::Ordering;
+        if !self.destroyed.swap(true, Ordering::SeqCst) {
+            // SAFETY: the display is live until drop; the window is destroyed once.
+            unsafe {
+                (self.xlib.XDestroyWindow)(self.display, self.window);
+                (self.xlib.XSync)(self.display, xlib::False);
+            }
+        }
+    }
+}
+
 impl Drop for X11Window {
     fn drop(&mut self) {
         // SAFETY: the window was made on this display, and every Vulkan surface made
         // from them is gone (the owner drops this after its surfaces).
         unsafe {
-            (self.xlib.XDestroyWindow)(self.display, self.window);
+            if !*self.destroyed.get_mut() {
+                (self.xlib.XDestroyWindow)(self.display, self.window);
+            }
             (self.xlib.XCloseDisplay)(self.display);
         }
     }
