@@ -106,6 +106,23 @@ mod threaded {
         rec.end_render_pass().end().expect("end");
     }
 
+    /// One frame of the ring: its workers record their secondaries on threads of their
+    /// own, the primary executes them into the frame's target, and the frame is
+    /// submitted.
+    fn worker_frame(
+        frames: &mut tuff::FramesInFlight,
+        targets: &[tuff_setup::ColorTarget; 2],
+        queue: &tuff::Queue,
+    ) {
+        let mut frame = frames.next_frame().expect("frame");
+        let target = &targets[frame.index];
+        record_workers(target, frame.workers().iter_mut());
+        let (primary, workers) = frame.parts();
+        let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().collect();
+        execute_workers(primary, target, &secondaries);
+        frame.submit(queue, &[], &[]).expect("submit");
+    }
+
     /// Four workers, each with its own pool, record a secondary that continues the
     /// primary's render pass instance, all at once; the primary executes the four,
     /// and the frame runs twice (the second after recording every buffer again).
@@ -145,13 +162,7 @@ mod threaded {
             .frames_in_flight_with_workers(s.family, 2, 4)
             .expect("frames");
         for _ in 0..6 {
-            let mut frame = frames.next_frame().expect("frame");
-            let target = &targets[frame.index];
-            record_workers(target, frame.workers().iter_mut());
-            let (primary, workers) = frame.parts();
-            let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().collect();
-            execute_workers(primary, target, &secondaries);
-            frame.submit(&s.queue, &[], &[]).expect("submit");
+            worker_frame(&mut frames, &targets, &s.queue);
         }
         frames.wait_all().expect("wait");
         vulkan::assert_silent(&s.messages);
@@ -231,13 +242,7 @@ mod threaded {
                 });
             }
             loop {
-                let mut frame = frames.next_frame().expect("frame");
-                let target = &targets[frame.index];
-                record_workers(target, frame.workers().iter_mut());
-                let (primary, workers) = frame.parts();
-                let secondaries: Vec<&tuff::CommandBuffer> = workers.iter().collect();
-                execute_workers(primary, target, &secondaries);
-                frame.submit(&s.queue, &[], &[]).expect("submit");
+                worker_frame(&mut frames, &targets, &s.queue);
                 progress.fetch_add(1, Ordering::SeqCst);
                 if early.is_none() && start.elapsed() * 12 >= Duration::from_secs(seconds) {
                     early = Some(resident());
