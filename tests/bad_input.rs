@@ -311,6 +311,24 @@ fn registry_with_a_malformed_dependency_expression() {
     );
 }
 
+/// A name that is no C identifier (a comment's text where a command's name goes, as
+/// the structure-aware fuzz target made one) is refused by the reader, naming the
+/// element, not by the emitter's identifier maker in a panic.
+#[test]
+fn registry_with_a_name_that_is_no_identifier() {
+    let c = case();
+    let text = std::fs::read_to_string(root().join("vk.xml")).unwrap();
+    let needle = "<name>vkCmdFillBuffer</name>";
+    assert!(text.contains(needle));
+    let bad = text.replacen(needle, "<name>1.0.0: patch version</name>", 1);
+    let vk = write(&c.dir, "vk.xml", &bad);
+    fails(
+        &c,
+        &["--registry", &vk, "--no-validusage"],
+        &["a <command>: `1.0.0: patch version` is not a C identifier"],
+    );
+}
+
 /// A run that would emit fewer commands, structs or handles than the output folder
 /// lists (its `emitted-items.txt`, written by the run before) fails, naming what would
 /// go, and writes nothing; `--allow-shrink` says a human accepts it.

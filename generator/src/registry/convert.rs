@@ -150,6 +150,7 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
             message: "it defines no commands or no VK_VERSION_1_0 feature".to_owned(),
         });
     }
+    check_names(path, &reg)?;
     if let Some(block) = sync {
         reg.sync = Some(super::sync::read(
             block,
@@ -159,6 +160,62 @@ pub(crate) fn convert(path: &Path, parsed: vk::Registry) -> Result<Registry> {
         )?);
     }
     Ok(reg)
+}
+
+/// Every name the emitter makes a Rust identifier of must be a C identifier: a file
+/// whose `<name>` holds anything else (text moved there from a comment) is broken,
+/// and is refused here, naming the element, not deep in the emitter. Include files
+/// (`X11/Xlib.h`) are named by path and are exempt; so are `<enums>` groups, whose
+/// `API Constants` has a space.
+fn check_names(path: &Path, reg: &Registry) -> Result<()> {
+    let check = |what: &dyn Fn() -> String, name: &str| {
+        let mut chars = name.chars();
+        let identifier = chars
+            .next()
+            .is_some_and(|c| c == '_' || c.is_ascii_alphabetic())
+            && chars.all(|c| c == '_' || c.is_ascii_alphanumeric());
+        match identifier {
+            true => Ok(()),
+            false => Err(Error::BadRegistry {
+                path: path.to_owned(),
+                message: format!("{}: `{name}` is not a C identifier", what()),
+            }),
+        }
+    };
+    let fields = |owner: &str, fields: &[Field]| {
+        fields.iter().try_for_each(|f| {
+            check(&|| format!("a member of `{owner}`"), &f.name)?;
+            check(
+                &|| format!("the type of `{owner}`'s `{}`", f.name),
+                &f.type_name,
+            )
+        })
+    };
+    for t in reg
+        .types
+        .iter()
+        .filter(|t| t.category.as_deref() != Some("include"))
+    {
+        check(&|| "a <type>".to_owned(), &t.name)?;
+        fields(&t.name, &t.members)?;
+    }
+    for g in &reg.enum_groups {
+        for v in &g.values {
+            check(&|| format!("a value of <enums> `{}`", g.name), v)?;
+        }
+    }
+    for c in &reg.commands {
+        check(&|| "a <command>".to_owned(), &c.name)?;
+        // An alias is a name and the command it names, nothing more.
+        if c.alias.is_none() {
+            check(
+                &|| format!("the return type of `{}`", c.name),
+                &c.return_type,
+            )?;
+            fields(&c.name, &c.params)?;
+        }
+    }
+    Ok(())
 }
 
 /// `1.3.239` from the `VK_HEADER_VERSION` and `VK_HEADER_VERSION_COMPLETE` defines.
