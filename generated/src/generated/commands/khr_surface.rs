@@ -8,7 +8,7 @@ impl PhysicalDevice {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 260) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 295) does; the example programs run in CI:
 
 ```ignore
 let caps = gpu.physical.get_surface_capabilities_khr(&self.surface)?;
@@ -73,7 +73,7 @@ The caller upholds the rules that [`Self::get_surface_capabilities_khr`] checks 
 
 # Example
 
-Called, as `examples/src/window.rs` (line 156) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 190) does; the example programs run in CI:
 
 ```ignore
 let formats = gpu.physical.get_surface_formats_khr(Some(&surface))?;
@@ -213,7 +213,7 @@ The caller upholds the rules that [`Self::get_surface_present_modes_khr`] checks
 
 # Example
 
-Called, as `examples/src/window.rs` (line 153) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 187) does; the example programs run in CI:
 
 ```ignore
 if !gpu.physical.get_surface_support_khr(gpu.family, &surface)? {

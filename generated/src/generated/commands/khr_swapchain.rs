@@ -8,7 +8,7 @@ impl Device {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 339) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 374) does; the example programs run in CI:
 
 ```ignore
 let index =
@@ -136,7 +136,7 @@ The caller upholds the rules that [`Self::acquire_next_image_khr`] checks at run
 
 # Example
 
-Called, as `examples/src/window.rs` (line 294) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 329) does; the example programs run in CI:
 
 ```ignore
 None => gpu.device.create_swapchain_khr(&self.surface, &info)?,
@@ -238,7 +238,7 @@ The caller upholds the rules that [`Self::create_swapchain_khr`] checks at run t
 
 # Example
 
-Called, as `examples/src/window.rs` (line 297) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 332) does; the example programs run in CI:
 
 ```ignore
 self.images = gpu.device.get_swapchain_images_khr(&swapchain)?;
@@ -316,7 +316,7 @@ impl Queue {
 
 # Example
 
-Called, as `examples/src/window.rs` (line 381) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 416) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(

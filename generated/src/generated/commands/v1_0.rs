@@ -1728,7 +1728,7 @@ The caller upholds the rules that [`Self::create_sampler`] checks at run time: `
 
 # Example
 
-Called, as `examples/src/window.rs` (line 181) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 215) does; the example programs run in CI:
 
 ```ignore
 gpu.device
@@ -1895,7 +1895,7 @@ The caller upholds the rules that [`Self::create_shader_module`] checks at run t
 
 # Example
 
-Called, as `examples/src/window.rs` (line 274) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 309) does; the example programs run in CI:
 
 ```ignore
 // Every frame that used the old images, and every present waiting on their

@@ -345,7 +345,7 @@ The caller upholds the rules that [`Self::signal_semaphore`] checks at run time:
 
 # Example
 
-Called, as `examples/src/window.rs` (line 383) does; the example programs run in CI:
+Called, as `examples/src/window.rs` (line 418) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(

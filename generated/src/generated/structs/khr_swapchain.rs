@@ -6,7 +6,7 @@ use super::*;
 
 # Example
 
-Made, as `examples/src/window.rs` (line 382) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 417) does; the example programs run in CI:
 
 ```ignore
 match gpu.queue.present_khr(
@@ -84,7 +84,7 @@ impl<'a> PresentInfoKHR<'a> {
 
 # Example
 
-Made, as `examples/src/window.rs` (line 276) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 311) does; the example programs run in CI:
 
 ```ignore
 let info = tuff::SwapchainCreateInfoKHR::new(&self.surface)

@@ -1550,7 +1550,7 @@ impl<'a> SamplerCreateInfo<'a> {
 
 # Example
 
-Made, as `examples/src/window.rs` (line 181) does; the example programs run in CI:
+Made, as `examples/src/window.rs` (line 215) does; the example programs run in CI:
 
 ```ignore
 gpu.device
