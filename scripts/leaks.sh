@@ -14,7 +14,9 @@ frames=${LEAKS_FRAMES:-100}
 . scripts/xvfb.sh
 cargo build -q -p tuff-examples --bin teapots --bin deferred
 logs=$(mktemp -d)
-trap 'rm -rf "$logs"; kill "${xvfb_pid:-0}" 2>/dev/null || true' EXIT
+# scripts/xvfb.sh's own trap is replaced here: stop its server, if it started one
+# (never `kill 0`: that is the whole process group, the caller's test run included).
+trap 'rm -rf "$logs"; if [ -n "${xvfb_pid:-}" ]; then kill "$xvfb_pid" 2>/dev/null || true; fi' EXIT
 status=0
 check() {
     local name=$1 log=$logs/$1.log

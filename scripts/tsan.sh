@@ -16,7 +16,8 @@ bin=$(cargo +nightly test -q -p tuff-tests --features multi_thread --test thread
     --target x86_64-unknown-linux-gnu --no-run --message-format=json 2>/dev/null |
     sed -n 's/.*"executable":"\([^"]*threads-[^"]*\)".*/\1/p' | tail -1)
 log=$(mktemp)
-trap 'rm -f "$log"; kill "${xvfb_pid:-0}" 2>/dev/null || true' EXIT
+# scripts/xvfb.sh's own trap is replaced here: stop its server, if it started one.
+trap 'rm -f "$log"; if [ -n "${xvfb_pid:-}" ]; then kill "$xvfb_pid" 2>/dev/null || true; fi' EXIT
 (cd tests && TUFF_STRESS_SECONDS=$seconds TSAN_OPTIONS="halt_on_error=0" "$bin" \
     --exact threaded::eight_threads_record_and_churn_objects_at_once --nocapture) > "$log" 2>&1 || true
 grep -q "1 passed" "$log" || { cat "$log"; echo "tsan.sh: the test failed" >&2; exit 1; }
