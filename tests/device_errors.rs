@@ -14,7 +14,7 @@ mod vulkan;
 mod x11_window;
 
 use tuff::{vk, Handle as _};
-use tuff_setup::{setup, setup_with, Wsi};
+use tuff_setup::{setup, setup_with, swapchain_info, Wsi};
 use vulkan::assert_silent;
 
 /// Device memory asked for until the heap refuses: every allocation a heap can give,
@@ -131,29 +131,9 @@ fn a_window_destroyed_under_its_swapchain_is_an_error() {
         .physical
         .get_surface_support_khr(s.family, &surface)
         .expect("support"));
-    let caps = s
-        .physical
-        .get_surface_capabilities_khr(&surface)
-        .expect("capabilities");
-    let format = s
-        .physical
-        .get_surface_formats_khr(Some(&surface))
-        .expect("formats")[0];
-    let info = tuff::SwapchainCreateInfoKHR::new(&surface)
-        .min_image_count(caps.min_image_count.max(2))
-        .image_format(format.format)
-        .image_color_space(format.color_space)
-        .image_extent(caps.current_extent)
-        .image_array_layers(1)
-        .image_usage(vk::ImageUsageFlags::COLOR_ATTACHMENT)
-        .image_sharing_mode(vk::SharingMode::EXCLUSIVE)
-        .pre_transform(caps.current_transform)
-        .composite_alpha(vk::CompositeAlphaFlagsKHR::OPAQUE)
-        .present_mode(vk::PresentModeKHR::FIFO)
-        .clipped(true);
     let swapchain = s
         .device
-        .create_swapchain_khr(&surface, &info)
+        .create_swapchain_khr(&surface, &swapchain_info(&s, &surface))
         .expect("swapchain");
     window.destroy_window();
     let semaphore = s

@@ -25,7 +25,7 @@ mod x11_window;
 use pipelines::{access_memory, host_buffer, pipelines, Pipelines, COLOR, FACTOR, INVOCATIONS};
 use std::any::Any;
 use tuff::vk;
-use tuff_setup::{setup, setup_with, ColorTarget, Setup, Wsi};
+use tuff_setup::{setup, setup_with, swapchain_info, ColorTarget, Setup, Wsi};
 use vulkan::assert_silent;
 
 /// A small deterministic shuffle, so a failing order can be replayed.
@@ -611,50 +611,6 @@ fn xlib_surface(s: &Setup, window: &x11_window::X11Window) -> tuff::SurfaceKHR {
         )
     }
     .expect("xlib surface")
-}
-
-/// A swapchain create info for `surface` at its current size.
-fn swapchain_info<'a>(
-    s: &Setup,
-    surface: &'a tuff::SurfaceKHR,
-) -> tuff::SwapchainCreateInfoKHR<'a> {
-    let caps = s
-        .physical
-        .get_surface_capabilities_khr(surface)
-        .expect("surface capabilities");
-    let formats = s
-        .physical
-        .get_surface_formats_khr(Some(surface))
-        .expect("surface formats");
-    let modes = s
-        .physical
-        .get_surface_present_modes_khr(Some(surface))
-        .expect("present modes");
-    assert!(
-        modes.contains(&vk::PresentModeKHR::FIFO),
-        "FIFO is always supported"
-    );
-    let format = formats[0];
-    tuff::SwapchainCreateInfoKHR::new(surface)
-        .min_image_count(
-            caps.min_image_count
-                .max(2)
-                .min(if caps.max_image_count == 0 {
-                    u32::MAX
-                } else {
-                    caps.max_image_count
-                }),
-        )
-        .image_format(format.format)
-        .image_color_space(format.color_space)
-        .image_extent(caps.current_extent)
-        .image_array_layers(1)
-        .image_usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_DST)
-        .image_sharing_mode(vk::SharingMode::EXCLUSIVE)
-        .pre_transform(caps.current_transform)
-        .composite_alpha(vk::CompositeAlphaFlagsKHR::OPAQUE)
-        .present_mode(vk::PresentModeKHR::FIFO)
-        .clipped(true)
 }
 
 #[test]

@@ -607,3 +607,47 @@ impl Drop for Pending<'_> {
         }
     }
 }
+
+/// A swapchain create info for `surface` at its current size.
+pub fn swapchain_info<'a>(
+    s: &Setup,
+    surface: &'a tuff::SurfaceKHR,
+) -> tuff::SwapchainCreateInfoKHR<'a> {
+    let caps = s
+        .physical
+        .get_surface_capabilities_khr(surface)
+        .expect("surface capabilities");
+    let formats = s
+        .physical
+        .get_surface_formats_khr(Some(surface))
+        .expect("surface formats");
+    let modes = s
+        .physical
+        .get_surface_present_modes_khr(Some(surface))
+        .expect("present modes");
+    assert!(
+        modes.contains(&vk::PresentModeKHR::FIFO),
+        "FIFO is always supported"
+    );
+    let format = formats[0];
+    tuff::SwapchainCreateInfoKHR::new(surface)
+        .min_image_count(
+            caps.min_image_count
+                .max(2)
+                .min(if caps.max_image_count == 0 {
+                    u32::MAX
+                } else {
+                    caps.max_image_count
+                }),
+        )
+        .image_format(format.format)
+        .image_color_space(format.color_space)
+        .image_extent(caps.current_extent)
+        .image_array_layers(1)
+        .image_usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_DST)
+        .image_sharing_mode(vk::SharingMode::EXCLUSIVE)
+        .pre_transform(caps.current_transform)
+        .composite_alpha(vk::CompositeAlphaFlagsKHR::OPAQUE)
+        .present_mode(vk::PresentModeKHR::FIFO)
+        .clipped(true)
+}
