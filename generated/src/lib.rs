@@ -245,6 +245,7 @@ pub use handles::*;
 pub use memory::allocation::{
     Bound, BoundMemory, GpuAllocator, LockedMemory, MemoryLocation, NaiveAllocator,
 };
+pub use memory::host::{HostAllocator, HostRequest, HostStats};
 pub use memory::indirect::{IndirectArguments, IndirectBuffer};
 pub use memory::mapping::MappedMemory;
 pub use recorder::{

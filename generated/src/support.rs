@@ -223,6 +223,9 @@ impl<'a, 'w: 'a, T: Handle> Handles<'a, T> for &'a HandleSlice<'w, T> {
 #[derive(Clone)]
 pub struct Entry {
     inner: Vrc<ash::Entry>,
+    // The callbacks instances and devices made from this entry are created and
+    // destroyed with; they hold the entry, so the allocator outlives them.
+    host: Option<crate::HostAllocator>,
 }
 
 impl core::fmt::Debug for Entry {
@@ -240,6 +243,7 @@ impl Entry {
         let entry = unsafe { ash::Entry::load() }.map_err(|e| Error::Load(e.to_string()))?;
         Ok(Entry {
             inner: Vrc::new(entry),
+            host: None,
         })
     }
 
@@ -247,7 +251,31 @@ impl Entry {
     pub fn from_ash(entry: ash::Entry) -> Entry {
         Entry {
             inner: Vrc::new(entry),
+            host: None,
         }
+    }
+
+    /// This entry, whose instances and devices the implementation allocates host
+    /// memory for through `host` (their `vkCreate*`/`vkDestroy*` take its callbacks).
+    /// Instances made before keep the allocator they were made with.
+    ///
+    /// ```no_run
+    /// let host = tuff::HostAllocator::new();
+    /// let entry = tuff::Entry::load()?.with_host_allocator(host.clone());
+    /// let instance = entry.create_instance(&tuff::InstanceCreateInfo::new())?;
+    /// assert!(host.stats().live_blocks > 0);
+    /// # drop(instance);
+    /// # Ok::<(), tuff::Error>(())
+    /// ```
+    pub fn with_host_allocator(mut self, host: crate::HostAllocator) -> Entry {
+        self.host = Some(host);
+        self
+    }
+
+    /// The host allocator set by [`Self::with_host_allocator`].
+    #[inline]
+    pub fn host_allocator(&self) -> Option<&crate::HostAllocator> {
+        self.host.as_ref()
     }
 
     /// ash's loader tables.

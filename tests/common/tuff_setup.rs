@@ -40,6 +40,7 @@ pub fn setup(validation: bool) -> Setup {
 /// [`setup`], with window-system extensions.
 pub fn setup_with(validation: bool, wsi: Wsi) -> Setup {
     setup_full(
+        None,
         validation,
         wsi,
         vk::PhysicalDeviceFeatures::default(),
@@ -62,6 +63,7 @@ pub fn vuid<T>(r: tuff::Result<T>) -> &'static str {
 #[allow(dead_code)]
 pub fn setup_bare(validation: bool) -> Setup {
     setup_full(
+        None,
         validation,
         Wsi::None,
         vk::PhysicalDeviceFeatures::default(),
@@ -74,6 +76,7 @@ pub fn setup_bare(validation: bool) -> Setup {
 #[allow(dead_code)]
 pub fn setup_v1_2(validation: bool) -> Setup {
     setup_full(
+        None,
         validation,
         Wsi::None,
         vk::PhysicalDeviceFeatures::default(),
@@ -86,6 +89,7 @@ pub fn setup_v1_2(validation: bool) -> Setup {
 #[allow(dead_code)]
 pub fn setup_full_features(validation: bool) -> Setup {
     setup_full(
+        None,
         validation,
         Wsi::None,
         vk::PhysicalDeviceFeatures::default(),
@@ -95,13 +99,14 @@ pub fn setup_full_features(validation: bool) -> Setup {
 
 /// [`setup`], with these Vulkan 1.0 features enabled.
 pub fn setup_with_features(validation: bool, features: vk::PhysicalDeviceFeatures) -> Setup {
-    setup_full(validation, Wsi::None, features, Chain::Core)
+    setup_full(None, validation, Wsi::None, features, Chain::Core)
 }
 
 /// [`setup`], with the same Vulkan 1.2 and 1.3 features enabled through the
 /// structs of the extensions they came from rather than the core versions' structs.
 pub fn setup_with_extension_feature_structs(validation: bool) -> Setup {
     setup_full(
+        None,
         validation,
         Wsi::None,
         vk::PhysicalDeviceFeatures::default(),
@@ -124,7 +129,21 @@ enum Chain {
     V12,
 }
 
+/// [`setup`], its instance and device made from `entry` (one with a host allocator,
+/// say).
+#[allow(dead_code)]
+pub fn setup_on(entry: tuff::Entry, validation: bool) -> Setup {
+    setup_full(
+        Some(entry),
+        validation,
+        Wsi::None,
+        vk::PhysicalDeviceFeatures::default(),
+        Chain::Core,
+    )
+}
+
 fn setup_full(
+    entry: Option<tuff::Entry>,
     validation: bool,
     wsi: Wsi,
     features: vk::PhysicalDeviceFeatures,
@@ -139,7 +158,8 @@ fn setup_full(
             )
         };
     }
-    let entry = tuff::Entry::load().expect("the Vulkan loader is not installed");
+    let entry =
+        entry.unwrap_or_else(|| tuff::Entry::load().expect("the Vulkan loader is not installed"));
     let messages = tuff::MessageLog::new();
     let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
     let mut exts = Vec::new();

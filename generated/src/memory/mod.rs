@@ -2,5 +2,6 @@
 //! mapped memory.
 
 pub(crate) mod allocation;
+pub(crate) mod host;
 pub(crate) mod indirect;
 pub(crate) mod mapping;

@@ -373,6 +373,9 @@ fn emit_command(all: &Plans, plan: &Plan) -> (TokenStream, TokenStream, Option<T
             Param::Dispatch => call_args.push(receiver_raw.clone()),
             Param::Receiver => call_args.push(quote!(self.raw(),)),
             Param::Allocator => call_args.push(quote!(core::ptr::null(),)),
+            Param::HostAllocator => call_args.push(quote!(
+                crate::memory::host::HostCallbacks::host_callbacks(self),
+            )),
             Param::NotDeferred => call_args.push(quote!(vk::DeferredOperationKHR::null(),)),
             Param::Count => {
                 // The length of the first slice that names this count.

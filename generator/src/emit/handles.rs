@@ -337,8 +337,13 @@ fn emit_instance(cx: &Context) -> TokenStream {
         }
         impl Drop for InstanceInner {
             fn drop(&mut self) {
-                __safety!("every child holds a clone of the instance, so none is left (VUID-vkDestroyInstance-instance-00629); no allocator was given.");
-                unsafe { (self.fns.fp_v1_0().destroy_instance)(self.fns.handle(), core::ptr::null()) };
+                __safety!("every child holds a clone of the instance, so none is left (VUID-vkDestroyInstance-instance-00629); the callbacks it was created with, which the entry it holds keeps alive (VUID-vkDestroyInstance-instance-00630, -00631).");
+                unsafe {
+                    (self.fns.fp_v1_0().destroy_instance)(
+                        self.fns.handle(),
+                        crate::memory::host::HostCallbacks::host_callbacks(&self.entry),
+                    )
+                };
             }
         }
     }
@@ -481,10 +486,13 @@ fn emit_device(cx: &Context) -> TokenStream {
         }
         impl Drop for DeviceInner {
             fn drop(&mut self) {
-                __safety!("every child holds a clone of the device, so none is left (VUID-vkDestroyDevice-device-00378); waiting for idle first means no submission is still executing (VUID-vkDestroyDevice-device-05137).");
+                __safety!("every child holds a clone of the device, so none is left (VUID-vkDestroyDevice-device-00378); waiting for idle first means no submission is still executing (VUID-vkDestroyDevice-device-05137); the callbacks it was created with, which the physical device it holds keeps alive (VUID-vkDestroyDevice-device-00379, -00380).");
                 unsafe {
                     let _ = (self.fns.fp_v1_0().device_wait_idle)(self.raw);
-                    (self.fns.fp_v1_0().destroy_device)(self.raw, core::ptr::null());
+                    (self.fns.fp_v1_0().destroy_device)(
+                        self.raw,
+                        crate::memory::host::HostCallbacks::host_callbacks(&self.physical),
+                    );
                 }
             }
         }

@@ -14,6 +14,9 @@ pub enum Param {
     Dispatch,
     /// `pAllocator`: always NULL.
     Allocator,
+    /// `pAllocator` of a command that creates an instance or device
+    /// ([`HOST_ALLOCATED`]): the callbacks of the entry's `HostAllocator`, or NULL.
+    HostAllocator,
     /// The `VkDeferredOperationKHR` a command may defer its work onto: always
     /// `VK_NULL_HANDLE`, so the command completes before the method returns. A
     /// deferred command reads its arguments and writes its outputs until the
@@ -282,6 +285,12 @@ pub fn recorded(plan: &Plan) -> bool {
     plan.receiver == "VkCommandBuffer" && plan.name.starts_with("vkCmd")
 }
 
+/// The commands whose `pAllocator` is the entry's host allocator: the instance and
+/// the device. Their objects are created with NULL, which leaves the choice to the
+/// implementation (Mesa's drivers use the device's allocator); the wrappers' drops
+/// pass the same callbacks to `vkDestroyInstance` and `vkDestroyDevice`.
+pub const HOST_ALLOCATED: &[&str] = &["vkCreateInstance", "vkCreateDevice"];
+
 /// Plan a command, or say why it cannot be emitted safely.
 pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     let model = cx.model;
@@ -320,7 +329,11 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         } else if i > 0 && p.type_name == receiver && p.pointers == 0 {
             Param::Receiver
         } else if p.type_name == "VkAllocationCallbacks" {
-            Param::Allocator
+            if HOST_ALLOCATED.contains(&name) {
+                Param::HostAllocator
+            } else {
+                Param::Allocator
+            }
         } else if p.type_name == "VkDeferredOperationKHR" && p.pointers == 0 && optional {
             // The optional one is the command's deferral; the operation's own
             // commands take it as a required handle.

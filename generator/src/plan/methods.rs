@@ -30,12 +30,18 @@ pub fn rows(cx: &Context, plans: &[&Plan]) -> Vec<MethodRow> {
         .iter()
         .map(|plan| {
             let mut seen: BTreeSet<String> = BTreeSet::new();
-            // `pAllocator` is always NULL: its struct's rules cannot apply.
+            // `pAllocator` is NULL or tuff's own callbacks: its struct's rules are
+            // never the caller's.
             let mut todo: Vec<String> = model.commands[&plan.name]
                 .params
                 .iter()
                 .zip(&plan.params)
-                .filter(|(_, shape)| !matches!(shape, super::commands::Param::Allocator))
+                .filter(|(_, shape)| {
+                    !matches!(
+                        shape,
+                        super::commands::Param::Allocator | super::commands::Param::HostAllocator
+                    )
+                })
                 .map(|(p, _)| p.type_name.clone())
                 .collect();
             // The indirect arguments a command reads from GPU memory.

@@ -437,6 +437,9 @@ fn param_settlement(p: &Param) -> Settlement {
             Settlement::Static("taken as wrappers, which always hold valid handles; outputs are written into storage the wrapper provides".into())
         }
         Param::Allocator => Settlement::Static("always NULL".into()),
+        Param::HostAllocator => Settlement::Static(
+            "NULL, or the callbacks of the entry's `HostAllocator`, which tuff makes and keeps alive while the instance or device lives".into(),
+        ),
         Param::NotDeferred => Settlement::Static(NOT_DEFERRED.into()),
         Param::Display(_) => Settlement::Static(
             "taken as a `raw_window_handle::DisplayHandle`, a display connection valid while it is borrowed (a handle of another window system is refused)".into(),

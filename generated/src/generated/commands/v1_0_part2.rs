@@ -57,7 +57,7 @@ The caller upholds the rules that [`Self::create_device`] checks at run time: `V
             fp(
                 self.raw(),
                 create_info as *const DeviceCreateInfo<'a> as *const _,
-                core::ptr::null(),
+                crate::memory::host::HostCallbacks::host_callbacks(self),
                 &mut out,
             )
         };
@@ -468,7 +468,7 @@ The caller upholds the rules that [`Self::create_instance`] checks at run time: 
         let r = unsafe {
             fp(
                 create_info as *const InstanceCreateInfo<'a> as *const _,
-                core::ptr::null(),
+                crate::memory::host::HostCallbacks::host_callbacks(self),
                 &mut out,
             )
         };
