@@ -343,7 +343,12 @@ fn rendered_checks_read_what_their_data_says() {
 /// implicit-vuids-spec-toolchain.txt`): at least 99.9% agreement both ways, and every
 /// difference a checked-in exception with its reason.
 fn check_toolchain_agreement(version: &str) {
-    let dir = shared_registry(version);
+    let pinned = root().join("tests/registries").join(version);
+    let dir = if pinned.is_dir() {
+        pinned
+    } else {
+        shared_registry(version)
+    };
     let l = load(&dir, true);
     let derived: BTreeSet<String> = l
         .validity
@@ -413,6 +418,12 @@ fn derivation_agrees_with_the_toolchain_1_3_281() {
 #[test]
 fn derivation_agrees_with_the_toolchain_1_4_330() {
     check_toolchain_agreement("1.4.330");
+}
+
+/// The newest registry (Vulkan-Docs at 1.4.360, pinned in `tests/registries/`).
+#[test]
+fn derivation_agrees_with_the_toolchain_1_4_360() {
+    check_toolchain_agreement("1.4.360");
 }
 
 /// A newer registry keeps every command, struct and handle an older one emits: the
@@ -514,4 +525,44 @@ fn a_fact_the_sync_tables_do_not_allow_stops_the_generator() {
         .retain(|s| s.name != "VK_PIPELINE_STAGE_2_BLIT_BIT");
     let e = tuff_gen::plan::accesses::check(&t).expect_err("refused");
     assert!(e.contains("no stage VK_PIPELINE_STAGE_2_BLIT_BIT"), "{e}");
+}
+
+/// No registry here has a flags type whose declared bits and name disagree; a
+/// registry that had one gets it listed (the CLI prints each as a warning), not read
+/// by a silent guess: with `VkCullModeFlags`'s `requires` dropped, or pointed at
+/// another enum, the note names it.
+#[test]
+fn a_flags_type_whose_declaration_and_name_disagree_is_listed() {
+    let notes = |l: &Loaded| tuff_gen::validity::implicit::bitmask_shape_notes(&l.model);
+    for v in ["1.3.239", "1.3.281", "1.4.309", "1.4.330"] {
+        assert_eq!(
+            notes(&load(&shared_registry(v), true)),
+            Vec::<String>::new(),
+            "{v}"
+        );
+    }
+    let newest = load(&root().join("tests/registries/1.4.360"), true);
+    assert_eq!(notes(&newest), Vec::<String>::new(), "1.4.360");
+    let text = std::fs::read_to_string(root().join("vk.xml")).unwrap();
+    let declared = r#"<type requires="VkCullModeFlagBits"               category="bitmask">"#;
+    assert!(text.contains(declared));
+    let opts = tuff_gen::Options::pinned();
+    let config = tuff_gen::config::Config::load(&opts.config).unwrap();
+    for (edit, says) in [
+        (
+            r#"<type category="bitmask">"#,
+            "`VkCullModeFlags` declares no bits; the specification's toolchain reads `VkCullModeFlagBits` by name, which has values",
+        ),
+        (
+            r#"<type requires="VkFrontFace" category="bitmask">"#,
+            "`VkCullModeFlags` declares its bits as `VkFrontFace`; the specification's toolchain reads `VkCullModeFlagBits` by name, which has values",
+        ),
+    ] {
+        let edited = text.replacen(declared, edit, 1);
+        let reg = tuff_gen::registry::parse_registry(std::path::Path::new("edited vk.xml"), edited.as_bytes()).unwrap();
+        let model = tuff_gen::model::Model::build(&reg, None, &config, &opts.config).unwrap();
+        let got = tuff_gen::validity::implicit::bitmask_shape_notes(&model);
+        assert_eq!(got.len(), 1, "{got:?}");
+        assert!(got[0].starts_with(says), "{got:?}");
+    }
 }

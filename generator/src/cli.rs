@@ -179,6 +179,9 @@ where
             for l in &g.left_out {
                 let _ = writeln!(out, "tuff-gen: left out {}: {}", l.name, l.reason);
             }
+            for note in &g.shape_notes {
+                let _ = writeln!(out, "tuff-gen: warning: {note}");
+            }
             if let Some(c) = &g.comparison {
                 let _ = writeln!(
                     out,

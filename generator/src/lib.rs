@@ -98,6 +98,9 @@ pub struct Generation {
     /// The extensions the config wants that the reference registry lacks or
     /// defines otherwise, with the reason.
     pub left_out: Vec<model::reference::LeftOut>,
+    /// Registry shapes read by the toolchain's convention where the registry says
+    /// otherwise (`validity::implicit::bitmask_shape_notes`): warnings to print.
+    pub shape_notes: Vec<String>,
 }
 
 /// The rules as they apply in programs that enable only what the safe constructors
@@ -410,6 +413,7 @@ pub(crate) fn passes(inputs: &Inputs) -> Result<Generation> {
         registry: report.registry,
         comparison: validity.comparison.clone(),
         left_out: model.left_out.clone(),
+        shape_notes: validity::implicit::bitmask_shape_notes(&model),
     })
 }
 

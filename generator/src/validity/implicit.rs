@@ -630,14 +630,7 @@ impl<'a> Deriver<'a> {
     }
 
     fn bits_defined(&self, flags: &str) -> bool {
-        let mut bits = flags.replace("Flags", "FlagBits");
-        if let Some(alias) = self.model.types.get(&bits).and_then(|t| t.alias.clone()) {
-            bits = alias;
-        }
-        self.model
-            .enum_values
-            .get(&bits)
-            .is_some_and(|v| !v.is_empty())
+        bits_by_name(self.model, flags).1
     }
 
     fn struct_always_valid(&self, name: &str, depth: usize) -> bool {
@@ -841,4 +834,51 @@ mod tests {
         assert!(Toolchain::for_version("1.5.0").device_address);
         assert!(!Toolchain::for_version("1.3.239").queuecount);
     }
+}
+
+/// The FlagBits enum the specification's toolchain reads for a flags type (it looks
+/// it up by name, `Flags` -> `FlagBits`, through an alias) and whether that enum has
+/// a value: the toolchain writes `-zerobitmask` for a flags type without.
+fn bits_by_name(model: &Model, flags: &str) -> (String, bool) {
+    let mut bits = flags.replace("Flags", "FlagBits");
+    if let Some(alias) = model.types.get(&bits).and_then(|t| t.alias.clone()) {
+        bits = alias;
+    }
+    let defined = model.enum_values.get(&bits).is_some_and(|v| !v.is_empty());
+    (bits, defined)
+}
+
+/// The flags types whose declaration and name disagree about their bits: the
+/// registry's `requires`/`bitvalues` attribute names no enum, or another one, or one
+/// whose values differ in being there from those of the enum the name leads to. The
+/// derivation follows the toolchain (by name); each such type is listed, so that a
+/// registry that changes the shape is seen, not silently guessed at.
+pub fn bitmask_shape_notes(model: &Model) -> Vec<String> {
+    let mut notes = Vec::new();
+    for (name, t) in &model.types {
+        if t.category != Some(Kind::Bitmask) || t.alias.is_some() {
+            continue;
+        }
+        let (by_name, named_has) = bits_by_name(model, name);
+        let declared = t.bit_values.as_deref();
+        let declared_has =
+            declared.is_some_and(|b| model.enum_values.get(b).is_some_and(|v| !v.is_empty()));
+        if declared == Some(by_name.as_str()) || (declared.is_none() && !named_has) {
+            continue;
+        }
+        let said = match declared {
+            Some(b) if declared_has => format!("declares its bits as `{b}`"),
+            Some(b) => format!("declares its bits as `{b}`, which has no value"),
+            None => "declares no bits".to_owned(),
+        };
+        let read = if named_has {
+            "which has values"
+        } else {
+            "which has none"
+        };
+        notes.push(format!(
+            "`{name}` {said}; the specification's toolchain reads `{by_name}` by name, {read}: its implicit rules follow the toolchain"
+        ));
+    }
+    notes
 }
