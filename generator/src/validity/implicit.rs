@@ -805,37 +805,6 @@ fn describe(p: &Field, category: Option<Kind>) -> String {
     format!("`{}` must be {shape}{noun}", p.name)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn implicit_shapes() {
-        assert!(is_implicit_vuid("VUID-vkCmdDraw-commandBuffer-parameter"));
-        assert!(is_implicit_vuid("VUID-VkInstanceCreateInfo-pNext-pNext"));
-        assert!(is_implicit_vuid("VUID-vkCmdDraw-renderpass"));
-        assert!(is_implicit_vuid(
-            "VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength"
-        ));
-        assert!(!is_implicit_vuid("VUID-VkInstanceCreateInfo-pNext"));
-        assert!(!is_implicit_vuid("VUID-vkCmdDraw-None-02690"));
-        assert!(!is_implicit_vuid(
-            "VUID-vkCmdDraw-renderpass-parameter-extra"
-        ));
-    }
-
-    #[test]
-    fn toolchain_switches_after_the_last_registry_with_the_older_rule() {
-        assert!(!Toolchain::for_version("1.3.239").parent_chain);
-        assert!(Toolchain::for_version("1.3.281").parent_chain);
-        assert!(Toolchain::for_version("1.4.309").parent_chain);
-        assert!(!Toolchain::for_version("1.4.309").suspended);
-        assert!(Toolchain::for_version("1.4.330").suspended);
-        assert!(Toolchain::for_version("1.5.0").device_address);
-        assert!(!Toolchain::for_version("1.3.239").queuecount);
-    }
-}
-
 /// The FlagBits enum the specification's toolchain reads for a flags type (it looks
 /// it up by name, `Flags` -> `FlagBits`, through an alias) and whether that enum has
 /// a value: the toolchain writes `-zerobitmask` for a flags type without.
@@ -881,4 +850,35 @@ pub fn bitmask_shape_notes(model: &Model) -> Vec<String> {
         ));
     }
     notes
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn implicit_shapes() {
+        assert!(is_implicit_vuid("VUID-vkCmdDraw-commandBuffer-parameter"));
+        assert!(is_implicit_vuid("VUID-VkInstanceCreateInfo-pNext-pNext"));
+        assert!(is_implicit_vuid("VUID-vkCmdDraw-renderpass"));
+        assert!(is_implicit_vuid(
+            "VUID-vkAllocateDescriptorSets-pAllocateInfo::descriptorSetCount-arraylength"
+        ));
+        assert!(!is_implicit_vuid("VUID-VkInstanceCreateInfo-pNext"));
+        assert!(!is_implicit_vuid("VUID-vkCmdDraw-None-02690"));
+        assert!(!is_implicit_vuid(
+            "VUID-vkCmdDraw-renderpass-parameter-extra"
+        ));
+    }
+
+    #[test]
+    fn toolchain_switches_after_the_last_registry_with_the_older_rule() {
+        assert!(!Toolchain::for_version("1.3.239").parent_chain);
+        assert!(Toolchain::for_version("1.3.281").parent_chain);
+        assert!(Toolchain::for_version("1.4.309").parent_chain);
+        assert!(!Toolchain::for_version("1.4.309").suspended);
+        assert!(Toolchain::for_version("1.4.330").suspended);
+        assert!(Toolchain::for_version("1.5.0").device_address);
+        assert!(!Toolchain::for_version("1.3.239").queuecount);
+    }
 }
