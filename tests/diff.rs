@@ -4,7 +4,7 @@
 mod common;
 
 use common::{cli, root, shared_registry};
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 /// Every `"vuid"` string of a validusage.json, walked as plain JSON.
@@ -76,6 +76,46 @@ fn the_diff_of_two_registries_counts_what_the_files_say() {
     let d: serde_json::Value = serde_json::from_str(&out).expect("the diff is JSON");
     assert_eq!(d["old_version"], "1.3.239");
     assert_eq!(d["new_version"], "1.4.309");
+
+    // What moved to core and what is new: Vulkan 1.4 is the one version 1.4.309 adds.
+    let core = d["core"].as_array().expect("core versions");
+    assert_eq!(core.len(), 1, "{core:?}");
+    let v14 = &core[0];
+    assert_eq!(v14["name"], "VK_VERSION_1_4");
+    let names = |v: &serde_json::Value| -> BTreeSet<String> {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_str().unwrap().to_owned())
+            .collect()
+    };
+    let promoted = names(&v14["promoted_extensions"]);
+    assert!(
+        promoted.contains("VK_KHR_push_descriptor") && promoted.contains("VK_KHR_maintenance5")
+    );
+    let moved: BTreeMap<String, BTreeSet<String>> = v14["moved"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| (m["core"].as_str().unwrap().to_owned(), names(&m["was"])))
+        .collect();
+    // Promoted from an extension 1.3.239 had: the extension's names.
+    assert_eq!(
+        moved["vkCmdPushDescriptorSet"],
+        BTreeSet::from(["vkCmdPushDescriptorSetKHR".to_owned()])
+    );
+    assert!(moved["VK_INDEX_TYPE_UINT8"].contains("VK_INDEX_TYPE_UINT8_EXT"));
+    // New with 1.4, or from an extension newer than 1.3.239.
+    let new_in_core = names(&v14["new"]);
+    for item in [
+        "VkPhysicalDeviceVulkan14Features",
+        "VK_API_VERSION_1_4",
+        "vkCmdBindIndexBuffer2",
+        "vkMapMemory2",
+    ] {
+        assert!(new_in_core.contains(item), "{item} is new");
+    }
+    assert!(moved.keys().all(|k| !new_in_core.contains(k)));
 
     let (a, b) = (
         vuids(&root().join("validusage.json")),

@@ -80,6 +80,30 @@ pub struct Emitted {
     pub signatures_changed: Vec<Signature>,
 }
 
+/// An item a new core version requires that OLD had under another name (an
+/// extension's), or under its own.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Moved {
+    /// Its name in the core version: `vkCmdPushDescriptorSet`.
+    pub core: String,
+    /// The names OLD had it under: `vkCmdPushDescriptorSetKHR`.
+    pub was: Vec<String>,
+}
+
+/// A core version NEW has and OLD lacks: what it took in from extensions, and what
+/// is new with it.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct CoreVersion {
+    /// `VK_VERSION_1_4`.
+    pub name: String,
+    /// The extensions NEW says were promoted to it (`promotedto`).
+    pub promoted_extensions: Vec<String>,
+    /// Commands, types and enum values it requires that OLD had, by any name.
+    pub moved: Vec<Moved>,
+    /// Those OLD had by no name: new in this version.
+    pub new: Vec<String>,
+}
+
 /// Everything `tuff-gen diff` reports.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Diff {
@@ -89,6 +113,8 @@ pub struct Diff {
     pub new_version: String,
     /// Items and extensions added and removed.
     pub items: Vec<Change>,
+    /// The core versions NEW adds: what moved to core, what is new.
+    pub core: Vec<CoreVersion>,
     /// Rules added, removed and changed, when both sides have `validusage.json`.
     pub rules: Option<Rules>,
     /// Why the rules were not compared, when they were not.
@@ -108,6 +134,7 @@ pub fn diff(old: &Side, new: &Side, config: &Path) -> Result<Diff> {
         });
     }
     let items = item_changes(&a, &b);
+    let core = core_changes(&a, &b);
     let (rules, rules_not_compared) = match (&old.validusage, &new.validusage) {
         (Some(x), Some(y)) => (Some(rule_changes(x, y)?), None),
         (x, _) => {
@@ -162,10 +189,122 @@ pub fn diff(old: &Side, new: &Side, config: &Path) -> Result<Diff> {
         old_version: a.version,
         new_version: b.version,
         items,
+        core,
         rules,
         rules_not_compared,
         emitted,
     })
+}
+
+/// For each core version of `b` that `a` lacks, every item its blocks require, each
+/// either moved (`a` had it under a name `b` gives as an alias of it, or under its
+/// own) or new. Enum values are matched by their group and number, since vk.xml
+/// gives a promoted value's core name as one more value of the same number.
+fn core_changes(a: &Registry, b: &Registry) -> Vec<CoreVersion> {
+    let old_features: BTreeSet<&str> = a.features.iter().map(|f| f.name.as_str()).collect();
+    let old_commands: BTreeSet<&str> = a.commands.iter().map(|c| c.name.as_str()).collect();
+    let old_types: BTreeSet<&str> = a.types.iter().map(|t| t.name.as_str()).collect();
+    // Every name of an item in `b`: itself, what it aliases, what aliases it.
+    let mut names: BTreeMap<&str, BTreeSet<&str>> = BTreeMap::new();
+    let pairs = b
+        .commands
+        .iter()
+        .filter_map(|c| Some((c.name.as_str(), c.alias.as_deref()?)))
+        .chain(
+            b.types
+                .iter()
+                .filter_map(|t| Some((t.name.as_str(), t.alias.as_deref()?))),
+        );
+    for (x, y) in pairs {
+        names.entry(x).or_default().insert(y);
+        names.entry(y).or_default().insert(x);
+    }
+    // Every value name of `b` by (group, number).
+    let mut values: BTreeMap<(&str, i64), BTreeSet<&str>> = BTreeMap::new();
+    let blocks = b.features.iter().chain(&b.extensions);
+    for (value, group) in blocks
+        .flat_map(|i| &i.requires)
+        .flat_map(|r| &r.enum_extensions)
+    {
+        if let Some(n) = b.enum_numbers.get(value) {
+            values.entry((group, *n)).or_default().insert(value);
+        }
+    }
+    for g in &b.enum_groups {
+        for v in &g.values {
+            if let Some(n) = b.enum_numbers.get(v) {
+                values.entry((&g.name, *n)).or_default().insert(v);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for f in b
+        .features
+        .iter()
+        .filter(|f| !old_features.contains(f.name.as_str()))
+    {
+        let mut moved = Vec::new();
+        let mut new = Vec::new();
+        let mut sort = |core: &str, was: Vec<String>| {
+            if was.is_empty() {
+                new.push(core.to_owned());
+            } else {
+                moved.push(Moved {
+                    core: core.to_owned(),
+                    was,
+                });
+            }
+        };
+        let mut seen = BTreeSet::new();
+        for r in &f.requires {
+            for (item, old) in r
+                .commands
+                .iter()
+                .map(|c| (c, &old_commands))
+                .chain(r.types.iter().map(|t| (t, &old_types)))
+            {
+                if !seen.insert(item.clone()) {
+                    continue;
+                }
+                let was: Vec<String> = std::iter::once(item.as_str())
+                    .chain(names.get(item.as_str()).into_iter().flatten().copied())
+                    .filter(|n| old.contains(n))
+                    .map(str::to_owned)
+                    .collect();
+                sort(item, was);
+            }
+            for (value, group) in &r.enum_extensions {
+                if !seen.insert(value.clone()) {
+                    continue;
+                }
+                let same = b
+                    .enum_numbers
+                    .get(value)
+                    .and_then(|n| values.get(&(group.as_str(), *n)));
+                let was: Vec<String> = std::iter::once(value.as_str())
+                    .chain(same.into_iter().flatten().copied())
+                    .filter(|n| a.enum_numbers.contains_key(*n))
+                    .map(str::to_owned)
+                    .collect::<BTreeSet<_>>()
+                    .into_iter()
+                    .collect();
+                sort(value, was);
+            }
+        }
+        let promoted_extensions = b
+            .extensions
+            .iter()
+            .filter(|e| e.promoted_to.as_deref() == Some(f.name.as_str()))
+            .map(|e| e.name.clone())
+            .collect();
+        out.push(CoreVersion {
+            name: f.name.clone(),
+            promoted_extensions,
+            moved,
+            new,
+        });
+    }
+    out
 }
 
 fn added_removed(kind: &str, a: BTreeSet<&str>, b: BTreeSet<&str>) -> Change {
@@ -322,6 +461,33 @@ pub fn markdown(d: &Diff) -> String {
         list(&mut s, &format!("{} added", c.kind), &c.added);
         list(&mut s, &format!("{} removed", c.kind), &c.removed);
     }
+    for v in &d.core {
+        let _ = writeln!(
+            s,
+            "\n## {}\n\n{} extensions promoted to it; of the commands, types and enum values it \
+             requires, {} moved to core from what {} had (under an extension's name or \
+             their own) and {} are new.",
+            v.name,
+            v.promoted_extensions.len(),
+            v.moved.len(),
+            d.old_version,
+            v.new.len()
+        );
+        list(&mut s, "Extensions promoted", &v.promoted_extensions);
+        let moved: Vec<String> = v
+            .moved
+            .iter()
+            .map(|m| {
+                if m.was == [m.core.clone()] {
+                    format!("`{}`", m.core)
+                } else {
+                    format!("`{}` (was `{}`)", m.core, m.was.join("`, `"))
+                }
+            })
+            .collect();
+        list_as(&mut s, "Moved to core", &moved, |n| n.to_owned());
+        list(&mut s, "New in core", &v.new);
+    }
     let _ = writeln!(s, "\n## Valid-usage rules\n");
     match (&d.rules, &d.rules_not_compared) {
         (Some(r), _) => {
@@ -392,6 +558,11 @@ pub fn markdown(d: &Diff) -> String {
 }
 
 fn list(s: &mut String, title: &str, names: &[String]) {
+    list_as(s, title, names, |n| format!("`{n}`"));
+}
+
+/// [`list`], each entry written by `show`.
+fn list_as(s: &mut String, title: &str, names: &[String], show: impl Fn(&str) -> String) {
     if names.is_empty() {
         return;
     }
@@ -399,10 +570,6 @@ fn list(s: &mut String, title: &str, names: &[String]) {
         s,
         "\n<details><summary>{title} ({})</summary>\n\n{}\n\n</details>",
         names.len(),
-        names
-            .iter()
-            .map(|n| format!("`{n}`"))
-            .collect::<Vec<_>>()
-            .join(", ")
+        names.iter().map(|n| show(n)).collect::<Vec<_>>().join(", ")
     );
 }
