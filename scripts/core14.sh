@@ -32,3 +32,5 @@ if [ "${CORE14_RELEASE:-0}" = 1 ]; then
 fi
 cargo build -q --offline --manifest-path "$root/examples/core14/Cargo.toml"
 "$CARGO_TARGET_DIR/debug/tuff-core14"
+# What the crate defines because ash lacks it, against the C headers of 1.4.309.
+cargo test -q --offline --manifest-path "$root/examples/core14/Cargo.toml" -- --nocapture

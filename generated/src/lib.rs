@@ -199,6 +199,9 @@ mod command_checks;
 #[path = "generated/commands/mod.rs"]
 #[rustfmt::skip]
 mod commands;
+#[path = "generated/delta.rs"]
+#[rustfmt::skip]
+mod delta;
 #[path = "generated/features.rs"]
 #[rustfmt::skip]
 mod features;
@@ -238,7 +241,14 @@ mod submission;
 mod support;
 mod validation;
 
-pub use ash::vk;
+/// ash's `vk`, and what this crate's registry has that ash lacks, defined in ash's
+/// style (none when the registry is ash's or older): structs, `API_VERSION_1_<m>`,
+/// and the `VkStructureType` values of those structs, as associated constants of
+/// [`vk::StructureTypeDelta`].
+pub mod vk {
+    pub use crate::delta::*;
+    pub use ash::vk::*;
+}
 #[cfg(feature = "ext_debug_utils")]
 pub use diagnostics::debug_log::MessageLog;
 pub use handles::*;

@@ -510,13 +510,13 @@ macro_rules! safe_struct {
         impl<'a> $name<'a> {
             /// The ash struct this lowers to.
             #[inline]
-            pub fn as_raw(&self) -> &ash::vk::$name $(<$lt>)? {
+            pub fn as_raw(&self) -> &crate::vk::$name $(<$lt>)? {
                 &self.raw
             }
             /// The ash struct, for a command that writes into it.
             #[inline]
             #[allow(dead_code)]
-            pub(crate) fn as_raw_mut(&mut self) -> &mut ash::vk::$name $(<$lt>)? {
+            pub(crate) fn as_raw_mut(&mut self) -> &mut crate::vk::$name $(<$lt>)? {
                 &mut self.raw
             }
             /// The ash struct, to change a value member that has no setter of the
@@ -528,7 +528,7 @@ macro_rules! safe_struct {
             /// that go with them and `pNext` must stay as the setters left them, since
             /// the safe struct's borrows and the checks rely on them.
             #[inline]
-            pub unsafe fn raw_values_mut(&mut self) -> &mut ash::vk::$name $(<$lt>)? {
+            pub unsafe fn raw_values_mut(&mut self) -> &mut crate::vk::$name $(<$lt>)? {
                 &mut self.raw
             }
         }
@@ -541,7 +541,7 @@ macro_rules! safe_struct {
         }
         $(#[cfg($cfg)])?
         impl<'a> core::ops::Deref for $name<'a> {
-            type Target = ash::vk::$name $(<$lt>)?;
+            type Target = crate::vk::$name $(<$lt>)?;
             #[inline]
             fn deref(&self) -> &Self::Target {
                 &self.raw
@@ -711,21 +711,21 @@ macro_rules! child_handle {
         }
         $(#[cfg($cfg)])?
         impl $crate::Handle for $name {
-            type Raw = ash::vk::$name;
+            type Raw = crate::vk::$name;
             #[inline]
-            fn raw(&self) -> ash::vk::$name {
+            fn raw(&self) -> crate::vk::$name {
                 self.inner.raw
             }
             #[inline]
-            fn raw_ref(&self) -> &ash::vk::$name {
+            fn raw_ref(&self) -> &crate::vk::$name {
                 &self.inner.raw
             }
         }
         $(#[cfg($cfg)])?
         impl core::ops::Deref for $name {
-            type Target = ash::vk::$name;
+            type Target = crate::vk::$name;
             #[inline]
-            fn deref(&self) -> &ash::vk::$name {
+            fn deref(&self) -> &crate::vk::$name {
                 &self.inner.raw
             }
         }

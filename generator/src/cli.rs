@@ -179,6 +179,15 @@ where
             for l in &g.left_out {
                 let _ = writeln!(out, "tuff-gen: left out {}: {}", l.name, l.reason);
             }
+            if g.delta.structs + g.delta.constants > 0 {
+                let _ = writeln!(
+                    out,
+                    "tuff-gen: delta: {} items ash lacks defined in ash's style ({} structs, {} constants; src/generated/delta.rs)",
+                    g.delta.structs + g.delta.constants,
+                    g.delta.structs,
+                    g.delta.constants
+                );
+            }
             for note in &g.shape_notes {
                 let _ = writeln!(out, "tuff-gen: warning: {note}");
             }

@@ -82,6 +82,15 @@ pub fn workspace_root() -> PathBuf {
         .map_or_else(|| PathBuf::from("."), Path::to_owned)
 }
 
+/// How many items the crate defines itself because ash lacks them.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Delta {
+    /// Structs.
+    pub structs: usize,
+    /// Constants: core versions' `API_VERSION_1_<m>` and structure-type values.
+    pub constants: usize,
+}
+
 /// What a run produced, before anything is written.
 #[derive(Debug, Clone)]
 pub struct Generation {
@@ -101,6 +110,10 @@ pub struct Generation {
     /// Registry shapes read by the toolchain's convention where the registry says
     /// otherwise (`validity::implicit::bitmask_shape_notes`): warnings to print.
     pub shape_notes: Vec<String>,
+    /// What the registry has and ash lacks that the crate defines itself in ash's
+    /// style (`src/generated/delta.rs`): structs, and constants (`API_VERSION_1_<m>`
+    /// and the structs' `VkStructureType` values).
+    pub delta: Delta,
 }
 
 /// The rules as they apply in programs that enable only what the safe constructors
@@ -414,6 +427,20 @@ pub(crate) fn passes(inputs: &Inputs) -> Result<Generation> {
         comparison: validity.comparison.clone(),
         left_out: model.left_out.clone(),
         shape_notes: validity::implicit::bitmask_shape_notes(&model),
+        delta: Delta {
+            structs: model.delta.len(),
+            constants: model.own_tables.len()
+                + model
+                    .delta
+                    .iter()
+                    .filter(|d| {
+                        model.types[*d]
+                            .members
+                            .iter()
+                            .any(|m| m.name == "sType" && m.values.is_some())
+                    })
+                    .count(),
+        },
     })
 }
 

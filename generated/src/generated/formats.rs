@@ -2,7 +2,7 @@
 
 //! The aspects of each format the registry describes, and the texel blocks
 //! copies between buffers and images lay out.
-use ash::vk;
+use crate::vk;
 /// A texel block of one aspect of `format` as copies between buffers and
 /// images lay it out: its size in bytes and its width, height and depth in
 /// texels (a plane's are those of the plane's compatible format). `None` for

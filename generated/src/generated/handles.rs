@@ -4,7 +4,7 @@
 //! wrappers lack can still be called through ash.
 #![allow(clippy::new_without_default, clippy::let_and_return)]
 use crate::{support::child_handle, Entry, Handle};
-use ash::vk;
+use crate::vk;
 use tuff_runtime::{Retained, Vrc, Vutex};
 ///A `VkAccelerationStructureKHR`. Clones share it; the last one to go calls `vkDestroyAccelerationStructureKHR`, after every submission that used it has completed.
 #[cfg(feature = "khr_acceleration_structure")]

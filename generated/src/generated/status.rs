@@ -3,7 +3,7 @@
 //! Typed results of the commands with more than one success code: one enum
 //! per set of codes, so that a timeout or a suboptimal swapchain is a
 //! variant to match on rather than a `vk::Result` beside `Ok`.
-use ash::vk;
+use crate::vk;
 ///What `Device::get_event_status` returned, of the success codes Vulkan gives it. Marked `#[must_use]`: a caller that goes on regardless says so with `let _ =`.
 #[must_use]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -100,7 +100,7 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
         use crate::support::refuse;
         use crate::validation::Scope;
         use crate::Result;
-        use ash::vk;
+        use crate::vk;
         mod structs;
         mod values;
         pub(crate) use structs::*;

@@ -155,7 +155,7 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Files, Files) {
         use crate::handles::*;
         use crate::structs::*;
         use crate::{recorder::*, Entry, Error, Handle, Result};
-        use ash::vk;
+        use crate::vk;
     };
     let commands = super::split(
         all.cx.model,
@@ -176,7 +176,7 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Files, Files) {
         use crate::structs::*;
         use crate::support::refuse;
         use crate::{recorder::*, Entry, Handle, Result};
-        use ash::vk;
+        use crate::vk;
     };
     let checks = super::split(
         all.cx.model,

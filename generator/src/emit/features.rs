@@ -51,7 +51,7 @@ pub(super) fn emit(model: &Model) -> TokenStream {
     }
     quote! {
         //! Which core feature each struct of a device create info's chain enables.
-        use ash::vk;
+        use crate::vk;
         use crate::state::Features;
 
         /// Adds the features one struct of a `VkDeviceCreateInfo` chain enables to

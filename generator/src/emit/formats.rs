@@ -203,7 +203,7 @@ pub(super) fn emit(model: &Model) -> TokenStream {
     quote! {
         //! The aspects of each format the registry describes, and the texel blocks
         //! copies between buffers and images lay out.
-        use ash::vk;
+        use crate::vk;
 
         /// A texel block of one aspect of `format` as copies between buffers and
         /// images lay it out: its size in bytes and its width, height and depth in

@@ -87,7 +87,7 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
         // `from_raw` binds the new wrapper before returning it because device objects
         // are listed among the live objects in between; others return it unchanged.
         use crate::{support::child_handle, Entry, Handle};
-        use ash::vk;
+        use crate::vk;
         use tuff_runtime::{Retained, Vrc, Vutex};
         #(#items)*
     }

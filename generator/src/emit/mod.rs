@@ -5,6 +5,7 @@
 mod api_info;
 pub mod checks;
 pub mod commands;
+mod delta;
 pub mod explicit;
 pub mod features;
 pub mod formats;
@@ -383,6 +384,7 @@ pub fn emit(plans: &Plans) -> Emission {
     let ok = plans.ok();
     let (commands, command_checks) = commands::emit(plans, &ok);
     let mut files = vec![
+        ("delta.rs".to_owned(), delta::emit(cx)),
         ("handles.rs".to_owned(), handles::emit(cx)),
         ("reach.rs".to_owned(), reach::emit(cx)),
         ("features.rs".to_owned(), features::emit(cx.model)),

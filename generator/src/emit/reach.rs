@@ -131,7 +131,7 @@ pub fn emit(cx: &Context) -> TokenStream {
         //! one, whether or not a command of this build uses it yet.
         #![allow(dead_code, unused_unsafe, clippy::missing_safety_doc)]
         use crate::validation::Reached;
-        use ash::vk;
+        use crate::vk;
 
         /// The handles the structs of a `pNext` chain name.
         ///

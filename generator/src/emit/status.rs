@@ -72,7 +72,7 @@ pub fn emit(cx: &crate::plan::Context, statuses: &[Status]) -> TokenStream {
         //! Typed results of the commands with more than one success code: one enum
         //! per set of codes, so that a timeout or a suboptimal swapchain is a
         //! variant to match on rather than a `vk::Result` beside `Ok`.
-        use ash::vk;
+        use crate::vk;
         #(#items)*
     }
 }

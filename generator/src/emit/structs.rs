@@ -46,7 +46,7 @@ pub(super) fn emit(plans: &Plans) -> Vec<(String, TokenStream)> {
         //! an `sType`, one module per core version and extension. Plain structs
         //! (`vk::Extent2D`, ...) are used as ash has them.
         use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, Handles};
-        use ash::vk;
+        use crate::vk;
         use core::marker::PhantomData;
     };
     super::split(cx.model, "structs", "The safe structs", head, modules, true)

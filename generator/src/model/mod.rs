@@ -133,6 +133,13 @@ pub struct Model {
     /// (the reference registry lacks them): the emitted crate defines and loads one
     /// for each (`DeviceFnV1_<minor>`).
     pub own_tables: BTreeSet<u32>,
+    /// The structs of the emitted API that the reference registry (so ash) lacks and
+    /// the emitted crate defines itself, in ash's style (`reference::delta`): their
+    /// members are all of types ash has, or of other such structs.
+    pub delta: BTreeSet<String>,
+    /// The structs whose `pNext` chain some struct of the reference registry extends:
+    /// ash has an `Extends<Struct>` trait for each, and only for those.
+    pub extended_in_reference: BTreeSet<String>,
     /// Structs this registry does not mark `returnedonly` and the reference
     /// registry does: Khronos found Vulkan only writes them, and dropped the value
     /// rules of their members.
@@ -533,6 +540,15 @@ impl Model {
             reference_version: reference.map(|r| r.version.clone()),
             left_out,
             own_tables,
+            delta: BTreeSet::new(),
+            extended_in_reference: reference
+                .map(|r| {
+                    r.types
+                        .iter()
+                        .flat_map(|t| t.struct_extends.iter().cloned())
+                        .collect()
+                })
+                .unwrap_or_default(),
             returned_only_in_reference: reference
                 .map(|r| {
                     r.types
@@ -591,7 +607,8 @@ impl Model {
                 .collect(),
         };
         if let Some(reference) = reference {
-            let missing = reference::missing_items(&model, reference);
+            let (missing, delta) = reference::missing_items(&model, reference);
+            model.delta = delta;
             for m in &missing {
                 model.emitted.remove(&m.name);
             }

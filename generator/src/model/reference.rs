@@ -333,7 +333,14 @@ pub fn select(
 /// a command in the function table of the extension that names it in the
 /// reference). Each is left out on its own, and so is every item that names one
 /// (a struct with such a member, a command with such a parameter, an alias).
-pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut> {
+///
+/// A struct the reference lacks whose members ash can spell (or that are such
+/// structs themselves) is not left out: it is returned as the delta, which the
+/// emitted crate defines itself (`emit::delta`).
+pub fn missing_items(
+    model: &super::Model,
+    reference: &Registry,
+) -> (Vec<LeftOut>, BTreeSet<String>) {
     let defined = Defined::of(reference);
     let mut homes: BTreeMap<&str, BTreeSet<&str>> = BTreeMap::new();
     for iface in reference.features.iter().chain(&reference.extensions) {
@@ -347,10 +354,15 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut>
         }
     }
     let mut out: BTreeMap<String, String> = BTreeMap::new();
+    let mut delta: BTreeSet<String> = BTreeSet::new();
     for name in &model.emitted {
         let spelled = model.spelling(name);
         if let Some(t) = model.types.get(name) {
             if t.alias.is_none() && !defined.types.contains_key(spelled) {
+                if t.category == Some(super::Kind::Struct) {
+                    delta.insert(name.clone());
+                    continue;
+                }
                 out.insert(
                     name.clone(),
                     format!(
@@ -408,6 +420,36 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut>
             }
         }
     }
+    // A delta struct whose member ash cannot spell goes: a bit field, a member of a
+    // type ash lacks that is no delta struct (an enum, a union), or no type at all.
+    loop {
+        let gone: Vec<(String, String)> = delta
+            .iter()
+            .filter_map(|name| {
+                let t = &model.types[name];
+                t.members.iter().find_map(|m| {
+                    let why = if m.bitfield.is_some() {
+                        format!("its member `{}` is a bit field", m.name)
+                    } else if !spellable(model, &defined, &delta, &out, &m.type_name) {
+                        format!(
+                            "the reference registry (Vulkan {}) has no type `{}`, which its member `{}` is",
+                            reference.version, m.type_name, m.name
+                        )
+                    } else {
+                        return None;
+                    };
+                    Some((name.clone(), why))
+                })
+            })
+            .collect();
+        if gone.is_empty() {
+            break;
+        }
+        for (name, why) in gone {
+            delta.remove(&name);
+            out.insert(name, why);
+        }
+    }
     // Whatever names a missing item goes too, until nothing more does.
     loop {
         let more: Vec<(String, String)> = model
@@ -427,7 +469,33 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Vec<LeftOut>
         }
         out.extend(more);
     }
-    out.into_iter()
+    // A delta struct that names something left out goes too.
+    delta.retain(|d| !out.contains_key(d));
+    let left = out
+        .into_iter()
         .map(|(name, reason)| LeftOut { name, reason })
-        .collect()
+        .collect();
+    (left, delta)
+}
+
+/// Whether a member of type `name` has a spelling in the emitted crate: a C scalar,
+/// a type ash has (under the reference's name for it), or a delta struct.
+fn spellable(
+    model: &super::Model,
+    defined: &Defined<'_>,
+    delta: &BTreeSet<String>,
+    out: &BTreeMap<String, String>,
+    name: &str,
+) -> bool {
+    const SCALARS: [&str; 15] = [
+        "void", "char", "float", "double", "uint8_t", "uint16_t", "uint32_t", "uint64_t", "int8_t",
+        "int16_t", "int32_t", "int64_t", "size_t", "int", "VkBool32",
+    ];
+    if SCALARS.contains(&name) {
+        return true;
+    }
+    if out.contains_key(name) {
+        return false;
+    }
+    delta.contains(name) || defined.types.contains_key(model.spelling(name))
 }

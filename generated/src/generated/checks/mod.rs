@@ -13,7 +13,7 @@
 use crate::support::refuse;
 use crate::validation::Scope;
 use crate::Result;
-use ash::vk;
+use crate::vk;
 mod structs;
 mod values;
 pub(crate) use structs::*;

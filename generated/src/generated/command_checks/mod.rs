@@ -10,7 +10,7 @@ use crate::handles::*;
 use crate::structs::*;
 use crate::support::refuse;
 use crate::{recorder::*, Entry, Handle, Result};
-use ash::vk;
+use crate::vk;
 mod v1_0;
 mod v1_0_recording;
 mod v1_1;

@@ -14,7 +14,7 @@
 use crate::handles::*;
 use crate::structs::*;
 use crate::{recorder::*, Entry, Error, Handle, Result};
-use ash::vk;
+use crate::vk;
 mod v1_0;
 mod v1_0_part2;
 mod v1_0_recording;

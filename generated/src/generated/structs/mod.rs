@@ -4,7 +4,7 @@
 //! an `sType`, one module per core version and extension. Plain structs
 //! (`vk::Extent2D`, ...) are used as ash has them.
 use crate::{chain::Extends, handles::*, support::safe_struct, CStrPtr, Handle, Handles};
-use ash::vk;
+use crate::vk;
 use core::marker::PhantomData;
 mod v1_0;
 #[allow(unused_imports)]

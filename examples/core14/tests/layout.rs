@@ -1,0 +1,122 @@
+//! Proof of layout: every item the 1.4 crate defines because ash lacks it
+//! (`tuff::vk`'s delta: structs, `API_VERSION_1_4`, structure-type values) against the
+//! C headers of the same registry (Vulkan-Headers v1.4.309, `headers/`), compiled
+//! with the `cc` crate: each struct's size, alignment and every member's offset, and
+//! each constant's value. The count is compared with the one the generator printed
+//! (`target/core14/gen.log`, written by `scripts/core14.sh`).
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+use tuff::vk::delta_layout::{LAYOUT, VALUES};
+
+/// The C program: one line per struct (`name size align`), per member
+/// (`name.member offset`) and per constant (`name value`).
+fn probe() -> String {
+    let mut c = String::from(
+        "#include <stddef.h>\n#include <stdio.h>\n#include <vulkan/vulkan_core.h>\nint main(void) {\n",
+    );
+    for row in LAYOUT {
+        let n = row.c_name;
+        let _ = writeln!(
+            c,
+            "  printf(\"{n} %zu %zu\\n\", sizeof({n}), _Alignof({n}));"
+        );
+        for (field, _) in row.fields {
+            let _ = writeln!(
+                c,
+                "  printf(\"{n}.{field} %zu\\n\", offsetof({n}, {field}));"
+            );
+        }
+    }
+    for (name, _) in VALUES {
+        let _ = writeln!(c, "  printf(\"{name} %lld\\n\", (long long)({name}));");
+    }
+    c.push_str("  return 0;\n}\n");
+    c
+}
+
+#[test]
+fn every_delta_item_is_laid_out_as_the_c_headers_say() {
+    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("layout");
+    std::fs::create_dir_all(&dir).unwrap();
+    let source = dir.join("probe.c");
+    std::fs::write(&source, probe()).unwrap();
+    let exe = dir.join("probe");
+    let compiler = cc::Build::new()
+        .target(env!("CORE14_TARGET"))
+        .host(env!("CORE14_HOST"))
+        .opt_level(0)
+        .cargo_metadata(false)
+        .warnings(true)
+        .include(here.join("headers"))
+        .get_compiler();
+    let built = compiler
+        .to_command()
+        .arg("-std=c11")
+        .arg(&source)
+        .arg("-o")
+        .arg(&exe)
+        .output()
+        .expect("run the C compiler");
+    assert!(
+        built.status.success(),
+        "the probe does not compile: {}",
+        String::from_utf8_lossy(&built.stderr)
+    );
+    let ran = std::process::Command::new(&exe).output().unwrap();
+    assert!(ran.status.success());
+    let c: BTreeMap<String, Vec<u64>> = String::from_utf8(ran.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| {
+            let mut words = l.split(' ');
+            let name = words.next().unwrap().to_owned();
+            (name, words.map(|w| w.parse::<i64>().unwrap() as u64).collect())
+        })
+        .collect();
+    let mut compared = 0;
+    for row in LAYOUT {
+        assert_eq!(
+            c[row.c_name],
+            [row.size as u64, row.align as u64],
+            "{}: size and alignment (C, Rust)",
+            row.c_name
+        );
+        for (field, offset) in row.fields {
+            assert_eq!(
+                c[&format!("{}.{field}", row.c_name)],
+                [*offset as u64],
+                "{}.{field}: offset (C, Rust)",
+                row.c_name
+            );
+        }
+        compared += 1;
+    }
+    for (name, value) in VALUES {
+        assert_eq!(c[*name], [*value as u64], "{name} (C, Rust)");
+        compared += 1;
+    }
+    let members: usize = LAYOUT.iter().map(|r| r.fields.len()).sum();
+    println!(
+        "{compared} delta items laid out as the C headers say: {} structs ({members} members), {} constants",
+        LAYOUT.len(),
+        VALUES.len()
+    );
+    // The generator's own count of what it defined.
+    let log = std::fs::read_to_string(here.join("../../target/core14/gen.log"))
+        .expect("scripts/core14.sh writes the generator's output there");
+    let line = log
+        .lines()
+        .find(|l| l.starts_with("tuff-gen: delta: "))
+        .expect("the generator reports its delta");
+    let reported: usize = line["tuff-gen: delta: ".len()..]
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert_eq!(compared, reported, "{line}");
+    assert!(compared > 0, "no delta item: is this the 1.4 crate?");
+}
