@@ -350,6 +350,13 @@ fn a_newer_registry_is_emitted_by_the_names_ash_has_and_loses_only_what_ash_lack
     ] {
         assert!(m14.emitted.contains(s), "{s} is not emitted");
     }
+    // Values 1.4 adds or names anew that ash lacks by name: the delta defines them
+    // and the checks accept them by number.
+    assert!(m14.delta_values["VkIndexType"].contains(&"VK_INDEX_TYPE_UINT8".to_owned()));
+    assert!(m14.delta_values["VkSubgroupFeatureFlagBits"]
+        .contains(&"VK_SUBGROUP_FEATURE_ROTATE_BIT".to_owned()));
+    assert!(m14.delta_values["VkStructureType"]
+        .contains(&"VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_4_FEATURES".to_owned()));
     assert!(!m14.left_out.iter().any(|l| l.name == "VK_VERSION_1_4"));
     // The pinned registry needs no other spelling.
     let (pinned, _) = registries();

@@ -242,9 +242,9 @@ mod support;
 mod validation;
 
 /// ash's `vk`, and what this crate's registry has that ash lacks, defined in ash's
-/// style (none when the registry is ash's or older): structs, `API_VERSION_1_<m>`,
-/// and the `VkStructureType` values of those structs, as associated constants of
-/// [`vk::StructureTypeDelta`].
+/// style (nothing when the registry is ash's or older): structs, `API_VERSION_1_<m>`,
+/// and enum values as associated constants of one trait per type (a 1.4 crate's
+/// `vk::IndexType::UINT8` with `vk::IndexTypeDelta` in scope).
 pub mod vk {
     pub use crate::delta::*;
     pub use ash::vk::*;

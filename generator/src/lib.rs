@@ -87,7 +87,8 @@ pub fn workspace_root() -> PathBuf {
 pub struct Delta {
     /// Structs.
     pub structs: usize,
-    /// Constants: core versions' `API_VERSION_1_<m>` and structure-type values.
+    /// Constants: core versions' `API_VERSION_1_<m>` and the enum values ash lacks
+    /// by name (structure types included).
     pub constants: usize,
 }
 
@@ -431,14 +432,11 @@ pub(crate) fn passes(inputs: &Inputs) -> Result<Generation> {
             structs: model.delta.len(),
             constants: model.own_tables.len()
                 + model
-                    .delta
+                    .delta_values
                     .iter()
-                    .filter(|d| {
-                        model.types[*d]
-                            .members
-                            .iter()
-                            .any(|m| m.name == "sType" && m.values.is_some())
-                    })
+                    .filter(|(group, _)| model.is_emitted(group))
+                    .flat_map(|(_, values)| values)
+                    .filter(|v| model.enum_numbers.contains_key(*v))
                     .count(),
         },
     })

@@ -1,5 +1,5 @@
 //! Proof of layout: every item the 1.4 crate defines because ash lacks it
-//! (`tuff::vk`'s delta: structs, `API_VERSION_1_4`, structure-type values) against the
+//! (`tuff::vk`'s delta: structs, `API_VERSION_1_4`, enum values ash lacks by name) against the
 //! C headers of the same registry (Vulkan-Headers v1.4.309, `headers/`), compiled
 //! with the `cc` crate: each struct's size, alignment and every member's offset, and
 //! each constant's value. The count is compared with the one the generator printed
@@ -14,7 +14,8 @@ use tuff::vk::delta_layout::{LAYOUT, VALUES};
 /// (`name.member offset`) and per constant (`name value`).
 fn probe() -> String {
     let mut c = String::from(
-        "#include <stddef.h>\n#include <stdio.h>\n#include <vulkan/vulkan_core.h>\nint main(void) {\n",
+        // Beta extensions' values too: the crate emits every extension.
+        "#define VK_ENABLE_BETA_EXTENSIONS\n#include <stddef.h>\n#include <stdio.h>\n#include <vulkan/vulkan_core.h>\nint main(void) {\n",
     );
     for row in LAYOUT {
         let n = row.c_name;
@@ -119,4 +120,22 @@ fn every_delta_item_is_laid_out_as_the_c_headers_say() {
         .unwrap();
     assert_eq!(compared, reported, "{line}");
     assert!(compared > 0, "no delta item: is this the 1.4 crate?");
+}
+
+/// The delta works with ash as ash's own items do: a 1.4 struct chains into ash's
+/// `PhysicalDeviceFeatures2` (ash's `Extends` trait), has its `sType` by default, and
+/// values 1.4 names by core names are ash's values of the same number.
+#[test]
+fn the_delta_chains_with_ash_and_names_core_values() {
+    use tuff::vk;
+    use tuff::vk::{IndexTypeDelta as _, StructureTypeDelta as _};
+    let mut v14 = vk::PhysicalDeviceVulkan14Features::default().push_descriptor(true);
+    assert_eq!(
+        v14.s_type,
+        vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_4_FEATURES
+    );
+    let features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v14);
+    assert!(!features.p_next.is_null());
+    assert_eq!(vk::IndexType::UINT8, vk::IndexType::UINT8_EXT);
+    assert_eq!(v14.push_descriptor, vk::TRUE);
 }

@@ -29,8 +29,6 @@ pub struct LayoutItem {
 pub(super) fn emit(cx: &Context) -> TokenStream {
     let model = cx.model;
     let mut items = Vec::new();
-    let mut s_types = Vec::new();
-    let mut s_type_consts = Vec::new();
     let mut layout = Vec::new();
     for name in &model.delta {
         let t = &model.types[name];
@@ -86,12 +84,7 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
         );
         let tagged = s_type.map(|(value, number)| {
             let number = proc_macro2::Literal::i32_unsuffixed(number as i32);
-            let konst = ident(&crate::names::enum_const("VkStructureType", value));
-            s_types.push(quote! {
-                #[doc = #value]
-                const #konst: Self;
-            });
-            s_type_consts.push(quote!(const #konst: Self = vk::StructureType::from_raw(#number);));
+            let _ = value;
             let extends = t.struct_extends.iter().filter(|e| model.extended_in_reference.contains(model.spelling(e))).map(|e| {
                 let tr = ident(&format!("Extends{}", type_name(model.spelling(e))));
                 quote!(unsafe impl vk::#tr for #id #anon {})
@@ -168,39 +161,25 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
             }
         }
     });
-    let values = layout.iter().filter_map(|l| {
-        let t = &model.types[&l.c_name];
-        let v = t
-            .members
-            .iter()
-            .find(|m| m.name == "sType")?
-            .values
-            .clone()?;
-        let n = *model_number(cx, &v)?;
-        Some(quote!((#v, #n)))
-    });
+    let (traits, values) = value_traits(cx);
     let versions_values = model.own_tables.iter().map(|m| {
         let c = format!("VK_API_VERSION_1_{m}");
         let id = ident(&format!("API_VERSION_1_{m}"));
         quote!((#c, #id as i64))
     });
-    let trait_doc = "The `VkStructureType` values of this module's structs, as ash would name them: `vk::StructureType::PHYSICAL_DEVICE_VULKAN_1_4_FEATURES` with this trait in scope.";
     quote! {
         //! What the registry has and ash lacks, defined in ash's style: structs,
-        //! core-version constants and `VkStructureType` values. `tuff::vk` re-exports
-        //! ash's `vk` and this module together.
+        //! core-version constants, and enum values as associated constants of one
+        //! trait per type (`IndexTypeDelta`). `tuff::vk` re-exports ash's `vk` and this
+        //! module together.
         #![allow(clippy::too_many_arguments, clippy::missing_safety_doc)]
+        // Unused where the registry is ash's or older: then nothing is defined here.
+        #[allow(unused_imports)]
         use ash::vk;
 
         #(#versions)*
 
-        #[doc = #trait_doc]
-        pub trait StructureTypeDelta {
-            #(#s_types)*
-        }
-        impl StructureTypeDelta for vk::StructureType {
-            #(#s_type_consts)*
-        }
+        #(#traits)*
 
         #(#items)*
 
@@ -230,6 +209,93 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
                 pub const VALUES: &[(&str, i64)] = &[#(#values,)* #(#versions_values,)*];
         }
     }
+}
+
+/// For each enum type ash has whose enabled values it lacks by name, a trait
+/// `<Type>Delta` with one associated constant per value (`vk::IndexType::UINT8` with
+/// `IndexTypeDelta` in scope), implemented for ash's type; and every such value by
+/// its C name with its number, for the layout test.
+fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
+    let model = cx.model;
+    let mut traits = Vec::new();
+    let mut values = Vec::new();
+    for (group, names) in &model.delta_values {
+        if !model.is_emitted(group) {
+            continue;
+        }
+        let Some(ty) = crate::plan::types::ash_type(model, &cx.facts, group) else {
+            continue;
+        };
+        let spelled = type_name(model.spelling(group)).replace("FlagBits", "Flags");
+        let tr = ident(&format!("{spelled}Delta"));
+        let mut seen = std::collections::BTreeSet::new();
+        let mut decls = Vec::new();
+        let mut impls = Vec::new();
+        for v in names {
+            let Some(n) = model.enum_numbers.get(v) else {
+                continue;
+            };
+            let mut konst = value_const(group, v);
+            if !seen.insert(konst.clone()) {
+                konst = v.strip_prefix("VK_").unwrap_or(v).to_owned();
+                seen.insert(konst.clone());
+            }
+            let k = ident(&konst);
+            let doc = format!("`{v}`");
+            let raw = if group.contains("FlagBits") {
+                let n = proc_macro2::Literal::u64_suffixed(*n as u64);
+                quote!(#ty::from_raw(#n as _))
+            } else {
+                let n = proc_macro2::Literal::i32_unsuffixed(*n as i32);
+                quote!(#ty::from_raw(#n))
+            };
+            decls.push(quote!(#[doc = #doc] const #k: Self;));
+            impls.push(quote!(const #k: Self = #raw;));
+            let n = *n;
+            values.push(quote!((#v, #n)));
+        }
+        let doc = format!(
+            "The values of `{group}` that ash lacks by these names, as associated constants of ash's type (with this trait in scope: `{}::{}`).",
+            spelled,
+            seen.iter().next().map_or("", String::as_str)
+        );
+        traits.push(quote! {
+            #[doc = #doc]
+            pub trait #tr {
+                #(#decls)*
+            }
+            impl #tr for #ty {
+                #(#impls)*
+            }
+        });
+    }
+    (traits, values)
+}
+
+/// A value's constant name as ash would write it: the type's words and, for bits,
+/// the `_BIT` go (`VK_SUBGROUP_FEATURE_ROTATE_BIT` of `VkSubgroupFeatureFlagBits`
+/// is `ROTATE`); a name that would start with a digit is prefixed `TYPE_`.
+fn value_const(group: &str, value: &str) -> String {
+    let Some((before, after)) = group.split_once("FlagBits") else {
+        return crate::names::enum_const(group, value);
+    };
+    let base = before.strip_prefix("Vk").unwrap_or(before);
+    let digits: String = after.chars().take_while(char::is_ascii_digit).collect();
+    let words = format!("{base}{digits}");
+    let prefix = format!(
+        "VK_{}_",
+        heck::ToShoutySnakeCase::to_shouty_snake_case(words.as_str())
+    );
+    let mut rest = value.strip_prefix(&prefix).unwrap_or(value).to_owned();
+    if let Some(r) = rest.strip_suffix("_BIT") {
+        rest = r.to_owned();
+    } else if let Some(i) = rest.find("_BIT_") {
+        rest = format!("{}{}", &rest[..i], &rest[i + 4..]);
+    }
+    if rest.starts_with(|c: char| c.is_ascii_digit()) {
+        rest = format!("TYPE_{rest}");
+    }
+    rest
 }
 
 fn model_number<'a>(cx: &'a Context, value: &str) -> Option<&'a i64> {

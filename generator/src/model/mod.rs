@@ -140,6 +140,10 @@ pub struct Model {
     /// The structs whose `pNext` chain some struct of the reference registry extends:
     /// ash has an `Extends<Struct>` trait for each, and only for those.
     pub extended_in_reference: BTreeSet<String>,
+    /// The values of enabled versions and extensions that the reference lacks by
+    /// name, by enum group: the checks accept them (by number), and the delta names
+    /// them as associated constants of one trait per type (`IndexTypeDelta::UINT8`).
+    pub delta_values: BTreeMap<String, Vec<String>>,
     /// Structs this registry does not mark `returnedonly` and the reference
     /// registry does: Khronos found Vulkan only writes them, and dropped the value
     /// rules of their members.
@@ -541,6 +545,7 @@ impl Model {
             left_out,
             own_tables,
             delta: BTreeSet::new(),
+            delta_values: BTreeMap::new(),
             extended_in_reference: reference
                 .map(|r| {
                     r.types
@@ -612,9 +617,28 @@ impl Model {
             for m in &missing {
                 model.emitted.remove(&m.name);
             }
-            // A value ash lacks cannot be named in the emitted code.
-            for values in model.enum_values.values_mut() {
-                values.retain(|v| reference.enum_numbers.contains_key(v));
+            // A value ash lacks cannot be named by ash's name in the emitted code: it
+            // goes to the delta, which names it, and the checks take it by number.
+            for (group, values) in model.enum_values.iter_mut() {
+                let (kept, gone): (Vec<String>, Vec<String>) = values
+                    .drain(..)
+                    .partition(|v| reference.enum_numbers.contains_key(v));
+                *values = kept;
+                // Only what an enabled version or extension adds (a value of an
+                // extension left out is no value of this crate).
+                let enabled = &model.enabled;
+                let gone: Vec<String> = gone
+                    .into_iter()
+                    .filter(|v| {
+                        model.enum_origins.get(v).is_some_and(|o| {
+                            o.iter()
+                                .any(|x| enabled.contains(x.split('+').next().unwrap_or(x)))
+                        })
+                    })
+                    .collect();
+                if !gone.is_empty() {
+                    model.delta_values.insert(group.clone(), gone);
+                }
             }
             model.left_out.extend(missing);
         }

@@ -1107,7 +1107,14 @@ pub(crate) fn enum_values(
     type_name: &str,
 ) -> BTreeMap<i64, BTreeSet<String>> {
     let mut out: BTreeMap<i64, BTreeSet<String>> = BTreeMap::new();
-    for v in model.enum_values.get(type_name).into_iter().flatten() {
+    let delta = model.delta_values.get(type_name).into_iter().flatten();
+    for v in model
+        .enum_values
+        .get(type_name)
+        .into_iter()
+        .flatten()
+        .chain(delta)
+    {
         if let Some(n) = model.enum_numbers.get(v) {
             out.entry(*n)
                 .or_default()
