@@ -5,12 +5,14 @@
 //! refused with `Error::VersionNotSupported`; on a 1.4 device it returns the
 //! granularity. Either way, under the validation layer when it is installed, and the
 //! program fails on any message the layer reports, or when the outcome does not match
-//! the device's version.
+//! the device's version. It also reads the device's Vulkan 1.4 features through
+//! `vk::PhysicalDeviceVulkan14Features`, a struct ash 0.38 lacks that the crate defines
+//! in ash's style (its delta), chained into ash's own `PhysicalDeviceFeatures2`.
 //!
 //! `bash scripts/core14.sh` generates the crate, builds this and runs it.
 
 use std::process::ExitCode;
-use tuff::vk;
+use tuff::{vk, Handle as _};
 
 fn main() -> ExitCode {
     match run() {
@@ -28,8 +30,8 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     let validation = std::env::var("CORE14_NO_LAYER").is_err();
     let exts = [tuff::CStrPtr::new(c"VK_EXT_debug_utils")];
     let layers = [tuff::CStrPtr::from(c"VK_LAYER_KHRONOS_validation")];
-    // ash 0.38 has no `API_VERSION_1_4` (one of the items tuff leaves out for it).
-    let app = tuff::ApplicationInfo::new().api_version(vk::make_api_version(0, 1, 4, 0));
+    // ash 0.38 has no `API_VERSION_1_4`: the crate's delta defines it.
+    let app = tuff::ApplicationInfo::new().api_version(vk::API_VERSION_1_4);
     let mut chained = log.messenger_info();
     let mut info = tuff::InstanceCreateInfo::new()
         .application_info(Some(&app))
@@ -57,6 +59,24 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         vk::api_version_minor(version),
         vk::api_version_patch(version)
     );
+    if vk::api_version_minor(version) >= 4 {
+        let mut v14 = vk::PhysicalDeviceVulkan14Features::default();
+        let mut features = vk::PhysicalDeviceFeatures2::default().push_next(&mut v14);
+        // SAFETY: a live physical device of a Vulkan 1.4 instance, on a 1.4 device
+        // (vkGetPhysicalDeviceFeatures2 may be given VkPhysicalDeviceVulkan14Features
+        // there); the chain is local and well formed (ash's push_next, the delta's
+        // sType).
+        unsafe {
+            instance
+                .fns()
+                .get_physical_device_features2(physical.raw(), &mut features)
+        };
+        println!(
+            "Vulkan 1.4 features (vk::PhysicalDeviceVulkan14Features): pushDescriptor {}, maintenance5 {}, maintenance6 {}, dynamicRenderingLocalRead {}, hostImageCopy {}",
+            v14.push_descriptor, v14.maintenance5, v14.maintenance6,
+            v14.dynamic_rendering_local_read, v14.host_image_copy
+        );
+    }
     let family = physical
         .queue_family_index(vk::QueueFlags::GRAPHICS)?
         .ok_or("no graphics queue")?;

@@ -74,7 +74,10 @@ fn every_delta_item_is_laid_out_as_the_c_headers_say() {
         .map(|l| {
             let mut words = l.split(' ');
             let name = words.next().unwrap().to_owned();
-            (name, words.map(|w| w.parse::<i64>().unwrap() as u64).collect())
+            (
+                name,
+                words.map(|w| w.parse::<i64>().unwrap() as u64).collect(),
+            )
         })
         .collect();
     let mut compared = 0;
