@@ -29,8 +29,9 @@ pub struct HostRequest {
     pub alignment: usize,
     /// How long the implementation says it will keep them.
     pub scope: vk::SystemAllocationScope,
-    /// Whether it grows or shrinks a block it already has.
-    pub reallocation: bool,
+    /// For a reallocation (a block it grows or shrinks), that block's size now;
+    /// `None` for a new block.
+    pub old_size: Option<usize>,
 }
 
 /// What a [`HostAllocator`] has done so far. Counts are of blocks and bytes the
@@ -43,9 +44,10 @@ pub struct HostStats {
     pub live_bytes: u64,
     /// The most bytes live at once.
     pub peak_bytes: u64,
-    /// Allocations and reallocations granted.
+    /// Allocations and reallocations that got their block.
     pub granted: u64,
-    /// Allocations and reallocations the policy refused.
+    /// Allocations and reallocations that got NULL: the policy refused, or no
+    /// block of that size and alignment could be made.
     pub refused: u64,
 }
 
@@ -116,7 +118,9 @@ impl HostAllocator {
     /// gives the implementation NULL, which it reports as
     /// `ERROR_OUT_OF_HOST_MEMORY`. The policy runs on whichever thread the
     /// implementation allocates from (a driver's own threads included), so it must be
-    /// `Send + Sync`; a policy that panics refuses.
+    /// `Send + Sync`; a policy that panics refuses. It runs inside Vulkan calls,
+    /// perhaps with the driver's locks held: it must not call Vulkan nor own a tuff
+    /// object (an entry, instance or device it owned would keep itself alive).
     pub fn with_policy(policy: impl Fn(&HostRequest) -> bool + Send + Sync + 'static) -> Self {
         let state = Box::new(State {
             policy: Box::new(policy),
@@ -204,17 +208,29 @@ fn block_layout(size: usize, alignment: usize) -> Option<Layout> {
 }
 
 impl State {
+    /// Whether the policy grants `request`; a refusal is counted here, a grant
+    /// when its block is made ([`Self::take_counted`]).
     fn ask(&self, request: &HostRequest) -> bool {
         let policy = &self.policy;
         // A panic must not unwind into the implementation's C frames.
         let yes = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| policy(request)))
             .unwrap_or(false);
-        if yes {
-            self.granted.fetch_add(1, Ordering::Relaxed);
-        } else {
+        if !yes {
             self.refused.fetch_add(1, Ordering::Relaxed);
         }
         yes
+    }
+
+    /// [`Self::take`], counted as granted when a block comes and as refused when
+    /// the layout is impossible or the global allocator has none.
+    fn take_counted(&self, size: usize, alignment: usize) -> *mut c_void {
+        let block = self.take(size, alignment);
+        let count = match block.is_null() {
+            true => &self.refused,
+            false => &self.granted,
+        };
+        count.fetch_add(1, Ordering::Relaxed);
+        block
     }
 
     /// A block of `size` bytes at `alignment`, counted; null when the layout is
@@ -297,12 +313,12 @@ unsafe extern "system" fn allocation(
         size,
         alignment,
         scope,
-        reallocation: false,
+        old_size: None,
     };
     if !state.ask(&request) {
         return core::ptr::null_mut();
     }
-    state.take(size, alignment)
+    state.take_counted(size, alignment)
 }
 
 unsafe extern "system" fn reallocation(
@@ -314,34 +330,39 @@ unsafe extern "system" fn reallocation(
 ) -> *mut c_void {
     // SAFETY: as in `allocation`.
     let state = unsafe { state(user_data) };
-    // The specification's cases: NULL is an allocation, zero size a free.
+    // The specification's cases: zero size is a free (of nothing, for NULL: no
+    // block is made that no one would free), NULL an allocation.
+    if size == 0 {
+        if !original.is_null() {
+            // SAFETY: `original` is a live block of this allocator
+            // (PFN_vkReallocationFunction).
+            unsafe { state.give_back(original) };
+        }
+        return core::ptr::null_mut();
+    }
     if original.is_null() {
         // SAFETY: the arguments Vulkan gave.
         return unsafe { allocation(user_data, size, alignment, scope) };
     }
-    if size == 0 {
-        // SAFETY: `original` is a live block of this allocator (PFN_vkReallocationFunction).
-        unsafe { state.give_back(original) };
-        return core::ptr::null_mut();
-    }
+    // SAFETY: `original` is a live block of this allocator.
+    let (old_size, _) = unsafe { State::header(original) };
     let request = HostRequest {
         size,
         alignment,
         scope,
-        reallocation: true,
+        old_size: Some(old_size),
     };
     if !state.ask(&request) {
         // Refused: the original block stays as it was, as the specification asks.
         return core::ptr::null_mut();
     }
-    let moved = state.take(size, alignment);
+    let moved = state.take_counted(size, alignment);
     if moved.is_null() {
         return moved;
     }
     // SAFETY: `original` is a live block of this allocator; the two blocks are
     // distinct and each holds at least the bytes copied.
     unsafe {
-        let (old_size, _) = State::header(original);
         core::ptr::copy_nonoverlapping(
             original.cast::<u8>(),
             moved.cast::<u8>(),
@@ -416,7 +437,7 @@ mod tests {
 
     #[test]
     fn a_refusal_keeps_the_original_block() {
-        let h = HostAllocator::with_policy(|r| !r.reallocation);
+        let h = HostAllocator::with_policy(|r| r.old_size.is_none());
         let c = h.inner.callbacks;
         let p = call_alloc(&h, 16, 8);
         // SAFETY: a live block of this allocator.
@@ -435,6 +456,19 @@ mod tests {
         // SAFETY: still live.
         unsafe { (c.pfn_free.unwrap())(c.p_user_data, p) };
         assert_eq!(h.stats().live_bytes, 0);
+        // Reallocating nothing to nothing makes no block.
+        // SAFETY: NULL is a valid original.
+        let none = unsafe {
+            (c.pfn_reallocation.unwrap())(
+                c.p_user_data,
+                core::ptr::null_mut(),
+                0,
+                8,
+                vk::SystemAllocationScope::OBJECT,
+            )
+        };
+        assert!(none.is_null());
+        assert_eq!(h.stats().live_blocks, 0);
         let panicky = HostAllocator::with_policy(|_| panic!("no"));
         assert!(call_alloc(&panicky, 16, 8).is_null());
     }

@@ -85,16 +85,22 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
         let tagged = s_type.map(|(value, number)| {
             let number = proc_macro2::Literal::i32_unsuffixed(number as i32);
             let _ = value;
-            let extends = t.struct_extends.iter().filter(|e| model.extended_in_reference.contains(model.spelling(e))).map(|e| {
+            let extends: Vec<TokenStream> = t.struct_extends.iter().filter(|e| model.extended_in_reference.contains(model.spelling(e))).map(|e| {
                 let tr = ident(&format!("Extends{}", type_name(model.spelling(e))));
                 quote!(unsafe impl vk::#tr for #id #anon {})
+            }).collect();
+            // ash has an `Extends` trait only for a struct something extends in its
+            // registry; a delta struct that extends only others is chained by tuff's
+            // safe struct alone.
+            let extends_safety = (!extends.is_empty()).then(|| quote! {
+                __safety!("the registry's `structextends`: this struct may be in these structs' `pNext` chains.");
             });
             quote! {
                 __safety!("the value the registry gives this struct's `sType`.");
                 unsafe impl #generics vk::TaggedStructure for #id #generics {
                     const STRUCTURE_TYPE: vk::StructureType = vk::StructureType::from_raw(#number);
                 }
-                __safety!("the registry's `structextends`: this struct may be in these structs' `pNext` chains.");
+                #extends_safety
                 #(#extends)*
             }
         });
@@ -231,14 +237,22 @@ fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
         let mut seen = std::collections::BTreeSet::new();
         let mut decls = Vec::new();
         let mut impls = Vec::new();
+        let mut done = std::collections::BTreeSet::new();
         for v in names {
+            // A value two require blocks add is one value.
+            if !done.insert(v) {
+                continue;
+            }
             let Some(n) = model.enum_numbers.get(v) else {
                 continue;
             };
             let mut konst = value_const(group, v);
             if !seen.insert(konst.clone()) {
+                // Two values that shorten alike keep their full names.
                 konst = v.strip_prefix("VK_").unwrap_or(v).to_owned();
-                seen.insert(konst.clone());
+                if !seen.insert(konst.clone()) {
+                    continue;
+                }
             }
             let k = ident(&konst);
             let doc = format!("`{v}`");
@@ -277,16 +291,26 @@ fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
 /// is `ROTATE`); a name that would start with a digit is prefixed `TYPE_`.
 fn value_const(group: &str, value: &str) -> String {
     let Some((before, after)) = group.split_once("FlagBits") else {
-        return crate::names::enum_const(group, value);
+        let c = crate::names::enum_const(group, value);
+        // A value outside its type's prefix (`VK_ERROR_NOT_PERMITTED` of `VkResult`)
+        // keeps its name less `VK_`, as ash writes it.
+        return match c == value {
+            true => value.strip_prefix("VK_").unwrap_or(value).to_owned(),
+            false => c,
+        };
     };
     let base = before.strip_prefix("Vk").unwrap_or(before);
     let digits: String = after.chars().take_while(char::is_ascii_digit).collect();
-    let words = format!("{base}{digits}");
-    let prefix = format!(
-        "VK_{}_",
-        heck::ToShoutySnakeCase::to_shouty_snake_case(words.as_str())
-    );
-    let mut rest = value.strip_prefix(&prefix).unwrap_or(value).to_owned();
+    let words = heck::ToShoutySnakeCase::to_shouty_snake_case(base);
+    // `VkAccessFlagBits2` values are `VK_ACCESS_2_...`.
+    let prefix = match digits.is_empty() {
+        true => format!("VK_{words}_"),
+        false => format!("VK_{words}_{digits}_"),
+    };
+    let mut rest = match value.strip_prefix(&prefix) {
+        Some(r) => r.to_owned(),
+        None => value.strip_prefix("VK_").unwrap_or(value).to_owned(),
+    };
     if let Some(r) = rest.strip_suffix("_BIT") {
         rest = r.to_owned();
     } else if let Some(i) = rest.find("_BIT_") {
@@ -307,7 +331,31 @@ fn model_number<'a>(cx: &'a Context, value: &str) -> Option<&'a i64> {
 fn member_type(cx: &Context, m: &Field) -> TokenStream {
     let ty = match m.type_name.as_str() {
         "VkBool32" if m.pointers == 0 => quote!(vk::Bool32),
-        _ => raw_type(cx.model, &cx.facts, m),
+        // Another struct of this module (`vk` here is ash's alone).
+        t if cx.model.delta.contains(t) => {
+            let id = type_ident(t);
+            let mut ty = match cx.facts.has_lifetime(t) {
+                true => quote!(#id<'a>),
+                false => quote!(#id),
+            };
+            for level in (0..m.pointers).rev() {
+                ty = match m.const_pointees.get(level).copied().unwrap_or(m.is_const) {
+                    true => quote!(*const #ty),
+                    false => quote!(*mut #ty),
+                };
+            }
+            ty
+        }
+        t => {
+            // `spellable` admitted only types ash spells; a by-value member of one it
+            // cannot would be laid out wrong, so that is a generator bug.
+            assert!(
+                m.pointers > 0 || crate::plan::types::ash_type(cx.model, &cx.facts, t).is_some(),
+                "delta member `{}` of type `{t}` has no spelling",
+                m.name
+            );
+            raw_type(cx.model, &cx.facts, m)
+        }
     };
     match m.static_array.as_deref() {
         None => ty,

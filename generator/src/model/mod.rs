@@ -620,8 +620,11 @@ impl Model {
             // A value ash lacks cannot be named by ash's name in the emitted code: it
             // goes to the delta, which names it, and the checks take it by number.
             for (group, values) in model.enum_values.iter_mut() {
+                // A value two require blocks add is listed twice: once is enough.
+                let mut once = BTreeSet::new();
                 let (kept, gone): (Vec<String>, Vec<String>) = values
                     .drain(..)
+                    .filter(|v| once.insert(v.clone()))
                     .partition(|v| reference.enum_numbers.contains_key(v));
                 *values = kept;
                 // Only what an enabled version or extension adds (a value of an
