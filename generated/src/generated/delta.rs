@@ -15,6 +15,7 @@ pub mod delta_layout {
     use super::*;
     /// One struct's layout as Rust lays it out, for the test that compares it with
     /// the C headers.
+    #[derive(Debug)]
     pub struct LayoutRow {
         /// The C name.
         pub c_name: &'static str,

@@ -197,7 +197,8 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
             use super::*;
         /// One struct's layout as Rust lays it out, for the test that compares it with
         /// the C headers.
-                pub struct LayoutRow {
+                #[derive(Debug)]
+        pub struct LayoutRow {
             /// The C name.
             pub c_name: &'static str,
             /// `size_of`.
