@@ -113,7 +113,7 @@ pub struct Generation {
     pub shape_notes: Vec<String>,
     /// What the registry has and ash lacks that the crate defines itself in ash's
     /// style (`src/generated/delta.rs`): structs, and constants (`API_VERSION_1_<m>`
-    /// and the structs' `VkStructureType` values).
+    /// and enum values).
     pub delta: Delta,
 }
 
@@ -430,14 +430,7 @@ pub(crate) fn passes(inputs: &Inputs) -> Result<Generation> {
         shape_notes: validity::implicit::bitmask_shape_notes(&model),
         delta: Delta {
             structs: model.delta.len(),
-            constants: model.own_tables.len()
-                + model
-                    .delta_values
-                    .iter()
-                    .filter(|(group, _)| model.is_emitted(group))
-                    .flat_map(|(_, values)| values)
-                    .filter(|v| model.enum_numbers.contains_key(*v))
-                    .count(),
+            constants: model.own_tables.len() + model.delta_constants().count(),
         },
     })
 }

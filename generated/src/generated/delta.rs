@@ -13,8 +13,7 @@ use ash::vk;
 pub mod delta_layout {
     #[allow(unused_imports)]
     use super::*;
-    /// One struct's layout as Rust lays it out, for the test that compares it with
-    /// the C headers.
+    /// One struct's layout as Rust lays it out.
     #[derive(Debug)]
     pub struct LayoutRow {
         /// The C name.

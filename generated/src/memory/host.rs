@@ -209,7 +209,7 @@ fn block_layout(size: usize, alignment: usize) -> Option<Layout> {
 
 impl State {
     /// Whether the policy grants `request`; a refusal is counted here, a grant
-    /// when its block is made ([`Self::take_counted`]).
+    /// when its block is made ([`Self::take`]).
     fn ask(&self, request: &HostRequest) -> bool {
         let policy = &self.policy;
         // A panic must not unwind into the implementation's C frames.
@@ -221,29 +221,18 @@ impl State {
         yes
     }
 
-    /// [`Self::take`], counted as granted when a block comes and as refused when
-    /// the layout is impossible or the global allocator has none.
-    fn take_counted(&self, size: usize, alignment: usize) -> *mut c_void {
-        let block = self.take(size, alignment);
-        let count = match block.is_null() {
-            true => &self.refused,
-            false => &self.granted,
-        };
-        count.fetch_add(1, Ordering::Relaxed);
-        block
-    }
-
-    /// A block of `size` bytes at `alignment`, counted; null when the layout is
-    /// impossible or the global allocator has none.
+    /// A block of `size` bytes at `alignment`, counted as granted; null, counted
+    /// as refused, when the layout is impossible or the global allocator has none.
     fn take(&self, size: usize, alignment: usize) -> *mut c_void {
-        let Some(layout) = block_layout(size, alignment) else {
-            return core::ptr::null_mut();
-        };
         // SAFETY: the layout's size is at least `HEADER`, never zero.
-        let base = unsafe { std::alloc::alloc(layout) };
+        let base = block_layout(size, alignment).map_or(core::ptr::null_mut(), |layout| unsafe {
+            std::alloc::alloc(layout)
+        });
         if base.is_null() {
+            self.refused.fetch_add(1, Ordering::Relaxed);
             return core::ptr::null_mut();
         }
+        self.granted.fetch_add(1, Ordering::Relaxed);
         let off = offset(alignment);
         // SAFETY: `off <= layout.size()`, so the pointer stays inside the block; the
         // header's two words lie in `[off - HEADER, off)`, inside it too, and are
@@ -318,7 +307,7 @@ unsafe extern "system" fn allocation(
     if !state.ask(&request) {
         return core::ptr::null_mut();
     }
-    state.take_counted(size, alignment)
+    state.take(size, alignment)
 }
 
 unsafe extern "system" fn reallocation(
@@ -356,7 +345,7 @@ unsafe extern "system" fn reallocation(
         // Refused: the original block stays as it was, as the specification asks.
         return core::ptr::null_mut();
     }
-    let moved = state.take_counted(size, alignment);
+    let moved = state.take(size, alignment);
     if moved.is_null() {
         return moved;
     }

@@ -4,32 +4,24 @@
 //!
 //! Today that is the structs of `Model::delta` (a struct is delta when its members
 //! are all of types ash has, or of other delta structs), the `API_VERSION_1_<m>`
-//! constants of the core versions ash lacks, and the `VkStructureType` values of the
-//! delta structs as associated constants of one extension trait. Each struct is
+//! constants of the core versions ash lacks, and the enum values ash lacks by name
+//! (`Model::delta_constants`) as associated constants of one trait per type. Each struct is
 //! `#[repr(C)]` with ash's field names, `Default` (its `sType` set), ash's
 //! `TaggedStructure` and the `Extends*` traits of the structs whose chain it
 //! extends, so it chains with ash's structs. `tests/` compares the layout of every
 //! item with the C headers of its registry (`examples/core14`).
 
 use crate::model::Field;
-use crate::names::{field, field_ident, ident, type_ident, type_name};
-use crate::plan::types::raw_type;
+use crate::names::{field_ident, ident, type_ident, type_name};
+use crate::plan::types::{ash_type, raw_type, with_pointers};
 use crate::plan::Context;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// One delta item as the layout test sees it.
-pub struct LayoutItem {
-    /// The C name (`VkPhysicalDeviceVulkan14Features`).
-    pub c_name: String,
-    /// Each member: C name and ash's field name.
-    pub fields: Vec<(String, String)>,
-}
-
 pub(super) fn emit(cx: &Context) -> TokenStream {
     let model = cx.model;
     let mut items = Vec::new();
-    let mut layout = Vec::new();
+    let mut layout_rows = Vec::new();
     for name in &model.delta {
         let t = &model.types[name];
         let id = type_ident(name);
@@ -51,7 +43,7 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
                 s_type = m
                     .values
                     .as_deref()
-                    .and_then(|v| Some((v, *model_number(cx, v)?)));
+                    .and_then(|v| model.enum_numbers.get(v).copied());
                 continue;
             }
             if m.name == "pNext" || m.pointers > 0 || m.static_array.is_some() {
@@ -82,9 +74,8 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
             "`{name}`, which ash {} lacks: defined here in ash's style. <https://registry.khronos.org/vulkan/specs/latest/man/html/{name}.html>",
             model.reference_version.as_deref().unwrap_or("")
         );
-        let tagged = s_type.map(|(value, number)| {
+        let tagged = s_type.map(|number| {
             let number = proc_macro2::Literal::i32_unsuffixed(number as i32);
-            let _ = value;
             let extends: Vec<TokenStream> = t.struct_extends.iter().filter(|e| model.extended_in_reference.contains(model.spelling(e))).map(|e| {
                 let tr = ident(&format!("Extends{}", type_name(model.spelling(e))));
                 quote!(unsafe impl vk::#tr for #id #anon {})
@@ -133,13 +124,17 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
                 #(#setters)*
             }
         });
-        layout.push(LayoutItem {
-            c_name: name.to_string(),
-            fields: t
-                .members
-                .iter()
-                .map(|m| (m.name.clone(), field(&m.name)))
-                .collect(),
+        let offsets = t.members.iter().map(|m| {
+            let (c, f) = (&m.name, field_ident(&m.name));
+            quote!((#c, core::mem::offset_of!(#id, #f)))
+        });
+        layout_rows.push(quote! {
+            LayoutRow {
+                c_name: #name,
+                size: core::mem::size_of::<#id>(),
+                align: core::mem::align_of::<#id>(),
+                fields: &[#(#offsets),*],
+            }
         });
     }
     let versions = model.own_tables.iter().map(|m| {
@@ -149,22 +144,6 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
         quote! {
             #[doc = #doc]
             pub const #c: u32 = vk::make_api_version(0, 1, #m, 0);
-        }
-    });
-    let layout_rows = layout.iter().map(|l| {
-        let c = &l.c_name;
-        let id = type_ident(c);
-        let fields = l.fields.iter().map(|(cf, rf)| {
-            let f = ident(rf);
-            quote!((#cf, core::mem::offset_of!(#id, #f)))
-        });
-        quote! {
-            LayoutRow {
-                c_name: #c,
-                size: core::mem::size_of::<#id>(),
-                align: core::mem::align_of::<#id>(),
-                fields: &[#(#fields),*],
-            }
         }
     });
     let (traits, values) = value_traits(cx);
@@ -195,25 +174,25 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
         pub mod delta_layout {
             #[allow(unused_imports)]
             use super::*;
-        /// One struct's layout as Rust lays it out, for the test that compares it with
-        /// the C headers.
-                #[derive(Debug)]
-        pub struct LayoutRow {
-            /// The C name.
-            pub c_name: &'static str,
-            /// `size_of`.
-            pub size: usize,
-            /// `align_of`.
-            pub align: usize,
-            /// Each member's C name and offset.
-            pub fields: &'static [(&'static str, usize)],
-        }
 
-        /// Every struct of this module, laid out.
-                pub const LAYOUT: &[LayoutRow] = &[#(#layout_rows),*];
+            /// One struct's layout as Rust lays it out.
+            #[derive(Debug)]
+            pub struct LayoutRow {
+                /// The C name.
+                pub c_name: &'static str,
+                /// `size_of`.
+                pub size: usize,
+                /// `align_of`.
+                pub align: usize,
+                /// Each member's C name and offset.
+                pub fields: &'static [(&'static str, usize)],
+            }
 
-        /// Every constant of this module by its C name, with its value.
-                pub const VALUES: &[(&str, i64)] = &[#(#values,)* #(#versions_values,)*];
+            /// Every struct of this module, laid out.
+            pub const LAYOUT: &[LayoutRow] = &[#(#layout_rows),*];
+
+            /// Every constant of this module by its C name, with its value.
+            pub const VALUES: &[(&str, i64)] = &[#(#values,)* #(#versions_values,)*];
         }
     }
 }
@@ -224,13 +203,14 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
 /// its C name with its number, for the layout test.
 fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
     let model = cx.model;
+    let mut by_type: std::collections::BTreeMap<&str, Vec<(&str, i64)>> = Default::default();
+    for (group, v, n) in model.delta_constants() {
+        by_type.entry(group).or_default().push((v, n));
+    }
     let mut traits = Vec::new();
     let mut values = Vec::new();
-    for (group, names) in &model.delta_values {
-        if !model.is_emitted(group) {
-            continue;
-        }
-        let Some(ty) = crate::plan::types::ash_type(model, &cx.facts, group) else {
+    for (group, consts) in by_type {
+        let Some(ty) = ash_type(model, &cx.facts, group) else {
             continue;
         };
         let spelled = type_name(model.spelling(group)).replace("FlagBits", "Flags");
@@ -238,15 +218,7 @@ fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
         let mut seen = std::collections::BTreeSet::new();
         let mut decls = Vec::new();
         let mut impls = Vec::new();
-        let mut done = std::collections::BTreeSet::new();
-        for v in names {
-            // A value two require blocks add is one value.
-            if !done.insert(v) {
-                continue;
-            }
-            let Some(n) = model.enum_numbers.get(v) else {
-                continue;
-            };
+        for (v, n) in consts {
             let mut konst = value_const(group, v);
             if !seen.insert(konst.clone()) {
                 // Two values that shorten alike keep their full names.
@@ -258,15 +230,14 @@ fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
             let k = ident(&konst);
             let doc = format!("`{v}`");
             let raw = if group.contains("FlagBits") {
-                let n = proc_macro2::Literal::u64_suffixed(*n as u64);
+                let n = proc_macro2::Literal::u64_suffixed(n as u64);
                 quote!(#ty::from_raw(#n as _))
             } else {
-                let n = proc_macro2::Literal::i32_unsuffixed(*n as i32);
+                let n = proc_macro2::Literal::i32_unsuffixed(n as i32);
                 quote!(#ty::from_raw(#n))
             };
             decls.push(quote!(#[doc = #doc] const #k: Self;));
             impls.push(quote!(const #k: Self = #raw;));
-            let n = *n;
             values.push(quote!((#v, #n)));
         }
         let doc = format!(
@@ -323,10 +294,6 @@ fn value_const(group: &str, value: &str) -> String {
     rest
 }
 
-fn model_number<'a>(cx: &'a Context, value: &str) -> Option<&'a i64> {
-    cx.model.enum_numbers.get(value)
-}
-
 /// A member's type as ash would write it in the struct: pointers, and a fixed array
 /// `[T; N]` with N as ash names the constant (`vk::UUID_SIZE`) or the number.
 fn member_type(cx: &Context, m: &Field) -> TokenStream {
@@ -335,23 +302,17 @@ fn member_type(cx: &Context, m: &Field) -> TokenStream {
         // Another struct of this module (`vk` here is ash's alone).
         t if cx.model.delta.contains(t) => {
             let id = type_ident(t);
-            let mut ty = match cx.facts.has_lifetime(t) {
+            let ty = match cx.facts.has_lifetime(t) {
                 true => quote!(#id<'a>),
                 false => quote!(#id),
             };
-            for level in (0..m.pointers).rev() {
-                ty = match m.const_pointees.get(level).copied().unwrap_or(m.is_const) {
-                    true => quote!(*const #ty),
-                    false => quote!(*mut #ty),
-                };
-            }
-            ty
+            with_pointers(ty, m)
         }
         t => {
             // `spellable` admitted only types ash spells; a by-value member of one it
             // cannot would be laid out wrong, so that is a generator bug.
             assert!(
-                m.pointers > 0 || crate::plan::types::ash_type(cx.model, &cx.facts, t).is_some(),
+                m.pointers > 0 || ash_type(cx.model, &cx.facts, t).is_some(),
                 "delta member `{}` of type `{t}` has no spelling",
                 m.name
             );

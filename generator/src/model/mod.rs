@@ -381,10 +381,11 @@ impl Model {
                         .insert(alt.clone());
                 }
                 for (value, group) in &req.enum_extensions {
-                    enum_additions
-                        .entry(group.clone())
-                        .or_default()
-                        .push(value.clone());
+                    // A value two require blocks add is one value.
+                    let added = enum_additions.entry(group.clone()).or_default();
+                    if !added.contains(value) {
+                        added.push(value.clone());
+                    }
                     let origins = enum_origins.entry(value.clone()).or_default();
                     if !origins.contains(&iface.name) {
                         origins.push(iface.name.clone());
@@ -620,11 +621,8 @@ impl Model {
             // A value ash lacks cannot be named by ash's name in the emitted code: it
             // goes to the delta, which names it, and the checks take it by number.
             for (group, values) in model.enum_values.iter_mut() {
-                // A value two require blocks add is listed twice: once is enough.
-                let mut once = BTreeSet::new();
                 let (kept, gone): (Vec<String>, Vec<String>) = values
                     .drain(..)
-                    .filter(|v| once.insert(v.clone()))
                     .partition(|v| reference.enum_numbers.contains_key(v));
                 *values = kept;
                 // Only what an enabled version or extension adds (a value of an
@@ -633,10 +631,10 @@ impl Model {
                 let gone: Vec<String> = gone
                     .into_iter()
                     .filter(|v| {
-                        model.enum_origins.get(v).is_some_and(|o| {
-                            o.iter()
-                                .any(|x| enabled.contains(x.split('+').next().unwrap_or(x)))
-                        })
+                        model
+                            .enum_origins
+                            .get(v)
+                            .is_some_and(|o| o.iter().any(|x| enabled.contains(x)))
                     })
                     .collect();
                 if !gone.is_empty() {
@@ -646,6 +644,16 @@ impl Model {
             model.left_out.extend(missing);
         }
         Ok(model)
+    }
+
+    /// The enum values the crate defines itself (`delta_values`) that it can name:
+    /// those of emitted types that have a number, as (type, value, number).
+    pub fn delta_constants(&self) -> impl Iterator<Item = (&str, &str, i64)> {
+        self.delta_values
+            .iter()
+            .filter(|(group, _)| self.is_emitted(group))
+            .flat_map(|(group, values)| values.iter().map(move |v| (group.as_str(), v.as_str())))
+            .filter_map(|(group, v)| Some((group, v, *self.enum_numbers.get(v)?)))
     }
 
     /// The handle a command's method is called on: its dispatchable first

@@ -224,7 +224,12 @@ pub fn spelled(model: &Model, facts: &TypeFacts, name: &str) -> TokenStream {
 /// `*const *const vk::AccelerationStructureBuildRangeInfoKHR`, `*mut vk::Display`,
 /// `vk::HANDLE`.
 pub fn raw_type(model: &Model, facts: &TypeFacts, p: &crate::model::Field) -> TokenStream {
-    let mut ty = ash_type(model, facts, &p.type_name).unwrap_or(quote!(::core::ffi::c_void));
+    let ty = ash_type(model, facts, &p.type_name).unwrap_or(quote!(::core::ffi::c_void));
+    with_pointers(ty, p)
+}
+
+/// `ty` behind the pointers `p` is declared with, outermost first.
+pub fn with_pointers(mut ty: TokenStream, p: &crate::model::Field) -> TokenStream {
     for level in (0..p.pointers).rev() {
         ty = match p.const_pointees.get(level).copied().unwrap_or(p.is_const) {
             true => quote!(*const #ty),
