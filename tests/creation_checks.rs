@@ -354,20 +354,10 @@ fn allocation_rules_are_refused_and_the_layer_agrees() {
         .expect("buffer");
     let image = s
         .device
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .extent(vk::Extent3D {
-                    width: 16,
-                    height: 16,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::TRANSFER_SRC),
-        )
+        .create_image(&tuff_setup::rgba8_image_info(
+            16,
+            vk::ImageUsageFlags::TRANSFER_SRC,
+        ))
         .expect("image");
     let buffer_size = s
         .device

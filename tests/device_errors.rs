@@ -17,7 +17,7 @@ mod x11_window;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use tuff::{vk, Handle as _};
-use tuff_setup::{setup, setup_on, setup_with, swapchain_info, Setup, Wsi};
+use tuff_setup::{rgba8_image_info, setup, setup_on, setup_with, swapchain_info, Setup, Wsi};
 use vulkan::assert_silent;
 
 /// Device memory asked for until the heap refuses: every allocation a heap can give,
@@ -266,20 +266,7 @@ fn host_memory_runs_out_as_an_error() {
     note(
         "image",
         s.device
-            .create_image(
-                &tuff::ImageCreateInfo::new()
-                    .image_type(vk::ImageType::TYPE_2D)
-                    .format(vk::Format::R8G8B8A8_UNORM)
-                    .extent(vk::Extent3D {
-                        width: 16,
-                        height: 16,
-                        depth: 1,
-                    })
-                    .mip_levels(1)
-                    .array_layers(1)
-                    .samples(vk::SampleCountFlags::TYPE_1)
-                    .usage(vk::ImageUsageFlags::TRANSFER_DST),
-            )
+            .create_image(&rgba8_image_info(16, vk::ImageUsageFlags::TRANSFER_DST))
             .map(drop),
     );
     note(

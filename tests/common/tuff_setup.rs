@@ -392,6 +392,23 @@ impl Setup {
     }
 }
 
+/// A square 2D RGBA8 image of `size` pixels a side, one level, one layer, one
+/// sample: the create info most tests need.
+pub fn rgba8_image_info(size: u32, usage: vk::ImageUsageFlags) -> tuff::ImageCreateInfo<'static> {
+    tuff::ImageCreateInfo::new()
+        .image_type(vk::ImageType::TYPE_2D)
+        .format(vk::Format::R8G8B8A8_UNORM)
+        .extent(vk::Extent3D {
+            width: size,
+            height: size,
+            depth: 1,
+        })
+        .mip_levels(1)
+        .array_layers(1)
+        .samples(vk::SampleCountFlags::TYPE_1)
+        .usage(usage)
+}
+
 /// A square RGBA8 image with its memory and view, and a one-subpass render pass and
 /// framebuffer that clear and store it.
 pub struct ColorTarget {
@@ -431,20 +448,10 @@ impl Setup {
     ) -> (tuff::Image, tuff::DeviceMemory, tuff::ImageView) {
         let d = &self.device;
         let image = d
-            .create_image(
-                &tuff::ImageCreateInfo::new()
-                    .image_type(vk::ImageType::TYPE_2D)
-                    .format(vk::Format::R8G8B8A8_UNORM)
-                    .extent(vk::Extent3D {
-                        width: size,
-                        height: size,
-                        depth: 1,
-                    })
-                    .mip_levels(1)
-                    .array_layers(1)
-                    .samples(vk::SampleCountFlags::TYPE_1)
-                    .usage(vk::ImageUsageFlags::COLOR_ATTACHMENT | usage),
-            )
+            .create_image(&rgba8_image_info(
+                size,
+                vk::ImageUsageFlags::COLOR_ATTACHMENT | usage,
+            ))
             .expect("image");
         let memory = self.bind_image(&image);
         let view = d
