@@ -1,6 +1,6 @@
-//! The reference registry: extensions the registry `ash` is generated from lacks, or
-//! defines otherwise, are left out of the emitted API with the reason, and nothing
-//! else is.
+//! The reference registry: extensions the registry `ash` is generated from defines
+//! otherwise are left out of the emitted API with the reason, and nothing else is;
+//! what it lacks the crate defines itself (the delta).
 
 mod common;
 
@@ -42,8 +42,8 @@ fn every_extension_ash_lacks_or_defines_otherwise_is_left_out_with_its_reason() 
         [
             // Members were added or renamed before 1.3.281.
             "VK_EXT_device_fault",
-            // Removed (the provisional H.264 and H.265 encoders were replaced by KHR
-            // ones).
+            // The provisional H.264 and H.265 encoders (replaced by KHR ones) need
+            // the encode queue as 1.3.239 defined it.
             "VK_EXT_video_encode_h264",
             "VK_EXT_video_encode_h265",
             "VK_HUAWEI_cluster_culling_shader",
@@ -53,7 +53,9 @@ fn every_extension_ash_lacks_or_defines_otherwise_is_left_out_with_its_reason() 
     assert!(reasons[0]
         .1
         .contains("VkDeviceFaultVendorBinaryHeaderVersionOneEXT"));
-    assert!(reasons[1].1.contains("has no such extension"));
+    assert!(reasons[1]
+        .1
+        .contains("depends on `VK_KHR_video_encode_queue`"));
     assert!(reasons[4].1.contains("`VkBuffer dstBuffer` there"));
     assert_eq!(kept.len() + left.len(), all.len());
     // Aliases resolved: the EXT names 1.3.281 made aliases of KHR ones are kept.
@@ -66,17 +68,30 @@ fn every_extension_ash_lacks_or_defines_otherwise_is_left_out_with_its_reason() 
 }
 
 #[test]
-fn an_extension_that_depends_on_one_left_out_goes_too() {
-    let (pinned, mut reference) = registries();
-    // A reference without VK_KHR_surface, on which VK_KHR_swapchain depends.
-    reference.extensions.retain(|e| e.name != "VK_KHR_surface");
+fn an_extension_ash_lacks_stays_and_one_that_depends_on_one_left_out_goes() {
+    let (pinned, reference) = registries();
     let wanted: Vec<String> = ["VK_KHR_surface", "VK_KHR_swapchain", "VK_EXT_debug_utils"]
         .map(String::from)
         .to_vec();
-    let (kept, left) = select(&pinned, Some(&reference), &versions(), &wanted);
+    // A reference without VK_KHR_surface: the extension stays (the crate defines
+    // what ash lacks, `missing_items`), and so does VK_KHR_swapchain.
+    let mut lacking = reference.clone();
+    lacking.extensions.retain(|e| e.name != "VK_KHR_surface");
+    let (kept, left) = select(&pinned, Some(&lacking), &versions(), &wanted);
+    assert_eq!((kept.len(), left.len()), (3, 0), "{left:?}");
+    // A reference that defines VkSurfaceFormatKHR otherwise: VK_KHR_surface goes,
+    // and VK_KHR_swapchain, which depends on it, with it.
+    let mut otherwise = reference;
+    let format = otherwise
+        .types
+        .iter_mut()
+        .find(|t| t.name == "VkSurfaceFormatKHR")
+        .unwrap();
+    format.members[1].name = "colourSpace".into();
+    let (kept, left) = select(&pinned, Some(&otherwise), &versions(), &wanted);
     assert_eq!(kept, ["VK_EXT_debug_utils"], "{left:?}");
     assert_eq!(left[0].name, "VK_KHR_surface");
-    assert!(left[0].reason.contains("has no such extension"), "{left:?}");
+    assert!(left[0].reason.contains("VkSurfaceFormatKHR"), "{left:?}");
     assert_eq!(left[1].name, "VK_KHR_swapchain");
     assert!(
         left[1].reason.contains("depends on `VK_KHR_surface`"),
@@ -84,7 +99,7 @@ fn an_extension_that_depends_on_one_left_out_goes_too() {
     );
     // A dependency the config never asked for is not a reason to leave one out:
     // the model refuses that config with its own error.
-    let (kept, left) = select(&pinned, Some(&reference), &versions(), &wanted[1..]);
+    let (kept, left) = select(&pinned, Some(&otherwise), &versions(), &wanted[1..]);
     assert_eq!((kept.len(), left.len()), (2, 0), "{left:?}");
 }
 
@@ -333,17 +348,44 @@ fn a_newer_registry_is_emitted_by_the_names_ash_has_and_loses_only_what_ash_lack
     // The two structs of 1.4 ash lacks altogether are the crate's own, in ash's
     // style; nothing of 1.4 is left out.
     assert!(!m14.left_out.iter().any(|l| l.name.contains("Vulkan14")));
-    assert_eq!(
-        m14.delta,
-        [
-            "VkCuModuleTexturingModeCreateInfoNVX",
-            "VkPhysicalDeviceVulkan14Features",
-            "VkPhysicalDeviceVulkan14Properties"
-        ]
-        .into_iter()
-        .map(str::to_owned)
-        .collect()
-    );
+    for d in [
+        "VkCuModuleTexturingModeCreateInfoNVX",
+        "VkPhysicalDeviceVulkan14Features",
+        "VkPhysicalDeviceVulkan14Properties",
+    ] {
+        assert!(m14.delta.contains(d), "{d} is not in the delta");
+    }
+    // The extensions ash lacks altogether are emitted: their structs, unions, enums,
+    // flags and handles are the delta, their commands in the crate's own tables;
+    // only what cannot be spelled goes, each with its reason (a C bit field).
+    assert!(m14.own_extensions.contains("VK_KHR_pipeline_binary"));
+    assert!(m14.enabled.contains("VK_KHR_pipeline_binary"));
+    for d in [
+        "VkPipelineBinaryKHR",
+        "VkPipelineBinaryCreateInfoKHR",
+        "VkPhysicalDeviceLayeredApiKHR",
+        "VkIndirectCommandsInputModeFlagsEXT",
+        "VkIndirectCommandsTokenDataEXT",
+    ] {
+        assert!(m14.delta.contains(d), "{d} is not in the delta");
+        assert!(m14.emitted.contains(d), "{d} is not emitted");
+    }
+    assert!(m14.delta_commands.contains("vkCreatePipelineBinariesKHR"));
+    assert!(m14
+        .delta_commands
+        .contains("vkCmdExecuteGeneratedCommandsEXT"));
+    let left14 = |name: &str| {
+        m14.left_out
+            .iter()
+            .find(|l| l.name == name)
+            .map(|l| l.reason.as_str())
+            .unwrap_or_else(|| panic!("{name} is not left out"))
+    };
+    assert!(left14("VkClusterAccelerationStructureInstantiateClusterInfoNV").contains("bit field"));
+    assert!(!m14
+        .left_out
+        .iter()
+        .any(|l| l.reason.contains("has no such extension")));
     for s in [
         "VkPhysicalDeviceVulkan14Features",
         "VkPhysicalDeviceVulkan14Properties",

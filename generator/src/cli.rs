@@ -179,13 +179,16 @@ where
             for l in &g.left_out {
                 let _ = writeln!(out, "tuff-gen: left out {}: {}", l.name, l.reason);
             }
-            if g.delta.structs + g.delta.constants > 0 {
+            if g.delta.laid_out() > 0 {
                 let _ = writeln!(
                     out,
-                    "tuff-gen: delta: {} items ash lacks defined in ash's style ({} structs, {} constants; src/generated/delta.rs)",
-                    g.delta.structs + g.delta.constants,
+                    "tuff-gen: delta: {} items ash lacks defined in ash's style ({} structs, {} other types, {} constants; src/generated/delta.rs); {} commands of {} extensions ash lacks, in the crate's own function tables",
+                    g.delta.laid_out(),
                     g.delta.structs,
-                    g.delta.constants
+                    g.delta.types,
+                    g.delta.constants,
+                    g.delta.commands,
+                    g.delta.extensions
                 );
             }
             for note in &g.shape_notes {

@@ -87,9 +87,22 @@ pub fn workspace_root() -> PathBuf {
 pub struct Delta {
     /// Structs.
     pub structs: usize,
-    /// Constants: core versions' `API_VERSION_1_<m>` and the enum values ash lacks
-    /// by name (structure types included).
+    /// Other types: unions, enums, flags types and handles.
+    pub types: usize,
+    /// Constants: core versions' `API_VERSION_1_<m>`, array sizes, and the enum
+    /// values ash lacks by name (structure types included).
     pub constants: usize,
+    /// Commands of extensions ash lacks, in the crate's own function tables.
+    pub commands: usize,
+    /// Those extensions.
+    pub extensions: usize,
+}
+
+impl Delta {
+    /// What the layout test compares with the C headers: every type and constant.
+    pub fn laid_out(&self) -> usize {
+        self.structs + self.types + self.constants
+    }
 }
 
 /// What a run produced, before anything is written.
@@ -429,8 +442,26 @@ pub(crate) fn passes(inputs: &Inputs) -> Result<Generation> {
         left_out: model.left_out.clone(),
         shape_notes: validity::implicit::bitmask_shape_notes(&model),
         delta: Delta {
-            structs: model.delta.len(),
-            constants: model.own_tables.len() + model.delta_constants().count(),
+            structs: model
+                .delta
+                .iter()
+                .filter(|n| model.category(n) == Some(model::Kind::Struct))
+                .count(),
+            types: model
+                .delta
+                .iter()
+                .filter(|n| match model.category(n) {
+                    Some(model::Kind::Union | model::Kind::Handle) => true,
+                    Some(model::Kind::Enum) => !n.contains("FlagBits"),
+                    _ => false,
+                })
+                .count()
+                + model.delta_flags().len(),
+            commands: model.delta_commands.len(),
+            extensions: model.own_extensions.len(),
+            constants: model.own_tables.len()
+                + model.delta_constants().count()
+                + model.delta_sizes.len(),
         },
     })
 }

@@ -7,7 +7,10 @@
 //! program fails on any message the layer reports, or when the outcome does not match
 //! the device's version. It also reads the device's Vulkan 1.4 features through
 //! `vk::PhysicalDeviceVulkan14Features`, a struct ash 0.38 lacks that the crate defines
-//! in ash's style (its delta), chained into ash's own `PhysicalDeviceFeatures2`.
+//! in ash's style (its delta), chained into ash's own `PhysicalDeviceFeatures2`. Where
+//! the device offers `VK_KHR_pipeline_binary`, an extension ash lacks altogether, it
+//! enables it, reads its properties through the delta's struct and checks that the
+//! crate's own function table for it (`vk::khr::pipeline_binary::DeviceFn`) loaded.
 //!
 //! `bash scripts/core14.sh` generates the crate, builds this and runs it.
 
@@ -44,6 +47,11 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     // info chains only the debug messenger's create info and enables only
     // VK_EXT_debug_utils and the validation layer, which break none of them.
     let instance = unsafe { entry.create_instance(&info) }?;
+    // The chained info covers the instance's creation and destruction; this one the
+    // rest of its life.
+    let messenger = validation
+        .then(|| instance.create_debug_utils_messenger_ext(&log.messenger_info()))
+        .transpose()?;
     let physicals = instance.enumerate_physical_devices()?;
     let wanted = std::env::var("TUFF_DEVICE").unwrap_or_default();
     let physical = physicals
@@ -83,12 +91,26 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     let queues = [tuff::DeviceQueueCreateInfo::new()
         .queue_family_index(family)
         .queue_priorities(&[1.0])];
+    // VK_KHR_pipeline_binary, an extension ash 0.38 lacks altogether: its handle, its
+    // structs and its function table are the crate's own. Enabled where the device
+    // offers it (on a 1.4 device, whose maintenance5 it needs).
+    let offered = physical.enumerate_device_extension_properties(None)?;
+    let binary = c"VK_KHR_pipeline_binary";
+    let has_binary = vk::api_version_minor(version) >= 4
+        && offered
+            .iter()
+            .any(|e| e.extension_name_as_c_str() == Ok(binary));
+    let device_exts = [tuff::CStrPtr::new(binary)];
+    let mut device_info = tuff::DeviceCreateInfo::new().queue_create_infos(&queues);
+    if has_binary {
+        device_info = device_info.enabled_extension_names(&device_exts);
+    }
     // SAFETY: as for the instance: vkCreateDevice's rules of the 1.4.309 registry
     // that tuff does not check are about chained feature structs, enabled features
-    // and extensions, and this info has none of them (one queue, nothing chained).
-    let device = unsafe {
-        physical.create_device(&tuff::DeviceCreateInfo::new().queue_create_infos(&queues))
-    }?;
+    // and extensions; this info chains nothing, and enables at most
+    // VK_KHR_pipeline_binary, on a device that offers it and is 1.4 (so has
+    // maintenance5, which it depends on), with none of its features.
+    let device = unsafe { physical.create_device(&device_info) }?;
     println!(
         "DeviceFnV1_4 loaded: {}",
         if device.ext().v1_4.is_some() {
@@ -97,6 +119,33 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             "no"
         }
     );
+    if has_binary {
+        let mut binary_props = vk::PhysicalDevicePipelineBinaryPropertiesKHR::default();
+        let mut props = vk::PhysicalDeviceProperties2::default().push_next(&mut binary_props);
+        // SAFETY: a live physical device; the chain is local and well formed (ash's
+        // push_next, the delta's sType), and the device offers the extension whose
+        // struct it chains.
+        unsafe {
+            instance
+                .fns()
+                .get_physical_device_properties2(physical.raw(), &mut props)
+        };
+        println!(
+            "VK_KHR_pipeline_binary (ash lacks it): enabled, vk::khr::pipeline_binary::DeviceFn loaded: {}; pipelineBinaryInternalCache {}, pipelineBinaryPrefersInternalCache {}",
+            if device.ext().khr_pipeline_binary.is_some() {
+                "yes"
+            } else {
+                "no"
+            },
+            binary_props.pipeline_binary_internal_cache,
+            binary_props.pipeline_binary_prefers_internal_cache
+        );
+        if device.ext().khr_pipeline_binary.is_none() {
+            return Err("VK_KHR_pipeline_binary is enabled but its table did not load".into());
+        }
+    } else {
+        println!("VK_KHR_pipeline_binary (ash lacks it): not offered by this device");
+    }
     let formats = [vk::Format::R8G8B8A8_UNORM];
     let area = tuff::RenderingAreaInfoKHR::new()
         .color_attachment_formats(&formats)
@@ -115,16 +164,35 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         other => return Err(format!("unexpected outcome on this device: {other:?}").into()),
     }
     drop(device);
+    drop(messenger);
     drop(instance);
-    // The loader's note that a layer built for an older version than the apiVersion
-    // asked for is loaded (the installed validation layer is a 1.3 one) is about the
-    // installation, not the program: shown, not failed on. Anything else fails.
+    // Two notes are about the installation, not the program: shown, not failed on.
+    // The loader's, that a layer built for an older version than the apiVersion asked
+    // for is loaded (the installed validation layer is a 1.3 one); and that layer's,
+    // that a struct in a chain is one it does not know, when the layer's headers
+    // predate the 1.4.309 registry the struct comes from (it names its header
+    // version). Anything else fails.
+    let older_layer = |m: &str| {
+        m.contains("unknown VkStructureType")
+            && m.split("Valid Usage documentation for version ")
+                .nth(1)
+                .and_then(|rest| rest.split(' ').next())
+                .and_then(|v| v.parse::<u32>().ok())
+                .is_some_and(|v| v < 309)
+    };
     let (notes, messages): (Vec<String>, Vec<String>) = log.take().into_iter().partition(|m| {
-        m.contains("uses API version")
-            && m.contains("older than the application specified API version")
+        (m.contains("uses API version")
+            && m.contains("older than the application specified API version"))
+            || older_layer(m)
     });
     for n in &notes {
-        println!("loader: {n}");
+        match older_layer(n) {
+            true => println!(
+                "layer: {}",
+                n.split(". This error is based").next().unwrap_or(n)
+            ),
+            false => println!("loader: {n}"),
+        }
     }
     if !messages.is_empty() {
         return Err(format!("the validation layer reported: {messages:#?}").into());

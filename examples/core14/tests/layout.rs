@@ -1,5 +1,6 @@
 //! Proof of layout: every item the 1.4 crate defines because ash lacks it
-//! (`tuff::vk`'s delta: structs, `API_VERSION_1_4`, enum values ash lacks by name) against the
+//! (`tuff::vk`'s delta: structs, unions, enums, flags types, handles, `API_VERSION_1_4`,
+//! array sizes, enum values ash lacks by name) against the
 //! C headers of the same registry (Vulkan-Headers v1.4.309, `headers/`), compiled
 //! with the `cc` crate: each struct's size, alignment and every member's offset, and
 //! each constant's value. The count is compared with the one the generator printed
@@ -14,8 +15,9 @@ use tuff::vk::delta_layout::{LAYOUT, VALUES};
 /// (`name.member offset`) and per constant (`name value`).
 fn probe() -> String {
     let mut c = String::from(
-        // Beta extensions' values too: the crate emits every extension.
-        "#define VK_ENABLE_BETA_EXTENSIONS\n#include <stddef.h>\n#include <stdio.h>\n#include <vulkan/vulkan_core.h>\nint main(void) {\n",
+        // Beta extensions' values too, and the one platform header whose extension
+        // (VK_EXT_external_memory_metal) ash lacks: the crate emits every extension.
+        "#define VK_ENABLE_BETA_EXTENSIONS\n#include <stddef.h>\n#include <stdio.h>\n#include <vulkan/vulkan_core.h>\n#include <vulkan/vulkan_metal.h>\nint main(void) {\n",
     );
     for row in LAYOUT {
         let n = row.c_name;
@@ -104,7 +106,7 @@ fn every_delta_item_is_laid_out_as_the_c_headers_say() {
     }
     let members: usize = LAYOUT.iter().map(|r| r.fields.len()).sum();
     println!(
-        "{compared} delta items laid out as the C headers say: {} structs ({members} members), {} constants",
+        "{compared} delta items laid out as the C headers say: {} types ({members} members), {} constants",
         LAYOUT.len(),
         VALUES.len()
     );
@@ -141,4 +143,39 @@ fn the_delta_chains_with_ash_and_names_core_values() {
     assert!(!features.p_next.is_null());
     assert_eq!(vk::IndexType::UINT8, vk::IndexType::UINT8_EXT);
     assert_eq!(v14.push_descriptor, vk::TRUE);
+}
+
+/// What the delta defines for the extensions ash lacks altogether works as ash's
+/// items do: a handle is ash's `Handle` with its object type, an enum and a flags
+/// type have their values (the flags with ash's operations), and the extension's
+/// function table is there to load.
+#[test]
+fn the_delta_defines_what_extensions_ash_lacks_need() {
+    use tuff::vk;
+    use tuff::vk::Handle as _;
+    // VK_KHR_pipeline_binary: a new handle.
+    assert_eq!(
+        <vk::PipelineBinaryKHR as vk::Handle>::TYPE.as_raw(),
+        1_000_483_000
+    );
+    assert_eq!(vk::PipelineBinaryKHR::from_raw(7).as_raw(), 7);
+    assert!(vk::PipelineBinaryKHR::null().as_raw() == 0);
+    // VK_KHR_maintenance7: a new enum, shown by name.
+    assert_eq!(vk::PhysicalDeviceLayeredApiKHR::VULKAN.as_raw(), 0);
+    assert_eq!(
+        format!("{:?}", vk::PhysicalDeviceLayeredApiKHR::METAL),
+        "METAL"
+    );
+    // VK_EXT_device_generated_commands: a new flags type with ash's operations.
+    let modes = vk::IndirectCommandsInputModeFlagsEXT::VULKAN_INDEX_BUFFER
+        | vk::IndirectCommandsInputModeFlagsEXT::DXGI_INDEX_BUFFER;
+    assert!(modes.contains(vk::IndirectCommandsInputModeFlagsEXT::DXGI_INDEX_BUFFER));
+    assert_eq!(modes.as_raw(), 0b11);
+    assert_eq!(
+        format!("{modes:?}"),
+        "VULKAN_INDEX_BUFFER | DXGI_INDEX_BUFFER"
+    );
+    // Its function tables, under ash's module path.
+    let _: Option<vk::khr::pipeline_binary::DeviceFn> = None;
+    let _: Option<vk::ext::device_generated_commands::DeviceFn> = None;
 }

@@ -170,6 +170,8 @@ pub(super) fn emit(all: &Plans, plans: &[&Plan]) -> (Files, Files) {
         //! method per checked command,
         //! beside it on the same receiver, which the checked method calls first;
         //! one module per core version and extension, as the commands are.
+        #![allow(clippy::too_many_arguments)]
+        // A check takes the parameters its rules read, as many as the command has.
         #[allow(unused_imports)]
         use crate::checks::origin;
         use crate::handles::*;

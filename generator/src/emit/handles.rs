@@ -111,7 +111,16 @@ fn ext_tables(
     for e in &extensions_at(cx, at) {
         let f = ident(&feature(e));
         let feat = feature(e);
-        let module = ash_extension_module(e);
+        // An extension ash lacks has its table in the delta, under ash's path.
+        let own = cx.model.own_extensions.contains(e);
+        let module = match own {
+            true => {
+                let (vendor, name) = super::delta::own_module(e);
+                let (vendor, name) = (ident(&vendor), ident(&name));
+                quote!(crate::delta::#vendor::#name)
+            }
+            false => ash_extension_module(e),
+        };
         let doc = format!("`{e}`'s commands, when the extension is enabled.");
         fields.push(quote! {
             #[cfg(feature = #feat)]
@@ -127,10 +136,14 @@ fn ext_tables(
         } else {
             quote!(enabled.iter().any(|n| n.to_bytes() == #name_lit.as_bytes()))
         };
+        let load = match own {
+            true => quote!(#module::#fn_ty::load_from(#loader_args)),
+            false => quote!(Some(#module::#loader::new(#loader_args).fp().clone())),
+        };
         loads.push(quote! {
             #[cfg(feature = #feat)]
             if #enabled {
-                ext.#f = Some(#module::#loader::new(#loader_args).fp().clone());
+                ext.#f = #load;
             }
         });
     }

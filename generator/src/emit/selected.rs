@@ -78,6 +78,12 @@ pub(super) fn render(
         selector.name,
         member.name,
     );
+    // ash's unions of pointers to structs with lifetimes have one; a union this
+    // crate defines (the delta) has one only where tuff's facts say so.
+    let raw_lifetime = match cx.facts.has_lifetime(union) {
+        true => quote!(<'a>),
+        false => quote!(),
+    };
     let item = quote! {
         #[doc = #doc]
         #cfg
@@ -96,7 +102,7 @@ pub(super) fn render(
             }
             /// The union, holding this member.
             #[inline]
-            pub fn raw(self) -> vk::#id<'a> {
+            pub fn raw(self) -> vk::#id #raw_lifetime {
                 match self {
                     #(#raws,)*
                 }

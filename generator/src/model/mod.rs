@@ -133,10 +133,19 @@ pub struct Model {
     /// (the reference registry lacks them): the emitted crate defines and loads one
     /// for each (`DeviceFnV1_<minor>`).
     pub own_tables: BTreeSet<u32>,
-    /// The structs of the emitted API that the reference registry (so ash) lacks and
-    /// the emitted crate defines itself, in ash's style (`reference::delta`): their
-    /// members are all of types ash has, or of other such structs.
+    /// The enabled extensions the reference registry (so ash) lacks altogether: the
+    /// emitted crate defines their function tables itself (`emit::delta`), and their
+    /// types as the delta, or leaves an item out with the reason.
+    pub own_extensions: BTreeSet<String>,
+    /// The types of the emitted API that the reference registry (so ash) lacks and
+    /// the emitted crate defines itself, in ash's style (`reference::missing_items`):
+    /// structs and unions whose members are all of types ash has or of other such
+    /// types, enums, bitmasks (a `FlagBits` enum is its bitmask's bits) and handles.
     pub delta: BTreeSet<String>,
+    /// The commands of the extensions ash lacks altogether (`own_extensions`): the
+    /// delta defines their `PFN_` types and the crate loads them into tables of its
+    /// own.
+    pub delta_commands: BTreeSet<String>,
     /// The structs whose `pNext` chain some struct of the reference registry extends:
     /// ash has an `Extends<Struct>` trait for each, and only for those.
     pub extended_in_reference: BTreeSet<String>,
@@ -144,6 +153,10 @@ pub struct Model {
     /// name, by enum group: the checks accept them (by number), and the delta names
     /// them as associated constants of one trait per type (`IndexTypeDelta::UINT8`).
     pub delta_values: BTreeMap<String, Vec<String>>,
+    /// The API constants that size an array member of an emitted struct and that the
+    /// reference lacks (`VK_MAX_PIPELINE_BINARY_KEY_SIZE_KHR`), with their values:
+    /// the delta defines them as ash defines its own (`usize`).
+    pub delta_sizes: BTreeMap<String, i64>,
     /// Structs this registry does not mark `returnedonly` and the reference
     /// registry does: Khronos found Vulkan only writes them, and dropped the value
     /// rules of their members.
@@ -414,7 +427,8 @@ impl Model {
         // What ash names, where a reference registry says: an item the reference
         // lacks under its own name but has under an alias is spelled by that alias
         // (an item of a core version ash has no table for, promoted from an
-        // extension ash has).
+        // extension ash has; a type a newer extension ash lacks took over from one
+        // ash has, `VkMemoryDecompressionMethodFlagsEXT` from `...NV`).
         // Of the reference's names, ash defines a command's `PFN_` type under the one
         // that is no alias there: that one is preferred.
         let in_reference = |name: &str, canonical: bool| {
@@ -431,8 +445,7 @@ impl Model {
         for canonical in [true, false] {
             for (alias, target) in &aliased {
                 let by_interface = !canonical && !names_enabled(target) && names_enabled(alias);
-                let by_reference = !own_tables.is_empty()
-                    && !in_reference(target, false)
+                let by_reference = !in_reference(target, false)
                     && in_reference(alias, canonical)
                     && names_enabled(target);
                 if (by_interface || by_reference) && !spellings.contains_key(target) {
@@ -545,12 +558,45 @@ impl Model {
             reference_version: reference.map(|r| r.version.clone()),
             left_out,
             own_tables,
+            own_extensions: reference
+                .map(|r| {
+                    enabled
+                        .iter()
+                        .filter(|e| {
+                            !e.starts_with("VK_VERSION_")
+                                && !r
+                                    .extensions
+                                    .iter()
+                                    .any(|x| &x.name == *e && is_supported(x.supported.as_deref()))
+                        })
+                        .cloned()
+                        .collect()
+                })
+                .unwrap_or_default(),
             delta: BTreeSet::new(),
+            delta_commands: BTreeSet::new(),
             delta_values: BTreeMap::new(),
+            delta_sizes: BTreeMap::new(),
             extended_in_reference: reference
                 .map(|r| {
+                    // Only the structs ash has: those a Vulkan version or a supported
+                    // extension requires (Vulkan SC's, such as
+                    // `VkCommandPoolMemoryReservationCreateInfo`, are not ash's).
+                    let required: BTreeSet<&str> = r
+                        .features
+                        .iter()
+                        .chain(
+                            r.extensions
+                                .iter()
+                                .filter(|e| is_supported(e.supported.as_deref())),
+                        )
+                        .flat_map(|i| &i.requires)
+                        .flat_map(|q| &q.types)
+                        .map(String::as_str)
+                        .collect();
                     r.types
                         .iter()
+                        .filter(|t| required.contains(t.name.as_str()))
                         .flat_map(|t| t.struct_extends.iter().cloned())
                         .collect()
                 })
@@ -613,8 +659,13 @@ impl Model {
                 .collect(),
         };
         if let Some(reference) = reference {
-            let (missing, delta) = reference::missing_items(&model, reference);
+            let reference::Missing {
+                left_out: missing,
+                delta,
+                commands,
+            } = reference::missing_items(&model, reference);
             model.delta = delta;
+            model.delta_commands = commands;
             for m in &missing {
                 model.emitted.remove(&m.name);
             }
@@ -642,6 +693,16 @@ impl Model {
                 }
             }
             model.left_out.extend(missing);
+            let sizes: BTreeMap<String, i64> = model
+                .types
+                .values()
+                .filter(|t| model.emitted.contains(&t.name))
+                .flat_map(|t| &t.members)
+                .filter_map(|m| m.static_array.as_deref())
+                .filter(|n| n.starts_with("VK_") && !reference.enum_numbers.contains_key(*n))
+                .filter_map(|n| Some((n.to_owned(), *model.enum_numbers.get(n)?)))
+                .collect();
+            model.delta_sizes = sizes;
         }
         Ok(model)
     }
@@ -654,6 +715,42 @@ impl Model {
             .filter(|(group, _)| self.is_emitted(group))
             .flat_map(|(group, values)| values.iter().map(move |v| (group.as_str(), v.as_str())))
             .filter_map(|(group, v)| Some((group, v, *self.enum_numbers.get(v)?)))
+    }
+
+    /// The flags types the delta defines (ash has one type for a bitmask and its
+    /// bits): each delta bitmask, and each delta `FlagBits` enum that no delta
+    /// bitmask names as its bits, in name order.
+    pub fn delta_flags(&self) -> Vec<DeltaFlags> {
+        let mut out: Vec<DeltaFlags> = Vec::new();
+        let bitmask_of = |bits: &str| {
+            self.types.values().find(|t| {
+                t.category == Some(Kind::Bitmask) && t.bit_values.as_deref() == Some(bits)
+            })
+        };
+        for name in &self.delta {
+            let t = &self.types[name];
+            match t.category {
+                Some(Kind::Bitmask) => out.push(DeltaFlags {
+                    c_name: name.clone(),
+                    bits: t.bit_values.clone().filter(|b| self.is_emitted(b)),
+                    wide: t.code.contains("VkFlags64"),
+                }),
+                Some(Kind::Enum) if name.contains("FlagBits") => {
+                    let bitmask = bitmask_of(name);
+                    if bitmask.is_some_and(|b| self.delta.contains(&b.name)) {
+                        continue;
+                    }
+                    out.push(DeltaFlags {
+                        c_name: bitmask.map_or(name.clone(), |b| b.name.clone()),
+                        bits: Some(name.clone()),
+                        wide: bitmask.is_some_and(|b| b.code.contains("VkFlags64")),
+                    });
+                }
+                _ => {}
+            }
+        }
+        out.sort_by(|a, b| a.c_name.cmp(&b.c_name));
+        out
     }
 
     /// The handle a command's method is called on: its dispatchable first
@@ -869,4 +966,16 @@ impl Format {
     pub fn color(&self) -> bool {
         !self.depth() && !self.stencil()
     }
+}
+
+/// A flags type the delta defines: ash's one type for a bitmask and its bits.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct DeltaFlags {
+    /// The C name the type is laid out as: the bitmask's, or the bits' where the
+    /// registry has no bitmask for them.
+    pub c_name: String,
+    /// The `FlagBits` enum whose values are its constants, if any is emitted.
+    pub bits: Option<String>,
+    /// `VkFlags64` rather than `VkFlags`.
+    pub wide: bool,
 }

@@ -2,9 +2,9 @@
 //! `ash` is generated from one registry (0.38 from 1.3.281's); every item the emitted
 //! code names must exist there with the same shape. Given that registry (the
 //! config's `reference_registry`), this pass keeps each wanted extension whose items
-//! the reference defines alike, and leaves out, with the reason, each one it lacks
-//! or defines otherwise (a member renamed, a command's parameters changed), and
-//! each one that depends on an extension left out. Core items are not compared
+//! the reference defines alike or lacks (the delta, `missing_items`), and leaves out,
+//! with the reason, each one it defines otherwise (a member renamed, a command's
+//! parameters changed), and each one that depends on an extension left out. Core items are not compared
 //! here: a registry newer than the reference is the version-bump work's.
 
 use super::expr;
@@ -24,7 +24,6 @@ pub struct LeftOut {
 struct Defined<'a> {
     types: BTreeMap<&'a str, &'a crate::registry::TypeDef>,
     commands: BTreeMap<&'a str, &'a crate::registry::CommandDef>,
-    extensions: BTreeSet<&'a str>,
 }
 
 impl<'a> Defined<'a> {
@@ -39,12 +38,6 @@ impl<'a> Defined<'a> {
                 .commands
                 .iter()
                 .map(|c| (c.name.as_str(), c))
-                .collect(),
-            extensions: reference
-                .extensions
-                .iter()
-                .filter(|e| super::is_supported(e.supported.as_deref()))
-                .map(|e| e.name.as_str())
                 .collect(),
         }
     }
@@ -254,31 +247,18 @@ pub fn select(
     };
     let defined = Defined::of(reference);
     let classes = Classes::of(&[pinned, reference]);
-    // What can be enabled at most: the versions and every wanted extension the
-    // reference has.
-    let possible: BTreeSet<String> = versions
-        .iter()
-        .chain(
-            wanted
-                .iter()
-                .filter(|w| defined.extensions.contains(w.as_str())),
-        )
-        .cloned()
-        .collect();
+    // What can be enabled at most: the versions and every wanted extension.
+    let possible: BTreeSet<String> = versions.iter().chain(wanted).cloned().collect();
     let mut left: Vec<LeftOut> = Vec::new();
     for name in wanted {
-        let reason = if !defined.extensions.contains(name.as_str()) {
-            Some(format!(
-                "the reference registry (Vulkan {}) has no such extension for the vulkan API",
-                reference.version
-            ))
-        } else {
-            pinned
-                .extensions
-                .iter()
-                .find(|e| &e.name == name)
-                .and_then(|e| differs(pinned, &defined, &classes, &possible, e))
-        };
+        // An extension the reference lacks altogether stays: its items are ash's
+        // where ash has them, and the others are the delta or left out one by one
+        // (`missing_items`), as a newer registry's additions to an extension ash has.
+        let reason = pinned
+            .extensions
+            .iter()
+            .find(|e| &e.name == name)
+            .and_then(|e| differs(pinned, &defined, &classes, &possible, e));
         if let Some(reason) = reason {
             left.push(LeftOut {
                 name: name.clone(),
@@ -336,11 +316,11 @@ pub fn select(
 ///
 /// A struct the reference lacks whose members ash can spell (or that are such
 /// structs themselves) is not left out: it is returned as the delta, which the
-/// emitted crate defines itself (`emit::delta`).
-pub fn missing_items(
-    model: &super::Model,
-    reference: &Registry,
-) -> (Vec<LeftOut>, BTreeSet<String>) {
+/// emitted crate defines itself (`emit::delta`); so are the unions, enums, bitmasks
+/// and handles the reference lacks, and the commands of the extensions it lacks
+/// altogether (`Model::own_extensions`), which the crate calls through function
+/// tables of its own.
+pub fn missing_items(model: &super::Model, reference: &Registry) -> Missing {
     let defined = Defined::of(reference);
     let mut homes: BTreeMap<&str, BTreeSet<&str>> = BTreeMap::new();
     for iface in reference.features.iter().chain(&reference.extensions) {
@@ -355,11 +335,45 @@ pub fn missing_items(
     }
     let mut out: BTreeMap<String, String> = BTreeMap::new();
     let mut delta: BTreeSet<String> = BTreeSet::new();
+    let mut commands: BTreeSet<String> = BTreeSet::new();
     for name in &model.emitted {
         let spelled = model.spelling(name);
         if let Some(t) = model.types.get(name) {
-            if t.alias.is_none() && !defined.types.contains_key(spelled) {
-                if t.category == Some(super::Kind::Struct) {
+            // ash spells bits as their bitmask (`AccessFlags` for
+            // `VkAccessFlagBits`): bits the reference lacks whose bitmask it has are
+            // ash's type, their values the delta's (`delta_values`).
+            let bits_of_ash = t.category == Some(super::Kind::Enum)
+                && model.types.values().any(|b| {
+                    b.category == Some(super::Kind::Bitmask)
+                        && b.bit_values.as_deref() == Some(name.as_str())
+                        && defined.types.contains_key(model.spelling(&b.name))
+                });
+            // The delta defines the version constants of the versions ash lacks.
+            let own_version = name
+                .strip_prefix("VK_API_VERSION_1_")
+                .and_then(|m| m.parse::<u32>().ok())
+                .is_some_and(|m| model.own_tables.contains(&m));
+            if own_version {
+                continue;
+            }
+            if t.alias.is_none() && !defined.types.contains_key(spelled) && !bits_of_ash {
+                use super::Kind;
+                if t.category == Some(Kind::Handle) && t.dispatchable {
+                    // Commands dispatch through the tables of ash's five dispatchable
+                    // handles; a sixth has none.
+                    out.insert(
+                        name.clone(),
+                        format!(
+                            "the reference registry (Vulkan {}) has no type `{spelled}`, and a new dispatchable handle has no function table the crate could call through",
+                            reference.version
+                        ),
+                    );
+                    continue;
+                }
+                if let Some(
+                    Kind::Struct | Kind::Union | Kind::Enum | Kind::Bitmask | Kind::Handle,
+                ) = t.category
+                {
                     delta.insert(name.clone());
                     continue;
                 }
@@ -381,7 +395,13 @@ pub fn missing_items(
                     "VkDevice" | "VkQueue" | "VkCommandBuffer"
                 )
             });
-            if !defined.commands.contains_key(spelled) {
+            let own = match super::tables::table(model, name) {
+                Some(super::tables::Table::Extension(e)) => model.own_extensions.contains(&e),
+                _ => false,
+            };
+            if own {
+                commands.insert(name.clone());
+            } else if !defined.commands.contains_key(spelled) {
                 out.insert(
                     name.clone(),
                     format!(
@@ -420,8 +440,8 @@ pub fn missing_items(
             }
         }
     }
-    // A delta struct whose member ash cannot spell goes: a bit field, a member of a
-    // type ash lacks that is no delta struct (an enum, a union), or no type at all.
+    // A delta struct or union whose member ash cannot spell goes: a bit field, a
+    // member of a type ash lacks that is no delta type, or no type at all.
     loop {
         let gone: Vec<(String, String)> = delta
             .iter()
@@ -469,17 +489,34 @@ pub fn missing_items(
         }
         out.extend(more);
     }
-    // A delta struct that names something left out goes too.
+    // A delta item that names something left out goes too.
     delta.retain(|d| !out.contains_key(d));
+    commands.retain(|c| !out.contains_key(c));
     let left = out
         .into_iter()
         .map(|(name, reason)| LeftOut { name, reason })
         .collect();
-    (left, delta)
+    Missing {
+        left_out: left,
+        delta,
+        commands,
+    }
+}
+
+/// What [`missing_items`] found.
+#[derive(Debug)]
+pub struct Missing {
+    /// The items left out, each with the reason.
+    pub left_out: Vec<LeftOut>,
+    /// The types the emitted crate defines itself (`Model::delta`).
+    pub delta: BTreeSet<String>,
+    /// The commands of extensions ash lacks, called through the crate's own tables
+    /// (`Model::delta_commands`).
+    pub commands: BTreeSet<String>,
 }
 
 /// Whether a member of type `name` has a spelling in the emitted crate: a C scalar,
-/// a type ash has (under the reference's name for it), or a delta struct.
+/// a type ash has (under the reference's name for it), or a delta type.
 fn spellable(
     model: &super::Model,
     defined: &Defined<'_>,

@@ -326,7 +326,11 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
         let is_count = count_refs.iter().any(|(_, c)| c == &p.name);
         let shape = if i == 0 && receiver != "Entry" {
             Param::Dispatch
-        } else if i > 0 && p.type_name == receiver && p.pointers == 0 {
+        } else if i > 0
+            && p.type_name == receiver
+            && p.pointers == 0
+            && cmd.params[0].type_name != receiver
+        {
             Param::Receiver
         } else if p.type_name == "VkAllocationCallbacks" {
             if HOST_ALLOCATED.contains(&name) {
@@ -501,6 +505,17 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
             if !matches!(len.first(), Some(LenEntry::Reference(_))) {
                 return Err("created array without a length".into());
             }
+        }
+    }
+    // A count whose array is taken raw would be read from nothing: an array of
+    // structs the command writes into the caller's storage (not enumerated) is a
+    // shape the wrappers do not take yet.
+    for (i, _) in &count_refs {
+        if matches!(params[*i], Param::Raw) {
+            return Err(format!(
+                "`{}`: an array of `{}` the command writes, with its length given in",
+                cmd.params[*i].name, cmd.params[*i].type_name
+            ));
         }
     }
     // Every slice after the first that names a count.

@@ -106,7 +106,9 @@ fn referenced_extensions(model: &Model, ext: &str) -> Vec<String> {
             out.extend(
                 smallest
                     .iter()
-                    .filter(|n| !n.starts_with("VK_VERSION_") && model.enabled.contains(*n))
+                    .filter(|n| {
+                        !n.starts_with("VK_VERSION_") && *n != ext && model.enabled.contains(*n)
+                    })
                     .cloned(),
             );
         }

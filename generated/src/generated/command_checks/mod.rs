@@ -4,6 +4,7 @@
 //! method per checked command,
 //! beside it on the same receiver, which the checked method calls first;
 //! one module per core version and extension, as the commands are.
+#![allow(clippy::too_many_arguments)]
 #[allow(unused_imports)]
 use crate::checks::origin;
 use crate::handles::*;
