@@ -78,15 +78,9 @@ pub(super) fn emit(cx: &Context) -> TokenStream {
             });
         }
         if lifetime {
-            fields.push(quote!(
-                #[doc = "The lifetime of what the pointers borrow."]
-                pub _marker: core::marker::PhantomData<&'a ()>
-            ));
+            fields.push(lifetime_marker());
         }
-        let doc = format!(
-            "`{name}`, which ash {} lacks: defined here in ash's style. <https://registry.khronos.org/vulkan/specs/latest/man/html/{name}.html>",
-            model.reference_version.as_deref().unwrap_or("")
-        );
+        let doc = item_doc(cx, name, "");
         let tagged = s_type.map(|number| {
             let number = proc_macro2::Literal::i32_unsuffixed(number as i32);
             let extends: Vec<TokenStream> = t.struct_extends.iter().filter(|e| model.extended_in_reference.contains(model.spelling(e))).map(|e| {
@@ -337,14 +331,9 @@ fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
         let mut decls = Vec::new();
         let mut impls = Vec::new();
         for (v, n) in consts {
-            let mut konst = value_const(group, v);
-            if !seen.insert(konst.clone()) {
-                // Two values that shorten alike keep their full names.
-                konst = v.strip_prefix("VK_").unwrap_or(v).to_owned();
-                if !seen.insert(konst.clone()) {
-                    continue;
-                }
-            }
+            let Some(konst) = unique_const(&mut seen, group, v) else {
+                continue;
+            };
             let k = ident(&konst);
             let doc = format!("`{v}`");
             let raw = if group.contains("FlagBits") {
@@ -374,6 +363,22 @@ fn value_traits(cx: &Context) -> (Vec<TokenStream>, Vec<TokenStream>) {
         });
     }
     (traits, values)
+}
+
+/// A value's constant name, unique among `seen`: as ash would write it, or where two
+/// values shorten alike, the full name less `VK_`; `None` for a second value of the
+/// same full name.
+fn unique_const(
+    seen: &mut std::collections::BTreeSet<String>,
+    group: &str,
+    value: &str,
+) -> Option<String> {
+    let short = value_const(group, value);
+    if seen.insert(short.clone()) {
+        return Some(short);
+    }
+    let full = value.strip_prefix("VK_").unwrap_or(value).to_owned();
+    seen.insert(full.clone()).then_some(full)
 }
 
 /// A value's constant name as ash would write it: the type's words and, for bits,
@@ -486,15 +491,9 @@ fn union_item(cx: &Context, name: &str) -> (TokenStream, TokenStream) {
         })
         .collect();
     if lifetime {
-        fields.push(quote!(
-            #[doc = "The lifetime of what the pointers borrow."]
-            pub _marker: core::marker::PhantomData<&'a ()>
-        ));
+        fields.push(lifetime_marker());
     }
-    let doc = format!(
-        "`{name}`, which ash {} lacks: defined here in ash's style. <https://registry.khronos.org/vulkan/specs/latest/man/html/{name}.html>",
-        cx.model.reference_version.as_deref().unwrap_or("")
-    );
+    let doc = item_doc(cx, name, "");
     let item = quote! {
         #[repr(C)]
         #[derive(Copy, Clone)]
@@ -546,13 +545,9 @@ fn own_values(
         let Some(&n) = model.enum_numbers.get(v) else {
             continue;
         };
-        let mut konst = value_const(group, v);
-        if !seen.insert(konst.clone()) {
-            konst = v.strip_prefix("VK_").unwrap_or(v).to_owned();
-            if !seen.insert(konst.clone()) {
-                continue;
-            }
-        }
+        let Some(konst) = unique_const(&mut seen, group, v) else {
+            continue;
+        };
         let k = ident(&konst);
         values.push(quote!((#v, #id::#k.as_raw() as i64)));
         out.push((k, v.clone(), n));
@@ -584,10 +579,7 @@ fn enum_item(
             let shown = k.to_string();
             quote!(Self::#k => Some(#shown),)
         });
-    let doc = format!(
-        "`{name}`, which ash {} lacks: defined here in ash's style. <https://registry.khronos.org/vulkan/specs/latest/man/html/{name}.html>",
-        cx.model.reference_version.as_deref().unwrap_or("")
-    );
+    let doc = item_doc(cx, name, "");
     let item = quote! {
         #[repr(transparent)]
         #[derive(Copy, Clone, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -622,6 +614,23 @@ fn enum_item(
         }
     };
     (item, size_row(name, &id))
+}
+
+/// A delta item's doc: what it is, that ash lacks it (`extra` after the name), and
+/// its reference page.
+fn item_doc(cx: &Context, name: &str, extra: &str) -> String {
+    format!(
+        "`{name}`{extra}, which ash {} lacks: defined here in ash's style. <https://registry.khronos.org/vulkan/specs/latest/man/html/{name}.html>",
+        cx.model.reference_version.as_deref().unwrap_or("")
+    )
+}
+
+/// The field that gives a struct or union with pointers its lifetime.
+fn lifetime_marker() -> TokenStream {
+    quote!(
+        #[doc = "The lifetime of what the pointers borrow."]
+        pub _marker: core::marker::PhantomData<&'a ()>
+    )
 }
 
 /// A row of a type laid out with no members to compare: its size and alignment.
@@ -665,10 +674,7 @@ fn flags_item(
         quote!((#id::#k, #shown))
     });
     let c_name = &flags.c_name;
-    let doc = format!(
-        "`{c_name}` and its bits, which ash {} lacks: defined here in ash's style. <https://registry.khronos.org/vulkan/specs/latest/man/html/{c_name}.html>",
-        cx.model.reference_version.as_deref().unwrap_or("")
-    );
+    let doc = item_doc(cx, c_name, " and its bits");
     let item = quote! {
         #[repr(transparent)]
         #[derive(Copy, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -796,30 +802,23 @@ fn extension_tables(cx: &Context) -> TokenStream {
             if here.is_empty() {
                 continue;
             }
-            let mut members = Vec::new();
-            let mut inits = Vec::new();
-            for c in here {
-                // Named as the call sites name it (`names::fn_field`): by the name
-                // the extension's require block gives the command.
-                let f =
-                    crate::names::fn_field(model, c, &crate::names::Table::Extension(e.clone()));
-                let pfn = ident(&format!("PFN_{c}"));
-                let doc = format!("`{c}`.");
-                let name = proc_macro2::Literal::c_string(
-                    &std::ffi::CString::new(c.as_str()).expect("a command name has no NUL"),
-                );
-                members.push(quote! {
-                    #[doc = #doc]
-                    pub #f: super::super::#pfn,
-                });
-                inits.push(quote! {
-                    #f: {
-                        let f = get(#name)?;
-                        __safety!("the loader returned the command named, whose signature is its `PFN_` type's.");
-                        unsafe { core::mem::transmute::<unsafe extern "system" fn(), super::super::#pfn>(f) }
+            let entries: Vec<TableEntry> = here
+                .iter()
+                .map(|c| TableEntry {
+                    // Named as the call sites name it (`names::fn_field`): by the
+                    // name the extension's require block gives the command.
+                    field: crate::names::fn_field(
+                        model,
+                        c,
+                        &crate::names::Table::Extension(e.clone()),
+                    ),
+                    pfn: {
+                        let pfn = ident(&format!("PFN_{c}"));
+                        quote!(super::super::#pfn)
                     },
-                });
-            }
+                    name: (**c).clone(),
+                })
+                .collect();
             let (struct_name, what, args, get) = match at {
                 Level::Device => (
                     ident("DeviceFn"),
@@ -840,23 +839,15 @@ fn extension_tables(cx: &Context) -> TokenStream {
                     },
                 ),
             };
-            let doc = format!("`{e}`'s {what} commands.");
-            tables.push(quote! {
-                #[doc = #doc]
-                #[derive(Clone, Copy)]
-                #[allow(missing_debug_implementations)]
-                pub struct #struct_name {
-                    #(#members)*
-                }
-                impl #struct_name {
-                    /// Loads every command of the table; `None` if the loader lacks
-                    /// one.
-                    pub fn load_from(#args) -> Option<Self> {
-                        let get = |name: &core::ffi::CStr| { #get };
-                        Some(#struct_name { #(#inits)* })
-                    }
-                }
-            });
+            tables.push(fn_table(
+                &struct_name,
+                &format!("`{e}`'s {what} commands."),
+                "Loads every command of the table; `None` if the loader lacks one.",
+                quote!(load_from(#args)),
+                get,
+                "its `PFN_` type's",
+                &entries,
+            ));
         }
         let (vendor, module) = own_module(e);
         let module_id = ident(&module);
@@ -882,6 +873,69 @@ fn extension_tables(cx: &Context) -> TokenStream {
         }
     });
     quote!(#(#vendors)*)
+}
+
+/// One command of a function table the crate defines.
+pub(super) struct TableEntry {
+    /// The table's field.
+    pub field: proc_macro2::Ident,
+    /// Its `PFN_` type, as the table's module names it.
+    pub pfn: TokenStream,
+    /// The name it is loaded by.
+    pub name: String,
+}
+
+/// A function table the crate defines (an extension's that ash lacks, a core
+/// version's that ash has none for): one field per command, typed by its `PFN_`
+/// type, and a loader `#load` that looks each up by name through `#get` (a closure
+/// body over `name: &CStr`), `None` when one is missing. `signature` says whose
+/// signature the `PFN_` type is, for the transmute's `// SAFETY:`.
+pub(super) fn fn_table(
+    struct_name: &proc_macro2::Ident,
+    doc: &str,
+    load_doc: &str,
+    load: TokenStream,
+    get: TokenStream,
+    signature: &str,
+    entries: &[TableEntry],
+) -> TokenStream {
+    let safety = format!("the loader returned the command named, whose signature is {signature}.");
+    let members = entries.iter().map(|e| {
+        let (f, pfn) = (&e.field, &e.pfn);
+        let doc = format!("`{}`.", e.name);
+        quote! {
+            #[doc = #doc]
+            pub #f: #pfn,
+        }
+    });
+    let inits = entries.iter().map(|e| {
+        let (f, pfn) = (&e.field, &e.pfn);
+        let name = proc_macro2::Literal::c_string(
+            &std::ffi::CString::new(e.name.as_str()).expect("a command name has no NUL"),
+        );
+        quote! {
+            #f: {
+                let f = get(#name)?;
+                __safety!(#safety);
+                unsafe { core::mem::transmute::<unsafe extern "system" fn(), #pfn>(f) }
+            },
+        }
+    });
+    quote! {
+        #[doc = #doc]
+        #[derive(Clone, Copy)]
+        #[allow(missing_debug_implementations)]
+        pub struct #struct_name {
+            #(#members)*
+        }
+        impl #struct_name {
+            #[doc = #load_doc]
+            pub fn #load -> Option<Self> {
+                let get = |name: &core::ffi::CStr| { #get };
+                Some(#struct_name { #(#inits)* })
+            }
+        }
+    }
 }
 
 /// ash's module path of an extension, as (vendor, name): `VK_KHR_pipeline_binary`

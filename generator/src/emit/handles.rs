@@ -199,51 +199,33 @@ fn own_device_tables(cx: &Context) -> (TokenStream, Vec<TokenStream>, Vec<TokenS
         let struct_name = ident(&format!("DeviceFnV1_{m}"));
         let field = ident(&format!("v1_{m}"));
         let version = format!("VK_VERSION_1_{m}");
-        let mut members = Vec::new();
-        let mut inits = Vec::new();
-        for c in &commands {
-            let f = ident(&crate::names::command_fn(c));
-            let pfn = ident(&format!("PFN_{}", model.spelling(c)));
-            let doc = format!("`{c}`.");
-            let name = proc_macro2::Literal::c_string(
-                &std::ffi::CString::new(c.as_str()).expect("a command name has no NUL"),
-            );
-            members.push(quote! {
-                #[doc = #doc]
-                pub #f: vk::#pfn,
-            });
-            inits.push(quote! {
-                #f: {
-                    let f = get(#name)?;
-                    __safety!("the loader returned the command named, whose signature is that of the `PFN_` type of ash's name for it (the same command under the extension alias it was promoted from).");
-                    unsafe { core::mem::transmute::<unsafe extern "system" fn(), vk::#pfn>(f) }
+        let entries: Vec<super::delta::TableEntry> = commands
+            .iter()
+            .map(|c| super::delta::TableEntry {
+                field: ident(&crate::names::command_fn(c)),
+                pfn: {
+                    let pfn = ident(&format!("PFN_{}", model.spelling(c)));
+                    quote!(vk::#pfn)
                 },
-            });
-        }
-        let doc = format!(
-            "`{version}`'s device-level commands, which ash has no function table for: loaded by their core names through `vkGetDeviceProcAddr`."
-        );
-        let load_doc = format!(
-            "Loads every command of the table for `device`; `None` if the loader lacks one (a device below Vulkan 1.{m} gives none)."
-        );
-        defs.push(quote! {
-            #[doc = #doc]
-            #[derive(Clone, Copy)]
-            #[allow(missing_debug_implementations)]
-            pub struct #struct_name {
-                #(#members)*
-            }
-            impl #struct_name {
-                #[doc = #load_doc]
-                pub fn load(instance: &ash::Instance, device: vk::Device) -> Option<Self> {
-                    let get = |name: &core::ffi::CStr| {
-                        __safety!("`device` is a live device of `instance`, and `name` a NUL-terminated string.");
-                        unsafe { (instance.fp_v1_0().get_device_proc_addr)(device, name.as_ptr()) }
-                    };
-                    Some(#struct_name { #(#inits)* })
-                }
-            }
-        });
+                name: (*c).clone(),
+            })
+            .collect();
+        defs.push(super::delta::fn_table(
+            &struct_name,
+            &format!(
+                "`{version}`'s device-level commands, which ash has no function table for: loaded by their core names through `vkGetDeviceProcAddr`."
+            ),
+            &format!(
+                "Loads every command of the table for `device`; `None` if the loader lacks one (a device below Vulkan 1.{m} gives none)."
+            ),
+            quote!(load(instance: &ash::Instance, device: vk::Device)),
+            quote! {
+                __safety!("`device` is a live device of `instance`, and `name` a NUL-terminated string.");
+                unsafe { (instance.fp_v1_0().get_device_proc_addr)(device, name.as_ptr()) }
+            },
+            "that of the `PFN_` type of ash's name for it (the same command under the extension alias it was promoted from)",
+            &entries,
+        ));
         let field_doc =
             format!("`{version}`'s commands, when the device's version is at least 1.{m}.");
         fields.push(quote! {
