@@ -6,10 +6,10 @@
 //! field names, `Default` with the `sType` set, ash's `TaggedStructure` and the
 //! `Extends*` traits of the structs whose chain they extend, so they chain with
 //! ash's), enums (`i32` newtypes with their values), flags types (through ash's
-//! own `vk_bitflags_wrapped!`) and handles (ash's `define_handle!` and
+//! own `vk_bitflags_wrapped!`) and non-dispatchable handles (ash's
 //! `handle_nondispatchable!`); the `PFN_` types of the commands of extensions ash
-//! lacks altogether and their function tables under ash's module path
-//! (`khr::pipeline_binary::DeviceFn`); the `API_VERSION_1_<m>` constants of the
+//! lacks altogether and their function tables, in modules named as ash's
+//! (`ash::khr::pipeline_binary` is `khr::pipeline_binary` here); the `API_VERSION_1_<m>` constants of the
 //! core versions ash lacks and the array sizes it lacks; and the enum values ash
 //! lacks by name (`Model::delta_constants`), as associated constants of one trait
 //! per ash type. `examples/core14`'s layout test compares every type and constant
@@ -430,7 +430,7 @@ fn value_const(group: &str, value: &str) -> String {
 fn member_type(cx: &Context, m: &Field) -> TokenStream {
     let ty = match m.type_name.as_str() {
         "VkBool32" if m.pointers == 0 => quote!(vk::Bool32),
-        // Another struct of this module (`vk` here is ash's alone).
+        // Another struct or union of this module, named as the module names it.
         t if cx.model.delta.contains(t)
             && matches!(cx.model.category(t), Some(Kind::Struct | Kind::Union)) =>
         {
@@ -461,7 +461,7 @@ fn member_type(cx: &Context, m: &Field) -> TokenStream {
         Some(n) => {
             let c = ident(n.strip_prefix("VK_").unwrap_or(n));
             match cx.model.delta_sizes.contains_key(n) {
-                // This module's own constant (`vk` here is ash's alone).
+                // This module's own constant.
                 true => quote!([#ty; #c]),
                 false => quote!([#ty; vk::#c]),
             }
@@ -470,7 +470,7 @@ fn member_type(cx: &Context, m: &Field) -> TokenStream {
 }
 
 /// A union the reference lacks, as ash writes one: `#[repr(C)]`, `Copy`, all zeros
-/// by default, and a `Debug` that says only that it is a union (which member is
+/// by default, and a `Debug` that shows only its C name (which member is
 /// live is the enclosing struct's to say).
 fn union_item(cx: &Context, name: &str) -> (TokenStream, TokenStream) {
     let t = &cx.model.types[name];
@@ -480,7 +480,7 @@ fn union_item(cx: &Context, name: &str) -> (TokenStream, TokenStream) {
         true => (quote!(<'a>), quote!(<'_>)),
         false => (quote!(), quote!()),
     };
-    let mut fields: Vec<TokenStream> = t
+    let fields: Vec<TokenStream> = t
         .members
         .iter()
         .map(|m| {
@@ -490,9 +490,8 @@ fn union_item(cx: &Context, name: &str) -> (TokenStream, TokenStream) {
             quote!(#[doc = #doc] pub #f: #ty)
         })
         .collect();
-    if lifetime {
-        fields.push(lifetime_marker());
-    }
+    // No marker field: the members that borrow carry the lifetime themselves, and a
+    // union's every field is one more way to set it.
     let doc = item_doc(cx, name, "");
     let item = quote! {
         #[repr(C)]
@@ -659,14 +658,13 @@ fn flags_item(
         Some(bits) => own_values(cx, bits, &id, values),
         None => Vec::new(),
     };
-    let (raw, suffix) = match flags.wide {
-        true => (quote!(vk::Flags64), "u64"),
-        false => (quote!(vk::Flags), "u32"),
+    let raw = match flags.wide {
+        true => quote!(vk::Flags64),
+        false => quote!(vk::Flags),
     };
     let decls = consts.iter().map(|(k, v, n)| {
         let doc = format!("`{v}`");
         let n = proc_macro2::Literal::u64_unsuffixed(*n as u64);
-        let _ = suffix;
         quote!(#[doc = #doc] pub const #k: Self = Self(#n);)
     });
     let known = consts.iter().map(|(k, _, _)| {
@@ -712,8 +710,9 @@ fn flags_item(
     (item, size_row(c_name, &id))
 }
 
-/// A handle the reference lacks, through ash's own `define_handle!` (dispatchable)
-/// or `handle_nondispatchable!`, so it is ash's `Handle` with its object type.
+/// A handle the reference lacks, through ash's own `handle_nondispatchable!` (a
+/// dispatchable one is left out: `reference::missing_items`), so it is ash's
+/// `Handle` with its object type.
 fn handle_item(cx: &Context, name: &str) -> (TokenStream, TokenStream) {
     let model = cx.model;
     let t = &model.types[name];
@@ -731,10 +730,8 @@ fn handle_item(cx: &Context, name: &str) -> (TokenStream, TokenStream) {
         "`{name}`, which ash {} lacks: defined here by ash's own macro. <https://registry.khronos.org/vulkan/specs/latest/man/html/{name}.html>",
         model.reference_version.as_deref().unwrap_or("")
     );
-    let item = match t.dispatchable {
-        true => quote!(ash::define_handle!(#id, #object_type, doc = #doc);),
-        false => quote!(ash::handle_nondispatchable!(#id, #object_type, doc = #doc);),
-    };
+    assert!(!t.dispatchable, "dispatchable delta handle `{name}`");
+    let item = quote!(ash::handle_nondispatchable!(#id, #object_type, doc = #doc););
     (item, size_row(name, &id))
 }
 
@@ -769,9 +766,32 @@ fn pfn_type(cx: &Context, p: &Field) -> TokenStream {
             let id = type_ident(cx.model.spelling(&p.type_name));
             quote!(vk::#id<'_>)
         }
-        false => ash_type(cx.model, &cx.facts, &p.type_name).unwrap_or(quote!(::core::ffi::c_void)),
+        false => match ash_type(cx.model, &cx.facts, &p.type_name) {
+            Some(ty) => ty,
+            // Behind a pointer, an opaque type is `c_void` as in ash; by value, a
+            // type with no spelling would give the call the wrong ABI.
+            None if p.pointers > 0 => quote!(::core::ffi::c_void),
+            None => panic!(
+                "parameter `{}` of type `{}` has no spelling",
+                p.name, p.type_name
+            ),
+        },
     };
-    with_pointers(base, p)
+    match p.static_array.as_deref() {
+        // A C array parameter is a pointer to its first element (ash writes
+        // `*const [T; N]`).
+        Some(n) => {
+            let n: usize = n
+                .parse()
+                .unwrap_or_else(|_| panic!("array parameter `{}` of size `{n}`", p.name));
+            let ty = with_pointers(base, p);
+            match p.is_const {
+                true => quote!(*const [#ty; #n]),
+                false => quote!(*mut [#ty; #n]),
+            }
+        }
+        None => with_pointers(base, p),
+    }
 }
 
 /// Each extension ash lacks that has commands gets ash's module path under this
@@ -816,7 +836,9 @@ fn extension_tables(cx: &Context) -> TokenStream {
                         let pfn = ident(&format!("PFN_{c}"));
                         quote!(super::super::#pfn)
                     },
-                    name: (**c).clone(),
+                    // Loaded by the same name (an alias the extension's require
+                    // block uses, where a core version promoted the command).
+                    name: model.name_in(c, e).to_owned(),
                 })
                 .collect();
             let (struct_name, what, args, get) = match at {

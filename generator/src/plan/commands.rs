@@ -511,7 +511,8 @@ pub fn plan(cx: &Context, name: &str) -> Result<Plan, String> {
     // structs the command writes into the caller's storage (not enumerated) is a
     // shape the wrappers do not take yet.
     for (i, _) in &count_refs {
-        if matches!(params[*i], Param::Raw) {
+        let written = cmd.params[*i].pointers == 1 && !cmd.params[*i].is_const;
+        if written && matches!(params[*i], Param::Raw) {
             return Err(format!(
                 "`{}`: an array of `{}` the command writes, with its length given in",
                 cmd.params[*i].name, cmd.params[*i].type_name
