@@ -717,16 +717,19 @@ impl Model {
             .filter_map(|(group, v)| Some((group, v, *self.enum_numbers.get(v)?)))
     }
 
+    /// The bitmask whose bits are the `FlagBits` enum `bits` (its `requires` or
+    /// `bitvalues`), if the registry has one.
+    pub fn bitmask_of(&self, bits: &str) -> Option<&TypeDef> {
+        self.types
+            .values()
+            .find(|t| t.category == Some(Kind::Bitmask) && t.bit_values.as_deref() == Some(bits))
+    }
+
     /// The flags types the delta defines (ash has one type for a bitmask and its
     /// bits): each delta bitmask, and each delta `FlagBits` enum that no delta
     /// bitmask names as its bits, in name order.
     pub fn delta_flags(&self) -> Vec<DeltaFlags> {
         let mut out: Vec<DeltaFlags> = Vec::new();
-        let bitmask_of = |bits: &str| {
-            self.types.values().find(|t| {
-                t.category == Some(Kind::Bitmask) && t.bit_values.as_deref() == Some(bits)
-            })
-        };
         for name in &self.delta {
             let t = &self.types[name];
             match t.category {
@@ -736,7 +739,7 @@ impl Model {
                     wide: t.code.contains("VkFlags64"),
                 }),
                 Some(Kind::Enum) if name.contains("FlagBits") => {
-                    let bitmask = bitmask_of(name);
+                    let bitmask = self.bitmask_of(name);
                     if bitmask.is_some_and(|b| self.delta.contains(&b.name)) {
                         continue;
                     }

@@ -342,12 +342,12 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Missing {
             // ash spells bits as their bitmask (`AccessFlags` for
             // `VkAccessFlagBits`): bits the reference lacks whose bitmask it has are
             // ash's type, their values the delta's (`delta_values`).
-            let bits_of_ash = t.category == Some(super::Kind::Enum)
-                && model.types.values().any(|b| {
-                    b.category == Some(super::Kind::Bitmask)
-                        && b.bit_values.as_deref() == Some(name.as_str())
-                        && defined.types.contains_key(model.spelling(&b.name))
-                });
+            let bits_of_ash = || {
+                t.category == Some(super::Kind::Enum)
+                    && model
+                        .bitmask_of(name)
+                        .is_some_and(|b| defined.types.contains_key(model.spelling(&b.name)))
+            };
             // The delta defines the version constants of the versions ash lacks.
             let own_version = name
                 .strip_prefix("VK_API_VERSION_1_")
@@ -356,7 +356,7 @@ pub fn missing_items(model: &super::Model, reference: &Registry) -> Missing {
             if own_version {
                 continue;
             }
-            if t.alias.is_none() && !defined.types.contains_key(spelled) && !bits_of_ash {
+            if t.alias.is_none() && !defined.types.contains_key(spelled) && !bits_of_ash() {
                 use super::Kind;
                 if t.category == Some(Kind::Handle) && t.dispatchable {
                     // Commands dispatch through the tables of ash's five dispatchable
