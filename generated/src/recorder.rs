@@ -114,7 +114,7 @@ pub(crate) struct Bound {
     /// or dispatch reads.
     pub images: SmallVec<[Option<crate::state::SetImages>; 4]>,
     /// The written slots of the sets bound when they were bound, by set number.
-    pub written: SmallVec<[crate::state::SetWritten; 4]>,
+    pub written: SmallVec<[Option<crate::state::SetWritten>; 4]>,
     /// The index buffer bound (graphics only): its size, the offset and index type.
     pub index: Option<(vk::DeviceSize, vk::DeviceSize, vk::IndexType)>,
     /// The index buffer bound, for the hazard tracker.
@@ -543,6 +543,7 @@ impl<'c> Recorder<'c, Outside> {
     ) -> Self {
         let queue_flags = cb.parent().queue_flags();
         let hazards = cb.uses().spare_recording();
+        let sets = cb.uses().spare_sets();
         Recorder {
             device: cb.device().clone(),
             raw: cb.raw(),
@@ -567,7 +568,7 @@ impl<'c> Recorder<'c, Outside> {
             event_states: Default::default(),
             pass_images: SmallVec::new(),
             pass_memory: None,
-            sets: Vec::new(),
+            sets,
             events: Vec::new(),
             dynamic: (0, 0),
             compute_dynamic: 0,

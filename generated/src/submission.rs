@@ -16,7 +16,7 @@ use crate::{Error, Handle, Result};
 use ash::vk;
 use ash::vk::Handle as _;
 use smallvec::SmallVec;
-use tuff_runtime::{Retained, Vrc, Vweak};
+use tuff_runtime::{Vrc, Vweak};
 
 /// The checks of a command buffer's lifecycle before a begin or a reset, over what
 /// the device records of it.
@@ -292,10 +292,17 @@ fn record_event_states(device: &Device, cbs: &[vk::CommandBuffer], sub: &Vrc<Sub
     overlay.commit(sub);
 }
 
+/// The sets a submission's command buffers bound, each with its generation then:
+/// a frame's few inline.
+type SetsUsed = SmallVec<[(u64, u64); 8]>;
+
+/// The events a submission's command buffers name: a frame's few inline.
+type EventsUsed = SmallVec<[u64; 4]>;
+
 /// The descriptor sets that `cbs` and the secondaries they execute bound (each with
 /// the generation it had then), and the events their event commands name.
-fn used(device: &Device, cbs: &[vk::CommandBuffer]) -> (Vec<(u64, u64)>, Vec<u64>) {
-    let (mut sets, mut events) = (Vec::new(), Vec::new());
+fn used(device: &Device, cbs: &[vk::CommandBuffer]) -> (SetsUsed, EventsUsed) {
+    let (mut sets, mut events) = (SmallVec::new(), SmallVec::new());
     for raw in cbs {
         if let Some(uses) = device.command_buffer_uses(*raw) {
             uses.used(&mut sets, &mut events);
@@ -368,8 +375,8 @@ pub(crate) fn submitted(
     queue: vk::Queue,
     fence: Option<&crate::Fence>,
     cbs: &[vk::CommandBuffer],
-    kept: Vec<Retained>,
-    batches: Vec<Vec<(vk::Semaphore, u64)>>,
+    kept: crate::state::Kept,
+    batches: crate::state::Completes,
 ) -> Vrc<Submission> {
     let sub = device.live().ledger().record(
         queue,
@@ -880,7 +887,7 @@ pub(crate) struct Batches {
     /// The timeline operations among them that carry a value, in the same order.
     pub timeline: SmallVec<[TimelineOp; 2]>,
     /// For each batch, the timeline values it signals once all its commands are done.
-    pub completes: SmallVec<[Vec<(vk::Semaphore, u64)>; 2]>,
+    pub completes: crate::state::Completes,
 }
 
 /// One semaphore of a batch as [`Batches`] reads it: the semaphore, its timeline

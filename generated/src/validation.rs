@@ -47,6 +47,8 @@ impl Objects {
     }
 }
 
+pub(crate) use crate::state::Kept;
+
 /// What a walk over a struct (`crate::reach`) found, by what the walk is for: the
 /// live objects it names, for the wrapper or recording that must keep them
 /// ([`Reached::keeping`]); or the first handle it names that is no object of the
@@ -58,7 +60,7 @@ pub(crate) struct Reached<'a> {
     keep: Option<&'a crate::state::Live>,
     scope: Option<&'a Scope<'a>>,
     /// The live objects found, when keeping.
-    pub(crate) kept: Vec<tuff_runtime::Retained>,
+    pub(crate) kept: Kept,
     foreign: Option<(&'static str, vk::ObjectType, u64)>,
 }
 
@@ -68,7 +70,7 @@ impl<'a> Reached<'a> {
         Reached {
             keep: Some(live),
             scope: None,
-            kept: Vec::new(),
+            kept: Kept::new(),
             foreign: None,
         }
     }
@@ -78,7 +80,7 @@ impl<'a> Reached<'a> {
         Reached {
             keep: None,
             scope: Some(scope),
-            kept: Vec::new(),
+            kept: Kept::new(),
             foreign: None,
         }
     }

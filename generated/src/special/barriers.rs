@@ -341,6 +341,27 @@ const IMAGE_FAMILIES: FamilyRules = FamilyRules {
     },
 };
 
+/// Where a barrier is, for a message: written out only when a check refuses it,
+/// so a barrier that passes formats nothing.
+enum At {
+    /// Element `n` of an array: `pImageMemoryBarriers[0]`.
+    Item(&'static str, usize),
+    /// The stage mask of barrier `n`.
+    StageMask(usize),
+    /// The command's own stage masks.
+    Masks,
+}
+
+impl core::fmt::Display for At {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            At::Item(array, n) => write!(f, "{array}[{n}]"),
+            At::StageMask(n) => write!(f, "barrier {n}'s stage mask"),
+            At::Masks => f.write_str("a stage mask"),
+        }
+    }
+}
+
 /// The queue family indices of barrier `at` of a resource shared as `sharing`.
 fn check_families(
     (src, dst): (u32, u32),
@@ -348,7 +369,7 @@ fn check_families(
     sharing: vk::SharingMode,
     (family_count, sync2): (u32, bool),
     (rules, version): (&FamilyRules, Version),
-    at: &str,
+    at: &At,
 ) -> Result<()> {
     let ignored = vk::QUEUE_FAMILY_IGNORED;
     let host = (scopes.src_stage | scopes.dst_stage).contains(S2::HOST);
@@ -414,14 +435,14 @@ pub(crate) fn check_barrier_structs<S: Scope>(
             record.sharing,
             (family_count, sync2),
             (&BUFFER_FAMILIES, version),
-            &format!("pBufferMemoryBarriers[{n}]"),
+            &At::Item("pBufferMemoryBarriers", n),
         )?;
     }
     for (n, b) in barriers.images.iter().enumerate() {
         let Some(image) = live.image(b.image) else {
             continue;
         };
-        let at = format!("pImageMemoryBarriers[{n}]");
+        let at = At::Item("pImageMemoryBarriers", n);
         check_families(
             b.families,
             &b.scopes,
@@ -670,7 +691,7 @@ pub(crate) fn check_barrier_scopes<S: Scope>(
     // The host stage needs no queue capability (the specification's table of
     // supported stages); a barrier may name it.
     let unsupported =
-        |mask: S2, vuid: &'static str, at: &str| match super::stages::unsupported_stage2(
+        |mask: S2, vuid: &'static str, at: &At| match super::stages::unsupported_stage2(
             mask & !S2::HOST,
             family.flags,
         ) {
@@ -695,18 +716,18 @@ pub(crate) fn check_barrier_scopes<S: Scope>(
                         "a stage mask is 0, and synchronization2 is not enabled",
                     )?;
                 }
-                unsupported(widen(mask), vuid, "a stage mask")?;
+                unsupported(widen(mask), vuid, &At::Masks)?;
             }
         }
         None => {
             for (n, b) in barriers.scopes().enumerate() {
-                let at = format!("barrier {n}'s stage mask");
+                let at = At::StageMask(n);
                 unsupported(b.src_stage, rules.src_unsupported, &at)?;
                 unsupported(b.dst_stage, rules.dst_unsupported, &at)?;
             }
         }
     }
-    let access = |access: A2, stages: S2, vuid: &'static str, at: &str| {
+    let access = |access: A2, stages: S2, vuid: &'static str, at: &At| {
         if vuid.is_empty() {
             return Ok(());
         }
@@ -723,7 +744,7 @@ pub(crate) fn check_barrier_scopes<S: Scope>(
         }
     };
     for (n, b) in barriers.memory.iter().enumerate() {
-        let at = format!("pMemoryBarriers[{n}]");
+        let at = At::Item("pMemoryBarriers", n);
         access(b.src_access, b.src_stage, rules.memory_src_access, &at)?;
         access(b.dst_access, b.dst_stage, rules.memory_dst_access, &at)?;
     }
@@ -755,7 +776,7 @@ pub(crate) fn check_barrier_scopes<S: Scope>(
     let mut counts = [0usize; 2];
     for (families, b, array, src_vuid, dst_vuid) in resources {
         let n = &mut counts[usize::from(array.starts_with("pImage"))];
-        let at = format!("{array}[{n}]");
+        let at = At::Item(array, *n);
         *n += 1;
         let (first, second) = scopes(families);
         if first {

@@ -329,13 +329,13 @@ impl CommandBuffer {
         // The render pass and framebuffer a secondary's inheritance names live as
         // long as the recording, which refers to them.
         let mut reached = crate::validation::Reached::keeping(self.device().live());
-        // In the last recording's list's allocation: a recording per frame keeps about
-        // as many objects as the one before.
-        reached.kept = spare;
         // SAFETY: a safe struct, whose setters store every pointer with its length
         // and borrow what it points to.
         unsafe { crate::reach::command_buffer_begin_info(info.as_raw(), &mut reached) };
-        let kept = reached.kept;
+        // In the last recording's list's allocation: a recording per frame keeps about
+        // as many objects as the one before.
+        let mut kept = spare;
+        kept.extend(reached.kept);
         self.uses().set_recorder(true);
         let pool = self.device().live().pool_family(self.parent().raw());
         self.uses().set_pool(pool.map(|p| (p.index, p.protected)));

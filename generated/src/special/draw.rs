@@ -803,15 +803,20 @@ fn bound_pipeline_checks<S: Scope>(
 /// The images of the current subpass's attachments (those of the dynamic
 /// rendering's views), or `None` where the recorder does not know them (a
 /// secondary that continues an instance).
-fn attachment_images<S: Scope>(recorder: &Recorder<'_, S>) -> Option<Vec<vk::Image>> {
+fn attachment_images<S: Scope>(
+    recorder: &Recorder<'_, S>,
+) -> Option<smallvec::SmallVec<[vk::Image; 4]>> {
     let instance = recorder.instance.as_ref()?;
     if instance.dynamic {
-        return instance.rendering_images.clone();
+        return instance
+            .rendering_images
+            .as_ref()
+            .map(|images| images.iter().copied().collect());
     }
     let record = instance.record.as_ref()?;
     let used = record.used.get(instance.subpass as usize)?;
     if used.is_empty() {
-        return Some(Vec::new());
+        return Some(smallvec::SmallVec::new());
     }
     if recorder.pass_images.is_empty() {
         return None;

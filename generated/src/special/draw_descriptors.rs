@@ -174,6 +174,8 @@ fn written_checks(
     ) else {
         return Ok(());
     };
+    // A set bound with no record of its slots has none written.
+    let written: &[(u32, u32)] = written.as_ref().map_or(&[], |w| w.as_slice());
     let Some(b) = layout.bindings.iter().find(|b| b.binding == r.binding) else {
         return Ok(());
     };

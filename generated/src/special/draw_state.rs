@@ -677,7 +677,7 @@ pub(crate) fn cmd_bind_descriptor_sets_done<S: Scope>(
         if bound_points.sets.len() <= n {
             bound_points.sets.resize(n + 1, None);
             bound_points.images.resize(n + 1, None);
-            bound_points.written.resize(n + 1, Default::default());
+            bound_points.written.resize(n + 1, None);
         }
         bound_points.sets[n] = layout;
         bound_points.images[n] = images;

@@ -1193,8 +1193,8 @@ const SECONDARY: u32 = u32::MAX;
 /// semaphore waits block (synchronization2's bits; the first version's are the same
 /// numbers), and its command buffers in order.
 pub(crate) struct Batch {
-    pub(crate) waits: Vec<u64>,
-    pub(crate) command_buffers: Vec<vk::CommandBuffer>,
+    pub(crate) waits: SmallVec<[u64; 2]>,
+    pub(crate) command_buffers: SmallVec<[vk::CommandBuffer; 2]>,
 }
 
 /// Before a submission to `queue`: replays what each of its command buffers did

@@ -12,6 +12,7 @@ use crate::structs::{
 };
 use crate::Result;
 use ash::vk;
+use smallvec::SmallVec;
 use tuff_runtime::Vrc;
 
 /// The rule of a barrier's `oldLayout` (`VkImageMemoryBarrier`).
@@ -29,6 +30,9 @@ type Named = (
     vk::ImageLayout,
     &'static str,
 );
+
+/// The layouts a command names: a command's few inline.
+type NamedList = SmallVec<[Named; 4]>;
 
 /// Whether a barrier recorded for queue family `ours` acquires ownership from
 /// another family: the release named the same `oldLayout` and made the transition,
@@ -75,7 +79,7 @@ const UNCHANGED: vk::ImageLayout = vk::ImageLayout::UNDEFINED;
 fn dependency_barriers<'i>(
     infos: impl Iterator<Item = &'i DependencyInfo<'i>>,
     ours: u32,
-) -> Vec<Named> {
+) -> NamedList {
     infos
         .flat_map(|d| {
             // SAFETY: the safe struct stores the array with its length.
@@ -106,7 +110,7 @@ pub(super) fn record<S: Scope>(recorder: &mut Recorder<'_, S>, named: &[Named]) 
     }
 }
 
-fn barriers(image_memory_barriers: &[ImageMemoryBarrier<'_>], ours: u32) -> Vec<Named> {
+fn barriers(image_memory_barriers: &[ImageMemoryBarrier<'_>], ours: u32) -> NamedList {
     image_memory_barriers
         .iter()
         .map(|b| barrier(b, ours))
@@ -165,7 +169,7 @@ fn two_images<'r, R: 'r>(
     (dst, dst_layout, dst_vuid): (vk::Image, vk::ImageLayout, &'static str),
     regions: &'r [R],
     subresources: impl Fn(&R) -> (vk::ImageSubresourceLayers, vk::ImageSubresourceLayers),
-) -> Vec<Named> {
+) -> NamedList {
     let src_sels = regions.iter().map(|r| Sel::layers(&subresources(r).0));
     let dst_sels = regions.iter().map(|r| Sel::layers(&subresources(r).1));
     uses(src, src_layout, src_sels, src_vuid)
@@ -330,7 +334,7 @@ impl Names<'_> {
         }
     }
 
-    fn named(&self) -> Vec<Named> {
+    fn named(&self) -> NamedList {
         // SAFETY (each `raw_slice`): the safe structs store their arrays with their lengths.
         match self {
             Names::CopyImage(s, sl, d, dl, r) => two_images(
@@ -452,7 +456,7 @@ pub(crate) fn image_layout_checks<S: Scope>(
 ) -> Result<()> {
     let named = names.named();
     if recorder.is_auto_sync() {
-        let needs: Vec<_> = named.iter().map(|n| (n.0, n.1, n.2)).collect();
+        let needs: SmallVec<[_; 2]> = named.iter().map(|n| (n.0, n.1, n.2)).collect();
         crate::special::hazards::auto_transitions(recorder, &needs);
     }
     if !matches!(names, Names::ClearColor(..) | Names::ClearDepthStencil(..)) {
@@ -546,14 +550,14 @@ pub(super) fn attachments(
     live: &crate::state::Live,
     render_pass_begin: &RenderPassBeginInfo<'_>,
     vuid: &'static str,
-) -> Vec<Named> {
+) -> NamedList {
     let raw = render_pass_begin.as_raw();
     let Some(pass) = live.render_pass(raw.render_pass) else {
-        return Vec::new();
+        return NamedList::new();
     };
     let views = pass_views(live, render_pass_begin);
     let depth_stencil = vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL;
-    let mut named = Vec::new();
+    let mut named = NamedList::new();
     for (view, layouts) in views.iter().zip(&pass.layouts) {
         let Some(v) = live.view(*view) else {
             continue;

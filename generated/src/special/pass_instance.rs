@@ -650,7 +650,8 @@ fn check_aliasing(
 ) -> Result<()> {
     use crate::state::{USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_RESOLVE};
     let written = USED_COLOR | USED_RESOLVE | USED_DEPTH | USED_DEPTH_RESOLVE;
-    let used: Vec<(usize, crate::state::ViewRecord, u8)> = views
+    // A render pass's few attachments inline.
+    let used: smallvec::SmallVec<[(usize, crate::state::ViewRecord, u8); 4]> = views
         .iter()
         .enumerate()
         .filter_map(|(i, v)| {

@@ -10,6 +10,7 @@ use crate::structs::*;
 use crate::submission::{self, Batch, Batches, SubmitRules};
 use crate::{Handle, Result};
 use ash::vk;
+use smallvec::SmallVec;
 
 /// The checks of `vkQueueSubmit` that memory safety needs: the fence, the command
 /// buffers' states and the batches' timeline values.
@@ -30,7 +31,7 @@ pub(crate) fn queue_submit_checks(
         submission::check_timeline_batch(queue.parent().live(), b, &submission::SUBMIT_TIMELINE)?;
     }
     // Last: it keeps the state the submission leaves, for `done`.
-    let batches: Vec<_> = submits
+    let batches: SmallVec<[_; 1]> = submits
         .iter()
         .map(|b| {
             let b = b.as_raw();
@@ -43,7 +44,7 @@ pub(crate) fn queue_submit_checks(
             };
             hazards::Batch {
                 waits: stages.iter().map(|s| u64::from(s.as_raw())).collect(),
-                command_buffers: cbs.to_vec(),
+                command_buffers: cbs.iter().copied().collect(),
             }
         })
         .collect();
@@ -246,7 +247,7 @@ pub(crate) fn queue_submit2_checks(
         check_batch2(queue, i, b)?;
     }
     // Last: it keeps the state the submission leaves, for `done`.
-    let batches: Vec<_> = submits
+    let batches: SmallVec<[_; 1]> = submits
         .iter()
         .map(|b| {
             let b = b.as_raw();
@@ -414,7 +415,7 @@ fn done<B: Batch>(queue: &Queue, batches: &[B], fence: Option<&Fence>, replayed:
         fence,
         &b.command_buffers,
         kept,
-        b.completes.into_vec(),
+        b.completes,
     );
     submission::record_binary_ops(device, queue.raw(), &b.ops, Some(&sub));
     // A submission whose command buffers the hazard checks replayed: what they

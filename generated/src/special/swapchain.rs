@@ -270,7 +270,14 @@ pub(crate) fn queue_present_khr_before(queue: &Queue, present_info: &PresentInfo
     let mut reached = crate::validation::Reached::keeping(device.live());
     // SAFETY: the safe struct stores every array with its length.
     unsafe { crate::reach::present_info_khr(present_info.as_raw(), &mut reached) };
-    let sub = submission::submitted(device, queue.raw(), None, &[], reached.kept, Vec::new());
+    let sub = submission::submitted(
+        device,
+        queue.raw(),
+        None,
+        &[],
+        reached.kept,
+        Default::default(),
+    );
     // SAFETY: the safe struct stores the array with its length.
     let waits = unsafe {
         crate::state::raw_slice(
@@ -755,8 +762,8 @@ pub(crate) fn acquire_next_image_khr_done(
             vk::Queue::null(),
             fence,
             &[],
-            Vec::new(),
-            Vec::new(),
+            Default::default(),
+            Default::default(),
         );
     }
     // An image acquired with vkAcquireNextImageKHR is acquired for every physical

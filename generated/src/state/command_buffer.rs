@@ -7,6 +7,7 @@
 use super::Submission;
 use crate::handles::Device;
 use ash::vk;
+use smallvec::SmallVec;
 use tuff_runtime::{Vrc, Vutex, Vweak};
 
 /// The lifecycle state of a command buffer, shared with the device's registry so a
@@ -51,6 +52,9 @@ struct UsesState {
     /// The image layouts the last recording needs at its start and leaves at its
     /// end; `None` while recording, or when it names none.
     layouts: Option<Vrc<crate::state::layouts::Recording>>,
+    /// The last recording's layouts once a new recording began, for the next end
+    /// to write its own into the same allocation where nothing else holds it.
+    spare_layouts: Option<Vrc<crate::state::layouts::Recording>>,
     /// What the last recording did to memory, for its submissions to replay; `None`
     /// while recording, or when it did nothing the hazard tracker saw.
     hazards: Option<Vrc<Vec<crate::state::hazards::Event>>>,
@@ -160,7 +164,7 @@ impl Uses {
 
     /// Whether a submission that uses the buffer may still be executing.
     pub(crate) fn is_pending(&self, device: &Device) -> bool {
-        let subs: Vec<Vrc<Submission>> = {
+        let subs: SmallVec<[Vrc<Submission>; 4]> = {
             let mut state = self.state.lock();
             state
                 .subs
@@ -229,7 +233,7 @@ impl Uses {
             state.generation += 1;
             state.simultaneous = flags.contains(vk::CommandBufferUsageFlags::SIMULTANEOUS_USE);
             state.one_time = flags.contains(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
-            state.layouts = None;
+            state.spare_layouts = state.layouts.take();
             state.queries = None;
             core::mem::take(&mut state.secondaries)
         };
@@ -284,8 +288,24 @@ impl Uses {
 
     /// The image layouts of the recording that just ended.
     pub(crate) fn set_layouts(&self, layouts: crate::state::layouts::Recording) {
-        let layouts = (!layouts.is_empty()).then(|| Vrc::new(layouts));
-        self.state.lock().layouts = layouts;
+        let mut state = self.state.lock();
+        let spare = state.spare_layouts.take();
+        if layouts.is_empty() {
+            state.layouts = None;
+            return;
+        }
+        state.layouts = Some(match spare {
+            // A recording per frame: the last one's allocation, unless a check
+            // still reads it.
+            Some(mut shell) => match Vrc::get_mut(&mut shell) {
+                Some(slot) => {
+                    *slot = layouts;
+                    shell
+                }
+                None => Vrc::new(layouts),
+            },
+            None => Vrc::new(layouts),
+        });
     }
 
     /// What the recording that just ended did to memory (its log, for its
@@ -364,6 +384,14 @@ impl Uses {
     }
 
     /// The descriptor sets the recording that just ended bound (raw set, generation).
+    /// An empty list of bound sets for a new recording, in the last recording's
+    /// allocation (the last recording is over: a new one begins).
+    pub(crate) fn spare_sets(&self) -> Vec<(u64, u64)> {
+        let mut sets = core::mem::take(&mut self.state.lock().sets);
+        sets.clear();
+        sets
+    }
+
     pub(crate) fn set_sets(&self, sets: Vec<(u64, u64)>) {
         self.state.lock().sets = sets;
     }
@@ -375,11 +403,11 @@ impl Uses {
 
     /// Appends the descriptor sets this buffer's recording bound and the events it
     /// names, and those of the secondaries it executes, to `sets` and `events`.
-    pub(crate) fn used(&self, sets: &mut Vec<(u64, u64)>, events: &mut Vec<u64>) {
-        let secondaries: Vec<Vrc<Uses>> = {
+    pub(crate) fn used(&self, sets: &mut impl Extend<(u64, u64)>, events: &mut impl Extend<u64>) {
+        let secondaries: SmallVec<[Vrc<Uses>; 2]> = {
             let state = self.state.lock();
-            sets.extend_from_slice(&state.sets);
-            events.extend_from_slice(&state.events);
+            sets.extend(state.sets.iter().copied());
+            events.extend(state.events.iter().copied());
             state
                 .secondaries
                 .iter()

@@ -217,11 +217,15 @@ impl Live {
     }
 
     /// The generation of a descriptor set now, what a command buffer that binds it
-    /// remembers, the image descriptors it holds and the slots written.
-    pub(crate) fn set_bound(&self, raw: vk::DescriptorSet) -> (u64, Option<SetImages>, SetWritten) {
+    /// remembers, the image descriptors it holds and the slots written (`None`: no
+    /// record of the set, so none; no empty list is allocated for it).
+    pub(crate) fn set_bound(
+        &self,
+        raw: vk::DescriptorSet,
+    ) -> (u64, Option<SetImages>, Option<SetWritten>) {
         self.set_uses.lock().get(&raw.as_raw()).map_or_else(
-            || (0, None, SetWritten::default()),
-            |u| (u.generation, u.images.clone(), u.written.clone()),
+            || (0, None, None),
+            |u| (u.generation, u.images.clone(), Some(u.written.clone())),
         )
     }
 

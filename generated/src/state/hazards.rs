@@ -17,7 +17,7 @@
 //! What the recording found at its start (writes of earlier submissions) is not
 //! known here: the first access of each range is never a hazard.
 
-use super::HashMap;
+use super::small_map::SmallMap;
 use crate::state::layouts::{Sel, Shape};
 use crate::state::Live;
 use crate::sync_tables::{ACCESSES, EVERY_STAGE, STAGES};
@@ -355,8 +355,9 @@ struct Write {
     usage: Usage,
     /// The texels it wrote.
     texels: Texels,
-    /// Each `(stages, access types)` the write is visible to (a union of products).
-    visible: SmallVec<[(u64, u64); 2]>,
+    /// Each `(stages, access types)` the write is visible to (a union of products;
+    /// a frame's few barriers stay inline).
+    visible: SmallVec<[(u64, u64); 4]>,
     /// The stages ordered after the write by the barriers so far.
     chain: u64,
 }
@@ -385,7 +386,8 @@ struct Read {
 #[derive(Clone, Debug, Default)]
 pub(crate) struct State {
     write: Option<Write>,
-    reads: SmallVec<[Read; 1]>,
+    /// Inline for two: a uniform block read by two shader stages.
+    reads: SmallVec<[Read; 2]>,
 }
 
 /// Two accesses the recording does not order.
@@ -705,8 +707,8 @@ impl Memory {
 /// What one recording has done to the memory it touched.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Recording {
-    buffers: HashMap<u64, Ranges>,
-    images: HashMap<u64, Subresources>,
+    buffers: SmallMap<Ranges>,
+    images: SmallMap<Subresources>,
     /// How many commands the recording has recorded that the tracker saw.
     commands: u32,
     /// Whether a hazard gets the barrier that orders it, rather than an error.
@@ -877,16 +879,13 @@ impl Recording {
     }
 
     fn image(&mut self, live: &Live, image: vk::Image) -> Option<&mut Subresources> {
-        use std::collections::hash_map::Entry;
-        match self.images.entry(image.as_raw()) {
-            Entry::Occupied(e) => Some(e.into_mut()),
-            Entry::Vacant(e) => {
-                let shape = Shape::of(&live.image(image)?);
-                let mut states = self.spare_states.pop().unwrap_or_default();
-                states.extend((0..shape.len()).map(|_| State::default()));
-                Some(e.insert(Subresources { shape, states }))
-            }
-        }
+        let spare = &mut self.spare_states;
+        self.images.get_or_try_insert(image.as_raw(), || {
+            let shape = Shape::of(&live.image(image)?);
+            let mut states = spare.pop().unwrap_or_default();
+            states.extend((0..shape.len()).map(|_| State::default()));
+            Some(Subresources { shape, states })
+        })
     }
 
     /// The first hazard of an access to `memory`, if any.
@@ -894,11 +893,11 @@ impl Recording {
         match memory {
             Memory::Buffer(b, s, e) => self
                 .buffers
-                .get(&b.as_raw())?
+                .get(b.as_raw())?
                 .states(*s, *e)
                 .find_map(|st| st.hazard(u, &EVERY_TEXEL)),
             Memory::Image(i, sel, texels) => {
-                let sub = self.images.get(&i.as_raw())?;
+                let sub = self.images.get(i.as_raw())?;
                 sub.shape
                     .indices(sel)
                     .find_map(|k| sub.states[k].hazard(u, texels))
@@ -912,7 +911,7 @@ impl Recording {
     /// when the recording has not touched one of them, or last transitioned it:
     /// what came before is then not known here.
     pub(crate) fn last_uses(&self, image: vk::Image, sel: &Sel) -> Option<(u64, u64)> {
-        let sub = self.images.get(&image.as_raw())?;
+        let sub = self.images.get(image.as_raw())?;
         let (mut stages, mut access) = (0, 0);
         for k in sub.shape.indices(sel) {
             let st = &sub.states[k];
@@ -957,7 +956,11 @@ impl Recording {
                     self.buffer_writes.1 |= u.access;
                 }
                 if s < e {
-                    for st in self.buffers.entry(b.as_raw()).or_default().cover(*s, *e) {
+                    for st in self
+                        .buffers
+                        .get_or_insert_with(b.as_raw(), Ranges::default)
+                        .cover(*s, *e)
+                    {
                         st.record(u, EVERY_TEXEL);
                     }
                 }
@@ -982,7 +985,7 @@ impl Recording {
         b: &Barrier,
         cmd: Cmd,
     ) -> Option<Hazard> {
-        let sub = self.images.get(&image.as_raw())?;
+        let sub = self.images.get(image.as_raw())?;
         sub.shape
             .indices(sel)
             .find_map(|k| sub.states[k].transition_hazard(b, cmd))
@@ -1013,7 +1016,7 @@ impl Recording {
         if !self.unlogged {
             self.log.push(Event::Buffer(buffer, start, end, *b));
         }
-        if let Some(r) = self.buffers.get_mut(&buffer.as_raw()) {
+        if let Some(r) = self.buffers.get_mut(buffer.as_raw()) {
             if start < end {
                 for st in r.cover(start, end) {
                     st.apply(core::slice::from_ref(b));
@@ -1043,7 +1046,7 @@ impl Recording {
         }
         let Some(sub) = (match transition {
             Some(_) => self.image(live, image),
-            None => self.images.get_mut(&image.as_raw()),
+            None => self.images.get_mut(image.as_raw()),
         }) else {
             return;
         };
@@ -1129,14 +1132,26 @@ impl Recording {
             st.reads.retain(|r| !done(r.usage.cmd.submission));
             st.write.is_some() || !st.reads.is_empty()
         };
+        // A buffer none of whose ranges is left stays, with its list's allocation,
+        // for the next submission, which most often touches it again (a bounded
+        // number: no range is no state, as if it were not there).
+        let small = self.buffers.len() <= 64;
         self.buffers.retain(|_, r| {
             r.0.retain_mut(|(_, _, st)| keep(st));
-            !r.0.is_empty()
+            small || !r.0.is_empty()
         });
+        // An image's states depend on its shape, and its handle may name another
+        // image later: it goes, and its table's allocation waits for the next.
+        let spare = &mut self.spare_states;
         self.images.retain(|_, sub| {
             let mut any = false;
             for st in &mut sub.states {
                 any |= keep(st);
+            }
+            if !any && spare.len() < 16 {
+                let mut states = core::mem::take(&mut sub.states);
+                states.clear();
+                spare.push(states);
             }
             any
         });

@@ -15,7 +15,7 @@ use crate::{Error, Result};
 use ash::vk::{self, Handle as _};
 use smallvec::{smallvec, SmallVec};
 // Looked up on every command that names an image layout: a fast hash for handles.
-use super::HashMap;
+use super::small_map::SmallMap;
 
 /// A subresource whose layout the recording has not yet set or needed.
 const UNKNOWN: vk::ImageLayout = vk::ImageLayout::from_raw(i32::MIN);
@@ -225,7 +225,7 @@ struct Track {
 /// The image layouts one recording needs at its start and leaves at its end.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Recording {
-    images: HashMap<u64, Track>,
+    images: SmallMap<Track>,
 }
 
 /// The error of a subresource found in another layout than a command names.
@@ -247,19 +247,15 @@ fn mismatch(
 
 impl Recording {
     fn track(&mut self, live: &Live, image: vk::Image) -> Option<&mut Track> {
-        use std::collections::hash_map::Entry;
-        match self.images.entry(image.as_raw()) {
-            Entry::Occupied(e) => Some(e.into_mut()),
-            Entry::Vacant(e) => {
-                let shape = Shape::of(&live.image(image)?);
-                let len = shape.len();
-                Some(e.insert(Track {
-                    shape,
-                    first: smallvec![(UNKNOWN, ""); len],
-                    now: smallvec![UNKNOWN; len],
-                }))
-            }
-        }
+        self.images.get_or_try_insert(image.as_raw(), || {
+            let shape = Shape::of(&live.image(image)?);
+            let len = shape.len();
+            Some(Track {
+                shape,
+                first: smallvec![(UNKNOWN, ""); len],
+                now: smallvec![UNKNOWN; len],
+            })
+        })
     }
 
     /// Refuses `layout` for subresources that the recording's earlier commands
@@ -275,7 +271,7 @@ impl Recording {
         if layout == vk::ImageLayout::UNDEFINED {
             return Ok(());
         }
-        let Some(t) = self.images.get(&image.as_raw()) else {
+        let Some(t) = self.images.get(image.as_raw()) else {
             return Ok(());
         };
         for i in t.shape.indices(&sel) {
@@ -298,7 +294,7 @@ impl Recording {
     /// subresources in, if it knows one (`None` where one is untouched or they
     /// differ).
     pub(crate) fn known(&self, image: vk::Image, sel: &Sel) -> Option<vk::ImageLayout> {
-        let t = self.images.get(&image.as_raw())?;
+        let t = self.images.get(image.as_raw())?;
         let mut indices = t.shape.indices(sel);
         let first = t.now[indices.next()?];
         (first != UNKNOWN && indices.all(|i| t.now[i] == first)).then_some(first)
@@ -344,7 +340,7 @@ impl Recording {
     /// where it needs a layout they leave otherwise.
     pub(crate) fn check_then(&self, other: &Recording) -> Result<()> {
         for (image, theirs) in &other.images {
-            let Some(ours) = self.images.get(image) else {
+            let Some(ours) = self.images.get(*image) else {
                 continue;
             };
             for (i, (need, vuid)) in theirs.first.iter().enumerate() {
@@ -367,7 +363,7 @@ impl Recording {
     /// This recording executes `other` (a secondary) after its commands so far.
     pub(crate) fn then(&mut self, other: &Recording) {
         for (image, theirs) in &other.images {
-            let ours = self.images.entry(*image).or_insert_with(|| Track {
+            let ours = self.images.get_or_insert_with(*image, || Track {
                 shape: theirs.shape,
                 first: smallvec![(UNKNOWN, ""); theirs.now.len()],
                 now: smallvec![UNKNOWN; theirs.now.len()],
@@ -396,7 +392,7 @@ impl Recording {
 /// the device only once the submission is made.
 pub(crate) struct Overlay<'a> {
     live: &'a Live,
-    images: HashMap<u64, super::image::ImageLayouts>,
+    images: SmallMap<super::image::ImageLayouts>,
 }
 
 impl<'a> Overlay<'a> {
@@ -404,15 +400,14 @@ impl<'a> Overlay<'a> {
     pub(crate) fn new(live: &'a Live) -> Self {
         Overlay {
             live,
-            images: HashMap::default(),
+            images: SmallMap::default(),
         }
     }
 
     fn layouts(&mut self, image: u64, len: usize) -> &mut super::image::ImageLayouts {
         let live = self.live;
         self.images
-            .entry(image)
-            .or_insert_with(|| live.image_layouts(image, len))
+            .get_or_insert_with(image, || live.image_layouts(image, len))
     }
 
     /// Refuses a recording that needs a layout the submissions before it leave

@@ -25,6 +25,7 @@ mod query;
 mod queue;
 mod render_pass;
 mod sampler;
+pub(crate) mod small_map;
 mod swapchain;
 mod sync;
 mod view;
@@ -47,7 +48,7 @@ pub(crate) use self::pipeline::{
     VertexRead,
 };
 pub(crate) use self::query::QueryPoolRecord;
-pub(crate) use self::queue::{Ledger, Submission};
+pub(crate) use self::queue::{Completes, Kept, Ledger, Submission};
 pub(crate) use self::render_pass::{
     AttachmentLayouts, Boundary, Compatibility, Edges, RenderPassRecord, SelfDependency,
     SubpassShape, USED_COLOR, USED_DEPTH, USED_DEPTH_RESOLVE, USED_INPUT, USED_RESOLVE,

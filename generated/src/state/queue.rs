@@ -4,6 +4,7 @@
 use super::live::Live;
 use crate::Handle;
 use ash::vk::{self, Handle as _};
+use smallvec::SmallVec;
 use tuff_runtime::HostSync;
 use tuff_runtime::{Retained, Vrc, Vutex, Vweak};
 
@@ -74,6 +75,13 @@ impl Live {
     }
 }
 /// One queue operation and everything it uses.
+/// The objects a submission or recording keeps alive: a frame's few inline.
+pub(crate) type Kept = SmallVec<[Retained; 4]>;
+
+/// For each batch of a submission, the timeline values whose signal shows it
+/// finished: a frame's one batch inline.
+pub(crate) type Completes = SmallVec<[Vec<(vk::Semaphore, u64)>; 2]>;
+
 pub(crate) struct Submission {
     pub(crate) queue: vk::Queue,
     /// Position in the device's submission order.
@@ -86,7 +94,7 @@ pub(crate) struct Submission {
 pub(crate) struct SubmissionState {
     /// What it uses; `None` once it is known complete, or once every batch is known
     /// to have finished executing (its timeline signal was seen).
-    pub(crate) kept: Option<Vec<Retained>>,
+    pub(crate) kept: Option<Kept>,
     /// Known complete: its fence (or a later one of the queue) was seen signalled or
     /// the queue went idle. A timeline signal alone does not tell this: the fence
     /// may still be waiting to signal.
@@ -94,7 +102,7 @@ pub(crate) struct SubmissionState {
     /// For each batch that has not been seen finished, the timeline values whose
     /// signal shows that it did (a signal that covers all of the batch's commands).
     /// A batch without one keeps the submission's objects until it completes.
-    pub(crate) batches: Vec<Vec<(vk::Semaphore, u64)>>,
+    pub(crate) batches: Completes,
 }
 
 impl Submission {
@@ -192,14 +200,14 @@ impl Ledger {
         &self,
         queue: vk::Queue,
         fence: vk::Fence,
-        kept: Vec<Retained>,
-        batches: Vec<Vec<(vk::Semaphore, u64)>>,
+        kept: Kept,
+        batches: Completes,
     ) -> Vrc<Submission> {
         let mut state = self.state.lock();
         state.next += 1;
         // A batch without a timeline signal can only finish with the fence.
         let batches = if batches.iter().any(Vec::is_empty) {
-            Vec::new()
+            Completes::new()
         } else {
             batches
         };
@@ -239,7 +247,7 @@ impl Ledger {
     /// use. A semaphore signal covers only its own batch, so nothing earlier on the
     /// queue is released by it.
     pub(crate) fn reached(&self, semaphore: vk::Semaphore, value: u64) {
-        let subs: Vec<Vrc<Submission>> = {
+        let subs: SmallVec<[Vrc<Submission>; 4]> = {
             let state = self.state.lock();
             state.subs.iter().filter_map(Vweak::upgrade).collect()
         };
@@ -260,7 +268,7 @@ impl Ledger {
     }
 
     pub(crate) fn retire_where(&self, done: impl Fn(&Submission) -> bool) {
-        let finished: Vec<Vrc<Submission>> = {
+        let finished: SmallVec<[Vrc<Submission>; 4]> = {
             let state = self.state.lock();
             state
                 .subs

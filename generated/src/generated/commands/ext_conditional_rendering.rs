@@ -60,7 +60,7 @@ The caller upholds the rules that [`Self::begin_conditional_rendering_ext`] chec
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

@@ -133,7 +133,7 @@ The caller upholds the rules that [`Self::bind_descriptor_buffers_ext`] checks a
                 fp(self.raw(), binding_infos.len() as u32, binding_infos.as_ptr().cast())
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

@@ -733,7 +733,7 @@ The caller upholds the rules that [`Self::build_micromaps_ext`] checks at run ti
             // SAFETY: live wrappers' handles, borrowed pointers and counts (module docs).
             unsafe { fp(self.raw(), infos.len() as u32, infos.as_ptr().cast()) };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -819,7 +819,7 @@ The caller upholds the rules that [`Self::copy_memory_to_micromap_ext`] checks a
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -902,7 +902,7 @@ The caller upholds the rules that [`Self::copy_micromap_ext`] checks at run time
                 fp(self.raw(), info as *const CopyMicromapInfoEXT<'a> as *const _)
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -987,7 +987,7 @@ The caller upholds the rules that [`Self::copy_micromap_to_memory_ext`] checks a
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

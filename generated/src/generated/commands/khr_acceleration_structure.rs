@@ -862,7 +862,7 @@ The caller upholds the rules that [`Self::build_acceleration_structures_indirect
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -1024,7 +1024,7 @@ The caller upholds the rules that [`Self::build_acceleration_structures_khr`] ch
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -1099,7 +1099,7 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_khr`] chec
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -1177,7 +1177,7 @@ The caller upholds the rules that [`Self::copy_acceleration_structure_to_memory_
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -1255,7 +1255,7 @@ The caller upholds the rules that [`Self::copy_memory_to_acceleration_structure_
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

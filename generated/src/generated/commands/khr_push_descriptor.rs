@@ -86,7 +86,7 @@ The caller upholds the rules that [`Self::push_descriptor_set_khr`] checks at ru
             };
             self.state_changed();
             self.retain_with(layout.address(), || layout.retained());
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

@@ -107,7 +107,7 @@ The caller upholds the rules that [`Self::decode_video_khr`] checks at run time:
                 fp(self.raw(), decode_info as *const VideoDecodeInfoKHR<'a> as *const _)
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

@@ -408,7 +408,7 @@ The caller upholds the rules that [`Self::begin_video_coding_khr`] checks at run
         unsafe {
             fp(self.raw(), begin_info as *const VideoBeginCodingInfoKHR<'a> as *const _)
         };
-        let kept: Vec<tuff_runtime::Retained> = {
+        let kept: crate::validation::Kept = {
             let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(begin_info) {
                 // SAFETY: the safe structs store every pointer with its length.

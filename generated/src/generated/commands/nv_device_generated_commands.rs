@@ -330,7 +330,7 @@ The caller upholds the rules that [`Self::execute_generated_commands_nv`] checks
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -413,7 +413,7 @@ The caller upholds the rules that [`Self::preprocess_generated_commands_nv`] che
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

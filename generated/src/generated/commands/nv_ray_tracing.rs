@@ -509,7 +509,7 @@ The caller upholds the rules that [`Self::build_acceleration_structure_nv`] chec
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

@@ -52,7 +52,7 @@ The caller upholds the rules that [`Self::cu_launch_kernel_nvx`] checks at run t
                 fp(self.raw(), launch_info as *const CuLaunchInfoNVX<'a> as *const _)
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

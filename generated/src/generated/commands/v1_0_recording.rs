@@ -305,7 +305,7 @@ The caller upholds the rules that [`Self::pipeline_barrier`] checks at run time:
                 image_memory_barriers,
             );
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -320,7 +320,7 @@ The caller upholds the rules that [`Self::pipeline_barrier`] checks at run time:
             for o in kept {
                 self.retain(o);
             }
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -500,7 +500,7 @@ The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUI
                 image_memory_barriers,
             );
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -515,7 +515,7 @@ The caller upholds the rules that [`Self::wait_events`] checks at run time: `VUI
             for o in kept {
                 self.retain(o);
             }
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

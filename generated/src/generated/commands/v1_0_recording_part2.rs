@@ -105,7 +105,7 @@ The caller upholds the rules that [`Self::begin_render_pass`] checks at run time
             contents,
             "VUID-vkCmdBeginRenderPass-initialLayout-00900",
         );
-        let kept: Vec<tuff_runtime::Retained> = {
+        let kept: crate::validation::Kept = {
             let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(render_pass_begin) {
                 // SAFETY: the safe structs store every pointer with its length.

@@ -62,7 +62,7 @@ The caller upholds the rules that [`Self::begin_rendering`] checks at run time: 
             fp(self.raw(), rendering_info as *const RenderingInfo<'a> as *const _)
         };
         crate::special::rendering::rendering_begun(&mut self, rendering_info);
-        let kept: Vec<tuff_runtime::Retained> = {
+        let kept: crate::validation::Kept = {
             let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in core::iter::once(rendering_info) {
                 // SAFETY: the safe structs store every pointer with its length.
@@ -136,7 +136,7 @@ The caller upholds the rules that [`Self::blit_image2`] checks at run time: `VUI
                 crate::special::image_layouts::Names::BlitImage2(blit_image_info),
             );
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -207,7 +207,7 @@ The caller upholds the rules that [`Self::copy_buffer2`] checks at run time: `VU
                 )
             };
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -298,7 +298,7 @@ The caller upholds the rules that [`Self::copy_buffer_to_image2`] checks at run 
                 ),
             );
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -380,7 +380,7 @@ The caller upholds the rules that [`Self::copy_image2`] checks at run time: `VUI
                 crate::special::image_layouts::Names::CopyImage2(copy_image_info),
             );
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -470,7 +470,7 @@ The caller upholds the rules that [`Self::copy_image_to_buffer2`] checks at run 
                 ),
             );
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -555,7 +555,7 @@ The caller upholds the rules that [`Self::resolve_image2`] checks at run time: `
                 crate::special::image_layouts::Names::ResolveImage2(resolve_image_info),
             );
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -1487,7 +1487,7 @@ The caller upholds the rules that [`Self::pipeline_barrier2`] checks at run time
             };
             crate::special::barriers::pipeline_barrier2_done(self, dependency_info);
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -1591,7 +1591,7 @@ The caller upholds the rules that [`Self::wait_events2`] checks at run time: `VU
             };
             crate::special::sync::wait_events2_done(self, events, dependency_infos);
             self.state_changed();
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );
@@ -1808,7 +1808,7 @@ The caller upholds the rules that [`Self::set_event2`] checks at run time: `VUID
             crate::special::sync::set_event2_done(self, event, dependency_info);
             self.state_changed();
             self.retain_with(event.address(), || event.retained());
-            let kept: Vec<tuff_runtime::Retained> = {
+            let kept: crate::validation::Kept = {
                 let mut reached = crate::validation::Reached::keeping(
                     self.device().live(),
                 );

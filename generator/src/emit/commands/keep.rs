@@ -83,7 +83,7 @@ pub(super) fn struct_retains(
         quote!(core::iter::once(#name))
     };
     vec![quote! {
-        let kept: Vec<tuff_runtime::Retained> = {
+        let kept: crate::validation::Kept = {
             let mut reached = crate::validation::Reached::keeping(self.device().live());
             for e in #elems {
                 __safety!("the safe structs store every pointer with its length.");
