@@ -176,13 +176,34 @@ impl Pushed {
         set_bits(&mut self.bytes, offset as usize, end);
     }
 
-    /// Whether byte `b` is set.
-    pub(crate) fn has(&self, b: u32) -> bool {
-        let b = b as usize;
-        self.bytes
-            .get(b / 64)
-            .is_some_and(|w| w & (1 << (b % 64)) != 0)
+    /// The first byte of `start..end` not set, if any.
+    pub(crate) fn first_unset(&self, start: u32, end: u32) -> Option<u32> {
+        first_clear(&self.bytes, start as usize, end as usize).map(|b| b as u32)
     }
+}
+
+/// The first bit of `start..end` clear in `words` (bits past them are clear), a
+/// word at a time: a draw reading 128 bytes of push constants tests two words, not
+/// 128 bits.
+fn first_clear(words: &[u64], start: usize, end: usize) -> Option<usize> {
+    let mut at = start;
+    while at < end {
+        let w = at / 64;
+        // Bits `lo..hi` of word `w`.
+        let lo = at - w * 64;
+        let hi = end.min(w * 64 + 64) - w * 64;
+        let range = if hi - lo == 64 {
+            !0
+        } else {
+            ((1u64 << (hi - lo)) - 1) << lo
+        };
+        let clear = !words.get(w).copied().unwrap_or(0) & range;
+        if clear != 0 {
+            return Some(w * 64 + clear.trailing_zeros() as usize);
+        }
+        at = w * 64 + hi;
+    }
+    None
 }
 
 /// Sets bits `start..end` of `words` (64 to a word, grown as needed), a word at a
@@ -1034,6 +1055,23 @@ mod tests {
                         "{start}..{end}: bit {b}"
                     );
                 }
+            }
+        }
+    }
+
+    /// Word-wise search finds the first clear bit a bit-by-bit one would, for
+    /// every range up to 200 bits over words with a pattern of set runs.
+    #[test]
+    fn first_clear_finds_the_first_clear_bit() {
+        let mut words: SmallVec<[u64; 4]> = SmallVec::new();
+        for (s, e) in [(0, 10), (12, 70), (71, 140), (150, 190)] {
+            set_bits(&mut words, s, e);
+        }
+        let bit = |b: usize| words.get(b / 64).is_some_and(|w| w & (1 << (b % 64)) != 0);
+        for start in 0..200 {
+            for end in 0..200 {
+                let want = (start..end).find(|b| !bit(*b));
+                assert_eq!(first_clear(&words, start, end), want, "{start}..{end}");
             }
         }
     }

@@ -292,16 +292,12 @@ fn record_event_states(device: &Device, cbs: &[vk::CommandBuffer], sub: &Vrc<Sub
     overlay.commit(sub);
 }
 
-/// The sets a submission's command buffers bound, each with its generation then:
-/// a frame's few inline.
-type SetsUsed = SmallVec<[(u64, u64); 8]>;
-
-/// The events a submission's command buffers name: a frame's few inline.
-type EventsUsed = SmallVec<[u64; 4]>;
-
 /// The descriptor sets that `cbs` and the secondaries they execute bound (each with
 /// the generation it had then), and the events their event commands name.
-fn used(device: &Device, cbs: &[vk::CommandBuffer]) -> (SetsUsed, EventsUsed) {
+fn used(
+    device: &Device,
+    cbs: &[vk::CommandBuffer],
+) -> (crate::state::SetsUsed, crate::state::EventsUsed) {
     let (mut sets, mut events) = (SmallVec::new(), SmallVec::new());
     for raw in cbs {
         if let Some(uses) = device.command_buffer_uses(*raw) {

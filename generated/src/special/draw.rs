@@ -633,7 +633,7 @@ fn push_constant_checks<S: Scope>(
             format!("the bound pipeline's shaders read push constants (bytes {start} to {end}), and none were pushed with a layout of the same push-constant ranges"),
         );
     }
-    if let Some(byte) = (start..end).find(|b| !pushed.is_some_and(|p| p.has(*b))) {
+    if let Some(byte) = pushed.and_then(|p| p.first_unset(start, end)) {
         return refuse(
             vuid,
             format!("the bound pipeline's shaders read push constants (bytes {start} to {end}), and byte {byte} was not pushed"),

@@ -10,6 +10,13 @@ use ash::vk;
 use smallvec::SmallVec;
 use tuff_runtime::{Vrc, Vutex, Vweak};
 
+/// The sets a submission's command buffers bound, each with its generation then:
+/// a frame's few inline.
+pub(crate) type SetsUsed = SmallVec<[(u64, u64); 8]>;
+
+/// The events a submission's command buffers name: a frame's few inline.
+pub(crate) type EventsUsed = SmallVec<[u64; 4]>;
+
 /// The lifecycle state of a command buffer, shared with the device's registry so a
 /// submission naming the raw handle finds it.
 pub(crate) struct Uses {
@@ -403,11 +410,11 @@ impl Uses {
 
     /// Appends the descriptor sets this buffer's recording bound and the events it
     /// names, and those of the secondaries it executes, to `sets` and `events`.
-    pub(crate) fn used(&self, sets: &mut impl Extend<(u64, u64)>, events: &mut impl Extend<u64>) {
+    pub(crate) fn used(&self, sets: &mut SetsUsed, events: &mut EventsUsed) {
         let secondaries: SmallVec<[Vrc<Uses>; 2]> = {
             let state = self.state.lock();
-            sets.extend(state.sets.iter().copied());
-            events.extend(state.events.iter().copied());
+            sets.extend_from_slice(&state.sets);
+            events.extend_from_slice(&state.events);
             state
                 .secondaries
                 .iter()

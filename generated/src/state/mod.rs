@@ -31,7 +31,9 @@ mod sync;
 mod view;
 
 pub(crate) use self::buffer::BufferRecord;
-pub(crate) use self::command_buffer::{Inheritance, InheritedRendering, Standing, Uses};
+pub(crate) use self::command_buffer::{
+    EventsUsed, Inheritance, InheritedRendering, SetsUsed, Standing, Uses,
+};
 pub(crate) use self::command_pool::PoolFamily;
 pub(crate) use self::descriptors::{
     names_image_layout, sampler_bits, BindingRecord, ImageDescriptor, SetImages, SetLayoutRecord,

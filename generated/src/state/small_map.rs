@@ -11,9 +11,10 @@ const LINEAR: usize = 16;
 
 /// A map from raw handles to `V`, in insertion order.
 pub(crate) struct SmallMap<V> {
-    items: SmallVec<[(u64, V); 4]>,
-    /// Each key's place in `items`, once there are more than [`LINEAR`].
-    index: Option<HashMap<u64, usize>>,
+    items: SmallVec<[(u64, V); 2]>,
+    /// Each key's place in `items`, once there are more than [`LINEAR`] (boxed:
+    /// the map stays small where it is moved with its owner).
+    index: Option<Box<HashMap<u64, usize>>>,
 }
 
 impl<V> Default for SmallMap<V> {
@@ -78,7 +79,7 @@ impl<V> SmallMap<V> {
                     }
                     None if self.items.len() > LINEAR => {
                         let index = self.items.iter().enumerate();
-                        self.index = Some(index.map(|(i, (k, _))| (*k, i)).collect());
+                        self.index = Some(Box::new(index.map(|(i, (k, _))| (*k, i)).collect()));
                     }
                     None => {}
                 }
@@ -138,14 +139,14 @@ impl<V> SmallMap<V> {
     fn reindex(&mut self) {
         self.index = (self.items.len() > LINEAR).then(|| {
             let index = self.items.iter().enumerate();
-            index.map(|(i, (k, _))| (*k, i)).collect()
+            Box::new(index.map(|(i, (k, _))| (*k, i)).collect())
         });
     }
 }
 
 impl<V> IntoIterator for SmallMap<V> {
     type Item = (u64, V);
-    type IntoIter = smallvec::IntoIter<[(u64, V); 4]>;
+    type IntoIter = smallvec::IntoIter<[(u64, V); 2]>;
     fn into_iter(self) -> Self::IntoIter {
         self.items.into_iter()
     }
