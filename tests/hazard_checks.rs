@@ -1563,6 +1563,75 @@ fn a_waited_submission_is_complete() {
     assert_silent(&s.messages);
 }
 
+/// A queue's complete submissions stop counting as they complete, while those still
+/// running count: with one fill of B waited for and one fill of A running, a copy
+/// of B passes and another fill of A is refused. Then many submissions of a fill
+/// of B, each waited for, pass one after the other (the complete ones are hidden,
+/// and dropped every few submissions), and a running one still counts after them.
+#[test]
+fn complete_submissions_stop_counting_and_running_ones_count() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let o = objects(&s);
+    let (_pools, mut cbs): (Vec<_>, Vec<_>) = (0..4)
+        .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
+        .unzip();
+    let fill_a = |rec: &mut Rec<'_>| rec.fill_buffer(&o.a, 0, 64, 1);
+    let programs: [&Recording<'_>; 4] = [
+        &|rec| fill_b(&o, rec, false),
+        &|rec| fill_a(rec),
+        &|rec| copy_b_to_c(&o, rec, false),
+        &|rec| fill_a(rec),
+    ];
+    for (cb, program) in cbs.iter_mut().zip(programs) {
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        program(&mut rec).expect("recorded");
+        rec.end().expect("end");
+    }
+    let submit = |cb: &tuff::CommandBuffer| {
+        let list = tuff::HandleSlice::new(&[cb]);
+        s.queue
+            .submit(&[tuff::SubmitInfo::new().command_buffers(&list)], None)
+    };
+    s.submit_wait(&cbs[0]);
+    submit(&cbs[1]).expect("a fill of A");
+    if let Err(e) = submit(&cbs[2]) {
+        panic!("a copy of B after its fill completed was refused: {e}");
+    }
+    let refused = submit(&cbs[3]).expect_err("a fill of A while the first one runs");
+    assert!(
+        refused.to_string().contains("WRITE-AFTER-WRITE"),
+        "{refused}"
+    );
+    s.queue.wait_idle().expect("wait");
+    for n in 0..80 {
+        let list = tuff::HandleSlice::new(&[&cbs[0]]);
+        let fence = s
+            .device
+            .create_fence(&tuff::FenceCreateInfo::new())
+            .expect("fence");
+        let info = tuff::SubmitInfo::new().command_buffers(&list);
+        if let Err(e) = s.queue.submit(&[info], Some(&fence)) {
+            panic!("fill {n} of B after the last completed was refused: {e}");
+        }
+        let waited = s
+            .device
+            .wait_for_fences(&fence, true, u64::MAX)
+            .expect("wait");
+        assert_eq!(waited, tuff::SuccessOrTimeout::Success);
+    }
+    submit(&cbs[1]).expect("a fill of A");
+    let refused = submit(&cbs[3]).expect_err("a fill of A while the first one runs");
+    assert!(
+        refused.to_string().contains("WRITE-AFTER-WRITE"),
+        "{refused}"
+    );
+    s.queue.wait_idle().expect("wait");
+    assert_silent(&s.messages);
+}
+
 /// A secondary's commands are checked where the primary executes them: its copy
 /// reads what the primary's fill wrote before, with no barrier between.
 #[test]

@@ -449,8 +449,9 @@ impl Hazard {
 }
 
 impl State {
-    /// The hazard of `u`, touching `texels`, after what the state holds, if any.
-    fn hazard(&self, u: &Usage, texels: &Texels) -> Option<Hazard> {
+    /// The hazard of `u`, touching `texels`, after what the state holds, if any
+    /// (accesses of submissions numbered below `floor` are complete: none).
+    fn hazard(&self, u: &Usage, texels: &Texels, floor: u32) -> Option<Hazard> {
         let found = |kind, earlier: &Usage| {
             Some(Hazard {
                 kind,
@@ -458,7 +459,10 @@ impl State {
                 later: *u,
             })
         };
-        let write = self.write.as_ref().filter(|w| meet(&w.texels, texels));
+        let write = self
+            .write
+            .as_ref()
+            .filter(|w| w.usage.cmd.submission >= floor && meet(&w.texels, texels));
         if !u.write {
             return match write {
                 Some(w) if !w.visible_to(u) => found("READ_AFTER_WRITE", &w.usage),
@@ -468,7 +472,7 @@ impl State {
         let mut reads = self
             .reads
             .iter()
-            .filter(|r| meet(&r.texels, texels))
+            .filter(|r| r.usage.cmd.submission >= floor && meet(&r.texels, texels))
             .peekable();
         if reads.peek().is_some() {
             return reads
@@ -482,27 +486,26 @@ impl State {
     }
 
     /// The hazard of a layout transition between `b`'s scopes, if any: every earlier
-    /// access must be in its first scope.
-    fn transition_hazard(&self, b: &Barrier, cmd: Cmd) -> Option<Hazard> {
+    /// access (of a submission numbered `floor` or later) must be in its first scope.
+    fn transition_hazard(&self, b: &Barrier, cmd: Cmd, floor: u32) -> Option<Hazard> {
         let later = Usage {
             stage: 0,
             access: 0,
             write: true,
             cmd,
         };
-        if let Some(r) = self
-            .reads
-            .iter()
-            .find(|r| (r.usage.stage | r.after) & b.src_exec == 0)
-        {
+        let alive = |c: &Cmd| c.submission >= floor;
+        let mut reads = self.reads.iter().filter(|r| alive(&r.usage.cmd)).peekable();
+        let any_read = reads.peek().is_some();
+        if let Some(r) = reads.find(|r| (r.usage.stage | r.after) & b.src_exec == 0) {
             return Some(Hazard {
                 kind: "WRITE_AFTER_READ",
                 earlier: r.usage,
                 later,
             });
         }
-        if self.reads.is_empty() {
-            if let Some(w) = &self.write {
+        if !any_read {
+            if let Some(w) = self.write.as_ref().filter(|w| alive(&w.usage.cmd)) {
                 if !in_first_scope(w, b) {
                     return Some(Hazard {
                         kind: "WRITE_AFTER_WRITE",
@@ -738,6 +741,10 @@ pub(crate) struct Recording {
     log: Vec<Event>,
     /// A queue's state: nothing is logged.
     unlogged: bool,
+    /// A queue's state: the accesses of submissions numbered below this are
+    /// complete, and no check sees them (they are dropped at the next prune). A
+    /// recording's is 0: every access counts.
+    floor: u32,
     /// Emptied subresource tables of the images an earlier recording touched, for
     /// the images this one touches first (a recording per frame touches the same).
     spare_states: Vec<Vec<State>>,
@@ -895,12 +902,12 @@ impl Recording {
                 .buffers
                 .get(b.as_raw())?
                 .states(*s, *e)
-                .find_map(|st| st.hazard(u, &EVERY_TEXEL)),
+                .find_map(|st| st.hazard(u, &EVERY_TEXEL, self.floor)),
             Memory::Image(i, sel, texels) => {
                 let sub = self.images.get(i.as_raw())?;
                 sub.shape
                     .indices(sel)
-                    .find_map(|k| sub.states[k].hazard(u, texels))
+                    .find_map(|k| sub.states[k].hazard(u, texels, self.floor))
             }
         }
     }
@@ -988,7 +995,7 @@ impl Recording {
         let sub = self.images.get(image.as_raw())?;
         sub.shape
             .indices(sel)
-            .find_map(|k| sub.states[k].transition_hazard(b, cmd))
+            .find_map(|k| sub.states[k].transition_hazard(b, cmd, self.floor))
     }
 
     /// Applies barriers to everything the recording touched (memory barriers and
@@ -1175,7 +1182,15 @@ pub(crate) struct QueueHazards {
     subs: Vec<Replayed>,
     /// The last submission checked and replayed on the state, until it is made.
     staged: Option<Replayed>,
+    /// Submissions begun since the state's complete accesses were last dropped.
+    since_prune: u32,
 }
+
+/// How many submissions a queue's state may keep the accesses of complete ones
+/// (hidden by its floor) before it drops them: a frame loop's next submission
+/// overwrites most of them anyway, and walking every state to drop them cost as
+/// much as replaying the submission.
+const PRUNE_EVERY: u32 = 32;
 
 /// A submission replayed on a queue's state: its number, its submission once made,
 /// its command buffers, and for each batch the barriers of its semaphore waits and
@@ -1216,20 +1231,36 @@ impl QueueHazards {
     /// submission checked was not made.
     pub(crate) fn begin(&mut self, live: &Live) -> u32 {
         let before = self.subs.len();
+        let mut last_done = 0;
         self.subs.retain(|r| {
-            r.sub
+            let running = r
+                .sub
                 .as_ref()
                 .and_then(Vweak::upgrade)
-                .is_some_and(|s| !s.is_complete())
+                .is_some_and(|s| !s.is_complete());
+            if !running {
+                last_done = last_done.max(r.number);
+            }
+            running
         });
+        // The submissions are in number order: the first running one is the floor.
+        let floor = self.subs.first().map_or(self.next + 1, |r| r.number);
+        self.since_prune += 1;
         if self.staged.take().is_some() {
             self.rebuild(live);
-        } else if self.subs.len() < before {
-            // The state holds only the accesses of submissions not known complete
-            // at the last begin: with none completed since, nothing is dropped.
-            let running: SmallVec<[u32; 4]> = self.subs.iter().map(|r| r.number).collect();
-            self.state.prune(|n| !running.contains(&n));
+            self.since_prune = 0;
+        } else if self.subs.len() < before || self.since_prune >= PRUNE_EVERY {
+            // A queue's submissions complete in order (a fence covers every earlier
+            // submission), so those below the floor are the complete ones, and the
+            // floor hides them. Should one above it have completed, or the state
+            // have kept them long enough, they are dropped.
+            if last_done > floor || self.since_prune >= PRUNE_EVERY {
+                let running: SmallVec<[u32; 4]> = self.subs.iter().map(|r| r.number).collect();
+                self.state.prune(|n| !running.contains(&n));
+                self.since_prune = 0;
+            }
         }
+        self.state.floor = floor;
         self.state.unlogged = true;
         self.next += 1;
         self.next
