@@ -58,6 +58,10 @@ enum Cmd {
         /// headless only).
         #[arg(long)]
         vulkano: Option<PathBuf>,
+        /// This binary built at an earlier commit: its `tuff` runs, interleaved with
+        /// this build's, as the variant `tuff-before` (what a change gained).
+        #[arg(long)]
+        before: Option<PathBuf>,
         /// Rounds over the variants.
         #[arg(long, default_value_t = 3)]
         rounds: u32,
@@ -131,6 +135,7 @@ fn main() -> std::process::ExitCode {
             checks,
             untracked,
             vulkano,
+            before,
             rounds,
             counts,
             many_writes,
@@ -155,6 +160,7 @@ fn main() -> std::process::ExitCode {
                 checks,
                 untracked,
                 vulkano,
+                before,
                 rounds,
                 frames,
                 frames_10000,
@@ -210,6 +216,9 @@ fn check_build(variant: &str) -> Result<()> {
 fn run(variant: &str, a: RunArgs) -> Result<()> {
     if !VARIANTS.iter().any(|(v, _)| *v == variant) {
         bail!("unknown variant {variant:?}");
+    }
+    if variant == "tuff-before" {
+        bail!("tuff-before is an earlier build's tuff: run that build with --variant tuff");
     }
     check_build(variant)?;
     if a.png.is_some() && a.window {
@@ -343,6 +352,7 @@ struct Plan {
     checks: Option<PathBuf>,
     untracked: Option<PathBuf>,
     vulkano: Option<PathBuf>,
+    before: Option<PathBuf>,
     rounds: u32,
     frames: u32,
     frames_10000: u32,
@@ -368,6 +378,7 @@ fn bench(
                     "tuff-mt" => plan.mt.as_ref(),
                     "tuff-checks" => plan.checks.as_ref(),
                     "tuff-untracked" => plan.untracked.as_ref(),
+                    "tuff-before" => plan.before.as_ref(),
                     // Headless only.
                     "vulkano" if window => None,
                     "vulkano" => plan.vulkano.as_ref(),
@@ -382,8 +393,13 @@ fn bench(
                 } else {
                     plan.frames
                 };
+                // The earlier build runs its own `tuff`.
+                let run_as = match variant {
+                    "tuff-before" => "tuff",
+                    v => v,
+                };
                 let mut cmd = Command::new(binary);
-                cmd.args(["run", "--variant", variant])
+                cmd.args(["run", "--variant", run_as])
                     .args(["--count", &count.to_string()])
                     .args(["--writes", &writes.to_string()])
                     .args(["--frames", &frames.to_string()])

@@ -10,9 +10,10 @@ use std::fmt::Write as _;
 /// The variants, in the order they run and appear, with their table headings. The
 /// first is the baseline every ratio is to. `vulkano` is the peer: the same frame loop
 /// through vulkano's automatic command buffer builder (headless only).
-pub const VARIANTS: [(&str, &str); 9] = [
+pub const VARIANTS: [(&str, &str); 10] = [
     ("ash", "raw ash"),
     ("tuff", "tuff"),
+    ("tuff-before", "tuff, earlier build"),
     ("tuff-auto", "tuff `auto_sync`"),
     ("tuff-untracked", "tuff without hazard tracking"),
     ("tuff-mt", "tuff `multi_thread`"),
