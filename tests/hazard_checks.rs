@@ -1632,6 +1632,107 @@ fn complete_submissions_stop_counting_and_running_ones_count() {
     assert_silent(&s.messages);
 }
 
+/// An image of `layers` layers for transfers, with its memory.
+fn layered_image(s: &Setup, layers: u32) -> (tuff::Image, tuff::DeviceMemory) {
+    let image = s
+        .device
+        .create_image(
+            &tuff::ImageCreateInfo::new()
+                .image_type(vk::ImageType::TYPE_2D)
+                .format(vk::Format::R8G8B8A8_UNORM)
+                .extent(vk::Extent3D {
+                    width: 4,
+                    height: 4,
+                    depth: 1,
+                })
+                .mip_levels(1)
+                .array_layers(layers)
+                .samples(vk::SampleCountFlags::TYPE_1)
+                .usage(vk::ImageUsageFlags::TRANSFER_DST),
+        )
+        .expect("image");
+    let memory = s.bind_image(&image);
+    (image, memory)
+}
+
+/// Layer `layer` of `image` into TRANSFER_DST_OPTIMAL, then cleared.
+fn clear_layer(rec: &mut Rec<'_>, image: &tuff::Image, layer: u32) -> tuff::Result<()> {
+    let range = vk::ImageSubresourceRange {
+        base_array_layer: layer,
+        ..WHOLE
+    };
+    let b = [tuff::ImageMemoryBarrier::new(image)
+        .old_layout(L::UNDEFINED)
+        .new_layout(L::TRANSFER_DST_OPTIMAL)
+        .dst_access_mask(A::TRANSFER_WRITE)
+        .src_queue_family_index(IGNORED)
+        .dst_queue_family_index(IGNORED)
+        .subresource_range(range)];
+    rec.pipeline_barrier(
+        S::TOP_OF_PIPE,
+        S::TRANSFER,
+        vk::DependencyFlags::empty(),
+        &[],
+        &[],
+        &b,
+    )?;
+    let color = vk::ClearColorValue { float32: [1.0; 4] };
+    rec.clear_color_image(image, L::TRANSFER_DST_OPTIMAL, &color, &[range])
+}
+
+/// A queue's record of an image goes once the image's submissions complete: the
+/// driver may give a destroyed image's handle to a new image of another shape
+/// (lavapipe does, for an image made right after), whose subresources must not be
+/// read through the old one's. Two clears of two layers of the new image, the
+/// first still running, are not a hazard. Without the validation layer, which
+/// gives every object a handle of its own.
+#[test]
+fn a_new_image_under_a_destroyed_one_s_handle_is_tracked_by_its_own_shape() {
+    let _serial = vulkan::serial();
+    let s = setup(false);
+    let mut reused = 0;
+    for _ in 0..4 {
+        let (old_raw, _) = {
+            let (image, memory) = layered_image(&s, 1);
+            let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+            let mut rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            clear_layer(&mut rec, &image, 0).expect("clear");
+            rec.end().expect("end");
+            s.submit_wait(&cb);
+            let raw = tuff::Handle::raw(&image);
+            drop((cb, pool, image));
+            (raw, memory)
+        };
+        let (image, _memory) = layered_image(&s, 2);
+        reused += u32::from(tuff::Handle::raw(&image) == old_raw);
+        let (_pools, mut cbs): (Vec<_>, Vec<_>) = (0..2)
+            .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
+            .unzip();
+        for (layer, cb) in cbs.iter_mut().enumerate() {
+            let mut rec = cb
+                .begin(&tuff::CommandBufferBeginInfo::new())
+                .expect("begin");
+            clear_layer(&mut rec, &image, layer as u32).expect("clear");
+            rec.end().expect("end");
+        }
+        for (layer, cb) in cbs.iter().enumerate() {
+            let list = tuff::HandleSlice::new(&[cb]);
+            let info = tuff::SubmitInfo::new().command_buffers(&list);
+            if let Err(e) = s.queue.submit(&[info], None) {
+                panic!("the clear of layer {layer} of the new image was refused: {e}");
+            }
+        }
+        s.queue.wait_idle().expect("wait");
+    }
+    // Without a handle given again, this test would show nothing.
+    assert!(
+        reused > 0,
+        "the driver never gave a destroyed image's handle again"
+    );
+}
+
 /// A secondary's commands are checked where the primary executes them: its copy
 /// reads what the primary's fill wrote before, with no barrier between.
 #[test]

@@ -390,7 +390,6 @@ impl Uses {
         self.state.lock().event_states.clone()
     }
 
-    /// The descriptor sets the recording that just ended bound (raw set, generation).
     /// An empty list of bound sets for a new recording, in the last recording's
     /// allocation (the last recording is over: a new one begins).
     pub(crate) fn spare_sets(&self) -> Vec<(u64, u64)> {
@@ -399,6 +398,7 @@ impl Uses {
         sets
     }
 
+    /// The descriptor sets the recording that just ended bound (raw set, generation).
     pub(crate) fn set_sets(&self, sets: Vec<(u64, u64)>) {
         self.state.lock().sets = sets;
     }

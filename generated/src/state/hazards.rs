@@ -1126,8 +1126,9 @@ impl Recording {
         Ok(())
     }
 
-    /// Drops every access of a submission `done` says is complete.
-    fn prune(&mut self, done: impl Fn(u32) -> bool) {
+    /// Drops every access of a submission `done` says is complete: of images
+    /// alone, or of buffers too (`buffers`).
+    fn prune(&mut self, done: impl Fn(u32) -> bool, buffers: bool) {
         let keep = |st: &mut State| {
             if st
                 .write
@@ -1143,10 +1144,12 @@ impl Recording {
         // for the next submission, which most often touches it again (a bounded
         // number: no range is no state, as if it were not there).
         let small = self.buffers.len() <= 64;
-        self.buffers.retain(|_, r| {
-            r.0.retain_mut(|(_, _, st)| keep(st));
-            small || !r.0.is_empty()
-        });
+        if buffers {
+            self.buffers.retain(|_, r| {
+                r.0.retain_mut(|(_, _, st)| keep(st));
+                small || !r.0.is_empty()
+            });
+        }
         // An image's states depend on its shape, and its handle may name another
         // image later: it goes, and its table's allocation waits for the next.
         let spare = &mut self.spare_states;
@@ -1252,11 +1255,14 @@ impl QueueHazards {
         } else if self.subs.len() < before || self.since_prune >= PRUNE_EVERY {
             // A queue's submissions complete in order (a fence covers every earlier
             // submission), so those below the floor are the complete ones, and the
-            // floor hides them. Should one above it have completed, or the state
-            // have kept them long enough, they are dropped.
-            if last_done > floor || self.since_prune >= PRUNE_EVERY {
-                let running: SmallVec<[u32; 4]> = self.subs.iter().map(|r| r.number).collect();
-                self.state.prune(|n| !running.contains(&n));
+            // floor hides their buffer accesses. Should one above it have completed,
+            // or the state have kept them long enough, they are dropped. An image's
+            // go at once: its states follow its shape, and once its accesses are
+            // complete it may be destroyed and its handle name an image of another.
+            let all = last_done > floor || self.since_prune >= PRUNE_EVERY;
+            let running: SmallVec<[u32; 4]> = self.subs.iter().map(|r| r.number).collect();
+            self.state.prune(|n| !running.contains(&n), all);
+            if all {
                 self.since_prune = 0;
             }
         }

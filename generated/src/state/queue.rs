@@ -74,7 +74,7 @@ impl Live {
         self.queue_families.lock().get(&queue.as_raw()).copied()
     }
 }
-/// One queue operation and everything it uses.
+
 /// The objects a submission or recording keeps alive: a frame's few inline.
 pub(crate) type Kept = SmallVec<[Retained; 4]>;
 
@@ -82,6 +82,7 @@ pub(crate) type Kept = SmallVec<[Retained; 4]>;
 /// finished: a frame's one batch inline.
 pub(crate) type Completes = SmallVec<[Vec<(vk::Semaphore, u64)>; 2]>;
 
+/// One queue operation and everything it uses.
 pub(crate) struct Submission {
     pub(crate) queue: vk::Queue,
     /// Position in the device's submission order.
