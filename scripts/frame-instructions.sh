@@ -8,8 +8,8 @@
 #
 #   bash scripts/frame-instructions.sh [frames]
 #
-# Builds target/stages/stages and stages-untracked (STAGES_BUILD_ONLY=1
-# scripts/stage-bench.sh) unless they exist, then prints, per frame, the inclusive
+# Builds the release `stages` binary with and without the hazard tracker (as
+# scripts/stage-bench.sh does), then prints, per frame, the inclusive
 # instructions of: the frame's recording (`render::record_frame`, raw ash's
 # `raw_ash::record_frame`), the two submissions (the frame's and the copy-out's,
 # `Frame::submit`), and the copy-out's recording (`render::record_readback`).
@@ -19,9 +19,10 @@ frames=${1:-300}
 . scripts/install-deps.sh
 . scripts/xvfb.sh
 command -v valgrind >/dev/null || { echo "frame-instructions: needs valgrind" >&2; exit 1; }
-if [ ! -x target/stages/stages ] || [ ! -x target/stages/stages-untracked ]; then
-    STAGES_BUILD_ONLY=1 STAGES_NO_COMPILE=1 bash scripts/stage-bench.sh
-fi
+[ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
+cargo build -q --release -p tuff-examples --bin stages
+RUSTFLAGS="--cfg tuff_untracked" CARGO_TARGET_DIR=target/untracked \
+    cargo build -q --release -p tuff-examples --bin stages
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 count() { # variant binary collect-function
@@ -30,9 +31,9 @@ count() { # variant binary collect-function
         --size 1 >/dev/null 2>"$out/$1.log" || { cat "$out/$1.log" >&2; exit 1; }
     callgrind_annotate --inclusive=yes --threshold=100 "$out/$1.out" >"$out/$1.txt"
 }
-count ash target/stages/stages tuff_examples::stages::ash_frames::headless
-count tuff target/stages/stages tuff_examples::stages::tuff_frames::headless
-count tuff-untracked target/stages/stages-untracked tuff_examples::stages::tuff_frames::headless
+count ash target/release/stages tuff_examples::stages::ash_frames::headless
+count tuff target/release/stages tuff_examples::stages::tuff_frames::headless
+count tuff-untracked target/untracked/release/stages tuff_examples::stages::tuff_frames::headless
 per_frame() { # variant function
     local n
     n=$(grep -E "\?\?\?:$2 \[" "$out/$1.txt" | head -1 | awk '{gsub(",", "", $1); print $1}')
