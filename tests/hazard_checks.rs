@@ -193,24 +193,8 @@ fn objects(s: &Setup) -> Objects {
     let (a, m1) = buffer(s);
     let (b, m2) = buffer(s);
     let (c, m3) = buffer(s);
-    let image = s
-        .device
-        .create_image(
-            &tuff::ImageCreateInfo::new()
-                .image_type(vk::ImageType::TYPE_2D)
-                .format(vk::Format::R8G8B8A8_UNORM)
-                .extent(vk::Extent3D {
-                    width: 4,
-                    height: 4,
-                    depth: 1,
-                })
-                .mip_levels(1)
-                .array_layers(1)
-                .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST),
-        )
-        .expect("image");
-    let m4 = s.bind_image(&image);
+    let usage = vk::ImageUsageFlags::TRANSFER_SRC | vk::ImageUsageFlags::TRANSFER_DST;
+    let (image, m4) = layered_image(s, 1, usage);
     let event = s
         .device
         .create_event(&tuff::EventCreateInfo::new())
@@ -1632,8 +1616,12 @@ fn complete_submissions_stop_counting_and_running_ones_count() {
     assert_silent(&s.messages);
 }
 
-/// An image of `layers` layers for transfers, with its memory.
-fn layered_image(s: &Setup, layers: u32) -> (tuff::Image, tuff::DeviceMemory) {
+/// A 4x4 RGBA image of `layers` layers for `usage`, with its memory.
+fn layered_image(
+    s: &Setup,
+    layers: u32,
+    usage: vk::ImageUsageFlags,
+) -> (tuff::Image, tuff::DeviceMemory) {
     let image = s
         .device
         .create_image(
@@ -1648,7 +1636,7 @@ fn layered_image(s: &Setup, layers: u32) -> (tuff::Image, tuff::DeviceMemory) {
                 .mip_levels(1)
                 .array_layers(layers)
                 .samples(vk::SampleCountFlags::TYPE_1)
-                .usage(vk::ImageUsageFlags::TRANSFER_DST),
+                .usage(usage),
         )
         .expect("image");
     let memory = s.bind_image(&image);
@@ -1693,7 +1681,7 @@ fn a_new_image_under_a_destroyed_one_s_handle_is_tracked_by_its_own_shape() {
     let mut reused = 0;
     for _ in 0..4 {
         let (old_raw, _) = {
-            let (image, memory) = layered_image(&s, 1);
+            let (image, memory) = layered_image(&s, 1, vk::ImageUsageFlags::TRANSFER_DST);
             let (pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
             let mut rec = cb
                 .begin(&tuff::CommandBufferBeginInfo::new())
@@ -1705,7 +1693,7 @@ fn a_new_image_under_a_destroyed_one_s_handle_is_tracked_by_its_own_shape() {
             drop((cb, pool, image));
             (raw, memory)
         };
-        let (image, _memory) = layered_image(&s, 2);
+        let (image, _memory) = layered_image(&s, 2, vk::ImageUsageFlags::TRANSFER_DST);
         reused += u32::from(tuff::Handle::raw(&image) == old_raw);
         let (_pools, mut cbs): (Vec<_>, Vec<_>) = (0..2)
             .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
