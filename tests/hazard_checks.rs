@@ -1466,6 +1466,32 @@ fn submissions_are_ordered_after_what_the_queue_did_before() {
 /// Something recorded into a command buffer.
 type Recording<'a> = dyn Fn(&mut Rec<'_>) -> tuff::Result<()> + 'a;
 
+/// A primary command buffer (with its pool) for each program, recorded and ended.
+fn recorded(
+    s: &Setup,
+    programs: &[&Recording<'_>],
+) -> (Vec<tuff::CommandPool>, Vec<tuff::CommandBuffer>) {
+    let (pools, mut cbs): (Vec<_>, Vec<_>) = programs
+        .iter()
+        .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
+        .unzip();
+    for (cb, program) in cbs.iter_mut().zip(programs) {
+        let mut rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        program(&mut rec).expect("recorded");
+        rec.end().expect("end");
+    }
+    (pools, cbs)
+}
+
+/// Submits `cb` alone, with no fence.
+fn submit_alone(s: &Setup, cb: &tuff::CommandBuffer) -> tuff::Result<()> {
+    let list = tuff::HandleSlice::new(&[cb]);
+    s.queue
+        .submit(&[tuff::SubmitInfo::new().command_buffers(&list)], None)
+}
+
 /// A refused submission leaves nothing of itself in the queue's state, neither
 /// what its command buffer wrote nor what its barriers ordered before the hazard:
 /// the next submissions are compared with the submissions that were made only.
@@ -1474,9 +1500,6 @@ fn a_refused_submission_leaves_nothing_behind() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let o = objects(&s);
-    let (_pools, mut cbs): (Vec<_>, Vec<_>) = (0..4)
-        .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
-        .unzip();
     let fill_a = |rec: &mut Rec<'_>| rec.fill_buffer(&o.a, 0, 64, 1);
     let programs: [&Recording<'_>; 4] = [
         &|rec| fill_b(&o, rec, false),
@@ -1490,18 +1513,8 @@ fn a_refused_submission_leaves_nothing_behind() {
         &|rec| fill_a(rec),
         &|rec| copy_b_to_c(&o, rec, false),
     ];
-    for (cb, program) in cbs.iter_mut().zip(programs) {
-        let mut rec = cb
-            .begin(&tuff::CommandBufferBeginInfo::new())
-            .expect("begin");
-        program(&mut rec).expect("recorded");
-        rec.end().expect("end");
-    }
-    let submit = |cb: &tuff::CommandBuffer| {
-        let list = tuff::HandleSlice::new(&[cb]);
-        s.queue
-            .submit(&[tuff::SubmitInfo::new().command_buffers(&list)], None)
-    };
+    let (_pools, cbs) = recorded(&s, &programs);
+    let submit = |cb| submit_alone(&s, cb);
     submit(&cbs[0]).expect("the fill of B");
     let refused = submit(&cbs[1]).expect_err("a second fill of B not ordered after the first");
     assert!(
@@ -1557,9 +1570,6 @@ fn complete_submissions_stop_counting_and_running_ones_count() {
     let _serial = vulkan::serial();
     let s = setup(true);
     let o = objects(&s);
-    let (_pools, mut cbs): (Vec<_>, Vec<_>) = (0..4)
-        .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
-        .unzip();
     let fill_a = |rec: &mut Rec<'_>| rec.fill_buffer(&o.a, 0, 64, 1);
     let programs: [&Recording<'_>; 4] = [
         &|rec| fill_b(&o, rec, false),
@@ -1567,18 +1577,8 @@ fn complete_submissions_stop_counting_and_running_ones_count() {
         &|rec| copy_b_to_c(&o, rec, false),
         &|rec| fill_a(rec),
     ];
-    for (cb, program) in cbs.iter_mut().zip(programs) {
-        let mut rec = cb
-            .begin(&tuff::CommandBufferBeginInfo::new())
-            .expect("begin");
-        program(&mut rec).expect("recorded");
-        rec.end().expect("end");
-    }
-    let submit = |cb: &tuff::CommandBuffer| {
-        let list = tuff::HandleSlice::new(&[cb]);
-        s.queue
-            .submit(&[tuff::SubmitInfo::new().command_buffers(&list)], None)
-    };
+    let (_pools, cbs) = recorded(&s, &programs);
+    let submit = |cb| submit_alone(&s, cb);
     s.submit_wait(&cbs[0]);
     submit(&cbs[1]).expect("a fill of A");
     if let Err(e) = submit(&cbs[2]) {
@@ -1695,20 +1695,12 @@ fn a_new_image_under_a_destroyed_one_s_handle_is_tracked_by_its_own_shape() {
         };
         let (image, _memory) = layered_image(&s, 2, vk::ImageUsageFlags::TRANSFER_DST);
         reused += u32::from(tuff::Handle::raw(&image) == old_raw);
-        let (_pools, mut cbs): (Vec<_>, Vec<_>) = (0..2)
-            .map(|_| s.command_buffer(vk::CommandBufferLevel::PRIMARY))
-            .unzip();
-        for (layer, cb) in cbs.iter_mut().enumerate() {
-            let mut rec = cb
-                .begin(&tuff::CommandBufferBeginInfo::new())
-                .expect("begin");
-            clear_layer(&mut rec, &image, layer as u32).expect("clear");
-            rec.end().expect("end");
-        }
+        let programs: [&Recording<'_>; 2] = [&|rec| clear_layer(rec, &image, 0), &|rec| {
+            clear_layer(rec, &image, 1)
+        }];
+        let (_pools, cbs) = recorded(&s, &programs);
         for (layer, cb) in cbs.iter().enumerate() {
-            let list = tuff::HandleSlice::new(&[cb]);
-            let info = tuff::SubmitInfo::new().command_buffers(&list);
-            if let Err(e) = s.queue.submit(&[info], None) {
+            if let Err(e) = submit_alone(&s, cb) {
                 panic!("the clear of layer {layer} of the new image was refused: {e}");
             }
         }
