@@ -192,18 +192,22 @@ fn first_clear(words: &[u64], start: usize, end: usize) -> Option<usize> {
         // Bits `lo..hi` of word `w`.
         let lo = at - w * 64;
         let hi = end.min(w * 64 + 64) - w * 64;
-        let range = if hi - lo == 64 {
-            !0
-        } else {
-            ((1u64 << (hi - lo)) - 1) << lo
-        };
-        let clear = !words.get(w).copied().unwrap_or(0) & range;
+        let clear = !words.get(w).copied().unwrap_or(0) & bit_range(lo, hi);
         if clear != 0 {
             return Some(w * 64 + clear.trailing_zeros() as usize);
         }
         at = w * 64 + hi;
     }
     None
+}
+
+/// Bits `lo..hi` of a word (`lo < hi <= 64`) set.
+fn bit_range(lo: usize, hi: usize) -> u64 {
+    if hi - lo == 64 {
+        !0
+    } else {
+        ((1u64 << (hi - lo)) - 1) << lo
+    }
 }
 
 /// Sets bits `start..end` of `words` (64 to a word, grown as needed), a word at a
@@ -219,12 +223,7 @@ fn set_bits(words: &mut SmallVec<[u64; 4]>, start: usize, end: usize) {
         // Bits `lo..hi` of word `w`.
         let lo = start.max(w * 64) - w * 64;
         let hi = end.min(w * 64 + 64) - w * 64;
-        let ones = if hi - lo == 64 {
-            !0
-        } else {
-            ((1u64 << (hi - lo)) - 1) << lo
-        };
-        words[w] |= ones;
+        words[w] |= bit_range(lo, hi);
     }
 }
 

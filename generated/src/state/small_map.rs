@@ -10,6 +10,7 @@ use smallvec::SmallVec;
 const LINEAR: usize = 16;
 
 /// A map from raw handles to `V`, in insertion order.
+#[derive(Clone)]
 pub(crate) struct SmallMap<V> {
     items: SmallVec<[(u64, V); 2]>,
     /// Each key's place in `items`, once there are more than [`LINEAR`] (boxed:
@@ -29,15 +30,6 @@ impl<V> Default for SmallMap<V> {
 impl<V: core::fmt::Debug> core::fmt::Debug for SmallMap<V> {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_map().entries(self.iter()).finish()
-    }
-}
-
-impl<V: Clone> Clone for SmallMap<V> {
-    fn clone(&self) -> Self {
-        SmallMap {
-            items: self.items.clone(),
-            index: self.index.clone(),
-        }
     }
 }
 
