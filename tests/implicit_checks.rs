@@ -37,6 +37,16 @@ fn enum_and_flags_values_are_checked() {
         vuid(d.create_buffer(&undefined_bit)),
         "VUID-VkBufferCreateInfo-usage-parameter"
     );
+    // A bit of VK_EXT_transform_feedback, which this device did not enable, beside
+    // a core bit: the core bits alone pass without looking up what is enabled, and
+    // any other bit is still looked up.
+    let extension_bit = tuff::BufferCreateInfo::new().size(64).usage(
+        vk::BufferUsageFlags::UNIFORM_BUFFER | vk::BufferUsageFlags::TRANSFORM_FEEDBACK_BUFFER_EXT,
+    );
+    assert_eq!(
+        vuid(d.create_buffer(&extension_bit)),
+        "VUID-VkBufferCreateInfo-usage-parameter"
+    );
     let no_usage = tuff::BufferCreateInfo::new().size(64);
     assert_eq!(
         vuid(d.create_buffer(&no_usage)),

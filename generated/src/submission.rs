@@ -294,7 +294,7 @@ fn record_event_states(device: &Device, cbs: &[vk::CommandBuffer], sub: &Vrc<Sub
 
 /// The descriptor sets that `cbs` and the secondaries they execute bound (each with
 /// the generation it had then), and the events their event commands name.
-fn used(
+pub(crate) fn used(
     device: &Device,
     cbs: &[vk::CommandBuffer],
 ) -> (crate::state::SetsUsed, crate::state::EventsUsed) {
@@ -311,16 +311,16 @@ fn used(
     (sets, events)
 }
 
-/// Refuses command buffers whose event commands name an event that a submission to
-/// another queue, which may still be executing, names too (`vuid` names the rule).
+/// Refuses command buffers whose event commands name an event (of `events`, those
+/// they name) that a submission to another queue, which may still be executing,
+/// names too (`vuid` names the rule).
 pub(crate) fn check_events(
     device: &Device,
     queue: vk::Queue,
-    cbs: &[vk::CommandBuffer],
+    events: &crate::state::EventsUsed,
     vuid: &'static str,
 ) -> Result<()> {
-    let (_, events) = used(device, cbs);
-    for event in events {
+    for &event in events {
         for sub in device.live().event_submissions(event, queue) {
             if !sub.poll(device) {
                 return refuse(
@@ -333,18 +333,18 @@ pub(crate) fn check_events(
     Ok(())
 }
 
-/// Takes the device's descriptor gate for a submission of `cbs` (held until its
-/// bookkeeping is done, so no update runs between this check and the submission's
-/// record of the sets it uses), and refuses command buffers that bound a descriptor
-/// set which an update has changed since: the update left them invalid
-/// (`executable` names the rule).
+/// Takes the device's descriptor gate for a submission (held until its bookkeeping
+/// is done, so no update runs between this check and the submission's record of the
+/// sets it uses), and refuses command buffers that bound a descriptor set (of
+/// `sets`, those they bound) which an update has changed since: the update left them
+/// invalid (`executable` names the rule).
 pub(crate) fn sets_hold<'d>(
     device: &'d Device,
-    cbs: &[vk::CommandBuffer],
+    sets: &crate::state::SetsUsed,
     executable: &'static str,
 ) -> Result<tuff_runtime::VutexGuard<'d, ()>> {
     let gate = device.live().descriptor_gate();
-    if let Some(set) = device.live().stale_set(&used(device, cbs).0) {
+    if let Some(set) = device.live().stale_set(sets) {
         refuse(
             executable,
             format!("a command buffer is invalid: descriptor set 0x{set:x}, which it binds, was updated since it was recorded (update sets before recording, or bindings with UPDATE_AFTER_BIND)"),

@@ -195,12 +195,14 @@ fn hold<'q, B: Batch>(
 ) -> Result<tuff_runtime::VutexGuard<'q, ()>> {
     let device = queue.parent();
     let b = Batches::of(device.live(), batches);
-    let gate = submission::sets_hold(device, &b.command_buffers, rules.submit.executable)?;
+    // The sets and events the command buffers use, read once for the checks below.
+    let (sets, events) = submission::used(device, &b.command_buffers);
+    let gate = submission::sets_hold(device, &sets, rules.submit.executable)?;
     // Under the gate: a host reset of queries checks the submissions made, and
     // records its reset, under it too.
     submission::check_queries(device, &b.command_buffers)?;
     if !rules.events.is_empty() {
-        submission::check_events(device, queue.raw(), &b.command_buffers, rules.events)?;
+        submission::check_events(device, queue.raw(), &events, rules.events)?;
         submission::check_event_states(device, &b.command_buffers)?;
     }
     submission::check_binary_ops(device, queue.raw(), &b.ops, rules.binary)?;

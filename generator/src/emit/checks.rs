@@ -489,8 +489,27 @@ fn flags_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
     });
     let msg =
         format!("{{v:?}} sets bits of `{t}` that no version or extension enabled here defines");
+    // The bits of core 1.0, which every scope enables (the first origin, when it is
+    // VK_VERSION_1_0): a value of those alone, the common case on a draw's path,
+    // needs no origin looked up.
+    let core = match origins.minors.first() {
+        Some(0) => by_origin
+            .iter()
+            .filter(|(idx, _)| idx.contains(&0))
+            .fold(0, |m, (_, mask)| m | mask),
+        _ => 0,
+    };
+    let fast = (core != 0).then(|| {
+        let core = Literal::u64_unsuffixed(core);
+        quote! {
+            if (v.as_raw() as u64) & !#core == 0 {
+                return Ok(());
+            }
+        }
+    });
     quote! {
         pub(crate) fn #f(v: #ty, s: &Scope<'_>, vuid: &'static str) -> Result<()> {
+            #fast
             let mut valid: u64 = 0;
             #(#adds)*
             if (v.as_raw() as u64) & !valid == 0 {

@@ -28,6 +28,9 @@ pub(crate) fn flags_acceleration_structure_create_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -115,6 +118,9 @@ pub(crate) fn flags_access_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !131071 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 131071;
@@ -156,6 +162,9 @@ pub(crate) fn flags_access_flags2(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !30064902143 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 30064902143;
@@ -200,6 +209,9 @@ pub(crate) fn flags_attachment_description_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -323,6 +335,9 @@ pub(crate) fn flags_buffer_create_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -352,6 +367,9 @@ pub(crate) fn flags_buffer_usage_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !511 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 511;
@@ -399,6 +417,9 @@ pub(crate) fn flags_build_acceleration_structure_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !31 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[39u16]) {
         valid |= 448;
@@ -425,6 +446,9 @@ pub(crate) fn flags_build_micromap_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -485,6 +509,9 @@ pub(crate) fn flags_color_component_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -547,6 +574,9 @@ pub(crate) fn flags_command_buffer_reset_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -567,6 +597,9 @@ pub(crate) fn flags_command_buffer_usage_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -587,6 +620,9 @@ pub(crate) fn flags_command_pool_create_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !3 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 3;
@@ -610,6 +646,9 @@ pub(crate) fn flags_command_pool_reset_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -710,6 +749,9 @@ pub(crate) fn flags_conditional_rendering_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -831,6 +873,9 @@ pub(crate) fn flags_cull_mode_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !3 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 3;
@@ -851,6 +896,9 @@ pub(crate) fn flags_debug_report_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !31 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 31;
@@ -917,6 +965,9 @@ pub(crate) fn flags_debug_utils_message_severity_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !4369 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 4369;
@@ -937,6 +988,9 @@ pub(crate) fn flags_debug_utils_message_type_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -960,6 +1014,9 @@ pub(crate) fn flags_dependency_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -989,6 +1046,9 @@ pub(crate) fn flags_descriptor_binding_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[16u16, 0u16]) {
         valid |= 15;
@@ -1009,6 +1069,9 @@ pub(crate) fn flags_descriptor_pool_create_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -1110,6 +1173,9 @@ pub(crate) fn flags_device_address_binding_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -1150,6 +1216,9 @@ pub(crate) fn flags_device_diagnostics_config_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -1210,6 +1279,9 @@ pub(crate) fn flags_device_group_present_mode_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -1444,6 +1516,9 @@ pub(crate) fn flags_external_fence_handle_type_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[74u16, 0u16]) {
         valid |= 15;
@@ -1489,6 +1564,9 @@ pub(crate) fn flags_external_memory_handle_type_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !127 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[5u16]) {
         valid |= 1024;
@@ -1524,6 +1602,9 @@ pub(crate) fn flags_external_memory_handle_type_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -1565,6 +1646,9 @@ pub(crate) fn flags_external_semaphore_handle_type_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !31 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[57u16]) {
         valid |= 128;
@@ -1588,6 +1672,9 @@ pub(crate) fn flags_fence_create_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -1608,6 +1695,9 @@ pub(crate) fn flags_fence_import_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[73u16, 0u16]) {
         valid |= 1;
@@ -1675,6 +1765,9 @@ pub(crate) fn flags_format_feature_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !8191 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 8191;
@@ -1802,6 +1895,9 @@ pub(crate) fn flags_geometry_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !3 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[114u16, 0u16]) {
         valid |= 3;
@@ -1843,6 +1939,9 @@ pub(crate) fn flags_graphics_pipeline_library_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -1886,6 +1985,9 @@ pub(crate) fn flags_image_aspect_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -1912,6 +2014,9 @@ pub(crate) fn flags_image_constraints_info_flags_fuchsia(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !31 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 31;
@@ -1932,6 +2037,9 @@ pub(crate) fn flags_image_create_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !31 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 31;
@@ -2062,6 +2170,9 @@ pub(crate) fn flags_image_usage_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !255 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 255;
@@ -2171,6 +2282,9 @@ pub(crate) fn flags_indirect_commands_layout_usage_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -2212,6 +2326,9 @@ pub(crate) fn flags_indirect_state_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -2292,6 +2409,9 @@ pub(crate) fn flags_memory_allocate_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[66u16, 2u16]) {
         valid |= 6;
@@ -2315,6 +2435,9 @@ pub(crate) fn flags_memory_decompression_method_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -2355,6 +2478,9 @@ pub(crate) fn flags_micromap_create_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -2434,6 +2560,9 @@ pub(crate) fn flags_optical_flow_execute_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -2454,6 +2583,9 @@ pub(crate) fn flags_optical_flow_grid_size_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -2514,6 +2646,9 @@ pub(crate) fn flags_optical_flow_session_create_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !31 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 31;
@@ -2534,6 +2669,9 @@ pub(crate) fn flags_optical_flow_usage_flags_nv(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !31 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 31;
@@ -2716,6 +2854,9 @@ pub(crate) fn flags_pipeline_create_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -2922,6 +3063,9 @@ pub(crate) fn flags_pipeline_stage_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !131071 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 131071;
@@ -2966,6 +3110,9 @@ pub(crate) fn flags_pipeline_stage_flags2(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !545460977663 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 545460977663;
@@ -3034,6 +3181,9 @@ pub(crate) fn flags_present_gravity_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -3075,6 +3225,9 @@ pub(crate) fn flags_present_scaling_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -3135,6 +3288,9 @@ pub(crate) fn flags_query_control_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -3175,6 +3331,9 @@ pub(crate) fn flags_query_result_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -3308,6 +3467,9 @@ pub(crate) fn flags_rendering_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -3521,6 +3683,9 @@ pub(crate) fn flags_semaphore_import_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[76u16, 0u16]) {
         valid |= 1;
@@ -3561,6 +3726,9 @@ pub(crate) fn flags_semaphore_wait_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[99u16, 0u16]) {
         valid |= 1;
@@ -3645,6 +3813,9 @@ pub(crate) fn flags_shader_stage_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !63 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 63;
@@ -3717,6 +3888,9 @@ pub(crate) fn flags_sparse_memory_bind_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -3737,6 +3911,9 @@ pub(crate) fn flags_stencil_face_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !3 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 3;
@@ -3777,6 +3954,9 @@ pub(crate) fn flags_submit_flags(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -3866,6 +4046,9 @@ pub(crate) fn flags_surface_counter_flags_ext(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -4055,6 +4238,9 @@ pub(crate) fn flags_video_chroma_subsampling_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !15 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 15;
@@ -4097,6 +4283,9 @@ pub(crate) fn flags_video_coding_control_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
@@ -4120,6 +4309,9 @@ pub(crate) fn flags_video_component_bit_depth_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !21 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 21;
@@ -4160,6 +4352,9 @@ pub(crate) fn flags_video_decode_usage_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !7 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 7;
@@ -4180,6 +4375,9 @@ pub(crate) fn flags_video_session_create_flags_khr(
     s: &Scope<'_>,
     vuid: &'static str,
 ) -> Result<()> {
+    if (v.as_raw() as u64) & !1 == 0 {
+        return Ok(());
+    }
     let mut valid: u64 = 0;
     if s.enabled(&[0u16]) {
         valid |= 1;
