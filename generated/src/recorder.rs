@@ -487,9 +487,9 @@ pub struct Recorder<'c, S: Scope> {
     /// (only through `begin_rendering_unchecked`).
     pub(crate) suspends: bool,
     /// The image layouts the recording needs at its start and leaves so far.
-    pub(crate) layouts: crate::state::layouts::Recording,
+    pub(crate) layouts: Box<crate::state::layouts::Recording>,
     /// What the recording's commands read and write, and the barriers between.
-    pub(crate) hazards: crate::state::hazards::Recording,
+    pub(crate) hazards: Box<crate::state::hazards::Recording>,
     /// The queries the recording needs reset at its start and leaves so far.
     pub(crate) query_states: crate::state::queries::Recording,
     /// What the recording does to events so far.
@@ -563,6 +563,7 @@ impl<'c> Recorder<'c, Outside> {
     ) -> Self {
         let queue_flags = cb.parent().queue_flags();
         let hazards = cb.uses().spare_recording();
+        let layouts = cb.uses().spare_layouts_box();
         let sets = cb.uses().spare_sets();
         Recorder {
             device: cb.device().clone(),
@@ -582,7 +583,7 @@ impl<'c> Recorder<'c, Outside> {
             queries: Vec::new(),
             query_types: Vec::new(),
             suspends: false,
-            layouts: Default::default(),
+            layouts,
             hazards,
             query_states: Default::default(),
             event_states: Default::default(),

@@ -62,6 +62,8 @@ struct UsesState {
     /// The last recording's layouts once a new recording began, for the next end
     /// to write its own into the same allocation where nothing else holds it.
     spare_layouts: Option<Vrc<crate::state::layouts::Recording>>,
+    /// The box the last recording kept its image layouts in, empty.
+    layouts_box: Option<Box<crate::state::layouts::Recording>>,
     /// What the last recording did to memory, for its submissions to replay; `None`
     /// while recording, or when it did nothing the hazard tracker saw.
     hazards: Option<Vrc<Vec<crate::state::hazards::Event>>>,
@@ -69,7 +71,7 @@ struct UsesState {
     auto_barriers: u32,
     /// The last recording's hazard tracker, emptied, for the next one to fill
     /// without allocating its tables again.
-    spare: Option<crate::state::hazards::Recording>,
+    spare: Option<Box<crate::state::hazards::Recording>>,
     /// The descriptor sets the last recording bound, each with its generation then.
     sets: Vec<(u64, u64)>,
     /// The queue family of the buffer's pool and whether the pool is protected, as
@@ -293,9 +295,12 @@ impl Uses {
         state.executable = executable;
     }
 
-    /// The image layouts of the recording that just ended.
-    pub(crate) fn set_layouts(&self, layouts: crate::state::layouts::Recording) {
+    /// The image layouts of the recording that just ended (its box, emptied, waits
+    /// for the next recording).
+    pub(crate) fn set_layouts(&self, mut boxed: Box<crate::state::layouts::Recording>) {
+        let layouts = core::mem::take(&mut *boxed);
         let mut state = self.state.lock();
+        state.layouts_box = Some(boxed);
         let spare = state.spare_layouts.take();
         if layouts.is_empty() {
             state.layouts = None;
@@ -315,10 +320,16 @@ impl Uses {
         });
     }
 
+    /// An empty box for a new recording's image layouts: the last recording's
+    /// (boxed: the recorder that holds it is moved whole between its states).
+    pub(crate) fn spare_layouts_box(&self) -> Box<crate::state::layouts::Recording> {
+        self.state.lock().layouts_box.take().unwrap_or_default()
+    }
+
     /// What the recording that just ended did to memory (its log, for its
     /// submissions), how many barriers automatic synchronization recorded into it,
     /// and its tables (to be emptied and filled again by the next recording).
-    pub(crate) fn set_hazards(&self, mut recording: crate::state::hazards::Recording) {
+    pub(crate) fn set_hazards(&self, mut recording: Box<crate::state::hazards::Recording>) {
         let log = recording.take_log();
         let mut state = self.state.lock();
         state.hazards = (!log.is_empty()).then(|| Vrc::new(log));
@@ -340,7 +351,7 @@ impl Uses {
     /// An empty hazard tracker for a new recording, in the last recording's
     /// allocations where it can (its log, unless a submission check still holds
     /// it, and its tables). The last recording is over: a new one begins.
-    pub(crate) fn spare_recording(&self) -> crate::state::hazards::Recording {
+    pub(crate) fn spare_recording(&self) -> Box<crate::state::hazards::Recording> {
         let (taken, spare) = {
             let mut state = self.state.lock();
             state.auto_barriers = 0;
@@ -349,7 +360,10 @@ impl Uses {
         let log = taken
             .and_then(|log| Vrc::try_unwrap(log).ok())
             .unwrap_or_default();
-        spare.unwrap_or_default().recycled(log)
+        // Boxed: the recorder that holds it is moved whole between its states.
+        let mut recording = spare.unwrap_or_default();
+        recording.recycle(log);
+        recording
     }
 
     /// The image layouts the last recording needs at its start and leaves.

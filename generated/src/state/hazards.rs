@@ -804,6 +804,12 @@ impl Recording {
         }
     }
 
+    /// Empties this recording for a new one that logs into `log`, as
+    /// [`Recording::recycled`] does, in place.
+    pub(crate) fn recycle(&mut self, log: Vec<Event>) {
+        *self = core::mem::take(self).recycled(log);
+    }
+
     /// The next command's place in the recording.
     pub(crate) fn next(&mut self, name: &'static str) -> Cmd {
         let cmd = Cmd {
