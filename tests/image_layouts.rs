@@ -1011,6 +1011,152 @@ fn a_render_pass_begin_is_checked_against_its_framebuffer() {
     assert_silent(&s.messages);
 }
 
+/// A command buffer remembers its last render pass begin that passed, to skip
+/// its checks when the next is the same: a begin of the same render pass and
+/// framebuffer with another render area or fewer clear values is still refused, in
+/// the same recording and in the next, through either command, and the same begin
+/// again passes (the layer quiet).
+#[test]
+fn a_render_pass_begin_like_the_last_one_is_still_checked() {
+    let _serial = vulkan::serial();
+    let s = setup(true);
+    let target = s.color_target(8, vk::ImageUsageFlags::empty());
+    let clear = [vk::ClearValue::default()];
+    let good = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(AREA)
+        .clear_values(&clear);
+    let wide = vk::Rect2D {
+        extent: vk::Extent2D {
+            width: 9,
+            height: 8,
+        },
+        ..AREA
+    };
+    let too_wide = tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer)
+        .render_area(wide)
+        .clear_values(&clear);
+    let no_clear =
+        tuff::RenderPassBeginInfo::new(&target.render_pass, &target.framebuffer).render_area(AREA);
+    let contents = tuff::SubpassBeginInfo::new().contents(vk::SubpassContents::INLINE);
+    let end = tuff::SubpassEndInfo::new();
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    for round in 0..2 {
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        rec.begin_render_pass(&good, vk::SubpassContents::INLINE)
+            .end_render_pass()
+            .end()
+            .unwrap_or_else(|e| panic!("round {round}: the begin: {e}"));
+        // In the recording of the begin that passed, and in the next.
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let rec = rec
+            .begin_render_pass(&good, vk::SubpassContents::INLINE)
+            .end_render_pass()
+            .begin_render_pass(&too_wide, vk::SubpassContents::INLINE)
+            .end_render_pass();
+        assert_eq!(vuid(rec.end()), "VUID-VkRenderPassBeginInfo-pNext-02852");
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let rec = rec
+            .begin_render_pass(&too_wide, vk::SubpassContents::INLINE)
+            .end_render_pass();
+        assert_eq!(vuid(rec.end()), "VUID-VkRenderPassBeginInfo-pNext-02852");
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        let rec = rec
+            .begin_render_pass(&good, vk::SubpassContents::INLINE)
+            .end_render_pass()
+            .begin_render_pass(&no_clear, vk::SubpassContents::INLINE)
+            .end_render_pass();
+        assert_eq!(
+            vuid(rec.end()),
+            "VUID-VkRenderPassBeginInfo-clearValueCount-00902"
+        );
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        rec.begin_render_pass2(&good, &contents)
+            .end_render_pass2(&end)
+            .end()
+            .unwrap_or_else(|e| panic!("round {round}: the second command: {e}"));
+    }
+    assert_silent(&s.messages);
+}
+
+/// The begin a command buffer remembers names its framebuffer by the framebuffer's
+/// record, not its handle: once the framebuffer is destroyed and the driver gives
+/// its handle to a smaller one, the render area the old one held is refused on the
+/// new one. Without the layer, which gives every object a unique handle; the test
+/// asserts that the driver did reuse a handle.
+#[test]
+fn a_new_framebuffer_under_a_destroyed_one_s_handle_is_checked() {
+    let _serial = vulkan::serial();
+    let s = setup(false);
+    let target = s.color_target(8, vk::ImageUsageFlags::empty());
+    let framebuffer = |size: u32| {
+        s.device
+            .create_framebuffer(
+                &tuff::FramebufferCreateInfo::new(&target.render_pass)
+                    .attachments(&target.view)
+                    .width(size)
+                    .height(size)
+                    .layers(1),
+            )
+            .expect("framebuffer")
+    };
+    let clear = [vk::ClearValue::default()];
+    let (_pool, mut cb) = s.command_buffer(vk::CommandBufferLevel::PRIMARY);
+    let mut reused = 0;
+    for _ in 0..8 {
+        let large = framebuffer(8);
+        let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, &large)
+            .render_area(AREA)
+            .clear_values(&clear);
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        rec.begin_render_pass(&begin, vk::SubpassContents::INLINE)
+            .end_render_pass()
+            .end()
+            .expect("the whole framebuffer");
+        let old = tuff::Handle::raw(&large);
+        // The next recording lets go of the framebuffer the last one kept.
+        cb.begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin")
+            .end()
+            .expect("an empty recording");
+        drop(large);
+        // The driver frees the old one's memory with another block of its size
+        // and hands them out last freed first: one more made and destroyed, and a
+        // few smaller ones, give one of them the old handle.
+        drop(framebuffer(8));
+        let smaller: Vec<tuff::Framebuffer> = (0..4).map(|_| framebuffer(4)).collect();
+        let Some(small) = smaller.iter().find(|f| tuff::Handle::raw(*f) == old) else {
+            continue;
+        };
+        let rec = cb
+            .begin(&tuff::CommandBufferBeginInfo::new())
+            .expect("begin");
+        reused += 1;
+        let begin = tuff::RenderPassBeginInfo::new(&target.render_pass, small)
+            .render_area(AREA)
+            .clear_values(&clear);
+        let rec = rec
+            .begin_render_pass(&begin, vk::SubpassContents::INLINE)
+            .end_render_pass();
+        assert_eq!(vuid(rec.end()), "VUID-VkRenderPassBeginInfo-pNext-02852");
+    }
+    assert!(
+        reused > 0,
+        "the driver gave no framebuffer a destroyed one's handle"
+    );
+}
+
 /// A chained `VkDeviceGroupRenderPassBeginInfo` (on lavapipe, a group of one):
 /// its device mask against the device's physical devices, its render areas'
 /// count, and each area against the framebuffer and the limits; the layer names

@@ -351,6 +351,45 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
 ) -> Result<()> {
     let live = recorder.device().live();
     let raw = render_pass_begin.as_raw();
+    // A frame's begin is most often the last one's on this buffer: the same
+    // records, parameters and pool give the same verdict (`BeginChecked`). A chain
+    // (device group, imageless views) is checked every time.
+    let checked = match (raw.p_next.is_null(), live.render_pass(raw.render_pass)) {
+        (true, Some(pass)) => {
+            live.framebuffer_record_views(raw.framebuffer)
+                .map(|views| crate::state::BeginChecked {
+                    pass,
+                    views,
+                    area: raw.render_area,
+                    clears: raw.clear_value_count,
+                    rules: core::ptr::from_ref(rules) as usize,
+                })
+        }
+        _ => None,
+    };
+    let uses = recorder.command_buffer().uses();
+    if checked.as_ref().is_some_and(|c| uses.begin_checked(c)) {
+        return super::image_layouts::render_pass_layout_checks(
+            recorder,
+            render_pass_begin,
+            rules.initial,
+        );
+    }
+    begin_checks(recorder, render_pass_begin, rules)?;
+    if let Some(c) = checked {
+        uses.set_begin_checked(c);
+    }
+    super::image_layouts::render_pass_layout_checks(recorder, render_pass_begin, rules.initial)
+}
+
+/// The checks of a render pass begin but its image layouts'.
+fn begin_checks<S: Scope>(
+    recorder: &Recorder<'_, S>,
+    render_pass_begin: &RenderPassBeginInfo<'_>,
+    rules: &BeginRules,
+) -> Result<()> {
+    let live = recorder.device().live();
+    let raw = render_pass_begin.as_raw();
     // Every framebuffer and render pass made through the wrappers is listed on its
     // device: one missing from this device's lists is another device's.
     if !rules.same_device.is_empty()
@@ -404,11 +443,7 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
         }
     }
     let Some(pass) = live.render_pass(raw.render_pass) else {
-        return super::image_layouts::render_pass_layout_checks(
-            recorder,
-            render_pass_begin,
-            rules.initial,
-        );
+        return Ok(());
     };
     if raw.clear_value_count < pass.clear_count {
         refuse(
@@ -472,7 +507,7 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
             }
         }
     }
-    super::image_layouts::render_pass_layout_checks(recorder, render_pass_begin, rules.initial)
+    Ok(())
 }
 
 /// The rules of a chained `VkDeviceGroupRenderPassBeginInfo`: its device mask

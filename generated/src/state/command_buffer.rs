@@ -31,8 +31,41 @@ impl Default for Uses {
     }
 }
 
+/// What the last render pass begin of the buffer that passed its checks named,
+/// each object by its record (held, so no new object's record can take its
+/// address): a begin of the same render pass, framebuffer, render area and clear
+/// count, by the same command, passes the same checks. Every one of them reads
+/// only these records (a render pass's and a framebuffer's never change, and a
+/// framebuffer keeps its views and their images alive), the begin's parameters and
+/// the buffer's pool; the image layouts the begin needs are checked every time.
+#[derive(Clone)]
+pub(crate) struct BeginChecked {
+    /// The render pass's record.
+    pub(crate) pass: Vrc<crate::state::RenderPassRecord>,
+    /// The framebuffer's attachments, as its record holds them: one list per
+    /// framebuffer created.
+    pub(crate) views: Vrc<[vk::ImageView]>,
+    pub(crate) area: vk::Rect2D,
+    pub(crate) clears: u32,
+    /// The address of the command's rules (`vkCmdBeginRenderPass` or its second
+    /// version).
+    pub(crate) rules: usize,
+}
+
+impl BeginChecked {
+    fn same(&self, o: &BeginChecked) -> bool {
+        Vrc::ptr_eq(&self.pass, &o.pass)
+            && Vrc::ptr_eq(&self.views, &o.views)
+            && self.area == o.area
+            && self.clears == o.clears
+            && self.rules == o.rules
+    }
+}
+
 #[derive(Default)]
 struct UsesState {
+    /// The last render pass begin that passed its checks.
+    begin_checked: Option<BeginChecked>,
     /// Begun since allocation (or the last reset).
     begun: bool,
     /// Begun and not ended: a recorder was dropped or forgotten, or is alive.
@@ -318,6 +351,17 @@ impl Uses {
             },
             None => Vrc::new(layouts),
         });
+    }
+
+    /// Whether the last render pass begin that passed its checks was `begin`.
+    pub(crate) fn begin_checked(&self, begin: &BeginChecked) -> bool {
+        let state = self.state.lock();
+        state.begin_checked.as_ref().is_some_and(|b| b.same(begin))
+    }
+
+    /// A render pass begin passed its checks.
+    pub(crate) fn set_begin_checked(&self, begin: BeginChecked) {
+        self.state.lock().begin_checked = Some(begin);
     }
 
     /// An empty box for a new recording's image layouts: the last recording's

@@ -94,6 +94,18 @@ impl Live {
             .map(|f| f.2.clone())
     }
 
+    /// The attachments of a live framebuffer as its record holds them (empty for an
+    /// imageless one): each framebuffer created has its own list.
+    pub(crate) fn framebuffer_record_views(
+        &self,
+        raw: vk::Framebuffer,
+    ) -> Option<Vrc<[vk::ImageView]>> {
+        self.framebuffers
+            .lock()
+            .get(&raw.as_raw())
+            .map(|f| f.0.clone())
+    }
+
     /// The attachments of a live framebuffer (empty for an imageless one).
     pub(crate) fn framebuffer_views(&self, raw: vk::Framebuffer) -> Vrc<[vk::ImageView]> {
         self.framebuffers

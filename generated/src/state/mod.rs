@@ -32,7 +32,7 @@ mod view;
 
 pub(crate) use self::buffer::BufferRecord;
 pub(crate) use self::command_buffer::{
-    EventsUsed, Inheritance, InheritedRendering, SetsUsed, Standing, Uses,
+    BeginChecked, EventsUsed, Inheritance, InheritedRendering, SetsUsed, Standing, Uses,
 };
 pub(crate) use self::command_pool::PoolFamily;
 pub(crate) use self::descriptors::{
