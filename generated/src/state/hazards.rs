@@ -767,13 +767,31 @@ pub(crate) enum Event {
 impl Recording {
     /// This recording emptied for a new one that logs into `log`: its tables and
     /// the log keep their allocations.
-    pub(crate) fn recycled(self, mut log: Vec<Event>) -> Self {
+    pub(crate) fn recycled(mut self, log: Vec<Event>) -> Self {
+        self.recycle(log);
+        self
+    }
+
+    /// Empties this recording, in place, for a new one that logs into `log`: its
+    /// tables and the log keep their allocations.
+    pub(crate) fn recycle(&mut self, mut log: Vec<Event>) {
+        // Every field named: a new one must say how a new recording starts.
         let Recording {
-            mut buffers,
-            mut images,
-            drawn: (mut drawn, _),
-            mut spare_states,
-            ..
+            buffers,
+            images,
+            commands,
+            auto,
+            generation,
+            drawn,
+            pending,
+            buffer_writes,
+            auto_barriers,
+            last_draw,
+            started,
+            log: old_log,
+            unlogged,
+            floor,
+            spare_states,
         } = self;
         // A buffer's ranges keep their allocation for the next recording, which
         // most often touches the same buffers (a bounded number: a recording of
@@ -792,22 +810,20 @@ impl Recording {
                 spare_states.push(states);
             }
         }
-        drawn.clear();
+        drawn.0.clear();
+        drawn.1 = 0;
         log.clear();
-        Recording {
-            buffers,
-            images,
-            drawn: (drawn, 0),
-            log,
-            spare_states,
-            ..Default::default()
-        }
-    }
-
-    /// Empties this recording for a new one that logs into `log`, as
-    /// [`Recording::recycled`] does, in place.
-    pub(crate) fn recycle(&mut self, log: Vec<Event>) {
-        *self = core::mem::take(self).recycled(log);
+        *old_log = log;
+        *commands = 0;
+        *auto = false;
+        *generation = 0;
+        *pending = (0, 0);
+        *buffer_writes = (0, 0);
+        *auto_barriers = 0;
+        *last_draw = Default::default();
+        *started = false;
+        *unlogged = false;
+        *floor = 0;
     }
 
     /// The next command's place in the recording.
