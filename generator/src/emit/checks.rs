@@ -66,12 +66,12 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
             .filter_map(|k| crate::model::expr::Expr::parse(k).ok())
             .flat_map(|e| e.names().into_iter().map(str::to_owned).collect::<Vec<_>>()),
     );
-    let mut values = Vec::new();
+    let (mut enums, mut flags) = (Vec::new(), Vec::new());
     for t in &needs {
-        values.push(match model.category(t) {
-            Some(Kind::Enum) => enum_fn(checker.cx, &origins, t),
-            _ => flags_fn(checker.cx, &origins, t),
-        });
+        match model.category(t) {
+            Some(Kind::Enum) => enums.push(enum_fn(checker.cx, &origins, t)),
+            _ => flags.push(flags_fn(checker.cx, &origins, t)),
+        }
     }
     let chain = chain_fn(checker, &origins);
     let members = quote! {
@@ -94,17 +94,19 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     let head = quote! {
         //! The dynamic checks of implicit rules, compiled in with
         //! `runtime_implicit_validations`: the enabled versions and extensions here,
-        //! the checks of enum and flags values in `values`, those of each struct in
-        //! `structs`, one file per core version and extension.
+        //! the checks of enum values in `enums` and of flags values in `flags`, those
+        //! of each struct in `structs`, one file per core version and extension.
         #![allow(dead_code, clippy::match_overlapping_arm, clippy::unnecessary_cast, clippy::match_same_arms)]
         use crate::support::refuse;
         use crate::validation::Scope;
         use crate::Result;
         use crate::vk;
+        mod enums;
+        mod flags;
         mod structs;
-        mod values;
+        pub(crate) use enums::*;
+        pub(crate) use flags::*;
         pub(crate) use structs::*;
-        pub(crate) use values::*;
         #exts
         #members
         #chain
@@ -112,12 +114,21 @@ pub fn emit(checker: &Checker) -> Vec<(String, TokenStream)> {
     let mut files = vec![
         ("checks/mod.rs".to_owned(), head),
         (
-            "checks/values.rs".to_owned(),
+            "checks/enums.rs".to_owned(),
             quote! {
-                //! The checks of enum and flags values: each value is one that the
-                //! versions and extensions enabled where the call runs define.
+                //! The checks of enum values: each value is one that the versions and
+                //! extensions enabled where the call runs define.
                 use super::*;
-                #(#values)*
+                #(#enums)*
+            },
+        ),
+        (
+            "checks/flags.rs".to_owned(),
+            quote! {
+                //! The checks of flags values: each bit set is one that the versions
+                //! and extensions enabled where the call runs define.
+                use super::*;
+                #(#flags)*
             },
         ),
     ];
@@ -499,24 +510,38 @@ fn flags_fn(cx: &Context, origins: &Origins, t: &str) -> TokenStream {
             .fold(0, |m, (_, mask)| m | mask),
         _ => 0,
     };
-    let fast = (core != 0).then(|| {
-        let core = Literal::u64_unsuffixed(core);
-        quote! {
-            if (v.as_raw() as u64) & !#core == 0 {
-                return Ok(());
-            }
+    let body = quote! {
+        let mut valid: u64 = 0;
+        #(#adds)*
+        if (v.as_raw() as u64) & !valid == 0 {
+            Ok(())
+        } else {
+            refuse(vuid, format!(#msg))
         }
-    });
+    };
+    if core == 0 {
+        return quote! {
+            pub(crate) fn #f(v: #ty, s: &Scope<'_>, vuid: &'static str) -> Result<()> {
+                #body
+            }
+        };
+    }
+    // The test of the core bits inlined where the value is checked; the origins
+    // looked up out of line.
+    let core = Literal::u64_unsuffixed(core);
+    let rest = ident(&format!("flags_{}_past_core", snake(t)));
     quote! {
+        #[inline]
         pub(crate) fn #f(v: #ty, s: &Scope<'_>, vuid: &'static str) -> Result<()> {
-            #fast
-            let mut valid: u64 = 0;
-            #(#adds)*
-            if (v.as_raw() as u64) & !valid == 0 {
+            if (v.as_raw() as u64) & !#core == 0 {
                 Ok(())
             } else {
-                refuse(vuid, format!(#msg))
+                #rest(v, s, vuid)
             }
+        }
+        #[inline(never)]
+        fn #rest(v: #ty, s: &Scope<'_>, vuid: &'static str) -> Result<()> {
+            #body
         }
     }
 }

@@ -2,8 +2,8 @@
 
 //! The dynamic checks of implicit rules, compiled in with
 //! `runtime_implicit_validations`: the enabled versions and extensions here,
-//! the checks of enum and flags values in `values`, those of each struct in
-//! `structs`, one file per core version and extension.
+//! the checks of enum values in `enums` and of flags values in `flags`, those
+//! of each struct in `structs`, one file per core version and extension.
 #![allow(
     dead_code,
     clippy::match_overlapping_arm,
@@ -14,10 +14,12 @@ use crate::support::refuse;
 use crate::validation::Scope;
 use crate::Result;
 use crate::vk;
+mod enums;
+mod flags;
 mod structs;
-mod values;
+pub(crate) use enums::*;
+pub(crate) use flags::*;
 pub(crate) use structs::*;
-pub(crate) use values::*;
 /// Names of the versions and extensions that define enum values: the
 /// versions first, in order, then the extensions.
 const ORIGINS: [&str; 259usize] = [
