@@ -35,9 +35,17 @@ impl Default for Uses {
 /// each object by its record (held, so no new object's record can take its
 /// address): a begin of the same render pass, framebuffer, render area and clear
 /// count, by the same command, passes the same checks. Every one of them reads
-/// only these records (a render pass's and a framebuffer's never change, and a
-/// framebuffer keeps its views and their images alive), the begin's parameters and
-/// the buffer's pool; the image layouts the begin needs are checked every time.
+/// only these records, the begin's parameters and the buffer's pool; the image
+/// layouts the begin needs are checked every time. That rests on what the checks
+/// read never changing while the key is equal, which a change to any of these
+/// must revisit:
+/// - a render pass's and a framebuffer's records are written once, and a
+///   framebuffer keeps its views alive (`Reached::keeping` at its creation), a view
+///   its image;
+/// - a view's record is written once, and an image's memory binding once (a second
+///   bind is refused; a sparse image records none);
+/// - a command buffer's pool, and the pool's record, never change;
+/// - a chain (device group, imageless views) turns the memo off.
 #[derive(Clone)]
 pub(crate) struct BeginChecked {
     /// The render pass's record.
