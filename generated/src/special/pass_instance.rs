@@ -354,7 +354,8 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
     // A frame's begin is most often the last one's on this buffer: the same
     // records, parameters and pool give the same verdict (`BeginChecked`). A chain
     // (device group, imageless views) is checked every time.
-    let checked = match (raw.p_next.is_null(), live.render_pass(raw.render_pass)) {
+    let pass = live.render_pass(raw.render_pass);
+    let checked = match (raw.p_next.is_null(), pass.clone()) {
         (true, Some(pass)) => {
             live.framebuffer_record_views(raw.framebuffer)
                 .map(|views| crate::state::BeginChecked {
@@ -375,27 +376,27 @@ pub(crate) fn begin_render_pass_checks<S: Scope>(
             rules.initial,
         );
     }
-    begin_checks(recorder, render_pass_begin, rules)?;
+    begin_checks(recorder, render_pass_begin, pass, rules)?;
     if let Some(c) = checked {
         uses.set_begin_checked(c);
     }
     super::image_layouts::render_pass_layout_checks(recorder, render_pass_begin, rules.initial)
 }
 
-/// The checks of a render pass begin but its image layouts'.
+/// The checks of a render pass begin but its image layouts' (`pass`: the record of
+/// the render pass it names, if this device has one).
 fn begin_checks<S: Scope>(
     recorder: &Recorder<'_, S>,
     render_pass_begin: &RenderPassBeginInfo<'_>,
+    pass: Option<tuff_runtime::Vrc<crate::state::RenderPassRecord>>,
     rules: &BeginRules,
 ) -> Result<()> {
     let live = recorder.device().live();
     let raw = render_pass_begin.as_raw();
+    let size = live.framebuffer_size(raw.framebuffer);
     // Every framebuffer and render pass made through the wrappers is listed on its
     // device: one missing from this device's lists is another device's.
-    if !rules.same_device.is_empty()
-        && (live.render_pass(raw.render_pass).is_none()
-            || live.framebuffer_size(raw.framebuffer).is_none())
-    {
+    if !rules.same_device.is_empty() && (pass.is_none() || size.is_none()) {
         refuse(
             rules.same_device,
             "the framebuffer or the render pass is not of the command buffer's device",
@@ -409,11 +410,10 @@ fn begin_checks<S: Scope>(
         )
     };
     if let Some(g) = group {
-        check_device_group(recorder, g, live.framebuffer_size(raw.framebuffer))?;
+        check_device_group(recorder, g, size)?;
     }
     if group.is_none_or(|g| g.device_render_area_count == 0) {
         let area = raw.render_area;
-        let size = live.framebuffer_size(raw.framebuffer);
         let end = |offset: i32, extent: u32| i64::from(offset) + i64::from(extent);
         for (ok, vuid, what) in [
             (
@@ -442,7 +442,7 @@ fn begin_checks<S: Scope>(
             }
         }
     }
-    let Some(pass) = live.render_pass(raw.render_pass) else {
+    let Some(pass) = pass else {
         return Ok(());
     };
     if raw.clear_value_count < pass.clear_count {
